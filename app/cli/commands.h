@@ -1,0 +1,32 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace octaclay::app {
+
+/// Exit codes of octaclay-cli (also in README.md).
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitInternal = 1,     ///< a bug: please report it
+  kExitUsage = 2,        ///< bad arguments
+  kExitInvalidInput = 3, ///< an input file that is not what it should be
+  kExitIo = 4,           ///< a file that cannot be read or written
+};
+
+/// Each subcommand registers itself on the app and returns the function that runs it after
+/// parsing. The function returns an exit code or throws core::Error.
+using CommandRunner = std::function<int()>;
+
+struct Command {
+  CLI::App* subcommand;
+  CommandRunner run;
+};
+
+Command addNewCommand(CLI::App& app);
+Command addInfoCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
+
+} // namespace octaclay::app

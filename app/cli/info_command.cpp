@@ -1,0 +1,76 @@
+#include "commands.h"
+#include "json_output.h"
+
+#include "octaclay/core/document_info.h"
+#include "octaclay/core/document_io.h"
+
+#include <iostream>
+#include <memory>
+
+namespace octaclay::app {
+
+Command addInfoCommand(CLI::App& app) {
+  struct Options {
+    std::string input;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand("info", "Describe a document: size, topology, bounding box, layers");
+  sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  sub->add_flag("--json", opt->json, "Print one JSON object");
+
+  return {sub, [opt]() {
+            const core::DocumentHeader header = core::readDocumentHeader(opt->input);
+            // info needs the header's layer list, not the layers' pixels.
+            core::Document document = core::readDocument(opt->input, {.layers = false});
+            document.hasMask = false;
+            core::DocumentInfo info = core::describeDocument(document);
+            info.layers = {"positions"};
+            for (const char* layer : {"diffuse", "feature", "mask"})
+              for (const auto& channel : header.channels)
+                if (channel.rfind(std::string(layer) + ".", 0) == 0) {
+                  info.layers.emplace_back(layer);
+                  break;
+                }
+
+            if (opt->json) {
+              std::cout << nlohmann::json{{"document", opt->input},
+                                          {"format_version", header.formatVersion},
+                                          {"size", info.size},
+                                          {"samples", (info.size + 1) * (info.size + 1)},
+                                          {"vertices", info.vertices},
+                                          {"edges", info.edges},
+                                          {"triangles", info.triangles},
+                                          {"euler", info.euler},
+                                          {"closed", info.closed},
+                                          {"manifold", info.manifold},
+                                          {"seam_gap", info.seamGap},
+                                          {"degenerate_triangles", info.degenerateTriangles},
+                                          {"bbox", toJson(info.bbox)},
+                                          {"layers", info.layers}}
+                               .dump()
+                        << "\n";
+              return kExitOk;
+            }
+            const auto& b = info.bbox;
+            std::cout << opt->input << "\n"
+                      << "  size       N = " << info.size << " (" << info.size + 1 << "x"
+                      << info.size + 1 << " samples)\n"
+                      << "  mesh       " << info.vertices << " vertices, " << info.edges
+                      << " edges, " << info.triangles << " triangles, Euler characteristic "
+                      << info.euler << "\n"
+                      << "  closed     " << (info.closed ? "yes" : "no") << " (largest seam gap "
+                      << info.seamGap << ")\n"
+                      << "  manifold   " << (info.manifold ? "yes" : "no") << " ("
+                      << info.degenerateTriangles << " degenerate triangles)\n"
+                      << "  bbox       [" << b.min.x << ", " << b.min.y << ", " << b.min.z
+                      << "] .. [" << b.max.x << ", " << b.max.y << ", " << b.max.z
+                      << "], diagonal " << b.diagonal() << "\n"
+                      << "  layers    ";
+            for (const auto& l : info.layers) std::cout << " " << l;
+            std::cout << "\n";
+            return kExitOk;
+          }};
+}
+
+} // namespace octaclay::app

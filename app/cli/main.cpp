@@ -1,0 +1,54 @@
+#include "commands.h"
+
+#include "octaclay/core/error.h"
+
+#include <iostream>
+#include <new>
+
+using namespace octaclay;
+
+namespace {
+
+int exitCodeFor(core::ErrorKind kind) {
+  switch (kind) {
+  case core::ErrorKind::InvalidArgument:
+    return app::kExitUsage;
+  case core::ErrorKind::InvalidInput:
+    return app::kExitInvalidInput;
+  case core::ErrorKind::Io:
+    return app::kExitIo;
+  }
+  return app::kExitInternal;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"octaclay-cli: create, inspect, convert and compare Octaclay documents "
+               "(octahedral geometry images stored as .exr)"};
+  cli.require_subcommand(1);
+  const app::Command commands[] = {app::addNewCommand(cli), app::addInfoCommand(cli),
+                                   app::addExportCommand(cli), app::addCompareCommand(cli)};
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? app::kExitOk : app::kExitUsage;
+  }
+
+  try {
+    for (const app::Command& command : commands)
+      if (command.subcommand->parsed()) return command.run();
+  } catch (const core::Error& e) {
+    std::cerr << "octaclay-cli: error: " << e.what() << "\n";
+    return exitCodeFor(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "octaclay-cli: error: out of memory; try a smaller --size\n";
+    return app::kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "octaclay-cli: internal error: " << e.what() << " (please report this)\n";
+    return app::kExitInternal;
+  }
+  return app::kExitInternal;
+}

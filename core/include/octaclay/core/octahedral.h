@@ -1,0 +1,46 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace octaclay::core {
+
+/// An integer sample position: i along the image's columns (u), j along its rows (v).
+struct Sample {
+  int i = 0, j = 0;
+  friend bool operator==(Sample a, Sample b) = default;
+};
+
+inline constexpr int kMinSize = 2;
+inline constexpr int kMaxSize = 8192;
+
+/// True for N = 2, 4, … 8192: the sizes a geometry image may have.
+bool isValidSize(int n);
+
+/// Throws Error(InvalidArgument) naming n when !isValidSize(n).
+void requireValidSize(int n);
+
+/// The grid sample (0 ≤ i, j ≤ n) that integer position s stands for in the octahedral tiling of
+/// the plane. Works for any int position (many periods away too); identity inside the grid.
+Sample wrap(int n, Sample s);
+
+/// The one representative of the samples identified with grid sample s (corners → (0,0); a side
+/// sample → the one in the side's first half). Precondition: s inside the grid.
+Sample canonical(int n, Sample s);
+
+/// The grid samples that are the same vertex as s, s included; returns how many (1, 2 or 4).
+int identifiedSamples(int n, Sample s, std::array<Sample, 4>& out);
+
+/// How the cell with lower-left sample (i, j) of the tiled plane is split into two triangles:
+/// along the anti-diagonal (i, j+1)–(i+1, j) or the main diagonal (i, j)–(i+1, j+1).
+enum class CellSplit { AntiDiagonal, MainDiagonal };
+CellSplit cellSplit(int n, int i, int j);
+
+/// The two triangles of cell (i, j), counter-clockwise in (i, j) (outward on the surface).
+std::array<std::array<Sample, 3>, 2> cellTriangles(int n, int i, int j);
+
+/// Triangles of the tiled plane incident to position s (4 or 6), counter-clockwise, each
+/// rotated so that s comes first. Positions are unwrapped: pass them through wrap().
+int incidentTriangles(int n, Sample s, std::array<std::array<Sample, 3>, 6>& out);
+
+} // namespace octaclay::core

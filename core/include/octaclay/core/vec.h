@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cmath>
+
+namespace octaclay::core {
+
+/// A 3-vector of floats: positions and normals in object space.
+struct Vec3f {
+  float x = 0, y = 0, z = 0;
+
+  friend Vec3f operator+(Vec3f a, Vec3f b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  friend Vec3f operator-(Vec3f a, Vec3f b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Vec3f operator*(Vec3f a, float s) { return {a.x * s, a.y * s, a.z * s}; }
+  friend Vec3f operator*(float s, Vec3f a) { return a * s; }
+  Vec3f& operator+=(Vec3f b) { return *this = *this + b; }
+  friend bool operator==(Vec3f a, Vec3f b) = default;
+};
+
+inline float dot(Vec3f a, Vec3f b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3f cross(Vec3f a, Vec3f b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline float length(Vec3f a) { return std::sqrt(dot(a, a)); }
+/// Unit vector along a; the zero vector stays zero.
+inline Vec3f normalize(Vec3f a) {
+  const float l = length(a);
+  return l > 0 ? a * (1.0f / l) : Vec3f{};
+}
+
+/// A texel of the position image: xyz position, w saliency (DESIGN.md).
+struct Vec4f {
+  float x = 0, y = 0, z = 0, w = 0;
+  Vec3f xyz() const { return {x, y, z}; }
+  friend bool operator==(Vec4f a, Vec4f b) = default;
+};
+
+} // namespace octaclay::core

@@ -1,0 +1,222 @@
+// Based on: Ericson, "Real-Time Collision Detection" (2005), §5.1.5 closest point on a
+// triangle and §6 bounding-volume hierarchies (median split, nearer-child-first traversal).
+#include "detail/aabb_tree.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+
+namespace octaclay::core::detail {
+
+namespace {
+
+constexpr std::size_t leafSize = 4;
+
+Vec3d closestPointOnSegment(Vec3d p, Vec3d a, Vec3d b) {
+  const Vec3d ab = b - a;
+  const double lengthSquared = dot(ab, ab);
+  if (!(lengthSquared > 0)) return a;
+  const double t = std::clamp(dot(p - a, ab) / lengthSquared, 0.0, 1.0);
+  return a + ab * t;
+}
+
+double distanceSquared(Vec3d p, Vec3d q) {
+  const Vec3d d = p - q;
+  return dot(d, d);
+}
+
+// A degenerate triangle is the union of its three edges.
+Vec3d closestPointOnEdges(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
+  const std::array<Vec3d, 3> candidates{closestPointOnSegment(p, a, b),
+                                        closestPointOnSegment(p, b, c),
+                                        closestPointOnSegment(p, c, a)};
+  Vec3d best = candidates[0];
+  for (const Vec3d& q : candidates)
+    if (distanceSquared(p, q) < distanceSquared(p, best)) best = q;
+  return best;
+}
+
+} // namespace
+
+Vec3d closestPointOnTriangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
+  const Vec3d ab = b - a, ac = c - a;
+  const Vec3d n = cross(ab, ac);
+  if (!(dot(n, n) > 0)) return closestPointOnEdges(p, a, b, c);
+
+  // Voronoi regions of the vertices, then of the edges, else the face (Ericson §5.1.5). The
+  // ratio guards only matter when rounding makes a denominator vanish on slivers.
+  const Vec3d ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+
+  const Vec3d bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return d1 - d3 > 0 ? a + ab * (d1 / (d1 - d3)) : a;
+
+  const Vec3d cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return d2 - d6 > 0 ? a + ac * (d2 / (d2 - d6)) : a;
+
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+    const double denominator = (d4 - d3) + (d5 - d6);
+    return denominator > 0 ? b + (c - b) * ((d4 - d3) / denominator) : b;
+  }
+
+  const double sum = va + vb + vc;
+  if (!(sum > 0)) return closestPointOnEdges(p, a, b, c);
+  return a + ab * (vb / sum) + ac * (vc / sum);
+}
+
+struct AabbTree::BuildItem {
+  std::array<float, 3> min, max, centroid;
+  std::uint32_t id;
+};
+
+AabbTree::AabbTree(const TriangleMesh& mesh) {
+  const std::size_t count = mesh.triangles.size();
+  assert(count < noTriangle);
+  std::vector<BuildItem> items(count);
+  for (std::size_t t = 0; t < count; ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3f& a = mesh.positions[tri[0]];
+    const Vec3f& b = mesh.positions[tri[1]];
+    const Vec3f& c = mesh.positions[tri[2]];
+    BuildItem& item = items[t];
+    item.min = {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
+    item.max = {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
+    for (int k = 0; k < 3; ++k)
+      item.centroid[k] = 0.5f * (item.min[k] + item.max[k]);
+    item.id = static_cast<std::uint32_t>(t);
+  }
+  if (count == 0) return;
+
+  nodes_.reserve(count);
+  build(items, 0);
+
+  triangles_.resize(count);
+  ids_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto& tri = mesh.triangles[items[i].id];
+    triangles_[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
+    ids_[i] = items[i].id;
+  }
+}
+
+void AabbTree::build(std::span<BuildItem> items, std::uint32_t first) {
+  const std::size_t node = nodes_.size();
+  nodes_.push_back({});
+
+  if (items.size() <= leafSize) {
+    Node leaf{{items[0].min[0], items[0].min[1], items[0].min[2]},
+              static_cast<std::uint32_t>(items.size()),
+              {items[0].max[0], items[0].max[1], items[0].max[2]},
+              first};
+    for (const BuildItem& item : items)
+      for (int k = 0; k < 3; ++k) {
+        leaf.min[k] = std::min(leaf.min[k], item.min[k]);
+        leaf.max[k] = std::max(leaf.max[k], item.max[k]);
+      }
+    nodes_[node] = leaf;
+    return;
+  }
+
+  // Split at the median centroid along the axis where the centroids spread most; boxes are
+  // then the union of the children's, so each level reads only the centroids.
+  std::array<float, 3> low = items[0].centroid, high = items[0].centroid;
+  for (const BuildItem& item : items)
+    for (int k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], item.centroid[k]);
+      high[k] = std::max(high[k], item.centroid[k]);
+    }
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
+
+  const std::size_t middle = items.size() / 2;
+  std::nth_element(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(middle), items.end(),
+                   [axis](const BuildItem& l, const BuildItem& r) {
+                     return l.centroid[axis] < r.centroid[axis];
+                   });
+  build(items.first(middle), first);
+  const std::size_t right = nodes_.size();
+  build(items.subspan(middle), first + static_cast<std::uint32_t>(middle));
+
+  Node parent{};
+  const Node& l = nodes_[node + 1];
+  const Node& r = nodes_[right];
+  for (int k = 0; k < 3; ++k) {
+    parent.min[k] = std::min(l.min[k], r.min[k]);
+    parent.max[k] = std::max(l.max[k], r.max[k]);
+  }
+  parent.count = 0;
+  parent.index = static_cast<std::uint32_t>(right);
+  nodes_[node] = parent;
+}
+
+double AabbTree::triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const {
+  const Triangle& t = triangles_[triangle];
+  return distanceSquared(p, closestPointOnTriangle(p, Vec3d(t.a), Vec3d(t.b), Vec3d(t.c)));
+}
+
+AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint) const {
+  Hit best;
+  if (nodes_.empty()) return best;
+  if (hint < triangles_.size()) best = {triangleDistanceSquared(p, hint), hint};
+
+  const double point[3] = {p.x, p.y, p.z};
+  const auto boxDistanceSquared = [&](const Node& node) {
+    double sum = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double below = static_cast<double>(node.min[k]) - point[k];
+      const double above = point[k] - static_cast<double>(node.max[k]);
+      const double gap = std::max({below, above, 0.0});
+      sum += gap * gap;
+    }
+    return sum;
+  };
+
+  // Median splits keep the depth below 32, and each level pushes at most one entry.
+  struct Pending {
+    std::uint32_t node;
+    double distanceSquared;
+  };
+  std::array<Pending, 64> stack;
+  std::size_t pending = 0;
+  if (boxDistanceSquared(nodes_[0]) < best.distanceSquared) stack[pending++] = {0, 0.0};
+
+  while (pending > 0) {
+    const Pending top = stack[--pending];
+    if (!(top.distanceSquared < best.distanceSquared)) continue;
+    std::uint32_t current = top.node;
+    for (;;) {
+      const Node& node = nodes_[current];
+      if (node.count > 0) {
+        for (std::uint32_t t = node.index; t < node.index + node.count; ++t) {
+          const double d = triangleDistanceSquared(p, t);
+          if (d < best.distanceSquared) best = {d, t};
+        }
+        break;
+      }
+      std::uint32_t nearChild = current + 1, farChild = node.index;
+      double nearDistance = boxDistanceSquared(nodes_[nearChild]);
+      double farDistance = boxDistanceSquared(nodes_[farChild]);
+      if (farDistance < nearDistance) {
+        std::swap(nearChild, farChild);
+        std::swap(nearDistance, farDistance);
+      }
+      if (!(nearDistance < best.distanceSquared)) break;
+      if (farDistance < best.distanceSquared) stack[pending++] = {farChild, farDistance};
+      current = nearChild;
+    }
+  }
+  return best;
+}
+
+} // namespace octaclay::core::detail

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "octaclay/core/triangle_mesh.h"
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace octaclay::core::detail {
+
+/// A 3-vector of doubles for exact-enough distance arithmetic on float positions.
+struct Vec3d {
+  double x = 0, y = 0, z = 0;
+
+  Vec3d() = default;
+  constexpr Vec3d(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
+  explicit constexpr Vec3d(Vec3f v) : x(v.x), y(v.y), z(v.z) {}
+
+  friend Vec3d operator+(Vec3d a, Vec3d b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  friend Vec3d operator-(Vec3d a, Vec3d b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Vec3d operator*(Vec3d a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+  friend Vec3d operator*(double s, Vec3d a) { return a * s; }
+  friend bool operator==(Vec3d a, Vec3d b) = default;
+};
+
+inline double dot(Vec3d a, Vec3d b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline Vec3d cross(Vec3d a, Vec3d b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// The point of triangle abc (edges and interior) closest to p. Degenerate triangles (a
+/// segment or a point) are handled as the union of their edges.
+Vec3d closestPointOnTriangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c);
+
+/// A binary bounding-volume hierarchy over a mesh's triangles that answers exact
+/// closest-point queries. Median split on the longest centroid axis, at most 4 triangles a
+/// leaf, nodes in one depth-first array. Immutable after construction, so any number of
+/// threads may query it at once.
+class AabbTree {
+public:
+  /// A triangle's corners, copied out of the mesh in leaf order.
+  struct Triangle {
+    Vec3f a, b, c;
+  };
+
+  static constexpr std::uint32_t noTriangle = std::numeric_limits<std::uint32_t>::max();
+
+  /// Result of closest(): squared distance and the index into triangles() that attains it.
+  struct Hit {
+    double distanceSquared = std::numeric_limits<double>::infinity();
+    std::uint32_t triangle = noTriangle;
+  };
+
+  /// Builds the tree over all of mesh's triangles in O(T log T). Precondition: every index is
+  /// below mesh.positions.size() and the referenced positions are finite (compareSurfaces
+  /// checks this and throws before building).
+  explicit AabbTree(const TriangleMesh& mesh);
+
+  /// The closest point of the mesh to p, by branch and bound (nearer child first, subtrees
+  /// pruned by squared box distance). `hint`, an index into triangles() or noTriangle, seeds
+  /// the bound: pass the previous query's triangle when queries are spatially coherent.
+  /// An empty tree returns a Hit with infinite distance.
+  Hit closest(Vec3d p, std::uint32_t hint = noTriangle) const;
+
+  /// The triangles in leaf order (consecutive triangles are close in space).
+  std::span<const Triangle> triangles() const { return triangles_; }
+  /// For each entry of triangles(), its index in the mesh's triangle list.
+  std::span<const std::uint32_t> triangleIds() const { return ids_; }
+
+private:
+  // Interior nodes have count 0, their left child right after them and `index` the right
+  // child; leaves hold triangles()[index, index + count).
+  struct Node {
+    float min[3];
+    std::uint32_t count;
+    float max[3];
+    std::uint32_t index;
+  };
+  struct BuildItem;
+
+  void build(std::span<BuildItem> items, std::uint32_t first);
+  double triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const;
+
+  std::vector<Node> nodes_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::uint32_t> ids_;
+};
+
+} // namespace octaclay::core::detail

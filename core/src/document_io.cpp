@@ -1,0 +1,253 @@
+#include "octaclay/core/document_io.h"
+
+#include "detail/atomic_file.h"
+#include "octaclay/core/error.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfThreading.h>
+#include <half.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+namespace octaclay::core {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFormatAttribute = "octaclay.format";
+constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
+constexpr const char* kSamplingAttribute = "octaclay.sampling";
+constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
+
+void useAllCores() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    Imf::setGlobalThreadCount(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  });
+}
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& why) {
+  throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);
+}
+
+// OpenEXR's own message for a non-EXR file is obscure; check the magic number first.
+void requireExrMagic(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw Error(ErrorKind::Io, "cannot open " + path.string() +
+                                   (fs::exists(path) ? ": permission denied" : ": no such file"));
+  unsigned char magic[4] = {};
+  in.read(reinterpret_cast<char*>(magic), 4);
+  if (in.gcount() != 4 || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 ||
+      magic[3] != 0x01)
+    refuse(path, "not an OpenEXR file (wrong magic number); an Octaclay document is an .exr "
+                 "written by octaclay-cli or the modeller");
+}
+
+int sizeFromSide(int side) {
+  const int n = side - 1;
+  return isValidSize(n) ? n : 0;
+}
+
+DocumentHeader checkHeader(const fs::path& path, const Imf::Header& header) {
+  const auto* format = header.findTypedAttribute<Imf::IntAttribute>(kFormatAttribute);
+  if (!format)
+    refuse(path, "an OpenEXR image but not an Octaclay document (no octaclay.format attribute); "
+                 "import meshes with `octaclay-cli import`");
+  DocumentHeader result;
+  result.formatVersion = format->value();
+  if (result.formatVersion < 1 || result.formatVersion > kDocumentFormatVersion)
+    refuse(path, "document format version " + std::to_string(result.formatVersion) +
+                     " is not supported (this Octaclay reads version " +
+                     std::to_string(kDocumentFormatVersion) + "); update Octaclay");
+  const auto* param = header.findTypedAttribute<Imf::StringAttribute>(kParameterizationAttribute);
+  if (param && param->value() != "octahedral")
+    refuse(path, "parameterization '" + param->value() + "' is not supported (only octahedral)");
+
+  const Imath::Box2i window = header.dataWindow();
+  const int width = window.max.x - window.min.x + 1;
+  const int height = window.max.y - window.min.y + 1;
+  result.size = sizeFromSide(width);
+  if (width != height || result.size == 0)
+    refuse(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " is not (2^k+1)x(2^k+1) with 2 <= 2^k <= 8192");
+
+  for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+    result.channels.emplace_back(it.name());
+  for (const char* name : kPositionChannels)
+    if (!header.channels().findChannel(name))
+      refuse(path, std::string("missing channel ") + name + " (positions need P.X, P.Y, P.Z)");
+  return result;
+}
+
+char* shifted(void* base, const Imath::Box2i& window, std::size_t xStride, std::size_t yStride) {
+  // OpenEXR addresses pixel (x, y) at base + x·xStride + y·yStride, in data-window coordinates.
+  return static_cast<char*>(base) - static_cast<std::ptrdiff_t>(window.min.x) * xStride -
+         static_cast<std::ptrdiff_t>(window.min.y) * yStride;
+}
+
+void addLayerSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const Layer& layer,
+                    int side, std::vector<half>& uniformRow) {
+  const auto names = layer.channelNames();
+  if (layer.uniform()) {
+    uniformRow.resize(static_cast<std::size_t>(side) * layer.channels);
+    for (std::size_t k = 0; k < uniformRow.size(); ++k)
+      uniformRow[k] = half(layer.fill[k % layer.channels]);
+  }
+  for (int c = 0; c < layer.channels; ++c) {
+    const std::string channel = layer.name + "." + names[c];
+    if (layer.uniform()) {
+      // A zero y stride makes every row read one row of the fill value, so an unpainted layer
+      // costs one row of memory. (OpenEXR loops forever on a zero x stride.)
+      const std::size_t xStride = sizeof(half) * layer.channels;
+      frame.insert(channel, Imf::Slice(Imf::HALF, shifted(uniformRow.data() + c, window, xStride, 0),
+                                       xStride, 0));
+    } else {
+      const std::size_t xStride = sizeof(float) * layer.channels;
+      const std::size_t yStride = xStride * side;
+      auto* base = const_cast<float*>(layer.texels.data()) + c;
+      frame.insert(channel, Imf::Slice(Imf::FLOAT, shifted(base, window, xStride, yStride),
+                                       xStride, yStride));
+    }
+  }
+}
+
+void readLayer(const fs::path& path, Imf::InputFile& file, const DocumentHeader& header,
+               Layer& layer, int side) {
+  const auto names = layer.channelNames();
+  int present = 0;
+  for (const auto& n : names)
+    present += std::count(header.channels.begin(), header.channels.end(), layer.name + "." + n) > 0;
+  if (present == 0) return; // an absent layer keeps its default
+  if (present != layer.channels)
+    refuse(path, "layer " + layer.name + " has " + std::to_string(present) + " of its " +
+                     std::to_string(layer.channels) + " channels");
+
+  const Imath::Box2i window = file.header().dataWindow();
+  layer.texels.assign(static_cast<std::size_t>(side) * side * layer.channels, 0.0f);
+  Imf::FrameBuffer frame;
+  const std::size_t xStride = sizeof(float) * layer.channels;
+  for (int c = 0; c < layer.channels; ++c)
+    frame.insert(layer.name + "." + names[c],
+                 Imf::Slice(Imf::FLOAT, shifted(layer.texels.data() + c, window, xStride, xStride * side),
+                            xStride, xStride * side));
+  file.setFrameBuffer(frame);
+  file.readPixels(window.min.y, window.max.y);
+
+  // A layer that turns out uniform is kept as its fill value.
+  bool uniform = true;
+  for (std::size_t k = layer.channels; k < layer.texels.size() && uniform; ++k)
+    uniform = layer.texels[k] == layer.texels[k % layer.channels];
+  if (uniform) {
+    for (int c = 0; c < layer.channels; ++c) layer.fill[c] = layer.texels[c];
+    layer.texels.clear();
+    layer.texels.shrink_to_fit();
+  }
+}
+
+} // namespace
+
+DocumentHeader readDocumentHeader(const fs::path& path) {
+  requireExrMagic(path);
+  try {
+    Imf::InputFile file(path.c_str());
+    return checkHeader(path, file.header());
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    refuse(path, std::string("corrupt OpenEXR header: ") + e.what());
+  }
+}
+
+Document readDocument(const fs::path& path, const DocumentReadOptions& options) {
+  requireExrMagic(path);
+  useAllCores();
+  Document document;
+  try {
+    Imf::InputFile file(path.c_str());
+    const DocumentHeader header = checkHeader(path, file.header());
+    if (!file.isComplete())
+      refuse(path, "truncated: the file ends before all its pixels (an interrupted copy?)");
+    document.positions = GeometryImage(header.size);
+    const int side = header.size + 1;
+    const Imath::Box2i window = file.header().dataWindow();
+    const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
+    Imf::FrameBuffer frame;
+    float* base = &document.positions.texels()[0].x;
+    for (int c = 0; c < 3; ++c)
+      frame.insert(kPositionChannels[c],
+                   Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const Vec4f& t = document.positions.at(i, j);
+        if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
+          refuse(path, "position at sample (" + std::to_string(i) + ", " + std::to_string(j) +
+                           ") is not a finite number");
+      }
+
+    if (options.layers) {
+      readLayer(path, file, header, document.diffuse, side);
+      readLayer(path, file, header, document.feature, side);
+      readLayer(path, file, header, document.mask, side);
+    }
+    document.hasMask = std::count(header.channels.begin(), header.channels.end(), "mask.Y") > 0;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    refuse(path, std::string("corrupt or truncated OpenEXR data: ") + e.what());
+  }
+  return document;
+}
+
+void writeDocument(const Document& document, const fs::path& path) {
+  useAllCores();
+  const int n = document.size();
+  requireValidSize(n);
+  const int side = n + 1;
+  detail::writeAtomically(path, [&](const fs::path& temp) {
+    Imf::Header header(side, side);
+    // ZIP level 1: most of ZIP's gain on float positions for a fraction of its time.
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.zipCompressionLevel() = 1;
+    header.insert(kFormatAttribute, Imf::IntAttribute(kDocumentFormatVersion));
+    header.insert(kParameterizationAttribute, Imf::StringAttribute("octahedral"));
+    header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
+    for (const char* name : kPositionChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    std::vector<const Layer*> layers{&document.diffuse, &document.feature};
+    if (document.hasMask) layers.push_back(&document.mask);
+    for (const Layer* layer : layers)
+      for (const auto& c : layer->channelNames())
+        header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
+
+    const Imath::Box2i window = header.dataWindow();
+    Imf::FrameBuffer frame;
+    const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
+    auto* base = const_cast<float*>(&document.positions.texels()[0].x);
+    for (int c = 0; c < 3; ++c)
+      frame.insert(kPositionChannels[c],
+                   Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+    std::array<std::vector<half>, 3> uniformRows;
+    for (std::size_t k = 0; k < layers.size(); ++k)
+      addLayerSlices(frame, window, *layers[k], side, uniformRows[k]);
+
+    Imf::OutputFile file(temp.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(side);
+  });
+}
+
+} // namespace octaclay::core

@@ -1,0 +1,60 @@
+#include "octaclay/core/mesh_extraction.h"
+
+#include "octaclay/core/vertex_index.h"
+
+#include <thread>
+
+namespace octaclay::core {
+namespace {
+
+// Writes the triangles of cell rows [rowBegin, rowEnd). Within a row the split changes only at
+// the middle column, so the per-cell test of cellSplit() is hoisted out of the loop.
+void writeTriangleRows(const VertexIndex& index, int rowBegin, int rowEnd,
+                       std::array<std::uint32_t, 3>* out) {
+  const int m = index.size();
+  const int half = m / 2;
+  for (int j = rowBegin; j < rowEnd; ++j) {
+    std::array<std::uint32_t, 3>* row = out + static_cast<std::size_t>(j) * 2 * m;
+    const bool lowerHalf = j < half;
+    for (int i = 0; i < m; ++i) {
+      const std::uint32_t a = index.at(i, j), b = index.at(i + 1, j);
+      const std::uint32_t c = index.at(i + 1, j + 1), d = index.at(i, j + 1);
+      const bool anti = (i < half) == lowerHalf;
+      if (anti) {
+        row[2 * i] = {a, b, d};
+        row[2 * i + 1] = {b, c, d};
+      } else {
+        row[2 * i] = {a, b, c};
+        row[2 * i + 1] = {a, c, d};
+      }
+    }
+  }
+}
+
+} // namespace
+
+TriangleMesh extractMesh(const GeometryImage& image, int step) {
+  const VertexIndex index(image.size(), step);
+  const int m = index.size();
+  TriangleMesh mesh;
+  mesh.positions.resize(index.vertexCount());
+  mesh.triangles.resize(2 * static_cast<std::size_t>(m) * static_cast<std::size_t>(m));
+
+  // Row-major canonical samples are exactly the vertex order of VertexIndex.
+  std::size_t v = 0;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i)
+      if (canonical(m, {i, j}) == Sample{i, j}) mesh.positions[v++] = image.at(i * step, j * step).xyz();
+
+  // Large meshes: two threads each write half of the rows (the output is disjoint).
+  if (m >= 256) {
+    std::thread lower(writeTriangleRows, std::cref(index), 0, m / 2, mesh.triangles.data());
+    writeTriangleRows(index, m / 2, m, mesh.triangles.data());
+    lower.join();
+  } else {
+    writeTriangleRows(index, 0, m, mesh.triangles.data());
+  }
+  return mesh;
+}
+
+} // namespace octaclay::core
