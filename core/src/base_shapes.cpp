@@ -1,5 +1,6 @@
 #include "octaclay/core/base_shapes.h"
 
+#include "detail/parallel_rows.h"
 #include "octaclay/core/seaming.h"
 
 #include <algorithm>
@@ -127,11 +128,13 @@ Vec3f octahedralDirection(int n, int i, int j) {
 GeometryImage makeBaseShape(BaseShape shape, int n) {
   GeometryImage image(n);
   const int side = image.side();
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i) {
-      const Vec3f p = surfacePoint(shape, octahedralDirectionD(n, i, j));
-      image.at(i, j) = {p.x, p.y, p.z, 0.0f};
-    }
+  detail::parallelRows(side, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i < side; ++i) {
+        const Vec3f p = surfacePoint(shape, octahedralDirectionD(n, i, j));
+        image.at(i, j) = {p.x, p.y, p.z, 0.0f};
+      }
+  });
   seam(image);
   return image;
 }

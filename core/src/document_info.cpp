@@ -1,7 +1,9 @@
 #include "octaclay/core/document_info.h"
 
+#include "detail/parallel_rows.h"
 #include "octaclay/core/seaming.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace octaclay::core {
@@ -27,13 +29,18 @@ DocumentInfo describeDocument(const Document& document) {
   }
   info.seamGap = maxSeamGap(image);
 
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      for (const auto& tri : cellTriangles(n, i, j)) {
-        const Vec3f a = image.at(tri[0]).xyz();
-        if (length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)) == 0.0f)
-          ++info.degenerateTriangles;
-      }
+  std::atomic<std::uint64_t> degenerate{0};
+  detail::parallelRows(n, [&](int rowBegin, int rowEnd) {
+    std::uint64_t count = 0;
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i < n; ++i)
+        for (const auto& tri : cellTriangles(n, i, j)) {
+          const Vec3f a = image.at(tri[0]).xyz();
+          if (length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)) == 0.0f) ++count;
+        }
+    degenerate += count;
+  });
+  info.degenerateTriangles = degenerate;
 
   info.closed = info.seamGap == 0.0f && info.nonFinite == 0;
   info.manifold = info.closed && info.degenerateTriangles == 0;

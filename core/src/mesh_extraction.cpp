@@ -1,8 +1,8 @@
 #include "octaclay/core/mesh_extraction.h"
 
+#include "detail/parallel_rows.h"
 #include "octaclay/core/vertex_index.h"
 
-#include <thread>
 
 namespace octaclay::core {
 namespace {
@@ -46,14 +46,9 @@ TriangleMesh extractMesh(const GeometryImage& image, int step) {
     for (int i = 0; i <= m; ++i)
       if (canonical(m, {i, j}) == Sample{i, j}) mesh.positions[v++] = image.at(i * step, j * step).xyz();
 
-  // Large meshes: two threads each write half of the rows (the output is disjoint).
-  if (m >= 256) {
-    std::thread lower(writeTriangleRows, std::cref(index), 0, m / 2, mesh.triangles.data());
-    writeTriangleRows(index, m / 2, m, mesh.triangles.data());
-    lower.join();
-  } else {
-    writeTriangleRows(index, 0, m, mesh.triangles.data());
-  }
+  detail::parallelRows(m, [&](int rowBegin, int rowEnd) {
+    writeTriangleRows(index, rowBegin, rowEnd, mesh.triangles.data());
+  }, 128);
   return mesh;
 }
 

@@ -40,7 +40,6 @@ void NormalsTest::sphereMatchesAnalytic() {
   double worst = 0;
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
-      if ((i==0||i==n||j==0||j==n) && (2*i==n||2*j==n)) continue;
       const Vec3f normal = vertexNormal(image, {i, j});
       if (std::abs(length(normal) - 1.0f) > 1e-5f)
         QFAIL(qPrintable(QString("normal at (%1,%2) not unit: %3").arg(i).arg(j).arg(str(normal))));
@@ -62,7 +61,6 @@ void NormalsTest::seamSamplesAgree() {
     const GeometryImage image = makeBaseShape(shape, n);
     for (int k = 0; k <= n; ++k) {
       for (Sample s : {Sample{k, 0}, Sample{k, n}, Sample{0, k}, Sample{n, k}}) {
-        if (2*s.i==n||2*s.j==n) continue;
         std::array<Sample, 4> group{};
         const int c = identifiedSamples(n, s, group);
         const Vec3f ref = vertexNormal(image, s);
@@ -87,11 +85,10 @@ void NormalsTest::seamSamplesAgree() {
 void NormalsTest::computeNormalsMatchesVertexNormal() {
   const int n = 128;
   const GeometryImage image = makeBaseShape(BaseShape::Blob, n);
-  const std::vector<Vec3f> all(static_cast<std::size_t>(n + 1) * (n + 1));
+  const std::vector<Vec3f> all = computeNormals(image);
   QCOMPARE(all.size(), static_cast<std::size_t>(n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
-      if ((i==0||i==n||j==0||j==n) && (2*i==n||2*j==n)) continue;
       const Vec3f a = all[static_cast<std::size_t>(j) * (n + 1) + i];
       const Vec3f b = vertexNormal(image, {i, j});
       if (length(a - b) > 1e-6f)
@@ -109,7 +106,7 @@ void NormalsTest::cubeFaceCentres() {
   const GeometryImage image = makeBaseShape(BaseShape::Cube, n);
   const std::array<Vec3f, 6> axes{Vec3f{0, 0, 1},  Vec3f{0, 0, -1}, Vec3f{1, 0, 0},
                                   Vec3f{-1, 0, 0}, Vec3f{0, 1, 0},  Vec3f{0, -1, 0}};
-  for (const Vec3f& axis : {axes[0], axes[1]}) {
+  for (const Vec3f& axis : axes) {
     // The sample whose octahedron direction is the axis: the centre of that cube face.
     Sample best{};
     float bestDot = -2;
