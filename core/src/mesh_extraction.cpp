@@ -40,11 +40,12 @@ TriangleMesh extractMesh(const GeometryImage& image, int step) {
   mesh.positions.resize(index.vertexCount());
   mesh.triangles.resize(2 * static_cast<std::size_t>(m) * static_cast<std::size_t>(m));
 
-  // Row-major canonical samples are exactly the vertex order of VertexIndex.
+  // Canonical runs are exactly the vertex order of VertexIndex.
   std::size_t v = 0;
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i)
-      if (canonical(m, {i, j}) == Sample{i, j}) mesh.positions[v++] = image.at(i * step, j * step).xyz();
+  forEachCanonicalRun(m, [&](int j, int iBegin, int iEnd) {
+    const Vec4f* row = &image.at(0, j * step);
+    for (int i = iBegin; i < iEnd; ++i) mesh.positions[v++] = row[i * step].xyz();
+  });
 
   detail::parallelRows(m, [&](int rowBegin, int rowEnd) {
     writeTriangleRows(index, rowBegin, rowEnd, mesh.triangles.data());

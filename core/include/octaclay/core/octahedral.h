@@ -31,6 +31,15 @@ Sample canonical(int n, Sample s);
 /// The grid samples that are the same vertex as s, s included; returns how many (1, 2 or 4).
 int identifiedSamples(int n, Sample s, std::array<Sample, 4>& out);
 
+/// Calls run(j, iBegin, iEnd) for each row j = 0 … n with the half-open range of columns whose
+/// samples are canonical, in row-major order: the order in which vertices are numbered.
+template <class Run> void forEachCanonicalRun(int n, Run&& run) {
+  run(0, 0, n / 2 + 1);
+  for (int j = 1; j <= n / 2; ++j) run(j, 0, n + 1);
+  for (int j = n / 2 + 1; j < n; ++j) run(j, 1, n);
+  run(n, 1, n / 2 + 1);
+}
+
 /// How the cell with lower-left sample (i, j) of the tiled plane is split into two triangles:
 /// along the anti-diagonal (i, j+1)–(i+1, j) or the main diagonal (i, j)–(i+1, j+1).
 enum class CellSplit { AntiDiagonal, MainDiagonal };
