@@ -1,15 +1,13 @@
 #include "commands.h"
-
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
 #include "octaclay/core/surface_distance.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace octaclay::app {
 namespace {
@@ -30,10 +28,12 @@ Command addCompareCommand(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
-      "compare", "Distance between two surfaces: RMS and Hausdorff as fractions of a's bounding-box "
-                 "diagonal, and PSNR = 20 log10(1/RMS)");
+      "compare",
+      "Distance between two surfaces: RMS and Hausdorff as fractions of a's bounding-box "
+      "diagonal, and PSNR = 20 log10(1/RMS)");
   sub->add_option("a", opt->a, "Reference: document (.exr) or mesh")->required();
-  sub->add_option("b", opt->b, "Compared: document (.exr) or mesh (.obj, .ply, .stl, .off)")->required();
+  sub->add_option("b", opt->b, "Compared: document (.exr) or mesh (.obj, .ply, .stl, .off)")
+      ->required();
   sub->add_option("--samples", opt->samples, "Random points per surface besides its vertices")
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "Print one JSON object");
@@ -41,16 +41,22 @@ Command addCompareCommand(CLI::App& app) {
   return {sub, [opt]() {
             const core::TriangleMesh a = loadSurface(opt->a);
             const core::TriangleMesh b = loadSurface(opt->b);
-            const core::SurfaceDistance d = core::compareSurfaces(a, b, {.samplesPerSurface = opt->samples});
+            const core::SurfaceDistance d =
+                core::compareSurfaces(a, b, {.samplesPerSurface = opt->samples});
             if (opt->json) {
-              nlohmann::json out{{"a", opt->a},   {"b", opt->b},
-                                 {"rms", d.rms},  {"hausdorff", d.hausdorff},
-                                 {"diagonal", d.diagonal}, {"samples", d.samples}};
+              nlohmann::json out{{"a", opt->a},
+                                 {"b", opt->b},
+                                 {"rms", d.rms},
+                                 {"hausdorff", d.hausdorff},
+                                 {"diagonal", d.diagonal},
+                                 {"samples", d.samples}};
               // JSON has no infinity: identical surfaces report psnr null.
-              out["psnr"] = std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr);
+              out["psnr"] =
+                  std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr);
               std::cout << out.dump() << "\n";
             } else {
-              std::cout << "RMS        " << d.rms << " of the diagonal (" << d.rms * d.diagonal << ")\n"
+              std::cout << "RMS        " << d.rms << " of the diagonal (" << d.rms * d.diagonal
+                        << ")\n"
                         << "Hausdorff  " << d.hausdorff << " of the diagonal ("
                         << d.hausdorff * d.diagonal << ")\n"
                         << "PSNR       " << d.psnr << " dB\n"

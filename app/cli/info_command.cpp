@@ -1,6 +1,5 @@
 #include "commands.h"
 #include "json_output.h"
-
 #include "octaclay/core/document_info.h"
 #include "octaclay/core/document_io.h"
 
@@ -15,7 +14,8 @@ Command addInfoCommand(CLI::App& app) {
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* sub = app.add_subcommand("info", "Describe a document: size, topology, bounding box, layers");
+  CLI::App* sub =
+      app.add_subcommand("info", "Describe a document: size, topology, bounding box, layers");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
@@ -64,10 +64,11 @@ Command addInfoCommand(CLI::App& app) {
                       << "  manifold   " << (info.manifold ? "yes" : "no") << " ("
                       << info.degenerateTriangles << " degenerate triangles)\n"
                       << "  bbox       [" << b.min.x << ", " << b.min.y << ", " << b.min.z
-                      << "] .. [" << b.max.x << ", " << b.max.y << ", " << b.max.z
-                      << "], diagonal " << b.diagonal() << "\n"
+                      << "] .. [" << b.max.x << ", " << b.max.y << ", " << b.max.z << "], diagonal "
+                      << b.diagonal() << "\n"
                       << "  layers    ";
-            for (const auto& l : info.layers) std::cout << " " << l;
+            for (const auto& l : info.layers)
+              std::cout << " " << l;
             std::cout << "\n";
             return kExitOk;
           }};

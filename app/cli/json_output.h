@@ -6,7 +6,9 @@
 
 namespace octaclay::app {
 
-inline nlohmann::json toJson(core::Vec3f v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+inline nlohmann::json toJson(core::Vec3f v) {
+  return nlohmann::json::array({v.x, v.y, v.z});
+}
 
 inline nlohmann::json toJson(const core::BoundingBox& box) {
   return {{"min", toJson(box.min)}, {"max", toJson(box.max)}, {"diagonal", box.diagonal()}};

@@ -1,5 +1,4 @@
 #include "commands.h"
-
 #include "octaclay/core/error.h"
 
 #include <iostream>

@@ -1,6 +1,5 @@
 #include "commands.h"
 #include "json_output.h"
-
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/error.h"
@@ -21,35 +20,42 @@ Command addNewCommand(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("new", "Create a document from a base shape");
   sub->add_option("--shape", opt->shape, "sphere, cube, cylinder or blob")->capture_default_str();
-  sub->add_option("--size", opt->size, "N: the image has (N+1)x(N+1) samples; a power of two, 2..8192")
+  sub->add_option("--size", opt->size,
+                  "N: the image has (N+1)x(N+1) samples; a power of two, 2..8192")
       ->capture_default_str();
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt]() {
-    const auto shape = core::parseBaseShape(opt->shape);
-    if (!shape)
-      throw core::Error(core::ErrorKind::InvalidArgument,
-                        "unknown shape '" + opt->shape + "'; use sphere, cube, cylinder or blob");
-    core::requireValidSize(opt->size);
-    const auto start = std::chrono::steady_clock::now();
-    const core::Document document = core::makeDocument(core::makeBaseShape(*shape, opt->size));
-    core::writeDocument(document, opt->output);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (opt->json) {
-      std::cout << nlohmann::json{{"output", opt->output},
-                                  {"shape", opt->shape},
-                                  {"size", opt->size},
-                                  {"vertices", std::uint64_t(opt->size) * std::uint64_t(opt->size) + 2},
-                                  {"ms", ms}}
-                       .dump()
-                << "\n";
-    } else {
-      std::cout << "created " << opt->output << ": " << opt->shape << ", N = " << opt->size << " ("
-                << opt->size + 1 << "x" << opt->size + 1 << " samples) in " << ms << " ms\n";
-    }
-    return kExitOk;
-  }};
+            const auto shape = core::parseBaseShape(opt->shape);
+            if (!shape)
+              throw core::Error(core::ErrorKind::InvalidArgument,
+                                "unknown shape '" + opt->shape +
+                                    "'; use sphere, cube, cylinder or blob");
+            core::requireValidSize(opt->size);
+            const auto start = std::chrono::steady_clock::now();
+            const core::Document document =
+                core::makeDocument(core::makeBaseShape(*shape, opt->size));
+            core::writeDocument(document, opt->output);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            if (opt->json) {
+              std::cout << nlohmann::json{{"output", opt->output},
+                                          {"shape", opt->shape},
+                                          {"size", opt->size},
+                                          {"vertices",
+                                           std::uint64_t(opt->size) * std::uint64_t(opt->size) + 2},
+                                          {"ms", ms}}
+                               .dump()
+                        << "\n";
+            } else {
+              std::cout << "created " << opt->output << ": " << opt->shape << ", N = " << opt->size
+                        << " (" << opt->size + 1 << "x" << opt->size + 1 << " samples) in " << ms
+                        << " ms\n";
+            }
+            return kExitOk;
+          }};
 }
 
 } // namespace octaclay::app

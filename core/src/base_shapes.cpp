@@ -51,8 +51,8 @@ double blobNoise(double x, double y, double z) {
     double dx, dy, dz, frequency, phase, amplitude;
   };
   static constexpr Wave waves[] = {
-      {0.267, 0.534, 0.802, 2.0, 0.3, 0.35},   {-0.707, 0.0, 0.707, 3.0, 1.1, 0.25},
-      {0.577, -0.577, 0.577, 4.0, 2.3, 0.2},   {0.0, 0.894, -0.447, 5.0, 0.7, 0.12},
+      {0.267, 0.534, 0.802, 2.0, 0.3, 0.35},    {-0.707, 0.0, 0.707, 3.0, 1.1, 0.25},
+      {0.577, -0.577, 0.577, 4.0, 2.3, 0.2},    {0.0, 0.894, -0.447, 5.0, 0.7, 0.12},
       {-0.408, -0.816, -0.408, 7.0, 1.9, 0.08},
   };
   double value = 0;
@@ -61,7 +61,9 @@ double blobNoise(double x, double y, double z) {
   return value;
 }
 
-double blobRadius(double x, double y, double z) { return 0.85 + 0.15 * blobNoise(x, y, z); }
+double blobRadius(double x, double y, double z) {
+  return 0.85 + 0.15 * blobNoise(x, y, z);
+}
 
 struct Dir {
   double x, y, z;

@@ -36,7 +36,8 @@ DocumentInfo describeDocument(const Document& document) {
       for (int i = 0; i < n; ++i)
         for (const auto& tri : cellTriangles(n, i, j)) {
           const Vec3f a = image.at(tri[0]).xyz();
-          if (length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)) == 0.0f) ++count;
+          if (length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)) == 0.0f)
+            ++count;
         }
     degenerate += count;
   });

@@ -11,12 +11,11 @@
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
-#include <half.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <half.h>
 #include <memory>
 #include <thread>
 
@@ -121,14 +120,15 @@ void addLayerSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const L
       // A zero y stride makes every row read one row of the fill value, so an unpainted layer
       // costs one row of memory. (OpenEXR loops forever on a zero x stride.)
       const std::size_t xStride = sizeof(half) * layer.channels;
-      frame.insert(channel, Imf::Slice(Imf::HALF, shifted(uniformRow.data() + c, window, xStride, 0),
-                                       xStride, 0));
+      frame.insert(
+          channel,
+          Imf::Slice(Imf::HALF, shifted(uniformRow.data() + c, window, xStride, 0), xStride, 0));
     } else {
       const std::size_t xStride = sizeof(float) * layer.channels;
       const std::size_t yStride = xStride * side;
       auto* base = const_cast<float*>(layer.texels.data()) + c;
-      frame.insert(channel, Imf::Slice(Imf::FLOAT, shifted(base, window, xStride, yStride),
-                                       xStride, yStride));
+      frame.insert(channel, Imf::Slice(Imf::FLOAT, shifted(base, window, xStride, yStride), xStride,
+                                       yStride));
     }
   }
 }
@@ -150,7 +150,8 @@ void readLayer(const fs::path& path, Imf::InputFile& file, const DocumentHeader&
   const std::size_t xStride = sizeof(float) * layer.channels;
   for (int c = 0; c < layer.channels; ++c)
     frame.insert(layer.name + "." + names[c],
-                 Imf::Slice(Imf::FLOAT, shifted(layer.texels.data() + c, window, xStride, xStride * side),
+                 Imf::Slice(Imf::FLOAT,
+                            shifted(layer.texels.data() + c, window, xStride, xStride * side),
                             xStride, xStride * side));
   file.setFrameBuffer(frame);
   file.readPixels(window.min.y, window.max.y);
@@ -160,7 +161,8 @@ void readLayer(const fs::path& path, Imf::InputFile& file, const DocumentHeader&
   for (std::size_t k = layer.channels; k < layer.texels.size() && uniform; ++k)
     uniform = layer.texels[k] == layer.texels[k % layer.channels];
   if (uniform) {
-    for (int c = 0; c < layer.channels; ++c) layer.fill[c] = layer.texels[c];
+    for (int c = 0; c < layer.channels; ++c)
+      layer.fill[c] = layer.texels[c];
     layer.texels.clear();
     layer.texels.shrink_to_fit();
   }
@@ -196,8 +198,9 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
     Imf::FrameBuffer frame;
     float* base = &document.positions.texels()[0].x;
     for (int c = 0; c < 3; ++c)
-      frame.insert(kPositionChannels[c],
-                   Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+      frame.insert(
+          kPositionChannels[c],
+          Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
 
@@ -230,15 +233,16 @@ void writeDocument(const Document& document, const fs::path& path) {
   detail::writeAtomically(path, [&](const fs::path& temp) {
     Imf::Header header(side, side);
     // ZIP level 1: most of ZIP's gain on float positions for a fraction of its time.
-    // ZIP (level 1) up to N = 1024 (the modeller's default): a third of the bytes in ~0.4 s. Past that it
-    // takes seconds on two cores, so working files stay uncompressed and compact storage is
+    // ZIP (level 1) up to N = 1024 (the modeller's default): a third of the bytes in ~0.4 s. Past
+    // that it takes seconds on two cores, so working files stay uncompressed and compact storage is
     // `octaclay-cli compress`'s job.
     header.compression() = n <= kLargestZipSize ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
     header.zipCompressionLevel() = 1;
     header.insert(kFormatAttribute, Imf::IntAttribute(kDocumentFormatVersion));
     header.insert(kParameterizationAttribute, Imf::StringAttribute("octahedral"));
     header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
-    for (const char* name : kPositionChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    for (const char* name : kPositionChannels)
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     std::vector<const Layer*> layers{&document.diffuse, &document.feature};
     if (document.hasMask) layers.push_back(&document.mask);
     for (const Layer* layer : layers)
@@ -250,8 +254,9 @@ void writeDocument(const Document& document, const fs::path& path) {
     const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
     auto* base = const_cast<float*>(&document.positions.texels()[0].x);
     for (int c = 0; c < 3; ++c)
-      frame.insert(kPositionChannels[c],
-                   Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+      frame.insert(
+          kPositionChannels[c],
+          Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
     std::array<std::vector<half>, 3> uniformRows;
     for (std::size_t k = 0; k < layers.size(); ++k)
       addLayerSlices(frame, window, *layers[k], side, uniformRows[k]);

@@ -3,7 +3,6 @@
 #include "detail/parallel_rows.h"
 #include "octaclay/core/vertex_index.h"
 
-
 namespace octaclay::core {
 namespace {
 
@@ -44,12 +43,16 @@ TriangleMesh extractMesh(const GeometryImage& image, int step) {
   std::size_t v = 0;
   forEachCanonicalRun(m, [&](int j, int iBegin, int iEnd) {
     const Vec4f* row = &image.at(0, j * step);
-    for (int i = iBegin; i < iEnd; ++i) mesh.positions[v++] = row[i * step].xyz();
+    for (int i = iBegin; i < iEnd; ++i)
+      mesh.positions[v++] = row[i * step].xyz();
   });
 
-  detail::parallelRows(m, [&](int rowBegin, int rowEnd) {
-    writeTriangleRows(index, rowBegin, rowEnd, mesh.triangles.data());
-  }, 128);
+  detail::parallelRows(
+      m,
+      [&](int rowBegin, int rowEnd) {
+        writeTriangleRows(index, rowBegin, rowEnd, mesh.triangles.data());
+      },
+      128);
   return mesh;
 }
 

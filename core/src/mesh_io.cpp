@@ -6,7 +6,6 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
-
 #include <algorithm>
 #include <cctype>
 
@@ -31,7 +30,8 @@ void silenceOpenMesh() {
 OpenMeshTriMesh toOpenMesh(const TriangleMesh& mesh) {
   OpenMeshTriMesh out;
   out.reserve(mesh.positions.size(), mesh.triangles.size() * 3 / 2, mesh.triangles.size());
-  for (const Vec3f& p : mesh.positions) out.add_vertex({p.x, p.y, p.z});
+  for (const Vec3f& p : mesh.positions)
+    out.add_vertex({p.x, p.y, p.z});
   std::size_t rejected = 0;
   for (const auto& t : mesh.triangles) {
     const auto face = out.add_face(OpenMeshTriMesh::VertexHandle(int(t[0])),
@@ -49,7 +49,8 @@ OpenMeshTriMesh toOpenMesh(const TriangleMesh& mesh) {
 
 std::optional<MeshFormat> meshFormatFromPath(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".stl") return MeshFormat::Stl;
@@ -60,17 +61,20 @@ std::optional<MeshFormat> meshFormatFromPath(const fs::path& path) {
 void writeMesh(const TriangleMesh& mesh, const fs::path& path) {
   const auto format = meshFormatFromPath(path);
   if (!format)
-    throw Error(ErrorKind::InvalidArgument, "cannot write " + path.string() +
-                                                ": unknown mesh format; use .obj, .ply, .stl or .off");
+    throw Error(ErrorKind::InvalidArgument,
+                "cannot write " + path.string() +
+                    ": unknown mesh format; use .obj, .ply, .stl or .off");
   silenceOpenMesh();
   const OpenMeshTriMesh om = toOpenMesh(mesh);
   OpenMesh::IO::Options options;
-  if (*format == MeshFormat::Ply || *format == MeshFormat::Stl) options += OpenMesh::IO::Options::Binary;
+  if (*format == MeshFormat::Ply || *format == MeshFormat::Stl)
+    options += OpenMesh::IO::Options::Binary;
   detail::writeAtomically(path, [&](const fs::path& temp) {
     // OpenMesh picks its writer from the extension, which the temporary keeps (lower-cased).
     fs::path lower = temp;
     std::string ext = temp.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     lower.replace_extension(ext);
     if (!OpenMesh::IO::write_mesh(om, lower.string(), options, kFloatDigits))
       throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the mesh writer failed");
@@ -83,8 +87,9 @@ TriangleMesh readMesh(const fs::path& path) {
   if (!fs::is_regular_file(path, ec))
     throw Error(ErrorKind::Io, "cannot open " + path.string() + ": no such file");
   if (!meshFormatFromPath(path))
-    throw Error(ErrorKind::InvalidArgument, "cannot read " + path.string() +
-                                                ": unknown mesh format; use .obj, .ply, .stl or .off");
+    throw Error(ErrorKind::InvalidArgument,
+                "cannot read " + path.string() +
+                    ": unknown mesh format; use .obj, .ply, .stl or .off");
   silenceOpenMesh();
   OpenMeshTriMesh om;
   OpenMesh::IO::Options options;

@@ -12,11 +12,15 @@ long long floorMod(long long a, long long m) {
   return r < 0 ? r + m : r;
 }
 
-long long floorDiv(long long a, long long m) { return (a - floorMod(a, m)) / m; }
+long long floorDiv(long long a, long long m) {
+  return (a - floorMod(a, m)) / m;
+}
 
 } // namespace
 
-bool isValidSize(int n) { return n >= kMinSize && n <= kMaxSize && (n & (n - 1)) == 0; }
+bool isValidSize(int n) {
+  return n >= kMinSize && n <= kMaxSize && (n & (n - 1)) == 0;
+}
 
 void requireValidSize(int n) {
   if (!isValidSize(n))

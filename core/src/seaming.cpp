@@ -30,7 +30,8 @@ void seam(GeometryImage& image) {
     }
     const float inv = 1.0f / static_cast<float>(count);
     const Vec4f mean{sum.x * inv, sum.y * inv, sum.z * inv, sum.w * inv};
-    for (int k = 0; k < count; ++k) image.at(same[k]) = mean;
+    for (int k = 0; k < count; ++k)
+      image.at(same[k]) = mean;
   });
 }
 

@@ -15,7 +15,8 @@ void BoundingBox::extend(Vec3f p) {
 
 BoundingBox boundingBox(const TriangleMesh& mesh) {
   BoundingBox box;
-  for (const Vec3f& p : mesh.positions) box.extend(p);
+  for (const Vec3f& p : mesh.positions)
+    box.extend(p);
   return box;
 }
 
@@ -54,7 +55,8 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
 
   for (std::size_t k = 0; k < halfEdges.size();) {
     std::size_t end = k + 1;
-    while (end < halfEdges.size() && halfEdges[end].first == halfEdges[k].first) ++end;
+    while (end < halfEdges.size() && halfEdges[end].first == halfEdges[k].first)
+      ++end;
     const std::size_t count = end - k;
     ++topo.edges;
     if (count == 1)

@@ -10,7 +10,8 @@ VertexIndex::VertexIndex(int n, int step) : m_(detail::subsampledSize(n, step)),
   std::uint32_t next = 0;
   forEachCanonicalRun(m_, [&](int j, int iBegin, int iEnd) {
     std::uint32_t* row = indices_.data() + j * side;
-    for (int i = iBegin; i < iEnd; ++i) row[i] = next++;
+    for (int i = iBegin; i < iEnd; ++i)
+      row[i] = next++;
   });
   vertexCount_ = next;
   // The other samples take their canonical sample's index; those all lie on the border.
@@ -25,7 +26,8 @@ std::vector<Sample> VertexIndex::canonicalSamples() const {
   std::vector<Sample> samples;
   samples.reserve(vertexCount_);
   forEachCanonicalRun(m_, [&](int j, int iBegin, int iEnd) {
-    for (int i = iBegin; i < iEnd; ++i) samples.push_back({i, j});
+    for (int i = iBegin; i < iEnd; ++i)
+      samples.push_back({i, j});
   });
   return samples;
 }

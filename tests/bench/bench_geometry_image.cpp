@@ -4,9 +4,8 @@
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/mesh_extraction.h"
 
-#include <benchmark/benchmark.h>
-
 #include <algorithm>
+#include <benchmark/benchmark.h>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -37,7 +36,8 @@ double memcpySeconds(std::size_t bytes) {
     std::memcpy(to.data(), from.data(), bytes);
     benchmark::DoNotOptimize(to.data());
     benchmark::ClobberMemory();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
 }
@@ -46,7 +46,8 @@ double memcpySeconds(std::size_t bytes) {
 void reportAgainstMemcpy(benchmark::State& state, std::size_t bytes, double seconds) {
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * bytes));
   state.counters["bytes"] = static_cast<double>(bytes);
-  state.counters["x_memcpy"] = seconds / static_cast<double>(state.iterations()) / memcpySeconds(bytes);
+  state.counters["x_memcpy"] =
+      seconds / static_cast<double>(state.iterations()) / memcpySeconds(bytes);
 }
 
 template <class F> double timedLoop(benchmark::State& state, F&& f) {
@@ -90,7 +91,9 @@ BENCHMARK(BM_Memcpy)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-fs::path benchFile() { return fs::temp_directory_path() / "octaclay_bench_document.exr"; }
+fs::path benchFile() {
+  return fs::temp_directory_path() / "octaclay_bench_document.exr";
+}
 
 void BM_SaveDocument(benchmark::State& state) {
   const Document document = makeDocument(sphere());

@@ -18,9 +18,11 @@ template <class Body> void parallelRows(int rows, Body&& body, int minRowsPerThr
   std::vector<std::thread> workers;
   const int band = (rows + threads - 1) / threads;
   for (int t = 1; t < threads; ++t)
-    workers.emplace_back([&body, t, band, rows] { body(t * band, std::min(rows, (t + 1) * band)); });
+    workers.emplace_back(
+        [&body, t, band, rows] { body(t * band, std::min(rows, (t + 1) * band)); });
   body(0, std::min(rows, band));
-  for (auto& w : workers) w.join();
+  for (auto& w : workers)
+    w.join();
 }
 
 } // namespace octaclay::core::detail

@@ -12,9 +12,9 @@ namespace octaclay::core::detail {
 inline int subsampledSize(int n, int step) {
   requireValidSize(n);
   if (step < 1 || (step & (step - 1)) != 0 || n / step < kMinSize)
-    throw Error(ErrorKind::InvalidArgument,
-                "LOD step " + std::to_string(step) + " is invalid for size " + std::to_string(n) +
-                    ": use a power of two with N/step >= 2");
+    throw Error(ErrorKind::InvalidArgument, "LOD step " + std::to_string(step) +
+                                                " is invalid for size " + std::to_string(n) +
+                                                ": use a power of two with N/step >= 2");
   return n / step;
 }
 

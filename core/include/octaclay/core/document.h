@@ -11,10 +11,10 @@ namespace octaclay::core {
 /// A painted layer beside the positions, on the same (N+1)² grid. A layer nobody has painted
 /// stays uniform (no texel storage, just its fill value) so large documents stay small.
 struct Layer {
-  std::string name;              ///< "diffuse", "feature" or "mask"
-  int channels = 0;              ///< 4, 3 or 1
-  std::array<float, 4> fill{};   ///< value of every texel while uniform
-  std::vector<float> texels;     ///< empty while uniform, else (N+1)² × channels, row-major
+  std::string name;            ///< "diffuse", "feature" or "mask"
+  int channels = 0;            ///< 4, 3 or 1
+  std::array<float, 4> fill{}; ///< value of every texel while uniform
+  std::vector<float> texels;   ///< empty while uniform, else (N+1)² × channels, row-major
 
   bool uniform() const { return texels.empty(); }
   /// Channel names as stored in the EXR file, e.g. {"R","G","B","A"}.

@@ -35,8 +35,10 @@ int identifiedSamples(int n, Sample s, std::array<Sample, 4>& out);
 /// samples are canonical, in row-major order: the order in which vertices are numbered.
 template <class Run> void forEachCanonicalRun(int n, Run&& run) {
   run(0, 0, n / 2 + 1);
-  for (int j = 1; j <= n / 2; ++j) run(j, 0, n + 1);
-  for (int j = n / 2 + 1; j < n; ++j) run(j, 1, n);
+  for (int j = 1; j <= n / 2; ++j)
+    run(j, 0, n + 1);
+  for (int j = n / 2 + 1; j < n; ++j)
+    run(j, 1, n);
   run(n, 1, n / 2 + 1);
 }
 

@@ -15,10 +15,10 @@ struct SurfaceDistanceOptions {
 /// Symmetric point-to-surface distance between two meshes, as fractions of the bounding-box
 /// diagonal of `a`. PSNR = 20·log10(1 / rms).
 struct SurfaceDistance {
-  double rms = 0;        ///< over the samples of both directions together
-  double hausdorff = 0;  ///< max over both directions
-  double psnr = 0;       ///< dB; +inf when rms is 0
-  double diagonal = 0;   ///< of a's bounding box, object units
+  double rms = 0;       ///< over the samples of both directions together
+  double hausdorff = 0; ///< max over both directions
+  double psnr = 0;      ///< dB; +inf when rms is 0
+  double diagonal = 0;  ///< of a's bounding box, object units
   std::size_t samples = 0;
 };
 

@@ -31,14 +31,14 @@ double signedVolume(const TriangleMesh& mesh);
 
 /// Combinatorial facts of an indexed triangle mesh.
 struct MeshTopology {
-  std::size_t vertices = 0;        ///< referenced by at least one triangle
-  std::size_t unusedVertices = 0;  ///< in positions, referenced by none
+  std::size_t vertices = 0;       ///< referenced by at least one triangle
+  std::size_t unusedVertices = 0; ///< in positions, referenced by none
   std::size_t edges = 0;
   std::size_t triangles = 0;
-  std::size_t boundaryEdges = 0;    ///< in one triangle
-  std::size_t nonManifoldEdges = 0; ///< in three or more, or twice in one direction
+  std::size_t boundaryEdges = 0;       ///< in one triangle
+  std::size_t nonManifoldEdges = 0;    ///< in three or more, or twice in one direction
   std::size_t degenerateTriangles = 0; ///< repeated index or zero area
-  long long euler = 0;              ///< V − E + F over referenced vertices
+  long long euler = 0;                 ///< V − E + F over referenced vertices
   bool closed() const { return boundaryEdges == 0; }
   bool manifold() const { return nonManifoldEdges == 0; }
 };

@@ -16,11 +16,15 @@ struct Vec3f {
   friend bool operator==(Vec3f a, Vec3f b) = default;
 };
 
-inline float dot(Vec3f a, Vec3f b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline float dot(Vec3f a, Vec3f b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline Vec3f cross(Vec3f a, Vec3f b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline float length(Vec3f a) { return std::sqrt(dot(a, a)); }
+inline float length(Vec3f a) {
+  return std::sqrt(dot(a, a));
+}
 /// Unit vector along a; the zero vector stays zero.
 inline Vec3f normalize(Vec3f a) {
   const float l = length(a);
