@@ -29,14 +29,14 @@ Command addExportCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {
-      sub, [opt]() {
+      sub, [opt, sub]() {
         if (!core::meshFormatFromPath(opt->output))
           throw core::Error(core::ErrorKind::InvalidArgument,
                             "cannot export to " + opt->output +
                                 ": unknown mesh format; use .obj, .ply, .stl or .off");
         const core::Document document = core::readDocument(opt->input, {.layers = false});
         const int n = document.size();
-        const int m = opt->lod == 0 ? n : opt->lod;
+        const int m = sub->count("--lod") > 0 ? opt->lod : n;
         if (m < 2 || m > n || (m & (m - 1)) != 0)
           throw core::Error(core::ErrorKind::InvalidArgument,
                             "--lod " + std::to_string(opt->lod) +

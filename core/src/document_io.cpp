@@ -9,8 +9,8 @@
 #include <ImfInputFile.h>
 #include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
-#include <ImfThreading.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -52,6 +52,9 @@ std::unique_ptr<Imf::InputFile> openExr(const fs::path& path) {
 
 // OpenEXR's own message for a non-EXR file is obscure; check the magic number first.
 void requireExrMagic(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder, not a document");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::Io, "cannot open " + path.string() +
@@ -106,31 +109,26 @@ char* shifted(void* base, const Imath::Box2i& window, std::size_t xStride, std::
          static_cast<std::ptrdiff_t>(window.min.y) * yStride;
 }
 
+// OpenEXR converts pixel types when reading but not when writing, so a layer is handed over as
+// half: one row of its fill value while uniform (a zero y stride repeats it down the image;
+// OpenEXR loops forever on a zero x stride), else all its texels converted.
 void addLayerSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const Layer& layer,
-                    int side, std::vector<half>& uniformRow) {
-  const auto names = layer.channelNames();
+                    int side, std::vector<half>& halves) {
+  const std::size_t xStride = sizeof(half) * layer.channels;
+  std::size_t yStride = 0;
   if (layer.uniform()) {
-    uniformRow.resize(static_cast<std::size_t>(side) * layer.channels);
-    for (std::size_t k = 0; k < uniformRow.size(); ++k)
-      uniformRow[k] = half(layer.fill[k % layer.channels]);
+    halves.resize(static_cast<std::size_t>(side) * layer.channels);
+    for (std::size_t k = 0; k < halves.size(); ++k)
+      halves[k] = half(layer.fill[k % layer.channels]);
+  } else {
+    halves.assign(layer.texels.begin(), layer.texels.end());
+    yStride = xStride * side;
   }
-  for (int c = 0; c < layer.channels; ++c) {
-    const std::string channel = layer.name + "." + names[c];
-    if (layer.uniform()) {
-      // A zero y stride makes every row read one row of the fill value, so an unpainted layer
-      // costs one row of memory. (OpenEXR loops forever on a zero x stride.)
-      const std::size_t xStride = sizeof(half) * layer.channels;
-      frame.insert(
-          channel,
-          Imf::Slice(Imf::HALF, shifted(uniformRow.data() + c, window, xStride, 0), xStride, 0));
-    } else {
-      const std::size_t xStride = sizeof(float) * layer.channels;
-      const std::size_t yStride = xStride * side;
-      auto* base = const_cast<float*>(layer.texels.data()) + c;
-      frame.insert(channel, Imf::Slice(Imf::FLOAT, shifted(base, window, xStride, yStride), xStride,
-                                       yStride));
-    }
-  }
+  const auto names = layer.channelNames();
+  for (int c = 0; c < layer.channels; ++c)
+    frame.insert(layer.name + "." + names[c],
+                 Imf::Slice(Imf::HALF, shifted(halves.data() + c, window, xStride, yStride),
+                            xStride, yStride));
 }
 
 void readLayer(const fs::path& path, Imf::InputFile& file, const DocumentHeader& header,
@@ -257,13 +255,26 @@ void writeDocument(const Document& document, const fs::path& path) {
       frame.insert(
           kPositionChannels[c],
           Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
-    std::array<std::vector<half>, 3> uniformRows;
+    std::array<std::vector<half>, 3> halves;
     for (std::size_t k = 0; k < layers.size(); ++k)
-      addLayerSlices(frame, window, *layers[k], side, uniformRows[k]);
+      addLayerSlices(frame, window, *layers[k], side, halves[k]);
 
-    Imf::OutputFile file(temp.c_str(), header, exrThreads(header.compression()));
-    file.setFrameBuffer(frame);
-    file.writePixels(side);
+    // OutputFile writes its offset table in its destructor and swallows errors there, so the
+    // stream is ours and its state is checked after the file is gone.
+    std::ofstream stream(temp, std::ios::binary | std::ios::trunc);
+    if (!stream) throw Error(ErrorKind::Io, "cannot create " + temp.string());
+    {
+      Imf::StdOFStream exrStream(stream, temp.c_str());
+      Imf::OutputFile file(exrStream, header, exrThreads(header.compression()));
+      file.setFrameBuffer(frame);
+      file.writePixels(side);
+    }
+    stream.flush();
+    stream.close();
+    if (stream.fail())
+      throw Error(ErrorKind::Io, "cannot write " + path.string() +
+                                     ": the disk refused the last "
+                                     "bytes (full, or over a size limit)");
   });
 }
 

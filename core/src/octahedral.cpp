@@ -93,9 +93,16 @@ std::array<std::array<Sample, 3>, 2> cellTriangles(int n, int i, int j) {
 }
 
 int incidentTriangles(int n, Sample s, std::array<std::array<Sample, 3>, 6>& out) {
+  // Side midpoints are half-turn centres of the tiling: the plane around them covers their
+  // four triangles twice, so only the cells on one side of the fold are taken.
+  const long long half = n / 2;
+  const bool verticalMidpoint = floorMod(s.i, n) == 0 && floorMod(s.j, n) == half;
+  const bool horizontalMidpoint = floorMod(s.i, n) == half && floorMod(s.j, n) == 0;
+  const int diBegin = verticalMidpoint ? 0 : -1;
+  const int djBegin = horizontalMidpoint ? 0 : -1;
   int count = 0;
-  for (int dj = -1; dj <= 0; ++dj)
-    for (int di = -1; di <= 0; ++di)
+  for (int dj = djBegin; dj <= 0; ++dj)
+    for (int di = diBegin; di <= 0; ++di)
       for (const auto& tri : cellTriangles(n, s.i + di, s.j + dj))
         for (int k = 0; k < 3; ++k)
           if (tri[k] == s) out[count++] = {tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]};

@@ -28,7 +28,9 @@ QString nameOf(BaseShape shape) {
   return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
 }
 
-QString str(Vec3f v) { return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+QString str(Vec3f v) {
+  return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
 
 } // namespace
 
@@ -86,7 +88,8 @@ void BaseShapesTest::shapes() {
   for (const auto& t : mesh.triangles) {
     const Vec3f c =
         (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) * (1.0f / 3.0f);
-    worstCentroid = std::max(worstCentroid, std::abs(double(baseShapeDistance(shape, c))) / diagonal);
+    worstCentroid =
+        std::max(worstCentroid, std::abs(double(baseShapeDistance(shape, c))) / diagonal);
   }
   qInfo("worst vertex %g, worst centroid %g of the diagonal", worstVertex, worstCentroid);
   QVERIFY2(worstVertex <= 1e-5, qPrintable(QString::number(worstVertex)));
@@ -145,8 +148,8 @@ void BaseShapesTest::seamAverages() {
       const int c = identifiedSamples(n, {i, j}, group);
       for (int a = 0; a < c; ++a)
         for (int b = 0; b < c; ++b)
-          expectedGap = std::max(expectedGap, length(perturbed.at(group[a]).xyz() -
-                                                     perturbed.at(group[b]).xyz()));
+          expectedGap = std::max(
+              expectedGap, length(perturbed.at(group[a]).xyz() - perturbed.at(group[b]).xyz()));
     }
   QVERIFY(expectedGap > 0.5f - 0.1f);
   QVERIFY2(std::abs(maxSeamGap(perturbed) - expectedGap) <= 1e-6f * (1 + expectedGap),
@@ -171,8 +174,8 @@ void BaseShapesTest::seamAverages() {
         ax += t.x, ay += t.y, az += t.z, aw += t.w;
       }
       ax /= c, ay /= c, az /= c, aw /= c;
-      const double err = std::max({std::abs(got.x - ax), std::abs(got.y - ay),
-                                   std::abs(got.z - az), std::abs(got.w - aw)});
+      const double err = std::max(
+          {std::abs(got.x - ax), std::abs(got.y - ay), std::abs(got.z - az), std::abs(got.w - aw)});
       if (err > 1e-6)
         QFAIL(qPrintable(QString("(%1,%2) is %3 off the average of its %4 samples")
                              .arg(i)

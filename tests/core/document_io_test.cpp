@@ -43,7 +43,8 @@ void writeBytes(const fs::path& p, std::string_view bytes) {
 
 std::set<std::string> listDir(const fs::path& dir) {
   std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(dir))
+    names.insert(e.path().filename().string());
   return names;
 }
 
@@ -78,20 +79,21 @@ QString expectError(const std::function<void()>& f, ErrorKind kind, const QStrin
 
 // Writes an EXR with Imf directly: width × height, FLOAT channels `channels` filled with a smooth
 // pattern, and the non-standard attributes of `templateFile` (empty: none, i.e. a foreign EXR).
-void writeRawExr(const fs::path& path, int width, int height, const std::vector<std::string>& channels,
-                 const fs::path& templateFile = {},
+void writeRawExr(const fs::path& path, int width, int height,
+                 const std::vector<std::string>& channels, const fs::path& templateFile = {},
                  const std::function<void(Imf::Header&)>& edit = {}) {
   Imf::Header header(width, height);
   if (!templateFile.empty()) {
     Imf::InputFile in(templateFile.c_str());
     static const std::set<std::string> standard{
-        "channels",         "compression",       "dataWindow",       "displayWindow",
-        "lineOrder",        "pixelAspectRatio",  "screenWindowCenter", "screenWindowWidth"};
+        "channels",  "compression",      "dataWindow",         "displayWindow",
+        "lineOrder", "pixelAspectRatio", "screenWindowCenter", "screenWindowWidth"};
     for (auto it = in.header().begin(); it != in.header().end(); ++it)
       if (!standard.count(it.name())) header.insert(it.name(), it.attribute());
   }
   if (edit) edit(header);
-  for (const auto& c : channels) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+  for (const auto& c : channels)
+    header.channels().insert(c, Imf::Channel(Imf::FLOAT));
   std::vector<std::vector<float>> data(channels.size(),
                                        std::vector<float>(std::size_t(width) * height));
   Imf::FrameBuffer frame;
@@ -229,8 +231,8 @@ void DocumentIoTest::roundTrip() {
   QCOMPARE(back.size(), 64);
   QVERIFY2(positionsBitExact(doc.positions, back.positions), "positions not bit-exact");
   QVERIFY(back.hasMask);
-  for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse}, std::pair{&doc.feature, &back.feature},
-                      std::pair{&doc.mask, &back.mask}}) {
+  for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse},
+                      std::pair{&doc.feature, &back.feature}, std::pair{&doc.mask, &back.mask}}) {
     const QString why = compareLayer(*w, *r, 64);
     QVERIFY2(why.isEmpty(), qPrintable(why));
   }
@@ -270,8 +272,8 @@ void DocumentIoTest::roundTripPaintedLayer() {
   NO_THROW(back = readDocument(p));
   QVERIFY2(positionsBitExact(doc.positions, back.positions), "positions not bit-exact");
   QVERIFY(!back.diffuse.uniform());
-  for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse}, std::pair{&doc.feature, &back.feature},
-                      std::pair{&doc.mask, &back.mask}}) {
+  for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse},
+                      std::pair{&doc.feature, &back.feature}, std::pair{&doc.mask, &back.mask}}) {
     const QString why = compareLayer(*w, *r, 64);
     QVERIFY2(why.isEmpty(), qPrintable(why));
   }
@@ -340,17 +342,17 @@ void DocumentIoTest::truncated() {
   const std::string bytes = readBytes(goodFile());
   QVERIFY(bytes.size() > 1000);
   std::vector<std::size_t> lengths;
-  for (std::size_t k = 0; k < 40; ++k) lengths.push_back(bytes.size() * k / 40);
-  for (std::size_t len = 1; len < 400; len += 23) lengths.push_back(len);
+  for (std::size_t k = 0; k < 40; ++k)
+    lengths.push_back(bytes.size() * k / 40);
+  for (std::size_t len = 1; len < 400; len += 23)
+    lengths.push_back(len);
   lengths.push_back(bytes.size() - 1);
   const fs::path p = path("truncated.exr");
   for (std::size_t len : lengths) {
     writeBytes(p, std::string_view(bytes).substr(0, len));
     const QString why = expectError([&] { readDocument(p); }, ErrorKind::InvalidInput, "");
-    QVERIFY2(why.isEmpty(), qPrintable(QString("length %1 of %2: %3")
-                                           .arg(len)
-                                           .arg(bytes.size())
-                                           .arg(why)));
+    QVERIFY2(why.isEmpty(),
+             qPrintable(QString("length %1 of %2: %3").arg(len).arg(bytes.size()).arg(why)));
   }
   // The message says what is wrong once the header is intact.
   writeBytes(p, std::string_view(bytes).substr(0, bytes.size() / 2));

@@ -21,13 +21,16 @@ using namespace octaclay::core;
 namespace {
 
 using P = std::tuple<float, float, float>;
-P key(Vec3f v) { return {v.x, v.y, v.z}; }
+P key(Vec3f v) {
+  return {v.x, v.y, v.z};
+}
 
 // A triangle as its three corner positions, rotated so the smallest comes first (keeps
 // orientation).
 std::array<P, 3> orientedTriangle(const TriangleMesh& m, const std::array<std::uint32_t, 3>& t) {
   std::array<P, 3> p{key(m.positions[t[0]]), key(m.positions[t[1]]), key(m.positions[t[2]])};
-  while (p[0] > p[1] || p[0] > p[2]) p = {p[1], p[2], p[0]};
+  while (p[0] > p[1] || p[0] > p[2])
+    p = {p[1], p[2], p[0]};
   return p;
 }
 
@@ -37,7 +40,8 @@ void checkClosedGenus0(const TriangleMesh& mesh, int m) {
   QCOMPARE(mesh.positions.size(), v);
   QCOMPARE(mesh.triangles.size(), t);
   for (const auto& tri : mesh.triangles)
-    for (auto idx : tri) QVERIFY(idx < mesh.positions.size());
+    for (auto idx : tri)
+      QVERIFY(idx < mesh.positions.size());
   const MeshTopology topo = analyzeTopology(mesh);
   QCOMPARE(topo.vertices, v);
   QCOMPARE(topo.unusedVertices, std::size_t{0});
@@ -53,7 +57,8 @@ void checkClosedGenus0(const TriangleMesh& mesh, int m) {
 
 void sizeRows() {
   QTest::addColumn<int>("n");
-  for (int n = 2; n <= 1024; n *= 2) QTest::newRow(QByteArray::number(n).constData()) << n;
+  for (int n = 2; n <= 1024; n *= 2)
+    QTest::newRow(QByteArray::number(n).constData()) << n;
 }
 
 } // namespace
@@ -85,7 +90,8 @@ void MeshExtractionTest::sphere() {
     QVERIFY2(std::abs(volume - sphereVolume) / sphereVolume < 4.0 / (n / 4.0 * n / 4.0),
              qPrintable(QString::number(volume)));
   // Every vertex is an image sample on the unit sphere.
-  for (const Vec3f& p : mesh.positions) QVERIFY(std::abs(length(p) - 1.0f) < 1e-5f);
+  for (const Vec3f& p : mesh.positions)
+    QVERIFY(std::abs(length(p) - 1.0f) < 1e-5f);
   // Outward orientation, triangle by triangle: each normal points away from the centre.
   for (const auto& t : mesh.triangles) {
     const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
@@ -116,7 +122,8 @@ void MeshExtractionTest::octahedronAtTwo() {
     ++axisUsed[axis];
     axisOf[v] = axis;
   }
-  for (int a : axisUsed) QCOMPARE(a, 1);
+  for (int a : axisUsed)
+    QCOMPARE(a, 1);
   // Each face spans one octant: one vertex on each axis, and the 8 faces are the 8 octants.
   std::set<int> octants;
   for (const auto& t : mesh.triangles) {
@@ -156,7 +163,8 @@ void MeshExtractionTest::lod() {
   std::vector<P> expected, actual;
   for (const Sample& s : vi.canonicalSamples())
     expected.push_back(key(image.at(step * s.i, step * s.j).xyz()));
-  for (const Vec3f& p : lod.positions) actual.push_back(key(p));
+  for (const Vec3f& p : lod.positions)
+    actual.push_back(key(p));
   std::sort(expected.begin(), expected.end());
   std::sort(actual.begin(), actual.end());
   QVERIFY2(std::adjacent_find(expected.begin(), expected.end()) == expected.end(),
@@ -166,11 +174,14 @@ void MeshExtractionTest::lod() {
   // Its triangles are those of the image subsampled to M, extracted at full resolution.
   GeometryImage sub(m);
   for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i) sub.at(i, j) = image.at(step * i, step * j);
+    for (int i = 0; i <= m; ++i)
+      sub.at(i, j) = image.at(step * i, step * j);
   const TriangleMesh direct = extractMesh(sub);
   std::vector<std::array<P, 3>> a, b;
-  for (const auto& t : lod.triangles) a.push_back(orientedTriangle(lod, t));
-  for (const auto& t : direct.triangles) b.push_back(orientedTriangle(direct, t));
+  for (const auto& t : lod.triangles)
+    a.push_back(orientedTriangle(lod, t));
+  for (const auto& t : direct.triangles)
+    b.push_back(orientedTriangle(direct, t));
   std::sort(a.begin(), a.end());
   std::sort(b.begin(), b.end());
   QVERIFY2(a == b, "LOD triangles differ from the subsampled image's mesh");

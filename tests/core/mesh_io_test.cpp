@@ -25,7 +25,8 @@ namespace {
 
 std::set<std::string> listDir(const fs::path& dir) {
   std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(dir))
+    names.insert(e.path().filename().string());
   return names;
 }
 
@@ -34,7 +35,10 @@ QString expectError(const std::function<void()>& f, ErrorKind kind) {
     f();
   } catch (const Error& e) {
     if (e.kind() != kind)
-      return QString("wrong ErrorKind %1 (expected %2): %3").arg(int(e.kind())).arg(int(kind)).arg(e.what());
+      return QString("wrong ErrorKind %1 (expected %2): %3")
+          .arg(int(e.kind()))
+          .arg(int(kind))
+          .arg(e.what());
     if (QByteArray(e.what()).isEmpty()) return "empty message";
     return {};
   } catch (const std::exception& e) {
@@ -60,7 +64,8 @@ QString expectError(const std::function<void()>& f, ErrorKind kind) {
 
 using Tri = std::array<std::uint32_t, 3>;
 Tri rotated(Tri t) {
-  while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  while (t[0] > t[1] || t[0] > t[2])
+    t = {t[1], t[2], t[0]};
   return t;
 }
 
@@ -127,10 +132,14 @@ void MeshIoTest::roundTrip() {
     // Indexed formats keep the vertex order and the triangles.
     for (std::size_t k = 0; k < v; ++k)
       if (length(back.positions[k] - mesh.positions[k]) > 1e-5f)
-        QFAIL(qPrintable(QString("vertex %1 moved by %2").arg(k).arg(length(back.positions[k] - mesh.positions[k]))));
+        QFAIL(qPrintable(QString("vertex %1 moved by %2")
+                             .arg(k)
+                             .arg(length(back.positions[k] - mesh.positions[k]))));
     std::vector<Tri> a, b;
-    for (const auto& tri : mesh.triangles) a.push_back(rotated(tri));
-    for (const auto& tri : back.triangles) b.push_back(rotated(tri));
+    for (const auto& tri : mesh.triangles)
+      a.push_back(rotated(tri));
+    for (const auto& tri : back.triangles)
+      b.push_back(rotated(tri));
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     QVERIFY2(a == b, "triangles differ");
@@ -149,7 +158,8 @@ void MeshIoTest::roundTrip() {
     }
     // And the triangles are the same, with the same orientation.
     std::vector<Tri> a, b;
-    for (const auto& tri : mesh.triangles) a.push_back(rotated(tri));
+    for (const auto& tri : mesh.triangles)
+      a.push_back(rotated(tri));
     for (const auto& tri : back.triangles)
       b.push_back(rotated({std::uint32_t(match[tri[0]]), std::uint32_t(match[tri[1]]),
                            std::uint32_t(match[tri[2]])}));
@@ -188,9 +198,7 @@ void MeshIoTest::unwritablePath() {
 void MeshIoTest::unreadable() {
   const fs::path root(dir_.path().toStdString());
   EXPECT_ERROR(readMesh(root / "missing.obj"), ErrorKind::Io);
-  {
-    std::ofstream(root / "empty.obj") << "# nothing here\n";
-  }
+  { std::ofstream(root / "empty.obj") << "# nothing here\n"; }
   EXPECT_ERROR(readMesh(root / "empty.obj"), ErrorKind::InvalidInput);
 }
 

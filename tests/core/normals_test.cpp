@@ -20,7 +20,9 @@ double angleDegrees(Vec3f a, Vec3f b) {
   return std::acos(c) * 180.0 / M_PI;
 }
 
-QString str(Vec3f v) { return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+QString str(Vec3f v) {
+  return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z);
+}
 
 } // namespace
 
@@ -46,7 +48,8 @@ void NormalsTest::sphereMatchesAnalytic() {
       const double a = angleDegrees(normal, image.at(i, j).xyz());
       worst = std::max(worst, a);
       if (a > 0.5)
-        QFAIL(qPrintable(QString("normal at (%1,%2) is %3° off the sphere's").arg(i).arg(j).arg(a)));
+        QFAIL(
+            qPrintable(QString("normal at (%1,%2) is %3° off the sphere's").arg(i).arg(j).arg(a)));
     }
   }
   qInfo("worst angle to the analytic normal: %g°", worst);

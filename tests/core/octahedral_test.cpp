@@ -24,12 +24,17 @@ using Tri = std::array<std::uint32_t, 3>;
 
 // An oriented triangle rotated so that its smallest index comes first.
 Tri canonicalTri(Tri t) {
-  while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  while (t[0] > t[1] || t[0] > t[2])
+    t = {t[1], t[2], t[0]};
   return t;
 }
 
-bool inGrid(int n, Sample s) { return s.i >= 0 && s.j >= 0 && s.i <= n && s.j <= n; }
-bool onBorder(int n, Sample s) { return s.i == 0 || s.j == 0 || s.i == n || s.j == n; }
+bool inGrid(int n, Sample s) {
+  return s.i >= 0 && s.j >= 0 && s.i <= n && s.j <= n;
+}
+bool onBorder(int n, Sample s) {
+  return s.i == 0 || s.j == 0 || s.i == n || s.j == n;
+}
 
 // Independent oracle for the identification rule of DESIGN.md: each side folds at its midpoint,
 // the four corners are one vertex.
@@ -46,7 +51,8 @@ std::set<std::pair<int, int>> actualGroup(int n, Sample s) {
   std::array<Sample, 4> out{};
   const int c = identifiedSamples(n, s, out);
   std::set<std::pair<int, int>> g;
-  for (int k = 0; k < c; ++k) g.insert({out[k].i, out[k].j});
+  for (int k = 0; k < c; ++k)
+    g.insert({out[k].i, out[k].j});
   return g;
 }
 
@@ -55,7 +61,8 @@ std::set<std::pair<int, int>> actualGroup(int n, Sample s) {
 GeometryImage idImage(int n, const VertexIndex& vi) {
   GeometryImage image(n);
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) image.at(i, j) = {static_cast<float>(vi.at(i, j)), 0, 0, 0};
+    for (int i = 0; i <= n; ++i)
+      image.at(i, j) = {static_cast<float>(vi.at(i, j)), 0, 0, 0};
   return image;
 }
 
@@ -69,7 +76,8 @@ GeometryImage idImage(int n, const VertexIndex& vi) {
 
 void sizeRows(int maxN) {
   QTest::addColumn<int>("n");
-  for (int n = 2; n <= maxN; n *= 2) QTest::newRow(QByteArray::number(n).constData()) << n;
+  for (int n = 2; n <= maxN; n *= 2)
+    QTest::newRow(QByteArray::number(n).constData()) << n;
 }
 
 } // namespace
@@ -143,7 +151,8 @@ void OctahedralTest::identification() {
         }
       } else {
         if (actualGroup(n, s) != expectedGroup(n, s))
-          QFAIL(qPrintable(QString("interior sample (%1,%2) identified with others").arg(i).arg(j)));
+          QFAIL(
+              qPrintable(QString("interior sample (%1,%2) identified with others").arg(i).arg(j)));
         QCOMPARE(canonical(n, s), s);
       }
       // Samples sharing an index must be identified with each other.
@@ -170,8 +179,8 @@ void OctahedralTest::identification() {
     QCOMPARE(static_cast<std::size_t>(vi.at(canon[id].i, canon[id].j)), id);
     QCOMPARE(canonical(n, canon[id]), canon[id]);
     if (id > 0) {
-      const bool rowMajor = std::pair(canon[id - 1].j, canon[id - 1].i) <
-                            std::pair(canon[id].j, canon[id].i);
+      const bool rowMajor =
+          std::pair(canon[id - 1].j, canon[id - 1].i) < std::pair(canon[id].j, canon[id].i);
       QVERIFY2(rowMajor, "canonicalSamples() not in row-major order");
     }
   }
@@ -199,12 +208,11 @@ void OctahedralTest::wrapProperties() {
       QFAIL(qPrintable(
           QString("wrap(%1,%2) = (%3,%4) outside the grid").arg(p.i).arg(p.j).arg(w.i).arg(w.j)));
     const Sample ww = wrap(n, w);
-    if (ww != w)
-      QFAIL(qPrintable(QString("wrap not idempotent at (%1,%2)").arg(p.i).arg(p.j)));
-    const std::array<Sample, 8> images{
-        Sample{-p.i, n - p.j},         Sample{2 * n - p.i, n - p.j}, Sample{n - p.i, -p.j},
-        Sample{n - p.i, 2 * n - p.j},  Sample{p.i + 2 * n, p.j},     Sample{p.i, p.j - 2 * n},
-        Sample{p.i + n, p.j + n},      Sample{p.i - n, p.j + n}};
+    if (ww != w) QFAIL(qPrintable(QString("wrap not idempotent at (%1,%2)").arg(p.i).arg(p.j)));
+    const std::array<Sample, 8> images{Sample{-p.i, n - p.j},    Sample{2 * n - p.i, n - p.j},
+                                       Sample{n - p.i, -p.j},    Sample{n - p.i, 2 * n - p.j},
+                                       Sample{p.i + 2 * n, p.j}, Sample{p.i, p.j - 2 * n},
+                                       Sample{p.i + n, p.j + n}, Sample{p.i - n, p.j + n}};
     for (const Sample& q : images)
       if (!sameVertex(p, q))
         QFAIL(qPrintable(QString("(%1,%2) and its image (%3,%4) wrap to different vertices")
@@ -217,13 +225,16 @@ void OctahedralTest::wrapProperties() {
   // Every position in a band of two periods around the grid.
   if (n <= 64)
     for (int j = -2 * n; j <= 3 * n; ++j)
-      for (int i = -2 * n; i <= 3 * n; ++i) CHECK_OR_RETURN(check({i, j}));
+      for (int i = -2 * n; i <= 3 * n; ++i)
+        CHECK_OR_RETURN(check({i, j}));
 
   std::mt19937 rng(12345u + static_cast<unsigned>(n));
   std::uniform_int_distribution<int> near(-10 * n, 10 * n);
   std::uniform_int_distribution<int> far(-(1 << 20), 1 << 20);
-  for (int k = 0; k < 4000; ++k) CHECK_OR_RETURN(check({near(rng), near(rng)}));
-  for (int k = 0; k < 4000; ++k) CHECK_OR_RETURN(check({far(rng), far(rng)}));
+  for (int k = 0; k < 4000; ++k)
+    CHECK_OR_RETURN(check({near(rng), near(rng)}));
+  for (int k = 0; k < 4000; ++k)
+    CHECK_OR_RETURN(check({far(rng), far(rng)}));
   CHECK_OR_RETURN(check({1 << 20, -(1 << 20)}));
   CHECK_OR_RETURN(check({-(1 << 20), 1 << 20}));
 
@@ -231,7 +242,8 @@ void OctahedralTest::wrapProperties() {
   QVERIFY(sameVertex({-1, -1}, {n - 1, n - 1}));
   QVERIFY(sameVertex({n + 1, -1}, {1, n - 1}));
   // Just across the left side: (-1, j) is (1, N-j).
-  for (int j = 0; j <= n; ++j) QVERIFY(sameVertex({-1, j}, {1, n - j}));
+  for (int j = 0; j <= n; ++j)
+    QVERIFY(sameVertex({-1, j}, {1, n - j}));
 }
 
 void OctahedralTest::wrapNeighboursMatchMesh() {
@@ -256,14 +268,17 @@ void OctahedralTest::wrapNeighboursMatchMesh() {
   // Incident triangles of every vertex in the mesh (CSR).
   std::vector<std::uint32_t> offset(vertexCount + 1, 0);
   for (const auto& t : mesh.triangles)
-    for (auto v : t) ++offset[idOf[v] + 1];
-  for (std::size_t v = 0; v < vertexCount; ++v) offset[v + 1] += offset[v];
+    for (auto v : t)
+      ++offset[idOf[v] + 1];
+  for (std::size_t v = 0; v < vertexCount; ++v)
+    offset[v + 1] += offset[v];
   std::vector<Tri> incident(offset.back());
   {
     std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
     for (const auto& t : mesh.triangles) {
       const Tri ids{idOf[t[0]], idOf[t[1]], idOf[t[2]]};
-      for (auto v : ids) incident[fill[v]++] = canonicalTri(ids);
+      for (auto v : ids)
+        incident[fill[v]++] = canonicalTri(ids);
     }
   }
 
@@ -305,14 +320,14 @@ void OctahedralTest::wrapNeighboursMatchMesh() {
       QFAIL(qPrintable(QString("(%1,%2): repeated incident triangles").arg(s.i).arg(s.j)));
     // Same triangles with the same orientation.
     if (fromWrap != fromMesh)
-      QFAIL(qPrintable(QString("(%1,%2): incident triangles differ from the welded mesh's")
-                           .arg(s.i)
-                           .arg(s.j)));
+      QFAIL(qPrintable(
+          QString("(%1,%2): incident triangles differ from the welded mesh's").arg(s.i).arg(s.j)));
   };
 
   if (n <= 64) {
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) CHECK_OR_RETURN(checkSample({i, j}));
+      for (int i = 0; i <= n; ++i)
+        CHECK_OR_RETURN(checkSample({i, j}));
   } else {
     for (int k = 0; k <= n; ++k) {
       CHECK_OR_RETURN(checkSample({k, 0}));
@@ -355,14 +370,16 @@ void OctahedralTest::cellTrianglesCoverGrid() {
       QCOMPARE(corners.size(), std::size_t{4});
       // The shared edge is the split diagonal.
       std::set<std::pair<int, int>> t0, t1;
-      for (const Sample& s : tris[0]) t0.insert({s.i, s.j});
-      for (const Sample& s : tris[1]) t1.insert({s.i, s.j});
+      for (const Sample& s : tris[0])
+        t0.insert({s.i, s.j});
+      for (const Sample& s : tris[1])
+        t1.insert({s.i, s.j});
       std::vector<std::pair<int, int>> shared;
-      std::set_intersection(t0.begin(), t0.end(), t1.begin(), t1.end(),
-                            std::back_inserter(shared));
+      std::set_intersection(t0.begin(), t0.end(), t1.begin(), t1.end(), std::back_inserter(shared));
       QCOMPARE(shared.size(), std::size_t{2});
-      const bool anti = shared[0].first != shared[1].first && shared[0].second != shared[1].second &&
-                        (shared[0].first - shared[1].first) == -(shared[0].second - shared[1].second);
+      const bool anti =
+          shared[0].first != shared[1].first && shared[0].second != shared[1].second &&
+          (shared[0].first - shared[1].first) == -(shared[0].second - shared[1].second);
       QCOMPARE(anti, expected == CellSplit::AntiDiagonal);
     }
   }

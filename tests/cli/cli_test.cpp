@@ -1,0 +1,287 @@
+// octaclay-cli end to end (DESIGN.md, "octaclay-cli contract"): new → info → export → compare,
+// JSON output, and the exit code, stderr message and absence of output for every bad input.
+
+#include <QByteArray>
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStringList>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+namespace {
+
+constexpr int kOk = 0, kUsage = 2, kInvalidInput = 3, kIo = 4;
+
+struct Result {
+  int exitCode = -1;
+  QByteArray out, err;
+  bool crashed = false;
+};
+
+Result runCli(const QStringList& args) {
+  QProcess process;
+  process.start(QStringLiteral(OCTACLAY_CLI), args);
+  Result r;
+  if (!process.waitForStarted(10000)) {
+    r.crashed = true;
+    r.err = "could not start " OCTACLAY_CLI ": " + process.errorString().toUtf8();
+    return r;
+  }
+  if (!process.waitForFinished(60000)) {
+    process.kill();
+    process.waitForFinished();
+  }
+  r.crashed = process.exitStatus() != QProcess::NormalExit;
+  r.exitCode = process.exitCode();
+  r.out = process.readAllStandardOutput();
+  r.err = process.readAllStandardError();
+  return r;
+}
+
+QString describe(const QStringList& args, const Result& r) {
+  return QString("octaclay-cli %1 -> exit %2%3\nstdout: %4\nstderr: %5")
+      .arg(args.join(' '))
+      .arg(r.exitCode)
+      .arg(r.crashed ? " (crashed)" : "")
+      .arg(QString::fromUtf8(r.out.left(2000)), QString::fromUtf8(r.err.left(2000)));
+}
+
+} // namespace
+
+// Runs the CLI expecting success and --json output parsed into a new QJsonObject `var`.
+#define RUN_JSON(var, ...)                                                                         \
+  QJsonObject var;                                                                                 \
+  do {                                                                                             \
+    const QStringList args_{__VA_ARGS__};                                                          \
+    const Result r_ = runCli(args_);                                                               \
+    QVERIFY2(!r_.crashed && r_.exitCode == kOk, qPrintable(describe(args_, r_)));                  \
+    QJsonParseError error_{};                                                                      \
+    const QJsonDocument doc_ = QJsonDocument::fromJson(r_.out, &error_);                           \
+    QVERIFY2(error_.error == QJsonParseError::NoError && doc_.isObject(),                          \
+             qPrintable("stdout is not one JSON object (" + error_.errorString() +                 \
+                        "): " + describe(args_, r_)));                                             \
+    var = doc_.object();                                                                           \
+  } while (false)
+
+// Runs the CLI expecting `code`, a message on stderr and no file at `output` (may be empty).
+#define EXPECT_FAILURE(code, output, ...)                                                          \
+  do {                                                                                             \
+    const QStringList args_{__VA_ARGS__};                                                          \
+    const Result r_ = runCli(args_);                                                               \
+    QVERIFY2(!r_.crashed && r_.exitCode == (code), qPrintable(describe(args_, r_)));               \
+    QVERIFY2(!r_.err.trimmed().isEmpty(), qPrintable("no message: " + describe(args_, r_)));       \
+    if (!QString(output).isEmpty())                                                                \
+      QVERIFY2(!QFileInfo::exists(output),                                                         \
+               qPrintable("output left behind: " + describe(args_, r_)));                          \
+  } while (false)
+
+class CliTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void newAndInfo_data();
+  void newAndInfo();
+  void humanOutput();
+  void exportAndCompare();
+  void lodExports();
+  void badArguments();
+  void invalidInput();
+  void ioFailure();
+
+private:
+  QString file(const QString& name) const { return dir_.filePath(name); }
+  QString makeDoc(const QString& shape, int n);
+  QTemporaryDir dir_;
+};
+
+void CliTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  QVERIFY2(QFileInfo(OCTACLAY_CLI).isExecutable(), OCTACLAY_CLI);
+}
+
+QString CliTest::makeDoc(const QString& shape, int n) {
+  const QString path = file(QString("%1-%2.exr").arg(shape).arg(n));
+  if (!QFileInfo::exists(path)) {
+    const QStringList args{"new", "--shape", shape, "--size", QString::number(n), "-o", path};
+    const Result r = runCli(args);
+    if (r.exitCode != kOk) qWarning("%s", qPrintable(describe(args, r)));
+  }
+  return path;
+}
+
+void CliTest::newAndInfo_data() {
+  QTest::addColumn<QString>("shape");
+  for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+    QTest::newRow(s) << QString(s);
+}
+
+void CliTest::newAndInfo() {
+  QFETCH(QString, shape);
+  const QString doc = file(shape + "-new.exr");
+  RUN_JSON(created, "new", "--shape", shape, "--size", "64", "-o", doc, "--json");
+  QVERIFY(QFileInfo(doc).size() > 0);
+  QVERIFY(!created.isEmpty());
+
+  RUN_JSON(info, "info", doc, "--json");
+  QCOMPARE(info["size"].toInt(), 64);
+  QCOMPARE(info["vertices"].toDouble(), 4098.0);
+  QCOMPARE(info["triangles"].toDouble(), 8192.0);
+  QCOMPARE(info["euler"].toDouble(), 2.0);
+  QCOMPARE(info["closed"].toBool(false), true);
+  QCOMPARE(info["manifold"].toBool(false), true);
+  QVERIFY2(info["seam_gap"].isDouble(), "seam_gap is not a number");
+  QCOMPARE(info["seam_gap"].toDouble(-1), 0.0);
+
+  const QJsonObject bbox = info["bbox"].toObject();
+  const QJsonArray min = bbox["min"].toArray(), max = bbox["max"].toArray();
+  QCOMPARE(min.size(), 3);
+  QCOMPARE(max.size(), 3);
+  double squared = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = min[k].toDouble(NAN), hi = max[k].toDouble(NAN);
+    QVERIFY(lo >= -1.0001 && hi <= 1.0001 && lo < hi);
+    if (shape != "blob") { // analytic extent ±1, reached by the axis samples
+      QVERIFY2(std::abs(lo + 1) < 1e-5 && std::abs(hi - 1) < 1e-5, qPrintable(QString::number(lo)));
+    }
+    squared += (hi - lo) * (hi - lo);
+  }
+  QVERIFY(std::abs(bbox["diagonal"].toDouble() - std::sqrt(squared)) < 1e-5);
+
+  QStringList layers;
+  for (const auto& v : info["layers"].toArray())
+    layers << v.toString();
+  for (const char* l : {"positions", "diffuse", "feature"})
+    QVERIFY2(layers.contains(l), qPrintable(layers.join(',')));
+}
+
+void CliTest::humanOutput() {
+  const QString doc = makeDoc("sphere", 16);
+  const QStringList args{"info", doc};
+  const Result r = runCli(args);
+  QVERIFY2(r.exitCode == kOk, qPrintable(describe(args, r)));
+  QVERIFY2(r.out.contains("16") && r.out.contains("258"), qPrintable(describe(args, r)));
+}
+
+void CliTest::exportAndCompare() {
+  const QString doc = makeDoc("blob", 64);
+  for (const char* ext : {"obj", "ply", "stl", "off"}) {
+    const QString mesh = file(QString("full.") + ext);
+    RUN_JSON(exported, "export", doc, "-o", mesh, "--json");
+    QVERIFY(QFileInfo(mesh).size() > 0);
+    QCOMPARE(exported["vertices"].toDouble(), 4098.0);
+    QCOMPARE(exported["triangles"].toDouble(), 8192.0);
+
+    // The full-resolution export is the same surface, up to text precision.
+    RUN_JSON(cmp, "compare", doc, mesh, "--json");
+    const double rms = cmp["rms"].toDouble(-1), hausdorff = cmp["hausdorff"].toDouble(-1);
+    QVERIFY2(rms >= 0 && rms < 1e-5, qPrintable(QString("%1: rms %2").arg(ext).arg(rms)));
+    QVERIFY2(hausdorff >= rms && hausdorff < 1e-4,
+             qPrintable(QString("%1: hausdorff %2").arg(ext).arg(hausdorff)));
+    QVERIFY2(cmp["samples"].toDouble() >= 2 * 4098,
+             qPrintable(QString::number(cmp["samples"].toDouble())));
+    // PSNR = 20·log10(1/rms); an exact match has no finite PSNR.
+    if (rms > 0)
+      QVERIFY(std::abs(cmp["psnr"].toDouble() - 20 * std::log10(1 / rms)) <
+              1e-3 * cmp["psnr"].toDouble());
+  }
+  // A document against itself: zero distance, and still one parseable JSON object.
+  RUN_JSON(self, "compare", doc, doc, "--json");
+  QCOMPARE(self["rms"].toDouble(-1), 0.0);
+  QCOMPARE(self["hausdorff"].toDouble(-1), 0.0);
+}
+
+void CliTest::lodExports() {
+  const QString doc = makeDoc("blob", 64);
+  double previousRms = -1;
+  for (int m : {64, 32, 16}) {
+    const QString mesh = file(QString("lod%1.obj").arg(m));
+    RUN_JSON(exported, "export", doc, "-o", mesh, "--lod", QString::number(m), "--json");
+    QCOMPARE(exported["vertices"].toDouble(), double(m) * m + 2);
+    QCOMPARE(exported["triangles"].toDouble(), 2.0 * m * m);
+    RUN_JSON(cmp, "compare", doc, mesh, "--json");
+    const double rms = cmp["rms"].toDouble(-1);
+    QVERIFY2(rms > previousRms,
+             qPrintable(QString("lod %1: rms %2, finer lod %3").arg(m).arg(rms).arg(previousRms)));
+    if (m < 64) QVERIFY2(rms > 1e-5, qPrintable(QString::number(rms)));
+    previousRms = rms;
+  }
+}
+
+void CliTest::badArguments() {
+  const QString doc = makeDoc("sphere", 16);
+  const QString out = file("bad-args.exr"), mesh = file("bad-args.obj");
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "torus", "--size", "16", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "3", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "0", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16384", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "sixteen", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16");
+  EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "12");
+  EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "32");
+  EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "1");
+  EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "0");
+  EXPECT_FAILURE(kUsage, file("bad-args.xyz"), "export", doc, "-o", file("bad-args.xyz"));
+  EXPECT_FAILURE(kUsage, "", "frobnicate", doc);
+  EXPECT_FAILURE(kUsage, "");
+}
+
+void CliTest::invalidInput() {
+  const QString good = makeDoc("sphere", 16);
+  QFile in(good);
+  QVERIFY(in.open(QIODevice::ReadOnly));
+  const QByteArray bytes = in.readAll();
+  QVERIFY(bytes.size() > 1000);
+  auto write = [&](const QString& name, const QByteArray& data) {
+    QFile f(file(name));
+    if (f.open(QIODevice::WriteOnly | QIODevice::Truncate)) f.write(data);
+    return file(name);
+  };
+  const QString text = write("text.exr", "hello, I am not an image\n");
+  const QString truncated = write("truncated.exr", bytes.left(bytes.size() / 2));
+  // The channel list holds null-terminated names; renaming P.Z keeps the pixel layout (all
+  // position channels are float and P.W sorts where P.Z did) but drops a required channel.
+  QByteArray renamed = bytes;
+  const qsizetype at = renamed.indexOf(QByteArray("P.Z\0", 4));
+  QVERIFY(at > 0);
+  renamed[at + 2] = 'W';
+  const QString noPz = write("no-pz.exr", renamed);
+
+  const QString mesh = file("invalid.obj"), out = file("invalid.exr");
+  for (const QString& bad : {text, truncated, noPz}) {
+    EXPECT_FAILURE(kInvalidInput, "", "info", bad);
+    EXPECT_FAILURE(kInvalidInput, "", "info", bad, "--json");
+    EXPECT_FAILURE(kInvalidInput, mesh, "export", bad, "-o", mesh);
+    EXPECT_FAILURE(kInvalidInput, "", "compare", good, bad);
+    EXPECT_FAILURE(kInvalidInput, "", "compare", bad, good);
+  }
+  const Result r = runCli({"info", noPz});
+  QVERIFY2(r.err.contains("P.Z"), r.err.constData());
+}
+
+void CliTest::ioFailure() {
+  const QString doc = makeDoc("sphere", 16);
+  const QString missingDir = file("no-such-dir");
+  EXPECT_FAILURE(kIo, "", "info", file("missing.exr"));
+  EXPECT_FAILURE(kIo, "", "export", file("missing.exr"), "-o", file("missing.obj"));
+  EXPECT_FAILURE(kIo, "", "compare", doc, file("missing.obj"));
+  EXPECT_FAILURE(kIo, missingDir, "new", "--shape", "sphere", "--size", "16", "-o",
+                 missingDir + "/doc.exr");
+  for (const char* ext : {"obj", "ply", "stl", "off"})
+    EXPECT_FAILURE(kIo, missingDir, "export", doc, "-o", missingDir + "/mesh." + ext);
+  // An output path that is a directory.
+  QVERIFY(QDir(dir_.path()).mkdir("folder.exr"));
+  EXPECT_FAILURE(kIo, "", "new", "--shape", "sphere", "--size", "16", "-o", file("folder.exr"));
+  QVERIFY(QFileInfo(file("folder.exr")).isDir());
+  // Nothing but what the tests wrote on purpose.
+  for (const QString& name : QDir(dir_.path()).entryList(QDir::Files | QDir::Hidden))
+    QVERIFY2(!name.contains(".tmp"), qPrintable("temporary left behind: " + name));
+}
+
+QTEST_APPLESS_MAIN(CliTest)
+#include "cli_test.moc"
