@@ -1,0 +1,222 @@
+#include "octaclay/gpu/gl_objects.h"
+
+#include "octaclay/gpu/gl_error.h"
+
+#include <epoxy/gl.h>
+#include <utility>
+
+namespace octaclay::gpu {
+namespace {
+
+struct FormatInfo {
+  GLenum internal, layout;
+};
+
+FormatInfo info(TextureFormat format) {
+  switch (format) {
+  case TextureFormat::Rgba32f:
+    return {GL_RGBA32F, GL_RGBA};
+  case TextureFormat::Rgba16f:
+    return {GL_RGBA16F, GL_RGBA};
+  case TextureFormat::R32f:
+    return {GL_R32F, GL_RED};
+  }
+  return {GL_RGBA32F, GL_RGBA};
+}
+
+std::size_t texelCount(Region r) {
+  return static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
+}
+
+GLuint compileStage(const std::string& name, GLenum stage, const std::string& source) {
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok == GL_TRUE) return shader;
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  glGetShaderInfoLog(shader, length, nullptr, log.data());
+  glDeleteShader(shader);
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n'))
+    log.pop_back();
+  throw GlError(name + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                " shader does not compile:\n" + log);
+}
+
+} // namespace
+
+Texture::Texture(int width, int height, TextureFormat format)
+    : width_(width), height_(height), format_(format) {
+  if (width < 1 || height < 1) throw GlError("texture size must be positive");
+  glGenTextures(1, &id_);
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glTexStorage2D(GL_TEXTURE_2D, 1, info(format).internal, width, height);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  checkGlError("allocating a " + std::to_string(width) + "x" + std::to_string(height) + " texture");
+}
+
+Texture Texture::wrap(unsigned id, int width, int height, TextureFormat format) {
+  Texture texture;
+  texture.id_ = id;
+  texture.width_ = width;
+  texture.height_ = height;
+  texture.format_ = format;
+  return texture;
+}
+
+Texture::Texture(Texture&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), width_(other.width_), height_(other.height_),
+      format_(other.format_) {}
+
+Texture& Texture::operator=(Texture&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteTextures(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+    width_ = other.width_;
+    height_ = other.height_;
+    format_ = other.format_;
+  }
+  return *this;
+}
+
+Texture::~Texture() {
+  if (id_) glDeleteTextures(1, &id_);
+}
+
+unsigned Texture::release() {
+  return std::exchange(id_, 0);
+}
+
+void Texture::upload(Region region, std::span<const float> texels) {
+  if (texels.size() != texelCount(region) * static_cast<std::size_t>(channels()))
+    throw GlError("texture upload: " + std::to_string(texels.size()) + " floats for a " +
+                  std::to_string(region.width) + "x" + std::to_string(region.height) + " region");
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, region.x, region.y, region.width, region.height,
+                  info(format_).layout, GL_FLOAT, texels.data());
+  checkGlError("texture upload");
+}
+
+std::vector<float> Texture::read(Region region) const {
+  std::vector<float> texels(texelCount(region) * static_cast<std::size_t>(channels()));
+  const Framebuffer framebuffer(*this);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(region.x, region.y, region.width, region.height, info(format_).layout, GL_FLOAT,
+               texels.data());
+  checkGlError("texture read-back");
+  return texels;
+}
+
+Framebuffer::Framebuffer(const Texture& target) {
+  glGenFramebuffers(1, &id_);
+  glBindFramebuffer(GL_FRAMEBUFFER, id_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    glDeleteFramebuffers(1, &id_);
+    id_ = 0;
+    throw GlError("framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+  }
+}
+
+Framebuffer::Framebuffer(Framebuffer&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteFramebuffers(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+Framebuffer::~Framebuffer() {
+  if (id_) glDeleteFramebuffers(1, &id_);
+}
+
+void Framebuffer::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, id_);
+}
+
+Program::Program(const std::string& name, const std::string& vertexSource,
+                 const std::string& fragmentSource) {
+  const GLuint vertex = compileStage(name, GL_VERTEX_SHADER, vertexSource);
+  GLuint fragment = 0;
+  try {
+    fragment = compileStage(name, GL_FRAGMENT_SHADER, fragmentSource);
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  id_ = glCreateProgram();
+  glAttachShader(id_, vertex);
+  glAttachShader(id_, fragment);
+  glLinkProgram(id_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(id_, length, nullptr, log.data());
+    glDeleteProgram(id_);
+    id_ = 0;
+    throw GlError(name + ": program does not link:\n" + log);
+  }
+}
+
+Program::Program(Program&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+Program& Program::operator=(Program&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteProgram(id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+Program::~Program() {
+  if (id_) glDeleteProgram(id_);
+}
+
+void Program::use() const {
+  glUseProgram(id_);
+}
+
+int Program::uniform(const char* name) const {
+  return glGetUniformLocation(id_, name);
+}
+
+void drawFullscreenPass() {
+  // Core profile needs a bound vertex array even when the vertex shader makes its own vertices.
+  // Vertex arrays are not shared between contexts: this assumes one engine context per process.
+  static GLuint vertexArray = 0;
+  if (!vertexArray) glGenVertexArrays(1, &vertexArray);
+  glBindVertexArray(vertexArray);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  checkGlError("full-screen pass");
+}
+
+const std::string& fullscreenVertexShader() {
+  static const std::string source = R"(#version 430 core
+out vec2 v_uv;
+void main() {
+  vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  v_uv = corner;
+  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+  return source;
+}
+
+} // namespace octaclay::gpu
