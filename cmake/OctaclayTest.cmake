@@ -11,6 +11,7 @@ function(octaclay_add_test)
   octaclay_set_warnings(${ARG_NAME})
   target_compile_definitions(${ARG_NAME} PRIVATE
     OCTACLAY_SHARED_DATA="${OCTACLAY_SHARED_DATA}"
+    OCTACLAY_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     OCTACLAY_CLI="$<TARGET_FILE:octaclay-cli>")
   add_test(NAME ${ARG_NAME} COMMAND ${ARG_NAME})
   set_tests_properties(${ARG_NAME} PROPERTIES LABELS "${ARG_LABELS}"

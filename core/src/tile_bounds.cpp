@@ -1,0 +1,62 @@
+#include "octaclay/core/tile_bounds.h"
+
+#include <algorithm>
+
+namespace octaclay::core {
+
+TileBounds::TileBounds(const GeometryImage& image)
+    : n_(image.size()), tiles_(std::max(1, image.size() / kTileSize)),
+      boxes_(static_cast<std::size_t>(tiles_) * tiles_) {
+  refresh(image, {0, 0, image.side(), image.side()});
+}
+
+TexelRect TileBounds::tileRect(int tx, int ty) const {
+  const int size = std::min(kTileSize, n_);
+  const int x = tx * size, y = ty * size;
+  // The last tile of a row or column also takes sample N.
+  const int width = tx == tiles_ - 1 ? n_ + 1 - x : size;
+  const int height = ty == tiles_ - 1 ? n_ + 1 - y : size;
+  return {x, y, width, height};
+}
+
+void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
+  const int size = std::min(kTileSize, n_);
+  const int tx0 = std::min(rect.x / size, tiles_ - 1);
+  const int ty0 = std::min(rect.y / size, tiles_ - 1);
+  const int tx1 = std::min((rect.x + rect.width - 1) / size, tiles_ - 1);
+  const int ty1 = std::min((rect.y + rect.height - 1) / size, tiles_ - 1);
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const TexelRect r = tileRect(tx, ty);
+      BoundingBox box;
+      for (int j = r.y; j < r.y + r.height; ++j)
+        for (int i = r.x; i < r.x + r.width; ++i)
+          box.extend(image.at(i, j).xyz());
+      boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = box;
+    }
+}
+
+float TileBounds::diagonal() const {
+  BoundingBox all;
+  for (const BoundingBox& b : boxes_)
+    if (!b.empty()) {
+      all.extend(b.min);
+      all.extend(b.max);
+    }
+  return all.diagonal();
+}
+
+std::vector<int> TileBounds::tilesNearSphere(Vec3f centre, float radius) const {
+  std::vector<int> tiles;
+  const float r2 = radius * radius;
+  for (int t = 0; t < static_cast<int>(boxes_.size()); ++t) {
+    const BoundingBox& b = boxes_[t];
+    const float dx = std::max({b.min.x - centre.x, 0.0f, centre.x - b.max.x});
+    const float dy = std::max({b.min.y - centre.y, 0.0f, centre.y - b.max.y});
+    const float dz = std::max({b.min.z - centre.z, 0.0f, centre.z - b.max.z});
+    if (dx * dx + dy * dy + dz * dz <= r2) tiles.push_back(t);
+  }
+  return tiles;
+}
+
+} // namespace octaclay::core

@@ -1,0 +1,64 @@
+#pragma once
+
+#include "octaclay/core/vec.h"
+#include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gl_objects.h"
+#include "octaclay/gpu/gpu_document.h"
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace octaclay::gpu {
+
+/// One application of a brush at one place.
+struct Dab {
+  core::Vec3f centre;               ///< object space, on the surface
+  core::Vec3f centreNormal;         ///< unit
+  core::Sample centreTexel;         ///< the sample under the centre (uv area mode measures from it)
+  float radius = 0.1f;              ///< object units
+  float strength = 0.5f;            ///< fraction of the radius (push 0.5 moves the centre radius/2)
+  float pressure = 1.0f;            ///< pen pressure, 0..1
+  float normalAngleDegrees = 80.0f; ///< volume+normal: samples facing further away are left alone
+  std::map<std::string, std::array<float, 4>> parameters; ///< by manifest id; missing → default
+};
+
+/// What a dab touched.
+struct DabResult {
+  std::vector<core::TexelRect> tiles; ///< tiles the pass ran over (their union bounds the change)
+  std::size_t texels = 0;             ///< texels in those tiles
+  bool seamed = false;                ///< the dab reached the border and was seamed
+};
+
+/// Runs brushes as render-to-texture passes over a GpuDocument. Create and use it on the thread
+/// whose GL context is current.
+class BrushEngine {
+public:
+  BrushEngine();
+  ~BrushEngine();
+  BrushEngine(const BrushEngine&) = delete;
+  BrushEngine& operator=(const BrushEngine&) = delete;
+
+  /// Compiles the brush with the shared prelude. On failure throws GlError naming the brush's
+  /// shader file and the compiler's log, and a previously loaded version of it stays in use.
+  void load(const BrushManifest& manifest, const std::string& shaderSource);
+  bool has(const std::string& id) const;
+
+  /// One dab: a scissored pass over the tiles the brush can reach, for each layer it writes,
+  /// then the seaming pass when it reached the border; the mirror is updated for those tiles.
+  /// Throws GlError for an unknown brush id.
+  DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
+
+  /// The tiles a dab of this brush at this place would run over (no GL work).
+  std::vector<core::TexelRect> reach(const GpuDocument& document, const std::string& brushId,
+                                     const Dab& dab) const;
+
+private:
+  struct LoadedBrush;
+  std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
+  Program seamProgram_;
+};
+
+} // namespace octaclay::gpu

@@ -1,0 +1,96 @@
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace octaclay::gpu {
+
+/// The brush API major version this build accepts: a manifest whose "api" is higher is refused.
+inline constexpr int kBrushApiVersion = 1;
+
+/// A document layer a brush reads or writes. The order is the layers' index everywhere in gpu.
+enum class BrushLayer { Positions, Diffuse, Feature, Mask };
+/// Where a dab applies: a disc in texture space ("uv"), a sphere in object space ("volume"), or
+/// that sphere limited to surface facing the same side as the centre's normal ("volume+normal").
+enum class AreaMode { Uv, Volume, VolumeNormal };
+/// How weight falls from 1 at the centre to 0 at the rim; Curve samples falloffCurve.
+enum class Falloff { Linear, Smooth, Constant, Curve };
+/// The brush panel's grouping.
+enum class Category { Sculpt, Paint, Splat };
+/// A parameter's type; it decides the widget and the GLSL type of its uniform
+/// (float, int and bool → float, color → vec4, enum → int).
+enum class ParameterType { Float, Int, Bool, Color, Enum };
+
+/// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
+/// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
+std::string_view toManifestName(BrushLayer layer);
+std::string_view toManifestName(AreaMode area);
+std::string_view toManifestName(Falloff falloff);
+std::string_view toManifestName(Category category);
+std::string_view toManifestName(ParameterType type);
+
+/// One user-tunable value of a brush, shown as a widget and passed as uniform u_<id> (with '-'
+/// replaced by '_').
+struct BrushParameter {
+  std::string id, label, tooltip;
+  ParameterType type = ParameterType::Float;
+  /// Float and Int: [0] is the value. Bool: [0] is 0 or 1. Color: RGBA in [0, 1].
+  /// Enum: [0] is the index of the default option.
+  std::array<float, 4> defaultValue{};
+  /// Inclusive range of the value. Bool: [0, 1]; Color: [0, 1] per channel; Enum: option indices.
+  float min = 0.0f, max = 1.0f;
+  /// Widget increment, > 0 (1 for Int, Bool and Enum).
+  float step = 0.01f;
+  /// Enum only: the option strings, in the order of their indices.
+  std::vector<std::string> options;
+};
+
+/// A validated brush manifest (plugins/brushes/<folder>/manifest.json).
+struct BrushManifest {
+  /// Unique key of the brush, [a-z0-9-]+.
+  std::string id, name, version, description;
+  /// The brush API major version the brush was written for, 1 … kBrushApiVersion.
+  int api = kBrushApiVersion;
+  Category category = Category::Sculpt;
+  /// File name of the shader, relative to folder; the file existed when parsed.
+  std::string shaderFile;
+  /// Layers the shader samples beyond the value it is given (empty allowed); layers it writes,
+  /// one pass each, never empty and without duplicates.
+  std::vector<BrushLayer> reads, writes;
+  AreaMode area = AreaMode::Volume;
+  Falloff falloff = Falloff::Smooth;
+  /// Falloff::Curve only: 2 … 64 weights in [0, 1], sampled evenly from centre to rim.
+  std::vector<float> falloffCurve;
+  /// Distance between dabs along a stroke, as a fraction of the radius, > 0.
+  float spacing = 0.15f;
+  /// In manifest order; ids are unique.
+  std::vector<BrushParameter> parameters;
+  /// The folder holding manifest.json and the shader.
+  std::filesystem::path folder;
+
+  /// The parameter with this id, or nullptr.
+  const BrushParameter* parameter(std::string_view parameterId) const;
+  /// folder / shaderFile.
+  std::filesystem::path shaderPath() const { return folder / shaderFile; }
+};
+
+/// A brush that cannot be loaded. what() always starts with the manifest (or shader) file path,
+/// then the field, then the reason, e.g.
+/// `/x/foo/manifest.json: parameters[2].type: unknown type "vector" (use float, int, …)`.
+class BrushLoadError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads and validates a manifest.json; folder becomes its parent folder. Unknown fields are
+/// errors (a typo must not be silently ignored) except those whose name starts with "x-".
+/// Throws BrushLoadError on the first problem: unreadable file, JSON syntax (with the byte
+/// position), a missing or mistyped field, a value out of range, an api newer than
+/// kBrushApiVersion, or a shader file that is not beside the manifest. Any thread.
+BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile);
+
+} // namespace octaclay::gpu

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "octaclay/core/document.h"
+#include "octaclay/core/tile_bounds.h"
+#include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gl_objects.h"
+
+#include <array>
+
+namespace octaclay::gpu {
+
+/// A document being edited: its layers as GPU textures (each with a scratch twin for
+/// ping-pong passes) and a CPU mirror that the engine keeps equal to them, region by region,
+/// after every dab. The mirror answers tile bounds, picking, undo and saving without reading
+/// the full image back. All calls need the engine's context current.
+class GpuDocument {
+public:
+  /// Uploads every layer. Throws GlError.
+  explicit GpuDocument(core::Document document);
+
+  int size() const { return document_.size(); }
+  const core::Document& document() const { return document_; }
+  const core::TileBounds& bounds() const { return bounds_; }
+
+  Texture& texture(BrushLayer layer) { return textures_[index(layer)]; }
+  Texture& scratch(BrushLayer layer) { return scratch_[index(layer)]; }
+
+  /// Copies rect of the layer's texture into the mirror (and refreshes tile bounds for
+  /// positions). Painted-but-uniform mirror layers get their texels first.
+  void pull(BrushLayer layer, core::TexelRect rect);
+  /// Writes rect of the mirror (e.g. restored by undo) to the layer's texture.
+  void push(BrushLayer layer, core::TexelRect rect);
+  /// The mirror's texels of rect, row-major, channels per texel as the layer has.
+  std::vector<float> mirrorTexels(BrushLayer layer, core::TexelRect rect) const;
+  /// Replaces rect of the mirror with texels (the layout of mirrorTexels) and pushes it.
+  void restore(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
+
+  static int channels(BrushLayer layer);
+
+private:
+  static std::size_t index(BrushLayer layer) { return static_cast<std::size_t>(layer); }
+  core::Layer* mirrorLayer(BrushLayer layer);
+  const core::Layer* mirrorLayer(BrushLayer layer) const;
+  void writeMirror(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
+
+  core::Document document_;
+  core::TileBounds bounds_;
+  std::array<Texture, 4> textures_, scratch_;
+};
+
+} // namespace octaclay::gpu

@@ -1,0 +1,98 @@
+// Shared prelude of every brush pass. The host prepends `#version 430 core` and the defines
+// (OCTACLAY_LAYER, LAYER_*, BRUSH_AREA_*, BRUSH_FALLOFF_*) and appends the brush body and main().
+
+uniform sampler2D u_positions; // RGBA32F: xyz position, w saliency
+uniform sampler2D u_layer;     // the layer this pass writes (== u_positions for positions)
+uniform sampler2D u_mask;      // R: 1 = full effect, 0 = blocked
+uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
+uniform int u_falloffCurveSize;
+uniform int u_size;            // N: the image has (N+1)^2 samples
+uniform vec3 u_centre;
+uniform vec3 u_centreNormal;
+uniform float u_radius;        // object units
+uniform float u_strength;      // fraction of the radius
+uniform float u_pressure;
+uniform float u_normalCosine;  // volume+normal: minimum cos(angle) to the centre normal
+uniform ivec2 u_centreTexel;
+
+struct BrushInput {
+  ivec2 texel;
+  vec2 uv;
+  vec3 position;
+  vec3 normal;
+  float weight;   // falloff * strength * pressure * mask
+  float distance; // to the centre, in radii
+};
+
+// The grid sample that integer position p stands for in the octahedral tiling of the plane
+// (core/src/octahedral.cpp's wrap()).
+ivec2 wrapTexel(ivec2 p) {
+  int n = u_size;
+  int period = 2 * n;
+  int i = ((p.x % period) + period) % period;
+  int j = ((p.y % period) + period) % period;
+  if (i > n) { i = period - i; j = n - j; }
+  if (j < 0) { i = n - i; j = -j; }
+  else if (j > n) { i = n - i; j = period - j; }
+  return ivec2(i, j);
+}
+
+vec4 fetchPositions(ivec2 texel) { return texelFetch(u_positions, wrapTexel(texel), 0); }
+vec4 fetchLayer(ivec2 texel) { return texelFetch(u_layer, wrapTexel(texel), 0); }
+
+// Central differences through wrap(): a half-turn of the tiling negates both differences, so the
+// cross product is the same on both sides of a seam. At the fold points (side midpoints) the two
+// horizontal neighbours coincide; one-sided differences take over there.
+vec3 normalAt(ivec2 t) {
+  vec3 p = fetchPositions(t).xyz;
+  vec3 du = fetchPositions(t + ivec2(1, 0)).xyz - fetchPositions(t - ivec2(1, 0)).xyz;
+  vec3 dv = fetchPositions(t + ivec2(0, 1)).xyz - fetchPositions(t - ivec2(0, 1)).xyz;
+  vec3 n = cross(du, dv);
+  if (dot(n, n) < 1e-20) {
+    du = fetchPositions(t + ivec2(1, 0)).xyz - p;
+    dv = fetchPositions(t + ivec2(0, 1)).xyz - fetchPositions(t - ivec2(0, 1)).xyz;
+    n = cross(du, dv);
+  }
+  if (dot(n, n) < 1e-30) return u_centreNormal;
+  return normalize(n);
+}
+
+float falloffAt(float d) {
+  if (d >= 1.0) return 0.0;
+#if defined(BRUSH_FALLOFF_LINEAR)
+  return 1.0 - d;
+#elif defined(BRUSH_FALLOFF_CONSTANT)
+  return 1.0;
+#elif defined(BRUSH_FALLOFF_CURVE)
+  float x = d * float(u_falloffCurveSize - 1);
+  int k = min(int(x), u_falloffCurveSize - 2);
+  return mix(u_falloffCurve[k], u_falloffCurve[k + 1], x - float(k));
+#else
+  float s = 1.0 - d * d; // smooth: (1 - d^2)^2, flat at the centre and at the rim
+  return s * s;
+#endif
+}
+
+// Fills the brush input of texel t; weight is 0 outside the brush's area.
+BrushInput brushInputAt(ivec2 t) {
+  BrushInput b;
+  b.texel = t;
+  b.uv = vec2(t) / float(u_size);
+  b.position = texelFetch(u_positions, t, 0).xyz;
+  b.normal = normalAt(t);
+#if defined(BRUSH_AREA_UV)
+  vec2 d = vec2(t - u_centreTexel);
+  b.distance = length(d) * (u_radius > 0.0 ? 1.0 / u_radius : 0.0);
+#else
+  b.distance = length(b.position - u_centre) / u_radius;
+#endif
+  float w = falloffAt(b.distance) * u_strength * u_pressure;
+#if OCTACLAY_LAYER != LAYER_MASK
+  w *= texelFetch(u_mask, t, 0).r; // the mask brush itself must be able to paint masked areas
+#endif
+#if defined(BRUSH_AREA_VOLUME_NORMAL)
+  if (dot(b.normal, u_centreNormal) < u_normalCosine) w = 0.0;
+#endif
+  b.weight = w;
+  return b;
+}

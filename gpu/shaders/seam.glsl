@@ -1,0 +1,22 @@
+// The seaming pass: each border sample becomes the average of the samples identified with it
+// (core/src/seaming.cpp), so identified samples are equal again after a dab.
+uniform sampler2D u_source;
+uniform int u_size;
+out vec4 o_value;
+
+void main() {
+  int n = u_size;
+  ivec2 t = ivec2(gl_FragCoord.xy);
+  bool sideI = t.x == 0 || t.x == n;
+  bool sideJ = t.y == 0 || t.y == n;
+  vec4 value = texelFetch(u_source, t, 0);
+  if (sideI && sideJ) {
+    value = 0.25 * (texelFetch(u_source, ivec2(0, 0), 0) + texelFetch(u_source, ivec2(n, 0), 0) +
+                    texelFetch(u_source, ivec2(0, n), 0) + texelFetch(u_source, ivec2(n, n), 0));
+  } else if (sideI) {
+    value = 0.5 * (value + texelFetch(u_source, ivec2(t.x, n - t.y), 0));
+  } else if (sideJ) {
+    value = 0.5 * (value + texelFetch(u_source, ivec2(n - t.x, t.y), 0));
+  }
+  o_value = value;
+}

@@ -1,0 +1,176 @@
+// Scans brush folders and polls their files for changes. Polling (a few stat calls per brush
+// from the modeller's timer) needs no watcher thread and behaves the same on every file system.
+
+#include "octaclay/gpu/brush_catalog.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace octaclay::gpu {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kManifestName = "manifest.json";
+
+fs::path manifestOf(const BrushManifest& brush) {
+  return brush.folder / kManifestName;
+}
+
+std::string environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? std::string(value) : std::string();
+}
+
+} // namespace
+
+std::vector<fs::path> BrushCatalog::defaultSearchPath(const fs::path& builtInFolder) {
+  std::vector<fs::path> folders{builtInFolder};
+  const std::string pluginPath = environment("OCTACLAY_PLUGIN_PATH");
+  std::size_t start = 0;
+  while (start <= pluginPath.size()) {
+    std::size_t end = pluginPath.find(':', start);
+    if (end == std::string::npos) end = pluginPath.size();
+    if (end > start) folders.emplace_back(pluginPath.substr(start, end - start));
+    start = end + 1;
+  }
+  // XDG Base Directory spec: a relative XDG_DATA_HOME is invalid and must be ignored.
+  const fs::path dataHome = environment("XDG_DATA_HOME");
+  if (dataHome.is_absolute())
+    folders.push_back(dataHome / "octaclay" / "brushes");
+  else if (const std::string home = environment("HOME"); !home.empty())
+    folders.push_back(fs::path(home) / ".local" / "share" / "octaclay" / "brushes");
+  return folders;
+}
+
+void BrushCatalog::scan(const std::vector<fs::path>& folders) {
+  brushes_.clear();
+  errors_.clear();
+  notes_.clear();
+  stamps_.clear();
+
+  for (const fs::path& folder : folders) {
+    std::error_code ec;
+    if (!fs::exists(folder, ec)) continue;
+    std::vector<fs::path> candidates;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+      std::error_code entryEc;
+      if (it->is_directory(entryEc) && fs::exists(it->path() / kManifestName, entryEc))
+        candidates.push_back(it->path());
+    }
+    if (ec) {
+      recordError(folder,
+                  folder.string() + ": cannot list the brush folder (" + ec.message() + ")");
+      continue;
+    }
+    std::sort(candidates.begin(), candidates.end());
+
+    for (const fs::path& candidate : candidates) {
+      const fs::path manifestFile = candidate / kManifestName;
+      try {
+        BrushManifest brush = parseBrushManifest(manifestFile);
+        const auto same = std::find_if(brushes_.begin(), brushes_.end(),
+                                       [&](const BrushManifest& b) { return b.id == brush.id; });
+        if (same != brushes_.end()) {
+          notes_.push_back(manifestFile.string() + ": brush \"" + brush.id + "\" overrides " +
+                           manifestOf(*same).string());
+          *same = std::move(brush);
+        } else {
+          brushes_.push_back(std::move(brush));
+        }
+      } catch (const BrushLoadError& e) {
+        recordError(manifestFile, e.what());
+      }
+    }
+  }
+
+  std::sort(brushes_.begin(), brushes_.end(),
+            [](const BrushManifest& a, const BrushManifest& b) { return a.id < b.id; });
+  for (const BrushManifest& brush : brushes_)
+    stamps_[brush.id] = stampsOf(brush);
+}
+
+const BrushManifest* BrushCatalog::find(std::string_view id) const {
+  const auto it =
+      std::lower_bound(brushes_.begin(), brushes_.end(), id,
+                       [](const BrushManifest& b, std::string_view key) { return b.id < key; });
+  return it != brushes_.end() && it->id == id ? &*it : nullptr;
+}
+
+std::string BrushCatalog::shaderSource(const BrushManifest& brush) {
+  const fs::path file = brush.shaderPath();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw BrushLoadError(file.string() + ": cannot be read (" + std::strerror(errno) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw BrushLoadError(file.string() + ": cannot be read (read error)");
+  return text.str();
+}
+
+std::vector<std::string> BrushCatalog::changedBrushes() {
+  std::vector<std::string> changed;
+  for (const BrushManifest& brush : brushes_) {
+    const Stamps now = stampsOf(brush);
+    Stamps& seen = stamps_[brush.id];
+    if (now != seen) {
+      changed.push_back(brush.id);
+      seen = now;
+    }
+  }
+  return changed;
+}
+
+bool BrushCatalog::reload(std::string_view id) {
+  const auto it = std::find_if(brushes_.begin(), brushes_.end(),
+                               [&](const BrushManifest& b) { return b.id == id; });
+  if (it == brushes_.end()) return false;
+  const fs::path manifestFile = manifestOf(*it);
+  // Whatever the outcome, the files as they are now have been looked at: a broken edit is
+  // reported once, not on every poll.
+  stamps_[it->id] = stampsOf(*it);
+  try {
+    BrushManifest fresh = parseBrushManifest(manifestFile);
+    if (fresh.id != it->id)
+      throw BrushLoadError(manifestFile.string() + ": id: changed from \"" + it->id + "\" to \"" +
+                           fresh.id + "\" while loaded (rescan the brush folders to rename)");
+    *it = std::move(fresh);
+    stamps_[it->id] = stampsOf(*it);
+    clearError(manifestFile);
+    return true;
+  } catch (const BrushLoadError& e) {
+    recordError(manifestFile, e.what());
+    return false;
+  }
+}
+
+BrushCatalog::Stamps BrushCatalog::stampsOf(const BrushManifest& brush) {
+  const auto stamp = [](const fs::path& file) {
+    FileStamp s;
+    std::error_code ec;
+    const auto time = fs::last_write_time(file, ec);
+    if (ec) return s;
+    const auto size = fs::file_size(file, ec);
+    if (ec) return s;
+    s.exists = true;
+    s.time = time;
+    s.size = size;
+    return s;
+  };
+  return {stamp(manifestOf(brush)), stamp(brush.shaderPath())};
+}
+
+void BrushCatalog::recordError(const fs::path& path, std::string message) {
+  clearError(path);
+  errors_.push_back({path, std::move(message)});
+}
+
+void BrushCatalog::clearError(const fs::path& path) {
+  std::erase_if(errors_, [&](const BrushCatalogError& e) { return e.path == path; });
+}
+
+} // namespace octaclay::gpu

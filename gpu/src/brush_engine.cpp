@@ -1,0 +1,275 @@
+#include "octaclay/gpu/brush_engine.h"
+
+#include "octaclay/gpu/gl_error.h"
+#include "shader_sources.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <epoxy/gl.h>
+#include <numbers>
+#include <sstream>
+
+namespace octaclay::gpu {
+
+struct BrushEngine::LoadedBrush {
+  BrushManifest manifest;
+  std::map<BrushLayer, Program> programs; // one per written layer: OCTACLAY_LAYER differs
+};
+
+namespace {
+
+const char* layerDefine(BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Positions:
+    return "LAYER_POSITIONS";
+  case BrushLayer::Diffuse:
+    return "LAYER_DIFFUSE";
+  case BrushLayer::Feature:
+    return "LAYER_FEATURE";
+  case BrushLayer::Mask:
+    return "LAYER_MASK";
+  }
+  return "LAYER_POSITIONS";
+}
+
+std::string uniformName(const std::string& parameterId) {
+  std::string name = "u_" + parameterId;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+// The brush body starts at line kBodyLine of the assembled source (`#line`), so compiler messages
+// about it can name its file and its own line: Mesa prints "0:LINE(COL): …", NVIDIA "0(LINE) : …".
+constexpr int kBodyLine = 100001;
+
+std::string brushLog(const std::string& log, const std::string& file) {
+  std::istringstream in(log);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::size_t digits = 0;
+    while (digits < line.size() && std::isdigit(static_cast<unsigned char>(line[digits])))
+      ++digits;
+    if (digits > 0 && digits < line.size() && (line[digits] == ':' || line[digits] == '(')) {
+      std::size_t start = digits + 1, end = start;
+      while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end])))
+        ++end;
+      const long number = end > start ? std::stol(line.substr(start, end - start)) : 0;
+      if (number >= kBodyLine && number < 2 * kBodyLine)
+        line = file + ":" + std::to_string(number - kBodyLine + 1) + line.substr(end);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+std::string assemble(const BrushManifest& manifest, BrushLayer layer, const std::string& body) {
+  std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
+                       "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n";
+  source += std::string("#define OCTACLAY_LAYER ") + layerDefine(layer) + "\n";
+  switch (manifest.area) {
+  case AreaMode::Uv:
+    source += "#define BRUSH_AREA_UV\n";
+    break;
+  case AreaMode::Volume:
+    source += "#define BRUSH_AREA_VOLUME\n";
+    break;
+  case AreaMode::VolumeNormal:
+    source += "#define BRUSH_AREA_VOLUME_NORMAL\n";
+    break;
+  }
+  switch (manifest.falloff) {
+  case Falloff::Linear:
+    source += "#define BRUSH_FALLOFF_LINEAR\n";
+    break;
+  case Falloff::Constant:
+    source += "#define BRUSH_FALLOFF_CONSTANT\n";
+    break;
+  case Falloff::Curve:
+    source += "#define BRUSH_FALLOFF_CURVE\n";
+    break;
+  case Falloff::Smooth:
+    break;
+  }
+  for (const BrushParameter& p : manifest.parameters) {
+    const char* type = p.type == ParameterType::Color  ? "vec4"
+                       : p.type == ParameterType::Enum ? "int"
+                                                       : "float";
+    source += std::string("uniform ") + type + " " + uniformName(p.id) + ";\n";
+  }
+  source += detail::builtInShader("prelude.glsl");
+  source += "#line " + std::to_string(kBodyLine) + "\n" + body + "\n#line " +
+            std::to_string(2 * kBodyLine) + "\n";
+  source += detail::builtInShader("brush_main.glsl");
+  return source;
+}
+
+GLint location(const Program& program, const char* name) {
+  return program.uniform(name);
+}
+
+void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
+                 const Dab& dab) {
+  glUniform1i(location(program, "u_positions"), 0);
+  glUniform1i(location(program, "u_layer"), 1);
+  glUniform1i(location(program, "u_mask"), 2);
+  glUniform1i(location(program, "u_size"), doc.size());
+  glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
+  glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
+              dab.centreNormal.z);
+  float radius = dab.radius;
+  if (manifest.area ==
+      AreaMode::Uv) // measured in samples: the same fraction of N as of the diagonal
+    radius =
+        dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * static_cast<float>(doc.size());
+  glUniform1f(location(program, "u_radius"), radius);
+  glUniform1f(location(program, "u_strength"), dab.strength);
+  glUniform1f(location(program, "u_pressure"), dab.pressure);
+  glUniform1f(location(program, "u_normalCosine"),
+              std::cos(dab.normalAngleDegrees * std::numbers::pi_v<float> / 180.0f));
+  glUniform2i(location(program, "u_centreTexel"), dab.centreTexel.i, dab.centreTexel.j);
+  if (!manifest.falloffCurve.empty()) {
+    const GLsizei count =
+        static_cast<GLsizei>(std::min<std::size_t>(manifest.falloffCurve.size(), 64));
+    glUniform1fv(location(program, "u_falloffCurve"), count, manifest.falloffCurve.data());
+    glUniform1i(location(program, "u_falloffCurveSize"), count);
+  }
+  for (const BrushParameter& p : manifest.parameters) {
+    const auto given = dab.parameters.find(p.id);
+    const std::array<float, 4> v = given != dab.parameters.end() ? given->second : p.defaultValue;
+    const GLint at = location(program, uniformName(p.id).c_str());
+    if (p.type == ParameterType::Color)
+      glUniform4f(at, v[0], v[1], v[2], v[3]);
+    else if (p.type == ParameterType::Enum)
+      glUniform1i(at, static_cast<GLint>(v[0]));
+    else
+      glUniform1f(at, v[0]);
+  }
+}
+
+void copyRect(const Texture& from, const Texture& to, core::TexelRect r) {
+  glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, r.x, r.y, 0, to.id(), GL_TEXTURE_2D, 0, r.x, r.y,
+                     0, r.width, r.height, 1);
+}
+
+std::vector<core::TexelRect> borderLines(int side) {
+  return {{0, 0, side, 1}, {0, side - 1, side, 1}, {0, 1, 1, side - 2}, {side - 1, 1, 1, side - 2}};
+}
+
+} // namespace
+
+BrushEngine::BrushEngine()
+    : seamProgram_("gpu/shaders/seam.glsl", fullscreenVertexShader(),
+                   "#version 430 core\n" + detail::builtInShader("seam.glsl")) {}
+
+BrushEngine::~BrushEngine() = default;
+
+void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderSource) {
+  auto brush = std::make_unique<LoadedBrush>();
+  brush->manifest = manifest;
+  const std::string file = (manifest.folder / manifest.shaderFile).string();
+  for (BrushLayer layer : manifest.writes) {
+    try {
+      brush->programs.emplace(
+          layer, Program(file, fullscreenVertexShader(), assemble(manifest, layer, shaderSource)));
+    } catch (const GlError& e) {
+      throw GlError("brush " + manifest.id + ": " + brushLog(e.what(), file));
+    }
+  }
+  brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version
+}
+
+bool BrushEngine::has(const std::string& id) const {
+  return brushes_.count(id) > 0;
+}
+
+std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
+                                                const std::string& brushId, const Dab& dab) const {
+  const auto found = brushes_.find(brushId);
+  if (found == brushes_.end()) throw GlError("no brush named '" + brushId + "' is loaded");
+  const core::TileBounds& bounds = document.bounds();
+  const int tiles = bounds.tilesPerSide();
+  std::vector<core::TexelRect> rects;
+  if (found->second->manifest.area == AreaMode::Uv) {
+    // Samples within the radius (in samples) of the centre sample, on this side of the seams.
+    const float r = dab.radius / std::max(1e-20f, bounds.diagonal()) * float(document.size());
+    for (int ty = 0; ty < tiles; ++ty)
+      for (int tx = 0; tx < tiles; ++tx) {
+        const core::TexelRect t = bounds.tileRect(tx, ty);
+        const float dx = std::max(
+            {float(t.x - dab.centreTexel.i), 0.0f, float(dab.centreTexel.i - (t.x + t.width - 1))});
+        const float dy = std::max({float(t.y - dab.centreTexel.j), 0.0f,
+                                   float(dab.centreTexel.j - (t.y + t.height - 1))});
+        if (dx * dx + dy * dy <= r * r) rects.push_back(t);
+      }
+    return rects;
+  }
+  for (int t : bounds.tilesNearSphere(dab.centre, dab.radius))
+    rects.push_back(bounds.tileRect(t % tiles, t / tiles));
+  return rects;
+}
+
+DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab) {
+  DabResult result;
+  result.tiles = reach(document, brushId, dab);
+  if (result.tiles.empty()) return result;
+  const LoadedBrush& brush = *brushes_.at(brushId);
+  const int side = document.size() + 1;
+  for (const core::TexelRect& t : result.tiles) {
+    result.texels += static_cast<std::size_t>(t.width) * t.height;
+    result.seamed =
+        result.seamed || t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
+  }
+
+  glViewport(0, 0, side, side);
+  glEnable(GL_SCISSOR_TEST);
+  // Positions last: every other layer's pass reads the positions from before the dab.
+  std::vector<BrushLayer> order = brush.manifest.writes;
+  std::stable_partition(order.begin(), order.end(),
+                        [](BrushLayer l) { return l != BrushLayer::Positions; });
+  for (BrushLayer layer : order) {
+    const Program& program = brush.programs.at(layer);
+    const Framebuffer target(document.scratch(layer));
+    target.bind();
+    program.use();
+    setUniforms(program, brush.manifest, document, dab);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Positions).id());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
+    for (const core::TexelRect& t : result.tiles) {
+      glScissor(t.x, t.y, t.width, t.height);
+      drawFullscreenPass();
+    }
+    for (const core::TexelRect& t : result.tiles)
+      copyRect(document.scratch(layer), document.texture(layer), t);
+
+    if (result.seamed) {
+      seamProgram_.use();
+      glUniform1i(seamProgram_.uniform("u_source"), 0);
+      glUniform1i(seamProgram_.uniform("u_size"), document.size());
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
+      for (const core::TexelRect& line : borderLines(side)) {
+        glScissor(line.x, line.y, line.width, line.height);
+        drawFullscreenPass();
+      }
+      for (const core::TexelRect& line : borderLines(side))
+        copyRect(document.scratch(layer), document.texture(layer), line);
+    }
+    checkGlError("brush " + brushId + " pass");
+
+    for (const core::TexelRect& t : result.tiles)
+      document.pull(layer, t);
+    if (result.seamed)
+      for (const core::TexelRect& line : borderLines(side))
+        document.pull(layer, line);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return result;
+}
+
+} // namespace octaclay::gpu

@@ -1,0 +1,537 @@
+// Reads and validates brush manifests. Every message starts with the manifest path and names the
+// field (as a JSON path: parameters[2].type), so a plugin author can fix it without guessing.
+
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace octaclay::gpu {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+constexpr std::array kLayerNames{"positions", "diffuse", "feature", "mask"};
+constexpr std::array kAreaNames{"uv", "volume", "volume+normal"};
+constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
+constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
+constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum"};
+
+constexpr std::array kTopLevelFields{
+    "id",    "name",   "version", "api",     "description",   "category", "shader",
+    "reads", "writes", "area",    "falloff", "falloff_curve", "spacing",  "parameters"};
+constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
+                                      "min", "max",   "step",    "options"};
+// Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
+// and the brush contract in plugins/examples/README.md); keep in step with the prelude.
+constexpr std::array kReservedParameterIds{"centre",    "radius", "strength", "pressure",
+                                           "positions", "layer",  "mask",     "size"};
+
+constexpr std::size_t kMinCurveSamples = 2, kMaxCurveSamples = 64;
+constexpr double kMaxSpacing = 10.0;
+
+std::string quote(std::string_view s) {
+  return json(std::string(s)).dump();
+}
+
+std::string formatNumber(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+// "float, int, bool, color or enum".
+template <std::size_t N> std::string listChoices(const std::array<const char*, N>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < N; ++k) {
+    if (k > 0) out += k + 1 == N ? " or " : ", ";
+    out += names[k];
+  }
+  return out;
+}
+
+std::string shortDump(const json& value) {
+  std::string text = value.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+// What a wrong value was, for "expected …, got …".
+std::string describe(const json& value) {
+  if (value.is_object()) return "an object";
+  if (value.is_array()) return "an array";
+  return shortDump(value);
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// Lowercase words of [a-z0-9] joined by single '-' when strictHyphens, else [a-z0-9-]+.
+bool isValidId(std::string_view id, bool strictHyphens) {
+  if (id.empty()) return false;
+  for (std::size_t k = 0; k < id.size(); ++k) {
+    const char c = id[k];
+    const bool alnum = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    if (alnum) continue;
+    if (c != '-') return false;
+    if (strictHyphens && (k == 0 || k + 1 == id.size() || id[k + 1] == '-')) return false;
+  }
+  return true;
+}
+
+// Tracks the JSON path while nlohmann parses, to name a key that appears twice in one object
+// (nlohmann silently keeps the last one, which would hide a copy-paste mistake).
+class DuplicateKeyCheck {
+public:
+  explicit DuplicateKeyCheck(const fs::path& file) : file_(file) {}
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+    case json::parse_event_t::object_start:
+      stack_.push_back({true, {}, {}, 0});
+      break;
+    case json::parse_event_t::array_start:
+      stack_.push_back({false, {}, {}, 0});
+      break;
+    case json::parse_event_t::key: {
+      Frame& top = stack_.back();
+      top.key = parsed.get<std::string>();
+      if (!top.keys.insert(top.key).second)
+        throw BrushLoadError(file_.string() + ": " + path() +
+                             ": appears twice in the same object (remove one)");
+      break;
+    }
+    case json::parse_event_t::value:
+      advanceArray();
+      break;
+    case json::parse_event_t::object_end:
+    case json::parse_event_t::array_end:
+      stack_.pop_back();
+      advanceArray();
+      break;
+    }
+    return true;
+  }
+
+private:
+  struct Frame {
+    bool isObject;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+
+  void advanceArray() {
+    if (!stack_.empty() && !stack_.back().isObject) ++stack_.back().index;
+  }
+
+  std::string path() const {
+    std::string out;
+    for (const Frame& frame : stack_) {
+      if (frame.isObject)
+        out += (out.empty() ? "" : ".") + frame.key;
+      else
+        out += "[" + std::to_string(frame.index) + "]";
+    }
+    return out;
+  }
+
+  fs::path file_;
+  std::vector<Frame> stack_;
+};
+
+class ManifestParser {
+public:
+  explicit ManifestParser(const fs::path& file) : file_(file) {}
+
+  BrushManifest parse() {
+    const json root = readJson();
+    if (!root.is_object()) failFile("expected a JSON object { ... }, got " + describe(root));
+
+    BrushManifest manifest;
+    manifest.folder = file_.parent_path();
+    // api first: a newer manifest may legitimately use fields this build does not know.
+    manifest.api = parseApi(root);
+    rejectUnknownFields(root, "", kTopLevelFields);
+
+    manifest.id = requiredString(root, "id", "id");
+    if (!isValidId(manifest.id, false))
+      fail("id",
+           quote(manifest.id) + " is not a valid brush id (use lowercase letters, digits and -)");
+    manifest.name = requiredString(root, "name", "name");
+    if (manifest.name.empty()) fail("name", "must not be empty");
+    manifest.version = optionalString(root, "version", "version").value_or("");
+    manifest.description = optionalString(root, "description", "description").value_or("");
+    if (auto category = optionalString(root, "category", "category"))
+      manifest.category = choose<Category>(*category, kCategoryNames, "category", "category");
+
+    manifest.shaderFile = requiredString(root, "shader", "shader");
+    checkShader(manifest);
+
+    if (const json* reads = root.contains("reads") ? &root["reads"] : nullptr)
+      manifest.reads = parseLayers(*reads, "reads");
+    manifest.writes = parseLayers(required(root, "writes", "writes"), "writes");
+    if (manifest.writes.empty()) fail("writes", "a brush must write at least one layer");
+
+    manifest.area =
+        choose<AreaMode>(requiredString(root, "area", "area"), kAreaNames, "area", "area");
+    if (auto falloff = optionalString(root, "falloff", "falloff"))
+      manifest.falloff = choose<Falloff>(*falloff, kFalloffNames, "falloff", "falloff");
+    parseFalloffCurve(root, manifest);
+
+    if (root.contains("spacing")) {
+      const double spacing = number(root["spacing"], "spacing");
+      if (!(spacing > 0.0 && spacing <= kMaxSpacing))
+        fail("spacing", formatNumber(spacing) + " is outside (0, " + formatNumber(kMaxSpacing) +
+                            "] (a fraction of the radius)");
+      manifest.spacing = static_cast<float>(spacing);
+    }
+
+    if (root.contains("parameters")) parseParameters(root["parameters"], manifest);
+    return manifest;
+  }
+
+private:
+  [[noreturn]] void failFile(const std::string& reason) const {
+    throw BrushLoadError(file_.string() + ": " + reason);
+  }
+  [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
+    throw BrushLoadError(file_.string() + ": " + field + ": " + reason);
+  }
+
+  json readJson() const {
+    std::error_code ec;
+    const fs::file_status status = fs::status(file_, ec);
+    if (!fs::exists(status)) failFile("file not found");
+    if (fs::is_directory(status)) failFile("is a folder, not a manifest file");
+    std::ifstream in(file_, std::ios::binary);
+    if (!in) failFile(std::string("cannot be read (") + std::strerror(errno) + ")");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) failFile("cannot be read (read error)");
+    try {
+      return json::parse(text.str(), DuplicateKeyCheck(file_));
+    } catch (const json::parse_error& e) {
+      // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: …".
+      std::string detail = e.what();
+      const std::string marker = "parse error at ";
+      if (const auto at = detail.find(marker); at != std::string::npos)
+        detail = detail.substr(at + marker.size());
+      failFile("invalid JSON at byte " + std::to_string(e.byte) + ", " + detail);
+    }
+  }
+
+  template <std::size_t N>
+  void rejectUnknownFields(const json& object, const std::string& prefix,
+                           const std::array<const char*, N>& known) const {
+    for (const auto& [key, value] : object.items()) {
+      if (key.starts_with("x-")) continue;
+      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) !=
+          known.end())
+        continue;
+      std::string hint;
+      for (const char* k : known)
+        if (editDistance(key, k) <= 2) {
+          hint = " (did you mean " + quote(k) + "?)";
+          break;
+        }
+      if (hint.empty()) hint = " (prefix your own fields with x-)";
+      fail(prefix + key, "unknown field" + hint);
+    }
+  }
+
+  const json& required(const json& object, const char* key, const std::string& field) const {
+    if (!object.contains(key)) fail(field, "missing required field");
+    return object[key];
+  }
+
+  std::string string(const json& value, const std::string& field) const {
+    if (!value.is_string()) fail(field, "expected a string, got " + describe(value));
+    return value.get<std::string>();
+  }
+  std::string requiredString(const json& object, const char* key, const std::string& field) const {
+    return string(required(object, key, field), field);
+  }
+  std::optional<std::string> optionalString(const json& object, const char* key,
+                                            const std::string& field) const {
+    if (!object.contains(key)) return std::nullopt;
+    return string(object[key], field);
+  }
+
+  double number(const json& value, const std::string& field) const {
+    if (!value.is_number()) fail(field, "expected a number, got " + describe(value));
+    const double v = value.get<double>();
+    if (!std::isfinite(static_cast<float>(v)))
+      fail(field, formatNumber(v) + " is too large for a float");
+    return v;
+  }
+
+  int integer(const json& value, const std::string& field) const {
+    if (!value.is_number()) fail(field, "expected an integer, got " + describe(value));
+    const double v = value.get<double>();
+    if (v != std::floor(v) || v < std::numeric_limits<int>::min() ||
+        v > std::numeric_limits<int>::max())
+      fail(field, "expected an integer, got " + describe(value));
+    return static_cast<int>(v);
+  }
+
+  template <typename Enum, std::size_t N>
+  Enum choose(const std::string& value, const std::array<const char*, N>& names,
+              const std::string& field, const char* what) const {
+    for (std::size_t k = 0; k < N; ++k)
+      if (value == names[k]) return static_cast<Enum>(k);
+    fail(field,
+         "unknown " + std::string(what) + " " + quote(value) + " (use " + listChoices(names) + ")");
+  }
+
+  int parseApi(const json& root) const {
+    const int api = integer(required(root, "api", "api"), "api");
+    if (api < 1) fail("api", "must be 1 or more, got " + std::to_string(api));
+    if (api > kBrushApiVersion)
+      fail("api", "needs Octaclay brush API " + std::to_string(api) + ", this Octaclay has " +
+                      std::to_string(kBrushApiVersion));
+    return api;
+  }
+
+  void checkShader(const BrushManifest& manifest) const {
+    const std::string& name = manifest.shaderFile;
+    if (name.empty() || name == "." || name == ".." ||
+        name.find_first_of("/\\") != std::string::npos)
+      fail("shader", quote(name) + " must be a file name beside the manifest");
+    const fs::path folder = manifest.folder.empty() ? fs::path(".") : manifest.folder;
+    std::error_code ec;
+    if (!fs::is_regular_file(folder / name, ec))
+      fail("shader", name + " not found in " + folder.string());
+  }
+
+  std::vector<BrushLayer> parseLayers(const json& value, const std::string& field) const {
+    if (!value.is_array())
+      fail(field, "expected an array of layers, got " + describe(value) + " (use [\"" +
+                      kLayerNames[0] + "\"])");
+    std::vector<BrushLayer> layers;
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::string item = field + "[" + std::to_string(k) + "]";
+      const BrushLayer layer =
+          choose<BrushLayer>(string(value[k], item), kLayerNames, item, "layer");
+      if (std::find(layers.begin(), layers.end(), layer) != layers.end())
+        fail(item, quote(toManifestName(layer)) + " is listed twice");
+      layers.push_back(layer);
+    }
+    return layers;
+  }
+
+  void parseFalloffCurve(const json& root, BrushManifest& manifest) const {
+    const bool isCurve = manifest.falloff == Falloff::Curve;
+    if (!root.contains("falloff_curve")) {
+      if (isCurve) fail("falloff_curve", "missing required field (\"falloff\" is \"curve\")");
+      return;
+    }
+    if (!isCurve) fail("falloff_curve", "only used when \"falloff\" is \"curve\"");
+    const json& curve = root["falloff_curve"];
+    if (!curve.is_array()) fail("falloff_curve", "expected an array, got " + describe(curve));
+    if (curve.size() < kMinCurveSamples || curve.size() > kMaxCurveSamples)
+      fail("falloff_curve", "needs " + std::to_string(kMinCurveSamples) + " to " +
+                                std::to_string(kMaxCurveSamples) + " values, got " +
+                                std::to_string(curve.size()));
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+      const std::string item = "falloff_curve[" + std::to_string(k) + "]";
+      const double v = number(curve[k], item);
+      if (v < 0.0 || v > 1.0) fail(item, formatNumber(v) + " is outside [0, 1]");
+      manifest.falloffCurve.push_back(static_cast<float>(v));
+    }
+  }
+
+  void parseParameters(const json& value, BrushManifest& manifest) const {
+    if (!value.is_array()) fail("parameters", "expected an array, got " + describe(value));
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::string field = "parameters[" + std::to_string(k) + "]";
+      BrushParameter parameter = parseParameter(value[k], field);
+      for (std::size_t other = 0; other < manifest.parameters.size(); ++other)
+        if (manifest.parameters[other].id == parameter.id)
+          fail(field + ".id", quote(parameter.id) + " is already used by parameters[" +
+                                  std::to_string(other) + "]");
+      manifest.parameters.push_back(std::move(parameter));
+    }
+  }
+
+  BrushParameter parseParameter(const json& p, const std::string& field) const {
+    if (!p.is_object()) fail(field, "expected an object, got " + describe(p));
+    rejectUnknownFields(p, field + ".", kParameterFields);
+
+    BrushParameter out;
+    out.id = string(required(p, "id", field + ".id"), field + ".id");
+    if (!isValidId(out.id, true))
+      fail(field + ".id", quote(out.id) + " is not a valid parameter id (use lowercase letters " +
+                              "and digits, words joined by single -)");
+    for (const char* reserved : kReservedParameterIds)
+      if (out.id == reserved)
+        fail(field + ".id", quote(out.id) + " is taken by the host's uniform u_" + out.id);
+    out.label = optionalString(p, "label", field + ".label").value_or(out.id);
+    out.tooltip = optionalString(p, "tooltip", field + ".tooltip").value_or("");
+    const std::string typeField = field + ".type";
+    const std::string typeName = string(required(p, "type", typeField), typeField);
+    out.type = choose<ParameterType>(typeName, kTypeNames, typeField, "type");
+
+    const auto notUsed = [&](const char* key, const char* usedBy) {
+      if (p.contains(key))
+        fail(field + "." + key,
+             "not used by a " + typeName + " parameter (only " + std::string(usedBy) + ")");
+    };
+    switch (out.type) {
+    case ParameterType::Float:
+    case ParameterType::Int:
+      notUsed("options", "enum");
+      parseRange(p, field, out);
+      break;
+    case ParameterType::Bool:
+      for (const char* key : {"min", "max", "step"})
+        notUsed(key, "float and int");
+      notUsed("options", "enum");
+      out.min = 0.0f;
+      out.max = 1.0f;
+      out.step = 1.0f;
+      if (p.contains("default")) {
+        const json& d = p["default"];
+        if (!d.is_boolean()) fail(field + ".default", "expected true or false, got " + describe(d));
+        out.defaultValue[0] = d.get<bool>() ? 1.0f : 0.0f;
+      }
+      break;
+    case ParameterType::Color:
+      for (const char* key : {"min", "max", "step"})
+        notUsed(key, "float and int");
+      notUsed("options", "enum");
+      out.min = 0.0f;
+      out.max = 1.0f;
+      out.step = 1.0f / 255.0f;
+      out.defaultValue = {1.0f, 1.0f, 1.0f, 1.0f};
+      if (p.contains("default")) {
+        const json& d = p["default"];
+        const auto isUnit = [](const json& c) {
+          return c.is_number() && c.get<double>() >= 0.0 && c.get<double>() <= 1.0;
+        };
+        if (!d.is_array() || d.size() != 4 || !std::all_of(d.begin(), d.end(), isUnit))
+          fail(field + ".default",
+               "expected 4 numbers in [0, 1] (red, green, blue, alpha), got " + shortDump(d));
+        for (std::size_t c = 0; c < 4; ++c)
+          out.defaultValue[c] = d[c].get<float>();
+      }
+      break;
+    case ParameterType::Enum:
+      for (const char* key : {"min", "max", "step"})
+        notUsed(key, "float and int");
+      parseOptions(p, field, out);
+      break;
+    }
+    return out;
+  }
+
+  void parseRange(const json& p, const std::string& field, BrushParameter& out) const {
+    const bool isInt = out.type == ParameterType::Int;
+    const auto read = [&](const char* key, double fallback) {
+      if (!p.contains(key)) return fallback;
+      const std::string f = field + "." + key;
+      return isInt ? static_cast<double>(integer(p[key], f)) : number(p[key], f);
+    };
+    const double min = read("min", 0.0);
+    const double max = read("max", isInt ? 100.0 : 1.0);
+    if (min > max)
+      fail(field + (p.contains("min") ? ".min" : ".max"),
+           "min " + formatNumber(min) + " is greater than max " + formatNumber(max));
+    const double step = read("step", isInt ? 1.0 : (max > min ? (max - min) / 100.0 : 0.01));
+    if (!(step > 0.0)) fail(field + ".step", "must be greater than 0, got " + formatNumber(step));
+    const double value = read("default", std::clamp(0.0, min, max));
+    if (value < min || value > max)
+      fail(field + ".default", formatNumber(value) + " is outside [" + formatNumber(min) + ", " +
+                                   formatNumber(max) + "]");
+    out.min = static_cast<float>(min);
+    out.max = static_cast<float>(max);
+    out.step = static_cast<float>(step);
+    out.defaultValue[0] = static_cast<float>(value);
+  }
+
+  void parseOptions(const json& p, const std::string& field, BrushParameter& out) const {
+    const std::string optionsField = field + ".options";
+    const json& options = required(p, "options", optionsField);
+    if (!options.is_array() || options.empty())
+      fail(optionsField, "expected a non-empty array of strings, got " + describe(options));
+    for (std::size_t k = 0; k < options.size(); ++k) {
+      const std::string item = optionsField + "[" + std::to_string(k) + "]";
+      std::string option = string(options[k], item);
+      if (option.empty()) fail(item, "must not be empty");
+      if (std::find(out.options.begin(), out.options.end(), option) != out.options.end())
+        fail(item, quote(option) + " is listed twice");
+      out.options.push_back(std::move(option));
+    }
+    out.min = 0.0f;
+    out.max = static_cast<float>(out.options.size() - 1);
+    out.step = 1.0f;
+    if (p.contains("default")) {
+      const std::string defaultField = field + ".default";
+      const std::string value = string(p["default"], defaultField);
+      const auto it = std::find(out.options.begin(), out.options.end(), value);
+      if (it == out.options.end()) {
+        std::string list;
+        for (const std::string& option : out.options)
+          list += (list.empty() ? "" : ", ") + quote(option);
+        fail(defaultField, quote(value) + " is not one of the options (" + list + ")");
+      }
+      out.defaultValue[0] = static_cast<float>(it - out.options.begin());
+    }
+  }
+
+  fs::path file_;
+};
+
+} // namespace
+
+std::string_view toManifestName(BrushLayer layer) {
+  return kLayerNames[static_cast<std::size_t>(layer)];
+}
+std::string_view toManifestName(AreaMode area) {
+  return kAreaNames[static_cast<std::size_t>(area)];
+}
+std::string_view toManifestName(Falloff falloff) {
+  return kFalloffNames[static_cast<std::size_t>(falloff)];
+}
+std::string_view toManifestName(Category category) {
+  return kCategoryNames[static_cast<std::size_t>(category)];
+}
+std::string_view toManifestName(ParameterType type) {
+  return kTypeNames[static_cast<std::size_t>(type)];
+}
+
+const BrushParameter* BrushManifest::parameter(std::string_view parameterId) const {
+  for (const BrushParameter& p : parameters)
+    if (p.id == parameterId) return &p;
+  return nullptr;
+}
+
+BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile) {
+  return ManifestParser(manifestFile).parse();
+}
+
+} // namespace octaclay::gpu

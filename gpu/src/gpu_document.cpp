@@ -1,0 +1,146 @@
+#include "octaclay/gpu/gpu_document.h"
+
+#include "octaclay/gpu/gl_error.h"
+
+#include <utility>
+
+namespace octaclay::gpu {
+namespace {
+
+TextureFormat formatOf(BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Positions:
+    return TextureFormat::Rgba32f; // float32 so edits and undo round-trip bit-exactly
+  case BrushLayer::Diffuse:
+  case BrushLayer::Feature:
+    return TextureFormat::Rgba16f; // stored as half in the document anyway
+  case BrushLayer::Mask:
+    return TextureFormat::R32f;
+  }
+  return TextureFormat::Rgba32f;
+}
+
+Region toRegion(core::TexelRect r) {
+  return {r.x, r.y, r.width, r.height};
+}
+
+} // namespace
+
+int GpuDocument::channels(BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Positions:
+  case BrushLayer::Diffuse:
+    return 4;
+  case BrushLayer::Feature:
+    return 3;
+  case BrushLayer::Mask:
+    return 1;
+  }
+  return 4;
+}
+
+GpuDocument::GpuDocument(core::Document document)
+    : document_(std::move(document)), bounds_(document_.positions) {
+  const int side = document_.positions.side();
+  const core::TexelRect all{0, 0, side, side};
+  for (BrushLayer layer :
+       {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
+    textures_[index(layer)] = Texture(side, side, formatOf(layer));
+    scratch_[index(layer)] = Texture(side, side, formatOf(layer));
+    push(layer, all);
+  }
+}
+
+core::Layer* GpuDocument::mirrorLayer(BrushLayer layer) {
+  return const_cast<core::Layer*>(std::as_const(*this).mirrorLayer(layer));
+}
+
+const core::Layer* GpuDocument::mirrorLayer(BrushLayer layer) const {
+  switch (layer) {
+  case BrushLayer::Diffuse:
+    return &document_.diffuse;
+  case BrushLayer::Feature:
+    return &document_.feature;
+  case BrushLayer::Mask:
+    return &document_.mask;
+  case BrushLayer::Positions:
+    break;
+  }
+  return nullptr;
+}
+
+std::vector<float> GpuDocument::mirrorTexels(BrushLayer layer, core::TexelRect rect) const {
+  const int c = channels(layer);
+  std::vector<float> texels(static_cast<std::size_t>(rect.width) * rect.height * c);
+  const int side = document_.positions.side();
+  for (int y = 0; y < rect.height; ++y)
+    for (int x = 0; x < rect.width; ++x) {
+      float* out = &texels[(static_cast<std::size_t>(y) * rect.width + x) * c];
+      if (layer == BrushLayer::Positions) {
+        const core::Vec4f& t = document_.positions.at(rect.x + x, rect.y + y);
+        out[0] = t.x, out[1] = t.y, out[2] = t.z, out[3] = t.w;
+        continue;
+      }
+      const core::Layer& l = *mirrorLayer(layer);
+      const std::size_t at = (static_cast<std::size_t>(rect.y + y) * side + rect.x + x) * c;
+      for (int k = 0; k < c; ++k)
+        out[k] = l.uniform() ? l.fill[k] : l.texels[at + k];
+    }
+  return texels;
+}
+
+void GpuDocument::writeMirror(BrushLayer layer, core::TexelRect rect,
+                              std::span<const float> texels) {
+  const int c = channels(layer);
+  const int side = document_.positions.side();
+  core::Layer* l = mirrorLayer(layer);
+  if (l && l->uniform()) { // the first edit of a layer gives it texels
+    l->texels.resize(static_cast<std::size_t>(side) * side * c);
+    for (std::size_t k = 0; k < l->texels.size(); ++k)
+      l->texels[k] = l->fill[k % c];
+  }
+  for (int y = 0; y < rect.height; ++y)
+    for (int x = 0; x < rect.width; ++x) {
+      const float* in = &texels[(static_cast<std::size_t>(y) * rect.width + x) * c];
+      if (!l) {
+        document_.positions.at(rect.x + x, rect.y + y) = {in[0], in[1], in[2], in[3]};
+        continue;
+      }
+      const std::size_t at = (static_cast<std::size_t>(rect.y + y) * side + rect.x + x) * c;
+      for (int k = 0; k < c; ++k)
+        l->texels[at + k] = in[k];
+    }
+  if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
+}
+
+void GpuDocument::restore(BrushLayer layer, core::TexelRect rect, std::span<const float> texels) {
+  writeMirror(layer, rect, texels);
+  push(layer, rect);
+}
+
+void GpuDocument::push(BrushLayer layer, core::TexelRect rect) {
+  std::vector<float> texels = mirrorTexels(layer, rect);
+  Texture& texture = textures_[index(layer)];
+  if (texture.channels() != channels(layer)) { // feature: 3 channels in an RGBA texture
+    std::vector<float> rgba(static_cast<std::size_t>(rect.width) * rect.height * 4, 0.0f);
+    for (std::size_t t = 0; t < rgba.size() / 4; ++t)
+      for (int k = 0; k < 3; ++k)
+        rgba[t * 4 + k] = texels[t * 3 + k];
+    texels = std::move(rgba);
+  }
+  texture.upload(toRegion(rect), texels);
+}
+
+void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
+  std::vector<float> texels = textures_[index(layer)].read(toRegion(rect));
+  if (channels(layer) == 3) {
+    std::vector<float> rgb(static_cast<std::size_t>(rect.width) * rect.height * 3);
+    for (std::size_t t = 0; t < rgb.size() / 3; ++t)
+      for (int k = 0; k < 3; ++k)
+        rgb[t * 3 + k] = texels[t * 4 + k];
+    texels = std::move(rgb);
+  }
+  writeMirror(layer, rect, texels);
+}
+
+} // namespace octaclay::gpu

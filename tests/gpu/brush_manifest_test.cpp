@@ -1,0 +1,531 @@
+// Brush manifests and the brush catalog, without GL: every bad manifest is refused with a message
+// that starts with the file path and names the field; the template brush parses; the catalog
+// keeps going past a bad brush, lets a later folder override an id, notices edited files and
+// keeps the old manifest when a reload fails.
+
+#include "octaclay/gpu/brush_catalog.h"
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <chrono>
+#include <fstream>
+
+using namespace octaclay::gpu;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kGoodManifest = R"({
+  "id": "raise",
+  "name": "Raise",
+  "api": 1,
+  "shader": "brush.glsl",
+  "writes": ["positions"],
+  "area": "volume+normal",
+  "parameters": [{"id": "height", "type": "float", "default": 0.5}]
+})";
+
+void writeFile(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  QVERIFY2(out.good(), file.c_str());
+}
+
+// Writes <folder>/manifest.json and, when withShader, <folder>/brush.glsl.
+fs::path writeBrush(const fs::path& folder, const std::string& manifest, bool withShader = true) {
+  const fs::path file = folder / "manifest.json";
+  writeFile(file, manifest);
+  if (withShader)
+    writeFile(folder / "brush.glsl", "vec4 brush(vec4 v, BrushInput b) { return v; }\n");
+  return file;
+}
+
+std::string manifestWithName(const std::string& id, const std::string& name) {
+  return R"({"id": ")" + id + R"(", "name": ")" + name +
+         R"(", "api": 1, "shader": "brush.glsl", "writes": ["diffuse"], "area": "uv"})";
+}
+
+// kGoodManifest with the top-level fields of patch replaced (a null value removes the field).
+std::string patched(const QJsonObject& patch) {
+  QJsonObject object = QJsonDocument::fromJson(kGoodManifest).object();
+  for (auto it = patch.begin(); it != patch.end(); ++it) {
+    if (it.value().isNull())
+      object.remove(it.key());
+    else
+      object.insert(it.key(), it.value());
+  }
+  return QJsonDocument(object).toJson().toStdString();
+}
+
+// kGoodManifest with its parameters replaced.
+std::string withParameters(const char* parametersJson) {
+  return patched({{"parameters", QJsonDocument::fromJson(parametersJson).array()}});
+}
+
+// The message parseBrushManifest throws, or "parsed" when it does not.
+std::string errorOf(const fs::path& manifestFile) {
+  try {
+    parseBrushManifest(manifestFile);
+    return "parsed";
+  } catch (const BrushLoadError& e) {
+    return e.what();
+  }
+}
+
+} // namespace
+
+class BrushManifestTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void goodManifestParses();
+  void templateBrushParses();
+  void badManifestIsRefused_data();
+  void badManifestIsRefused();
+  void missingFileIsRefused();
+  void syntaxErrorGivesBytePosition();
+  void duplicateKeyIsRefused();
+  void missingShaderNamesFolder();
+  void newerApiWinsOverUnknownFields();
+
+  void defaultSearchPathOrder();
+  void scanLoadsGoodAndReportsBad();
+  void pluginPathOverridesBuiltIn();
+  void shaderSourceReadsFile();
+  void changedBrushesReportsEditedShader();
+  void reloadKeepsOldManifestOnError();
+  void reloadRefusesChangedId();
+
+private:
+  QTemporaryDir dir_;
+  fs::path root() const { return fs::path(dir_.path().toStdString()); }
+};
+
+void BrushManifestTest::goodManifestParses() {
+  const fs::path file = writeBrush(root() / "good", R"({
+    "x-comment": "notes are allowed",
+    "id": "paint-blob-2",
+    "name": "Paint blob",
+    "version": "2.1",
+    "description": "Paints.",
+    "api": 1,
+    "category": "paint",
+    "shader": "brush.glsl",
+    "reads": ["positions", "mask"],
+    "writes": ["diffuse", "feature"],
+    "area": "uv",
+    "falloff": "curve",
+    "falloff_curve": [1, 0.5, 0],
+    "spacing": 0.3,
+    "parameters": [
+      {"id": "count", "type": "int", "min": 1, "max": 9, "default": 3, "label": "Size"},
+      {"id": "soft", "type": "bool", "default": true, "tooltip": "Soft edge"},
+      {"id": "tint", "type": "color", "default": [1, 0.5, 0.25, 1]},
+      {"id": "blend-mode", "type": "enum", "options": ["mix", "add", "multiply"], "default": "add"},
+      {"id": "amount", "type": "float", "min": -2, "max": 2, "step": 0.5}
+    ]
+  })");
+  BrushManifest m;
+  try {
+    m = parseBrushManifest(file);
+  } catch (const BrushLoadError& e) {
+    QFAIL(e.what());
+  }
+  QCOMPARE(m.id, std::string("paint-blob-2"));
+  QCOMPARE(m.name, std::string("Paint blob"));
+  QCOMPARE(m.version, std::string("2.1"));
+  QCOMPARE(m.api, 1);
+  QCOMPARE(m.category, Category::Paint);
+  QCOMPARE(m.shaderFile, std::string("brush.glsl"));
+  QCOMPARE(m.folder, root() / "good");
+  QCOMPARE(m.shaderPath(), root() / "good" / "brush.glsl");
+  QVERIFY((m.reads == std::vector{BrushLayer::Positions, BrushLayer::Mask}));
+  QVERIFY((m.writes == std::vector{BrushLayer::Diffuse, BrushLayer::Feature}));
+  QCOMPARE(m.area, AreaMode::Uv);
+  QCOMPARE(m.falloff, Falloff::Curve);
+  QVERIFY((m.falloffCurve == std::vector{1.0f, 0.5f, 0.0f}));
+  QCOMPARE(m.spacing, 0.3f);
+  QCOMPARE(m.parameters.size(), std::size_t(5));
+
+  const BrushParameter* count = m.parameter("count");
+  QVERIFY(count);
+  QCOMPARE(count->type, ParameterType::Int);
+  QCOMPARE(count->label, std::string("Size"));
+  QCOMPARE(count->defaultValue[0], 3.0f);
+  QCOMPARE(count->min, 1.0f);
+  QCOMPARE(count->max, 9.0f);
+  QCOMPARE(count->step, 1.0f);
+
+  const BrushParameter* soft = m.parameter("soft");
+  QCOMPARE(soft->defaultValue[0], 1.0f);
+  QCOMPARE(soft->label, std::string("soft"));
+  QCOMPARE(soft->tooltip, std::string("Soft edge"));
+
+  QVERIFY((m.parameter("tint")->defaultValue == std::array{1.0f, 0.5f, 0.25f, 1.0f}));
+
+  const BrushParameter* blend = m.parameter("blend-mode");
+  QCOMPARE(blend->type, ParameterType::Enum);
+  QCOMPARE(blend->defaultValue[0], 1.0f);
+  QCOMPARE(blend->max, 2.0f);
+  QVERIFY((blend->options == std::vector<std::string>{"mix", "add", "multiply"}));
+
+  const BrushParameter* amount = m.parameter("amount");
+  QCOMPARE(amount->defaultValue[0], 0.0f); // 0 lies in [-2, 2]
+  QCOMPARE(amount->step, 0.5f);
+
+  QVERIFY(!m.parameter("missing"));
+}
+
+void BrushManifestTest::templateBrushParses() {
+  const fs::path file =
+      fs::path(OCTACLAY_SOURCE_DIR) / "plugins" / "examples" / "template-brush" / "manifest.json";
+  BrushManifest m;
+  try {
+    m = parseBrushManifest(file);
+  } catch (const BrushLoadError& e) {
+    QFAIL(e.what());
+  }
+  QCOMPARE(m.id, std::string("template-brush"));
+  QCOMPARE(m.api, kBrushApiVersion);
+  QVERIFY((m.writes == std::vector{BrushLayer::Positions}));
+  QCOMPARE(m.area, AreaMode::VolumeNormal);
+  const BrushParameter* height = m.parameter("height");
+  QVERIFY(height);
+  QCOMPARE(height->type, ParameterType::Float);
+  QCOMPARE(m.parameters.size(), std::size_t(1));
+  QVERIFY(BrushCatalog::shaderSource(m).find("vec4 brush(vec4 value, BrushInput b)") !=
+          std::string::npos);
+}
+
+void BrushManifestTest::badManifestIsRefused_data() {
+  QTest::addColumn<QString>("manifest");
+  QTest::addColumn<QString>("expected"); // the message after "<path>: "
+
+  const auto row = [](const char* name, const std::string& manifest, const char* expected) {
+    QTest::newRow(name) << QString::fromStdString(manifest) << QString(expected);
+  };
+  const auto missing = [&](const char* field) {
+    row((std::string("missing ") + field).c_str(), patched({{field, QJsonValue::Null}}),
+        (std::string(field) + ": missing required field").c_str());
+  };
+  for (const char* field : {"id", "name", "api", "shader", "writes", "area"})
+    missing(field);
+
+  row("not an object", "[1, 2]", "expected a JSON object { ... }, got an array");
+  row("name not a string", patched({{"name", 3}}), "name: expected a string, got 3");
+  row("api a string", patched({{"api", "1"}}), R"(api: expected an integer, got "1")");
+  row("api fractional", patched({{"api", 1.5}}), "api: expected an integer, got 1.5");
+  row("api zero", patched({{"api", 0}}), "api: must be 1 or more, got 0");
+  row("api newer", patched({{"api", 2}}), "api: needs Octaclay brush API 2, this Octaclay has 1");
+  row("writes a string", patched({{"writes", "positions"}}),
+      R"(writes: expected an array of layers, got "positions" (use ["positions"]))");
+  row("spacing a string", patched({{"spacing", "wide"}}),
+      R"(spacing: expected a number, got "wide")");
+  row("spacing zero", patched({{"spacing", 0}}),
+      "spacing: 0 is outside (0, 10] (a fraction of the radius)");
+  row("bad id", patched({{"id", "Big Raise"}}),
+      R"(id: "Big Raise" is not a valid brush id (use lowercase letters, digits and -))");
+  row("empty name", patched({{"name", ""}}), "name: must not be empty");
+  row("unknown read layer", patched({{"reads", QJsonArray{"positions", "normals"}}}),
+      R"(reads[1]: unknown layer "normals" (use positions, diffuse, feature or mask))");
+  row("unknown write layer", patched({{"writes", QJsonArray{"colour"}}}),
+      R"(writes[0]: unknown layer "colour" (use positions, diffuse, feature or mask))");
+  row("layer twice", patched({{"writes", QJsonArray{"mask", "mask"}}}),
+      R"(writes[1]: "mask" is listed twice)");
+  row("empty writes", patched({{"writes", QJsonArray{}}}),
+      "writes: a brush must write at least one layer");
+  row("unknown area", patched({{"area", "surface"}}),
+      R"(area: unknown area "surface" (use uv, volume or volume+normal))");
+  row("unknown falloff", patched({{"falloff", "gauss"}}),
+      R"(falloff: unknown falloff "gauss" (use linear, smooth, constant or curve))");
+  row("curve value above 1",
+      patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1, 1.5, 0}}}),
+      "falloff_curve[1]: 1.5 is outside [0, 1]");
+  row("curve value below 0",
+      patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1, -0.25}}}),
+      "falloff_curve[1]: -0.25 is outside [0, 1]");
+  row("curve too short", patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1}}}),
+      "falloff_curve: needs 2 to 64 values, got 1");
+  row("curve missing", patched({{"falloff", "curve"}}),
+      R"(falloff_curve: missing required field ("falloff" is "curve"))");
+  row("curve without curve falloff", patched({{"falloff_curve", QJsonArray{1, 0}}}),
+      R"(falloff_curve: only used when "falloff" is "curve")");
+  row("unknown category", patched({{"category", "sculpting"}}),
+      R"(category: unknown category "sculpting" (use sculpt, paint or splat))");
+  row("typo in field", patched({{"shadr", "brush.glsl"}}),
+      R"(shadr: unknown field (did you mean "shader"?))");
+  row("unknown field", patched({{"author", "me"}}),
+      "author: unknown field (prefix your own fields with x-)");
+  row("shader path", patched({{"shader", "../other/brush.glsl"}}),
+      R"(shader: "../other/brush.glsl" must be a file name beside the manifest)");
+
+  row("parameters not an array", patched({{"parameters", QJsonObject{}}}),
+      "parameters: expected an array, got an object");
+  row("parameter not an object", withParameters("[3]"), "parameters[0]: expected an object, got 3");
+  row("parameter missing id", withParameters(R"([{"type": "float"}])"),
+      "parameters[0].id: missing required field");
+  row("parameter bad id", withParameters(R"([{"id": "Height", "type": "float"}])"),
+      R"(parameters[0].id: "Height" is not a valid parameter id (use lowercase letters and digits, words joined by single -))");
+  row("parameter id with --", withParameters(R"([{"id": "a--b", "type": "float"}])"),
+      R"(parameters[0].id: "a--b" is not a valid parameter id (use lowercase letters and digits, words joined by single -))");
+  row("parameter id reserved", withParameters(R"([{"id": "radius", "type": "float"}])"),
+      R"(parameters[0].id: "radius" is taken by the host's uniform u_radius)");
+  row("parameter id reserved by the prelude",
+      withParameters(R"([{"id": "mask", "type": "float"}])"),
+      R"(parameters[0].id: "mask" is taken by the host's uniform u_mask)");
+  row("duplicate parameter id",
+      withParameters(R"([{"id": "height", "type": "float"}, {"id": "height", "type": "int"}])"),
+      R"(parameters[1].id: "height" is already used by parameters[0])");
+  row("parameter missing type", withParameters(R"([{"id": "height"}])"),
+      "parameters[0].type: missing required field");
+  row("unknown parameter type",
+      withParameters(R"([{"id": "a", "type": "float"}, {"id": "b", "type": "int"},
+                         {"id": "c", "type": "vector"}])"),
+      R"(parameters[2].type: unknown type "vector" (use float, int, bool, color or enum))");
+  row("unknown parameter field",
+      withParameters(R"([{"id": "height", "type": "float", "defualt": 1}])"),
+      R"(parameters[0].defualt: unknown field (did you mean "default"?))");
+  row("min greater than max",
+      withParameters(R"([{"id": "height", "type": "float", "min": 2, "max": 1}])"),
+      "parameters[0].min: min 2 is greater than max 1");
+  row("default above max",
+      withParameters(R"([{"id": "height", "type": "float", "max": 1, "default": 5}])"),
+      "parameters[0].default: 5 is outside [0, 1]");
+  row("default below min",
+      withParameters(R"([{"id": "n", "type": "int", "min": 1, "max": 4, "default": 0}])"),
+      "parameters[0].default: 0 is outside [1, 4]");
+  row("int default fractional", withParameters(R"([{"id": "n", "type": "int", "default": 2.5}])"),
+      "parameters[0].default: expected an integer, got 2.5");
+  row("zero step", withParameters(R"([{"id": "height", "type": "float", "step": 0}])"),
+      "parameters[0].step: must be greater than 0, got 0");
+  row("bool default a number", withParameters(R"([{"id": "on", "type": "bool", "default": 1}])"),
+      "parameters[0].default: expected true or false, got 1");
+  row("bool with min", withParameters(R"([{"id": "on", "type": "bool", "min": 0}])"),
+      "parameters[0].min: not used by a bool parameter (only float and int)");
+  row("float with options", withParameters(R"([{"id": "h", "type": "float", "options": []}])"),
+      "parameters[0].options: not used by a float parameter (only enum)");
+  row("enum default not an option",
+      withParameters(R"([{"id": "mode", "type": "enum", "options": ["a", "b"], "default": "c"}])"),
+      R"(parameters[0].default: "c" is not one of the options ("a", "b"))");
+  row("enum without options", withParameters(R"([{"id": "mode", "type": "enum"}])"),
+      "parameters[0].options: missing required field");
+  row("enum empty options", withParameters(R"([{"id": "mode", "type": "enum", "options": []}])"),
+      "parameters[0].options: expected a non-empty array of strings, got an array");
+  row("enum option twice",
+      withParameters(R"([{"id": "mode", "type": "enum", "options": ["a", "a"]}])"),
+      R"(parameters[0].options[1]: "a" is listed twice)");
+  row("color default three numbers",
+      withParameters(R"([{"id": "tint", "type": "color", "default": [1, 0, 0]}])"),
+      "parameters[0].default: expected 4 numbers in [0, 1] (red, green, blue, alpha), got "
+      "[1,0,0]");
+  row("color default out of range",
+      withParameters(R"([{"id": "tint", "type": "color", "default": [1, 0, 0, 2]}])"),
+      "parameters[0].default: expected 4 numbers in [0, 1] (red, green, blue, alpha), got "
+      "[1,0,0,2]");
+  row("color default a string",
+      withParameters(R"([{"id": "tint", "type": "color", "default": "red"}])"),
+      R"(parameters[0].default: expected 4 numbers in [0, 1] (red, green, blue, alpha), got "red")");
+}
+
+void BrushManifestTest::badManifestIsRefused() {
+  QFETCH(QString, manifest);
+  QFETCH(QString, expected);
+  const fs::path folder = root() / "bad" / QTest::currentDataTag();
+  const fs::path file = writeBrush(folder, manifest.toStdString());
+  QCOMPARE(QString::fromStdString(errorOf(file)),
+           QString::fromStdString(file.string()) + ": " + expected);
+}
+
+void BrushManifestTest::missingFileIsRefused() {
+  const fs::path file = root() / "nowhere" / "manifest.json";
+  QCOMPARE(errorOf(file), file.string() + ": file not found");
+  const fs::path folder = root() / "folder-as-file" / "manifest.json";
+  fs::create_directories(folder);
+  QCOMPARE(errorOf(folder), folder.string() + ": is a folder, not a manifest file");
+}
+
+void BrushManifestTest::syntaxErrorGivesBytePosition() {
+  const fs::path file = writeBrush(root() / "syntax", "{\n  \"id\": \"a\",\n}\n");
+  QCOMPARE(errorOf(file), file.string() +
+                              ": invalid JSON at byte 16, line 3, column 1: syntax error while "
+                              "parsing object key - unexpected '}'; expected string literal");
+  const fs::path empty = writeBrush(root() / "empty", "");
+  QCOMPARE(errorOf(empty), empty.string() +
+                               ": invalid JSON at byte 1, line 1, column 1: syntax error while "
+                               "parsing value - unexpected end of input; expected '[', '{', or "
+                               "a literal");
+}
+
+void BrushManifestTest::duplicateKeyIsRefused() {
+  const fs::path file = writeBrush(root() / "dup-top", R"({"id": "a", "name": "A", "name": "B"})");
+  QCOMPARE(errorOf(file), file.string() + ": name: appears twice in the same object (remove one)");
+  const fs::path nested =
+      writeBrush(root() / "dup-nested",
+                 R"({"parameters": [{"id": "a"}, {"id": "b", "min": 0, "min": 1}], "id": "x"})");
+  QCOMPARE(errorOf(nested),
+           nested.string() + ": parameters[1].min: appears twice in the same object (remove one)");
+}
+
+void BrushManifestTest::missingShaderNamesFolder() {
+  const fs::path folder = root() / "no-shader";
+  const fs::path file = writeBrush(folder, kGoodManifest, false);
+  QCOMPARE(errorOf(file), file.string() + ": shader: brush.glsl not found in " + folder.string());
+}
+
+void BrushManifestTest::newerApiWinsOverUnknownFields() {
+  // A manifest for a newer Octaclay may use fields this one does not know: say what matters.
+  const fs::path file = writeBrush(root() / "future", patched({{"api", 3}, {"stencil", true}}));
+  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 3, this Octaclay has 1");
+}
+
+void BrushManifestTest::defaultSearchPathOrder() {
+  qputenv("OCTACLAY_PLUGIN_PATH", "/a/one::/b/two:");
+  qputenv("XDG_DATA_HOME", "/data");
+  QVERIFY((BrushCatalog::defaultSearchPath("/built-in") ==
+           std::vector<fs::path>{"/built-in", "/a/one", "/b/two", "/data/octaclay/brushes"}));
+  // A relative XDG_DATA_HOME is ignored (XDG Base Directory spec).
+  qputenv("OCTACLAY_PLUGIN_PATH", "");
+  qputenv("XDG_DATA_HOME", "relative");
+  qputenv("HOME", "/home/me");
+  QVERIFY((BrushCatalog::defaultSearchPath("/built-in") ==
+           std::vector<fs::path>{"/built-in", "/home/me/.local/share/octaclay/brushes"}));
+}
+
+void BrushManifestTest::scanLoadsGoodAndReportsBad() {
+  const fs::path folder = root() / "scan";
+  writeBrush(folder / "b-good", manifestWithName("second", "Second"));
+  writeBrush(folder / "a-good", manifestWithName("first", "First"));
+  const fs::path bad = writeBrush(folder / "broken", R"({"id": "broken", "api": 1)");
+  fs::create_directories(folder / "not-a-brush");
+  writeFile(folder / "README.md", "not a brush\n");
+
+  BrushCatalog catalog;
+  catalog.scan({folder, root() / "does-not-exist"});
+  QCOMPARE(catalog.brushes().size(), std::size_t(2));
+  QCOMPARE(catalog.brushes()[0].id, std::string("first"));
+  QCOMPARE(catalog.brushes()[1].id, std::string("second"));
+  QCOMPARE(catalog.find("second")->name, std::string("Second"));
+  QVERIFY(!catalog.find("broken"));
+  QVERIFY(!catalog.find("zzz"));
+  QCOMPARE(catalog.errors().size(), std::size_t(1));
+  QCOMPARE(catalog.errors()[0].path, bad);
+  QVERIFY2(catalog.errors()[0].message.starts_with(bad.string() + ": invalid JSON at byte"),
+           catalog.errors()[0].message.c_str());
+  QVERIFY(catalog.notes().empty());
+}
+
+void BrushManifestTest::pluginPathOverridesBuiltIn() {
+  const fs::path builtIn = root() / "override" / "built-in";
+  const fs::path mine = root() / "override" / "mine";
+  writeBrush(builtIn / "raise", manifestWithName("raise", "Built-in raise"));
+  writeBrush(builtIn / "smooth", manifestWithName("smooth", "Smooth"));
+  writeBrush(mine / "my-raise", manifestWithName("raise", "My raise"));
+  qputenv("OCTACLAY_PLUGIN_PATH", QByteArray::fromStdString(mine.string()));
+  qputenv("XDG_DATA_HOME", QByteArray::fromStdString((root() / "override" / "xdg").string()));
+
+  BrushCatalog catalog;
+  catalog.scan(BrushCatalog::defaultSearchPath(builtIn));
+  QVERIFY(catalog.errors().empty());
+  QCOMPARE(catalog.brushes().size(), std::size_t(2));
+  QCOMPARE(catalog.find("raise")->name, std::string("My raise"));
+  QCOMPARE(catalog.find("raise")->folder, mine / "my-raise");
+  QCOMPARE(catalog.find("smooth")->name, std::string("Smooth"));
+  QCOMPARE(catalog.notes().size(), std::size_t(1));
+  QCOMPARE(catalog.notes()[0], (mine / "my-raise" / "manifest.json").string() +
+                                   ": brush \"raise\" overrides " +
+                                   (builtIn / "raise" / "manifest.json").string());
+}
+
+void BrushManifestTest::shaderSourceReadsFile() {
+  const fs::path folder = root() / "source";
+  writeBrush(folder, manifestWithName("source", "Source"));
+  BrushCatalog catalog;
+  catalog.scan({root()}); // "source" is a sub-folder of root()
+  const BrushManifest* brush = catalog.find("source");
+  QVERIFY(brush);
+  QCOMPARE(BrushCatalog::shaderSource(*brush),
+           std::string("vec4 brush(vec4 v, BrushInput b) { return v; }\n"));
+  BrushManifest gone = *brush;
+  gone.shaderFile = "gone.glsl";
+  try {
+    BrushCatalog::shaderSource(gone);
+    QFAIL("no exception");
+  } catch (const BrushLoadError& e) {
+    QCOMPARE(std::string(e.what()),
+             (folder / "gone.glsl").string() + ": cannot be read (No such file or directory)");
+  }
+}
+
+void BrushManifestTest::changedBrushesReportsEditedShader() {
+  const fs::path folder = root() / "watch";
+  writeBrush(folder / "one", manifestWithName("one", "One"));
+  writeBrush(folder / "two", manifestWithName("two", "Two"));
+  BrushCatalog catalog;
+  catalog.scan({folder});
+  QCOMPARE(catalog.brushes().size(), std::size_t(2));
+  QVERIFY(catalog.changedBrushes().empty());
+
+  // Move the time forward instead of sleeping past the file system's time resolution.
+  const fs::path shader = folder / "two" / "brush.glsl";
+  fs::last_write_time(shader, fs::last_write_time(shader) + std::chrono::seconds(5));
+  QVERIFY((catalog.changedBrushes() == std::vector<std::string>{"two"}));
+  QVERIFY(catalog.changedBrushes().empty()); // reported once
+
+  // Same time, different size: still a change.
+  const fs::path manifest = folder / "one" / "manifest.json";
+  const auto time = fs::last_write_time(manifest);
+  writeFile(manifest, manifestWithName("one", "One, renamed"));
+  fs::last_write_time(manifest, time);
+  QVERIFY((catalog.changedBrushes() == std::vector<std::string>{"one"}));
+
+  fs::remove(shader);
+  QVERIFY((catalog.changedBrushes() == std::vector<std::string>{"two"}));
+}
+
+void BrushManifestTest::reloadKeepsOldManifestOnError() {
+  const fs::path folder = root() / "reload" / "brush";
+  const fs::path manifest = writeBrush(folder, manifestWithName("reloaded", "Old name"));
+  BrushCatalog catalog;
+  catalog.scan({root() / "reload"});
+  QCOMPARE(catalog.find("reloaded")->name, std::string("Old name"));
+
+  writeFile(manifest, R"({"id": "reloaded", "name": )");
+  fs::last_write_time(manifest, fs::last_write_time(manifest) + std::chrono::seconds(5));
+  QVERIFY((catalog.changedBrushes() == std::vector<std::string>{"reloaded"}));
+  QVERIFY(!catalog.reload("reloaded"));
+  QCOMPARE(catalog.find("reloaded")->name, std::string("Old name"));
+  QCOMPARE(catalog.errors().size(), std::size_t(1));
+  QCOMPARE(catalog.errors()[0].path, manifest);
+  QVERIFY2(catalog.errors()[0].message.starts_with(manifest.string() + ": invalid JSON"),
+           catalog.errors()[0].message.c_str());
+  QVERIFY(catalog.changedBrushes().empty()); // the broken edit is not reported again
+
+  writeFile(manifest, manifestWithName("reloaded", "New name"));
+  QVERIFY(catalog.reload("reloaded"));
+  QCOMPARE(catalog.find("reloaded")->name, std::string("New name"));
+  QVERIFY(catalog.errors().empty());
+  QVERIFY(!catalog.reload("no-such-brush"));
+}
+
+void BrushManifestTest::reloadRefusesChangedId() {
+  const fs::path folder = root() / "rename" / "brush";
+  const fs::path manifest = writeBrush(folder, manifestWithName("before", "Before"));
+  BrushCatalog catalog;
+  catalog.scan({root() / "rename"});
+  writeFile(manifest, manifestWithName("after", "After"));
+  QVERIFY(!catalog.reload("before"));
+  QCOMPARE(catalog.find("before")->name, std::string("Before"));
+  QVERIFY(!catalog.find("after"));
+  QCOMPARE(catalog.errors().size(), std::size_t(1));
+  QCOMPARE(catalog.errors()[0].message,
+           manifest.string() + ": id: changed from \"before\" to \"after\" while loaded (rescan "
+                               "the brush folders to rename)");
+}
+
+QTEST_APPLESS_MAIN(BrushManifestTest)
+#include "brush_manifest_test.moc"
