@@ -12,6 +12,7 @@ enum ExitCode : int {
   kExitUsage = 2,        ///< bad arguments
   kExitInvalidInput = 3, ///< an input file that is not what it should be
   kExitIo = 4,           ///< a file that cannot be read or written
+  kExitGl = 5,           ///< no usable OpenGL 4.3 (or a brush that does not compile)
 };
 
 /// Each subcommand registers itself on the app and returns the function that runs it after
@@ -27,5 +28,7 @@ Command addNewCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
+Command addStrokeCommand(CLI::App& app);
+Command addBrushesCommand(CLI::App& app);
 
 } // namespace octaclay::app

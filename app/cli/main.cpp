@@ -1,5 +1,7 @@
 #include "commands.h"
 #include "octaclay/core/error.h"
+#include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gl_error.h"
 
 #include <iostream>
 #include <new>
@@ -26,8 +28,9 @@ int main(int argc, char** argv) {
   CLI::App cli{"octaclay-cli: create, inspect, convert and compare Octaclay documents "
                "(octahedral geometry images stored as .exr)"};
   cli.require_subcommand(1);
-  const app::Command commands[] = {app::addNewCommand(cli), app::addInfoCommand(cli),
-                                   app::addExportCommand(cli), app::addCompareCommand(cli)};
+  const app::Command commands[] = {app::addNewCommand(cli),    app::addInfoCommand(cli),
+                                   app::addExportCommand(cli), app::addCompareCommand(cli),
+                                   app::addStrokeCommand(cli), app::addBrushesCommand(cli)};
 
   try {
     cli.parse(argc, argv);
@@ -42,6 +45,12 @@ int main(int argc, char** argv) {
   } catch (const core::Error& e) {
     std::cerr << "octaclay-cli: error: " << e.what() << "\n";
     return exitCodeFor(e.kind());
+  } catch (const gpu::GlError& e) {
+    std::cerr << "octaclay-cli: error: " << e.what() << "\n";
+    return app::kExitGl;
+  } catch (const gpu::BrushLoadError& e) {
+    std::cerr << "octaclay-cli: error: " << e.what() << "\n";
+    return app::kExitInvalidInput;
   } catch (const std::bad_alloc&) {
     std::cerr << "octaclay-cli: error: out of memory; try a smaller --size\n";
     return app::kExitInternal;

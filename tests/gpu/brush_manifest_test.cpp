@@ -85,6 +85,7 @@ class BrushManifestTest : public QObject {
 private slots:
   void goodManifestParses();
   void templateBrushParses();
+  void builtInBrushesParse();
   void badManifestIsRefused_data();
   void badManifestIsRefused();
   void missingFileIsRefused();
@@ -200,6 +201,16 @@ void BrushManifestTest::templateBrushParses() {
   QCOMPARE(m.parameters.size(), std::size_t(1));
   QVERIFY(BrushCatalog::shaderSource(m).find("vec4 brush(vec4 value, BrushInput b)") !=
           std::string::npos);
+}
+
+void BrushManifestTest::builtInBrushesParse() {
+  BrushCatalog catalog;
+  catalog.scan({fs::path(OCTACLAY_SOURCE_DIR) / "plugins" / "brushes"});
+  for (const BrushCatalogError& e : catalog.errors())
+    qWarning("%s", e.message.c_str());
+  QVERIFY(catalog.errors().empty());
+  QVERIFY(!catalog.brushes().empty());
+  QVERIFY(catalog.notes().empty()); // built-in ids are unique
 }
 
 void BrushManifestTest::badManifestIsRefused_data() {

@@ -1,0 +1,18 @@
+#include "brush_setup.h"
+
+#include <cstdlib>
+
+namespace octaclay::app {
+
+std::filesystem::path builtInBrushFolder() {
+  if (const char* folder = std::getenv("OCTACLAY_BUILTIN_BRUSHES")) return folder;
+  return OCTACLAY_SOURCE_BRUSHES;
+}
+
+gpu::BrushCatalog scanBrushes() {
+  gpu::BrushCatalog catalog;
+  catalog.scan(gpu::BrushCatalog::defaultSearchPath(builtInBrushFolder()));
+  return catalog;
+}
+
+} // namespace octaclay::app

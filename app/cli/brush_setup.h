@@ -1,0 +1,16 @@
+#pragma once
+
+#include "octaclay/gpu/brush_catalog.h"
+
+#include <filesystem>
+
+namespace octaclay::app {
+
+/// The built-in brushes' folder: $OCTACLAY_BUILTIN_BRUSHES, else the source tree's
+/// plugins/brushes this binary was built from.
+std::filesystem::path builtInBrushFolder();
+
+/// Every brush on the search path (built-in, OCTACLAY_PLUGIN_PATH, the user's data folder).
+gpu::BrushCatalog scanBrushes();
+
+} // namespace octaclay::app
