@@ -21,8 +21,10 @@ TexelRect TileBounds::tileRect(int tx, int ty) const {
 
 void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
   const int size = std::min(kTileSize, n_);
-  const int tx0 = std::min(rect.x / size, tiles_ - 1);
-  const int ty0 = std::min(rect.y / size, tiles_ - 1);
+  // A tile's box also holds the first sample past it, so a box bounds its cells' triangles: a
+  // changed sample on a tile's first row or column also moves the box of the tile before it.
+  const int tx0 = std::min(std::max(rect.x - 1, 0) / size, tiles_ - 1);
+  const int ty0 = std::min(std::max(rect.y - 1, 0) / size, tiles_ - 1);
   const int tx1 = std::min((rect.x + rect.width - 1) / size, tiles_ - 1);
   const int ty1 = std::min((rect.y + rect.height - 1) / size, tiles_ - 1);
   for (int ty = ty0; ty <= ty1; ++ty)

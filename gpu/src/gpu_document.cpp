@@ -143,4 +143,11 @@ void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
   writeMirror(layer, rect, texels);
 }
 
+core::TileApplier undoApplier(GpuDocument& document) {
+  return [&document](core::EditLayer layer, core::Region region, std::span<const float> texels) {
+    document.restore(static_cast<BrushLayer>(static_cast<int>(layer)),
+                     {region.x, region.y, region.width, region.height}, texels);
+  };
+}
+
 } // namespace octaclay::gpu

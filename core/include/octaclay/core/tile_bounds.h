@@ -30,6 +30,7 @@ public:
   void refresh(const GeometryImage& image, TexelRect rect);
   /// Tiles (as tx + ty · tilesPerSide) whose box comes within `radius` of `centre`.
   std::vector<int> tilesNearSphere(Vec3f centre, float radius) const;
+  /// Bounds of the tile's samples and of the first sample past it in i and j (its cells).
   const BoundingBox& box(int tile) const { return boxes_[tile]; }
   /// Diagonal of the whole image's bounding box (the union of the tiles' boxes).
   float diagonal() const;

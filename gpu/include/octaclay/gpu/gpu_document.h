@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/document.h"
+#include "octaclay/core/edit_history.h"
 #include "octaclay/core/tile_bounds.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_objects.h"
@@ -47,5 +48,8 @@ private:
   core::TileBounds bounds_;
   std::array<Texture, 4> textures_, scratch_;
 };
+
+/// Undo/redo writes through this: each region goes to the mirror and the texture.
+core::TileApplier undoApplier(GpuDocument& document);
 
 } // namespace octaclay::gpu
