@@ -6,7 +6,8 @@ namespace octaclay::core {
 
 TileBounds::TileBounds(const GeometryImage& image)
     : n_(image.size()), tiles_(std::max(1, image.size() / kTileSize)),
-      boxes_(static_cast<std::size_t>(tiles_) * tiles_) {
+      boxes_(static_cast<std::size_t>(tiles_) * tiles_),
+      groups_(static_cast<std::size_t>(groupsPerSide()) * groupsPerSide()) {
   refresh(image, {0, 0, image.side(), image.side()});
 }
 
@@ -31,10 +32,20 @@ void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const TexelRect r = tileRect(tx, ty);
       BoundingBox box;
-      for (int j = r.y; j < r.y + r.height; ++j)
-        for (int i = r.x; i < r.x + r.width; ++i)
+      for (int j = r.y; j <= std::min(r.y + r.height, n_); ++j)
+        for (int i = r.x; i <= std::min(r.x + r.width, n_); ++i)
           box.extend(image.at(i, j).xyz());
       boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = box;
+    }
+  for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
+    for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
+      BoundingBox group;
+      for (int ty = gy * kGroup; ty < std::min(tiles_, (gy + 1) * kGroup); ++ty)
+        for (int tx = gx * kGroup; tx < std::min(tiles_, (gx + 1) * kGroup); ++tx) {
+          group.extend(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx].min);
+          group.extend(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx].max);
+        }
+      groups_[static_cast<std::size_t>(gy) * groupsPerSide() + gx] = group;
     }
 }
 
@@ -49,15 +60,24 @@ float TileBounds::diagonal() const {
 }
 
 std::vector<int> TileBounds::tilesNearSphere(Vec3f centre, float radius) const {
-  std::vector<int> tiles;
   const float r2 = radius * radius;
-  for (int t = 0; t < static_cast<int>(boxes_.size()); ++t) {
-    const BoundingBox& b = boxes_[t];
+  auto near = [&](const BoundingBox& b) {
     const float dx = std::max({b.min.x - centre.x, 0.0f, centre.x - b.max.x});
     const float dy = std::max({b.min.y - centre.y, 0.0f, centre.y - b.max.y});
     const float dz = std::max({b.min.z - centre.z, 0.0f, centre.z - b.max.z});
-    if (dx * dx + dy * dy + dz * dz <= r2) tiles.push_back(t);
-  }
+    return dx * dx + dy * dy + dz * dz <= r2;
+  };
+  std::vector<int> tiles;
+  const int groups = groupsPerSide();
+  for (int gy = 0; gy < groups; ++gy)
+    for (int gx = 0; gx < groups; ++gx) {
+      if (!near(groups_[static_cast<std::size_t>(gy) * groups + gx])) continue;
+      for (int ty = gy * kGroup; ty < std::min(tiles_, (gy + 1) * kGroup); ++ty)
+        for (int tx = gx * kGroup; tx < std::min(tiles_, (gx + 1) * kGroup); ++tx)
+          if (near(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx]))
+            tiles.push_back(ty * tiles_ + tx);
+    }
+  std::sort(tiles.begin(), tiles.end());
   return tiles;
 }
 

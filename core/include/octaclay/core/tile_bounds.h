@@ -13,17 +13,20 @@ struct TexelRect {
   friend bool operator==(TexelRect a, TexelRect b) = default;
 };
 
-/// Bounding boxes of the positions per square tile of the image, so a brush finds the samples
-/// it can reach without scanning the image. Tiles are kTileSize samples wide; the last row and
+/// Bounding boxes of the positions per square tile of the image, and of groups of kGroup² tiles
+/// above them (a two-level min/max pyramid), so a brush finds the samples it can reach without
+/// scanning the image. Tiles are kTileSize samples wide; the last row and
 /// column of tiles are one sample wider (the image is (N+1)² and tiles cover it exactly).
 class TileBounds {
 public:
   static constexpr int kTileSize = 32;
+  static constexpr int kGroup = 8;
 
   TileBounds() = default;
   explicit TileBounds(const GeometryImage& image);
 
   int tilesPerSide() const { return tiles_; }
+  int groupsPerSide() const { return (tiles_ + kGroup - 1) / kGroup; }
   /// The samples of tile (tx, ty).
   TexelRect tileRect(int tx, int ty) const;
   /// Recomputes the boxes of every tile that overlaps rect.
@@ -37,7 +40,7 @@ public:
 
 private:
   int n_ = 0, tiles_ = 0;
-  std::vector<BoundingBox> boxes_;
+  std::vector<BoundingBox> boxes_, groups_;
 };
 
 } // namespace octaclay::core
