@@ -1,9 +1,13 @@
 #include "brush_setup.h"
 #include "commands.h"
+#include "octaclay/gpu/brush_library.h"
+#include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gl_error.h"
 
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace octaclay::app {
 
@@ -13,10 +17,31 @@ Command addBrushesCommand(CLI::App& app) {
                                                 "with its parameters and any load errors");
   sub->add_flag("--json", *json, "Print one JSON object");
   return {sub, [json]() {
-            const gpu::BrushCatalog catalog = scanBrushes();
+            // Compiling needs GL; without it the manifests are still listed and checked.
+            std::optional<gpu::GlContext> context;
+            std::optional<gpu::BrushLibrary> library;
+            std::vector<std::string> problems;
+            try {
+              context.emplace(gpu::GlContext::createHeadless());
+              library.emplace(gpu::BrushCatalog::defaultSearchPath(builtInBrushFolder()));
+              problems = library->errors();
+            } catch (const gpu::GlError& e) {
+              problems.push_back(std::string("brushes not compiled: ") + e.what());
+            }
+            const gpu::BrushCatalog catalog = library ? library->catalog() : scanBrushes();
+            std::vector<const gpu::BrushManifest*> usable;
+            if (library) {
+              usable = library->brushes();
+            } else {
+              for (const gpu::BrushCatalogError& e : catalog.errors())
+                problems.push_back(e.message);
+              for (const gpu::BrushManifest& b : catalog.brushes())
+                usable.push_back(&b);
+            }
             if (*json) {
               nlohmann::json brushes = nlohmann::json::array(), errors = nlohmann::json::array();
-              for (const gpu::BrushManifest& b : catalog.brushes()) {
+              for (const gpu::BrushManifest* brush : usable) {
+                const gpu::BrushManifest& b = *brush;
                 nlohmann::json parameters = nlohmann::json::array();
                 for (const gpu::BrushParameter& p : b.parameters)
                   parameters.push_back({{"id", p.id},
@@ -37,20 +62,21 @@ Command addBrushesCommand(CLI::App& app) {
                                    {"folder", b.folder.string()},
                                    {"parameters", parameters}});
               }
-              for (const gpu::BrushCatalogError& e : catalog.errors())
-                errors.push_back({{"path", e.path.string()}, {"message", e.message}});
+              for (const std::string& message : problems)
+                errors.push_back(message);
               std::cout << nlohmann::json{{"brushes", brushes}, {"errors", errors}}.dump() << "\n";
               return kExitOk;
             }
-            for (const gpu::BrushManifest& b : catalog.brushes()) {
+            for (const gpu::BrushManifest* brush : usable) {
+              const gpu::BrushManifest& b = *brush;
               std::cout << b.id << "  (" << b.name << ", " << gpu::toManifestName(b.category)
                         << ")  " << b.description << "\n";
               for (const gpu::BrushParameter& p : b.parameters)
                 std::cout << "    --param " << p.id << "=…  " << p.label << " ("
                           << gpu::toManifestName(p.type) << ")\n";
             }
-            for (const gpu::BrushCatalogError& e : catalog.errors())
-              std::cout << "not loaded: " << e.message << "\n";
+            for (const std::string& message : problems)
+              std::cout << "not loaded: " << message << "\n";
             return kExitOk;
           }};
 }

@@ -2,6 +2,7 @@
 
 #include "octaclay/gpu/gl_error.h"
 
+#include <cstdio>
 #include <dlfcn.h>
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -28,11 +29,11 @@ void requireLibEgl() {
 }
 
 std::string eglErrorText(const char* step) {
-  return std::string(step) + " failed (EGL error 0x" + [] {
-    char hex[16];
-    std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>(eglGetError()));
-    return std::string(hex);
-  }() + ")";
+  const EGLint error = eglGetError();
+  if (error == EGL_SUCCESS) return std::string(step) + " found no EGL driver";
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(error));
+  return std::string(step) + " failed (EGL error " + hex + ")";
 }
 
 // Surfaceless (Mesa, llvmpipe here) first, then the first EGL device (NVIDIA without X).
@@ -59,7 +60,8 @@ EGLDisplay openDisplay(std::string& platform) {
   }
   throw GlError("no headless OpenGL: neither EGL's surfaceless platform nor an EGL device "
                 "could be opened (" +
-                eglErrorText("eglInitialize") + ")");
+                eglErrorText("eglInitialize") +
+                "); install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver");
 }
 
 void requireVersion43(const std::string& platform) {
