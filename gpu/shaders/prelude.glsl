@@ -73,6 +73,24 @@ float falloffAt(float d) {
 #endif
 }
 
+// Distance in samples from t to the centre sample over the octahedral tiling: the least distance
+// to the centre's images under the half-turns about the side midpoints and the (±N, ±N)
+// translations, which is all a brush narrower than N/2 can reach across seams and corners.
+float uvDistance(ivec2 t) {
+  vec2 p = vec2(t), c = vec2(u_centreTexel);
+  float n = float(u_size);
+  float d = length(p - c);
+  d = min(d, length(p - (vec2(0.0, n) - c)));
+  d = min(d, length(p - (vec2(2.0 * n, n) - c)));
+  d = min(d, length(p - (vec2(n, 0.0) - c)));
+  d = min(d, length(p - (vec2(n, 2.0 * n) - c)));
+  d = min(d, length(p - (c + vec2(n, n))));
+  d = min(d, length(p - (c + vec2(-n, -n))));
+  d = min(d, length(p - (c + vec2(n, -n))));
+  d = min(d, length(p - (c + vec2(-n, n))));
+  return d;
+}
+
 // Fills the brush input of texel t; weight is 0 outside the brush's area.
 BrushInput brushInputAt(ivec2 t) {
   BrushInput b;
@@ -81,8 +99,7 @@ BrushInput brushInputAt(ivec2 t) {
   b.position = texelFetch(u_positions, t, 0).xyz;
   b.normal = normalAt(t);
 #if defined(BRUSH_AREA_UV)
-  vec2 d = vec2(t - u_centreTexel);
-  b.distance = length(d) * (u_radius > 0.0 ? 1.0 / u_radius : 0.0);
+  b.distance = uvDistance(t) * (u_radius > 0.0 ? 1.0 / u_radius : 0.0);
 #else
   b.distance = length(b.position - u_centre) / u_radius;
 #endif

@@ -191,16 +191,31 @@ std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
   const int tiles = bounds.tilesPerSide();
   std::vector<core::TexelRect> rects;
   if (found->second->manifest.area == AreaMode::Uv) {
-    // Samples within the radius (in samples) of the centre sample, on this side of the seams.
+    // Samples within the radius (in samples) of the centre sample or of one of its images over
+    // the tiling (prelude.glsl's uvDistance), so uv brushes continue across seams.
     const float r = dab.radius / std::max(1e-20f, bounds.diagonal()) * float(document.size());
+    const float n = float(document.size());
+    const float ci = float(dab.centreTexel.i), cj = float(dab.centreTexel.j);
+    const std::array<std::array<float, 2>, 9> images{{{ci, cj},
+                                                      {-ci, n - cj},
+                                                      {2 * n - ci, n - cj},
+                                                      {n - ci, -cj},
+                                                      {n - ci, 2 * n - cj},
+                                                      {ci + n, cj + n},
+                                                      {ci - n, cj - n},
+                                                      {ci + n, cj - n},
+                                                      {ci - n, cj + n}}};
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
         const core::TexelRect t = bounds.tileRect(tx, ty);
-        const float dx = std::max(
-            {float(t.x - dab.centreTexel.i), 0.0f, float(dab.centreTexel.i - (t.x + t.width - 1))});
-        const float dy = std::max({float(t.y - dab.centreTexel.j), 0.0f,
-                                   float(dab.centreTexel.j - (t.y + t.height - 1))});
-        if (dx * dx + dy * dy <= r * r) rects.push_back(t);
+        for (const auto& c : images) {
+          const float dx = std::max({float(t.x) - c[0], 0.0f, c[0] - float(t.x + t.width - 1)});
+          const float dy = std::max({float(t.y) - c[1], 0.0f, c[1] - float(t.y + t.height - 1)});
+          if (dx * dx + dy * dy <= r * r) {
+            rects.push_back(t);
+            break;
+          }
+        }
       }
     return rects;
   }

@@ -54,6 +54,7 @@ private slots:
   void sphereSubtractLeavesNoSampleInside();
   void paintChangesOnlyDiffuse();
   void brokenShaderNamesFileAndLine();
+  void uvAreaContinuesAcrossSeamsAndCorners();
 
 private:
   std::optional<GlContext> context_;
@@ -211,6 +212,36 @@ void BrushesTest::brokenShaderNamesFileAndLine() {
   GpuDocument document(core::makeDocument(image));
   engine_->dab(document, "push", dabAt(image, {16, 16}, 0.5f, 0.5f));
   QVERIFY(document.document().positions.at(16, 16).z > 1.2f);
+}
+
+void BrushesTest::uvAreaContinuesAcrossSeamsAndCorners() {
+  BrushManifest manifest = parseBrushManifest(kBrushes / "paint" / "manifest.json");
+  manifest.id = "paint-uv";
+  manifest.area = AreaMode::Uv;
+  engine_->load(manifest, readFile(manifest.shaderPath()));
+  const int n = 128;
+  const core::GeometryImage image = core::makeBaseShape(core::BaseShape::Sphere, n);
+  GpuDocument document(core::makeDocument(image));
+  // 6 samples of radius: the radius is the same fraction of N as of the bbox diagonal.
+  const float radius = 6.0f / float(n) * document.bounds().diagonal();
+  auto colour = [&](int i, int j) {
+    // Green: 0.8 in the default fill, 0.2 in the default paint colour.
+    return document.document().diffuse.texels[(static_cast<std::size_t>(j) * (n + 1) + i) * 4 + 1];
+  };
+  // On the left seam: samples two columns in, mirrored across the fold, are painted alike.
+  engine_->dab(document, "paint-uv", dabAt(image, {0, n / 4}, radius, 1.0f));
+  QVERIFY(colour(2, n / 4) < 0.7f);
+  QCOMPARE(colour(2, n / 4), colour(2, 3 * n / 4));
+  QCOMPARE(colour(1, n / 4 + 2), colour(1, 3 * n / 4 - 2));
+  QVERIFY(colour(10, n / 4) > 0.79f); // outside the radius: the fill
+  // At the corner pole: the four corners' neighbourhoods are one disc.
+  engine_->dab(document, "paint-uv", dabAt(image, {0, 0}, radius, 1.0f));
+  QVERIFY(colour(2, 1) < 0.7f);
+  QCOMPARE(colour(2, 1), colour(n - 2, n - 1));
+  QCOMPARE(colour(1, 2), colour(n - 1, n - 2));
+  QCOMPARE(colour(2, 1), colour(n - 2, 1));
+  QCOMPARE(colour(2, 1), colour(2, n - 1));
+  QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
 }
 
 QTEST_APPLESS_MAIN(BrushesTest)
