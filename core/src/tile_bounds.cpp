@@ -1,6 +1,7 @@
 #include "octaclay/core/tile_bounds.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace octaclay::core {
 
@@ -31,11 +32,18 @@ void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx) {
       const TexelRect r = tileRect(tx, ty);
-      BoundingBox box;
-      for (int j = r.y; j <= std::min(r.y + r.height, n_); ++j)
-        for (int i = r.x; i <= std::min(r.x + r.width, n_); ++i)
-          box.extend(image.at(i, j).xyz());
-      boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = box;
+      // Plain min/max over rows (not BoundingBox::extend) so the compiler vectorizes it: this
+      // runs after every dab.
+      Vec3f lo = image.at(r.x, r.y).xyz(), hi = lo;
+      const int lastI = std::min(r.x + r.width, n_);
+      for (int j = r.y; j <= std::min(r.y + r.height, n_); ++j) {
+        const Vec4f* row = &image.at(0, j);
+        for (int i = r.x; i <= lastI; ++i) {
+          lo = {std::min(lo.x, row[i].x), std::min(lo.y, row[i].y), std::min(lo.z, row[i].z)};
+          hi = {std::max(hi.x, row[i].x), std::max(hi.y, row[i].y), std::max(hi.z, row[i].z)};
+        }
+      }
+      boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = BoundingBox{lo, hi};
     }
   for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
     for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
@@ -79,6 +87,34 @@ std::vector<int> TileBounds::tilesNearSphere(Vec3f centre, float radius) const {
     }
   std::sort(tiles.begin(), tiles.end());
   return tiles;
+}
+
+std::vector<TexelRect> mergeRects(std::vector<TexelRect> rects) {
+  const auto byRow = [](TexelRect a, TexelRect b) {
+    return std::tie(a.y, a.height, a.x) < std::tie(b.y, b.height, b.x);
+  };
+  std::sort(rects.begin(), rects.end(), byRow);
+  std::vector<TexelRect> rows;
+  for (TexelRect r : rects) {
+    TexelRect* last = rows.empty() ? nullptr : &rows.back();
+    if (last && last->y == r.y && last->height == r.height && last->x + last->width == r.x)
+      last->width += r.width;
+    else
+      rows.push_back(r);
+  }
+  const auto byColumn = [](TexelRect a, TexelRect b) {
+    return std::tie(a.x, a.width, a.y) < std::tie(b.x, b.width, b.y);
+  };
+  std::sort(rows.begin(), rows.end(), byColumn);
+  std::vector<TexelRect> merged;
+  for (TexelRect r : rows) {
+    TexelRect* last = merged.empty() ? nullptr : &merged.back();
+    if (last && last->x == r.x && last->width == r.width && last->y + last->height == r.y)
+      last->height += r.height;
+    else
+      merged.push_back(r);
+  }
+  return merged;
 }
 
 } // namespace octaclay::core

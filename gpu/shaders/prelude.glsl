@@ -3,7 +3,8 @@
 
 uniform sampler2D u_positions; // RGBA32F: xyz position, w saliency
 uniform sampler2D u_layer;     // the layer this pass writes (== u_positions for positions)
-uniform sampler2D u_mask;      // R: 1 = full effect, 0 = blocked
+uniform sampler2D u_mask;      // R: 1 = full effect, 0 = blocked (read only if BRUSH_MASK_TEXTURE)
+uniform float u_maskFill;      // the mask's value everywhere while it is unpainted
 uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
 uniform int u_falloffCurveSize;
 uniform int u_size;            // N: the image has (N+1)^2 samples
@@ -25,12 +26,17 @@ struct BrushInput {
 };
 
 // The grid sample that integer position p stands for in the octahedral tiling of the plane
-// (core/src/octahedral.cpp's wrap()).
+// (core/src/octahedral.cpp's wrap()), for p within 4N of the image (further than any brush
+// reaches). Selects instead of `%`: a software rasterizer runs integer division lane by lane.
 ivec2 wrapTexel(ivec2 p) {
   int n = u_size;
   int period = 2 * n;
-  int i = ((p.x % period) + period) % period;
-  int j = ((p.y % period) + period) % period;
+  int i = p.x < 0 ? p.x + 2 * period : p.x;
+  int j = p.y < 0 ? p.y + 2 * period : p.y;
+  i = i >= period ? i - period : i;
+  j = j >= period ? j - period : j;
+  i = i >= period ? i - period : i;
+  j = j >= period ? j - period : j;
   if (i > n) { i = period - i; j = n - j; }
   if (j < 0) { i = n - i; j = -j; }
   else if (j > n) { i = n - i; j = period - j; }
@@ -55,6 +61,16 @@ vec3 normalAt(ivec2 t) {
   }
   if (dot(n, n) < 1e-30) return u_centreNormal;
   return normalize(n);
+}
+
+// The painted mask at texel t. An unpainted mask is one value everywhere: the host then leaves
+// BRUSH_MASK_TEXTURE undefined and no texel is read (a texture read is costly on a CPU rasterizer).
+float maskAt(ivec2 t) {
+#if defined(BRUSH_MASK_TEXTURE)
+  return texelFetch(u_mask, t, 0).r;
+#else
+  return u_maskFill;
+#endif
 }
 
 float falloffAt(float d) {
@@ -91,21 +107,32 @@ float uvDistance(ivec2 t) {
   return d;
 }
 
-// Fills the brush input of texel t; weight is 0 outside the brush's area.
-BrushInput brushInputAt(ivec2 t) {
+// Fills the brush input of texel t; weight is 0 outside the brush's area. The normal costs
+// six reads, so it is computed only when the brush body or the area mode uses it
+// (BRUSH_NEEDS_NORMAL) and the texel is inside the radius; otherwise it is the centre normal.
+BrushInput brushInputAt(ivec2 t, vec4 value) {
   BrushInput b;
   b.texel = t;
   b.uv = vec2(t) / float(u_size);
+#if OCTACLAY_LAYER == LAYER_POSITIONS
+  b.position = value.xyz;
+#else
   b.position = texelFetch(u_positions, t, 0).xyz;
-  b.normal = normalAt(t);
+#endif
+  b.normal = u_centreNormal;
 #if defined(BRUSH_AREA_UV)
   b.distance = uvDistance(t) * (u_radius > 0.0 ? 1.0 / u_radius : 0.0);
 #else
   b.distance = length(b.position - u_centre) / u_radius;
 #endif
+  b.weight = 0.0;
+  if (b.distance >= 1.0) return b;
+#if defined(BRUSH_NEEDS_NORMAL)
+  b.normal = normalAt(t);
+#endif
   float w = falloffAt(b.distance) * u_strength * u_pressure;
 #if OCTACLAY_LAYER != LAYER_MASK
-  w *= texelFetch(u_mask, t, 0).r; // the mask brush itself must be able to paint masked areas
+  w *= maskAt(t); // the mask brush itself must be able to paint masked areas
 #endif
 #if defined(BRUSH_AREA_VOLUME_NORMAL)
   if (dot(b.normal, u_centreNormal) < u_normalCosine) w = 0.0;

@@ -11,8 +11,9 @@ void main() {
   bool sideJ = t.y == 0 || t.y == n;
   vec4 value = texelFetch(u_source, t, 0);
   if (sideI && sideJ) {
-    value = 0.25 * (texelFetch(u_source, ivec2(0, 0), 0) + texelFetch(u_source, ivec2(n, 0), 0) +
-                    texelFetch(u_source, ivec2(0, n), 0) + texelFetch(u_source, ivec2(n, n), 0));
+    // Summed in pairs so four equal corners average to exactly their value.
+    value = 0.25 * ((texelFetch(u_source, ivec2(0, 0), 0) + texelFetch(u_source, ivec2(n, 0), 0)) +
+                    (texelFetch(u_source, ivec2(0, n), 0) + texelFetch(u_source, ivec2(n, n), 0)));
   } else if (sideI) {
     value = 0.5 * (value + texelFetch(u_source, ivec2(t.x, n - t.y), 0));
   } else if (sideJ) {

@@ -14,7 +14,10 @@ namespace octaclay::gpu {
 
 struct BrushEngine::LoadedBrush {
   BrushManifest manifest;
-  std::map<BrushLayer, Program> programs; // one per written layer: OCTACLAY_LAYER differs
+  std::string body;
+  // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
+  // painted-mask variants are compiled on first use.
+  std::map<std::pair<BrushLayer, bool>, Program> programs;
 };
 
 namespace {
@@ -63,9 +66,29 @@ std::string brushLog(const std::string& log, const std::string& file) {
   return out;
 }
 
-std::string assemble(const BrushManifest& manifest, BrushLayer layer, const std::string& body) {
+// Whether the brush body mentions `normal` (b.normal, normalAt) outside comments.
+bool readsNormals(const std::string& body) {
+  std::string code;
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    if (body.compare(k, 2, "//") == 0) {
+      k = body.find('\n', k);
+      if (k == std::string::npos) break;
+    } else if (body.compare(k, 2, "/*") == 0) {
+      k = body.find("*/", k + 2);
+      if (k == std::string::npos) break;
+      ++k;
+      continue;
+    }
+    code += body[k];
+  }
+  return code.find("normal") != std::string::npos;
+}
+
+std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool maskTexture,
+                     const std::string& body) {
   std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
                        "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n";
+  if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
   source += std::string("#define OCTACLAY_LAYER ") + layerDefine(layer) + "\n";
   switch (manifest.area) {
   case AreaMode::Uv:
@@ -91,6 +114,9 @@ std::string assemble(const BrushManifest& manifest, BrushLayer layer, const std:
   case Falloff::Smooth:
     break;
   }
+  // The prelude computes per-sample normals only for brushes that read them.
+  if (manifest.area == AreaMode::VolumeNormal || readsNormals(body))
+    source += "#define BRUSH_NEEDS_NORMAL\n";
   for (const BrushParameter& p : manifest.parameters) {
     const char* type = p.type == ParameterType::Color  ? "vec4"
                        : p.type == ParameterType::Enum ? "int"
@@ -113,6 +139,7 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   glUniform1i(location(program, "u_positions"), 0);
   glUniform1i(location(program, "u_layer"), 1);
   glUniform1i(location(program, "u_mask"), 2);
+  glUniform1f(location(program, "u_maskFill"), doc.document().mask.fill[0]);
   glUniform1i(location(program, "u_size"), doc.size());
   glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
   glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
@@ -156,10 +183,18 @@ std::vector<core::TexelRect> borderLines(int side) {
   return {{0, 0, side, 1}, {0, side - 1, side, 1}, {0, 1, 1, side - 2}, {side - 1, 1, 1, side - 2}};
 }
 
+std::vector<Region> regions(const std::vector<core::TexelRect>& rects) {
+  std::vector<Region> out;
+  out.reserve(rects.size());
+  for (const core::TexelRect& r : rects)
+    out.push_back({r.x, r.y, r.width, r.height});
+  return out;
+}
+
 } // namespace
 
 BrushEngine::BrushEngine()
-    : seamProgram_("gpu/shaders/seam.glsl", fullscreenVertexShader(),
+    : seamProgram_("gpu/shaders/seam.glsl", rectsVertexShader(),
                    "#version 430 core\n" + detail::builtInShader("seam.glsl")) {}
 
 BrushEngine::~BrushEngine() = default;
@@ -167,16 +202,25 @@ BrushEngine::~BrushEngine() = default;
 void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderSource) {
   auto brush = std::make_unique<LoadedBrush>();
   brush->manifest = manifest;
-  const std::string file = (manifest.folder / manifest.shaderFile).string();
-  for (BrushLayer layer : manifest.writes) {
-    try {
-      brush->programs.emplace(
-          layer, Program(file, fullscreenVertexShader(), assemble(manifest, layer, shaderSource)));
-    } catch (const GlError& e) {
-      throw GlError("brush " + manifest.id + ": " + brushLog(e.what(), file));
-    }
-  }
+  brush->body = shaderSource;
+  for (BrushLayer layer : manifest.writes)
+    program(*brush, layer, false);
   brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version
+}
+
+const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool maskTexture) {
+  const auto key = std::pair{layer, maskTexture};
+  const auto found = brush.programs.find(key);
+  if (found != brush.programs.end()) return found->second;
+  const std::string file = (brush.manifest.folder / brush.manifest.shaderFile).string();
+  try {
+    return brush.programs
+        .emplace(key, Program(file, rectsVertexShader(),
+                              assemble(brush.manifest, layer, maskTexture, brush.body)))
+        .first->second;
+  } catch (const GlError& e) {
+    throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
+  }
 }
 
 bool BrushEngine::has(const std::string& id) const {
@@ -228,7 +272,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   DabResult result;
   result.tiles = reach(document, brushId, dab);
   if (result.tiles.empty()) return result;
-  const LoadedBrush& brush = *brushes_.at(brushId);
+  LoadedBrush& brush = *brushes_.at(brushId);
+  const bool maskTexture = !document.document().mask.uniform();
   const int side = document.size() + 1;
   for (const core::TexelRect& t : result.tiles) {
     result.texels += static_cast<std::size_t>(t.width) * t.height;
@@ -236,30 +281,33 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
         result.seamed || t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
   }
 
+  const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  const std::vector<Region> passRects = regions(rects);
+  const std::vector<core::TexelRect> lines = borderLines(side);
+  const std::vector<Region> lineRects = regions(lines);
+
   glViewport(0, 0, side, side);
-  glEnable(GL_SCISSOR_TEST);
   // Positions last: every other layer's pass reads the positions from before the dab.
   std::vector<BrushLayer> order = brush.manifest.writes;
   std::stable_partition(order.begin(), order.end(),
                         [](BrushLayer l) { return l != BrushLayer::Positions; });
   for (BrushLayer layer : order) {
-    const Program& program = brush.programs.at(layer);
-    const Framebuffer target(document.scratch(layer));
-    target.bind();
-    program.use();
-    setUniforms(program, brush.manifest, document, dab);
+    const Program& pass = program(brush, layer, maskTexture);
+    document.scratch(layer).bindAsTarget();
+    pass.use();
+    setUniforms(pass, brush.manifest, document, dab);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Positions).id());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
-    for (const core::TexelRect& t : result.tiles) {
-      glScissor(t.x, t.y, t.width, t.height);
-      drawFullscreenPass();
-    }
-    for (const core::TexelRect& t : result.tiles)
-      copyRect(document.scratch(layer), document.texture(layer), t);
+    rectPass_.draw(passRects, side, side);
+    if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side})
+      document.swapScratch(layer);
+    else
+      for (const core::TexelRect& r : rects)
+        copyRect(document.scratch(layer), document.texture(layer), r);
 
     if (result.seamed) {
       seamProgram_.use();
@@ -267,22 +315,18 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glUniform1i(seamProgram_.uniform("u_size"), document.size());
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
-      for (const core::TexelRect& line : borderLines(side)) {
-        glScissor(line.x, line.y, line.width, line.height);
-        drawFullscreenPass();
-      }
-      for (const core::TexelRect& line : borderLines(side))
+      rectPass_.draw(lineRects, side, side);
+      for (const core::TexelRect& line : lines)
         copyRect(document.scratch(layer), document.texture(layer), line);
     }
     checkGlError("brush " + brushId + " pass");
 
-    for (const core::TexelRect& t : result.tiles)
-      document.pull(layer, t);
+    for (const core::TexelRect& r : rects)
+      document.pull(layer, r);
     if (result.seamed)
-      for (const core::TexelRect& line : borderLines(side))
+      for (const core::TexelRect& line : lines)
         document.pull(layer, line);
   }
-  glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;
 }

@@ -73,12 +73,14 @@ Texture Texture::wrap(unsigned id, int width, int height, TextureFormat format) 
 
 Texture::Texture(Texture&& other) noexcept
     : id_(std::exchange(other.id_, 0)), width_(other.width_), height_(other.height_),
-      format_(other.format_) {}
+      format_(other.format_), framebuffer_(std::exchange(other.framebuffer_, 0)) {}
 
 Texture& Texture::operator=(Texture&& other) noexcept {
   if (this != &other) {
+    if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
     if (id_) glDeleteTextures(1, &id_);
     id_ = std::exchange(other.id_, 0);
+    framebuffer_ = std::exchange(other.framebuffer_, 0);
     width_ = other.width_;
     height_ = other.height_;
     format_ = other.format_;
@@ -87,11 +89,23 @@ Texture& Texture::operator=(Texture&& other) noexcept {
 }
 
 Texture::~Texture() {
+  if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
   if (id_) glDeleteTextures(1, &id_);
 }
 
 unsigned Texture::release() {
+  if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+  framebuffer_ = 0;
   return std::exchange(id_, 0);
+}
+
+unsigned Texture::framebuffer() const {
+  if (!framebuffer_) framebuffer_ = Framebuffer(*this).release();
+  return framebuffer_;
+}
+
+void Texture::bindAsTarget() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
 }
 
 void Texture::upload(Region region, std::span<const float> texels) {
@@ -107,13 +121,49 @@ void Texture::upload(Region region, std::span<const float> texels) {
 
 std::vector<float> Texture::read(Region region) const {
   std::vector<float> texels(texelCount(region) * static_cast<std::size_t>(channels()));
-  const Framebuffer framebuffer(*this);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(region.x, region.y, region.width, region.height, info(format_).layout, GL_FLOAT,
                texels.data());
   checkGlError("texture read-back");
   return texels;
+}
+
+namespace {
+
+GLenum layoutOf(int channels) {
+  switch (channels) {
+  case 1:
+    return GL_RED;
+  case 3:
+    return GL_RGB;
+  case 4:
+    return GL_RGBA;
+  }
+  throw GlError("texels of " + std::to_string(channels) + " channels are not supported");
+}
+
+} // namespace
+
+void Texture::readInto(Region region, float* out, int rowLength, int channels) const {
+  const GLenum layout = layoutOf(channels);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, rowLength);
+  glReadPixels(region.x, region.y, region.width, region.height, layout, GL_FLOAT, out);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  checkGlError("texture read-back");
+}
+
+void Texture::uploadFrom(Region region, const float* in, int rowLength, int channels) {
+  const GLenum layout = layoutOf(channels);
+  glBindTexture(GL_TEXTURE_2D, id_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, region.x, region.y, region.width, region.height, layout,
+                  GL_FLOAT, in);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  checkGlError("texture upload");
 }
 
 Framebuffer::Framebuffer(const Texture& target) {
@@ -140,6 +190,10 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
 
 Framebuffer::~Framebuffer() {
   if (id_) glDeleteFramebuffers(1, &id_);
+}
+
+unsigned Framebuffer::release() {
+  return std::exchange(id_, 0);
 }
 
 void Framebuffer::bind() const {
@@ -195,6 +249,83 @@ void Program::use() const {
 
 int Program::uniform(const char* name) const {
   return glGetUniformLocation(id_, name);
+}
+
+Buffer Buffer::create() {
+  Buffer buffer;
+  glGenBuffers(1, &buffer.id_);
+  checkGlError("creating a buffer");
+  return buffer;
+}
+
+Buffer::Buffer(Buffer&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteBuffers(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+Buffer::~Buffer() {
+  if (id_) glDeleteBuffers(1, &id_);
+}
+
+void Buffer::upload(std::span<const std::byte> bytes) {
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, id_);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes.size()), bytes.data(),
+               GL_STREAM_DRAW);
+  checkGlError("buffer upload");
+}
+
+RectPass::RectPass() : rects_(Buffer::create()) {
+  glGenVertexArrays(1, &vertexArray_);
+}
+
+RectPass::RectPass(RectPass&& other) noexcept
+    : rects_(std::move(other.rects_)), vertexArray_(std::exchange(other.vertexArray_, 0)) {}
+
+RectPass& RectPass::operator=(RectPass&& other) noexcept {
+  if (this != &other) {
+    if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+    rects_ = std::move(other.rects_);
+    vertexArray_ = std::exchange(other.vertexArray_, 0);
+  }
+  return *this;
+}
+
+RectPass::~RectPass() {
+  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+}
+
+void RectPass::draw(std::span<const Region> rects, int width, int height) {
+  if (rects.empty()) return;
+  std::vector<GLint> data{width, height, 0, 0};
+  for (const Region& r : rects)
+    data.insert(data.end(), {r.x, r.y, r.width, r.height});
+  rects_.upload(std::as_bytes(std::span(data)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rects_.id());
+  glBindVertexArray(vertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * rects.size()));
+  checkGlError("rectangle pass");
+}
+
+const std::string& rectsVertexShader() {
+  static const std::string source = R"(#version 430 core
+layout(std430, binding = 0) readonly buffer PassRects {
+  ivec4 target; // width, height
+  ivec4 rects[]; // x, y, width, height
+};
+void main() {
+  ivec4 r = rects[gl_VertexID / 6];
+  const ivec2 corners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1),
+                                    ivec2(1, 0), ivec2(1, 1), ivec2(0, 1));
+  vec2 p = vec2(r.xy + corners[gl_VertexID % 6] * r.zw) / vec2(target.xy);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+  return source;
 }
 
 void drawFullscreenPass() {

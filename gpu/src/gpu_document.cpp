@@ -2,6 +2,7 @@
 
 #include "octaclay/gpu/gl_error.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace octaclay::gpu {
@@ -93,23 +94,11 @@ void GpuDocument::writeMirror(BrushLayer layer, core::TexelRect rect,
                               std::span<const float> texels) {
   const int c = channels(layer);
   const int side = document_.positions.side();
-  core::Layer* l = mirrorLayer(layer);
-  if (l && l->uniform()) { // the first edit of a layer gives it texels
-    l->texels.resize(static_cast<std::size_t>(side) * side * c);
-    for (std::size_t k = 0; k < l->texels.size(); ++k)
-      l->texels[k] = l->fill[k % c];
-  }
+  float* mirror = mirrorData(layer);
+  const std::size_t rowFloats = static_cast<std::size_t>(rect.width) * c;
   for (int y = 0; y < rect.height; ++y)
-    for (int x = 0; x < rect.width; ++x) {
-      const float* in = &texels[(static_cast<std::size_t>(y) * rect.width + x) * c];
-      if (!l) {
-        document_.positions.at(rect.x + x, rect.y + y) = {in[0], in[1], in[2], in[3]};
-        continue;
-      }
-      const std::size_t at = (static_cast<std::size_t>(rect.y + y) * side + rect.x + x) * c;
-      for (int k = 0; k < c; ++k)
-        l->texels[at + k] = in[k];
-    }
+    std::copy_n(&texels[y * rowFloats], rowFloats,
+                mirror + (static_cast<std::size_t>(rect.y + y) * side + rect.x) * c);
   if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
 }
 
@@ -119,6 +108,15 @@ void GpuDocument::restore(BrushLayer layer, core::TexelRect rect, std::span<cons
 }
 
 void GpuDocument::push(BrushLayer layer, core::TexelRect rect) {
+  const core::Layer* l = mirrorLayer(layer);
+  if (!l || !l->uniform()) { // straight from the mirror's memory
+    const int c = channels(layer);
+    const int side = document_.positions.side();
+    const float* mirror = l ? l->texels.data() : &std::as_const(document_.positions).at(0, 0).x;
+    textures_[index(layer)].uploadFrom(
+        toRegion(rect), mirror + (static_cast<std::size_t>(rect.y) * side + rect.x) * c, side, c);
+    return;
+  }
   std::vector<float> texels = mirrorTexels(layer, rect);
   Texture& texture = textures_[index(layer)];
   if (texture.channels() != channels(layer)) { // feature: 3 channels in an RGBA texture
@@ -132,15 +130,24 @@ void GpuDocument::push(BrushLayer layer, core::TexelRect rect) {
 }
 
 void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
-  std::vector<float> texels = textures_[index(layer)].read(toRegion(rect));
-  if (channels(layer) == 3) {
-    std::vector<float> rgb(static_cast<std::size_t>(rect.width) * rect.height * 3);
-    for (std::size_t t = 0; t < rgb.size() / 3; ++t)
-      for (int k = 0; k < 3; ++k)
-        rgb[t * 3 + k] = texels[t * 4 + k];
-    texels = std::move(rgb);
+  const int c = channels(layer);
+  const int side = document_.positions.side();
+  const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
+  textures_[index(layer)].readInto(toRegion(rect), mirrorData(layer) + at, side, c);
+  if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
+}
+
+float* GpuDocument::mirrorData(BrushLayer layer) {
+  core::Layer* l = mirrorLayer(layer);
+  if (!l) return &document_.positions.at(0, 0).x;
+  if (l->uniform()) { // the first edit of a layer gives it texels
+    const int c = channels(layer);
+    const int side = document_.positions.side();
+    l->texels.resize(static_cast<std::size_t>(side) * side * c);
+    for (std::size_t k = 0; k < l->texels.size(); ++k)
+      l->texels[k] = l->fill[k % c];
   }
-  writeMirror(layer, rect, texels);
+  return l->texels.data();
 }
 
 core::TileApplier undoApplier(GpuDocument& document) {

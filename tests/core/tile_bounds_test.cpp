@@ -6,6 +6,7 @@
 #include "octaclay/core/tile_bounds.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -37,6 +38,7 @@ private slots:
   void tilesCoverTheImageExactly();
   void nearSphereFindsEveryReachableTile();
   void refreshFollowsEdits();
+  void mergedRectsCoverTheSameTexelsOnce();
 };
 
 void TileBoundsTest::tilesCoverTheImageExactly() {
@@ -85,6 +87,35 @@ void TileBoundsTest::refreshFollowsEdits() {
   const std::set<int> expected = bruteForce(image, bounds, far, 0.5f);
   QCOMPARE(std::set<int>(found.begin(), found.end()), expected);
   QVERIFY(bounds.diagonal() > 6.0f);
+}
+
+void TileBoundsTest::mergedRectsCoverTheSameTexelsOnce() {
+  const GeometryImage image = makeBaseShape(BaseShape::Sphere, 256);
+  const TileBounds bounds(image);
+  const int tiles = bounds.tilesPerSide();
+  std::mt19937 random(7);
+  for (int round = 0; round < 50; ++round) {
+    // A random sphere's tiles, the set a dab touches.
+    const Vec4f c = image.texels()[random() % image.texelCount()];
+    const float radius = 0.05f + 0.6f * float(random() % 1000) / 1000.0f;
+    std::vector<TexelRect> rects;
+    for (int t : bounds.tilesNearSphere(c.xyz(), radius))
+      rects.push_back(bounds.tileRect(t % tiles, t / tiles));
+    const std::vector<TexelRect> merged = mergeRects(rects);
+    QVERIFY(merged.size() <= rects.size());
+    std::vector<int> before(image.texelCount(), 0), after(image.texelCount(), 0);
+    const auto count = [&](const std::vector<TexelRect>& from, std::vector<int>& counts) {
+      for (const TexelRect& r : from)
+        for (int y = r.y; y < r.y + r.height; ++y)
+          for (int x = r.x; x < r.x + r.width; ++x)
+            ++counts[static_cast<std::size_t>(y) * image.side() + x];
+    };
+    count(rects, before);
+    count(merged, after);
+    QVERIFY(before == after);
+    QVERIFY(std::all_of(after.begin(), after.end(), [](int k) { return k <= 1; }));
+    if (rects.size() > 8) QVERIFY(merged.size() < rects.size());
+  }
 }
 
 QTEST_APPLESS_MAIN(TileBoundsTest)

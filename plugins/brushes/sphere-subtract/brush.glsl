@@ -9,5 +9,5 @@ vec4 brush(vec4 value, BrushInput b) {
   float distance = length(offset);
   if (distance >= sphereRadius || distance == 0.0) return value;
   vec3 onSphere = sphereCentre + offset * (sphereRadius / distance);
-  return vec4(mix(value.xyz, onSphere, texelFetch(u_mask, b.texel, 0).r), value.w);
+  return vec4(mix(value.xyz, onSphere, maskAt(b.texel)), value.w);
 }

@@ -43,4 +43,9 @@ private:
   std::vector<BoundingBox> boxes_, groups_;
 };
 
+/// The texels of disjoint rects covered by fewer, still disjoint rectangles: runs of
+/// side-by-side rects in a row band, then runs of equal spans in consecutive bands. A dab's
+/// tiles become a few rectangles, so it costs a few passes and read-backs instead of one a tile.
+std::vector<TexelRect> mergeRects(std::vector<TexelRect> rects);
+
 } // namespace octaclay::core

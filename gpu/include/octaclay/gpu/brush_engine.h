@@ -46,7 +46,8 @@ public:
   void load(const BrushManifest& manifest, const std::string& shaderSource);
   bool has(const std::string& id) const;
 
-  /// One dab: a scissored pass over the tiles the brush can reach, for each layer it writes,
+  /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
+  /// call), for each layer it writes,
   /// then the seaming pass when it reached the border; the mirror is updated for those tiles.
   /// Throws GlError for an unknown brush id.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
@@ -57,8 +58,11 @@ public:
 
 private:
   struct LoadedBrush;
+  /// The brush's program for a layer and mask kind, compiled on first use. Throws GlError.
+  const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   Program seamProgram_;
+  RectPass rectPass_;
 };
 
 } // namespace octaclay::gpu

@@ -36,6 +36,12 @@ public:
   void upload(Region region, std::span<const float> texels);
   /// Reads region back as floats, row-major.
   std::vector<float> read(Region region) const;
+  /// Reads region into a larger row-major float image: `out` is where the region's first texel
+  /// goes, rows are rowLength texels apart, each texel `channels` floats (1, 3 or 4; channels
+  /// the texture lacks read as 0, alpha as 1). Avoids a temporary and a copy per dab.
+  void readInto(Region region, float* out, int rowLength, int channels) const;
+  /// Writes region from a larger row-major float image laid out as for readInto.
+  void uploadFrom(Region region, const float* in, int rowLength, int channels);
 
   unsigned id() const { return id_; }
   int width() const { return width_; }
@@ -44,11 +50,16 @@ public:
   int channels() const { return format_ == TextureFormat::R32f ? 1 : 4; }
   /// Gives up ownership and returns the id (the texture is empty after).
   unsigned release();
+  /// Binds a framebuffer rendering into this texture (made once, kept with the texture).
+  void bindAsTarget() const;
 
 private:
+  unsigned framebuffer() const;
+
   unsigned id_ = 0;
   int width_ = 0, height_ = 0;
   TextureFormat format_ = TextureFormat::Rgba32f;
+  mutable unsigned framebuffer_ = 0; // made on first use by read() or bindAsTarget()
 };
 
 /// Move-only owner of a framebuffer with one colour attachment.
@@ -65,10 +76,54 @@ public:
 
   void bind() const;
   unsigned id() const { return id_; }
+  /// Gives up ownership and returns the id.
+  unsigned release();
 
 private:
   unsigned id_ = 0;
 };
+
+/// Move-only owner of a buffer object (vertex, shader-storage, … data).
+class Buffer {
+public:
+  Buffer() = default;
+  /// A new, empty buffer object. Throws GlError.
+  static Buffer create();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+  ~Buffer();
+
+  /// Replaces the contents (GL_STREAM_DRAW: written once a pass, read once).
+  void upload(std::span<const std::byte> bytes);
+  unsigned id() const { return id_; }
+
+private:
+  unsigned id_ = 0;
+};
+
+/// Draws fragment passes over lists of texel rectangles in one draw call each: the rectangles
+/// go to a shader-storage buffer that rectsVertexShader() turns into two triangles apiece.
+class RectPass {
+public:
+  /// Needs a current context. Throws GlError.
+  RectPass();
+  RectPass(RectPass&&) noexcept;
+  RectPass& operator=(RectPass&&) noexcept;
+  ~RectPass();
+
+  /// Runs the bound program over rects of a target of width × height texels (the viewport).
+  void draw(std::span<const Region> rects, int width, int height);
+
+private:
+  Buffer rects_;
+  unsigned vertexArray_ = 0;
+};
+
+/// The vertex shader of RectPass programs: gl_FragCoord.xy of every fragment is a texel centre
+/// inside one of the pass's rectangles.
+const std::string& rectsVertexShader();
 
 /// Move-only owner of a linked vertex + fragment program.
 class Program {

@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gl_objects.h"
 
 #include <array>
+#include <utility>
 
 namespace octaclay::gpu {
 
@@ -25,6 +26,9 @@ public:
 
   Texture& texture(BrushLayer layer) { return textures_[index(layer)]; }
   Texture& scratch(BrushLayer layer) { return scratch_[index(layer)]; }
+  /// Exchanges a layer's texture and its scratch twin: after a pass that wrote every texel of
+  /// the scratch, this replaces copying it back.
+  void swapScratch(BrushLayer layer) { std::swap(textures_[index(layer)], scratch_[index(layer)]); }
 
   /// Copies rect of the layer's texture into the mirror (and refreshes tile bounds for
   /// positions). Painted-but-uniform mirror layers get their texels first.
@@ -43,6 +47,8 @@ private:
   core::Layer* mirrorLayer(BrushLayer layer);
   const core::Layer* mirrorLayer(BrushLayer layer) const;
   void writeMirror(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
+  /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
+  float* mirrorData(BrushLayer layer);
 
   core::Document document_;
   core::TileBounds bounds_;

@@ -1,0 +1,136 @@
+// Time per dab of push and smooth at N = 256, 1024, 4096 with radii of 2, 10 and 30 % of the
+// bounding-box diagonal, a whole-image smooth pass at each N, and effective bytes/s of a dab
+// beside a memcpy of the same bytes in the same run (issue 3's targets; ANCHORS.md's Blender).
+#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/normals.h"
+#include "octaclay/gpu/brush_library.h"
+#include "octaclay/gpu/gl_context.h"
+
+#include <benchmark/benchmark.h>
+#include <chrono>
+#include <cstring>
+#include <epoxy/gl.h>
+#include <memory>
+#include <vector>
+
+using namespace octaclay;
+
+namespace {
+
+struct Session {
+  gpu::GlContext context = gpu::GlContext::createHeadless();
+  gpu::BrushLibrary library{{std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/brushes"}};
+  int sphereSize = 0;
+  core::GeometryImage sphere;
+  std::unique_ptr<gpu::GpuDocument> current;
+
+  // A fresh sphere for every run, so no run inherits another's edits.
+  gpu::GpuDocument& freshDocument(int n) {
+    current.reset(); // one large document at a time: N = 4096 holds 2 x 268 MB textures
+    if (sphereSize != n) {
+      sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
+      sphereSize = n;
+    }
+    current = std::make_unique<gpu::GpuDocument>(core::makeDocument(sphere));
+    return *current;
+  }
+};
+
+Session& session() {
+  static Session s;
+  return s;
+}
+
+double memcpySeconds(std::size_t bytes) {
+  std::vector<char> from(bytes, 1), to(bytes, 0);
+  double best = 1e9;
+  for (int k = 0; k < 5; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    std::memcpy(to.data(), from.data(), bytes);
+    benchmark::DoNotOptimize(to.data());
+    benchmark::ClobberMemory();
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+// Dabs cycle through three samples around the +z pole so the surface keeps changing.
+void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.freshDocument(n);
+  const core::GeometryImage& image = document.document().positions;
+  const float radius = radiusFraction * document.bounds().diagonal();
+  const core::Sample centres[] = {{n / 2, n / 2}, {n / 2 + n / 64, n / 2}, {n / 2, n / 2 + n / 64}};
+  double seconds = 0;
+  std::size_t texels = 0, inside = 0;
+  int k = 0;
+  for (auto _ : state) {
+    gpu::Dab dab;
+    dab.centreTexel = centres[k++ % 3];
+    dab.centre = image.at(dab.centreTexel).xyz();
+    dab.centreNormal = core::vertexNormal(image, dab.centreTexel);
+    dab.radius = radius;
+    // Pushes alternate with pulls at the same places, so the sphere stays a sphere.
+    dab.strength = brush[0] == 'p' ? (k % 6 < 3 ? 0.1f : -0.1f) : 0.5f;
+    const auto start = std::chrono::steady_clock::now();
+    const gpu::DabResult result = s.library.engine().dab(document, brush, dab);
+    glFinish(); // count the GPU's work, not just its queueing
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(elapsed);
+    seconds += elapsed;
+    texels = result.texels;
+    if (inside == 0)
+      for (const core::Vec4f& t : image.texels())
+        inside += core::length(t.xyz() - dab.centre) < radius;
+  }
+  const double perDab = seconds / static_cast<double>(state.iterations());
+  const std::size_t bytes = texels * 16 * 2; // RGBA32F read and written
+  state.counters["ms_per_dab"] = perDab * 1e3;
+  state.counters["dabs_per_s"] = 1.0 / perDab;
+  state.counters["texels"] = static_cast<double>(texels);
+  state.counters["inside"] = static_cast<double>(inside);
+  state.counters["bytes_per_s"] = static_cast<double>(bytes) / perDab;
+  state.counters["x_memcpy"] = perDab / memcpySeconds(bytes);
+}
+
+void BM_PushDab(benchmark::State& state) {
+  runDabs(state, "push", static_cast<float>(state.range(1)) / 100.0f);
+}
+void BM_SmoothDab(benchmark::State& state) {
+  runDabs(state, "smooth", static_cast<float>(state.range(1)) / 100.0f);
+}
+// A radius of twice the diagonal covers the whole model: a full-image pass.
+void BM_SmoothFullImage(benchmark::State& state) {
+  runDabs(state, "smooth", 2.0f);
+}
+
+void dabSizes(benchmark::internal::Benchmark* b) {
+  for (int n : {256, 1024, 4096})
+    for (int radius : {2, 10, 30})
+      b->Args({n, radius});
+}
+
+BENCHMARK(BM_PushDab)
+    ->Apply(dabSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(0.3);
+BENCHMARK(BM_SmoothDab)
+    ->Apply(dabSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(0.3);
+BENCHMARK(BM_SmoothFullImage)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Arg(4096)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(5);
+
+} // namespace
+
+BENCHMARK_MAIN();
