@@ -5,6 +5,7 @@
 #include "octaclay/core/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/stroke.h"
 
 #include <benchmark/benchmark.h>
 #include <chrono>
@@ -96,11 +97,12 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   state.counters["x_memcpy"] = perDab / memcpySeconds(bytes);
 }
 
+// Radii are given in per mille of the diagonal.
 void BM_PushDab(benchmark::State& state) {
-  runDabs(state, "push", static_cast<float>(state.range(1)) / 100.0f);
+  runDabs(state, "push", static_cast<float>(state.range(1)) / 1000.0f);
 }
 void BM_SmoothDab(benchmark::State& state) {
-  runDabs(state, "smooth", static_cast<float>(state.range(1)) / 100.0f);
+  runDabs(state, "smooth", static_cast<float>(state.range(1)) / 1000.0f);
 }
 // A radius of twice the diagonal covers the whole model: a full-image pass.
 void BM_SmoothFullImage(benchmark::State& state) {
@@ -109,8 +111,38 @@ void BM_SmoothFullImage(benchmark::State& state) {
 
 void dabSizes(benchmark::internal::Benchmark* b) {
   for (int n : {256, 1024, 4096})
-    for (int radius : {2, 10, 30})
+    for (int radius : {20, 100, 300})
       b->Args({n, radius});
+  // As many samples as the 10 % dab at N = 1024 (a quarter of its radius at 4 x the density):
+  // whether a dab's cost follows the texels it touches rather than the image's size.
+  b->Args({4096, 25});
+}
+
+// A stroke of 10 %-radius push dabs across the sphere, over two seams and a corner pole, with
+// the brush's own spacing, symmetry off, undo capture on: the sustained dab rate.
+void BM_PushStroke(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.freshDocument(n);
+  gpu::StrokeSettings stroke;
+  stroke.brush = "push";
+  stroke.path = {{0.5f, 0.5f}, {1.0f, 0.5f}, {1.0f, 0.0f}, {0.5f, 0.0f}, {0.5f, 0.5f}};
+  stroke.radius = 0.1f * document.bounds().diagonal();
+  const gpu::BrushManifest& push = *s.library.catalog().find("push");
+  int dabs = 0, k = 0;
+  double seconds = 0;
+  for (auto _ : state) {
+    stroke.strength = k++ % 2 ? -0.05f : 0.05f; // out and back
+    const auto start = std::chrono::steady_clock::now();
+    dabs += gpu::runStroke(s.library.engine(), document, push, stroke).dabs;
+    glFinish();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(elapsed);
+    seconds += elapsed;
+  }
+  state.counters["dabs_per_s"] = dabs / seconds;
+  state.counters["ms_per_dab"] = seconds * 1e3 / dabs;
 }
 
 BENCHMARK(BM_PushDab)
@@ -129,7 +161,8 @@ BENCHMARK(BM_SmoothFullImage)
     ->Arg(4096)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
-    ->Iterations(5);
+    ->Iterations(10);
+BENCHMARK(BM_PushStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 
 } // namespace
 

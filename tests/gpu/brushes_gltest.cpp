@@ -2,6 +2,7 @@
 // a CPU computation, that samples it cannot reach stay bit-identical, and that identified
 // samples stay equal (seams closed) wherever the dab lands.
 
+#include "brush_test_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/normals.h"
 #include "octaclay/core/seaming.h"
@@ -18,28 +19,10 @@
 using namespace octaclay;
 using namespace octaclay::gpu;
 
+using namespace octaclay::gpu::testing;
+
 namespace {
-
-const std::filesystem::path kBrushes =
-    std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/brushes";
-
-std::string readFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Dab dabAt(const core::GeometryImage& image, core::Sample s, float radius, float strength) {
-  Dab dab;
-  dab.centreTexel = s;
-  dab.centre = image.at(s).xyz();
-  dab.centreNormal = core::vertexNormal(image, s);
-  dab.radius = radius;
-  dab.strength = strength;
-  return dab;
-}
-
+const std::filesystem::path kBrushes = kBuiltInBrushes;
 } // namespace
 
 class BrushesTest : public QObject {
@@ -65,11 +48,7 @@ void BrushesTest::initTestCase() {
   try {
     context_.emplace(GlContext::createHeadless());
     engine_.emplace();
-    for (const char* id : {"push", "inflate", "smooth", "flatten", "sphere-add", "sphere-subtract",
-                           "mask", "paint"}) {
-      const BrushManifest manifest = parseBrushManifest(kBrushes / id / "manifest.json");
-      engine_->load(manifest, readFile(manifest.shaderPath()));
-    }
+    loadBuiltIns(*engine_);
   } catch (const std::exception& e) {
     QFAIL(e.what());
   }

@@ -1,0 +1,49 @@
+// Helpers shared by the GL brush tests: built-in brushes loaded from the source tree and dabs
+// placed on a sample of the current surface.
+#pragma once
+
+#include "octaclay/core/normals.h"
+#include "octaclay/gpu/brush_engine.h"
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace octaclay::gpu::testing {
+
+inline const std::filesystem::path kBuiltInBrushes =
+    std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/brushes";
+
+inline std::string readFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// The built-in brush `id`'s manifest, optionally renamed (to load a variant beside it).
+inline BrushManifest builtInManifest(const std::string& id) {
+  return parseBrushManifest(kBuiltInBrushes / id / "manifest.json");
+}
+
+inline void loadBuiltIns(BrushEngine& engine) {
+  for (const char* id :
+       {"push", "inflate", "smooth", "flatten", "sphere-add", "sphere-subtract", "mask", "paint"}) {
+    const BrushManifest manifest = builtInManifest(id);
+    engine.load(manifest, readFile(manifest.shaderPath()));
+  }
+}
+
+inline Dab dabAt(const core::GeometryImage& image, core::Sample s, float radius, float strength) {
+  Dab dab;
+  dab.centreTexel = s;
+  dab.centre = image.at(s).xyz();
+  dab.centreNormal = core::vertexNormal(image, s);
+  dab.radius = radius;
+  dab.strength = strength;
+  return dab;
+}
+
+} // namespace octaclay::gpu::testing
