@@ -141,6 +141,11 @@ Command addStrokeCommand(CLI::App& app) {
             const gpu::BrushCatalog catalog = scanBrushes();
             const gpu::BrushManifest* brush = catalog.find(opt->brush);
             if (!brush) {
+              // A brush folder of that name that failed to load: say why, not just "no brush".
+              for (const gpu::BrushCatalogError& e : catalog.errors())
+                if (e.path.parent_path().filename() == opt->brush ||
+                    e.path.filename() == opt->brush)
+                  throw gpu::BrushLoadError(e.message);
               std::string known;
               for (const auto& b : catalog.brushes())
                 known += (known.empty() ? "" : ", ") + b.id;

@@ -1,6 +1,8 @@
 // octaclay-cli end to end (DESIGN.md, "octaclay-cli contract"): new → info → export → compare,
 // JSON output, and the exit code, stderr message and absence of output for every bad input.
 
+#include "cli_support.h"
+
 #include <QByteArray>
 #include <QDir>
 #include <QFile>
@@ -12,73 +14,6 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
-
-namespace {
-
-constexpr int kOk = 0, kUsage = 2, kInvalidInput = 3, kIo = 4;
-
-struct Result {
-  int exitCode = -1;
-  QByteArray out, err;
-  bool crashed = false;
-};
-
-Result runCli(const QStringList& args) {
-  QProcess process;
-  process.start(QStringLiteral(OCTACLAY_CLI), args);
-  Result r;
-  if (!process.waitForStarted(10000)) {
-    r.crashed = true;
-    r.err = "could not start " OCTACLAY_CLI ": " + process.errorString().toUtf8();
-    return r;
-  }
-  if (!process.waitForFinished(60000)) {
-    process.kill();
-    process.waitForFinished();
-  }
-  r.crashed = process.exitStatus() != QProcess::NormalExit;
-  r.exitCode = process.exitCode();
-  r.out = process.readAllStandardOutput();
-  r.err = process.readAllStandardError();
-  return r;
-}
-
-QString describe(const QStringList& args, const Result& r) {
-  return QString("octaclay-cli %1 -> exit %2%3\nstdout: %4\nstderr: %5")
-      .arg(args.join(' '))
-      .arg(r.exitCode)
-      .arg(r.crashed ? " (crashed)" : "")
-      .arg(QString::fromUtf8(r.out.left(2000)), QString::fromUtf8(r.err.left(2000)));
-}
-
-} // namespace
-
-// Runs the CLI expecting success and --json output parsed into a new QJsonObject `var`.
-#define RUN_JSON(var, ...)                                                                         \
-  QJsonObject var;                                                                                 \
-  do {                                                                                             \
-    const QStringList args_{__VA_ARGS__};                                                          \
-    const Result r_ = runCli(args_);                                                               \
-    QVERIFY2(!r_.crashed && r_.exitCode == kOk, qPrintable(describe(args_, r_)));                  \
-    QJsonParseError error_{};                                                                      \
-    const QJsonDocument doc_ = QJsonDocument::fromJson(r_.out, &error_);                           \
-    QVERIFY2(error_.error == QJsonParseError::NoError && doc_.isObject(),                          \
-             qPrintable("stdout is not one JSON object (" + error_.errorString() +                 \
-                        "): " + describe(args_, r_)));                                             \
-    var = doc_.object();                                                                           \
-  } while (false)
-
-// Runs the CLI expecting `code`, a message on stderr and no file at `output` (may be empty).
-#define EXPECT_FAILURE(code, output, ...)                                                          \
-  do {                                                                                             \
-    const QStringList args_{__VA_ARGS__};                                                          \
-    const Result r_ = runCli(args_);                                                               \
-    QVERIFY2(!r_.crashed && r_.exitCode == (code), qPrintable(describe(args_, r_)));               \
-    QVERIFY2(!r_.err.trimmed().isEmpty(), qPrintable("no message: " + describe(args_, r_)));       \
-    if (!QString(output).isEmpty())                                                                \
-      QVERIFY2(!QFileInfo::exists(output),                                                         \
-               qPrintable("output left behind: " + describe(args_, r_)));                          \
-  } while (false)
 
 class CliTest : public QObject {
   Q_OBJECT

@@ -1,0 +1,150 @@
+// octaclay-cli stroke and brushes end to end: a stroke's JSON report and its effect on the
+// document, symmetry, and the exit code and message for an unknown brush, a broken plugin
+// (manifest or GLSL, reported with file and line while the others load) and a machine without
+// a usable EGL.
+
+#include "cli_support.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+
+class CliStrokeTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void strokeReportsAndChangesTheDocument();
+  void symmetryDoublesTheDabs();
+  void unknownBrushIsAUsageError();
+  void brokenPluginsAreReportedAndSkipped();
+  void noEglIsAClearError();
+
+private:
+  QString file(const QString& name) const { return dir_.filePath(name); }
+  QString writePlugin(const QString& id, const QString& manifest, const QString& shader);
+  QTemporaryDir dir_;
+  QString sphere_;
+};
+
+void CliStrokeTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  sphere_ = file("sphere.exr");
+  RUN_JSON(created, "new", "--size", "128", "-o", sphere_, "--json");
+  QVERIFY(QFileInfo::exists(sphere_));
+}
+
+QString CliStrokeTest::writePlugin(const QString& id, const QString& manifest,
+                                   const QString& shader) {
+  const QString folder = file("plugins/" + id);
+  QDir().mkpath(folder);
+  QFile m(folder + "/manifest.json"), s(folder + "/brush.glsl");
+  m.open(QIODevice::WriteOnly);
+  m.write(manifest.toUtf8());
+  s.open(QIODevice::WriteOnly);
+  s.write(shader.toUtf8());
+  return file("plugins");
+}
+
+void CliStrokeTest::strokeReportsAndChangesTheDocument() {
+  const QString out = file("pushed.exr");
+  RUN_JSON(stroke, "stroke", sphere_, "--brush", "push", "--path", "0.5,0.5;0.7,0.5", "--radius",
+           "0.1", "--strength", "0.3", "-o", out, "--json");
+  QCOMPARE(stroke["brush"].toString(), QString("push"));
+  QVERIFY(stroke["dabs"].toInt() >= 3); // 0.2 of the image at spacing 0.25 × radius
+  QVERIFY(stroke["engine_ms"].toDouble() > 0);
+  QVERIFY(stroke["changed_tiles"].toInt() > 0);
+  QVERIFY(stroke["undo_bytes"].toInt() > 0);
+  RUN_JSON(info, "info", out, "--json");
+  QVERIFY(info["closed"].toBool());
+  RUN_JSON(compare, "compare", sphere_, out, "--json");
+  // Pushed out by up to 0.3 × radius (0.1 × the diagonal 2√3).
+  const double hausdorff = compare["hausdorff"].toDouble();
+  QVERIFY2(hausdorff > 0.09 && hausdorff < 0.11, qPrintable(QString::number(hausdorff)));
+}
+
+void CliStrokeTest::symmetryDoublesTheDabs() {
+  RUN_JSON(plain, "stroke", sphere_, "--brush", "inflate", "--path", "0.3,0.3;0.3,0.4", "-o",
+           file("plain.exr"), "--json");
+  RUN_JSON(mirrored, "stroke", sphere_, "--brush", "inflate", "--path", "0.3,0.3;0.3,0.4",
+           "--symmetry", "x", "-o", file("mirrored.exr"), "--json");
+  QCOMPARE(mirrored["dabs"].toInt(), 2 * plain["dabs"].toInt());
+  RUN_JSON(both, "stroke", sphere_, "--brush", "inflate", "--path", "0.3,0.3;0.3,0.4", "--symmetry",
+           "x,y", "-o", file("both.exr"), "--json");
+  QCOMPARE(both["dabs"].toInt(), 4 * plain["dabs"].toInt());
+}
+
+void CliStrokeTest::unknownBrushIsAUsageError() {
+  const QString out = file("never.exr");
+  EXPECT_FAILURE(kUsage, out, "stroke", sphere_, "--brush", "no-such-brush", "--path", "0.5,0.5",
+                 "-o", out);
+  const Result r =
+      runCli({"stroke", sphere_, "--brush", "no-such-brush", "--path", "0.5,0.5", "-o", out});
+  QVERIFY(r.err.contains("no-such-brush"));
+  QVERIFY(r.err.contains("push")); // lists the brushes that are there
+  EXPECT_FAILURE(kUsage, out, "stroke", sphere_, "--brush", "push", "--path", "1.5,0.5", "-o", out);
+}
+
+void CliStrokeTest::brokenPluginsAreReportedAndSkipped() {
+  const QString manifest = R"({"id": "%1", "name": "%1", "version": "1.0.0", "api": 1,
+  "category": "sculpt", "shader": "brush.glsl", "reads": ["positions"],
+  "writes": ["%2"], "area": "volume", "falloff": "smooth", "parameters": []})";
+  writePlugin("glsl-broken", manifest.arg("glsl-broken", "positions"),
+              "vec4 brush(vec4 value, BrushInput b) {\n  return value +\n  undefinedThing;\n}\n");
+  writePlugin("bad-layer", manifest.arg("bad-layer", "elevation"),
+              "vec4 brush(vec4 value, BrushInput b) { return value; }\n");
+  const QString plugins =
+      writePlugin("bad-json", "{\"id\": \"bad-json\", ", "vec4 brush(vec4 v, BrushInput b) {}");
+  const QStringList env{"OCTACLAY_PLUGIN_PATH=" + plugins};
+
+  const Result listed = runCli({"brushes", "--json"}, env);
+  QVERIFY2(listed.exitCode == kOk, qPrintable(describe({"brushes"}, listed)));
+  const QJsonObject json = QJsonDocument::fromJson(listed.out).object();
+  QStringList ids;
+  for (const QJsonValue& b : json["brushes"].toArray())
+    ids << b.toObject()["id"].toString();
+  for (const char* id :
+       {"push", "inflate", "smooth", "flatten", "sphere-add", "sphere-subtract", "mask", "paint"})
+    QVERIFY2(ids.contains(id), id);
+  QString errors;
+  for (const QJsonValue& e : json["errors"].toArray())
+    errors += e.toString() + "\n";
+  QVERIFY2(errors.contains("glsl-broken/brush.glsl:3"), qPrintable(errors));
+  QVERIFY2(errors.contains("undefinedThing"), qPrintable(errors));
+  QVERIFY2(errors.contains("bad-layer/manifest.json") && errors.contains("elevation"),
+           qPrintable(errors));
+  QVERIFY2(errors.contains("bad-json/manifest.json"), qPrintable(errors));
+
+  const QString out = file("broken.exr");
+  const QStringList glslArgs{"stroke", sphere_,   "--brush", "glsl-broken",
+                             "--path", "0.5,0.5", "-o",      out};
+  const Result glsl = runCli(glslArgs, env);
+  QVERIFY2(glsl.exitCode == kGl && glsl.err.contains("glsl-broken/brush.glsl:3"),
+           qPrintable(describe(glslArgs, glsl)));
+  QVERIFY(!QFileInfo::exists(out));
+  const QStringList layerArgs{"stroke", sphere_,   "--brush", "bad-layer",
+                              "--path", "0.5,0.5", "-o",      out};
+  const Result layer = runCli(layerArgs, env);
+  QVERIFY2(layer.exitCode == kInvalidInput && layer.err.contains("elevation"),
+           qPrintable(describe(layerArgs, layer)));
+  // The good brushes still work beside the broken ones.
+  const Result good =
+      runCli({"stroke", sphere_, "--brush", "smooth", "--path", "0.5,0.5", "-o", out}, env);
+  QCOMPARE(good.exitCode, kOk);
+}
+
+void CliStrokeTest::noEglIsAClearError() {
+  const QString out = file("no-egl.exr");
+  const QStringList args{"stroke", sphere_, "--brush", "push", "--path", "0.5,0.5", "-o", out};
+  // glvnd finds no vendor library: as on a machine without Mesa's or a driver's EGL.
+  const Result r = runCli(args, {"__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json",
+                                 "__EGL_VENDOR_LIBRARY_DIRS=/nonexistent"});
+  QVERIFY2(!r.crashed && r.exitCode == kGl, qPrintable(describe(args, r)));
+  QVERIFY2(r.err.contains("EGL") || r.err.contains("OpenGL"), qPrintable(describe(args, r)));
+  QVERIFY(!QFileInfo::exists(out));
+  QVERIFY(QFileInfo::exists(sphere_)); // the input is untouched
+}
+
+QTEST_APPLESS_MAIN(CliStrokeTest)
+#include "cli_stroke_test.moc"
