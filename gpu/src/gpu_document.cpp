@@ -49,6 +49,13 @@ GpuDocument::GpuDocument(core::Document document)
     textures_[index(layer)] = Texture(side, side, formatOf(layer));
     scratch_[index(layer)] = Texture(side, side, formatOf(layer));
     push(layer, all);
+    // An unpainted layer's fill as the texture holds it (half floats round 0.8 to 0.7998), so
+    // the mirror equals the texture bit for bit from the start.
+    if (core::Layer* l = mirrorLayer(layer); l && l->uniform()) {
+      const std::vector<float> texel = textures_[index(layer)].read({0, 0, 1, 1});
+      for (int k = 0; k < channels(layer); ++k)
+        l->fill[k] = texel[k];
+    }
   }
 }
 
