@@ -269,8 +269,13 @@ std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
 }
 
 DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab) {
+  return this->dab(document, brushId, dab, reach(document, brushId, dab));
+}
+
+DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
+                           std::vector<core::TexelRect> tiles) {
   DabResult result;
-  result.tiles = reach(document, brushId, dab);
+  result.tiles = std::move(tiles);
   if (result.tiles.empty()) return result;
   LoadedBrush& brush = *brushes_.at(brushId);
   const bool maskTexture = !document.document().mask.uniform();

@@ -49,6 +49,22 @@ GLuint compileStage(const std::string& name, GLenum stage, const std::string& so
 
 } // namespace
 
+namespace {
+
+GLenum layoutOf(int channels) {
+  switch (channels) {
+  case 1:
+    return GL_RED;
+  case 3:
+    return GL_RGB;
+  case 4:
+    return GL_RGBA;
+  }
+  throw GlError("texels of " + std::to_string(channels) + " channels are not supported");
+}
+
+} // namespace
+
 Texture::Texture(int width, int height, TextureFormat format)
     : width_(width), height_(height), format_(format) {
   if (width < 1 || height < 1) throw GlError("texture size must be positive");
@@ -112,38 +128,14 @@ void Texture::upload(Region region, std::span<const float> texels) {
   if (texels.size() != texelCount(region) * static_cast<std::size_t>(channels()))
     throw GlError("texture upload: " + std::to_string(texels.size()) + " floats for a " +
                   std::to_string(region.width) + "x" + std::to_string(region.height) + " region");
-  glBindTexture(GL_TEXTURE_2D, id_);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, region.x, region.y, region.width, region.height,
-                  info(format_).layout, GL_FLOAT, texels.data());
-  checkGlError("texture upload");
+  uploadFrom(region, texels.data(), region.width, channels());
 }
 
 std::vector<float> Texture::read(Region region) const {
   std::vector<float> texels(texelCount(region) * static_cast<std::size_t>(channels()));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadPixels(region.x, region.y, region.width, region.height, info(format_).layout, GL_FLOAT,
-               texels.data());
-  checkGlError("texture read-back");
+  readInto(region, texels.data(), region.width, channels());
   return texels;
 }
-
-namespace {
-
-GLenum layoutOf(int channels) {
-  switch (channels) {
-  case 1:
-    return GL_RED;
-  case 3:
-    return GL_RGB;
-  case 4:
-    return GL_RGBA;
-  }
-  throw GlError("texels of " + std::to_string(channels) + " channels are not supported");
-}
-
-} // namespace
 
 void Texture::readInto(Region region, float* out, int rowLength, int channels) const {
   const GLenum layout = layoutOf(channels);

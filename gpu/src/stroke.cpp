@@ -145,7 +145,7 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
       dab.strength = settings.strength;
       dab.pressure = settings.pressure;
       dab.parameters = settings.parameters;
-      const auto reach = engine.reach(document, brush.id, dab);
+      std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
       bool border = false;
       for (const core::TexelRect& r : reach) {
         undo.cover(r);
@@ -153,7 +153,7 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
             border || r.x == 0 || r.y == 0 || r.x + r.width == n + 1 || r.y + r.height == n + 1;
       }
       if (border) undo.coverBorder();
-      engine.dab(document, brush.id, dab);
+      engine.dab(document, brush.id, dab, std::move(reach));
       ++result.dabs;
     }
   };

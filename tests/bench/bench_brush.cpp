@@ -1,6 +1,7 @@
 // Time per dab of push and smooth at N = 256, 1024, 4096 with radii of 2, 10 and 30 % of the
 // bounding-box diagonal, a whole-image smooth pass at each N, and effective bytes/s of a dab
 // beside a memcpy of the same bytes in the same run (issue 3's targets; ANCHORS.md's Blender).
+#include "bench_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/normals.h"
 #include "octaclay/gpu/brush_library.h"
@@ -40,20 +41,6 @@ struct Session {
 Session& session() {
   static Session s;
   return s;
-}
-
-double memcpySeconds(std::size_t bytes) {
-  std::vector<char> from(bytes, 1), to(bytes, 0);
-  double best = 1e9;
-  for (int k = 0; k < 5; ++k) {
-    const auto start = std::chrono::steady_clock::now();
-    std::memcpy(to.data(), from.data(), bytes);
-    benchmark::DoNotOptimize(to.data());
-    benchmark::ClobberMemory();
-    best = std::min(
-        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return best;
 }
 
 // Dabs cycle through three samples around the +z pole so the surface keeps changing.

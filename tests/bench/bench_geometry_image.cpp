@@ -1,5 +1,6 @@
 // Mesh extraction and EXR document save/load at N = 1024, each beside a memcpy of the same bytes
 // measured in the same run (issue 2's targets are ratios: extraction within 4x of memcpy).
+#include "bench_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/mesh_extraction.h"
@@ -25,21 +26,6 @@ const GeometryImage& sphere() {
 
 std::size_t meshBytes(const TriangleMesh& mesh) {
   return mesh.positions.size() * sizeof(Vec3f) + mesh.triangles.size() * sizeof(mesh.triangles[0]);
-}
-
-// Best-of-5 wall time of one memcpy of `bytes`, in seconds.
-double memcpySeconds(std::size_t bytes) {
-  std::vector<char> from(bytes, 1), to(bytes, 0);
-  double best = 1e9;
-  for (int k = 0; k < 5; ++k) {
-    const auto start = std::chrono::steady_clock::now();
-    std::memcpy(to.data(), from.data(), bytes);
-    benchmark::DoNotOptimize(to.data());
-    benchmark::ClobberMemory();
-    best = std::min(
-        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return best;
 }
 
 // Reports bytes/s and, as x_memcpy, this benchmark's time per iteration over a memcpy's.

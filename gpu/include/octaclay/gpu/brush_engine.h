@@ -51,6 +51,9 @@ public:
   /// then the seaming pass when it reached the border; the mirror is updated for those tiles.
   /// Throws GlError for an unknown brush id.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
+  /// The same with the tiles reach() returned for this dab (a caller that needed them first).
+  DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
+                std::vector<core::TexelRect> tiles);
 
   /// The tiles a dab of this brush at this place would run over (no GL work).
   std::vector<core::TexelRect> reach(const GpuDocument& document, const std::string& brushId,
