@@ -4,6 +4,8 @@
 #include "octaclay/gpu/brush_engine.h"
 
 #include <array>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace octaclay::gpu {
@@ -38,5 +40,42 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
 
 /// The sample whose position is nearest to p (searching only tiles near p).
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
+
+} // namespace octaclay::gpu
+
+namespace octaclay::gpu {
+
+/// A stroke made interactively: the modeller feeds it the sample under the pointer as the
+/// pointer moves, and it dabs along the way exactly as runStroke() dabs along a path (spacing
+/// by object-space distance on the current surface, symmetry, undo captured over the whole
+/// stroke). Use it on the thread whose GL context is current; brush and document must outlive
+/// it.
+class StrokeSession {
+public:
+  /// settings.path is ignored. Throws GlError for an unknown brush.
+  StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
+                StrokeSettings settings);
+  ~StrokeSession();
+  StrokeSession(const StrokeSession&) = delete;
+  StrokeSession& operator=(const StrokeSession&) = delete;
+
+  /// Moves the stroke to sample s, walking the image samples between the previous sample and s
+  /// (as runStroke walks a segment). The first call dabs at s. radius, strength and pressure
+  /// apply to the dabs this call makes (pen pressure varies along a stroke). Returns the number
+  /// of dabs made, mirrored ones included. Throws core::Error(InvalidArgument) for a sample
+  /// outside the image.
+  int moveTo(core::Sample s, float radius, float strength, float pressure = 1.0f);
+  /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
+  std::vector<core::TexelRect> takeTouched();
+
+  int dabs() const;
+  double engineMs() const;
+  /// The stroke's undo record, labelled; the session must not be used afterwards.
+  core::Stroke finish(const std::string& label);
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 } // namespace octaclay::gpu
