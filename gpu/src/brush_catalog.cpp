@@ -53,24 +53,20 @@ void BrushCatalog::scan(const std::vector<fs::path>& folders) {
   errors_.clear();
   notes_.clear();
   stamps_.clear();
+  searchPath_ = folders; // copied first: folders may be searchPath_ itself (rescan)
+  listings_.clear();
+  failedFolders_.clear();
 
-  for (const fs::path& folder : folders) {
-    std::error_code ec;
-    if (!fs::exists(folder, ec)) continue;
-    std::vector<fs::path> candidates;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-      std::error_code entryEc;
-      if (it->is_directory(entryEc) && fs::exists(it->path() / kManifestName, entryEc))
-        candidates.push_back(it->path());
-    }
-    if (ec) {
-      recordError(folder,
-                  folder.string() + ": cannot list the brush folder (" + ec.message() + ")");
+  for (const fs::path& folder : searchPath_) {
+    listings_.push_back(listBrushFolders(folder));
+    const Listing& listing = listings_.back();
+    if (!listing.listed) {
+      recordError(folder, folder.string() + ": cannot list the brush folder (" +
+                              listing.error.message() + ")");
       continue;
     }
-    std::sort(candidates.begin(), candidates.end());
 
-    for (const fs::path& candidate : candidates) {
+    for (const fs::path& candidate : listing.brushFolders) {
       const fs::path manifestFile = candidate / kManifestName;
       try {
         BrushManifest brush = parseBrushManifest(manifestFile);
@@ -85,6 +81,7 @@ void BrushCatalog::scan(const std::vector<fs::path>& folders) {
         }
       } catch (const BrushLoadError& e) {
         recordError(manifestFile, e.what());
+        failedFolders_.push_back(failedFolderOf(candidate));
       }
     }
   }
@@ -93,6 +90,39 @@ void BrushCatalog::scan(const std::vector<fs::path>& folders) {
             [](const BrushManifest& a, const BrushManifest& b) { return a.id < b.id; });
   for (const BrushManifest& brush : brushes_)
     stamps_[brush.id] = stampsOf(brush);
+}
+
+void BrushCatalog::rescan() {
+  scan(searchPath_);
+}
+
+bool BrushCatalog::brushFoldersChanged() const {
+  for (std::size_t k = 0; k < searchPath_.size(); ++k)
+    if (!(listBrushFolders(searchPath_[k]) == listings_[k])) return true;
+  for (const FailedFolder& failed : failedFolders_) {
+    const FailedFolder now = failedFolderOf(failed.folder);
+    if (now.manifest != failed.manifest || now.directory != failed.directory) return true;
+  }
+  return false;
+}
+
+BrushCatalog::Listing BrushCatalog::listBrushFolders(const fs::path& folder) {
+  Listing listing;
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return listing; // missing (usually the user folder): no brushes
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code entryEc;
+    if (it->is_directory(entryEc) && fs::exists(it->path() / kManifestName, entryEc))
+      listing.brushFolders.push_back(it->path());
+  }
+  if (ec) {
+    listing.listed = false;
+    listing.error = ec;
+    listing.brushFolders.clear();
+    return listing;
+  }
+  std::sort(listing.brushFolders.begin(), listing.brushFolders.end());
+  return listing;
 }
 
 const BrushManifest* BrushCatalog::find(std::string_view id) const {
@@ -148,20 +178,26 @@ bool BrushCatalog::reload(std::string_view id) {
   }
 }
 
+BrushCatalog::FileStamp BrushCatalog::stampOf(const fs::path& path) {
+  FileStamp s;
+  std::error_code ec;
+  const auto time = fs::last_write_time(path, ec);
+  if (ec) return s;
+  // A directory has no file size; its time alone says entries were added or removed.
+  const auto size = fs::is_directory(path, ec) ? 0 : fs::file_size(path, ec);
+  if (ec) return s;
+  s.exists = true;
+  s.time = time;
+  s.size = size;
+  return s;
+}
+
 BrushCatalog::Stamps BrushCatalog::stampsOf(const BrushManifest& brush) {
-  const auto stamp = [](const fs::path& file) {
-    FileStamp s;
-    std::error_code ec;
-    const auto time = fs::last_write_time(file, ec);
-    if (ec) return s;
-    const auto size = fs::file_size(file, ec);
-    if (ec) return s;
-    s.exists = true;
-    s.time = time;
-    s.size = size;
-    return s;
-  };
-  return {stamp(manifestOf(brush)), stamp(brush.shaderPath())};
+  return {stampOf(manifestOf(brush)), stampOf(brush.shaderPath())};
+}
+
+BrushCatalog::FailedFolder BrushCatalog::failedFolderOf(const fs::path& folder) {
+  return {folder, stampOf(folder / kManifestName), stampOf(folder)};
 }
 
 void BrushCatalog::recordError(const fs::path& path, std::string message) {

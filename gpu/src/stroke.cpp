@@ -2,11 +2,14 @@
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/normals.h"
+#include "octaclay/gpu/gl_error.h"
 
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
+#include <stdexcept>
 
 namespace octaclay::gpu {
 namespace {
@@ -113,24 +116,40 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
       throw core::Error(core::ErrorKind::InvalidArgument, "path point (" + std::to_string(uv[0]) +
                                                               ", " + std::to_string(uv[1]) +
                                                               ") is outside [0, 1]");
+  // One session fed the path points: it walks the samples between them, so a scripted stroke
+  // and an interactive one dab at the same places.
   const int n = document.size();
-  const float spacing =
-      (settings.spacing > 0 ? settings.spacing : brush.spacing) * std::abs(settings.radius);
-  const core::BoundingBox box = [&] {
-    core::BoundingBox b;
-    for (int t = 0; t < document.bounds().tilesPerSide() * document.bounds().tilesPerSide(); ++t) {
-      b.extend(document.bounds().box(t).min);
-      b.extend(document.bounds().box(t).max);
-    }
-    return b;
-  }();
-  const core::Vec3f centre = (box.min + box.max) * 0.5f;
-
+  StrokeSession session(engine, document, brush, settings);
+  for (const auto& uv : settings.path)
+    session.moveTo(sampleAt(n, uv), settings.radius, settings.strength, settings.pressure);
   StrokeResult result;
-  UndoCapture undo(document, brush.writes);
-  const auto start = std::chrono::steady_clock::now();
+  result.dabs = session.dabs();
+  result.engineMs = session.engineMs();
+  result.undo = session.finish(brush.id);
+  return result;
+}
 
-  auto dabAt = [&](core::Sample s) {
+struct StrokeSession::State {
+  State(BrushEngine& e, GpuDocument& d, const BrushManifest& b, StrokeSettings s)
+      : engine(e), document(d), brush(b), settings(std::move(s)), undo(d, b.writes) {}
+
+  BrushEngine& engine;
+  GpuDocument& document;
+  const BrushManifest& brush;
+  StrokeSettings settings;
+  core::Vec3f centre; ///< of the bounding box at the stroke's start: symmetry mirrors through it
+  UndoCapture undo;
+  std::optional<core::Sample> previous; ///< the last sample walked; none before the first move
+  float travelled = 0;                  ///< object-space distance since the last dab
+  int dabs = 0;
+  double engineMs = 0;
+  std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
+  bool touchedBorder = false;                ///< a dab was seamed: the border lines changed
+  bool finished = false;
+
+  // One dab at s and its mirror images, capturing the undo tiles each may touch first.
+  void dabAt(core::Sample s, float radius, float strength, float pressure) {
+    const int n = document.size();
     std::vector<core::Sample> centres{s};
     const core::Vec3f p = document.document().positions.at(s).xyz();
     for (unsigned axes = 1; axes < 8; ++axes)
@@ -141,9 +160,9 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
       dab.centreTexel = c;
       dab.centre = document.document().positions.at(c).xyz();
       dab.centreNormal = core::vertexNormal(document.document().positions, c);
-      dab.radius = settings.radius;
-      dab.strength = settings.strength;
-      dab.pressure = settings.pressure;
+      dab.radius = radius;
+      dab.strength = strength;
+      dab.pressure = pressure;
       dab.parameters = settings.parameters;
       std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
       bool border = false;
@@ -153,35 +172,102 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
             border || r.x == 0 || r.y == 0 || r.x + r.width == n + 1 || r.y + r.height == n + 1;
       }
       if (border) undo.coverBorder();
-      engine.dab(document, brush.id, dab, std::move(reach));
-      ++result.dabs;
+      const DabResult done = engine.dab(document, brush.id, dab, std::move(reach));
+      for (const core::TexelRect& t : done.tiles)
+        touchedTiles.insert({t.x, t.y, t.width, t.height});
+      touchedBorder = touchedBorder || done.seamed;
+      ++dabs;
     }
-  };
+  }
+};
 
-  // Walk each segment one sample at a time, measuring distance on the current surface.
-  core::Sample previous = sampleAt(n, settings.path.front());
-  dabAt(previous);
-  float travelled = 0;
-  for (std::size_t k = 1; k < settings.path.size(); ++k) {
-    const core::Sample a = sampleAt(n, settings.path[k - 1]), b = sampleAt(n, settings.path[k]);
+StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
+                             StrokeSettings settings) {
+  if (!engine.has(brush.id)) throw GlError("no brush named '" + brush.id + "' is loaded");
+  settings.path.clear();
+  state_ = std::make_unique<State>(engine, document, brush, std::move(settings));
+  core::BoundingBox box;
+  const core::TileBounds& bounds = document.bounds();
+  for (int t = 0; t < bounds.tilesPerSide() * bounds.tilesPerSide(); ++t) {
+    box.extend(bounds.box(t).min);
+    box.extend(bounds.box(t).max);
+  }
+  state_->centre = (box.min + box.max) * 0.5f;
+}
+
+StrokeSession::~StrokeSession() = default;
+
+int StrokeSession::moveTo(core::Sample s, float radius, float strength, float pressure) {
+  State& st = *state_;
+  if (st.finished) throw std::logic_error("StrokeSession::moveTo after finish()");
+  const int n = st.document.size();
+  if (s.i < 0 || s.i > n || s.j < 0 || s.j > n)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "sample (" + std::to_string(s.i) + ", " + std::to_string(s.j) +
+                          ") is outside the image (0 to " + std::to_string(n) + " each way)");
+  const auto start = std::chrono::steady_clock::now();
+  const int before = st.dabs;
+  if (!st.previous) {
+    st.dabAt(s, radius, strength, pressure);
+    st.previous = s;
+  } else {
+    // Walk the segment one sample at a time, measuring distance on the current surface (which
+    // the dabs along the way keep changing).
+    const float spacing =
+        (st.settings.spacing > 0 ? st.settings.spacing : st.brush.spacing) * std::abs(radius);
+    const core::Sample a = *st.previous, b = s;
     const int steps = std::max(std::abs(b.i - a.i), std::abs(b.j - a.j));
     for (int step = 1; step <= steps; ++step) {
       const float t = static_cast<float>(step) / static_cast<float>(steps);
-      const core::Sample s{a.i + static_cast<int>(std::lround(t * static_cast<float>(b.i - a.i))),
-                           a.j + static_cast<int>(std::lround(t * static_cast<float>(b.j - a.j)))};
-      const core::GeometryImage& image = document.document().positions;
-      travelled += core::length(image.at(s).xyz() - image.at(previous).xyz());
-      previous = s;
-      if (travelled >= spacing) {
-        dabAt(s);
-        travelled = 0;
+      const core::Sample here{
+          a.i + static_cast<int>(std::lround(t * static_cast<float>(b.i - a.i))),
+          a.j + static_cast<int>(std::lround(t * static_cast<float>(b.j - a.j)))};
+      const core::GeometryImage& image = st.document.document().positions;
+      st.travelled += core::length(image.at(here).xyz() - image.at(*st.previous).xyz());
+      st.previous = here;
+      if (st.travelled >= spacing) {
+        st.dabAt(here, radius, strength, pressure);
+        st.travelled = 0;
       }
     }
   }
-  result.engineMs =
+  st.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  result.undo = undo.finish(brush.id);
-  return result;
+  return st.dabs - before;
+}
+
+std::vector<core::TexelRect> StrokeSession::takeTouched() {
+  State& st = *state_;
+  std::vector<core::TexelRect> tiles;
+  tiles.reserve(st.touchedTiles.size());
+  for (const auto& t : st.touchedTiles)
+    tiles.push_back({t[0], t[1], t[2], t[3]});
+  std::vector<core::TexelRect> touched = core::mergeRects(std::move(tiles));
+  if (st.touchedBorder) {
+    // The seaming pass rewrites the whole border, beyond the tiles the dab ran over.
+    const int side = st.document.size() + 1;
+    touched.insert(
+        touched.end(),
+        {{0, 0, side, 1}, {0, side - 1, side, 1}, {0, 1, 1, side - 2}, {side - 1, 1, 1, side - 2}});
+  }
+  st.touchedTiles.clear();
+  st.touchedBorder = false;
+  return touched;
+}
+
+int StrokeSession::dabs() const {
+  return state_->dabs;
+}
+
+double StrokeSession::engineMs() const {
+  return state_->engineMs;
+}
+
+core::Stroke StrokeSession::finish(const std::string& label) {
+  State& st = *state_;
+  if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
+  st.finished = true;
+  return st.undo.finish(label);
 }
 
 } // namespace octaclay::gpu

@@ -1,7 +1,7 @@
 // Brush manifests and the brush catalog, without GL: every bad manifest is refused with a message
 // that starts with the file path and names the field; the template brush parses; the catalog
 // keeps going past a bad brush, lets a later folder override an id, notices edited files and
-// keeps the old manifest when a reload fails.
+// keeps the old manifest when a reload fails, and notices brush folders appearing and vanishing.
 
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_manifest.h"
@@ -101,6 +101,7 @@ private slots:
   void changedBrushesReportsEditedShader();
   void reloadKeepsOldManifestOnError();
   void reloadRefusesChangedId();
+  void brushFoldersChangedSeesFoldersComeAndGo();
 
 private:
   QTemporaryDir dir_;
@@ -536,6 +537,57 @@ void BrushManifestTest::reloadRefusesChangedId() {
   QCOMPARE(catalog.errors()[0].message,
            manifest.string() + ": id: changed from \"before\" to \"after\" while loaded (rescan "
                                "the brush folders to rename)");
+}
+
+void BrushManifestTest::brushFoldersChangedSeesFoldersComeAndGo() {
+  const fs::path folder = root() / "appear";
+  const fs::path later = root() / "appear-later"; // on the search path, created afterwards
+  writeBrush(folder / "one", manifestWithName("one", "One"));
+  BrushCatalog catalog;
+  catalog.scan({folder, later});
+  QVERIFY((catalog.searchPath() == std::vector<fs::path>{folder, later}));
+  QVERIFY(!catalog.brushFoldersChanged());
+
+  // A folder without a manifest is not a brush; editing a loaded brush is changedBrushes()'s.
+  fs::create_directories(folder / "empty");
+  const fs::path shader = folder / "one" / "brush.glsl";
+  fs::last_write_time(shader, fs::last_write_time(shader) + std::chrono::seconds(5));
+  QVERIFY(!catalog.brushFoldersChanged());
+
+  writeBrush(folder / "two", manifestWithName("two", "Two"));
+  QVERIFY(catalog.brushFoldersChanged());
+  QVERIFY(catalog.brushFoldersChanged()); // until the next scan
+  catalog.rescan();
+  QVERIFY(!catalog.brushFoldersChanged());
+  QVERIFY(catalog.find("two"));
+
+  // Caught half-copied (manifest, no shader yet): an error now, loaded once the shader lands.
+  const fs::path half = writeBrush(later / "three", manifestWithName("three", "Three"), false);
+  QVERIFY(catalog.brushFoldersChanged());
+  catalog.rescan();
+  QVERIFY(!catalog.find("three"));
+  QCOMPARE(catalog.errors().size(), std::size_t(1));
+  QCOMPARE(catalog.errors()[0].path, half);
+  QVERIFY(!catalog.brushFoldersChanged());
+  writeFile(later / "three" / "brush.glsl", "vec4 brush(vec4 v, BrushInput b) { return v; }\n");
+  fs::last_write_time(later / "three", fs::last_write_time(later / "three") +
+                                           std::chrono::seconds(5)); // past coarse time stamps
+  QVERIFY(catalog.brushFoldersChanged());
+  catalog.rescan();
+  QVERIFY(catalog.find("three"));
+  QVERIFY(catalog.errors().empty());
+
+  fs::remove_all(folder / "one");
+  QVERIFY(catalog.brushFoldersChanged());
+  catalog.rescan();
+  QVERIFY(!catalog.find("one"));
+  QCOMPARE(catalog.brushes().size(), std::size_t(2));
+
+  fs::remove_all(later);
+  QVERIFY(catalog.brushFoldersChanged());
+  catalog.scan({folder}); // a scan of other folders starts over
+  QVERIFY((catalog.searchPath() == std::vector<fs::path>{folder}));
+  QVERIFY(!catalog.brushFoldersChanged());
 }
 
 QTEST_APPLESS_MAIN(BrushManifestTest)

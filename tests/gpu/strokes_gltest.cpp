@@ -1,12 +1,16 @@
 // Strokes on the GPU: a stroke over seams and the corner pole leaves a closed genus-0 surface
 // with no crack, symmetric strokes give mirror-equal results, and undo/redo over 100 random
 // strokes of every brush restores each state bit-exactly on the CPU mirror and the textures.
+// StrokeSession (the interactive stroke) dabs exactly where runStroke does, names every texel
+// it changed for redrawing, and its undo record restores the start bit-exactly.
 
 #include "brush_test_support.h"
 #include "octaclay/core/base_shapes.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/seaming.h"
 #include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/stroke.h"
 
 #include <QtTest>
@@ -68,6 +72,33 @@ StrokeSettings strokeOf(const std::string& brush, std::vector<std::array<float, 
   return s;
 }
 
+// The sample runStroke centres a path point on.
+core::Sample sampleOf(int n, std::array<float, 2> uv) {
+  return {int(std::lround(uv[0] * float(n))), int(std::lround(uv[1] * float(n)))};
+}
+
+// Texels of any layer that differ between two snapshots, as (i, j) samples.
+std::vector<core::Sample> changedTexels(const std::vector<std::vector<float>>& before,
+                                        const std::vector<std::vector<float>>& after, int side) {
+  std::vector<core::Sample> changed;
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    const std::size_t channels = before[k].size() / std::size_t(side * side);
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const std::size_t at = (std::size_t(j) * std::size_t(side) + std::size_t(i)) * channels;
+        if (std::memcmp(&before[k][at], &after[k][at], channels * sizeof(float)) != 0)
+          changed.push_back({i, j});
+      }
+  }
+  return changed;
+}
+
+bool inside(core::Sample s, const std::vector<core::TexelRect>& rects) {
+  for (const core::TexelRect& r : rects)
+    if (s.i >= r.x && s.i < r.x + r.width && s.j >= r.y && s.j < r.y + r.height) return true;
+  return false;
+}
+
 } // namespace
 
 class StrokesTest : public QObject {
@@ -80,6 +111,11 @@ private slots:
   void symmetricStrokesAreMirrorEqual_data();
   void symmetricStrokesAreMirrorEqual();
   void undoRedoIsBitExactOverRandomStrokes();
+  void sessionDabsWhereRunStrokeDabs_data();
+  void sessionDabsWhereRunStrokeDabs();
+  void sessionTouchedRectsCoverEveryChange();
+  void sessionUndoRestoresTheStartBitExactly();
+  void sessionRefusesSamplesOutsideTheImage();
 
 private:
   const BrushManifest& manifest(const std::string& id) const { return manifests_.at(id); }
@@ -228,6 +264,128 @@ void StrokesTest::undoRedoIsBitExactOverRandomStrokes() {
   }
   QVERIFY(sameBits(textureSnapshot(document), states.back()));
   QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+}
+
+void StrokesTest::sessionDabsWhereRunStrokeDabs_data() {
+  QTest::addColumn<QString>("brush");
+  QTest::addColumn<unsigned>("symmetry");
+  QTest::newRow("push") << "push" << 0u;
+  QTest::newRow("inflate x") << "inflate" << unsigned(kSymmetryX);
+  QTest::newRow("paint xz") << "paint" << unsigned(kSymmetryX | kSymmetryZ);
+}
+
+// runStroke is a session fed its path points, so both must dab at the very same places: the
+// same dab count and bit-identical layers, over seams and with symmetry.
+void StrokesTest::sessionDabsWhereRunStrokeDabs() {
+  QFETCH(QString, brush);
+  QFETCH(unsigned, symmetry);
+  const int n = 64;
+  const core::GeometryImage blob = core::makeBaseShape(core::BaseShape::Blob, n);
+  GpuDocument scripted(core::makeDocument(blob)), interactive(core::makeDocument(blob));
+  StrokeSettings stroke = strokeOf(
+      brush.toStdString(), {{0.2f, 0.3f}, {0.0f, 0.35f}, {0.0f, 0.1f}, {0.4f, 0.6f}}, 0.2f, 0.3f);
+  stroke.symmetry = symmetry;
+  stroke.parameters["color"] = {0.9f, 0.2f, 0.1f, 1.0f};
+  const BrushManifest& brushManifest = manifest(stroke.brush);
+  const StrokeResult result = runStroke(*engine_, scripted, brushManifest, stroke);
+
+  StrokeSession session(*engine_, interactive, brushManifest, stroke);
+  int dabs = 0;
+  for (const auto& uv : stroke.path)
+    dabs += session.moveTo(sampleOf(n, uv), stroke.radius, stroke.strength);
+  const core::Stroke undo = session.finish("interactive");
+  QVERIFY(result.dabs > 4);
+  QCOMPARE(dabs, result.dabs);
+  QCOMPARE(session.dabs(), result.dabs);
+  QVERIFY(sameBits(snapshot(interactive), snapshot(scripted)));
+  QVERIFY(sameBits(textureSnapshot(interactive), textureSnapshot(scripted)));
+  QCOMPARE(undo.label, std::string("interactive"));
+}
+
+// A modeller redraws only what takeTouched() names, so every texel a move changed (on any
+// layer, seams included) must lie in its rectangles.
+void StrokesTest::sessionTouchedRectsCoverEveryChange() {
+  const int n = 64, side = n + 1;
+  GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  StrokeSettings settings = strokeOf("inflate", {}, 0.15f, 0.4f);
+  settings.symmetry = kSymmetryY;
+  StrokeSession session(*engine_, document, manifest("inflate"), settings);
+  // Ends across the left seam so a seamed dab is among them.
+  const std::vector<core::Sample> moves{{20, 30}, {26, 34}, {26, 34}, {40, 10}, {3, 20}, {0, 24}};
+  int changedTotal = 0;
+  for (core::Sample move : moves) {
+    const auto before = snapshot(document);
+    const int dabs = session.moveTo(move, 0.15f, 0.4f, 0.8f);
+    const auto after = snapshot(document);
+    const std::vector<core::TexelRect> touched = session.takeTouched();
+    const std::vector<core::Sample> changed = changedTexels(before, after, side);
+    if (dabs == 0) {
+      QVERIFY(touched.empty());
+      QVERIFY(changed.empty());
+    }
+    for (core::Sample s : changed)
+      QVERIFY2(inside(s, touched),
+               qPrintable(QString("(%1,%2) changed outside the rects").arg(s.i).arg(s.j)));
+    QVERIFY(session.takeTouched().empty()); // taken: forgotten
+    changedTotal += int(changed.size());
+  }
+  QVERIFY(changedTotal > 100);
+  QVERIFY(session.dabs() > 4);
+}
+
+void StrokesTest::sessionUndoRestoresTheStartBitExactly() {
+  const int n = 64;
+  GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  const auto start = snapshot(document);
+  StrokeSettings settings = strokeOf("push", {}, 0.2f, 0.5f);
+  settings.symmetry = kSymmetryX;
+  StrokeSession session(*engine_, document, manifest("push"), settings);
+  // Pressure and radius vary along the stroke as a pen's would.
+  const std::vector<core::Sample> moves{{32, 0}, {10, 5}, {0, 30}, {20, 60}, {64, 64}};
+  for (std::size_t k = 0; k < moves.size(); ++k)
+    session.moveTo(moves[k], 0.1f + 0.05f * float(k), 0.5f, 1.0f - 0.15f * float(k));
+  const auto end = snapshot(document);
+  QVERIFY(!sameBits(end, start));
+  core::EditHistory history;
+  history.record(session.finish("push stroke"));
+  QCOMPARE(history.undoCount(), std::size_t(1));
+  const core::TileApplier apply = undoApplier(document);
+  QVERIFY(history.undo(apply));
+  QVERIFY(sameBits(snapshot(document), start));
+  QVERIFY(sameBits(textureSnapshot(document), start));
+  QVERIFY(history.redo(apply));
+  QVERIFY(sameBits(snapshot(document), end));
+  QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+}
+
+void StrokesTest::sessionRefusesSamplesOutsideTheImage() {
+  const int n = 32;
+  GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
+  const auto start = snapshot(document);
+  StrokeSession session(*engine_, document, manifest("inflate"),
+                        strokeOf("inflate", {}, 0.2f, 0.3f));
+  for (core::Sample s :
+       {core::Sample{-1, 0}, core::Sample{0, n + 1}, core::Sample{n + 1, 3}, core::Sample{4, -7}}) {
+    try {
+      session.moveTo(s, 0.2f, 0.3f);
+      QFAIL(qPrintable(QString("(%1,%2) was accepted").arg(s.i).arg(s.j)));
+    } catch (const core::Error& e) {
+      QCOMPARE(e.kind(), core::ErrorKind::InvalidArgument);
+    }
+  }
+  QCOMPARE(session.dabs(), 0);
+  QVERIFY(sameBits(snapshot(document), start));
+  QCOMPARE(session.moveTo({n, n}, 0.2f, 0.3f), 1); // the corner sample is inside
+
+  BrushManifest unknown = manifest("inflate");
+  unknown.id = "not-loaded";
+  bool refused = false;
+  try {
+    StrokeSession never(*engine_, document, unknown, StrokeSettings{});
+  } catch (const GlError&) {
+    refused = true;
+  }
+  QVERIFY(refused);
 }
 
 QTEST_APPLESS_MAIN(StrokesTest)

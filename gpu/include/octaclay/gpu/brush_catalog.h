@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 namespace octaclay::gpu {
@@ -35,8 +36,22 @@ public:
   /// manifest.json, folders in order and sub-folders by name. A brush whose id was already
   /// found replaces the earlier one, and notes() says so. Missing folders are skipped silently
   /// (the user folder usually does not exist); one that exists but cannot be listed is an
-  /// error. Remembers the files' times and sizes for changedBrushes().
+  /// error. Remembers the files' times and sizes for changedBrushes(), and the folders and
+  /// the brush folders found in each for brushFoldersChanged() and rescan().
   void scan(const std::vector<std::filesystem::path>& folders);
+  /// scan() again over the folders the last scan() searched (none before the first scan).
+  void rescan();
+  /// The folders the last scan() searched, in order.
+  const std::vector<std::filesystem::path>& searchPath() const { return searchPath_; }
+
+  /// Whether a rescan() would find other brush folders than the last scan() did: an immediate
+  /// sub-folder holding a manifest.json appeared in or vanished from a searched folder (a
+  /// plugin dropped in or deleted while the modeller runs), a searched folder appeared,
+  /// vanished or became (un)listable, or a brush folder whose manifest failed to load at the
+  /// scan was edited (a folder caught half-copied loads once the copy completes). Lists each
+  /// searched folder once and stats a file per brush folder: cheap enough for a GUI-thread
+  /// timer. Stays true until the next scan().
+  bool brushFoldersChanged() const;
 
   /// Loaded brushes, sorted by id. Pointers and references into it stay valid until the next
   /// scan() or reload().
@@ -77,7 +92,27 @@ private:
     bool operator==(const Stamps&) const = default;
   };
 
+  // What brushFoldersChanged() compares for one searched folder: whether it could be listed
+  // and its sub-folders holding a manifest.json, sorted.
+  struct Listing {
+    bool listed = true; // false: it exists but listing failed (error says why)
+    std::error_code error;
+    std::vector<std::filesystem::path> brushFolders;
+    bool operator==(const Listing& o) const {
+      return listed == o.listed && brushFolders == o.brushFolders;
+    }
+  };
+  // A folder whose manifest failed to load at the scan: its manifest and the folder's own time
+  // (which moves when a file such as the shader is created in it).
+  struct FailedFolder {
+    std::filesystem::path folder;
+    FileStamp manifest, directory;
+  };
+
   static Stamps stampsOf(const BrushManifest& brush);
+  static FileStamp stampOf(const std::filesystem::path& path);
+  static FailedFolder failedFolderOf(const std::filesystem::path& folder);
+  static Listing listBrushFolders(const std::filesystem::path& folder);
   void recordError(const std::filesystem::path& path, std::string message);
   void clearError(const std::filesystem::path& path);
 
@@ -85,6 +120,9 @@ private:
   std::vector<BrushCatalogError> errors_;
   std::vector<std::string> notes_;
   std::map<std::string, Stamps, std::less<>> stamps_;
+  std::vector<std::filesystem::path> searchPath_;
+  std::vector<Listing> listings_;           // one per searchPath_ folder
+  std::vector<FailedFolder> failedFolders_; // brush folders whose manifest failed at the scan
 };
 
 } // namespace octaclay::gpu

@@ -4,6 +4,7 @@
 #include "octaclay/gpu/brush_engine.h"
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,8 @@ public:
 
   BrushEngine& engine() { return engine_; }
   const BrushCatalog& catalog() const { return catalog_; }
-  /// Brushes that parsed and compiled, by id order.
+  /// Brushes that parsed and compiled, by id order. A removed brush's program may stay in
+  /// engine() (it cannot unload one), but it is no longer listed here.
   std::vector<const BrushManifest*> brushes() const;
   /// Every manifest and compile error, each naming its file.
   const std::vector<std::string>& errors() const { return errors_; }
@@ -26,16 +28,27 @@ public:
   struct ReloadReport {
     std::vector<std::string> reloaded; ///< recompiled and now in use
     std::vector<std::string> failed;   ///< messages; the previous version stays in use
+    std::vector<std::string> added;    ///< ids of brushes new to the search path, now usable
+    std::vector<std::string> removed;  ///< ids of brushes no longer found, no longer listed
   };
-  /// Polls the brush files (cheap: a few stats) and reloads what changed. Call from a timer.
+  /// Polls the brush files (cheap: a listing of each search folder and a few stats per brush)
+  /// and reloads what changed. When brush folders appeared or vanished it rescans the search
+  /// path: new brushes are compiled (a broken one lands in failed and errors(), the others
+  /// stay), changed ones recompiled, unchanged ones keep their programs, and gone ones are
+  /// dropped from brushes(). Otherwise it recompiles only the brushes whose files changed,
+  /// keeping the previous program of one that fails. Call from a timer on the GL thread.
   ReloadReport reloadChanged();
 
 private:
   bool compile(const BrushManifest& brush, std::string& error);
+  ReloadReport rescan();
 
   BrushCatalog catalog_;
   BrushEngine engine_;
   std::vector<std::string> errors_;
+  /// Ids whose program in engine_ belongs to a brush in the catalog: a removed brush's stale
+  /// program must not make a broken re-added brush of the same id look usable.
+  std::set<std::string, std::less<>> usable_;
 };
 
 } // namespace octaclay::gpu
