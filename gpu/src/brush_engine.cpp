@@ -291,6 +291,11 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const std::vector<core::TexelRect> lines = borderLines(side);
   const std::vector<Region> lineRects = regions(lines);
 
+  // The modeller's context carries VTK's and Qt's state: passes must not blend, test or cull.
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
   glViewport(0, 0, side, side);
   // Positions last: every other layer's pass reads the positions from before the dab.
   std::vector<BrushLayer> order = brush.manifest.writes;

@@ -1,0 +1,180 @@
+#pragma once
+
+#include "brush_settings.h"
+#include "octaclay/core/document.h"
+#include "octaclay/core/edit_history.h"
+#include "octaclay/core/ray_pick.h"
+#include "octaclay/gpu/brush_manifest.h"
+#include "stroke_stabilizer.h"
+
+#include <QElapsedTimer>
+#include <QOpenGLWidget>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vtkNew.h>
+
+class vtkGenericOpenGLRenderWindow;
+class vtkObject;
+class vtkRenderer;
+
+namespace octaclay::gpu {
+class BrushLibrary;
+class GlContext;
+class GpuDocument;
+class ModelRenderer;
+class StrokeSession;
+} // namespace octaclay::gpu
+
+namespace octaclay::app {
+
+class ModelProp;
+
+/// Frame and stroke figures for the status bar.
+struct ViewportStats {
+  double framesPerSecond = 0; ///< frames painted over the last second
+  double lastDabMs = 0;       ///< engine time per dab of the last frame that dabbed
+  int n = 0;                  ///< the document's N
+  long long displayedTriangles = 0, fullTriangles = 0;
+};
+
+/// The 3D view: a Qt6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (VTK's Qt module is
+/// built for Qt5), whose GL context also runs the brush engine, so the full-resolution image
+/// never crosses to the CPU per frame. Owns the edited document (GPU textures plus the engine's
+/// CPU mirror), its brush library and its stroke history. Left-drag sculpts (Ctrl inverts,
+/// Shift smooths), right- or middle-drag orbits, Shift+middle or Ctrl+right pans, the wheel
+/// zooms; a left-drag that starts off the model orbits too.
+class ViewportWidget : public QOpenGLWidget {
+  Q_OBJECT
+public:
+  explicit ViewportWidget(QWidget* parent = nullptr);
+  ~ViewportWidget() override;
+
+  /// Replaces the document and clears the stroke history (uploaded now if GL is ready, else at
+  /// GL start). Returns false with error() set if the upload failed; the previous document
+  /// then stays.
+  bool setDocument(core::Document document);
+  bool hasDocument() const;
+  /// The document as edited so far (the engine's CPU mirror). Only valid if hasDocument().
+  const core::Document& document() const;
+
+  /// The brush library (null until GL started). Scan and compile happen on the GL thread.
+  gpu::BrushLibrary* library() { return library_.get(); }
+  /// Polls the brush folders and reloads what changed or appeared; emits brushesChanged() if
+  /// anything did. Returns the messages of failed reloads.
+  QStringList reloadBrushes();
+
+  void setBrushSettings(const BrushSettings& settings);
+  const BrushSettings& brushSettings() const { return settings_; }
+  /// The layer paint-category brushes write (diffuse, feature or mask).
+  void setPaintTarget(int brushLayer);
+  void setShowDiffuse(bool show);
+  void setShowMask(bool show);
+  /// Displays every divisor-th sample (N/divisor a side, clamped to at least 2).
+  void setLevelDivisor(int divisor);
+  int levelDivisor() const { return divisor_; }
+
+  bool canUndo() const { return history_.canUndo(); }
+  bool canRedo() const { return history_.canRedo(); }
+  /// Reverts / reapplies the newest stroke on the GPU and the mirror; false if there is none.
+  bool undoStroke();
+  bool redoStroke();
+  core::EditHistory& history() { return history_; }
+
+  void resetCamera();
+  /// The surface point under widget position p (logical pixels), if any.
+  std::optional<core::PickHit> pickAt(QPointF p) const;
+  /// Where object-space point p appears in the widget (logical pixels).
+  QPointF project(core::Vec3f p) const;
+
+  /// Feeds one point of a scripted stroke as the mouse would (begin, move…, end), for
+  /// benchmarks and the screenshot script; positions in logical pixels.
+  void beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers = {});
+  void continueStrokeTo(QPointF p);
+  void endStroke();
+  bool stroking() const { return stroke_ != nullptr; }
+
+  ViewportStats stats() const;
+  /// Why GL or a brush failed, empty if nothing did.
+  QString error() const { return error_; }
+  bool glReady() const { return model_ != nullptr; }
+
+  vtkRenderer* renderer() const;
+  vtkGenericOpenGLRenderWindow* renderWindow() const;
+
+signals:
+  /// A stroke was recorded in history() (push an undo command labelled so).
+  void strokeFinished(const QString& label);
+  void brushesChanged();
+  void statsChanged();
+  /// [ / ] (radius) and Shift+[ / ] (strength): factor > 1 grows.
+  void radiusStepRequested(float factor);
+  void strengthStepRequested(float factor);
+  void errorOccurred(const QString& message);
+
+protected:
+  void initializeGL() override;
+  void resizeGL(int width, int height) override;
+  void paintGL() override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void tabletEvent(QTabletEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void leaveEvent(QEvent* event) override;
+
+private:
+  struct ActiveStroke;
+  enum class Drag { None, Sculpt, Orbit, Pan };
+
+  bool uploadDocument(core::Document document);
+  void onRenderWindowEvent(vtkObject* caller, unsigned long event, void* callData);
+  void drainGlErrors();
+  void drawModel(vtkRenderer* renderer);
+  void queueStrokePoint(QPointF p);
+  /// Runs the queued dabs (GL current). Returns how many were made.
+  int runQueuedDabs();
+  void finishStroke();
+  /// The manifest the current settings ask for (area, falloff, paint target) compiled; null
+  /// with error_ set if it cannot be.
+  std::optional<gpu::BrushManifest> prepareBrush(const std::string& id);
+  void refreshNormalsAround(std::vector<core::TexelRect> rects);
+  void refreshAfterHistory(const core::Stroke& stroke);
+  float diagonal() const;
+  void updateClipping();
+  void fail(const QString& message);
+
+  vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
+  vtkNew<vtkRenderer> renderer_;
+  vtkNew<ModelProp> prop_;
+
+  std::unique_ptr<gpu::GlContext> context_;
+  std::unique_ptr<gpu::BrushLibrary> library_;
+  std::unique_ptr<gpu::ModelRenderer> model_;
+  std::unique_ptr<gpu::GpuDocument> document_;
+  std::optional<core::Document> pending_;
+  std::map<std::string, std::string> loadedVariant_; // brush id → what was compiled
+  core::EditHistory history_;
+
+  BrushSettings settings_;
+  int paintTarget_ = 1; // gpu::BrushLayer::Diffuse
+  bool showDiffuse_ = true, showMask_ = true;
+  int divisor_ = 4;
+
+  std::unique_ptr<ActiveStroke> stroke_;
+  StrokeStabilizer stabilizer_;
+  std::optional<core::PickHit> hover_;
+  Drag drag_ = Drag::None;
+  QPointF lastPos_;
+  float tabletPressure_ = 1.0f;
+  bool tabletDown_ = false;
+
+  bool glStarted_ = false;
+  QString error_;
+  QElapsedTimer clock_;
+  std::deque<qint64> frameTimes_;
+  double lastDabMs_ = 0;
+};
+
+} // namespace octaclay::app

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "octaclay/core/tile_bounds.h"
+#include "octaclay/core/vec.h"
+#include "octaclay/gpu/gl_objects.h"
+#include "octaclay/gpu/gpu_document.h"
+
+#include <array>
+#include <span>
+
+namespace octaclay::gpu {
+
+/// What a frame shows and from where.
+struct ModelView {
+  std::array<float, 16> objectToClip{}; ///< column-major projection × view
+  core::Vec3f eye;                      ///< camera position, object space (headlight)
+  bool showDiffuse = true;              ///< the diffuse layer as colour, else plain clay
+  bool showMask = true;                 ///< masked (blocked) areas tinted
+  bool showBrush = false;               ///< the brush outline: a ring on the surface
+  core::Vec3f brushCentre;
+  float brushRadius = 0;                     ///< object units
+  std::array<float, 3> brushColour{1, 1, 1}; ///< outline colour
+};
+
+/// Draws a GpuDocument at a displayed level straight from its textures (thesis 3.5): vertices
+/// are the image's samples every `divisor` texels, fetched by the vertex shader, so no vertex
+/// data crosses from the CPU per frame; each pixel is shaded with a normal from a
+/// full-resolution normal map that is refreshed only where dabs changed the surface. Create,
+/// use and destroy it with the document's context current.
+class ModelRenderer {
+public:
+  /// Compiles the programs. Throws GlError.
+  ModelRenderer();
+  ~ModelRenderer();
+  ModelRenderer(const ModelRenderer&) = delete;
+  ModelRenderer& operator=(const ModelRenderer&) = delete;
+
+  /// Shows the model of an N-image every divisor samples (a power of two, N/divisor ≥ 2),
+  /// rebuilding the index buffer when either changed. Throws core::Error(InvalidArgument).
+  void setLevel(int n, int divisor);
+  int divisor() const { return divisor_; }
+  /// Triangles drawn per frame: 2 (N/divisor)².
+  long long displayedTriangles() const;
+
+  /// Recomputes the normal map over rects of the positions (after dabs or undo).
+  void refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects);
+  /// Recomputes the whole normal map (a new or reloaded document).
+  void refreshAllNormals(GpuDocument& document);
+
+  /// Draws into the bound framebuffer with the current viewport, depth-tested. Leaves the
+  /// program, vertex array and texture units 0–3 unbound.
+  void draw(GpuDocument& document, const ModelView& view);
+
+private:
+  Program normalProgram_, drawProgram_;
+  RectPass rectPass_;
+  Texture normals_;
+  unsigned vertexArray_ = 0, indexBuffer_ = 0;
+  int n_ = 0, divisor_ = 0;
+  long long indexCount_ = 0;
+};
+
+} // namespace octaclay::gpu

@@ -1,0 +1,17 @@
+#version 430 core
+// The displayed level: vertex k is sample (i, j) * u_step of the image, i = k mod (M+1).
+uniform sampler2D u_positions;
+uniform mat4 u_objectToClip;
+uniform int u_step;
+uniform int u_side; // M + 1
+uniform int u_imageSide; // N + 1
+
+out vec3 v_position;
+out vec2 v_uv;
+
+void main() {
+  ivec2 cell = ivec2(gl_VertexID % u_side, gl_VertexID / u_side) * u_step;
+  v_position = texelFetch(u_positions, cell, 0).xyz;
+  v_uv = (vec2(cell) + 0.5) / float(u_imageSide);
+  gl_Position = u_objectToClip * vec4(v_position, 1.0);
+}

@@ -1,0 +1,162 @@
+#include "octaclay/gpu/model_renderer.h"
+
+#include "octaclay/core/error.h"
+#include "octaclay/gpu/gl_error.h"
+#include "shader_sources.h"
+
+#include <epoxy/gl.h>
+#include <vector>
+
+namespace octaclay::gpu {
+namespace {
+
+std::string normalPassSource() {
+  // The prelude's uniforms and normalAt(), as a positions pass sees them.
+  return "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
+         "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define OCTACLAY_LAYER 0\n" +
+         detail::builtInShader("prelude.glsl") + detail::builtInShader("normal_map.glsl");
+}
+
+std::vector<Region> regions(std::span<const core::TexelRect> rects) {
+  std::vector<Region> out;
+  out.reserve(rects.size());
+  for (const core::TexelRect& r : rects)
+    out.push_back({r.x, r.y, r.width, r.height});
+  return out;
+}
+
+void bindTexture(int unit, const Texture& texture) {
+  glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+  glBindTexture(GL_TEXTURE_2D, texture.id());
+}
+
+} // namespace
+
+ModelRenderer::ModelRenderer()
+    : normalProgram_("normal map", rectsVertexShader(), normalPassSource()),
+      drawProgram_("model", detail::builtInShader("model_vertex.glsl"),
+                   detail::builtInShader("model_fragment.glsl")) {
+  glGenVertexArrays(1, &vertexArray_);
+  glGenBuffers(1, &indexBuffer_);
+  checkGlError("creating the model's vertex array");
+}
+
+ModelRenderer::~ModelRenderer() {
+  if (indexBuffer_) glDeleteBuffers(1, &indexBuffer_);
+  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+}
+
+void ModelRenderer::setLevel(int n, int divisor) {
+  if (divisor < 1 || (divisor & (divisor - 1)) != 0 || n % divisor != 0 || n / divisor < 2)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "level N/" + std::to_string(divisor) + " of N = " + std::to_string(n) +
+                          " is not a power-of-two level with at least 2 cells a side");
+  if (n == n_ && divisor == divisor_) return;
+  const int m = n / divisor;
+  const int half = m / 2;
+  std::vector<std::uint32_t> indices;
+  indices.reserve(6 * static_cast<std::size_t>(m) * static_cast<std::size_t>(m));
+  auto at = [m](int i, int j) { return static_cast<std::uint32_t>(j * (m + 1) + i); };
+  // The split of core::extractMesh: diagonals follow the octahedron's faces.
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if ((i < half) == (j < half))
+        indices.insert(indices.end(), {a, b, d, b, c, d});
+      else
+        indices.insert(indices.end(), {a, b, c, a, c, d});
+    }
+  glBindVertexArray(vertexArray_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  checkGlError("uploading the level's triangles");
+  n_ = n;
+  divisor_ = divisor;
+  indexCount_ = static_cast<long long>(indices.size());
+}
+
+long long ModelRenderer::displayedTriangles() const {
+  return indexCount_ / 3;
+}
+
+void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects) {
+  const int side = document.size() + 1;
+  if (normals_.width() != side) {
+    normals_ = Texture(side, side, TextureFormat::Rgba16f);
+    glBindTexture(GL_TEXTURE_2D, normals_.id());
+    // Linear: between the displayed vertices each pixel blends the four nearest full-res normals.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    const core::TexelRect all{0, 0, side, side};
+    rects = std::span(&all, 1);
+    refreshNormals(document, rects); // the whole map once, then the caller's rects are inside it
+    return;
+  }
+  if (rects.empty()) return;
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  normals_.bindAsTarget();
+  glViewport(0, 0, side, side);
+  normalProgram_.use();
+  bindTexture(0, document.texture(BrushLayer::Positions));
+  glUniform1i(normalProgram_.uniform("u_positions"), 0);
+  glUniform1i(normalProgram_.uniform("u_size"), document.size());
+  glUniform3f(normalProgram_.uniform("u_centreNormal"), 0.0f, 0.0f, 1.0f);
+  const std::vector<Region> passRects = regions(rects);
+  rectPass_.draw(passRects, side, side);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+  checkGlError("normal map pass");
+}
+
+void ModelRenderer::refreshAllNormals(GpuDocument& document) {
+  const int side = document.size() + 1;
+  const core::TexelRect all{0, 0, side, side};
+  refreshNormals(document, std::span(&all, 1));
+}
+
+void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
+  if (indexCount_ == 0 || n_ != document.size())
+    throw GlError("the model renderer's level was not set for this document");
+  if (normals_.width() != n_ + 1) refreshAllNormals(document);
+  drawProgram_.use();
+  bindTexture(0, document.texture(BrushLayer::Positions));
+  bindTexture(1, normals_);
+  bindTexture(2, document.texture(BrushLayer::Diffuse));
+  bindTexture(3, document.texture(BrushLayer::Mask));
+  const Program& p = drawProgram_;
+  glUniform1i(p.uniform("u_positions"), 0);
+  glUniform1i(p.uniform("u_normals"), 1);
+  glUniform1i(p.uniform("u_diffuse"), 2);
+  glUniform1i(p.uniform("u_mask"), 3);
+  glUniformMatrix4fv(p.uniform("u_objectToClip"), 1, GL_FALSE, view.objectToClip.data());
+  glUniform1i(p.uniform("u_step"), divisor_);
+  glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
+  glUniform1i(p.uniform("u_imageSide"), n_ + 1);
+  glUniform3f(p.uniform("u_eye"), view.eye.x, view.eye.y, view.eye.z);
+  glUniform1i(p.uniform("u_showDiffuse"), view.showDiffuse);
+  glUniform1i(p.uniform("u_showMask"), view.showMask);
+  glUniform1i(p.uniform("u_showBrush"), view.showBrush);
+  glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
+              view.brushCentre.z);
+  glUniform1f(p.uniform("u_brushRadius"), view.brushRadius);
+  glUniform3f(p.uniform("u_brushColour"), view.brushColour[0], view.brushColour[1],
+              view.brushColour[2]);
+  glBindVertexArray(vertexArray_);
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+  for (int unit = 3; unit >= 0; --unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glUseProgram(0);
+  checkGlError("drawing the model");
+}
+
+} // namespace octaclay::gpu
