@@ -1,0 +1,166 @@
+#pragma once
+
+#include "brush_settings.h"
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <QColor>
+#include <QPointer>
+#include <QPushButton>
+#include <QString>
+#include <QWidget>
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QFrame;
+class QLabel;
+class QScrollArea;
+class QSlider;
+class QTreeWidget;
+class QTreeWidgetItem;
+class QVBoxLayout;
+
+namespace octaclay::app {
+
+/// A button showing a colour (swatch and #rrggbbaa) that opens QColorDialog when clicked. The
+/// value is the `color` property, so tests and scripts can set it without the dialog.
+class ColorButton : public QPushButton {
+  Q_OBJECT
+  Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
+
+public:
+  explicit ColorButton(QWidget* parent = nullptr);
+
+  QColor color() const { return color_; }
+  /// Shows `color` (alpha included); emits colorChanged when it differs from the current one.
+  void setColor(const QColor& color);
+
+signals:
+  void colorChanged(const QColor& color);
+
+private:
+  void pickColor();
+
+  QColor color_;
+};
+
+/// The Brushes dock panel: the brush list grouped by category, the brushes that failed to load,
+/// and a form for the current brush (radius, strength, falloff, area mode, then one widget per
+/// manifest parameter) above the stroke options shared by all brushes (pressure, stabilizer,
+/// symmetry). Each brush's values are remembered while switching and persisted with the
+/// default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
+/// and parameters/<parameter id>); the stroke options live in group "brushPanel". GUI thread.
+class BrushPanel : public QWidget {
+  Q_OBJECT
+
+public:
+  explicit BrushPanel(QWidget* parent = nullptr);
+  ~BrushPanel() override;
+
+  /// Replaces the brush list (grouped by category Sculpt/Paint/Splat in the given order, shown
+  /// by name, id as item data) and the load errors (each shown in full in a red list that is
+  /// hidden only when there are none). Each brush's values come from what this panel
+  /// remembers, else from QSettings, else from the manifest, and are then fitted to the
+  /// manifest (unknown parameters dropped, values clamped to their ranges). Keeps the current
+  /// brush selected if it still exists, else selects "push" if present, else the first listed.
+  /// Rebuilds the form and emits settingsChanged.
+  void setBrushes(std::vector<gpu::BrushManifest> brushes, std::vector<std::string> errors);
+
+  /// The current brush and all its values, plus the stroke options. brushId is empty when no
+  /// brush is loaded.
+  BrushSettings settings() const;
+  /// Id of the current brush; empty when none.
+  QString currentBrushId() const;
+  /// The manifest of the current brush, or nullptr.
+  const gpu::BrushManifest* currentBrush() const;
+  /// Makes the brush with this id current (rebuilding the form, emitting settingsChanged when
+  /// it was not already current). Returns false, changing nothing, when no brush has this id.
+  bool selectBrush(const QString& id);
+  /// Ids of the listed brushes in display order (category, then the order given).
+  QStringList brushIds() const;
+  /// The error strings shown, in order (the same as given to setBrushes).
+  QStringList errors() const;
+
+  /// Radius of the current brush as a fraction of the model's bounding-box diagonal; clamped
+  /// to [0.001, 1]. Updates the widget and emits settingsChanged when the value changes.
+  void setRadius(float fractionOfDiagonal);
+  /// Strength of the current brush, clamped to [0, 1]; emits settingsChanged when it changes.
+  void setStrength(float s);
+  float radius() const;
+  float strength() const;
+
+  /// Stroke options shared by all brushes; each emits settingsChanged when the value changes.
+  void setPressureTarget(PressureTarget target);
+  /// Lazy-mouse strength, clamped to [0, 1] and kept in whole percent like the slider.
+  void setStabilizer(float amount);
+  /// gpu::SymmetryAxis bits (X = 1, Y = 2, Z = 4); other bits are ignored.
+  void setSymmetry(unsigned axes);
+
+  /// The widget editing parameter `id` of the current brush (for tests), or nullptr. Float →
+  /// QDoubleSpinBox, Int → QSpinBox, Bool → QCheckBox, Color → ColorButton, Enum → QComboBox.
+  QWidget* parameterWidget(const QString& id) const;
+
+signals:
+  /// Anything in settings() may have changed.
+  void settingsChanged();
+
+private:
+  // What the user set for one brush; survives switching brushes.
+  struct BrushValues {
+    float radius = 0.05f;
+    float strength = 0.5f;
+    gpu::Falloff falloff = gpu::Falloff::Smooth;
+    gpu::AreaMode area = gpu::AreaMode::Volume;
+    std::map<std::string, std::array<float, 4>> parameters;
+  };
+
+  const gpu::BrushManifest* findBrush(const QString& id) const;
+  BrushValues& currentValues();
+  const BrushValues& currentValues() const;
+  BrushValues defaultValues(const gpu::BrushManifest& brush) const;
+  BrushValues loadValues(const gpu::BrushManifest& brush) const;
+  void fitValues(const gpu::BrushManifest& brush, BrushValues& values) const;
+  void saveValues(const QString& id) const;
+  void saveStrokeOptions() const;
+  void loadStrokeOptions();
+
+  void fillBrushList();
+  void showErrors();
+  void onCurrentItemChanged(QTreeWidgetItem* item);
+  void makeCurrent(const QString& id);
+  void rebuildForm();
+  QWidget* makeParameterWidget(const gpu::BrushParameter& parameter,
+                               const std::array<float, 4>& value);
+  // Stores a value the user (or a setter) changed, persists it and emits settingsChanged.
+  void valuesEdited();
+
+  std::vector<gpu::BrushManifest> brushes_;
+  std::vector<std::string> errors_;
+  std::map<QString, BrushValues> values_;
+  QString currentId_;
+  BrushValues noBrush_; // what radius() and friends use while no brush is loaded
+
+  PressureTarget pressureTarget_ = PressureTarget::Strength;
+  int stabilizerPercent_ = 0;
+  unsigned symmetry_ = 0;
+
+  QTreeWidget* brushList_ = nullptr;
+  QFrame* errorFrame_ = nullptr;
+  QVBoxLayout* errorLayout_ = nullptr;
+  QScrollArea* formScroll_ = nullptr;
+  QLabel* descriptionLabel_ = nullptr;
+  QPointer<QDoubleSpinBox> radiusSpin_;
+  QPointer<QDoubleSpinBox> strengthSpin_;
+  std::map<QString, QPointer<QWidget>> parameterWidgets_;
+  QComboBox* pressureCombo_ = nullptr;
+  QSlider* stabilizerSlider_ = nullptr;
+  QLabel* stabilizerLabel_ = nullptr;
+  std::array<QCheckBox*, 3> symmetryBoxes_{};
+};
+
+} // namespace octaclay::app

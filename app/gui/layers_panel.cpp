@@ -1,0 +1,186 @@
+// The Layers dock panel. The panel owns visibility and target; the widgets mirror them, so a
+// setter and a click take the same path (store, persist, update the widget, signal).
+
+#include "layers_panel.h"
+
+#include <QButtonGroup>
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QRadioButton>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace octaclay::app {
+
+namespace {
+
+using gpu::BrushLayer;
+
+constexpr std::array kLayers{BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature,
+                             BrushLayer::Mask};
+
+std::size_t indexOf(BrushLayer layer) {
+  return static_cast<std::size_t>(layer);
+}
+
+QString layerKey(BrushLayer layer) {
+  const std::string_view name = gpu::toManifestName(layer);
+  return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+QString layerTitle(BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Positions:
+    return LayersPanel::tr("Positions");
+  case BrushLayer::Diffuse:
+    return LayersPanel::tr("Diffuse");
+  case BrushLayer::Feature:
+    return LayersPanel::tr("Feature");
+  case BrushLayer::Mask:
+    return LayersPanel::tr("Mask");
+  }
+  return {};
+}
+
+QString visibilityTip(BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Positions:
+    return LayersPanel::tr("The surface itself is always shown");
+  case BrushLayer::Diffuse:
+    return LayersPanel::tr("Show the painted colour (off: plain clay)");
+  case BrushLayer::Feature:
+    return LayersPanel::tr("Show the feature layer's height, specular and reflectivity");
+  case BrushLayer::Mask:
+    return LayersPanel::tr("Tint masked (protected) areas");
+  }
+  return {};
+}
+
+QString stateText(bool painted) {
+  return painted ? LayersPanel::tr("painted") : LayersPanel::tr("uniform");
+}
+
+} // namespace
+
+LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
+  painted_[indexOf(BrushLayer::Positions)] = true; // the surface is always real data
+
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("layers"));
+  for (const BrushLayer layer : kLayers)
+    if (layer != BrushLayer::Positions)
+      visible_[indexOf(layer)] =
+          settings.value(QStringLiteral("visible/") + layerKey(layer), true).toBool();
+  const QString target = settings.value(QStringLiteral("paintTarget")).toString();
+  for (const BrushLayer layer : kLayers)
+    if (layer != BrushLayer::Positions && target == layerKey(layer)) paintTarget_ = layer;
+
+  auto* grid = new QGridLayout;
+  grid->addWidget(new QLabel(tr("<b>Layer</b>")), 0, 0);
+  grid->addWidget(new QLabel(tr("<b>Show</b>")), 0, 1);
+  grid->addWidget(new QLabel(tr("<b>Paint</b>")), 0, 2);
+  grid->addWidget(new QLabel(tr("<b>State</b>")), 0, 3);
+
+  targetGroup_ = new QButtonGroup(this);
+  targetGroup_->setExclusive(true);
+  for (const BrushLayer layer : kLayers) {
+    const std::size_t k = indexOf(layer);
+    const int row = static_cast<int>(k) + 1;
+    grid->addWidget(new QLabel(layerTitle(layer)), row, 0);
+
+    auto* box = new QCheckBox;
+    box->setObjectName(QStringLiteral("visible-") + layerKey(layer));
+    box->setToolTip(visibilityTip(layer));
+    box->setChecked(visible_[k]);
+    if (layer == BrushLayer::Positions) {
+      box->setEnabled(false);
+    } else {
+      connect(box, &QCheckBox::toggled, this, [this, layer](bool on) { setVisible(layer, on); });
+    }
+    visibleBoxes_[k] = box;
+    grid->addWidget(box, row, 1);
+
+    if (layer != BrushLayer::Positions) {
+      auto* radio = new QRadioButton;
+      radio->setObjectName(QStringLiteral("target-") + layerKey(layer));
+      radio->setToolTip(tr("Paint brushes write the %1 layer").arg(layerTitle(layer)));
+      radio->setChecked(layer == paintTarget_);
+      targetGroup_->addButton(radio, static_cast<int>(k));
+      targetButtons_[k] = radio;
+      grid->addWidget(radio, row, 2);
+    }
+
+    auto* state = new QLabel(stateText(painted_[k]));
+    state->setObjectName(QStringLiteral("state-") + layerKey(layer));
+    state->setToolTip(tr("Painted: the layer holds per-sample data. Uniform: it is still one "
+                         "value everywhere and costs no memory."));
+    stateLabels_[k] = state;
+    grid->addWidget(state, row, 3);
+  }
+  grid->setColumnStretch(3, 1);
+  connect(targetGroup_, &QButtonGroup::idToggled, this, [this](int id, bool on) {
+    if (on) setPaintTarget(static_cast<BrushLayer>(id));
+  });
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(grid);
+  layout->addStretch(1);
+}
+
+bool LayersPanel::isVisible(BrushLayer layer) const {
+  return layer == BrushLayer::Positions || visible_[indexOf(layer)];
+}
+
+void LayersPanel::setVisible(BrushLayer layer, bool visible) {
+  const std::size_t k = indexOf(layer);
+  if (layer == BrushLayer::Positions || visible_[k] == visible) return;
+  visible_[k] = visible;
+  {
+    const QSignalBlocker block(visibleBoxes_[k]);
+    visibleBoxes_[k]->setChecked(visible);
+  }
+  save();
+  emit visibilityChanged();
+}
+
+BrushLayer LayersPanel::paintTarget() const {
+  return paintTarget_;
+}
+
+void LayersPanel::setPaintTarget(BrushLayer layer) {
+  if (layer == BrushLayer::Positions || layer == paintTarget_) return;
+  paintTarget_ = layer;
+  {
+    const QSignalBlocker block(targetGroup_);
+    targetButtons_[indexOf(layer)]->setChecked(true);
+  }
+  save();
+  emit paintTargetChanged();
+}
+
+void LayersPanel::setLayerState(BrushLayer layer, bool painted) {
+  const std::size_t k = indexOf(layer);
+  painted_[k] = painted;
+  stateLabels_[k]->setText(stateText(painted));
+}
+
+bool LayersPanel::isPainted(BrushLayer layer) const {
+  return painted_[indexOf(layer)];
+}
+
+QString LayersPanel::layerStateText(BrushLayer layer) const {
+  return stateLabels_[indexOf(layer)]->text();
+}
+
+void LayersPanel::save() const {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("layers"));
+  for (const BrushLayer layer : kLayers)
+    if (layer != BrushLayer::Positions)
+      settings.setValue(QStringLiteral("visible/") + layerKey(layer), visible_[indexOf(layer)]);
+  settings.setValue(QStringLiteral("paintTarget"), layerKey(paintTarget_));
+}
+
+} // namespace octaclay::app

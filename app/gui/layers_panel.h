@@ -1,0 +1,71 @@
+#pragma once
+
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <QString>
+#include <QWidget>
+#include <array>
+
+class QButtonGroup;
+class QCheckBox;
+class QLabel;
+class QRadioButton;
+
+namespace octaclay::app {
+
+/// The Layers dock panel: one row per document layer (Positions, Diffuse, Feature, Mask) with
+/// a visibility check box (Diffuse: colour shown; Feature: height/specular shading shown; Mask:
+/// tint shown; Positions: always shown, its box disabled), the paint target (which of Diffuse,
+/// Feature, Mask the paint-category brushes write; Diffuse by default) and whether the layer
+/// is painted or still uniform. Visibility and target persist with the default-constructed
+/// QSettings in group "layers" (keys visible/<layer>, paintTarget; layer names as in
+/// manifests). GUI thread.
+class LayersPanel : public QWidget {
+  Q_OBJECT
+
+public:
+  explicit LayersPanel(QWidget* parent = nullptr);
+
+  // The layer overloads below would otherwise hide QWidget's own isVisible() and setVisible().
+  using QWidget::isVisible;
+  using QWidget::setVisible;
+
+  /// Whether the layer is shown; Positions always is.
+  bool isVisible(gpu::BrushLayer layer) const;
+  /// Shows or hides the layer; emits visibilityChanged when that changes. Positions cannot be
+  /// hidden (ignored).
+  void setVisible(gpu::BrushLayer layer, bool visible);
+
+  /// The layer paint-category brushes write: Diffuse, Feature or Mask.
+  gpu::BrushLayer paintTarget() const;
+  /// Makes layer the paint target; emits paintTargetChanged when it changes. Positions is not a
+  /// paint target (ignored).
+  void setPaintTarget(gpu::BrushLayer layer);
+
+  /// Says whether the layer holds painted data or is still uniform (its fill value).
+  void setLayerState(gpu::BrushLayer layer, bool painted);
+  /// What setLayerState last said (false, "uniform", until then).
+  bool isPainted(gpu::BrushLayer layer) const;
+  /// The state line shown for the layer, e.g. "uniform" (for tests).
+  QString layerStateText(gpu::BrushLayer layer) const;
+
+signals:
+  void visibilityChanged();
+  void paintTargetChanged();
+
+private:
+  static constexpr std::size_t kLayerCount = 4;
+
+  void save() const;
+
+  std::array<bool, kLayerCount> visible_{true, true, true, true};
+  std::array<bool, kLayerCount> painted_{};
+  gpu::BrushLayer paintTarget_ = gpu::BrushLayer::Diffuse;
+
+  std::array<QCheckBox*, kLayerCount> visibleBoxes_{};
+  std::array<QRadioButton*, kLayerCount> targetButtons_{}; // none for Positions
+  std::array<QLabel*, kLayerCount> stateLabels_{};
+  QButtonGroup* targetGroup_ = nullptr;
+};
+
+} // namespace octaclay::app
