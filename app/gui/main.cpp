@@ -1,21 +1,52 @@
+// octaclay: the modeller. `octaclay [doc.exr]` opens a document, or a new sphere (N = 1024).
+#include "main_window.h"
+#include "screenshot_script.h"
 #include "viewport_widget.h"
 
-#include "octaclay/core/base_shapes.h"
-
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QTimer>
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
-  octaclay::app::ViewportWidget view;
-  view.resize(640, 480);
-  view.setDocument(octaclay::core::makeDocument(
-      octaclay::core::makeBaseShape(octaclay::core::BaseShape::Sphere, 256)));
-  view.show();
-  QTimer::singleShot(1500, [&] {
-    view.grabFramebuffer().save("/tmp/viewport.png");
-    qInfo("error: %s", qPrintable(view.error()));
-    app.quit();
-  });
+  QCoreApplication::setOrganizationName("Octaclay");
+  QCoreApplication::setApplicationName("octaclay");
+  QCoreApplication::setApplicationVersion("0.1.0");
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Octaclay: sculpt closed surfaces stored as geometry images.");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument("document", "An Octaclay document (.exr) to open.", "[document]");
+  QCommandLineOption shape("shape", "Shape of a new model: sphere, cube, cylinder, blob.", "shape",
+                           "sphere");
+  QCommandLineOption size("size", "Size N of a new model (N+1 samples a side).", "N", "1024");
+  QCommandLineOption screenshot(
+      "screenshot", "Make a few strokes, save the window as an image and quit.", "image.png");
+  parser.addOptions({shape, size, screenshot});
+  parser.process(app);
+
+  const auto baseShape = octaclay::core::parseBaseShape(parser.value(shape).toStdString());
+  bool sizeOk = false;
+  const int n = parser.value(size).toInt(&sizeOk);
+  if (!baseShape || !sizeOk || n < 2 || n > 8192 || (n & (n - 1)) != 0) {
+    fprintf(stderr, "octaclay: --shape must be sphere, cube, cylinder or blob and --size a power "
+                    "of two from 2 to 8192\n");
+    return 2;
+  }
+
+  octaclay::app::MainWindow window;
+  window.show();
+  const QStringList args = parser.positionalArguments();
+  if (args.isEmpty() || !window.openDocument(args.front())) window.newDocument(*baseShape, n, true);
+  if (parser.isSet(screenshot)) {
+    const QString out = parser.value(screenshot);
+    QTimer::singleShot(0, &window, [&window, out] {
+      const bool ok = octaclay::app::makeScreenshot(window, out);
+      QCoreApplication::exit(ok ? 0 : 1);
+    });
+  } else {
+    QTimer::singleShot(0, &window, [&window] { window.startSession(); });
+  }
   return app.exec();
 }

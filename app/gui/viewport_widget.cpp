@@ -426,8 +426,12 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   if (!hit) return;
   std::string id = settings_.brushId;
   if (modifiers & Qt::ShiftModifier) id = "smooth";
+  makeCurrent(); // a changed area or falloff recompiles the brush
   std::optional<gpu::BrushManifest> brush = prepareBrush(id);
-  if (!brush) return;
+  if (!brush) {
+    doneCurrent();
+    return;
+  }
   auto stroke = std::make_unique<ActiveStroke>();
   stroke->brushId = id;
   stroke->manifest = std::move(*brush);
@@ -439,15 +443,14 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   s.symmetry = settings_.symmetry;
   if (id == settings_.brushId) s.parameters = settings_.parameters;
   try {
-    makeCurrent();
     stroke->session =
         std::make_unique<gpu::StrokeSession>(library_->engine(), *document_, stroke->manifest, s);
-    doneCurrent();
   } catch (const std::exception& e) {
     doneCurrent();
     fail(QString::fromUtf8(e.what()));
     return;
   }
+  doneCurrent();
   stroke_ = std::move(stroke);
   stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});
   stroke_->queue.emplace_back(hit->sample, tabletDown_ ? tabletPressure_ : 1.0f);

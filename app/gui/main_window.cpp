@@ -1,0 +1,523 @@
+#include "main_window.h"
+
+#include "brush_panel.h"
+#include "layers_panel.h"
+#include "lod_panel.h"
+#include "octaclay/core/document_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/mesh_io.h"
+#include "octaclay/gpu/brush_library.h"
+#include "stroke_command.h"
+#include "viewport_widget.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDockWidget>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
+#include <memory>
+
+namespace octaclay::app {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+
+std::filesystem::path toPath(const QString& path) {
+  return std::filesystem::path(path.toStdString());
+}
+
+QString mib(std::size_t bytes) {
+  return QString::number(double(bytes) / (1 << 20), 'f', 1);
+}
+
+} // namespace
+
+MainWindow::MainWindow(Options options)
+    : options_(std::move(options)),
+      recovery_(options_.recoveryFolder.isEmpty() ? RecoveryStore::defaultFolder()
+                                                  : options_.recoveryFolder,
+                options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid()) {
+  setObjectName("MainWindow");
+  undoStack_ = new QUndoStack(this);
+  viewport_ = new ViewportWidget(this);
+  setCentralWidget(viewport_);
+  buildDocks();
+  buildMenus();
+  connectParts();
+
+  fpsLabel_ = new QLabel(this);
+  dabLabel_ = new QLabel(this);
+  sizeLabel_ = new QLabel(this);
+  trianglesLabel_ = new QLabel(this);
+  for (QLabel* l : {fpsLabel_, dabLabel_, sizeLabel_, trianglesLabel_})
+    statusBar()->addPermanentWidget(l);
+  auto* statusTimer = new QTimer(this);
+  connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+  statusTimer->start(500);
+
+  autosaveTimer_ = new QTimer(this);
+  connect(autosaveTimer_, &QTimer::timeout, this, [this] { autosaveNow(); });
+  auto* brushPoll = new QTimer(this);
+  connect(brushPoll, &QTimer::timeout, this, [this] {
+    for (const QString& failure : viewport_->reloadBrushes())
+      statusBar()->showMessage(failure, 8000);
+  });
+  brushPoll->start(1000);
+
+  QSettings settings;
+  resize(1280, 800);
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+  rebuildRecentMenu();
+  updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+QAction* MainWindow::action(const QString& objectName) const {
+  return findChild<QAction*>(objectName);
+}
+
+void MainWindow::buildDocks() {
+  brushPanel_ = new BrushPanel(this);
+  layersPanel_ = new LayersPanel(this);
+  lodPanel_ = new LodPanel(this);
+  auto addDock = [this](QWidget* panel, const QString& title, const QString& name,
+                        Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(panel);
+    addDockWidget(area, dock);
+    return dock;
+  };
+  addDock(brushPanel_, tr("Brushes"), "BrushesDock", Qt::LeftDockWidgetArea);
+  addDock(layersPanel_, tr("Layers"), "LayersDock", Qt::RightDockWidgetArea);
+  addDock(lodPanel_, tr("Level of detail"), "LodDock", Qt::RightDockWidgetArea);
+}
+
+void MainWindow::buildMenus() {
+  auto add = [this](QMenu* menu, const QString& text, const QString& name,
+                    QKeySequence shortcut = {}) {
+    QAction* a = menu->addAction(text);
+    a->setObjectName(name);
+    if (!shortcut.isEmpty()) a->setShortcut(shortcut);
+    return a;
+  };
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  connect(add(file, tr("&New…"), "actionNew", QKeySequence::New), &QAction::triggered, this,
+          [this] {
+            QDialog dialog(this);
+            dialog.setWindowTitle(tr("New model"));
+            auto* form = new QFormLayout(&dialog);
+            auto* shape = new QComboBox(&dialog);
+            for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+              shape->addItem(tr(s), QString(s));
+            auto* size = new QComboBox(&dialog);
+            for (int n : {64, 128, 256, 512, 1024, 2048, 4096})
+              size->addItem(QString::number(n), n);
+            size->setCurrentText("1024");
+            form->addRow(tr("Shape"), shape);
+            form->addRow(tr("Size N"), size);
+            auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+            form->addRow(buttons);
+            connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+            connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+            if (dialog.exec() != QDialog::Accepted) return;
+            newDocument(*core::parseBaseShape(shape->currentData().toString().toStdString()),
+                        size->currentData().toInt());
+          });
+  connect(add(file, tr("&Open…"), "actionOpen", QKeySequence::Open), &QAction::triggered, this,
+          [this] {
+            if (!maybeSave()) return;
+            const QString path = choose(FileRequest::Open);
+            if (!path.isEmpty()) openDocument(path);
+          });
+  recentMenu_ = file->addMenu(tr("Open &Recent"));
+  connect(add(file, tr("&Save"), "actionSave", QKeySequence::Save), &QAction::triggered, this,
+          [this] {
+            const QString path = path_.isEmpty() ? choose(FileRequest::SaveAs) : path_;
+            if (!path.isEmpty()) saveDocument(path);
+          });
+  connect(add(file, tr("Save &As…"), "actionSaveAs", QKeySequence::SaveAs), &QAction::triggered,
+          this, [this] {
+            const QString path = choose(FileRequest::SaveAs);
+            if (!path.isEmpty()) saveDocument(path);
+          });
+  connect(add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
+          &QAction::triggered, this, [this] {
+            const QString path = choose(FileRequest::Export);
+            if (!path.isEmpty()) exportMesh(path, lodPanel_->divisor());
+          });
+  file->addSeparator();
+  connect(add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit), &QAction::triggered, this,
+          &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = undoStack_->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName("actionUndo");
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = undoStack_->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName("actionRedo");
+  redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence::Redo});
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  connect(add(edit, tr("&Preferences…"), "actionPreferences"), &QAction::triggered, this, [this] {
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Preferences"));
+    auto* form = new QFormLayout(&dialog);
+    const core::EditHistory& h = viewport_->history();
+    form->addRow(tr("Undo history"), new QLabel(tr("%1 MiB used of a %2 MiB budget (%3 steps)")
+                                                    .arg(mib(h.bytes()), mib(h.budget()))
+                                                    .arg(h.undoCount() + h.redoCount())));
+    auto* minutes = new QSpinBox(&dialog);
+    minutes->setRange(0, 60);
+    minutes->setSuffix(tr(" min"));
+    minutes->setSpecialValueText(tr("off"));
+    minutes->setValue(options_.autosaveSeconds / 60);
+    form->addRow(tr("Autosave every"), minutes);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    if (dialog.exec() != QDialog::Accepted) return;
+    options_.autosaveSeconds = minutes->value() * 60;
+    QSettings().setValue("autosave/seconds", options_.autosaveSeconds);
+    if (options_.autosaveSeconds > 0)
+      autosaveTimer_->start(options_.autosaveSeconds * 1000);
+    else
+      autosaveTimer_->stop();
+  });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    view->addAction(dock->toggleViewAction());
+  view->addSeparator();
+  connect(add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(tr("Home"))),
+          &QAction::triggered, viewport_, &ViewportWidget::resetCamera);
+}
+
+void MainWindow::connectParts() {
+  connect(viewport_, &ViewportWidget::strokeFinished, this,
+          [this](const QString& label) { undoStack_->push(new StrokeCommand(viewport_, label)); });
+  connect(undoStack_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+  connect(undoStack_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
+  connect(viewport_, &ViewportWidget::brushesChanged, this, &MainWindow::refreshBrushes);
+  connect(viewport_, &ViewportWidget::errorOccurred, this,
+          [this](const QString& message) { statusBar()->showMessage(message, 10000); });
+  connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
+  connect(brushPanel_, &BrushPanel::settingsChanged, this,
+          [this] { viewport_->setBrushSettings(brushPanel_->settings()); });
+  connect(viewport_, &ViewportWidget::radiusStepRequested, this,
+          [this](float f) { brushPanel_->setRadius(brushPanel_->radius() * f); });
+  connect(viewport_, &ViewportWidget::strengthStepRequested, this,
+          [this](float f) { brushPanel_->setStrength(brushPanel_->strength() * f); });
+  auto applyLayers = [this] {
+    viewport_->setShowDiffuse(layersPanel_->isVisible(gpu::BrushLayer::Diffuse));
+    viewport_->setShowMask(layersPanel_->isVisible(gpu::BrushLayer::Mask));
+    viewport_->setPaintTarget(static_cast<int>(layersPanel_->paintTarget()));
+  };
+  connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
+  connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
+  applyLayers();
+  connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
+  viewport_->setLevelDivisor(lodPanel_->divisor());
+  viewport_->setBrushSettings(brushPanel_->settings());
+}
+
+void MainWindow::refreshBrushes() {
+  gpu::BrushLibrary* library = viewport_->library();
+  if (!library) return;
+  std::vector<gpu::BrushManifest> brushes;
+  for (const gpu::BrushManifest* b : library->brushes())
+    brushes.push_back(*b);
+  brushPanel_->setBrushes(std::move(brushes), library->errors());
+  viewport_->setBrushSettings(brushPanel_->settings());
+}
+
+void MainWindow::updateStatus() {
+  const ViewportStats s = viewport_->stats();
+  const QLocale locale;
+  fpsLabel_->setText(tr("%1 frames/s").arg(s.framesPerSecond, 0, 'f', 0));
+  dabLabel_->setText(tr("dab %1 ms").arg(s.lastDabMs, 0, 'f', 2));
+  sizeLabel_->setText(tr("N = %1").arg(s.n));
+  trianglesLabel_->setText(
+      tr("%1 / %2 triangles")
+          .arg(locale.toString(s.displayedTriangles), locale.toString(s.fullTriangles)));
+  lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
+  if (viewport_->hasDocument()) {
+    const core::Document& d = viewport_->document();
+    layersPanel_->setLayerState(gpu::BrushLayer::Diffuse, !d.diffuse.uniform());
+    layersPanel_->setLayerState(gpu::BrushLayer::Feature, !d.feature.uniform());
+    layersPanel_->setLayerState(gpu::BrushLayer::Mask, !d.mask.uniform());
+  }
+}
+
+bool MainWindow::isModified() const {
+  return forceModified_ || !undoStack_->isClean();
+}
+
+void MainWindow::updateTitle() {
+  const QString name = path_.isEmpty() ? tr("Untitled") : QFileInfo(path_).fileName();
+  setWindowTitle(QStringLiteral("%1[*] — Octaclay").arg(name));
+  setWindowModified(isModified());
+}
+
+void MainWindow::showError(const QString& message) {
+  lastError_ = message;
+  statusBar()->showMessage(message, 15000);
+  auto* box =
+      new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open(); // window-modal, does not block the caller
+}
+
+QString MainWindow::choose(FileRequest request) {
+  if (chooser_) return chooser_(request);
+  const QString dir = QFileInfo(path_).absolutePath();
+  switch (request) {
+  case FileRequest::Open:
+    return QFileDialog::getOpenFileName(this, tr("Open model"), dir,
+                                        tr("Octaclay documents (*.exr)"));
+  case FileRequest::SaveAs:
+    return QFileDialog::getSaveFileName(this, tr("Save model"), dir,
+                                        tr("Octaclay documents (*.exr)"));
+  case FileRequest::Export:
+    return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
+                                        tr("Meshes (*.obj *.ply *.stl *.off)"));
+  }
+  return {};
+}
+
+QString MainWindow::runInBackground(const QString& label, const std::function<void()>& work) {
+  if (busy_) return tr("Another file operation is still running");
+  busy_ = true;
+  auto error = std::make_shared<QString>();
+  QFutureWatcher<void> watcher;
+  QEventLoop loop;
+  connect(&watcher, &QFutureWatcher<void>::finished, &loop, &QEventLoop::quit);
+  QProgressDialog progress(label, QString(), 0, 0, this);
+  progress.setWindowModality(Qt::WindowModal); // no edits while the document is in flight
+  progress.setMinimumDuration(400);
+  watcher.setFuture(QtConcurrent::run([work, error] {
+    try {
+      work();
+    } catch (const std::exception& e) {
+      *error = QString::fromUtf8(e.what());
+    }
+  }));
+  if (!watcher.isFinished()) loop.exec();
+  busy_ = false;
+  return *error;
+}
+
+void MainWindow::adoptDocument(core::Document document, const QString& path) {
+  if (!viewport_->setDocument(std::move(document))) {
+    showError(viewport_->error());
+    return;
+  }
+  undoStack_->clear();
+  path_ = path;
+  forceModified_ = false;
+  autosavedIndex_ = -1;
+  lodPanel_->setDocumentSize(viewport_->document().size());
+  viewport_->setLevelDivisor(lodPanel_->divisor());
+  updateTitle();
+  updateStatus();
+}
+
+bool MainWindow::newDocument(core::BaseShape shape, int n, bool force) {
+  if (!force && !maybeSave()) return false;
+  auto made = std::make_shared<core::Document>();
+  const QString error =
+      runInBackground(tr("Creating a model of size %1…").arg(n), [made, shape, n] {
+        *made = core::makeDocument(core::makeBaseShape(shape, n));
+      });
+  if (!error.isEmpty()) {
+    showError(tr("Could not create the model: %1").arg(error));
+    return false;
+  }
+  adoptDocument(std::move(*made), {});
+  lastError_.clear();
+  return true;
+}
+
+bool MainWindow::openDocument(const QString& path) {
+  auto read = std::make_shared<core::Document>();
+  const QString error = runInBackground(tr("Opening %1…").arg(QFileInfo(path).fileName()),
+                                        [read, path] { *read = core::readDocument(toPath(path)); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not open %1: %2\nThe current model is unchanged.").arg(path, error));
+    return false;
+  }
+  adoptDocument(std::move(*read), QFileInfo(path).absoluteFilePath());
+  addRecentFile(path_);
+  lastError_.clear();
+  return true;
+}
+
+bool MainWindow::saveDocument(const QString& path) {
+  if (!viewport_->hasDocument()) return false;
+  viewport_->endStroke();
+  // A snapshot: the save runs while the user may keep sculpting.
+  auto snapshot = std::make_shared<core::Document>(viewport_->document());
+  const QString error =
+      runInBackground(tr("Saving %1…").arg(QFileInfo(path).fileName()),
+                      [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not save %1: %2").arg(path, error));
+    return false;
+  }
+  path_ = QFileInfo(path).absoluteFilePath();
+  undoStack_->setClean();
+  forceModified_ = false;
+  recovery_.discard(); // the file now holds everything the recovery did
+  addRecentFile(path_);
+  updateTitle();
+  lastError_.clear();
+  statusBar()->showMessage(tr("Saved %1").arg(path_), 5000);
+  return true;
+}
+
+bool MainWindow::exportMesh(const QString& path, int divisor) {
+  if (!viewport_->hasDocument()) return false;
+  if (!core::meshFormatFromPath(toPath(path))) {
+    showError(tr("Cannot export %1: use .obj, .ply, .stl or .off").arg(path));
+    return false;
+  }
+  auto snapshot = std::make_shared<core::GeometryImage>(viewport_->document().positions);
+  const QString error = runInBackground(
+      tr("Exporting %1…").arg(QFileInfo(path).fileName()), [snapshot, path, divisor] {
+        core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
+      });
+  if (!error.isEmpty()) {
+    showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::autosaveNow() {
+  if (!viewport_->hasDocument() || busy_) return false;
+  if (!isModified() || undoStack_->index() == autosavedIndex_) return true;
+  viewport_->endStroke();
+  auto snapshot = std::make_shared<core::Document>(viewport_->document());
+  const QString original = path_;
+  RecoveryStore* store = &recovery_;
+  const QString error = runInBackground(
+      tr("Autosaving…"), [snapshot, original, store] { store->save(*snapshot, original); });
+  if (!error.isEmpty()) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+    return false;
+  }
+  autosavedIndex_ = undoStack_->index();
+  return true;
+}
+
+void MainWindow::startSession() {
+  pending_ = recovery_.pending();
+  if (pending_ && options_.askAboutRecovery) {
+    const QString when = pending_->savedAt.toLocalTime().toString(Qt::TextDate);
+    const QString from =
+        pending_->originalPath.isEmpty() ? tr("an unsaved model") : pending_->originalPath;
+    const auto answer = QMessageBox::question(
+        this, tr("Recover unsaved work?"),
+        tr("Octaclay did not close properly last time. An autosave of %1 from %2 can be "
+           "recovered.\n\nRecover it?")
+            .arg(from, when),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+    if (answer == QMessageBox::Yes)
+      recover();
+    else
+      recovery_.discard();
+    pending_.reset();
+  }
+  if (!recovery_.beginSession())
+    statusBar()->showMessage(tr("Another Octaclay is running: autosave is off here"), 10000);
+  const int seconds = QSettings().value("autosave/seconds", options_.autosaveSeconds).toInt();
+  options_.autosaveSeconds = seconds;
+  if (seconds > 0) autosaveTimer_->start(seconds * 1000);
+}
+
+bool MainWindow::recover() {
+  if (!pending_) return false;
+  core::Document document;
+  const RecoveryStore::Pending pending = *pending_;
+  RecoveryStore* store = &recovery_;
+  const QString error = runInBackground(
+      tr("Recovering…"), [&document, pending, store] { document = store->load(pending); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not recover the autosave: %1").arg(error));
+    return false;
+  }
+  adoptDocument(std::move(document), pending.originalPath);
+  forceModified_ = true; // it differs from the file on disk until saved
+  pending_.reset();
+  updateTitle();
+  return true;
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+  QSettings settings;
+  QStringList files = settings.value("recentFiles").toStringList();
+  files.removeAll(path);
+  files.prepend(path);
+  while (files.size() > kMaxRecentFiles)
+    files.removeLast();
+  settings.setValue("recentFiles", files);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = QSettings().value("recentFiles").toStringList();
+  for (const QString& f : files)
+    connect(recentMenu_->addAction(f), &QAction::triggered, this, [this, f] {
+      if (maybeSave()) openDocument(f);
+    });
+  recentMenu_->setEnabled(!files.isEmpty());
+}
+
+bool MainWindow::maybeSave() {
+  if (!isModified()) return true;
+  const auto answer = QMessageBox::warning(
+      this, tr("Unsaved changes"), tr("The model has unsaved changes. Save them first?"),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Discard) return true;
+  const QString path = path_.isEmpty() ? choose(FileRequest::SaveAs) : path_;
+  return !path.isEmpty() && saveDocument(path);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  recovery_.endSession(); // a clean exit leaves nothing to recover
+  event->accept();
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,123 @@
+#pragma once
+
+#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/document.h"
+#include "recovery_store.h"
+
+#include <QMainWindow>
+#include <QPointer>
+#include <functional>
+#include <optional>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QTimer;
+class QUndoStack;
+
+namespace octaclay::app {
+
+class BrushPanel;
+class LayersPanel;
+class LodPanel;
+class ViewportWidget;
+
+/// The modeller's window: the viewport, the Brushes, Layers and Level of detail docks, the
+/// File/Edit/View menus, undo, the status bar, autosave and crash recovery.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+public:
+  struct Options {
+    QString recoveryFolder;       ///< empty: RecoveryStore::defaultFolder()
+    qint64 sessionPid = 0;        ///< 0: this process (tests simulate other sessions)
+    int autosaveSeconds = 120;    ///< 0 turns autosave off
+    bool askAboutRecovery = true; ///< false: pendingRecovery() is left for the caller
+  };
+  /// What a file chooser is asked for.
+  enum class FileRequest { Open, SaveAs, Export };
+
+  explicit MainWindow(Options options);
+  MainWindow() : MainWindow(Options{}) {}
+  ~MainWindow() override;
+
+  ViewportWidget* viewport() const { return viewport_; }
+  BrushPanel* brushPanel() const { return brushPanel_; }
+  LayersPanel* layersPanel() const { return layersPanel_; }
+  LodPanel* lodPanel() const { return lodPanel_; }
+  QUndoStack* undoStack() const { return undoStack_; }
+  QAction* action(const QString& objectName) const;
+
+  /// Replaces the file dialogs (tests, scripts): returns the chosen path or empty to cancel.
+  void setFileChooser(std::function<QString(FileRequest)> chooser) {
+    chooser_ = std::move(chooser);
+  }
+
+  /// A new document of this shape and size (made off the GUI thread). Asks about unsaved
+  /// changes first unless force.
+  bool newDocument(core::BaseShape shape, int n, bool force = false);
+  /// Reads path off the GUI thread with progress; on failure reports why and keeps the current
+  /// document. Does not ask about unsaved changes (the File menu does).
+  bool openDocument(const QString& path);
+  /// Saves atomically off the GUI thread; the document stays editable meanwhile.
+  bool saveDocument(const QString& path);
+  /// Writes the mesh at level N/divisor (OBJ, PLY, STL or OFF by extension).
+  bool exportMesh(const QString& path, int divisor);
+
+  QString currentPath() const { return path_; }
+  bool isModified() const;
+  /// The last error shown to the user (tests read it), empty if none since the last success.
+  QString lastError() const { return lastError_; }
+
+  /// Writes the recovery file now (the autosave timer calls this). Returns false on failure.
+  bool autosaveNow();
+  /// A recovery left by a session that crashed, found at start.
+  const std::optional<RecoveryStore::Pending>& pendingRecovery() const { return pending_; }
+  /// Loads the pending recovery as the current (modified) document.
+  bool recover();
+  /// Checks for a crashed session's recovery (asking the user when options say so) and starts
+  /// this session's autosave. Call once after show().
+  void startSession();
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+
+private:
+  void buildMenus();
+  void buildDocks();
+  void connectParts();
+  void updateStatus();
+  void updateTitle();
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  bool maybeSave();
+  void showError(const QString& message);
+  QString choose(FileRequest request);
+  void refreshBrushes();
+  /// Runs work off the GUI thread while the event loop (and a progress dialog after a short
+  /// delay) keeps the window responsive. Returns the work's error message, empty on success.
+  QString runInBackground(const QString& label, const std::function<void()>& work);
+  void adoptDocument(core::Document document, const QString& path);
+
+  Options options_;
+  ViewportWidget* viewport_ = nullptr;
+  BrushPanel* brushPanel_ = nullptr;
+  LayersPanel* layersPanel_ = nullptr;
+  LodPanel* lodPanel_ = nullptr;
+  QUndoStack* undoStack_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QLabel* fpsLabel_ = nullptr;
+  QLabel* dabLabel_ = nullptr;
+  QLabel* sizeLabel_ = nullptr;
+  QLabel* trianglesLabel_ = nullptr;
+  QTimer* autosaveTimer_ = nullptr;
+  std::function<QString(FileRequest)> chooser_;
+  RecoveryStore recovery_;
+  std::optional<RecoveryStore::Pending> pending_;
+  QString path_;
+  QString lastError_;
+  int autosavedIndex_ = -1; // undo index at the last autosave
+  bool busy_ = false;
+  bool forceModified_ = false; // a recovered document differs from any file
+};
+
+} // namespace octaclay::app

@@ -1,0 +1,84 @@
+#include "screenshot_script.h"
+
+#include "brush_panel.h"
+#include "main_window.h"
+#include "viewport_widget.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QtMath>
+#include <cstdio>
+
+namespace octaclay::app {
+namespace {
+
+void settle(int ms) {
+  QElapsedTimer t;
+  t.start();
+  while (t.elapsed() < ms)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+}
+
+// A stroke along a screen-space curve through the viewport centre.
+bool stroke(ViewportWidget& view, const QString& brush, float radius, float strength,
+            const std::function<QPointF(double)>& curve) {
+  BrushSettings settings = view.brushSettings();
+  settings.brushId = brush.toStdString();
+  settings.radius = radius;
+  settings.strength = strength;
+  settings.area = brush == "paint" ? gpu::AreaMode::Volume : settings.area;
+  view.setBrushSettings(settings);
+  view.beginStrokeAt(curve(0));
+  if (!view.stroking()) return false;
+  for (int k = 1; k <= 60; ++k) {
+    view.continueStrokeTo(curve(k / 60.0));
+    view.repaint();
+  }
+  view.endStroke();
+  return true;
+}
+
+} // namespace
+
+bool makeScreenshot(MainWindow& window, const QString& imagePath) {
+  ViewportWidget& view = *window.viewport();
+  QElapsedTimer wait;
+  wait.start();
+  while (!view.glReady() && wait.elapsed() < 10000)
+    settle(50);
+  if (!view.glReady()) {
+    std::fprintf(stderr, "octaclay: no OpenGL 4.3 context: %s\n", qPrintable(view.error()));
+    return false;
+  }
+  const QPointF c(view.width() / 2.0, view.height() / 2.0);
+  const double r = std::min(view.width(), view.height()) * 0.28;
+  bool ok = true;
+  window.brushPanel()->selectBrush("push");
+  ok = ok && stroke(view, "push", 0.035f, -0.05f, [&](double t) {
+         return c + QPointF(-r + 2 * r * t, 0.35 * r * std::sin(t * 2 * M_PI));
+       });
+  for (int k = 0; k < 3; ++k) {
+    const QPointF at = c + QPointF((k - 1) * 0.55 * r, -0.55 * r);
+    ok = ok && stroke(view, "inflate", 0.03f, 0.08f, [&](double t) {
+           return at + QPointF(3 * std::cos(t * 6), 3 * std::sin(t * 6));
+         });
+  }
+  ok = ok && stroke(view, "paint", 0.05f, 0.9f, [&](double t) {
+         return c +
+                QPointF(0.6 * r * std::cos(M_PI * (1 + t)), 0.6 * r * std::sin(M_PI * t) + 0.4 * r);
+       });
+  if (!ok) {
+    std::fprintf(stderr, "octaclay: a screenshot stroke failed: %s\n", qPrintable(view.error()));
+    return false;
+  }
+  settle(600); // status bar and panels catch up
+  const QImage image = window.grab().toImage();
+  if (!image.save(imagePath)) {
+    std::fprintf(stderr, "octaclay: cannot write %s\n", qPrintable(imagePath));
+    return false;
+  }
+  return true;
+}
+
+} // namespace octaclay::app
