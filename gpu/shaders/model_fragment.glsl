@@ -31,7 +31,8 @@ void main() {
   vec3 colour = albedo * (0.18 + 0.82 * lambert) + vec3(0.12 * specular);
   if (u_showBrush) {
     float d = length(v_position - u_brushCentre);
-    float width = max(fwidth(d) * 1.5, 1e-6);
+    // fwidth jumps at silhouettes (neighbouring pixels lie on far-apart surface): cap it.
+    float width = clamp(fwidth(d) * 1.5, 1e-6, 0.08 * u_brushRadius);
     float ring = 1.0 - smoothstep(0.5 * width, width, abs(d - u_brushRadius));
     colour = mix(colour, u_brushColour, ring);
   }

@@ -1,0 +1,356 @@
+// The modeller end to end, drawing through the real VTK viewport (xcb under Xvfb, llvmpipe):
+// pixels read back, synthetic mouse drags, undo, plugins, files and crash recovery.
+#include "brush_panel.h"
+#include "main_window.h"
+#include "octaclay/core/base_shapes.h"
+#include "viewport_widget.h"
+
+#include <QImage>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+using namespace octaclay;
+using app::MainWindow;
+
+namespace {
+
+// A PID no process has (checked by the recovery store's own tests): a "crashed" session.
+constexpr qint64 kDeadPid = 0x7ffffff0;
+
+std::vector<float> positionsOf(const MainWindow& w) {
+  const core::GeometryImage& image = w.viewport()->document().positions;
+  std::vector<float> out;
+  const int side = image.size() + 1;
+  out.reserve(std::size_t(side) * side * 4);
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const auto p = image.at(i, j);
+      out.insert(out.end(), {p.x, p.y, p.z, p.w});
+    }
+  return out;
+}
+
+bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+// The brush outline follows the cursor; a Leave event hides it, so images show only the model.
+void hideBrushOutline(QWidget* view) {
+  QEvent leave(QEvent::Leave);
+  QCoreApplication::sendEvent(view, &leave);
+}
+
+float luminance(QRgb c) {
+  return static_cast<float>(0.299 * qRed(c) + 0.587 * qGreen(c) + 0.114 * qBlue(c));
+}
+
+class ModellerRenderTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void init();
+  void cleanup();
+  void viewportRendersTheDefaultSphere();
+  void dragSculptsUnderTheCursorAndUndoRestoresBitExactly();
+  void fineBumpShowsInTheShadingAtLevelEighth();
+  void pluginDroppedInAtRunTimeAppearsWithItsForm();
+  void corruptFileFromTheFileMenuKeepsTheDocument();
+  void autosaveSurvivesACrashAndIsRecovered();
+
+private:
+  std::unique_ptr<MainWindow> makeWindow(MainWindow::Options options = {});
+  void stroke(MainWindow& w, const QString& brush, float radius, float strength, QPointF from,
+              QPointF to);
+
+  QTemporaryDir dir_;
+  QString pluginDir_;
+  std::unique_ptr<MainWindow> window_;
+};
+
+void ModellerRenderTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName("OctaclayTest");
+  QCoreApplication::setApplicationName("modeller_render_test");
+  pluginDir_ = dir_.filePath("plugins");
+  QVERIFY(QDir().mkpath(pluginDir_));
+  // Read by the brush catalog when the viewport's GL starts.
+  qputenv("OCTACLAY_PLUGIN_PATH", pluginDir_.toUtf8());
+  qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
+}
+
+void ModellerRenderTest::init() {
+  QSettings().clear();
+}
+void ModellerRenderTest::cleanup() {
+  window_.reset();
+}
+
+std::unique_ptr<MainWindow> ModellerRenderTest::makeWindow(MainWindow::Options options) {
+  if (options.recoveryFolder.isEmpty()) options.recoveryFolder = dir_.filePath("recovery");
+  options.askAboutRecovery = false;
+  options.autosaveSeconds = 0;
+  auto w = std::make_unique<MainWindow>(options);
+  w->resize(1000, 700);
+  w->show();
+  if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
+  if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
+  w->brushPanel()->selectBrush("push");
+  return w;
+}
+
+// A stroke as the mouse makes it: press, moves in small steps, release.
+void ModellerRenderTest::stroke(MainWindow& w, const QString& brush, float radius, float strength,
+                                QPointF from, QPointF to) {
+  QVERIFY(w.brushPanel()->selectBrush(brush));
+  w.brushPanel()->setRadius(radius);
+  w.brushPanel()->setStrength(strength);
+  QWidget* view = w.viewport();
+  QTest::mousePress(view, Qt::LeftButton, {}, from.toPoint());
+  for (int k = 1; k <= 10; ++k)
+    QTest::mouseMove(view, (from + (to - from) * (k / 10.0)).toPoint());
+  QTest::mouseRelease(view, Qt::LeftButton, {}, to.toPoint());
+}
+
+void ModellerRenderTest::viewportRendersTheDefaultSphere() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 1024, true));
+  QCOMPARE(window_->viewport()->document().size(), 1024);
+  const QImage image = window_->viewport()->grabFramebuffer();
+  QVERIFY(!image.isNull());
+  const int w = image.width(), h = image.height();
+  const QRgb centre = image.pixel(w / 2, h / 2);
+  // Background: the gradient's grey-blue, the same in both top corners, darker at the bottom.
+  const QRgb topLeft = image.pixel(2, 2), topRight = image.pixel(w - 3, 2);
+  const QRgb bottomLeft = image.pixel(2, h - 3);
+  QVERIFY(std::abs(luminance(topLeft) - luminance(topRight)) < 2);
+  QVERIFY(luminance(topLeft) > luminance(bottomLeft) + 20);
+  QVERIFY(qBlue(topLeft) > qRed(topLeft)); // the background is bluish, the clay is not
+  // The model covers the centre: clay is near grey and much brighter than the background there.
+  QVERIFY2(luminance(centre) > 150, qPrintable(QString::number(luminance(centre))));
+  QVERIFY(std::abs(qRed(centre) - qBlue(centre)) < 25);
+  // Shading varies: the headlit centre is brighter than near the silhouette, smoothly.
+  const int radiusPixels = [&] {
+    int x = w / 2;
+    while (x < w - 1 && std::abs(qRed(image.pixel(x, h / 2)) - qBlue(image.pixel(x, h / 2))) < 25 &&
+           luminance(image.pixel(x, h / 2)) > luminance(image.pixel(w - 3, h / 2)) + 10)
+      ++x;
+    return x - w / 2;
+  }();
+  QVERIFY2(radiusPixels > h / 6, qPrintable(QString::number(radiusPixels)));
+  const float nearRim = luminance(image.pixel(w / 2 + radiusPixels * 9 / 10, h / 2));
+  QVERIFY2(luminance(centre) - nearRim > 40,
+           qPrintable(QString("%1 vs %2").arg(luminance(centre)).arg(nearRim)));
+}
+
+void ModellerRenderTest::dragSculptsUnderTheCursorAndUndoRestoresBitExactly() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
+  app::ViewportWidget* view = window_->viewport();
+  const QPointF from(view->width() / 2.0 - 40, view->height() / 2.0);
+  const QPointF to(view->width() / 2.0 + 40, view->height() / 2.0);
+  const auto start = view->pickAt(from), end = view->pickAt(to);
+  QVERIFY(start && end);
+  // The surface under the cursor's path, where the dabs may be centred.
+  std::vector<core::Vec3f> path;
+  for (int k = 0; k <= 40; ++k) {
+    const auto hit = view->pickAt(from + (to - from) * (k / 40.0));
+    QVERIFY(hit);
+    path.push_back(hit->position);
+  }
+  const std::vector<float> before = positionsOf(*window_);
+
+  stroke(*window_, "push", 0.05f, 0.2f, from, to);
+  QCOMPARE(window_->undoStack()->count(), 1);
+  QVERIFY(window_->isModified());
+  const std::vector<float> after = positionsOf(*window_);
+  QVERIFY(!bitEqual(before, after));
+
+  // Every moved sample lies near the surface path the cursor swept: within a brush radius
+  // (0.05 of the unit sphere's bounding-box diagonal, 2√3), plus the push itself, which moves
+  // later dab centres off the original surface. And the samples under both ends moved.
+  const float reach = 0.05f * 3.4641f * 1.5f;
+  int moved = 0;
+  for (std::size_t k = 0; k < before.size(); k += 4) {
+    if (before[k] == after[k] && before[k + 1] == after[k + 1] && before[k + 2] == after[k + 2])
+      continue;
+    ++moved;
+    const core::Vec3f p{before[k], before[k + 1], before[k + 2]};
+    float nearest = 1e9f;
+    for (const core::Vec3f& q : path)
+      nearest = std::min(nearest, core::length(p - q));
+    QVERIFY2(nearest < reach, qPrintable(QString("a sample %1 from the path moved").arg(nearest)));
+  }
+  QVERIFY(moved > 100);
+  const int side = view->document().size() + 1;
+  auto movedAt = [&](core::Sample s) {
+    const std::size_t k = (std::size_t(s.j) * side + s.i) * 4;
+    return before[k] != after[k] || before[k + 1] != after[k + 1] || before[k + 2] != after[k + 2];
+  };
+  QVERIFY(movedAt(start->sample));
+  QVERIFY(movedAt(end->sample));
+
+  window_->action("actionUndo")->trigger();
+  QVERIFY(bitEqual(positionsOf(*window_), before));
+  QVERIFY(!window_->isModified());
+  window_->action("actionRedo")->trigger();
+  QVERIFY(bitEqual(positionsOf(*window_), after));
+}
+
+void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 1024, true));
+  app::ViewportWidget* view = window_->viewport();
+  view->setLevelDivisor(8);
+  QCOMPARE(view->stats().displayedTriangles, 2LL * 128 * 128);
+  const QImage plain = view->grabFramebuffer();
+  // One dab of a bump 1 % of the diagonal wide: about 9 samples of N = 1024, 1 displayed cell.
+  QVERIFY(window_->brushPanel()->selectBrush("inflate"));
+  window_->brushPanel()->setRadius(0.01f);
+  window_->brushPanel()->setStrength(0.5f);
+  const QPointF centre(view->width() / 2.0 + 15, view->height() / 2.0 - 10);
+  view->beginStrokeAt(centre);
+  QVERIFY(view->stroking());
+  view->endStroke();
+  QCOMPARE(window_->undoStack()->count(), 1);
+  hideBrushOutline(view);
+  const QImage bumped = view->grabFramebuffer();
+  int changed = 0, far = 0;
+  float largest = 0;
+  for (int y = 0; y < plain.height(); ++y)
+    for (int x = 0; x < plain.width(); ++x) {
+      const float d = std::abs(luminance(plain.pixel(x, y)) - luminance(bumped.pixel(x, y)));
+      if (d < 12) continue; // rasterization noise stays far below this
+      ++changed;
+      largest = std::max(largest, d);
+      if (std::hypot(x - centre.x(), y - centre.y()) > 60) ++far;
+    }
+  QVERIFY2(changed > 30 && largest > 40,
+           qPrintable(QString("%1 pixels changed, largest %2").arg(changed).arg(largest)));
+  QCOMPARE(far, 0); // the change is where the bump is
+  // Undo brings the image back (the normal map is refreshed too).
+  window_->action("actionUndo")->trigger();
+  hideBrushOutline(view);
+  const QImage undone = view->grabFramebuffer();
+  int differ = 0;
+  for (int y = 0; y < plain.height(); ++y)
+    for (int x = 0; x < plain.width(); ++x)
+      if (std::abs(luminance(plain.pixel(x, y)) - luminance(undone.pixel(x, y))) > 3) ++differ;
+  QCOMPARE(differ, 0);
+}
+
+void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  QVERIFY(!window_->brushPanel()->brushIds().contains("test-ridge"));
+  const std::filesystem::path source =
+      std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/examples/template-brush";
+  const std::filesystem::path target = std::filesystem::path(pluginDir_.toStdString()) / "ridge";
+  std::filesystem::create_directories(target);
+  std::filesystem::copy_file(source / "brush.glsl", target / "brush.glsl");
+  std::ifstream in(source / "manifest.json");
+  std::string manifest((std::istreambuf_iterator<char>(in)), {});
+  manifest.replace(manifest.find("\"template-brush\""), 16, "\"test-ridge\"");
+  std::ofstream(target / "manifest.json") << manifest;
+
+  // The window polls the brush folders once a second.
+  QTRY_VERIFY_WITH_TIMEOUT(window_->brushPanel()->brushIds().contains("test-ridge"), 8000);
+  QVERIFY(window_->brushPanel()->selectBrush("test-ridge"));
+  QWidget* height = window_->brushPanel()->parameterWidget("height");
+  QVERIFY(height);
+  QCOMPARE(height->metaObject()->className(), "QDoubleSpinBox");
+  QCOMPARE(window_->brushPanel()->settings().brushId, std::string("test-ridge"));
+  // And it sculpts.
+  const std::vector<float> before = positionsOf(*window_);
+  app::ViewportWidget* view = window_->viewport();
+  view->beginStrokeAt({view->width() / 2.0, view->height() / 2.0});
+  view->endStroke();
+  QVERIFY(!bitEqual(before, positionsOf(*window_)));
+  std::filesystem::remove_all(target);
+}
+
+void ModellerRenderTest::corruptFileFromTheFileMenuKeepsTheDocument() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Blob, 128, true));
+  app::ViewportWidget* view = window_->viewport();
+  stroke(*window_, "push", 0.05f, 0.2f, {view->width() / 2.0, view->height() / 2.0},
+         {view->width() / 2.0 + 20, view->height() / 2.0});
+  const QString saved = dir_.filePath("kept.exr");
+  QVERIFY(window_->saveDocument(saved));
+  const std::vector<float> before = positionsOf(*window_);
+
+  const QString garbage = dir_.filePath("garbage.exr");
+  std::ofstream(garbage.toStdString()) << "this is not an OpenEXR file";
+  const QString missing = dir_.filePath("missing.exr");
+  const QString foreign =
+      QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" +
+      QDir(QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0").entryList(QDir::Files).value(0);
+  for (const QString& bad : {garbage, missing, foreign}) {
+    window_->setFileChooser([&](MainWindow::FileRequest r) {
+      return r == MainWindow::FileRequest::Open ? bad : QString();
+    });
+    window_->action("actionOpen")->trigger();
+    QVERIFY2(!window_->lastError().isEmpty(), qPrintable(bad));
+    QVERIFY2(window_->lastError().contains(QFileInfo(bad).fileName()),
+             qPrintable(window_->lastError()));
+    QVERIFY(bitEqual(positionsOf(*window_), before));
+    QCOMPARE(window_->currentPath(), QFileInfo(saved).absoluteFilePath());
+    QCOMPARE(window_->undoStack()->count(), 1);
+  }
+  // The saved file itself opens and holds the stroke.
+  window_->setFileChooser([&](MainWindow::FileRequest) { return saved; });
+  window_->action("actionOpen")->trigger();
+  QVERIFY(window_->lastError().isEmpty());
+  QVERIFY(bitEqual(positionsOf(*window_), before));
+}
+
+void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
+  const QString folder = dir_.filePath("crash-recovery");
+  std::vector<float> stroked;
+  {
+    MainWindow::Options crashing;
+    crashing.recoveryFolder = folder;
+    crashing.sessionPid = kDeadPid; // this session "crashes": its lock outlives its process
+    std::unique_ptr<MainWindow> first = makeWindow(crashing);
+    QVERIFY(first);
+    first->startSession();
+    QVERIFY(!first->pendingRecovery());
+    QVERIFY(first->newDocument(core::BaseShape::Sphere, 128, true));
+    app::ViewportWidget* view = first->viewport();
+    stroke(*first, "inflate", 0.05f, 0.3f, {view->width() / 2.0, view->height() / 2.0},
+           {view->width() / 2.0 + 30, view->height() / 2.0 + 10});
+    stroke(*first, "paint", 0.06f, 0.8f, {view->width() / 2.0 - 30, view->height() / 2.0},
+           {view->width() / 2.0, view->height() / 2.0 + 30});
+    QCOMPARE(first->undoStack()->count(), 2);
+    QVERIFY(first->autosaveNow());
+    stroked = positionsOf(*first);
+    // The crash: the window goes away without closing, so the session never ends cleanly.
+  }
+  window_ = makeWindow({folder, 0, 0, false});
+  QVERIFY(window_);
+  window_->startSession();
+  QVERIFY(window_->pendingRecovery().has_value());
+  QVERIFY(window_->recover());
+  QVERIFY(bitEqual(positionsOf(*window_), stroked));
+  QVERIFY(!window_->viewport()->document().diffuse.uniform()); // the paint stroke came back
+  QVERIFY(window_->isModified());
+  QVERIFY(!window_->pendingRecovery());
+}
+
+} // namespace
+
+QTEST_MAIN(ModellerRenderTest)
+#include "modeller_render_test.moc"
