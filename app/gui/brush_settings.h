@@ -14,10 +14,10 @@ enum class PressureTarget { None, Radius, Strength };
 /// The brush the user has chosen and how: what the Brushes panel edits and the viewport uses.
 struct BrushSettings {
   std::string brushId;
-  float radius = 0.05f;   ///< fraction of the model's bounding-box diagonal, (0, 1]
-  float strength = 0.5f;  ///< fraction of the radius, [0, 1]
-  gpu::Falloff falloff = gpu::Falloff::Smooth;  ///< starts as the manifest's
-  gpu::AreaMode area = gpu::AreaMode::Volume;   ///< starts as the manifest's
+  float radius = 0.05f;  ///< fraction of the model's bounding-box diagonal, (0, 1]
+  float strength = 0.5f; ///< fraction of the radius, [0, 1]
+  gpu::Falloff falloff = gpu::Falloff::Smooth;            ///< starts as the manifest's
+  gpu::AreaMode area = gpu::AreaMode::Volume;             ///< starts as the manifest's
   std::map<std::string, std::array<float, 4>> parameters; ///< manifest parameter id → value
   PressureTarget pressureTarget = PressureTarget::Strength;
   float stabilizer = 0.0f; ///< lazy-mouse strength in [0, 1]; 0 follows the cursor exactly

@@ -5,9 +5,13 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QTimer>
+#include <cstdio>
 
 int main(int argc, char** argv) {
+  QElapsedTimer sinceStart;
+  sinceStart.start();
   QApplication app(argc, argv);
   QCoreApplication::setOrganizationName("Octaclay");
   QCoreApplication::setApplicationName("octaclay");
@@ -23,7 +27,9 @@ int main(int argc, char** argv) {
   QCommandLineOption size("size", "Size N of a new model (N+1 samples a side).", "N", "1024");
   QCommandLineOption screenshot(
       "screenshot", "Make a few strokes, save the window as an image and quit.", "image.png");
-  parser.addOptions({shape, size, screenshot});
+  QCommandLineOption startupTime("startup-time",
+                                 "Print the time from start to the first drawn frame, then quit.");
+  parser.addOptions({shape, size, screenshot, startupTime});
   parser.process(app);
 
   const auto baseShape = octaclay::core::parseBaseShape(parser.value(shape).toStdString());
@@ -39,7 +45,13 @@ int main(int argc, char** argv) {
   window.show();
   const QStringList args = parser.positionalArguments();
   if (args.isEmpty() || !window.openDocument(args.front())) window.newDocument(*baseShape, n, true);
-  if (parser.isSet(screenshot)) {
+  if (parser.isSet(startupTime)) {
+    QObject::connect(
+        window.viewport(), &octaclay::app::ViewportWidget::framePainted, &app, [&sinceStart] {
+          std::printf("first frame after %lld ms\n", static_cast<long long>(sinceStart.elapsed()));
+          QCoreApplication::exit(0);
+        });
+  } else if (parser.isSet(screenshot)) {
     const QString out = parser.value(screenshot);
     QTimer::singleShot(0, &window, [&window, out] {
       const bool ok = octaclay::app::makeScreenshot(window, out);

@@ -55,16 +55,16 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   const double r = std::min(view.width(), view.height()) * 0.28;
   bool ok = true;
   window.brushPanel()->selectBrush("push");
-  ok = ok && stroke(view, "push", 0.035f, -0.05f, [&](double t) {
+  ok = ok && stroke(view, "push", 0.035f, -0.35f, [&](double t) {
          return c + QPointF(-r + 2 * r * t, 0.35 * r * std::sin(t * 2 * M_PI));
        });
   for (int k = 0; k < 3; ++k) {
     const QPointF at = c + QPointF((k - 1) * 0.55 * r, -0.55 * r);
-    ok = ok && stroke(view, "inflate", 0.03f, 0.08f, [&](double t) {
+    ok = ok && stroke(view, "inflate", 0.03f, 0.5f, [&](double t) {
            return at + QPointF(3 * std::cos(t * 6), 3 * std::sin(t * 6));
          });
   }
-  ok = ok && stroke(view, "paint", 0.05f, 0.9f, [&](double t) {
+  ok = ok && stroke(view, "paint", 0.05f, 1.0f, [&](double t) {
          return c +
                 QPointF(0.6 * r * std::cos(M_PI * (1 + t)), 0.6 * r * std::sin(M_PI * t) + 0.4 * r);
        });

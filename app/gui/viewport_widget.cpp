@@ -34,6 +34,8 @@ namespace octaclay::app {
 
 struct ViewportWidget::ActiveStroke {
   std::string brushId;
+  float unit = 1;     // object units per radius fraction: the diagonal when the stroke began
+  float dabShare = 1; // share of the strength each dab applies (the brush's spacing)
   gpu::BrushManifest manifest; // the session refers to it
   float sign = 1;
   std::unique_ptr<gpu::StrokeSession> session;
@@ -77,6 +79,9 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   renderWindow_->SetFrameBlitModeToNoBlit();
   renderWindow_->SetReadyForRendering(false);
   renderWindow_->SetForceMaximumHardwareLineWidth(1);
+  // VTK's default 4x multisampling triples the frame time on a software rasterizer, and the
+  // model's per-pixel shading does not need it.
+  renderWindow_->SetMultiSamples(0);
   // VTK asks whether the widget's context is current, and to make it current; the trap is to
   // make it current again when it already is (Qt would rebind its framebuffer while VTK builds
   // its own, leaving VTK's with no attachments).
@@ -270,6 +275,7 @@ ViewportStats ViewportWidget::stats() const {
   s.framesPerSecond = static_cast<double>(std::count_if(frameTimes_.begin(), frameTimes_.end(),
                                                         [&](qint64 t) { return now - t <= 1000; }));
   s.lastDabMs = lastDabMs_;
+  s.dabs = dabCount_;
   if (hasDocument()) {
     s.n = document().size();
     s.fullTriangles = 2LL * s.n * s.n;
@@ -416,6 +422,7 @@ void ViewportWidget::paintGL() {
                                         size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
   state->Reset();
   if (dabbed || stroke_) emit statsChanged();
+  if (document_) emit framePainted();
 }
 
 // ---------------------------------------------------------------------------------- strokes
@@ -436,9 +443,14 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   stroke->brushId = id;
   stroke->manifest = std::move(*brush);
   stroke->sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
+  // Fixed for the stroke: a stroke that grows the model must not grow its own brush.
+  stroke->unit = diagonal();
+  // Strength means how far a stroke moves the surface per radius travelled, whatever the
+  // spacing: each dab applies strength × spacing, as overlapping dabs add up.
+  stroke->dabShare = std::clamp(stroke->manifest.spacing, 0.01f, 1.0f);
   gpu::StrokeSettings s;
   s.brush = id;
-  s.radius = settings_.radius * diagonal();
+  s.radius = settings_.radius * stroke->unit;
   s.strength = settings_.strength;
   s.symmetry = settings_.symmetry;
   if (id == settings_.brushId) s.parameters = settings_.parameters;
@@ -491,7 +503,8 @@ int ViewportWidget::runQueuedDabs() {
   const auto start = std::chrono::steady_clock::now();
   try {
     for (const auto& [sample, pressure] : stroke_->queue) {
-      float radius = settings_.radius * diagonal(), strength = settings_.strength;
+      float radius = settings_.radius * stroke_->unit;
+      float strength = settings_.strength * stroke_->dabShare;
       if (settings_.pressureTarget == PressureTarget::Radius)
         radius *= std::max(pressure, 0.05f);
       else if (settings_.pressureTarget == PressureTarget::Strength)
@@ -503,6 +516,7 @@ int ViewportWidget::runQueuedDabs() {
     fail(QString::fromUtf8(e.what()));
   }
   stroke_->queue.clear();
+  dabCount_ += made;
   if (made > 0)
     lastDabMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                      .count() /

@@ -34,6 +34,7 @@ class ModelProp;
 struct ViewportStats {
   double framesPerSecond = 0; ///< frames painted over the last second
   double lastDabMs = 0;       ///< engine time per dab of the last frame that dabbed
+  long long dabs = 0;         ///< dabs made since the viewport was created
   int n = 0;                  ///< the document's N
   long long displayedTriangles = 0, fullTriangles = 0;
 };
@@ -111,6 +112,8 @@ signals:
   void radiusStepRequested(float factor);
   void strengthStepRequested(float factor);
   void errorOccurred(const QString& message);
+  /// A frame showing the document was drawn.
+  void framePainted();
 
 protected:
   void initializeGL() override;
@@ -175,6 +178,7 @@ private:
   QElapsedTimer clock_;
   std::deque<qint64> frameTimes_;
   double lastDabMs_ = 0;
+  long long dabCount_ = 0;
 };
 
 } // namespace octaclay::app

@@ -6,6 +6,8 @@ uniform sampler2D u_diffuse;
 uniform sampler2D u_mask;
 uniform vec3 u_eye;
 uniform bool u_showDiffuse;
+uniform bool u_diffusePainted; // else every texel is u_diffuseFill
+uniform vec3 u_diffuseFill;
 uniform bool u_showMask;
 uniform bool u_showBrush;
 uniform vec3 u_brushCentre;
@@ -17,11 +19,13 @@ in vec2 v_uv;
 out vec4 o_colour;
 
 void main() {
-  vec3 n = texture(u_normals, v_uv).xyz;
+  vec3 n = texture(u_normals, v_uv).xyz * 2.0 - 1.0;
   n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);
   vec3 toEye = normalize(u_eye - v_position);
   if (dot(n, toEye) < 0.0 && !gl_FrontFacing) n = -n; // seen from inside
-  vec3 albedo = u_showDiffuse ? texture(u_diffuse, v_uv).rgb : vec3(0.8, 0.78, 0.74);
+  vec3 albedo = !u_showDiffuse     ? vec3(0.8, 0.78, 0.74)
+                : u_diffusePainted ? texture(u_diffuse, v_uv).rgb
+                                   : u_diffuseFill;
   if (u_showMask) {
     float blocked = 1.0 - clamp(texture(u_mask, v_uv).r, 0.0, 1.0);
     albedo = mix(albedo, vec3(0.15, 0.25, 0.9), 0.6 * blocked);

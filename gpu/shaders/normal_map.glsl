@@ -4,5 +4,5 @@ out vec4 o_normal;
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
-  o_normal = vec4(normalAt(t), 0.0);
+  o_normal = vec4(normalAt(t) * 0.5 + 0.5, 1.0); // RGBA8: unit vectors mapped to [0, 1]
 }

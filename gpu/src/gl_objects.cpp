@@ -20,6 +20,8 @@ FormatInfo info(TextureFormat format) {
     return {GL_RGBA16F, GL_RGBA};
   case TextureFormat::R32f:
     return {GL_R32F, GL_RED};
+  case TextureFormat::Rgba8:
+    return {GL_RGBA8, GL_RGBA};
   }
   return {GL_RGBA32F, GL_RGBA};
 }

@@ -85,7 +85,7 @@ long long ModelRenderer::displayedTriangles() const {
 void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects) {
   const int side = document.size() + 1;
   if (normals_.width() != side) {
-    normals_ = Texture(side, side, TextureFormat::Rgba16f);
+    normals_ = Texture(side, side, TextureFormat::Rgba8);
     glBindTexture(GL_TEXTURE_2D, normals_.id());
     // Linear: between the displayed vertices each pixel blends the four nearest full-res normals.
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -140,8 +140,12 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
   glUniform1i(p.uniform("u_imageSide"), n_ + 1);
   glUniform3f(p.uniform("u_eye"), view.eye.x, view.eye.y, view.eye.z);
+  // An unpainted layer is one value: a uniform, not a texture read per pixel.
+  const core::Document& d = document.document();
   glUniform1i(p.uniform("u_showDiffuse"), view.showDiffuse);
-  glUniform1i(p.uniform("u_showMask"), view.showMask);
+  glUniform1i(p.uniform("u_diffusePainted"), !d.diffuse.uniform());
+  glUniform3f(p.uniform("u_diffuseFill"), d.diffuse.fill[0], d.diffuse.fill[1], d.diffuse.fill[2]);
+  glUniform1i(p.uniform("u_showMask"), view.showMask && !d.mask.uniform());
   glUniform1i(p.uniform("u_showBrush"), view.showBrush);
   glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
               view.brushCentre.z);

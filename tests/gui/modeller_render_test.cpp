@@ -61,6 +61,7 @@ private slots:
   void viewportRendersTheDefaultSphere();
   void dragSculptsUnderTheCursorAndUndoRestoresBitExactly();
   void fineBumpShowsInTheShadingAtLevelEighth();
+  void modifiersKeysAndPenPressureShapeTheStroke();
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
   void corruptFileFromTheFileMenuKeepsTheDocument();
   void autosaveSurvivesACrashAndIsRecovered();
@@ -218,12 +219,14 @@ void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
   // One dab of a bump 1 % of the diagonal wide: about 9 samples of N = 1024, 1 displayed cell.
   QVERIFY(window_->brushPanel()->selectBrush("inflate"));
   window_->brushPanel()->setRadius(0.01f);
-  window_->brushPanel()->setStrength(0.5f);
+  window_->brushPanel()->setStrength(1.0f);
   const QPointF centre(view->width() / 2.0 + 15, view->height() / 2.0 - 10);
-  view->beginStrokeAt(centre);
-  QVERIFY(view->stroking());
-  view->endStroke();
-  QCOMPARE(window_->undoStack()->count(), 1);
+  for (int k = 0; k < 4; ++k) { // four dabs in place: a bump about a third as high as wide
+    view->beginStrokeAt(centre);
+    QVERIFY(view->stroking());
+    view->endStroke();
+  }
+  QCOMPARE(window_->undoStack()->count(), 4);
   hideBrushOutline(view);
   const QImage bumped = view->grabFramebuffer();
   int changed = 0, far = 0;
@@ -240,7 +243,8 @@ void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
            qPrintable(QString("%1 pixels changed, largest %2").arg(changed).arg(largest)));
   QCOMPARE(far, 0); // the change is where the bump is
   // Undo brings the image back (the normal map is refreshed too).
-  window_->action("actionUndo")->trigger();
+  for (int k = 0; k < 4; ++k)
+    window_->action("actionUndo")->trigger();
   hideBrushOutline(view);
   const QImage undone = view->grabFramebuffer();
   int differ = 0;
@@ -248,6 +252,80 @@ void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
     for (int x = 0; x < plain.width(); ++x)
       if (std::abs(luminance(plain.pixel(x, y)) - luminance(undone.pixel(x, y))) > 3) ++differ;
   QCOMPARE(differ, 0);
+}
+
+void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
+  app::ViewportWidget* view = window_->viewport();
+  const QPoint centre(view->width() / 2, view->height() / 2);
+  const auto hit = view->pickAt(centre);
+  QVERIFY(hit);
+  auto radial = [&] { // distance from the sphere's centre of the sample under the cursor
+    const auto p = view->document().positions.at(hit->sample.i, hit->sample.j);
+    return core::length(core::Vec3f{p.x, p.y, p.z});
+  };
+  QVERIFY(window_->brushPanel()->selectBrush("push"));
+  window_->brushPanel()->setRadius(0.05f);
+  window_->brushPanel()->setStrength(1.0f);
+  auto click = [&](Qt::KeyboardModifiers mods) {
+    QTest::mousePress(view, Qt::LeftButton, mods, centre);
+    QTest::mouseRelease(view, Qt::LeftButton, mods, centre);
+  };
+  // push raises along the normal; Ctrl pulls back by the same amount; two undoable strokes.
+  const float r0 = radial();
+  click({});
+  const float pushed = radial();
+  QVERIFY2(pushed > r0 + 0.01f, qPrintable(QString("%1 -> %2").arg(r0).arg(pushed)));
+  click(Qt::ControlModifier);
+  QVERIFY2(std::abs(radial() - r0) < 0.002f, qPrintable(QString::number(radial() - r0)));
+  QCOMPARE(window_->undoStack()->count(), 2);
+  // Shift smooths instead of pushing: it lowers a fresh bump's top.
+  click({});
+  const float bumped = radial();
+  QVERIFY(bumped > r0 + 0.01f);
+  const std::vector<float> beforeSmooth = positionsOf(*window_);
+  click(Qt::ShiftModifier);
+  QCOMPARE(window_->undoStack()->text(window_->undoStack()->count() - 1),
+           QString("Stroke (smooth)"));
+  QVERIFY(!bitEqual(beforeSmooth, positionsOf(*window_)));
+  QVERIFY(radial() <= bumped); // smoothing never lifts a bump's top
+
+  // [ and ] scale the radius, Shift+[ and Shift+] the strength.
+  const float radius = window_->brushPanel()->radius();
+  QTest::keyClick(view, Qt::Key_BracketRight);
+  QVERIFY(std::abs(window_->brushPanel()->radius() - radius * 1.1f) < 1e-3f);
+  QTest::keyClick(view, Qt::Key_BracketLeft);
+  QTest::keyClick(view, Qt::Key_BracketLeft);
+  QVERIFY(window_->brushPanel()->radius() < radius);
+  window_->brushPanel()->setStrength(0.5f);
+  const float strength = window_->brushPanel()->strength();
+  QTest::keyClick(view, Qt::Key_BraceRight, Qt::ShiftModifier);
+  QVERIFY(std::abs(window_->brushPanel()->strength() - strength * 1.1f) < 1e-3f);
+  QTest::keyClick(view, Qt::Key_BracketLeft, Qt::ShiftModifier);
+  QVERIFY(std::abs(window_->brushPanel()->strength() - strength) < 1e-3f);
+
+  // Pen pressure scales strength: a dab at pressure 0.25 moves a quarter as far.
+  window_->brushPanel()->setRadius(0.05f);
+  window_->brushPanel()->setStrength(1.0f);
+  window_->brushPanel()->setPressureTarget(app::PressureTarget::Strength);
+  auto penDab = [&](qreal pressure) {
+    const QPointingDevice* pen = QPointingDevice::primaryPointingDevice();
+    QTabletEvent press(QEvent::TabletPress, pen, QPointF(centre), QPointF(centre), pressure, 0, 0,
+                       0, 0, 0, {}, Qt::LeftButton, Qt::LeftButton);
+    QCoreApplication::sendEvent(view, &press);
+    const float r = radial();
+    QTest::mousePress(view, Qt::LeftButton, {}, centre);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, centre);
+    QTabletEvent release(QEvent::TabletRelease, pen, QPointF(centre), QPointF(centre), 0, 0, 0, 0,
+                         0, 0, {}, Qt::LeftButton, Qt::NoButton);
+    QCoreApplication::sendEvent(view, &release);
+    return radial() - r;
+  };
+  const float full = penDab(1.0), light = penDab(0.25);
+  QVERIFY2(full > 0.01f && std::abs(light / full - 0.25f) < 0.05f,
+           qPrintable(QString("full %1, light %2").arg(full).arg(light)));
 }
 
 void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {

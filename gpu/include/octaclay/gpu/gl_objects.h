@@ -11,6 +11,7 @@ enum class TextureFormat {
   Rgba32f, ///< positions (xyz) + saliency (w): float32 so edits round-trip bit-exactly
   Rgba16f, ///< diffuse colour
   R32f,    ///< single-channel float data
+  Rgba8,   ///< unit vectors stored as v/2 + 1/2 (the normal map): a quarter of the bytes to sample
 };
 
 /// A rectangle of texels: origin (x, y), size (width, height).
