@@ -66,8 +66,9 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   QSurfaceFormat format = QSurfaceFormat::defaultFormat();
   format.setVersion(4, 3); // the brush engine's compute-free passes need 4.3 core (SSBOs)
   format.setProfile(QSurfaceFormat::CoreProfile);
-  format.setDepthBufferSize(24);
-  format.setStencilBufferSize(8);
+  // VTK renders into its own framebuffer with depth; the widget's only receives the colour blit.
+  format.setDepthBufferSize(0);
+  format.setStencilBufferSize(0);
   format.setSwapInterval(0); // frames/s are measured, not capped by vsync
   setFormat(format);
   setFocusPolicy(Qt::StrongFocus);
@@ -90,9 +91,9 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   renderWindow_->AddObserver(vtkCommand::WindowMakeCurrentEvent, this,
                              &ViewportWidget::onRenderWindowEvent);
   renderWindow_->AddRenderer(renderer_);
-  renderer_->GradientBackgroundOn();
-  renderer_->SetBackground(0.20, 0.21, 0.24);
-  renderer_->SetBackground2(0.42, 0.44, 0.48);
+  // A plain clear: a gradient is one more full-screen pass per frame on a software rasterizer.
+  renderer_->SetBackground(0.27, 0.29, 0.33);
+  renderer_->SetBackgroundAlpha(1.0); // Qt composes the widget with its alpha
   renderer_->AddViewProp(prop_);
   prop_->draw = [this](vtkRenderer* r) { drawModel(r); };
 }
@@ -379,7 +380,9 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_CULL_FACE);
+  // A closed surface never shows its back faces: culling halves what the rasterizer sees.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
   try {
     model_->draw(*document_, view);
   } catch (const std::exception& e) {
@@ -387,6 +390,7 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   }
   // What VTK believes is bound is no longer so.
   renderWindow_->GetShaderCache()->ReleaseCurrentShader();
+  state->vtkglDisable(GL_CULL_FACE);
   state->ResetGLActiveTexture();
 }
 

@@ -1,5 +1,6 @@
 #include "octaclay/gpu/model_renderer.h"
 
+#include "model_chunks.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 #include "shader_sources.h"
@@ -35,7 +36,8 @@ void bindTexture(int unit, const Texture& texture) {
 ModelRenderer::ModelRenderer()
     : normalProgram_("normal map", rectsVertexShader(), normalPassSource()),
       drawProgram_("model", detail::builtInShader("model_vertex.glsl"),
-                   detail::builtInShader("model_fragment.glsl")) {
+                   detail::builtInShader("model_fragment.glsl")),
+      chunks_(std::make_unique<detail::ModelChunks>()) {
   glGenVertexArrays(1, &vertexArray_);
   glGenBuffers(1, &indexBuffer_);
   checkGlError("creating the model's vertex array");
@@ -52,20 +54,9 @@ void ModelRenderer::setLevel(int n, int divisor) {
                       "level N/" + std::to_string(divisor) + " of N = " + std::to_string(n) +
                           " is not a power-of-two level with at least 2 cells a side");
   if (n == n_ && divisor == divisor_) return;
-  const int m = n / divisor;
-  const int half = m / 2;
-  std::vector<std::uint32_t> indices;
-  indices.reserve(6 * static_cast<std::size_t>(m) * static_cast<std::size_t>(m));
-  auto at = [m](int i, int j) { return static_cast<std::uint32_t>(j * (m + 1) + i); };
-  // The split of core::extractMesh: diagonals follow the octahedron's faces.
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      if ((i < half) == (j < half))
-        indices.insert(indices.end(), {a, b, d, b, c, d});
-      else
-        indices.insert(indices.end(), {a, b, c, a, c, d});
-    }
+  chunks_->reset(n, divisor);
+  chunksStale_ = true;
+  const std::vector<std::uint32_t> indices = chunks_->indices();
   glBindVertexArray(vertexArray_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER,
@@ -97,6 +88,7 @@ void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::
     return;
   }
   if (rects.empty()) return;
+  if (!chunksStale_ && n_ == document.size()) chunks_->update(document.document().positions, rects);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
@@ -152,8 +144,22 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glUniform1f(p.uniform("u_brushRadius"), view.brushRadius);
   glUniform3f(p.uniform("u_brushColour"), view.brushColour[0], view.brushColour[1],
               view.brushColour[2]);
+  if (chunksStale_) {
+    chunks_->update(document.document().positions);
+    chunksStale_ = false;
+  }
+  std::vector<std::intptr_t> offsets;
+  std::vector<int> counts;
+  chunks_->visibleRanges(view.eye, offsets, counts);
+  std::vector<const void*> starts;
+  drawnTriangles_ = 0;
+  for (std::size_t k = 0; k < offsets.size(); ++k) {
+    starts.push_back(reinterpret_cast<const void*>(offsets[k]));
+    drawnTriangles_ += counts[k] / 3;
+  }
   glBindVertexArray(vertexArray_);
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
+  glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, starts.data(),
+                      static_cast<GLsizei>(counts.size()));
   glBindVertexArray(0);
   for (int unit = 3; unit >= 0; --unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));

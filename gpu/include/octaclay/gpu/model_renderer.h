@@ -6,9 +6,13 @@
 #include "octaclay/gpu/gpu_document.h"
 
 #include <array>
+#include <memory>
 #include <span>
 
 namespace octaclay::gpu {
+namespace detail {
+class ModelChunks;
+}
 
 /// What a frame shows and from where.
 struct ModelView {
@@ -47,9 +51,12 @@ public:
   /// Recomputes the whole normal map (a new or reloaded document).
   void refreshAllNormals(GpuDocument& document);
 
-  /// Draws into the bound framebuffer with the current viewport, depth-tested. Leaves the
-  /// program, vertex array and texture units 0–3 unbound.
+  /// Draws into the bound framebuffer with the current viewport, depth-tested, skipping chunks
+  /// of the level that wholly face away from view.eye. Leaves the program, vertex array and
+  /// texture units 0–3 unbound.
   void draw(GpuDocument& document, const ModelView& view);
+  /// Triangles the last draw() sent to the rasterizer (after chunk culling).
+  long long drawnTriangles() const { return drawnTriangles_; }
 
 private:
   Program normalProgram_, drawProgram_;
@@ -57,7 +64,9 @@ private:
   Texture normals_;
   unsigned vertexArray_ = 0, indexBuffer_ = 0;
   int n_ = 0, divisor_ = 0;
-  long long indexCount_ = 0;
+  long long indexCount_ = 0, drawnTriangles_ = 0;
+  std::unique_ptr<detail::ModelChunks> chunks_;
+  bool chunksStale_ = true;
 };
 
 } // namespace octaclay::gpu
