@@ -315,7 +315,8 @@ QString MainWindow::runInBackground(const QString& label, const std::function<vo
   connect(&watcher, &QFutureWatcher<void>::finished, &loop, &QEventLoop::quit);
   QProgressDialog progress(label, QString(), 0, 0, this);
   progress.setWindowModality(Qt::WindowModal); // no edits while the document is in flight
-  progress.setMinimumDuration(400);
+  progress.setMinimumDuration(0);
+  progress.cancel(); // QProgressDialog shows itself at construction otherwise: wait as below
   watcher.setFuture(QtConcurrent::run([work, error] {
     try {
       work();
@@ -323,6 +324,10 @@ QString MainWindow::runInBackground(const QString& label, const std::function<vo
       *error = QString::fromUtf8(e.what());
     }
   }));
+  // Work a person would notice (over 100 ms) gets the dialog; quick work never flashes it.
+  QTimer::singleShot(100, &progress, [&progress, &watcher] {
+    if (!watcher.isFinished()) progress.show();
+  });
   if (!watcher.isFinished()) loop.exec();
   busy_ = false;
   return *error;

@@ -6,8 +6,10 @@
 #include "viewport_widget.h"
 
 #include <QImage>
+#include <QProgressDialog>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 #include <cmath>
@@ -65,6 +67,7 @@ private slots:
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
   void corruptFileFromTheFileMenuKeepsTheDocument();
   void autosaveSurvivesACrashAndIsRecovered();
+  void largeDocumentsLoadAndSaveWithProgressWhileTheWindowResponds();
 
 private:
   std::unique_ptr<MainWindow> makeWindow(MainWindow::Options options = {});
@@ -426,6 +429,37 @@ void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
   QVERIFY(!window_->viewport()->document().diffuse.uniform()); // the paint stroke came back
   QVERIFY(window_->isModified());
   QVERIFY(!window_->pendingRecovery());
+}
+
+void ModellerRenderTest::largeDocumentsLoadAndSaveWithProgressWhileTheWindowResponds() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  // Ticks of a GUI-thread timer and sightings of the progress dialog while the work runs.
+  int ticks = 0, progressSeen = 0;
+  QTimer probe;
+  QObject::connect(&probe, &QTimer::timeout, [&] {
+    ++ticks;
+    for (QProgressDialog* p : window_->findChildren<QProgressDialog*>())
+      if (p->isVisible()) ++progressSeen;
+  });
+  probe.start(20);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 4096, true));
+  QCOMPARE(window_->viewport()->document().size(), 4096);
+  const QString path = dir_.filePath("large.exr");
+  ticks = progressSeen = 0;
+  QVERIFY(window_->saveDocument(path));
+  QVERIFY2(ticks > 5 && progressSeen > 0,
+           qPrintable(QString("save: %1 ticks, progress seen %2").arg(ticks).arg(progressSeen)));
+  QVERIFY(window_->newDocument(core::BaseShape::Cube, 64, true));
+  ticks = progressSeen = 0;
+  QVERIFY(window_->openDocument(path));
+  QVERIFY2(ticks > 5 && progressSeen > 0,
+           qPrintable(QString("open: %1 ticks, progress seen %2").arg(ticks).arg(progressSeen)));
+  QCOMPARE(window_->viewport()->document().size(), 4096);
+  ticks = 0;
+  QVERIFY(window_->exportMesh(dir_.filePath("large.ply"), 4));
+  QVERIFY(ticks > 0);
+  QVERIFY(QFileInfo(dir_.filePath("large.ply")).size() > 1 << 20);
 }
 
 } // namespace
