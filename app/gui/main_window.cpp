@@ -22,6 +22,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QFutureWatcher>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -32,6 +33,7 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
+#include <cmath>
 #include <memory>
 
 namespace octaclay::app {
@@ -160,11 +162,26 @@ void MainWindow::buildMenus() {
             const QString path = choose(FileRequest::SaveAs);
             if (!path.isEmpty()) saveDocument(path);
           });
-  connect(add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
-          &QAction::triggered, this, [this] {
-            const QString path = choose(FileRequest::Export);
-            if (!path.isEmpty()) exportMesh(path, lodPanel_->divisor());
-          });
+  connect(
+      add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
+      &QAction::triggered, this, [this] {
+        const QString path = choose(FileRequest::Export);
+        if (path.isEmpty() || !viewport_->hasDocument()) return;
+        int divisor = lodPanel_->divisor();
+        if (!chooser_) { // interactive: ask which level, offering the displayed one
+          const int n = viewport_->document().size();
+          QStringList levels;
+          for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
+            levels << tr("N/%1 (%2, %3 triangles)").arg(d).arg(n / d).arg(2LL * (n / d) * (n / d));
+          bool ok = false;
+          const QString level =
+              QInputDialog::getItem(this, tr("Export mesh"), tr("Level of detail"), levels,
+                                    static_cast<int>(std::log2(divisor)), false, &ok);
+          if (!ok) return;
+          divisor = 1 << levels.indexOf(level);
+        }
+        exportMesh(path, divisor);
+      });
   file->addSeparator();
   connect(add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit), &QAction::triggered, this,
           &QWidget::close);
