@@ -5,6 +5,7 @@ uniform sampler2D u_positions; // RGBA32F: xyz position, w saliency
 uniform sampler2D u_layer;     // the layer this pass writes (== u_positions for positions)
 uniform sampler2D u_mask;      // R: 1 = full effect, 0 = blocked (read only if BRUSH_MASK_TEXTURE)
 uniform float u_maskFill;      // the mask's value everywhere while it is unpainted
+uniform vec4 u_layerFill;      // the written layer's base value (erase modes return to it)
 uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
 uniform int u_falloffCurveSize;
 uniform int u_size;            // N: the image has (N+1)^2 samples

@@ -134,8 +134,25 @@ GLint location(const Program& program, const char* name) {
   return program.uniform(name);
 }
 
+const core::Layer* documentLayer(const core::Document& d, BrushLayer layer) {
+  switch (layer) {
+  case BrushLayer::Diffuse:
+    return &d.diffuse;
+  case BrushLayer::Feature:
+    return &d.feature;
+  case BrushLayer::Mask:
+    return &d.mask;
+  case BrushLayer::Positions:
+    break;
+  }
+  return nullptr;
+}
+
 void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
-                 const Dab& dab) {
+                 BrushLayer layer, const Dab& dab) {
+  // The layer's base value (what a new document holds): erase modes blend back to it.
+  if (const core::Layer* l = documentLayer(doc.document(), layer))
+    glUniform4f(location(program, "u_layerFill"), l->fill[0], l->fill[1], l->fill[2], l->fill[3]);
   glUniform1i(location(program, "u_positions"), 0);
   glUniform1i(location(program, "u_layer"), 1);
   glUniform1i(location(program, "u_mask"), 2);
@@ -305,7 +322,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     const Program& pass = program(brush, layer, maskTexture);
     document.scratch(layer).bindAsTarget();
     pass.use();
-    setUniforms(pass, brush.manifest, document, dab);
+    setUniforms(pass, brush.manifest, document, layer, dab);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Positions).id());
     glActiveTexture(GL_TEXTURE1);
