@@ -7,6 +7,7 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
+#include "octaclay/core/textured_export.h"
 #include "octaclay/gpu/brush_library.h"
 #include "stroke_command.h"
 #include "viewport_widget.h"
@@ -318,7 +319,7 @@ QString MainWindow::choose(FileRequest request) {
                                         tr("Octaclay documents (*.exr)"));
   case FileRequest::Export:
     return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
-                                        tr("Meshes (*.obj *.ply *.stl *.off)"));
+                                        tr("Meshes (*.obj *.glb *.ply *.stl *.off)"));
   }
   return {};
 }
@@ -420,15 +421,30 @@ bool MainWindow::saveDocument(const QString& path) {
 
 bool MainWindow::exportMesh(const QString& path, int divisor) {
   if (!viewport_->hasDocument()) return false;
-  if (!core::meshFormatFromPath(toPath(path))) {
-    showError(tr("Cannot export %1: use .obj, .ply, .stl or .off").arg(path));
+  // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  const bool obj = suffix == "obj", glb = suffix == "glb";
+  if (!obj && !glb && !core::meshFormatFromPath(toPath(path))) {
+    showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
     return false;
   }
-  auto snapshot = std::make_shared<core::GeometryImage>(viewport_->document().positions);
-  const QString error = runInBackground(
-      tr("Exporting %1…").arg(QFileInfo(path).fileName()), [snapshot, path, divisor] {
-        core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
-      });
+  std::function<void()> work;
+  if (obj || glb) {
+    viewport_->endStroke();
+    auto snapshot = std::make_shared<core::Document>(viewport_->document());
+    work = [snapshot, path, divisor, obj] {
+      if (obj)
+        core::writeTexturedObj(*snapshot, divisor, toPath(path));
+      else
+        core::writeGlb(*snapshot, divisor, toPath(path));
+    };
+  } else {
+    auto snapshot = std::make_shared<core::GeometryImage>(viewport_->document().positions);
+    work = [snapshot, path, divisor] {
+      core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
+    };
+  }
+  const QString error = runInBackground(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
     showError(tr("Could not export %1: %2").arg(path, error));
     return false;
