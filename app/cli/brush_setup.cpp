@@ -15,4 +15,15 @@ gpu::BrushCatalog scanBrushes() {
   return catalog;
 }
 
+std::filesystem::path builtInMaterialFolder() {
+  if (const char* folder = std::getenv("OCTACLAY_BUILTIN_MATERIALS")) return folder;
+  return OCTACLAY_SOURCE_MATERIALS;
+}
+
+gpu::MaterialCatalog scanMaterials() {
+  gpu::MaterialCatalog catalog;
+  catalog.scan(gpu::MaterialCatalog::defaultSearchPath(builtInMaterialFolder()));
+  return catalog;
+}
+
 } // namespace octaclay::app

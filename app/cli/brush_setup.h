@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/gpu/brush_catalog.h"
+#include "octaclay/gpu/material_catalog.h"
 
 #include <filesystem>
 
@@ -12,5 +13,11 @@ std::filesystem::path builtInBrushFolder();
 
 /// Every brush on the search path (built-in, OCTACLAY_PLUGIN_PATH, the user's data folder).
 gpu::BrushCatalog scanBrushes();
+
+/// The built-in materials' folder: $OCTACLAY_BUILTIN_MATERIALS, else the source tree's
+/// resources/materials.
+std::filesystem::path builtInMaterialFolder();
+/// Every material on the search path (built-in, OCTACLAY_MATERIAL_PATH, the user's folder).
+gpu::MaterialCatalog scanMaterials();
 
 } // namespace octaclay::app

@@ -82,6 +82,8 @@ std::array<float, 4> parseParameter(const gpu::BrushManifest& brush, const std::
     if (c.size() == 3) v[3] = 1;
     return v;
   }
+  case gpu::ParameterType::Material: // resolved against the loaded materials later
+    return v;
   case gpu::ParameterType::Float:
   case gpu::ParameterType::Int:
     v[0] = numbers(text, ',').at(0);
@@ -91,6 +93,35 @@ std::array<float, 4> parseParameter(const gpu::BrushManifest& brush, const std::
     return v;
   }
   return v;
+}
+
+// Uploads the materials when the brush has a material parameter, and turns --param
+// material=<id> into the engine's index for that material.
+void loadMaterialsFor(const gpu::BrushManifest& brush, gpu::BrushEngine& engine,
+                      std::map<std::string, std::array<float, 4>>& parameters,
+                      const std::vector<std::string>& given) {
+  const bool needed = std::any_of(brush.parameters.begin(), brush.parameters.end(),
+                                  [](auto& p) { return p.type == gpu::ParameterType::Material; });
+  if (!needed) return;
+  const gpu::MaterialCatalog catalog = scanMaterials();
+  for (const std::string& e : catalog.errors())
+    std::cerr << "octaclay-cli: skipped a material: " << e << "\n";
+  engine.setMaterials(catalog);
+  for (const gpu::BrushParameter& p : brush.parameters) {
+    if (p.type != gpu::ParameterType::Material) continue;
+    std::string id = p.options.front();
+    for (const std::string& g : given)
+      if (g.rfind(p.id + "=", 0) == 0) id = g.substr(p.id.size() + 1);
+    const int index = engine.materialIndex(id);
+    if (index < 0) {
+      std::string known;
+      for (const std::string& m : engine.materialIds())
+        known += (known.empty() ? "" : ", ") + m;
+      badArgument("--param " + p.id + ": no material '" + id +
+                  "' (installed: " + (known.empty() ? "none" : known) + ")");
+    }
+    parameters[p.id] = {static_cast<float>(index), 0, 0, 0};
+  }
 }
 
 unsigned parseSymmetry(const std::string& text) {
@@ -112,7 +143,7 @@ unsigned parseSymmetry(const std::string& text) {
 
 Command addStrokeCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, brush, path, symmetry;
+    std::string input, output, brush, path, symmetry, view;
     std::vector<std::string> params;
     float radius = 0.1f, strength = 0.5f, spacing = 0;
     bool json = false;
@@ -131,6 +162,9 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("--spacing", opt->spacing,
                   "Between dabs, fraction of the radius (default: the brush's)");
   sub->add_option("--symmetry", opt->symmetry, "Mirror planes through the model's centre: x, y, z");
+  sub->add_option("--view", opt->view,
+                  "Camera eye x,y,z: splats project from it through each dab's centre "
+                  "(default: along the centre normal)");
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
@@ -164,9 +198,16 @@ Command addStrokeCommand(CLI::App& app) {
                   parseParameter(*brush, p.substr(0, eq), p.substr(eq + 1));
             }
 
+            if (!opt->view.empty()) {
+              const std::vector<float> eye = numbers(opt->view, ',');
+              if (eye.size() != 3) badArgument("--view takes the camera eye as x,y,z");
+              settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
+            }
+
             core::Document document = core::readDocument(opt->input);
             const gpu::GlContext context = gpu::GlContext::createHeadless();
             gpu::BrushEngine engine;
+            loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
             engine.load(*brush, gpu::BrushCatalog::shaderSource(*brush));
             gpu::GpuDocument gpuDocument(std::move(document));
             settings.radius = opt->radius * gpuDocument.bounds().diagonal();

@@ -125,6 +125,8 @@ std::array<float, 4> fitParameter(const gpu::BrushParameter& parameter, std::arr
     for (std::size_t c = 0; c < 4; ++c)
       v[c] = clampFinite(v[c], 0.0f, 1.0f, d[c]);
     return v;
+  case gpu::ParameterType::Material: // an index into the installed materials
+    return {std::isfinite(v[0]) && v[0] >= 0 ? std::round(v[0]) : d[0], 0.0f, 0.0f, 0.0f};
   }
   return d;
 }
@@ -453,12 +455,22 @@ const BrushPanel::BrushValues& BrushPanel::currentValues() const {
   return it != values_.end() ? it->second : noBrush_;
 }
 
+void BrushPanel::setMaterials(QStringList ids) {
+  if (ids == materials_) return;
+  materials_ = std::move(ids);
+  rebuildForm();
+}
+
 BrushPanel::BrushValues BrushPanel::defaultValues(const gpu::BrushManifest& brush) const {
   BrushValues v;
   v.falloff = brush.falloff;
   v.area = brush.area;
-  for (const gpu::BrushParameter& p : brush.parameters)
+  for (const gpu::BrushParameter& p : brush.parameters) {
     v.parameters[p.id] = p.defaultValue;
+    if (p.type == gpu::ParameterType::Material)
+      v.parameters[p.id][0] = static_cast<float>(
+          std::max<qsizetype>(0, materials_.indexOf(QString::fromStdString(p.options.front()))));
+  }
   return v;
 }
 
@@ -508,6 +520,10 @@ BrushPanel::BrushValues BrushPanel::loadValues(const gpu::BrushManifest& brush) 
       if (option != p.options.end()) value[0] = static_cast<float>(option - p.options.begin());
       break;
     }
+    case gpu::ParameterType::Material: // stored by id: the installed materials may change
+      if (const qsizetype index = materials_.indexOf(stored.toString()); index >= 0)
+        value[0] = static_cast<float>(index);
+      break;
     }
   }
   return v;
@@ -567,6 +583,11 @@ void BrushPanel::saveValues(const QString& id) const {
       const auto index = static_cast<std::size_t>(std::lround(x[0]));
       if (index < p.options.size())
         settings.setValue(key, QString::fromStdString(p.options[index]));
+      break;
+    }
+    case gpu::ParameterType::Material: {
+      const auto index = static_cast<qsizetype>(std::lround(x[0]));
+      if (index >= 0 && index < materials_.size()) settings.setValue(key, materials_[index]);
       break;
     }
     }
@@ -825,6 +846,16 @@ QWidget* BrushPanel::makeParameterWidget(const gpu::BrushParameter& parameter,
     auto* combo = makeCombo();
     for (const std::string& option : parameter.options)
       combo->addItem(QString::fromStdString(option));
+    combo->setCurrentIndex(static_cast<int>(std::lround(value[0])));
+    connect(combo, &QComboBox::currentIndexChanged, this, [store](int index) {
+      if (index >= 0) store({static_cast<float>(index), 0.0f, 0.0f, 0.0f});
+    });
+    widget = combo;
+    break;
+  }
+  case gpu::ParameterType::Material: {
+    auto* combo = makeCombo();
+    combo->addItems(materials_);
     combo->setCurrentIndex(static_cast<int>(std::lround(value[0])));
     connect(combo, &QComboBox::currentIndexChanged, this, [store](int index) {
       if (index >= 0) store({static_cast<float>(index), 0.0f, 0.0f, 0.0f});

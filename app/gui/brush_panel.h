@@ -70,6 +70,9 @@ public:
   /// brush selected if it still exists, else selects "push" if present, else the first listed.
   /// Rebuilds the form and emits settingsChanged.
   void setBrushes(std::vector<gpu::BrushManifest> brushes, std::vector<std::string> errors);
+  /// The installed materials' ids, in the engine's order: a material parameter's value is an
+  /// index into them.
+  void setMaterials(QStringList ids);
 
   /// The current brush and all its values, plus the stroke options. brushId is empty when no
   /// brush is loaded.
@@ -140,6 +143,7 @@ private:
   void valuesEdited();
 
   std::vector<gpu::BrushManifest> brushes_;
+  QStringList materials_;
   std::vector<std::string> errors_;
   std::map<QString, BrushValues> values_;
   QString currentId_;

@@ -5,7 +5,9 @@
 
 #include <QButtonGroup>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QRadioButton>
 #include <QSettings>
@@ -124,9 +126,30 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     if (on) setPaintTarget(static_cast<BrushLayer>(id));
   });
 
+  // One channel alone, to see what a paint or splat stroke wrote where.
+  preview_ = new QComboBox(this);
+  preview_->setObjectName(QStringLiteral("preview"));
+  preview_->addItems({tr("Shaded model"), tr("Diffuse colour"), tr("Height detail"), tr("Specular"),
+                      tr("Reflectivity"), tr("Mask")});
+  preview_->setToolTip(tr("Show the shaded model, or one layer channel alone"));
+  connect(preview_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    if (index >= 0) emit previewChanged(index);
+  });
+  auto* previewRow = new QHBoxLayout;
+  previewRow->addWidget(new QLabel(tr("Preview"), this));
+  previewRow->addWidget(preview_, 1);
+
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(grid);
+  layout->addLayout(previewRow);
   layout->addStretch(1);
+}
+
+int LayersPanel::preview() const {
+  return preview_->currentIndex();
+}
+void LayersPanel::setPreview(int channel) {
+  preview_->setCurrentIndex(channel);
 }
 
 bool LayersPanel::isVisible(BrushLayer layer) const {

@@ -8,6 +8,7 @@
 
 class QButtonGroup;
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QRadioButton;
 
@@ -49,11 +50,17 @@ public:
   /// The state line shown for the layer, e.g. "uniform" (for tests).
   QString layerStateText(gpu::BrushLayer layer) const;
 
+  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone.
+  int preview() const;
+  void setPreview(int channel);
+
 signals:
+  void previewChanged(int channel);
   void visibilityChanged();
   void paintTargetChanged();
 
 private:
+  QComboBox* preview_ = nullptr;
   static constexpr std::size_t kLayerCount = 4;
 
   void save() const;

@@ -254,6 +254,7 @@ void MainWindow::connectParts() {
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
   connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
+  connect(layersPanel_, &LayersPanel::previewChanged, viewport_, &ViewportWidget::setPreview);
   applyLayers();
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
@@ -266,7 +267,11 @@ void MainWindow::refreshBrushes() {
   std::vector<gpu::BrushManifest> brushes;
   for (const gpu::BrushManifest* b : library->brushes())
     brushes.push_back(*b);
-  brushPanel_->setBrushes(std::move(brushes), library->errors());
+  std::vector<std::string> errors = library->errors();
+  for (const QString& e : viewport_->materialErrors())
+    errors.push_back(e.toStdString());
+  brushPanel_->setMaterials(viewport_->materialIds());
+  brushPanel_->setBrushes(std::move(brushes), std::move(errors));
   viewport_->setBrushSettings(brushPanel_->settings());
 }
 

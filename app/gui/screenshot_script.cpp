@@ -56,7 +56,7 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   bool ok = true;
   window.brushPanel()->selectBrush("push");
   ok = ok && stroke(view, "push", 0.035f, -0.35f, [&](double t) {
-         return c + QPointF(-r + 2 * r * t, 0.35 * r * std::sin(t * 2 * M_PI));
+         return c + QPointF(-0.8 * r + 1.6 * r * t, 0.3 * r * std::sin(t * 2 * M_PI));
        });
   for (int k = 0; k < 3; ++k) {
     const QPointF at = c + QPointF((k - 1) * 0.55 * r, -0.55 * r);
@@ -64,9 +64,13 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
            return at + QPointF(3 * std::cos(t * 6), 3 * std::sin(t * 6));
          });
   }
-  ok = ok && stroke(view, "paint", 0.05f, 1.0f, [&](double t) {
+  ok = ok && stroke(view, "paint", 0.05f, 0.6f, [&](double t) {
          return c +
                 QPointF(0.6 * r * std::cos(M_PI * (1 + t)), 0.6 * r * std::sin(M_PI * t) + 0.4 * r);
+       });
+  // Bricks laid in one stroke: relief, colour and shine together.
+  ok = ok && stroke(view, "splat", 0.07f, 0.8f, [&](double t) {
+         return c + QPointF(0.1 * r + 0.5 * r * t, 0.05 * r - 0.45 * r * t);
        });
   if (!ok) {
     std::fprintf(stderr, "octaclay: a screenshot stroke failed: %s\n", qPrintable(view.error()));

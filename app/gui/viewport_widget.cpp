@@ -2,6 +2,7 @@
 
 #include "model_prop.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/image_io.h"
 #include "octaclay/core/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
@@ -145,6 +146,15 @@ void ViewportWidget::initializeGL() {
     library_ = std::make_unique<gpu::BrushLibrary>(
         gpu::BrushCatalog::defaultSearchPath(OCTACLAY_SOURCE_BRUSHES));
     model_ = std::make_unique<gpu::ModelRenderer>();
+    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(
+        std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "materials"));
+    library_->engine().setMaterials(materials_);
+    try {
+      model_->setEnvironment(core::readImage(
+          std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "environment/studio.png", 3));
+    } catch (const core::Error& e) { // reflective paint then shows no reflection, nothing more
+      materialErrors_ << QStringLiteral("environment map: %1").arg(e.what());
+    }
   } catch (const std::exception& e) {
     library_.reset();
     model_.reset();
@@ -248,6 +258,25 @@ void ViewportWidget::setShowDiffuse(bool show) {
   showDiffuse_ = show;
   update();
 }
+void ViewportWidget::setPreview(int channel) {
+  preview_ = std::clamp(channel, 0, 5);
+  update();
+}
+
+QStringList ViewportWidget::materialIds() const {
+  QStringList ids;
+  for (const gpu::Material& m : materials_.materials())
+    ids << QString::fromStdString(m.id);
+  return ids;
+}
+
+QStringList ViewportWidget::materialErrors() const {
+  QStringList errors = materialErrors_;
+  for (const std::string& e : materials_.errors())
+    errors << QString::fromStdString(e);
+  return errors;
+}
+
 void ViewportWidget::setShowMask(bool show) {
   showMask_ = show;
   update();
@@ -368,6 +397,7 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   view.eye = toVec(camera->GetPosition());
   view.showDiffuse = showDiffuse_;
   view.showMask = showMask_;
+  view.preview = static_cast<gpu::ModelView::Preview>(preview_);
   if (hover_ && drag_ != Drag::Orbit && drag_ != Drag::Pan) {
     view.showBrush = true;
     view.brushCentre = hover_->position;
@@ -449,15 +479,19 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   stroke->sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
   // Fixed for the stroke: a stroke that grows the model must not grow its own brush.
   stroke->unit = diagonal();
-  // Strength means how far a stroke moves the surface per radius travelled, whatever the
-  // spacing: each dab applies strength × spacing, as overlapping dabs add up.
-  stroke->dabShare = std::clamp(stroke->manifest.spacing, 0.01f, 1.0f);
+  // A sculpt stroke's strength is how far it moves the surface per radius travelled, whatever
+  // the spacing: each dab applies strength × spacing, as overlapping dabs add up. Paint and
+  // splats blend toward a target, so overlaps converge instead of piling up: full strength.
+  stroke->dabShare = stroke->manifest.category == gpu::Category::Sculpt
+                         ? std::clamp(stroke->manifest.spacing, 0.01f, 1.0f)
+                         : 1.0f;
   gpu::StrokeSettings s;
   s.brush = id;
   s.radius = settings_.radius * stroke->unit;
   s.strength = settings_.strength;
   s.symmetry = settings_.symmetry;
   if (id == settings_.brushId) s.parameters = settings_.parameters;
+  s.viewEye = toVec(renderer_->GetActiveCamera()->GetPosition()); // splats project from here
   try {
     stroke->session =
         std::make_unique<gpu::StrokeSession>(library_->engine(), *document_, stroke->manifest, s);

@@ -5,6 +5,7 @@
 #include "octaclay/core/edit_history.h"
 #include "octaclay/core/ray_pick.h"
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/material_catalog.h"
 #include "stroke_stabilizer.h"
 
 #include <QElapsedTimer>
@@ -71,6 +72,11 @@ public:
   void setPaintTarget(int brushLayer);
   void setShowDiffuse(bool show);
   void setShowMask(bool show);
+  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone.
+  void setPreview(int channel);
+  /// The materials splat brushes can use (engine order) and those that failed to load.
+  QStringList materialIds() const;
+  QStringList materialErrors() const;
   /// Displays every divisor-th sample (N/divisor a side, clamped to at least 2).
   void setLevelDivisor(int divisor);
   int levelDivisor() const { return divisor_; }
@@ -163,6 +169,9 @@ private:
   BrushSettings settings_;
   int paintTarget_ = 1; // gpu::BrushLayer::Diffuse
   bool showDiffuse_ = true, showMask_ = true;
+  int preview_ = 0;
+  gpu::MaterialCatalog materials_;
+  QStringList materialErrors_;
   int divisor_ = 4;
 
   std::unique_ptr<ActiveStroke> stroke_;

@@ -16,6 +16,20 @@ uniform float u_strength;      // fraction of the radius
 uniform float u_pressure;
 uniform float u_normalCosine;  // volume+normal: minimum cos(angle) to the centre normal
 uniform ivec2 u_centreTexel;
+uniform sampler2D u_featureLayer; // the feature layer as it was before this dab (splats)
+uniform vec3 u_projectionDir;     // splats: projection frame, object space, unit
+uniform vec3 u_projectionRight;
+uniform vec3 u_projectionUp;
+#if defined(BRUSH_MATERIAL)
+// The chosen material's maps (repeat-wrapped) and scales, object units unless noted.
+uniform sampler2D u_materialHeight;       // R: 0.5 = no displacement
+uniform sampler2D u_materialColour;       // RGBA, alpha = coverage
+uniform sampler2D u_materialSpecular;     // R
+uniform sampler2D u_materialReflectivity; // R
+uniform float u_tileSize;    // one tile of the maps on the surface
+uniform float u_tileSamples; // the same, in image samples (uv projection)
+uniform float u_heightScale; // displacement of height 1 - 0.5
+#endif
 
 struct BrushInput {
   ivec2 texel;

@@ -1,6 +1,7 @@
 #include "octaclay/gpu/brush_engine.h"
 
 #include "octaclay/gpu/gl_error.h"
+#include "octaclay/gpu/material_catalog.h"
 #include "shader_sources.h"
 
 #include <algorithm>
@@ -118,6 +119,10 @@ std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool maskT
   if (manifest.area == AreaMode::VolumeNormal || readsNormals(body))
     source += "#define BRUSH_NEEDS_NORMAL\n";
   for (const BrushParameter& p : manifest.parameters) {
+    if (p.type == ParameterType::Material) {
+      source += "#define BRUSH_MATERIAL\n";
+      continue;
+    }
     const char* type = p.type == ParameterType::Color  ? "vec4"
                        : p.type == ParameterType::Enum ? "int"
                                                        : "float";
@@ -178,9 +183,22 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
     glUniform1fv(location(program, "u_falloffCurve"), count, manifest.falloffCurve.data());
     glUniform1i(location(program, "u_falloffCurveSize"), count);
   }
+  // The projection frame: along the view through the centre, or the centre normal headless.
+  const core::Vec3f dir =
+      core::normalize(dab.viewDirection ? *dab.viewDirection
+                                        : core::Vec3f{-dab.centreNormal.x, -dab.centreNormal.y,
+                                                      -dab.centreNormal.z});
+  const core::Vec3f helper = std::abs(dir.y) < 0.9f ? core::Vec3f{0, 1, 0} : core::Vec3f{1, 0, 0};
+  const core::Vec3f right = core::normalize(core::cross(helper, dir));
+  const core::Vec3f up = core::cross(dir, right);
+  glUniform3f(location(program, "u_projectionDir"), dir.x, dir.y, dir.z);
+  glUniform3f(location(program, "u_projectionRight"), right.x, right.y, right.z);
+  glUniform3f(location(program, "u_projectionUp"), up.x, up.y, up.z);
+  glUniform1i(location(program, "u_featureLayer"), 3);
   for (const BrushParameter& p : manifest.parameters) {
     const auto given = dab.parameters.find(p.id);
     const std::array<float, 4> v = given != dab.parameters.end() ? given->second : p.defaultValue;
+    if (p.type == ParameterType::Material) continue; // bound by the engine (bindMaterial)
     const GLint at = location(program, uniformName(p.id).c_str());
     if (p.type == ParameterType::Color)
       glUniform4f(at, v[0], v[1], v[2], v[3]);
@@ -237,6 +255,81 @@ const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool m
         .first->second;
   } catch (const GlError& e) {
     throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
+  }
+}
+
+void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
+  materials_.clear();
+  for (const Material& m : catalog.materials()) {
+    GpuMaterial g;
+    g.id = m.id;
+    g.tileSize = m.tileSize;
+    g.heightScale = m.heightScale;
+    auto upload = [](const core::RasterImage& image) {
+      // Single-channel maps are stored as R32F, colour as RGBA16F; repeat-wrapped and mipmapped
+      // so a far-away splat averages its texels instead of aliasing.
+      const bool colour = image.channels == 4;
+      Texture t(image.width, image.height, colour ? TextureFormat::Rgba16f : TextureFormat::R32f);
+      t.upload({0, 0, image.width, image.height}, image.pixels);
+      glBindTexture(GL_TEXTURE_2D, t.id());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      glGenerateMipmap(GL_TEXTURE_2D);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      return t;
+    };
+    g.height = upload(m.height);
+    g.colour = upload(m.colour);
+    g.specular = upload(m.specular);
+    g.reflectivity = upload(m.reflectivity);
+    materials_.push_back(std::move(g));
+  }
+  checkGlError("uploading materials");
+}
+
+int BrushEngine::materialIndex(std::string_view id) const {
+  for (std::size_t k = 0; k < materials_.size(); ++k)
+    if (materials_[k].id == id) return static_cast<int>(k);
+  return -1;
+}
+
+std::vector<std::string> BrushEngine::materialIds() const {
+  std::vector<std::string> ids;
+  for (const GpuMaterial& m : materials_)
+    ids.push_back(m.id);
+  return ids;
+}
+
+void BrushEngine::bindMaterial(const Program& program, const BrushManifest& manifest,
+                               const GpuDocument& document, const Dab& dab) const {
+  for (const BrushParameter& p : manifest.parameters) {
+    if (p.type != ParameterType::Material) continue;
+    const auto given = dab.parameters.find(p.id);
+    int index = given != dab.parameters.end() ? static_cast<int>(given->second[0])
+                                              : materialIndex(p.options.front());
+    if (index < 0 || index >= static_cast<int>(materials_.size()))
+      throw GlError("brush " + manifest.id + ": no material " +
+                    (given != dab.parameters.end() ? "#" + std::to_string(index)
+                                                   : "'" + p.options.front() + "'") +
+                    " is loaded (see resources/materials)");
+    const GpuMaterial& m = materials_[static_cast<std::size_t>(index)];
+    const Texture* maps[] = {&m.height, &m.colour, &m.specular, &m.reflectivity};
+    const char* names[] = {"u_materialHeight", "u_materialColour", "u_materialSpecular",
+                           "u_materialReflectivity"};
+    for (int k = 0; k < 4; ++k) {
+      glActiveTexture(static_cast<GLenum>(GL_TEXTURE4 + k));
+      glBindTexture(GL_TEXTURE_2D, maps[k]->id());
+      glUniform1i(program.uniform(names[k]), 4 + k);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    const float diagonal = std::max(document.bounds().diagonal(), 1e-20f);
+    glUniform1f(program.uniform("u_tileSize"), m.tileSize * diagonal);
+    // uv projection measures in samples: the same fraction of N as of the diagonal.
+    glUniform1f(program.uniform("u_tileSamples"), m.tileSize * static_cast<float>(document.size()));
+    glUniform1f(program.uniform("u_heightScale"), m.heightScale * m.tileSize * diagonal);
+    return;
   }
 }
 
@@ -315,9 +408,14 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   glDisable(GL_CULL_FACE);
   glViewport(0, 0, side, side);
   // Positions last: every other layer's pass reads the positions from before the dab.
+  // Except for brushes that read the feature layer (splats): their positions pass displaces by
+  // the change of height detail, so it runs while the feature layer still holds the old one.
   std::vector<BrushLayer> order = brush.manifest.writes;
-  std::stable_partition(order.begin(), order.end(),
-                        [](BrushLayer l) { return l != BrushLayer::Positions; });
+  const bool readsFeature = std::find(brush.manifest.reads.begin(), brush.manifest.reads.end(),
+                                      BrushLayer::Feature) != brush.manifest.reads.end();
+  std::stable_partition(order.begin(), order.end(), [readsFeature](BrushLayer l) {
+    return (l != BrushLayer::Positions) != readsFeature;
+  });
   for (BrushLayer layer : order) {
     const Program& pass = program(brush, layer, maskTexture);
     document.scratch(layer).bindAsTarget();
@@ -329,6 +427,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Feature).id());
+    bindMaterial(pass, brush.manifest, document, dab);
     rectPass_.draw(passRects, side, side);
     if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side})
       document.swapScratch(layer);

@@ -26,7 +26,7 @@ constexpr std::array kLayerNames{"positions", "diffuse", "feature", "mask"};
 constexpr std::array kAreaNames{"uv", "volume", "volume+normal"};
 constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
 constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
-constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum"};
+constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
 
 constexpr std::array kTopLevelFields{
     "id",    "name",   "version", "api",     "description",   "category", "shader",
@@ -445,6 +445,21 @@ private:
         notUsed(key, "float and int");
       parseOptions(p, field, out);
       break;
+    case ParameterType::Material: {
+      // The choices are the materials installed at run time, not the manifest's to list.
+      for (const char* key : {"min", "max", "step"})
+        notUsed(key, "float and int");
+      notUsed("options", "enum");
+      const std::string defaultField = field + ".default";
+      const std::string id = string(required(p, "default", defaultField), defaultField);
+      if (!isValidId(id, true))
+        fail(defaultField, quote(id) + " is not a material id (lowercase letters, digits, -)");
+      out.options = {id};
+      out.min = 0.0f;
+      out.max = 0.0f;
+      out.step = 1.0f;
+      break;
+    }
     }
     return out;
   }

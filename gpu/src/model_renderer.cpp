@@ -69,6 +69,23 @@ void ModelRenderer::setLevel(int n, int divisor) {
   indexCount_ = static_cast<long long>(indices.size());
 }
 
+void ModelRenderer::setEnvironment(const core::RasterImage& image) {
+  if (image.channels != 4 && image.channels != 3)
+    throw GlError("the environment map must be an RGB or RGBA image");
+  std::vector<float> rgba;
+  rgba.reserve(static_cast<std::size_t>(image.width) * image.height * 4);
+  for (std::size_t k = 0; k < image.pixels.size(); k += static_cast<std::size_t>(image.channels))
+    rgba.insert(rgba.end(), {image.pixels[k], image.pixels[k + 1], image.pixels[k + 2], 1.0f});
+  environment_ = Texture(image.width, image.height, TextureFormat::Rgba16f);
+  environment_.upload({0, 0, image.width, image.height}, rgba);
+  glBindTexture(GL_TEXTURE_2D, environment_.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  checkGlError("uploading the environment map");
+}
+
 long long ModelRenderer::displayedTriangles() const {
   return indexCount_ / 3;
 }
@@ -122,11 +139,17 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   bindTexture(1, normals_);
   bindTexture(2, document.texture(BrushLayer::Diffuse));
   bindTexture(3, document.texture(BrushLayer::Mask));
+  bindTexture(4, document.texture(BrushLayer::Feature));
+  if (environment_.id()) bindTexture(5, environment_);
   const Program& p = drawProgram_;
   glUniform1i(p.uniform("u_positions"), 0);
   glUniform1i(p.uniform("u_normals"), 1);
   glUniform1i(p.uniform("u_diffuse"), 2);
   glUniform1i(p.uniform("u_mask"), 3);
+  glUniform1i(p.uniform("u_feature"), 4);
+  glUniform1i(p.uniform("u_environment"), 5);
+  glUniform1i(p.uniform("u_hasEnvironment"), environment_.id() != 0);
+  glUniform1i(p.uniform("u_preview"), static_cast<int>(view.preview));
   glUniformMatrix4fv(p.uniform("u_objectToClip"), 1, GL_FALSE, view.objectToClip.data());
   glUniform1i(p.uniform("u_step"), divisor_);
   glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
@@ -138,6 +161,10 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glUniform1i(p.uniform("u_diffusePainted"), !d.diffuse.uniform());
   glUniform3f(p.uniform("u_diffuseFill"), d.diffuse.fill[0], d.diffuse.fill[1], d.diffuse.fill[2]);
   glUniform1i(p.uniform("u_showMask"), view.showMask && !d.mask.uniform());
+  glUniform1i(p.uniform("u_featurePainted"), !d.feature.uniform());
+  glUniform3f(p.uniform("u_featureFill"), d.feature.fill[0], d.feature.fill[1], d.feature.fill[2]);
+  glUniform1i(p.uniform("u_maskPainted"), !d.mask.uniform());
+  glUniform1f(p.uniform("u_maskFill"), d.mask.fill[0]);
   glUniform1i(p.uniform("u_showBrush"), view.showBrush);
   glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
               view.brushCentre.z);
@@ -161,7 +188,7 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, starts.data(),
                       static_cast<GLsizei>(counts.size()));
   glBindVertexArray(0);
-  for (int unit = 3; unit >= 0; --unit) {
+  for (int unit = 5; unit >= 0; --unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, 0);
   }

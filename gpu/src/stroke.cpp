@@ -164,6 +164,7 @@ struct StrokeSession::State {
       dab.strength = strength;
       dab.pressure = pressure;
       dab.parameters = settings.parameters;
+      if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
       std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
       bool border = false;
       for (const core::TexelRect& r : reach) {

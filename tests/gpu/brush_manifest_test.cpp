@@ -298,7 +298,7 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("unknown parameter type",
       withParameters(R"([{"id": "a", "type": "float"}, {"id": "b", "type": "int"},
                          {"id": "c", "type": "vector"}])"),
-      R"(parameters[2].type: unknown type "vector" (use float, int, bool, color or enum))");
+      R"(parameters[2].type: unknown type "vector" (use float, int, bool, color, enum or material))");
   row("unknown parameter field",
       withParameters(R"([{"id": "height", "type": "float", "defualt": 1}])"),
       R"(parameters[0].defualt: unknown field (did you mean "default"?))");

@@ -137,12 +137,16 @@ private slots:
 
     const auto* list = panel.findChild<QTreeWidget*>(QStringLiteral("brushList"));
     QVERIFY(list);
-    QCOMPARE(list->topLevelItemCount(), 2); // no splat brush ships
+    QCOMPARE(list->topLevelItemCount(), 3);
     QCOMPARE(list->topLevelItem(0)->text(0), QStringLiteral("Sculpt"));
     QCOMPARE(list->topLevelItem(1)->text(0), QStringLiteral("Paint"));
-    QCOMPARE(childTexts(list->topLevelItem(1)), (QStringList{"Mask", "Paint"}));
+    QCOMPARE(list->topLevelItem(2)->text(0), QStringLiteral("Splat"));
+    QVERIFY(childTexts(list->topLevelItem(1)).contains(QStringLiteral("Mask")));
+    QVERIFY(childTexts(list->topLevelItem(1)).contains(QStringLiteral("Paint")));
+    QCOMPARE(childTexts(list->topLevelItem(2)), (QStringList{"Material splat"}));
     QVERIFY(childTexts(list->topLevelItem(0)).contains(QStringLiteral("Sphere Add")));
-    QCOMPARE(list->topLevelItem(0)->childCount() + list->topLevelItem(1)->childCount(),
+    QCOMPARE(list->topLevelItem(0)->childCount() + list->topLevelItem(1)->childCount() +
+                 list->topLevelItem(2)->childCount(),
              static_cast<int>(brushes_.size()));
     QCOMPARE(list->topLevelItem(1)->child(1)->data(0, Qt::UserRole).toString(),
              QStringLiteral("paint"));
@@ -175,7 +179,7 @@ private slots:
     list->setCurrentItem(items.front());
     QCOMPARE(panel.currentBrushId(), QStringLiteral("mask"));
     QCOMPARE(changed.count(), 1);
-    QVERIFY(qobject_cast<QCheckBox*>(panel.parameterWidget(QStringLiteral("erase"))));
+    QVERIFY(qobject_cast<QComboBox*>(panel.parameterWidget(QStringLiteral("mode"))));
 
     QVERIFY(!panel.selectBrush(QStringLiteral("no-such-brush")));
     QCOMPARE(panel.currentBrushId(), QStringLiteral("mask"));
@@ -295,7 +299,7 @@ private slots:
       settings.setValue(QStringLiteral("brushes/mask/radius"), 7.0);
       settings.setValue(QStringLiteral("brushes/mask/falloff"), QStringLiteral("curve"));
       settings.setValue(QStringLiteral("brushes/mask/area"), QStringLiteral("uv"));
-      settings.setValue(QStringLiteral("brushes/mask/parameters/erase"), true);
+      settings.setValue(QStringLiteral("brushes/mask/parameters/mode"), QStringLiteral("erase"));
       settings.setValue(QStringLiteral("brushes/mask/parameters/gone"), 3.0);
     }
     BrushPanel panel;
@@ -306,7 +310,7 @@ private slots:
     QCOMPARE(s.falloff, gpu::Falloff::Smooth); // no curve in this manifest: its own falloff
     QCOMPARE(s.area, gpu::AreaMode::Uv);
     QCOMPARE(s.parameters.size(), std::size_t(1));
-    QCOMPARE(s.parameters.at("erase")[0], 1.0f);
+    QCOMPARE(s.parameters.at("mode")[0], 1.0f); // the option "erase", stored by name
   }
 
   void valuesSurviveSwitchingBrushesAndANewPanel() {

@@ -8,10 +8,14 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace octaclay::gpu {
+
+class MaterialCatalog;
 
 /// One application of a brush at one place.
 struct Dab {
@@ -23,6 +27,9 @@ struct Dab {
   float pressure = 1.0f;            ///< pen pressure, 0..1
   float normalAngleDegrees = 80.0f; ///< volume+normal: samples facing further away are left alone
   std::map<std::string, std::array<float, 4>> parameters; ///< by manifest id; missing → default
+  /// Splats project their material along this object-space direction (the camera's, through
+  /// the centre); unset: along the inward centre normal.
+  std::optional<core::Vec3f> viewDirection;
 };
 
 /// What a dab touched.
@@ -55,12 +62,27 @@ public:
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
                 std::vector<core::TexelRect> tiles);
 
+  /// Uploads the catalog's materials (replacing earlier ones); a material parameter's value is
+  /// an index into them. Throws GlError.
+  void setMaterials(const MaterialCatalog& catalog);
+  /// The index of the material with this id, or -1.
+  int materialIndex(std::string_view id) const;
+  std::vector<std::string> materialIds() const;
+
   /// The tiles a dab of this brush at this place would run over (no GL work).
   std::vector<core::TexelRect> reach(const GpuDocument& document, const std::string& brushId,
                                      const Dab& dab) const;
 
 private:
   struct LoadedBrush;
+  struct GpuMaterial {
+    std::string id;
+    float tileSize = 0, heightScale = 0;
+    Texture height, colour, specular, reflectivity;
+  };
+  void bindMaterial(const Program& program, const BrushManifest& manifest,
+                    const GpuDocument& document, const Dab& dab) const;
+  std::vector<GpuMaterial> materials_;
   /// The brush's program for a layer and mask kind, compiled on first use. Throws GlError.
   const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;

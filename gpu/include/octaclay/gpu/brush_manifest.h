@@ -22,8 +22,9 @@ enum class Falloff { Linear, Smooth, Constant, Curve };
 /// The brush panel's grouping.
 enum class Category { Sculpt, Paint, Splat };
 /// A parameter's type; it decides the widget and the GLSL type of its uniform
-/// (float, int and bool → float, color → vec4, enum → int).
-enum class ParameterType { Float, Int, Bool, Color, Enum };
+/// (float, int and bool → float, color → vec4, enum → int). A material parameter declares no
+/// uniform: the engine binds the chosen material's maps (u_material*, see the prelude).
+enum class ParameterType { Float, Int, Bool, Color, Enum, Material };
 
 /// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
 /// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
@@ -45,7 +46,8 @@ struct BrushParameter {
   float min = 0.0f, max = 1.0f;
   /// Widget increment, > 0 (1 for Int, Bool and Enum).
   float step = 0.01f;
-  /// Enum only: the option strings, in the order of their indices.
+  /// Enum: the option strings, in the order of their indices. Material: one string, the id of
+  /// the default material; the value ([0]) is an index into the engine's materials.
   std::vector<std::string> options;
 };
 

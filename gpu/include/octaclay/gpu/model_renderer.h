@@ -1,5 +1,6 @@
 #pragma once
 
+#include "octaclay/core/image_io.h"
 #include "octaclay/core/tile_bounds.h"
 #include "octaclay/core/vec.h"
 #include "octaclay/gpu/gl_objects.h"
@@ -24,6 +25,9 @@ struct ModelView {
   core::Vec3f brushCentre;
   float brushRadius = 0;                     ///< object units
   std::array<float, 3> brushColour{1, 1, 1}; ///< outline colour
+  /// What the pixels show: the shaded model, or one channel alone.
+  enum class Preview { Shaded, Diffuse, HeightDetail, Specular, Reflectivity, Mask };
+  Preview preview = Preview::Shaded;
 };
 
 /// Draws a GpuDocument at a displayed level straight from its textures (thesis 3.5): vertices
@@ -46,6 +50,10 @@ public:
   /// Triangles drawn per frame: 2 (N/divisor)².
   long long displayedTriangles() const;
 
+  /// The environment reflected by reflective surfaces: an equirectangular RGB(A) image, +y up.
+  /// Throws GlError.
+  void setEnvironment(const core::RasterImage& image);
+
   /// Recomputes the normal map over rects of the positions (after dabs or undo).
   void refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects);
   /// Recomputes the whole normal map (a new or reloaded document).
@@ -61,7 +69,7 @@ public:
 private:
   Program normalProgram_, drawProgram_;
   RectPass rectPass_;
-  Texture normals_;
+  Texture normals_, environment_;
   unsigned vertexArray_ = 0, indexBuffer_ = 0;
   int n_ = 0, divisor_ = 0;
   long long indexCount_ = 0, drawnTriangles_ = 0;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct StrokeSettings {
   float spacing = 0.0f; ///< between dabs, fraction of the radius; 0 → the brush's own
   unsigned symmetry = kSymmetryNone;
   std::map<std::string, std::array<float, 4>> parameters;
+  /// A camera's eye (object space): splats project from it through each dab's centre. Unset:
+  /// along each dab's centre normal.
+  std::optional<core::Vec3f> viewEye;
 };
 
 struct StrokeResult {
