@@ -438,6 +438,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
         copyRect(document.scratch(layer), document.texture(layer), r);
 
     if (result.seamed) {
+      // Into the scratch: after a whole-image swap the bound target is the layer's texture now,
+      // which the seam pass reads.
+      document.scratch(layer).bindAsTarget();
       seamProgram_.use();
       glUniform1i(seamProgram_.uniform("u_source"), 0);
       glUniform1i(seamProgram_.uniform("u_size"), document.size());

@@ -142,6 +142,7 @@ void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
   const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
   textures_[index(layer)].readInto(toRegion(rect), mirrorData(layer) + at, side, c);
   if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
+  if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
 }
 
 float* GpuDocument::mirrorData(BrushLayer layer) {

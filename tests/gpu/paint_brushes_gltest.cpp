@@ -258,11 +258,8 @@ void PaintBrushesTest::seamDabsKeepIdentifiedSamplesEqual() {
 void PaintBrushesTest::seamedDabOverTheWholeImage() {
   QFETCH(QString, brush);
   // At N = 64 the image is 2 × 2 tiles and a dab on the corner pole reaches all four: the engine
-  // then swaps the pass's scratch texture in and runs the seaming pass with the swapped texture
-  // still bound as its target, and copies the stale scratch's border lines back, so the border
-  // keeps its pre-dab values (positions too: a crease along the seams).
-  QEXPECT_FAIL("", "BrushEngine::dab: seaming after swapScratch restores the pre-dab border",
-               Abort);
+  // swaps the pass's scratch texture in, and its seaming pass must then render into the new
+  // scratch (it once kept rendering into the swapped-in texture and restored the old border).
   const QString problem = seamDabProblem(paintBrush(brush), kSize, {0, 0});
   QVERIFY2(problem.isEmpty(), qPrintable(problem));
 }

@@ -1,0 +1,262 @@
+// The material splat brush on the GPU: one dab writes relief, colour, specular and reflectivity
+// inside its radius and nothing outside; every layer stays continuous over seams; projected
+// material texels keep their object-space size where the image is stretched, the uv mode's not.
+#include "brush_test_support.h"
+#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/image_io.h"
+#include "octaclay/core/octahedral.h"
+#include "octaclay/core/seaming.h"
+#include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gpu_document.h"
+#include "octaclay/gpu/material_catalog.h"
+#include "octaclay/gpu/stroke.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <algorithm>
+#include <fstream>
+#include <optional>
+
+using namespace octaclay;
+using namespace octaclay::gpu;
+using namespace octaclay::gpu::testing;
+
+namespace {
+
+// A black-and-white checker material, 8 × 8 cells a tile, flat: only its colour matters.
+void writeCheckerMaterial(const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  const int side = 64;
+  core::RasterImage colour{side, side, 3, {}}, flat{side, side, 1, {}}, zero{side, side, 1, {}};
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const float v = ((x / 8 + y / 8) % 2) ? 1.0f : 0.0f;
+      colour.pixels.insert(colour.pixels.end(), {v, v, v});
+      flat.pixels.push_back(0.5f);
+      zero.pixels.push_back(0.0f);
+    }
+  core::writePng(colour, folder / "colour.png");
+  core::writePng(flat, folder / "height.png");
+  core::writePng(zero, folder / "specular.png");
+  core::writePng(zero, folder / "reflectivity.png");
+  std::ofstream(folder / "material.json")
+      << R"({"id": "checker", "name": "Checker", "source": "test", "license": "CC0-1.0",
+            "tileSize": 0.07, "heightScale": 0.0,
+            "maps": {"height": "height.png", "colour": "colour.png",
+                     "specular": "specular.png", "reflectivity": "reflectivity.png"}})";
+}
+
+std::vector<float> layerTexels(const GpuDocument& d, BrushLayer layer) {
+  const int side = d.size() + 1;
+  return d.mirrorTexels(layer, {0, 0, side, side});
+}
+
+float luminanceAt(const GpuDocument& d, core::Sample s) {
+  const std::vector<float> t = d.mirrorTexels(BrushLayer::Diffuse, {s.i, s.j, 1, 1});
+  return (t[0] + t[1] + t[2]) / 3;
+}
+
+} // namespace
+
+class SplatTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void oneDabWritesAllFourAttributesInsideItsRadiusOnly();
+  void everyLayerStaysContinuousOverSeams();
+  void projectedTexelsKeepTheirSizeWhereTheImageStretches();
+
+private:
+  Dab splatDab(const GpuDocument& d, core::Sample s, float radius, const std::string& material,
+               int projection);
+  /// Median object-space distance between colour changes along the surface line through the
+  /// sample's position in direction axis (a checker cell's extent along it).
+  float cellSize(const GpuDocument& d, core::Sample centre, core::Vec3f axis, core::Vec3f offset,
+                 float reach);
+
+  std::optional<GlContext> context_;
+  std::optional<BrushEngine> engine_;
+  BrushManifest splat_;
+  QTemporaryDir dir_;
+};
+
+void SplatTest::initTestCase() {
+  try {
+    context_.emplace(GlContext::createHeadless());
+    engine_.emplace();
+    splat_ = builtInManifest("splat");
+    engine_->load(splat_, readFile(splat_.shaderPath()));
+    writeCheckerMaterial(std::filesystem::path(dir_.path().toStdString()) / "checker");
+    MaterialCatalog catalog;
+    catalog.scan({std::filesystem::path(OCTACLAY_SOURCE_DIR) / "resources/materials",
+                  dir_.path().toStdString()});
+    QVERIFY2(catalog.errors().empty(), catalog.errors().empty() ? "" : catalog.errors()[0].c_str());
+    engine_->setMaterials(catalog);
+    QVERIFY(engine_->materialIndex("stone") >= 0);
+    QVERIFY(engine_->materialIndex("checker") >= 0);
+  } catch (const std::exception& e) {
+    QFAIL(e.what());
+  }
+}
+
+Dab SplatTest::splatDab(const GpuDocument& d, core::Sample s, float radius,
+                        const std::string& material, int projection) {
+  Dab dab = dabAt(d.document().positions, s, radius, 1.0f);
+  dab.parameters["material"] = {static_cast<float>(engine_->materialIndex(material)), 0, 0, 0};
+  dab.parameters["projection"] = {static_cast<float>(projection), 0, 0, 0};
+  return dab;
+}
+
+void SplatTest::oneDabWritesAllFourAttributesInsideItsRadiusOnly() {
+  GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+  const core::Sample centre{80, 64}; // away from every seam
+  const float radius = 0.35f;
+  const core::Vec3f c = d.document().positions.at(centre).xyz();
+  const std::vector<float> positions = layerTexels(d, BrushLayer::Positions);
+  const std::vector<float> diffuse = layerTexels(d, BrushLayer::Diffuse);
+  const std::vector<float> feature = layerTexels(d, BrushLayer::Feature);
+  engine_->dab(d, "splat", splatDab(d, centre, radius, "stone", 0));
+  const std::vector<float> positions2 = layerTexels(d, BrushLayer::Positions);
+  const std::vector<float> diffuse2 = layerTexels(d, BrushLayer::Diffuse);
+  const std::vector<float> feature2 = layerTexels(d, BrushLayer::Feature);
+
+  const int side = d.size() + 1;
+  int inside = 0, movedIn = 0, colouredIn = 0, shinyIn = 0, reflectiveIn = 0;
+  for (int k = 0; k < side * side; ++k) {
+    const std::size_t p = static_cast<std::size_t>(k) * 4, f = static_cast<std::size_t>(k) * 3;
+    const core::Vec3f q{positions[p], positions[p + 1], positions[p + 2]};
+    const float distance = core::length(q - c);
+    const bool moved = positions[p] != positions2[p] || positions[p + 1] != positions2[p + 1] ||
+                       positions[p + 2] != positions2[p + 2];
+    const bool coloured = diffuse[p] != diffuse2[p] || diffuse[p + 1] != diffuse2[p + 1] ||
+                          diffuse[p + 2] != diffuse2[p + 2];
+    const bool shiny = feature[f + 1] != feature2[f + 1];
+    const bool reflective = feature[f + 2] != feature2[f + 2];
+    if (distance >= radius) {
+      QVERIFY2(!moved && !coloured && !shiny && !reflective && feature[f] == feature2[f],
+               qPrintable(QString("texel %1 outside the radius changed").arg(k)));
+      continue;
+    }
+    if (distance > 0.8f * radius) continue; // the falloff's tail: tiny changes may round away
+    ++inside;
+    movedIn += moved;
+    colouredIn += coloured;
+    shinyIn += shiny;
+    reflectiveIn += reflective;
+  }
+  QVERIFY(inside > 200);
+  // Stone's height, colour, specular and reflectivity all differ from the clay's defaults.
+  QVERIFY2(movedIn > inside * 9 / 10, qPrintable(QString("%1 of %2").arg(movedIn).arg(inside)));
+  QVERIFY2(colouredIn > inside * 9 / 10, qPrintable(QString::number(colouredIn)));
+  QVERIFY2(shinyIn > inside * 9 / 10, qPrintable(QString::number(shinyIn)));
+  // (stone's grout is not reflective at all, like the clay: three quarters is the cobbles)
+  QVERIFY2(reflectiveIn > inside * 3 / 4, qPrintable(QString::number(reflectiveIn)));
+  // Relief is a displacement of the stone's height: small against the radius, never a tear.
+  float largest = 0;
+  for (std::size_t p = 0; p < positions.size(); p += 4)
+    largest = std::max(largest, core::length(core::Vec3f{positions2[p] - positions[p],
+                                                         positions2[p + 1] - positions[p + 1],
+                                                         positions2[p + 2] - positions[p + 2]}));
+  QVERIFY(largest > 1e-4f && largest < 0.1f * radius);
+}
+
+void SplatTest::everyLayerStaysContinuousOverSeams() {
+  GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+  const int n = d.size();
+  // On the left seam and on a corner pole: the dab covers both sides of each.
+  for (core::Sample centre : {core::Sample{0, n / 3}, core::Sample{0, 0}}) {
+    engine_->dab(d, "splat", splatDab(d, centre, 0.4f, "brick", 0));
+    QCOMPARE(core::maxSeamGap(d.document().positions), 0.0f);
+    for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature}) {
+      const int channels = GpuDocument::channels(layer);
+      int compared = 0;
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          if (i != 0 && j != 0 && i != n && j != n) continue;
+          std::array<core::Sample, 4> same{};
+          const int count = core::identifiedSamples(n, {i, j}, same);
+          const std::vector<float> a = d.mirrorTexels(layer, {i, j, 1, 1});
+          for (int k = 0; k < count; ++k) {
+            const std::vector<float> b = d.mirrorTexels(layer, {same[k].i, same[k].j, 1, 1});
+            for (int ch = 0; ch < channels; ++ch)
+              QVERIFY2(a[ch] == b[ch], qPrintable(QString("layer %1 (%2,%3)/(%4,%5)")
+                                                      .arg(int(layer))
+                                                      .arg(i)
+                                                      .arg(j)
+                                                      .arg(same[k].i)
+                                                      .arg(same[k].j)));
+            ++compared;
+          }
+        }
+      QVERIFY(compared > 4 * n);
+    }
+  }
+  // And something was painted on both sides of the seam.
+  QVERIFY(luminanceAt(d, {1, n / 3}) != luminanceAt(d, {n / 2, n / 2}));
+}
+
+float SplatTest::cellSize(const GpuDocument& d, core::Sample centre, core::Vec3f axis,
+                          core::Vec3f offset, float reach) {
+  // Off the centre by `offset`: the line through it would run along a cell edge.
+  const core::Vec3f c = d.document().positions.at(centre).xyz() + offset;
+  std::vector<float> changes;
+  std::optional<bool> previous;
+  const int steps = 400;
+  for (int k = 0; k <= steps; ++k) {
+    const float t = -reach + 2 * reach * static_cast<float>(k) / steps;
+    const core::Sample s = nearestSample(d, c + axis * t);
+    const bool light = luminanceAt(d, s) > 0.5f;
+    if (previous && light != *previous) changes.push_back(t);
+    previous = light;
+  }
+  std::vector<float> gaps;
+  for (std::size_t k = 1; k < changes.size(); ++k)
+    gaps.push_back(changes[k] - changes[k - 1]);
+  if (gaps.size() < 3) return 0;
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<long>(gaps.size() / 2), gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
+void SplatTest::projectedTexelsKeepTheirSizeWhereTheImageStretches() {
+  // An ellipsoid three times as long in x: around its +z pole the image's samples are three
+  // times as far apart along x as along y.
+  core::Document document = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 512));
+  for (core::Vec4f& p : document.positions.texels())
+    p.x *= 3;
+  core::Sample pole{0, 0};
+  float top = -1e9f;
+  const int n = document.size();
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (document.positions.at(i, j).z > top) top = document.positions.at(i, j).z, pole = {i, j};
+  const core::Vec3f x{1, 0, 0}, y{0, 1, 0};
+
+  float view[2] = {0, 0}, uv[2] = {0, 0};
+  for (int projection : {0, 1}) {
+    GpuDocument d(document);
+    Dab dab = splatDab(d, pole, 0.6f, "checker", projection);
+    dab.centreNormal = {0, 0, 1}; // the pole's: keeps the projection frame on x and y
+    engine_->dab(d, "splat", dab);
+    float* out = projection == 0 ? view : uv;
+    const float quarter = 0.3f * 0.07f * GpuDocument(document).bounds().diagonal() / 8;
+    out[0] = cellSize(d, pole, x, y * quarter, 0.25f);
+    out[1] = cellSize(d, pole, y, x * quarter, 0.25f);
+    QVERIFY2(out[0] > 0 && out[1] > 0,
+             qPrintable(QString("no checker found (%1, %2)").arg(out[0]).arg(out[1])));
+  }
+  qInfo("checker cells along x and y on a 3:1 stretched region: view %.4f x %.4f, uv %.4f x %.4f",
+        double(view[0]), double(view[1]), double(uv[0]), double(uv[1]));
+  // Projected: square cells, 1/8 of a tile (0.07 of the diagonal) on each axis.
+  const float diagonal = GpuDocument(document).bounds().diagonal();
+  const float expected = 0.07f * diagonal / 8;
+  QVERIFY2(std::abs(view[0] / view[1] - 1) < 0.15f,
+           qPrintable(QString("view cells %1 x %2").arg(view[0]).arg(view[1])));
+  QVERIFY2(std::abs(view[0] / expected - 1) < 0.2f,
+           qPrintable(QString("view cell %1, expected %2").arg(view[0]).arg(expected)));
+  // uv: the cells follow the image, stretched about 3x along x.
+  QVERIFY2(uv[0] / uv[1] > 2.2f, qPrintable(QString("uv cells %1 x %2").arg(uv[0]).arg(uv[1])));
+}
+
+QTEST_APPLESS_MAIN(SplatTest)
+#include "splat_gltest.moc"
