@@ -195,10 +195,24 @@ bool ViewportWidget::uploadDocument(core::Document document) {
   const int n = document.size();
   try {
     drainGlErrors();
-    auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document));
+    // The upload is GL work, so it stays on this thread; between its bands the event loop runs
+    // (timers, repaints, the progress dialog) but no user input: nothing may edit meanwhile.
+    QElapsedTimer sinceEvents;
+    sinceEvents.start();
+    auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document), [&](float) {
+      if (sinceEvents.elapsed() < 30) return;
+      uploading_ = true;
+      QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+      uploading_ = false;
+      makeCurrent(); // a repaint in between may have left another context current
+      sinceEvents.restart();
+    });
     stroke_.reset();
     document_ = std::move(uploaded);
-    divisor_ = std::clamp(divisor_, 1, std::max(1, n / 2));
+    // Until the caller picks a level: one of at most 256 a side (N/1 of a 4096 image would
+    // build a 33-million-triangle index buffer first).
+    divisor_ = std::max(divisor_, std::max(1, n / 256));
+    divisor_ = std::min(divisor_, std::max(1, n / 2));
     model_->setLevel(n, divisor_);
     model_->refreshAllNormals(*document_);
   } catch (const std::exception& e) {
@@ -425,6 +439,7 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
 }
 
 void ViewportWidget::paintGL() {
+  if (uploading_) return; // a document is half uploaded: keep the last frame
   const qint64 now = clock_.elapsed();
   frameTimes_.push_back(now);
   while (!frameTimes_.empty() && now - frameTimes_.front() > 2000)

@@ -183,6 +183,7 @@ private:
   bool tabletDown_ = false;
 
   bool glStarted_ = false;
+  bool uploading_ = false;
   QString error_;
   QElapsedTimer clock_;
   std::deque<qint64> frameTimes_;

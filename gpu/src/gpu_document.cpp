@@ -40,15 +40,22 @@ int GpuDocument::channels(BrushLayer layer) {
   return 4;
 }
 
-GpuDocument::GpuDocument(core::Document document)
+GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
     : document_(std::move(document)), bounds_(document_.positions) {
   const int side = document_.positions.side();
-  const core::TexelRect all{0, 0, side, side};
+  // Row bands: a caller on a GUI thread gets control back (progress) between them, and an
+  // unpainted layer's fill needs only one band-sized buffer instead of a full-size one.
+  const int band = std::max(1, (1 << 20) / side);
+  const int steps = 4 * ((side + band - 1) / band);
+  int step = 0;
   for (BrushLayer layer :
        {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
     textures_[index(layer)] = Texture(side, side, formatOf(layer));
     scratch_[index(layer)] = Texture(side, side, formatOf(layer));
-    push(layer, all);
+    for (int y = 0; y < side; y += band) {
+      push(layer, {0, y, side, std::min(band, side - y)});
+      if (progress) progress(static_cast<float>(++step) / static_cast<float>(steps));
+    }
     // An unpainted layer's fill as the texture holds it (half floats round 0.8 to 0.7998), so
     // the mirror equals the texture bit for bit from the start.
     if (core::Layer* l = mirrorLayer(layer); l && l->uniform()) {

@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gl_objects.h"
 
 #include <array>
+#include <functional>
 #include <utility>
 
 namespace octaclay::gpu {
@@ -17,8 +18,9 @@ namespace octaclay::gpu {
 /// the full image back. All calls need the engine's context current.
 class GpuDocument {
 public:
-  /// Uploads every layer. Throws GlError.
-  explicit GpuDocument(core::Document document);
+  /// Uploads every layer, in row bands; progress (optional) is called after each with the
+  /// fraction done, on this thread (a GUI thread may process events there). Throws GlError.
+  explicit GpuDocument(core::Document document, const std::function<void(float)>& progress = {});
 
   int size() const { return document_.size(); }
   const core::Document& document() const { return document_; }
