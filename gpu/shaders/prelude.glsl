@@ -22,10 +22,9 @@ uniform vec3 u_projectionRight;
 uniform vec3 u_projectionUp;
 #if defined(BRUSH_MATERIAL)
 // The chosen material's maps (repeat-wrapped) and scales, object units unless noted.
-uniform sampler2D u_materialHeight;       // R: 0.5 = no displacement
-uniform sampler2D u_materialColour;       // RGBA, alpha = coverage
-uniform sampler2D u_materialSpecular;     // R
-uniform sampler2D u_materialReflectivity; // R
+uniform sampler2D u_materialColour;  // RGBA, alpha = coverage
+uniform sampler2D u_materialSurface; // R height (0.5 = none), G specular, B reflectivity
+uniform float u_materialLod;         // the mip level one sample's footprint needs
 uniform float u_tileSize;    // one tile of the maps on the surface
 uniform float u_tileSamples; // the same, in image samples (uv projection)
 uniform float u_heightScale; // displacement of height 1 - 0.5

@@ -265,12 +265,14 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
     g.id = m.id;
     g.tileSize = m.tileSize;
     g.heightScale = m.heightScale;
-    auto upload = [](const core::RasterImage& image) {
-      // Single-channel maps are stored as R32F, colour as RGBA16F; repeat-wrapped and mipmapped
-      // so a far-away splat averages its texels instead of aliasing.
-      const bool colour = image.channels == 4;
-      Texture t(image.width, image.height, colour ? TextureFormat::Rgba16f : TextureFormat::R32f);
-      t.upload({0, 0, image.width, image.height}, image.pixels);
+    auto upload = [](int width, int height, const std::vector<float>& rgba) {
+      // RGBA16F, repeat-wrapped and mipmapped so a far-away splat averages its texels instead
+      // of aliasing.
+      int levels = 1;
+      while ((std::max(width, height) >> levels) > 0)
+        ++levels;
+      Texture t = Texture::withLevels(width, height, TextureFormat::Rgba16f, levels);
+      t.upload({0, 0, width, height}, rgba);
       glBindTexture(GL_TEXTURE_2D, t.id());
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -280,10 +282,15 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
       glBindTexture(GL_TEXTURE_2D, 0);
       return t;
     };
-    g.height = upload(m.height);
-    g.colour = upload(m.colour);
-    g.specular = upload(m.specular);
-    g.reflectivity = upload(m.reflectivity);
+    g.mapSize = m.colour.width;
+    g.colour = upload(m.colour.width, m.colour.height, m.colour.pixels);
+    // Height, specular and reflectivity in one texture: one sample instead of three per texel.
+    std::vector<float> surface;
+    surface.reserve(m.height.pixels.size() * 4);
+    for (std::size_t k = 0; k < m.height.pixels.size(); ++k)
+      surface.insert(surface.end(),
+                     {m.height.pixels[k], m.specular.pixels[k], m.reflectivity.pixels[k], 1.0f});
+    g.surface = upload(m.height.width, m.height.height, surface);
     materials_.push_back(std::move(g));
   }
   checkGlError("uploading materials");
@@ -315,20 +322,37 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
                                                    : "'" + p.options.front() + "'") +
                     " is loaded (see resources/materials)");
     const GpuMaterial& m = materials_[static_cast<std::size_t>(index)];
-    const Texture* maps[] = {&m.height, &m.colour, &m.specular, &m.reflectivity};
-    const char* names[] = {"u_materialHeight", "u_materialColour", "u_materialSpecular",
-                           "u_materialReflectivity"};
-    for (int k = 0; k < 4; ++k) {
-      glActiveTexture(static_cast<GLenum>(GL_TEXTURE4 + k));
-      glBindTexture(GL_TEXTURE_2D, maps[k]->id());
-      glUniform1i(program.uniform(names[k]), 4 + k);
-    }
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, m.colour.id());
+    glUniform1i(program.uniform("u_materialColour"), 4);
+    glActiveTexture(GL_TEXTURE5);
+    glBindTexture(GL_TEXTURE_2D, m.surface.id());
+    glUniform1i(program.uniform("u_materialSurface"), 5);
     glActiveTexture(GL_TEXTURE0);
     const float diagonal = std::max(document.bounds().diagonal(), 1e-20f);
-    glUniform1f(program.uniform("u_tileSize"), m.tileSize * diagonal);
+    const float tileSize = m.tileSize * diagonal;
     // uv projection measures in samples: the same fraction of N as of the diagonal.
-    glUniform1f(program.uniform("u_tileSamples"), m.tileSize * static_cast<float>(document.size()));
-    glUniform1f(program.uniform("u_heightScale"), m.heightScale * m.tileSize * diagonal);
+    const float tileSamples = m.tileSize * static_cast<float>(document.size());
+    glUniform1f(program.uniform("u_tileSize"), tileSize);
+    glUniform1f(program.uniform("u_tileSamples"), tileSamples);
+    glUniform1f(program.uniform("u_heightScale"), m.heightScale * tileSize);
+    // One mip level for the dab, from the sample spacing at its centre: the maps' texels one
+    // sample spans (a per-texel level would cost a position fetch and a log per texel).
+    const int projection = [&] {
+      for (const BrushParameter& q : manifest.parameters)
+        if (q.id == "projection") {
+          const auto v = dab.parameters.find(q.id);
+          return static_cast<int>(v != dab.parameters.end() ? v->second[0] : q.defaultValue[0]);
+        }
+      return 0;
+    }();
+    const core::GeometryImage& image = document.document().positions;
+    const core::Sample c = dab.centreTexel;
+    const core::Sample next{c.i < document.size() ? c.i + 1 : c.i - 1, c.j};
+    const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
+    const float tilesPerSample = projection == 1 ? 1.0f / tileSamples : spacing / tileSize;
+    glUniform1f(program.uniform("u_materialLod"),
+                std::max(0.0f, std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f))));
     return;
   }
 }

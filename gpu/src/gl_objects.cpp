@@ -67,12 +67,18 @@ GLenum layoutOf(int channels) {
 
 } // namespace
 
-Texture::Texture(int width, int height, TextureFormat format)
+Texture::Texture(int width, int height, TextureFormat format) : Texture(width, height, format, 1) {}
+
+Texture Texture::withLevels(int width, int height, TextureFormat format, int levels) {
+  return Texture(width, height, format, levels);
+}
+
+Texture::Texture(int width, int height, TextureFormat format, int levels)
     : width_(width), height_(height), format_(format) {
-  if (width < 1 || height < 1) throw GlError("texture size must be positive");
+  if (width < 1 || height < 1 || levels < 1) throw GlError("texture size must be positive");
   glGenTextures(1, &id_);
   glBindTexture(GL_TEXTURE_2D, id_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, info(format).internal, width, height);
+  glTexStorage2D(GL_TEXTURE_2D, levels, info(format).internal, width, height);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

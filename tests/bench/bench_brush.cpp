@@ -1,11 +1,12 @@
 // Time per dab of push and smooth at N = 256, 1024, 4096 with radii of 2, 10 and 30 % of the
-// bounding-box diagonal, a whole-image smooth pass at each N, and effective bytes/s of a dab
+// bounding-box diagonal, material splat dabs at N = 1024, a whole-image smooth pass at each N, and effective bytes/s of a dab
 // beside a memcpy of the same bytes in the same run (issue 3's targets; ANCHORS.md's Blender).
 #include "bench_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/material_catalog.h"
 #include "octaclay/gpu/stroke.h"
 
 #include <benchmark/benchmark.h>
@@ -25,6 +26,12 @@ struct Session {
   int sphereSize = 0;
   core::GeometryImage sphere;
   std::unique_ptr<gpu::GpuDocument> current;
+
+  Session() {
+    gpu::MaterialCatalog materials; // for the splat brush (its default material, brick)
+    materials.scan({std::filesystem::path(OCTACLAY_SOURCE_DIR) / "resources/materials"});
+    library.engine().setMaterials(materials);
+  }
 
   // A fresh sphere for every run, so no run inherits another's edits.
   gpu::GpuDocument& freshDocument(int n) {
@@ -91,6 +98,11 @@ void BM_PushDab(benchmark::State& state) {
 void BM_SmoothDab(benchmark::State& state) {
   runDabs(state, "smooth", static_cast<float>(state.range(1)) / 1000.0f);
 }
+// The material splat writes positions, diffuse and feature (all four attributes) in one dab;
+// issue 5 compares it with a push dab of the same radius in the same run.
+void BM_SplatDab(benchmark::State& state) {
+  runDabs(state, "splat", static_cast<float>(state.range(1)) / 1000.0f);
+}
 // A radius of twice the diagonal covers the whole model: a full-image pass.
 void BM_SmoothFullImage(benchmark::State& state) {
   runDabs(state, "smooth", 2.0f);
@@ -139,6 +151,13 @@ BENCHMARK(BM_PushDab)
     ->MinTime(0.3);
 BENCHMARK(BM_SmoothDab)
     ->Apply(dabSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(0.3);
+BENCHMARK(BM_SplatDab)
+    ->Args({1024, 20})
+    ->Args({1024, 100})
+    ->Args({1024, 300})
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(0.3);

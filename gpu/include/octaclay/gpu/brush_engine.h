@@ -78,7 +78,9 @@ private:
   struct GpuMaterial {
     std::string id;
     float tileSize = 0, heightScale = 0;
-    Texture height, colour, specular, reflectivity;
+    int mapSize = 0;
+    Texture colour;  // RGBA
+    Texture surface; // R height, G specular, B reflectivity
   };
   void bindMaterial(const Program& program, const BrushManifest& manifest,
                     const GpuDocument& document, const Dab& dab) const;

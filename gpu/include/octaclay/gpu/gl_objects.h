@@ -26,6 +26,8 @@ public:
   Texture() = default;
   /// Allocates width × height texels of format, nearest filtering, clamped. Throws GlError.
   Texture(int width, int height, TextureFormat format);
+  /// The same with room for `levels` mipmap levels (fill them with glGenerateMipmap).
+  static Texture withLevels(int width, int height, TextureFormat format, int levels);
   static Texture wrap(unsigned id, int width, int height, TextureFormat format);
   Texture(Texture&& other) noexcept;
   Texture& operator=(Texture&& other) noexcept;
@@ -55,6 +57,7 @@ public:
   void bindAsTarget() const;
 
 private:
+  Texture(int width, int height, TextureFormat format, int levels);
   unsigned framebuffer() const;
 
   unsigned id_ = 0;
