@@ -358,8 +358,10 @@ std::optional<gpu::BrushManifest> ViewportWidget::prepareBrush(const std::string
     if (variant.falloff == gpu::Falloff::Curve && variant.falloffCurve.empty())
       variant.falloff = gpu::Falloff::Smooth;
   }
-  if (variant.category == gpu::Category::Paint && variant.writes.size() == 1 &&
-      variant.writes.front() != gpu::BrushLayer::Positions)
+  // The Layers dock's paint target redirects colour paint (a brush writing only diffuse);
+  // brushes made for another layer (mask, specular, reflectivity) keep theirs.
+  if (variant.category == gpu::Category::Paint &&
+      variant.writes == std::vector<gpu::BrushLayer>{gpu::BrushLayer::Diffuse})
     variant.writes = {static_cast<gpu::BrushLayer>(paintTarget_)};
   const std::string key = variantKey(variant);
   auto found = loadedVariant_.find(id);

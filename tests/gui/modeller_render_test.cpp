@@ -1,10 +1,12 @@
 // The modeller end to end, drawing through the real VTK viewport (xcb under Xvfb, llvmpipe):
 // pixels read back, synthetic mouse drags, undo, plugins, files and crash recovery.
 #include "brush_panel.h"
+#include "layers_panel.h"
 #include "main_window.h"
 #include "octaclay/core/base_shapes.h"
 #include "viewport_widget.h"
 
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QProgressDialog>
@@ -66,6 +68,8 @@ private slots:
   void fineBumpShowsInTheShadingAtLevelEighth();
   void modifiersKeysAndPenPressureShapeTheStroke();
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
+  void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
+  void splatLaysMaterialInOneStroke();
   void corruptFileFromTheFileMenuKeepsTheDocument();
   void autosaveSurvivesACrashAndIsRecovered();
   void largeDocumentsLoadAndSaveWithProgressWhileTheWindowResponds();
@@ -330,6 +334,77 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
   const float full = penDab(1.0), light = penDab(0.25);
   QVERIFY2(full > 0.01f && std::abs(light / full - 0.25f) < 0.05f,
            qPrintable(QString("full %1, light %2").arg(full).arg(light)));
+}
+
+void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
+  app::ViewportWidget* view = window_->viewport();
+  const QPoint centre(view->width() / 2, view->height() / 2);
+  const QPoint side(view->width() / 2 + view->height() / 5, view->height() / 2);
+  auto grab = [&] {
+    hideBrushOutline(view);
+    return view->grabFramebuffer();
+  };
+  auto lum = [](const QImage& image, QPoint p) { return luminance(image.pixel(p)); };
+  // The specular preview of the unpainted clay: its default 0.25 everywhere.
+  window_->layersPanel()->setPreview(3);
+  QVERIFY(std::abs(lum(grab(), centre) - 0.25f * 255) < 4);
+  window_->layersPanel()->setPreview(0);
+  const QImage plain = grab();
+
+  // More shine: the headlight's highlight at the centre brightens where specular was raised.
+  // (radius and strength are remembered per brush: set them after choosing it)
+  QVERIFY(window_->brushPanel()->selectBrush("paint-specular"));
+  window_->brushPanel()->setRadius(0.06f);
+  window_->brushPanel()->setStrength(1.0f);
+  view->beginStrokeAt(centre);
+  view->endStroke();
+  QVERIFY2(lum(grab(), centre) > lum(plain, centre) + 5,
+           qPrintable(QString("%1 -> %2").arg(lum(plain, centre)).arg(lum(grab(), centre))));
+  window_->action("actionUndo")->trigger();
+  QCOMPARE(grab().pixel(centre), plain.pixel(centre));
+
+  // Full reflectivity at the centre: the environment shows there, nowhere else.
+  QVERIFY(window_->brushPanel()->selectBrush("paint-reflectivity"));
+  window_->brushPanel()->setRadius(0.06f);
+  window_->brushPanel()->setStrength(1.0f);
+  view->beginStrokeAt(centre);
+  view->endStroke();
+  const QImage reflective = grab();
+  QVERIFY2(std::abs(lum(reflective, centre) - lum(plain, centre)) > 15,
+           qPrintable(QString("%1 -> %2").arg(lum(plain, centre)).arg(lum(reflective, centre))));
+  QCOMPARE(reflective.pixel(side), plain.pixel(side));
+  // The reflectivity channel alone: bright where painted (value 0.8), black elsewhere.
+  window_->layersPanel()->setPreview(4);
+  const QImage channel = grab();
+  QVERIFY(std::abs(lum(channel, centre) - 0.8f * 255) < 8);
+  QVERIFY(lum(channel, side) < 2);
+  window_->layersPanel()->setPreview(0);
+}
+
+void ModellerRenderTest::splatLaysMaterialInOneStroke() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
+  QVERIFY(window_->viewport()->materialIds().contains("brick"));
+  QVERIFY(window_->brushPanel()->selectBrush("splat"));
+  QVERIFY(qobject_cast<QComboBox*>(window_->brushPanel()->parameterWidget("material")));
+  app::ViewportWidget* view = window_->viewport();
+  const std::vector<float> before = positionsOf(*window_);
+  stroke(*window_, "splat", 0.08f, 1.0f, {view->width() / 2.0 - 40, view->height() / 2.0},
+         {view->width() / 2.0 + 40, view->height() / 2.0});
+  QCOMPARE(window_->undoStack()->count(), 1);
+  const core::Document& d = view->document();
+  QVERIFY(!bitEqual(before, positionsOf(*window_)));     // relief
+  QVERIFY(!d.diffuse.uniform() && !d.feature.uniform()); // colour, shine, reflectivity
+  // One undo takes all of it back.
+  window_->action("actionUndo")->trigger();
+  QVERIFY(bitEqual(before, positionsOf(*window_)));
+  const core::Document& undone = view->document();
+  for (std::size_t k = 0; k < undone.diffuse.texels.size(); k += 4)
+    QVERIFY(std::abs(undone.diffuse.texels[k] - undone.diffuse.fill[0]) < 1e-6f);
 }
 
 void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {
