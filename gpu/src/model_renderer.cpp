@@ -35,12 +35,29 @@ void bindTexture(int unit, const Texture& texture) {
 
 ModelRenderer::ModelRenderer()
     : normalProgram_("normal map", rectsVertexShader(), normalPassSource()),
-      drawProgram_("model", detail::builtInShader("model_vertex.glsl"),
-                   detail::builtInShader("model_fragment.glsl")),
+
       chunks_(std::make_unique<detail::ModelChunks>()) {
   glGenVertexArrays(1, &vertexArray_);
   glGenBuffers(1, &indexBuffer_);
   checkGlError("creating the model's vertex array");
+}
+
+const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
+                                          bool reflection, int preview) {
+  const int key = (diffuseTexture ? 1 : 0) | (featureTexture ? 2 : 0) | (maskTint ? 4 : 0) |
+                  (reflection ? 8 : 0) | (preview << 4);
+  const auto found = drawPrograms_.find(key);
+  if (found != drawPrograms_.end()) return found->second;
+  std::string source = "#version 430 core\n";
+  if (diffuseTexture) source += "#define DIFFUSE_TEXTURE\n";
+  if (featureTexture) source += "#define FEATURE_TEXTURE\n";
+  if (maskTint) source += "#define MASK_TINT\n";
+  if (reflection) source += "#define REFLECTION\n";
+  source += "#define PREVIEW " + std::to_string(preview) + "\n";
+  source += detail::builtInShader("model_fragment.glsl");
+  return drawPrograms_
+      .emplace(key, Program("model", detail::builtInShader("model_vertex.glsl"), source))
+      .first->second;
 }
 
 ModelRenderer::~ModelRenderer() {
@@ -134,37 +151,38 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   if (indexCount_ == 0 || n_ != document.size())
     throw GlError("the model renderer's level was not set for this document");
   if (normals_.width() != n_ + 1) refreshAllNormals(document);
-  drawProgram_.use();
+  const core::Document& d = document.document();
+  const bool diffuseTexture = view.showDiffuse && !d.diffuse.uniform();
+  const bool featureTexture = !d.feature.uniform();
+  const bool maskTint =
+      view.showMask && !d.mask.uniform() && view.preview == ModelView::Preview::Shaded;
+  // Reflection only where something may reflect: a painted feature layer or a reflective fill.
+  const bool reflection = environment_.id() != 0 && (featureTexture || d.feature.fill[2] > 0);
+  const Program& p = drawVariant(diffuseTexture, featureTexture, maskTint, reflection,
+                                 static_cast<int>(view.preview));
+  p.use();
   bindTexture(0, document.texture(BrushLayer::Positions));
   bindTexture(1, normals_);
   bindTexture(2, document.texture(BrushLayer::Diffuse));
   bindTexture(3, document.texture(BrushLayer::Mask));
   bindTexture(4, document.texture(BrushLayer::Feature));
   if (environment_.id()) bindTexture(5, environment_);
-  const Program& p = drawProgram_;
   glUniform1i(p.uniform("u_positions"), 0);
   glUniform1i(p.uniform("u_normals"), 1);
   glUniform1i(p.uniform("u_diffuse"), 2);
   glUniform1i(p.uniform("u_mask"), 3);
   glUniform1i(p.uniform("u_feature"), 4);
   glUniform1i(p.uniform("u_environment"), 5);
-  glUniform1i(p.uniform("u_hasEnvironment"), environment_.id() != 0);
-  glUniform1i(p.uniform("u_preview"), static_cast<int>(view.preview));
+  const std::array<float, 4> diffuseFill =
+      view.showDiffuse ? d.diffuse.fill : std::array<float, 4>{0.8f, 0.78f, 0.74f, 1.0f};
+  glUniform3f(p.uniform("u_diffuseFill"), diffuseFill[0], diffuseFill[1], diffuseFill[2]);
+  glUniform3f(p.uniform("u_featureFill"), d.feature.fill[0], d.feature.fill[1], d.feature.fill[2]);
+  glUniform1f(p.uniform("u_maskFill"), d.mask.fill[0]);
   glUniformMatrix4fv(p.uniform("u_objectToClip"), 1, GL_FALSE, view.objectToClip.data());
   glUniform1i(p.uniform("u_step"), divisor_);
   glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
   glUniform1i(p.uniform("u_imageSide"), n_ + 1);
   glUniform3f(p.uniform("u_eye"), view.eye.x, view.eye.y, view.eye.z);
-  // An unpainted layer is one value: a uniform, not a texture read per pixel.
-  const core::Document& d = document.document();
-  glUniform1i(p.uniform("u_showDiffuse"), view.showDiffuse);
-  glUniform1i(p.uniform("u_diffusePainted"), !d.diffuse.uniform());
-  glUniform3f(p.uniform("u_diffuseFill"), d.diffuse.fill[0], d.diffuse.fill[1], d.diffuse.fill[2]);
-  glUniform1i(p.uniform("u_showMask"), view.showMask && !d.mask.uniform());
-  glUniform1i(p.uniform("u_featurePainted"), !d.feature.uniform());
-  glUniform3f(p.uniform("u_featureFill"), d.feature.fill[0], d.feature.fill[1], d.feature.fill[2]);
-  glUniform1i(p.uniform("u_maskPainted"), !d.mask.uniform());
-  glUniform1f(p.uniform("u_maskFill"), d.mask.fill[0]);
   glUniform1i(p.uniform("u_showBrush"), view.showBrush);
   glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
               view.brushCentre.z);

@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gpu_document.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <span>
 
@@ -67,7 +68,12 @@ public:
   long long drawnTriangles() const { return drawnTriangles_; }
 
 private:
-  Program normalProgram_, drawProgram_;
+  /// The draw program for one state, compiled on first use. Throws GlError.
+  const Program& drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
+                             bool reflection, int preview);
+
+  Program normalProgram_;
+  std::map<int, Program> drawPrograms_;
   RectPass rectPass_;
   Texture normals_, environment_;
   unsigned vertexArray_ = 0, indexBuffer_ = 0;
