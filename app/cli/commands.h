@@ -30,5 +30,6 @@ Command addExportCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addStrokeCommand(CLI::App& app);
 Command addBrushesCommand(CLI::App& app);
+Command addImportCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   const app::Command commands[] = {app::addNewCommand(cli),    app::addInfoCommand(cli),
                                    app::addExportCommand(cli), app::addCompareCommand(cli),
-                                   app::addStrokeCommand(cli), app::addBrushesCommand(cli)};
+                                   app::addStrokeCommand(cli), app::addBrushesCommand(cli),
+                                   app::addImportCommand(cli)};
 
   try {
     cli.parse(argc, argv);
