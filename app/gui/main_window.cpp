@@ -7,6 +7,9 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
+#include "octaclay/core/mesh_validation.h"
+#include "octaclay/core/octahedral_resampling.h"
+#include "octaclay/core/spherical_parameterization.h"
 #include "octaclay/core/textured_export.h"
 #include "octaclay/gpu/brush_library.h"
 #include "stroke_command.h"
@@ -151,6 +154,22 @@ void MainWindow::buildMenus() {
             if (!maybeSave()) return;
             const QString path = choose(FileRequest::Open);
             if (!path.isEmpty()) openDocument(path);
+          });
+  connect(add(file, tr("&Import Mesh…"), "actionImport", QKeySequence(tr("Ctrl+I"))),
+          &QAction::triggered, this, [this] {
+            if (!maybeSave()) return;
+            const QString path = choose(FileRequest::Import);
+            if (path.isEmpty()) return;
+            int n = 512;
+            if (!chooser_) { // interactive: ask the image size
+              bool ok = false;
+              const QString size =
+                  QInputDialog::getItem(this, tr("Import mesh"), tr("Geometry image size N"),
+                                        {"128", "256", "512", "1024", "2048"}, 2, false, &ok);
+              if (!ok) return;
+              n = size.toInt();
+            }
+            importMesh(path, n);
           });
   recentMenu_ = file->addMenu(tr("Open &Recent"));
   connect(add(file, tr("&Save"), "actionSave", QKeySequence::Save), &QAction::triggered, this,
@@ -322,6 +341,9 @@ QString MainWindow::choose(FileRequest request) {
   case FileRequest::SaveAs:
     return QFileDialog::getSaveFileName(this, tr("Save model"), dir,
                                         tr("Octaclay documents (*.exr)"));
+  case FileRequest::Import:
+    return QFileDialog::getOpenFileName(this, tr("Import mesh"), dir,
+                                        tr("Meshes (*.obj *.ply *.stl *.off)"));
   case FileRequest::Export:
     return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
                                         tr("Meshes (*.obj *.glb *.ply *.stl *.off)"));
@@ -329,17 +351,26 @@ QString MainWindow::choose(FileRequest request) {
   return {};
 }
 
-QString MainWindow::runInBackground(const QString& label, const std::function<void()>& work) {
+QString MainWindow::runInBackground(const QString& label, const std::function<void()>& work,
+                                    std::shared_ptr<TaskControl> control) {
   if (busy_) return tr("Another file operation is still running");
   busy_ = true;
   auto error = std::make_shared<QString>();
   QFutureWatcher<void> watcher;
   QEventLoop loop;
   connect(&watcher, &QFutureWatcher<void>::finished, &loop, &QEventLoop::quit);
-  QProgressDialog progress(label, QString(), 0, 0, this);
+  QProgressDialog progress(label, control ? tr("Cancel") : QString(), 0, control ? 100 : 0, this);
   progress.setWindowModality(Qt::WindowModal); // no edits while the document is in flight
   progress.setMinimumDuration(0);
   progress.cancel(); // QProgressDialog shows itself at construction otherwise: wait as below
+  QTimer poll;
+  if (control) {
+    connect(&progress, &QProgressDialog::canceled, this, [control] { control->cancel = true; });
+    connect(&poll, &QTimer::timeout, &progress, [&progress, control] {
+      progress.setValue(static_cast<int>(control->fraction.load() * 100));
+    });
+    poll.start(100);
+  }
   watcher.setFuture(QtConcurrent::run([work, error] {
     try {
       work();
@@ -354,6 +385,45 @@ QString MainWindow::runInBackground(const QString& label, const std::function<vo
   if (!watcher.isFinished()) loop.exec();
   busy_ = false;
   return *error;
+}
+
+bool MainWindow::importMesh(const QString& path, int n) {
+  auto control = std::make_shared<TaskControl>();
+  auto made = std::make_shared<core::Document>();
+  auto report = std::make_shared<QString>();
+  const QString error = runInBackground(
+      tr("Importing %1…").arg(QFileInfo(path).fileName()),
+      [made, report, control, path, n] {
+        const core::ValidatedMesh mesh = core::loadGenus0Mesh(toPath(path));
+        const core::SphericalMap map = core::parameterizeOnSphere(mesh.mesh, [control](float f) {
+          control->fraction = 0.9f * f;
+          return !control->cancel.load();
+        });
+        if (map.flipped > 0)
+          throw core::Error(core::ErrorKind::InvalidInput,
+                            "the spherical map folds over itself (" + std::to_string(map.flipped) +
+                                " flipped triangles): this mesh is not supported yet");
+        *made = core::importToDocument(mesh.mesh, map, n);
+        control->fraction = 1.0f;
+        *report = QObject::tr("stretch %1, %2 flipped triangles")
+                      .arg(static_cast<double>(map.stretchL2), 0, 'f', 2)
+                      .arg(map.flipped);
+      },
+      control);
+  if (control->cancel) {
+    statusBar()->showMessage(tr("Import cancelled; the current model is unchanged"), 8000);
+    return false;
+  }
+  if (!error.isEmpty()) {
+    showError(tr("Could not import %1: %2\nThe current model is unchanged.").arg(path, error));
+    return false;
+  }
+  adoptDocument(std::move(*made), {});
+  forceModified_ = true; // not saved anywhere yet
+  updateTitle();
+  lastError_.clear();
+  statusBar()->showMessage(tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), *report), 8000);
+  return true;
 }
 
 void MainWindow::adoptDocument(core::Document document, const QString& path) {

@@ -6,7 +6,9 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 
 class QAction;
@@ -34,7 +36,7 @@ public:
     bool askAboutRecovery = true; ///< false: pendingRecovery() is left for the caller
   };
   /// What a file chooser is asked for.
-  enum class FileRequest { Open, SaveAs, Export };
+  enum class FileRequest { Open, SaveAs, Export, Import };
 
   explicit MainWindow(Options options);
   MainWindow() : MainWindow(Options{}) {}
@@ -60,6 +62,9 @@ public:
   bool openDocument(const QString& path);
   /// Saves atomically off the GUI thread; the document stays editable meanwhile.
   bool saveDocument(const QString& path);
+  /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, off the GUI thread
+  /// with a cancellable progress dialog; on failure or cancel the current document stays.
+  bool importMesh(const QString& path, int n);
   /// Writes the mesh at level N/divisor (OBJ, PLY, STL or OFF by extension).
   bool exportMesh(const QString& path, int divisor);
 
@@ -95,7 +100,13 @@ private:
   void refreshBrushes();
   /// Runs work off the GUI thread while the event loop (and a progress dialog after a short
   /// delay) keeps the window responsive. Returns the work's error message, empty on success.
-  QString runInBackground(const QString& label, const std::function<void()>& work);
+  /// What a cancellable task shares with the GUI thread.
+  struct TaskControl {
+    std::atomic<float> fraction{0};
+    std::atomic<bool> cancel{false};
+  };
+  QString runInBackground(const QString& label, const std::function<void()>& work,
+                          std::shared_ptr<TaskControl> control = nullptr);
   void adoptDocument(core::Document document, const QString& path);
 
   Options options_;

@@ -4,6 +4,7 @@
 #include "layers_panel.h"
 #include "main_window.h"
 #include "octaclay/core/base_shapes.h"
+#include "octaclay/core/seaming.h"
 #include "viewport_widget.h"
 
 #include <QComboBox>
@@ -71,6 +72,7 @@ private slots:
   void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
   void splatLaysMaterialInOneStroke();
   void corruptFileFromTheFileMenuKeepsTheDocument();
+  void importTurnsAMeshIntoAModelOrSaysWhyNot();
   void autosaveSurvivesACrashAndIsRecovered();
   void largeDocumentsLoadAndSaveWithProgressWhileTheWindowResponds();
 
@@ -472,6 +474,35 @@ void ModellerRenderTest::corruptFileFromTheFileMenuKeepsTheDocument() {
   window_->action("actionOpen")->trigger();
   QVERIFY(window_->lastError().isEmpty());
   QVERIFY(bitEqual(positionsOf(*window_), before));
+}
+
+void ModellerRenderTest::importTurnsAMeshIntoAModelOrSaysWhyNot() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  const QString meshes = QString(OCTACLAY_SHARED_DATA) + "/meshes/";
+  // A genus-1 mesh is refused with its reason and the sphere stays.
+  const std::vector<float> sphere = positionsOf(*window_);
+  window_->setFileChooser([&](MainWindow::FileRequest r) {
+    return r == MainWindow::FileRequest::Import ? meshes + "invalid/bob_genus1.obj" : QString();
+  });
+  window_->action("actionImport")->trigger();
+  QVERIFY2(window_->lastError().contains("genus 1"), qPrintable(window_->lastError()));
+  QVERIFY(bitEqual(positionsOf(*window_), sphere));
+  // Spot becomes a closed 512 model ready to sculpt (the menu's size without a dialog).
+  window_->setFileChooser([&](MainWindow::FileRequest r) {
+    return r == MainWindow::FileRequest::Import ? meshes + "genus0/spot.obj" : QString();
+  });
+  window_->action("actionImport")->trigger();
+  QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
+  const core::Document& d = window_->viewport()->document();
+  QCOMPARE(d.size(), 512);
+  QCOMPARE(core::maxSeamGap(d.positions), 0.0f);
+  QVERIFY(window_->isModified());
+  stroke(*window_, "push", 0.05f, 0.5f,
+         {window_->viewport()->width() / 2.0, window_->viewport()->height() / 2.0},
+         {window_->viewport()->width() / 2.0 + 20, window_->viewport()->height() / 2.0});
+  QCOMPARE(window_->undoStack()->count(), 1);
 }
 
 void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
