@@ -213,7 +213,7 @@ void benchMesh(const fs::path& path, const Options& options, Tally& tally) {
       if (quality.flipped != 0) {
         // The CLI refuses such a map; the figures still say how far off it is.
         verdict = "FAIL: " + std::to_string(quality.flipped) + " flipped triangles";
-        if (missed != "flips > 0") verdict += " (MISS: " + missed + ")";
+        if (!missed.empty() && missed != "flips > 0") verdict += " (MISS: " + missed + ")";
         ++tally.fail;
       } else if (!missed.empty()) {
         verdict = "MISS: " + missed;
