@@ -6,6 +6,9 @@
 // open surfaces" (SIAM J. Imaging Sci. 2018), taken as a Poisson step on the sphere.
 #include "octaclay/core/spherical_parameterization.h"
 
+#include "detail/spherical_geometry.h"
+#include "detail/spherical_progressive.h"
+
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -19,10 +22,15 @@ namespace octaclay::core {
 
 namespace {
 
-using Vec3d = Eigen::Vector3d;
-using Tri = std::array<int, 3>;
+using detail::flipped;
+using detail::orientation;
+using detail::Points;
+using detail::Tri;
+using detail::triangleArea;
+using detail::TriangleStretch;
+using detail::triangleStretch;
+using detail::Vec3d;
 using SpMat = Eigen::SparseMatrix<double>;
-using Points = std::vector<Vec3d>;
 
 constexpr double kFourPi = 4.0 * M_PI;
 
@@ -37,14 +45,6 @@ struct CompactMesh {
 struct Adjacency {
   std::vector<int> start, adj;
 };
-
-double orientation(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  return a.dot(b.cross(c));
-}
-
-double triangleArea(const Points& x, const Tri& t) {
-  return 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
-}
 
 void report(const std::function<bool(float)>& progress, double fraction) {
   if (progress && !progress(static_cast<float>(std::clamp(fraction, 0.0, 1.0)))) throw Cancelled();
@@ -214,23 +214,6 @@ void conformalizedFlow(Points& x, const std::vector<Tri>& triangles, int steps, 
   }
 }
 
-// The map is handed out in float: a triangle counts as flipped when its corners rounded to
-// float are not positively oriented, so that tiny triangles cannot flip in the conversion.
-Vec3d roundedToFloat(const Vec3d& p) {
-  const float x = static_cast<float>(p.x()), y = static_cast<float>(p.y()),
-              z = static_cast<float>(p.z());
-  return Vec3d(double(x), double(y), double(z));
-}
-
-bool flipped(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  return orientation(a, b, c) <= 0 ||
-         orientation(roundedToFloat(a), roundedToFloat(b), roundedToFloat(c)) <= 0;
-}
-
-bool flipped(const Points& s, const Tri& t) {
-  return flipped(s[t[0]], s[t[1]], s[t[2]]);
-}
-
 int countFlipped(const Points& s, const std::vector<Tri>& triangles) {
   int count = 0;
   for (const Tri& t : triangles)
@@ -297,31 +280,6 @@ void balance(Points& s, const std::vector<Tri>& triangles, const std::vector<dou
       p = ((1 - c2) * d / d.squaredNorm() - c).normalized();
     }
   }
-}
-
-// Per-triangle stretch of the map from the (flat) sphere triangle ps to the surface triangle
-// qs: returns {(a + c) / 2, Γ²} in the notation of Sander et al., or NaN when ps is flipped.
-struct TriangleStretch {
-  double meanSquare = 0, maxSquare = 0;
-};
-
-TriangleStretch triangleStretch(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3d& q0,
-                                const Vec3d& q1, const Vec3d& q2) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (flipped(p0, p1, p2)) return {nan, nan};
-  const Vec3d e1 = p1 - p0, e2 = p2 - p0;
-  const Vec3d normal = e1.cross(e2);
-  const double twiceArea = normal.norm();
-  const double l1 = e1.norm();
-  if (twiceArea <= 0 || l1 <= 0) return {nan, nan};
-  const Vec3d ex = e1 / l1, ey = (normal / twiceArea).cross(ex);
-  // Parameter coordinates (s, t): p0 = (0, 0), p1 = (l1, 0), p2 = (s2, t2).
-  const double s2 = e2.dot(ex), t2 = e2.dot(ey);
-  const Vec3d ss = (q0 * (0 - t2) + q1 * t2 + q2 * 0.0) / twiceArea;
-  const Vec3d st = (q0 * (s2 - l1) + q1 * (0 - s2) + q2 * l1) / twiceArea;
-  const double a = ss.dot(ss), b = ss.dot(st), c = st.dot(st);
-  const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
-  return {0.5 * (a + c), 0.5 * (a + c + root)};
 }
 
 struct StretchSummary {
@@ -532,6 +490,35 @@ void relaxStretch(Points& s, const Points& x, const std::vector<Tri>& triangles,
   }
 }
 
+// The whole-mesh pipeline: conformalized flow, untangling, Möbius balancing, area
+// equalization, stretch relaxation. Good on small or smooth meshes; the coarse-to-fine path
+// uses it for its base. `progress` may be empty.
+Points mapDirectly(const Points& x, const std::vector<Tri>& triangles, const Adjacency& rings,
+                   const SphericalParameterizationOptions& options,
+                   const std::function<bool(float)>& progress) {
+  const int n = static_cast<int>(x.size());
+  Points flow = x;
+  conformalizedFlow(flow, triangles, options.flowSteps, options.flowTimeStep, progress);
+  report(progress, 0.5);
+  Points s(flow.size());
+  for (int v = 0; v < n; ++v)
+    s[v] = flow[v].normalized();
+  untangle(s, triangles, rings);
+  report(progress, 0.55);
+
+  std::vector<double> weights(triangles.size());
+  for (std::size_t t = 0; t < weights.size(); ++t)
+    weights[t] = triangleArea(x, triangles[t]);
+  balance(s, triangles, weights);
+  untangle(s, triangles, rings);
+  report(progress, 0.6);
+
+  if (options.equalizeSteps > 0) equalizeAreas(s, x, triangles, options.equalizeSteps, progress);
+  if (options.relaxSweeps > 0)
+    relaxStretch(s, x, triangles, rings, options.relaxSweeps, progress, 0.8, 1.0);
+  return s;
+}
+
 } // namespace
 
 SphericalMap parameterizeOnSphere(const TriangleMesh& mesh,
@@ -542,26 +529,40 @@ SphericalMap parameterizeOnSphere(const TriangleMesh& mesh,
   const int n = static_cast<int>(input.x.size());
   const Adjacency rings = adjacency(n, input.triangles);
 
-  Points flow = input.x;
-  conformalizedFlow(flow, input.triangles, options.flowSteps, options.flowTimeStep, progress);
-  report(progress, 0.5);
-  Points s(flow.size());
-  for (int v = 0; v < n; ++v)
-    s[v] = flow[v].normalized();
-  untangle(s, input.triangles, rings);
-  report(progress, 0.55);
-
-  std::vector<double> weights(input.triangles.size());
-  for (std::size_t t = 0; t < weights.size(); ++t)
-    weights[t] = triangleArea(input.x, input.triangles[t]);
-  balance(s, input.triangles, weights);
-  untangle(s, input.triangles, rings);
-  report(progress, 0.6);
-
-  if (options.equalizeSteps > 0)
-    equalizeAreas(s, input.x, input.triangles, options.equalizeSteps, progress);
-  if (options.relaxSweeps > 0)
-    relaxStretch(s, input.x, input.triangles, rings, options.relaxSweeps, progress, 0.8, 1.0);
+  // Coarse to fine for all but small meshes; where the whole-mesh pipeline is affordable too
+  // (it wins on some smooth meshes) both run and the lower L2 stretch without flips is kept.
+  const bool coarseToFine = options.baseVertices > 0 && n > 2 * options.baseVertices;
+  const bool direct = !coarseToFine || n <= options.compareBelowVertices;
+  const double split = coarseToFine && direct ? 0.5 : 1.0;
+  Points s;
+  if (coarseToFine) {
+    detail::CoarseToFineOptions coarse;
+    coarse.baseVertices = options.baseVertices;
+    const auto mapBase = [&](const Points& x, const std::vector<Tri>& triangles) {
+      return mapDirectly(x, triangles, adjacency(static_cast<int>(x.size()), triangles), options,
+                         {});
+    };
+    s = detail::mapCoarseToFine(input.x, input.triangles, coarse, mapBase,
+                                [&](double f) { report(progress, 0.9 * split * f); });
+    if (options.relaxSweeps > 0)
+      relaxStretch(s, input.x, input.triangles, rings, options.relaxSweeps, progress, 0.9 * split,
+                   split);
+    untangle(s, input.triangles, rings);
+  }
+  if (direct) {
+    const std::function<bool(float)> scaled = [&](float f) {
+      return !progress || progress(static_cast<float>(split + (1 - split) * f));
+    };
+    Points other = mapDirectly(input.x, input.triangles, rings, options, scaled);
+    untangle(other, input.triangles, rings);
+    if (!coarseToFine) {
+      s = std::move(other);
+    } else {
+      const StretchSummary a = stretch(s, input.x, input.triangles);
+      const StretchSummary b = stretch(other, input.x, input.triangles);
+      if (b.flipped < a.flipped || (b.flipped == a.flipped && b.l2 < a.l2)) s = std::move(other);
+    }
+  }
   untangle(s, input.triangles, rings); // a safety net: the stages above flip nothing
   report(progress, 1);
 

@@ -2,6 +2,7 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
+#include "octaclay/core/mesh_validation.h"
 #include "octaclay/core/octahedral_resampling.h"
 #include "octaclay/core/seaming.h"
 #include "octaclay/core/spherical_parameterization.h"
@@ -47,40 +48,6 @@ TriangleMesh ellipsoid(int levels, Vec3f axes) {
   for (Vec3f& p : mesh.positions)
     p = {p.x * axes.x, p.y * axes.y, p.z * axes.z};
   return mesh;
-}
-
-// The simple cleanup the test meshes need (mesh_validation does it for real): vertices at
-// the same position become one, triangles that repeat an index go, unused vertices go, and a
-// mesh facing inward is turned around.
-TriangleMesh weld(const TriangleMesh& in) {
-  std::map<std::tuple<float, float, float>, std::uint32_t> index;
-  std::vector<std::uint32_t> remap(in.positions.size());
-  std::vector<Vec3f> unique;
-  for (std::size_t v = 0; v < in.positions.size(); ++v) {
-    const Vec3f p = in.positions[v];
-    const auto [it, inserted] =
-        index.try_emplace({p.x, p.y, p.z}, static_cast<std::uint32_t>(unique.size()));
-    if (inserted) unique.push_back(p);
-    remap[v] = it->second;
-  }
-  TriangleMesh out;
-  std::vector<std::uint32_t> used(unique.size(), UINT32_MAX);
-  for (const auto& t : in.triangles) {
-    std::array<std::uint32_t, 3> r{remap[t[0]], remap[t[1]], remap[t[2]]};
-    if (r[0] == r[1] || r[1] == r[2] || r[2] == r[0]) continue;
-    for (std::uint32_t& v : r) {
-      if (used[v] == UINT32_MAX) {
-        used[v] = static_cast<std::uint32_t>(out.positions.size());
-        out.positions.push_back(unique[v]);
-      }
-      v = used[v];
-    }
-    out.triangles.push_back(r);
-  }
-  if (signedVolume(out) < 0)
-    for (auto& t : out.triangles)
-      std::swap(t[1], t[2]);
-  return out;
 }
 
 SurfaceDistanceOptions distanceOptions() {
@@ -229,18 +196,26 @@ void SphericalParameterizationTest::importsSharedMeshes_data() {
   QTest::newRow("bunny_npm") << "bunny_npm.obj";
   QTest::newRow("max_planck") << "max_planck_decimated.obj";
   QTest::newRow("fandisk") << "fandisk.obj";
+  QTest::newRow("airplane") << "airplane.obj";
+  QTest::newRow("blub") << "blub.obj";
+  QTest::newRow("wingnut") << "wingnut.obj";
+  // Passing too but slow here (15–60 s each): koala, nefertiti, igea. Still failing (flips left
+  // by the coarse-to-fine refinement on long thin parts): armadillo, horse, scorpion, sword,
+  // bunny_cgal (4 flips). OCTACLAY_IMPORT_ALL=1 adds them all; OCTACLAY_IMPORT_N sets N.
+  if (qEnvironmentVariableIsSet("OCTACLAY_IMPORT_ALL"))
+    for (const char* f : {"armadillo.obj", "bunny_cgal.obj", "horse.ply", "igea.ply", "koala.obj",
+                          "nefertiti.obj", "scorpion.obj", "sword.obj"})
+      QTest::newRow(f) << f;
 }
 
 void SphericalParameterizationTest::importsSharedMeshes() {
   QFETCH(QString, file);
   const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file;
   if (!QFileInfo::exists(path)) QSKIP("shared mesh not available");
-  const TriangleMesh mesh = weld(readMesh(path.toStdString()));
-  const MeshTopology topology = analyzeTopology(mesh);
-  if (!topology.closed() || !topology.manifold() || topology.euler != 2 ||
-      topology.degenerateTriangles != 0)
-    QSKIP("mesh needs more cleanup than welding");
-  constexpr int n = 256;
+  const TriangleMesh mesh = loadGenus0Mesh(path.toStdString()).mesh;
+  const int n = qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N") > 0
+                    ? qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N")
+                    : 256;
   QElapsedTimer timer;
   timer.start();
   const SphericalMap map = parameterizeOnSphere(mesh);

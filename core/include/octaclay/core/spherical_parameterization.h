@@ -36,6 +36,13 @@ struct SphericalParameterizationOptions {
   double flowTimeStep = 0.5; ///< per step, for the mesh scaled to the unit sphere's area
   int equalizeSteps = 40;    ///< area-equalizing relaxation steps (0: keep the conformal map)
   int relaxSweeps = 10;      ///< sweeps of local stretch minimization over all vertices
+  /// Meshes with more than twice this many vertices are mapped coarse to fine (Praun & Hoppe
+  /// 2003): simplified to about this many vertices, the base mapped as a whole, the vertices
+  /// put back one by one inside their one-rings. 0: always map the whole mesh at once.
+  int baseVertices = 100;
+  /// Up to this many vertices the whole-mesh map is computed as well and the one with the lower
+  /// L2 stretch kept.
+  int compareBelowVertices = 20'000;
 };
 
 /// Maps `mesh` bijectively onto the unit sphere with low stretch: conformalized mean curvature
