@@ -158,13 +158,13 @@ std::string missedTargets(const std::string& mesh, int n, const ImportQuality& q
   return missed;
 }
 
-constexpr const char* kHeader = "%-22s %5s %8s %8s %8s %9s %9s %9s %9s %6s %7s %8s %7s %7s  %s\n";
+constexpr const char* kHeader = "%-22s %5s %8s %8s %8s %9s %9s %9s %9s %6s %8s %9s %7s %7s  %s\n";
 constexpr const char* kRow =
-    "%-22s %5d %8zu %8zu %8.0f %9.0f %9.0f %9.0f %9.0f %6d %7.3f %8.2f %7.4f %7.3f  %s\n";
+    "%-22s %5d %8zu %8zu %8.0f %9.0f %9.0f %9.0f %9.0f %6d %8.4g %9.4g %7.4f %7.3f  %s\n";
 
 // A row for a mesh that could not be loaded or mapped: its error instead of the figures.
 void printFailure(const std::string& mesh, int n, const std::string& what) {
-  std::printf("%-22s %5d %8s %8s %8s %9s %9s %9s %9s %6s %7s %8s %7s %7s  FAIL: %s\n", mesh.c_str(),
+  std::printf("%-22s %5d %8s %8s %8s %9s %9s %9s %9s %6s %8s %9s %7s %7s  FAIL: %s\n", mesh.c_str(),
               n, "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", what.c_str());
   std::fflush(stdout);
 }
@@ -200,7 +200,7 @@ void benchMesh(const fs::path& path, const Options& options, Tally& tally) {
     // A folded map is refused, as octaclay-cli import refuses it, rather than resampled:
     // walking a folded triangulation is slow and its image meaningless.
     for (const int n : options.sizes)
-      std::printf("%-22s %5d %8zu %8zu %8.0f %9.0f %9s %9s %9s %6d %7.3f %8.2f %7s %7s  FAIL: %d "
+      std::printf("%-22s %5d %8zu %8zu %8.0f %9.0f %9s %9s %9s %6d %8.4g %9.4g %7s %7s  FAIL: %d "
                   "flipped triangles, not resampled\n",
                   name.c_str(), n, mesh.positions.size(), mesh.triangles.size(), loadMs,
                   parameterizeMs, "-", "-", "-", map.flipped, static_cast<double>(map.stretchL2),
