@@ -10,6 +10,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <string>
 
 namespace octaclay::app {
 namespace {
@@ -38,6 +39,19 @@ private:
   bool shown_ = false;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+// "vertex colours", "texture <path>" or "none": what the diffuse layer was made from.
+std::string describe(const core::ImportedDiffuse& diffuse) {
+  switch (diffuse.source) {
+  case core::DiffuseSource::VertexColours:
+    return "vertex colours";
+  case core::DiffuseSource::Texture:
+    return "texture " + diffuse.texture.string();
+  case core::DiffuseSource::None:
+    break;
+  }
+  return "none";
+}
 
 } // namespace
 
@@ -87,7 +101,9 @@ Command addImportCommand(CLI::App& app) {
                                 " flipped triangles); this mesh is not supported yet");
         progress.report("resampling", 0.0f);
         const auto sampleStart = std::chrono::steady_clock::now();
-        const core::Document document = core::importToDocument(validated.mesh, map, opt->size);
+        core::ImportedDiffuse diffuse;
+        const core::Document document =
+            core::importValidatedMesh(validated, map, opt->size, &diffuse);
         const double sampleMs = millisecondsSince(sampleStart);
         core::writeDocument(document, opt->output);
         progress.report("measuring", 0.0f);
@@ -97,6 +113,7 @@ Command addImportCommand(CLI::App& app) {
             core::measureImport(validated.mesh, map, document.positions, distanceOptions);
         const double totalMs = millisecondsSince(start);
         const core::MeshCleanup& c = validated.cleanup;
+        const std::string diffuseFrom = describe(diffuse);
 
         if (opt->json) {
           std::cout << nlohmann::json{{"input", opt->input},
@@ -112,6 +129,8 @@ Command addImportCommand(CLI::App& app) {
                                         {"faces_flipped", c.facesFlipped},
                                         {"winding_reversed", c.windingReversed},
                                         {"holes_filled", c.holesFilled}}},
+                                      {"diffuse", diffuseFrom},
+                                      {"notes", diffuse.notes},
                                       {"flipped_triangles", quality.flipped},
                                       {"stretch_l2", quality.stretchL2},
                                       {"stretch_linf", quality.stretchLinf},
@@ -130,9 +149,12 @@ Command addImportCommand(CLI::App& app) {
                     << ", flipped triangles " << quality.flipped << "\n"
                     << "  distance   RMS " << quality.distance.rms * 100 << " %, Hausdorff "
                     << quality.distance.hausdorff * 100 << " % of the bounding-box diagonal\n"
+                    << "  diffuse    " << diffuseFrom << "\n"
                     << "  time       " << totalMs << " ms (parameterization " << mapMs << " ms)\n";
           if (c.windingReversed) std::cout << "  note       faces were wound inward: reversed\n";
           if (c.holesFilled) std::cout << "  note       " << c.holesFilled << " holes filled\n";
+          for (const std::string& note : diffuse.notes)
+            std::cout << "  note       " << note << "\n";
         }
         return kExitOk;
       }};

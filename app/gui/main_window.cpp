@@ -403,11 +403,22 @@ bool MainWindow::importMesh(const QString& path, int n) {
           throw core::Error(core::ErrorKind::InvalidInput,
                             "the spherical map folds over itself (" + std::to_string(map.flipped) +
                                 " flipped triangles): this mesh is not supported yet");
-        *made = core::importToDocument(mesh.mesh, map, n);
+        core::ImportedDiffuse diffuse;
+        *made = core::importValidatedMesh(mesh, map, n, &diffuse);
         control->fraction = 1.0f;
-        *report = QObject::tr("stretch %1, %2 flipped triangles")
+        QString colour = QObject::tr("no colour");
+        if (diffuse.source == core::DiffuseSource::VertexColours)
+          colour = QObject::tr("vertex colours");
+        else if (diffuse.source == core::DiffuseSource::Texture)
+          colour = QObject::tr("texture %1")
+                       .arg(QString::fromStdString(diffuse.texture.filename().string()));
+        *report = QObject::tr("stretch %1, %2 flipped triangles, %3")
                       .arg(static_cast<double>(map.stretchL2), 0, 'f', 2)
-                      .arg(map.flipped);
+                      .arg(map.flipped)
+                      .arg(colour);
+        // Attributes the file names but the import could not use (a missing .mtl or texture).
+        for (const std::string& note : diffuse.notes)
+          *report += QStringLiteral("; ") + QString::fromStdString(note);
       },
       control);
   if (control->cancel) {

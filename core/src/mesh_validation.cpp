@@ -202,7 +202,8 @@ Analysis analyze(const TriangleMesh& mesh) {
 }
 
 // Closes every hole whose loop is simple and at most maxEdges long; returns how many.
-std::size_t fillHoles(TriangleMesh& mesh,
+// A new centre vertex gets the mean colour of its loop when `colours` is not empty.
+std::size_t fillHoles(TriangleMesh& mesh, std::vector<Vec4f>& colours,
                       std::vector<std::pair<std::uint32_t, std::uint32_t>> edges,
                       std::size_t maxEdges) {
   std::sort(edges.begin(), edges.end());
@@ -246,6 +247,17 @@ std::size_t fillHoles(TriangleMesh& mesh,
       const double n = double(loop.size());
       const auto centre = static_cast<std::uint32_t>(mesh.positions.size());
       mesh.positions.push_back({float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)});
+      if (!colours.empty()) {
+        double rgba[4] = {0, 0, 0, 0};
+        for (const std::uint32_t v : loop) {
+          rgba[0] += colours[v].x;
+          rgba[1] += colours[v].y;
+          rgba[2] += colours[v].z;
+          rgba[3] += colours[v].w;
+        }
+        colours.push_back(
+            {float(rgba[0] / n), float(rgba[1] / n), float(rgba[2] / n), float(rgba[3] / n)});
+      }
       for (std::size_t k = 0; k < loop.size(); ++k)
         mesh.triangles.push_back({loop[k], loop[(k + 1) % loop.size()], centre});
     }
@@ -259,7 +271,56 @@ std::string handles(long long genus) {
   return std::to_string(genus) + " handles";
 }
 
-ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
+// Texture coordinates of each triangle, found again after the cleanup by matching vertices:
+// `source` names the triangle of `before` each one came from (kNone for hole fills), whose
+// corners are a permutation of its own.
+std::vector<CornerUv> followCorners(const std::vector<Tri>& tris, const std::vector<Tri>& before,
+                                    const std::vector<CornerUv>& cornerUv,
+                                    const std::vector<std::uint32_t>& source,
+                                    std::size_t vertexCount) {
+  std::vector<CornerUv> out(tris.size());
+  constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
+  std::vector<std::array<float, 2>> anyUv(vertexCount, {kUnknown, kUnknown});
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    if (source[t] == kNone) continue;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t v = tris[t][k];
+      const Tri& from = before[source[t]];
+      const auto j =
+          static_cast<std::size_t>(std::find(from.begin(), from.end(), v) - from.begin());
+      if (j == 3) continue; // cannot happen: faces are only turned, never rewired
+      out[t][k] = cornerUv[source[t]][j];
+      anyUv[v] = out[t][k];
+    }
+  }
+  // A filling face spans a hole the texture has no texels for: its loop corners take a
+  // coordinate they have on a neighbouring face, a centre vertex the mean of the others.
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    if (source[t] != kNone) continue;
+    std::array<float, 2> sum{0, 0};
+    int known = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      out[t][k] = anyUv[tris[t][k]];
+      if (std::isnan(out[t][k][0])) continue;
+      sum[0] += out[t][k][0];
+      sum[1] += out[t][k][1];
+      ++known;
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+      if (std::isnan(out[t][k][0]))
+        out[t][k] = known ? std::array<float, 2>{sum[0] / float(known), sum[1] / float(known)}
+                          : std::array<float, 2>{0, 0};
+  }
+  return out;
+}
+
+// Vertex colours and corner texture coordinates as read (either may be empty).
+struct Attributes {
+  std::vector<Vec4f> vertexColours;
+  std::vector<CornerUv> cornerUv;
+};
+
+ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const ValidationOptions& options,
                        const std::string& prefix, bool weld, std::size_t shortFaces) {
   auto refuse = [&](const std::string& what) {
     throw Error(ErrorKind::InvalidInput, prefix + what);
@@ -274,6 +335,13 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
     refuse("no faces: there is no surface to import (only points or lines?) — export the "
            "model as a triangle or polygon mesh");
   if (inputVertices >= kNone) refuse("more than 4 billion vertices");
+  std::vector<Vec4f>& colours = attributes.vertexColours;
+  if (!colours.empty() && colours.size() != inputVertices)
+    refuse(std::to_string(colours.size()) + " vertex colours for " + std::to_string(inputVertices) +
+           " vertices");
+  if (!attributes.cornerUv.empty() && attributes.cornerUv.size() != tris.size())
+    refuse(std::to_string(attributes.cornerUv.size()) + " texture coordinate triples for " +
+           std::to_string(tris.size()) + " triangles");
   std::vector<char> used(inputVertices, 0);
   for (std::size_t f = 0; f < tris.size(); ++f)
     for (const std::uint32_t v : tris[f]) {
@@ -317,11 +385,29 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
         v = remap[v];
   }
 
+  // Which input triangle each triangle is, so that texture coordinates can follow them.
+  const std::vector<Tri> inputTris = attributes.cornerUv.empty() ? std::vector<Tri>() : tris;
+  std::vector<std::uint32_t> source(tris.size());
+  std::iota(source.begin(), source.end(), std::uint32_t(0));
+  auto keepFaces = [&](auto&& keep) {
+    std::size_t out = 0;
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (keep(f)) {
+        tris[out] = tris[f];
+        source[out++] = source[f];
+      }
+    const std::size_t removed = tris.size() - out;
+    tris.resize(out);
+    source.resize(out);
+    return removed;
+  };
+
   // Faces with a repeated corner bound no area and add an edge twice in opposite directions:
   // dropping them changes no other face's neighbourhood.
-  const std::size_t before = tris.size();
-  std::erase_if(tris, [](const Tri& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; });
-  cleanup.degenerateFacesRemoved += before - tris.size();
+  cleanup.degenerateFacesRemoved += keepFaces([&](std::size_t f) {
+    const Tri& t = tris[f];
+    return !(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]);
+  });
 
   // A face listed twice (in either winding) makes its edges look non-manifold; keep the first.
   {
@@ -338,12 +424,7 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
         duplicate[keys[i].second] = 1;
         ++cleanup.duplicateFacesRemoved;
       }
-    if (cleanup.duplicateFacesRemoved) {
-      std::size_t out = 0;
-      for (std::size_t f = 0; f < tris.size(); ++f)
-        if (!duplicate[f]) tris[out++] = tris[f];
-      tris.resize(out);
-    }
+    if (cleanup.duplicateFacesRemoved) keepFaces([&](std::size_t f) { return !duplicate[f]; });
   }
   if (tris.empty())
     refuse("no faces left after removing " +
@@ -369,7 +450,8 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
 
   if (!a.holeEdges.empty() && options.fillHoles && options.maxHoleEdges >= 3) {
     cleanup.holesFilled =
-        fillHoles(mesh, a.holeEdges, static_cast<std::size_t>(options.maxHoleEdges));
+        fillHoles(mesh, colours, a.holeEdges, static_cast<std::size_t>(options.maxHoleEdges));
+    source.resize(tris.size(), kNone);
     if (cleanup.holesFilled) a = analyze(mesh);
   }
   if (!a.holeEdges.empty()) {
@@ -432,6 +514,10 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
     cleanup.windingReversed = true;
   }
 
+  std::vector<CornerUv> cornerUv;
+  if (!attributes.cornerUv.empty())
+    cornerUv = followCorners(tris, inputTris, attributes.cornerUv, source, positions.size());
+
   // Compact: drop every vertex no face refers to, keeping file order.
   std::vector<std::uint32_t> newIndex(positions.size(), kNone);
   for (const Tri& t : tris)
@@ -441,27 +527,38 @@ ValidatedMesh validate(TriangleMesh mesh, const ValidationOptions& options,
   for (std::size_t v = 0; v < positions.size(); ++v)
     if (newIndex[v] == 0) {
       newIndex[v] = next;
+      if (!colours.empty()) colours[next] = colours[v];
       positions[next++] = positions[v];
     }
   const std::size_t removed = positions.size() - next;
   positions.resize(next);
+  if (!colours.empty()) colours.resize(next);
   for (Tri& t : tris)
     for (std::uint32_t& v : t)
       v = newIndex[v];
   cleanup.unusedVerticesRemoved = removed - cleanup.duplicateVerticesWelded;
-  return {std::move(mesh), cleanup};
+  ValidatedMesh out;
+  out.mesh = std::move(mesh);
+  out.cleanup = cleanup;
+  out.vertexColours = std::move(colours);
+  out.cornerUv = std::move(cornerUv);
+  return out;
 }
 
 } // namespace
 
 ValidatedMesh loadGenus0Mesh(const fs::path& path, const ValidationOptions& options) {
   detail::RawMesh raw = detail::readRawMesh(path);
-  return validate(std::move(raw.mesh), options, path.string() + ": ", raw.cornersPerFace,
-                  raw.shortFaces);
+  ValidatedMesh out =
+      validate(std::move(raw.mesh), {std::move(raw.vertexColours), std::move(raw.cornerUv)},
+               options, path.string() + ": ", raw.cornersPerFace, raw.shortFaces);
+  out.diffuseTexture = std::move(raw.diffuseTexture);
+  out.notes = std::move(raw.notes);
+  return out;
 }
 
 ValidatedMesh validateGenus0Mesh(TriangleMesh mesh, const ValidationOptions& options) {
-  return validate(std::move(mesh), options, std::string(), false, 0);
+  return validate(std::move(mesh), {}, options, std::string(), false, 0);
 }
 
 } // namespace octaclay::core

@@ -7,12 +7,15 @@
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/octahedral.h"
 #include "octaclay/core/seaming.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace octaclay::core {
@@ -185,7 +188,12 @@ std::array<double, 2> octahedralSquarePoint(Vec3f direction) {
   return {0.5 * (u + 1.0), 0.5 * (v + 1.0)};
 }
 
-GeometryImage resampleOctahedral(const TriangleMesh& mesh, const SphericalMap& map, int n) {
+namespace {
+
+// The geometry image of resampleOctahedral; extra(i, j, location) is called for every sample
+// too, from several threads (rows in parallel), so that a layer is filled in the same walk.
+template <class Extra>
+GeometryImage resample(const TriangleMesh& mesh, const SphericalMap& map, int n, Extra&& extra) {
   requireValidSize(n);
   const SphereTriangulation sphere = triangulation(mesh, map);
   GeometryImage image(n);
@@ -195,9 +203,105 @@ GeometryImage resampleOctahedral(const TriangleMesh& mesh, const SphericalMap& m
                     mesh.positions[f[1]] * static_cast<float>(at.weights[1]) +
                     mesh.positions[f[2]] * static_cast<float>(at.weights[2]);
     image.at(i, j) = {p.x, p.y, p.z, 0.0f};
+    extra(i, j, at);
   });
   seam(image);
   return image;
+}
+
+// Gives each set of identified samples of a layer (N+1)² × channels their mean, as seam()
+// does for positions: they share a direction, but one that lies on an edge may have been
+// located in either triangle, and a texture seam there gives the two different colours.
+void seamLayer(std::vector<float>& texels, int n, int channels) {
+  const auto index = [&](Sample s) {
+    return (static_cast<std::size_t>(s.j) * static_cast<std::size_t>(n + 1) +
+            static_cast<std::size_t>(s.i)) *
+           static_cast<std::size_t>(channels);
+  };
+  std::array<Sample, 4> same;
+  const auto visit = [&](Sample s) {
+    if (!(canonical(n, s) == s)) return;
+    const int count = identifiedSamples(n, s, same);
+    if (count < 2) return;
+    for (int c = 0; c < channels; ++c) {
+      float sum = 0;
+      for (int k = 0; k < count; ++k)
+        sum += texels[index(same[k]) + c];
+      for (int k = 0; k < count; ++k)
+        texels[index(same[k]) + c] = sum / static_cast<float>(count);
+    }
+  };
+  // Only border samples are identified with others.
+  for (int i = 0; i <= n; ++i) {
+    visit({i, 0});
+    visit({i, n});
+  }
+  for (int j = 1; j < n; ++j) {
+    visit({0, j});
+    visit({n, j});
+  }
+}
+
+// Texel (x, y) of `texture` as RGBA, whatever its channel count.
+Vec4f texel(const RasterImage& texture, int x, int y) {
+  const float* p =
+      &texture.pixels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(texture.width) +
+                       static_cast<std::size_t>(x)) *
+                      static_cast<std::size_t>(texture.channels)];
+  switch (texture.channels) {
+  case 1:
+    return {p[0], p[0], p[0], 1.0f};
+  case 2:
+    return {p[0], p[0], p[0], p[1]};
+  case 3:
+    return {p[0], p[1], p[2], 1.0f};
+  default:
+    return {p[0], p[1], p[2], p[3]};
+  }
+}
+
+// Bilinear read at (u, v), repeating, v up; texel centres at half-integers.
+Vec4f sampleTexture(const RasterImage& texture, float u, float v) {
+  const auto fraction = [](float t) {
+    const double x = static_cast<double>(t);
+    return std::isfinite(x) ? x - std::floor(x) : 0.0;
+  };
+  const int w = texture.width, h = texture.height;
+  const double x = fraction(u) * w - 0.5, y = (1.0 - fraction(v)) * h - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y);
+  const auto fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  // x0 ∈ [−1, w − 1], so both columns are at most one period away.
+  const auto wrap = [](int k, int size) { return k < 0 ? k + size : (k >= size ? k - size : k); };
+  const int xa = wrap(static_cast<int>(x0), w), xb = wrap(static_cast<int>(x0) + 1, w);
+  const int ya = wrap(static_cast<int>(y0), h), yb = wrap(static_cast<int>(y0) + 1, h);
+  const Vec4f a = texel(texture, xa, ya), b = texel(texture, xb, ya);
+  const Vec4f c = texel(texture, xa, yb), d = texel(texture, xb, yb);
+  const auto mix = [&](float p, float q, float r, float s) {
+    return (1 - fy) * ((1 - fx) * p + fx * q) + fy * ((1 - fx) * r + fx * s);
+  };
+  return {mix(a.x, b.x, c.x, d.x), mix(a.y, b.y, c.y, d.y), mix(a.z, b.z, c.z, d.z),
+          mix(a.w, b.w, c.w, d.w)};
+}
+
+} // namespace
+
+std::vector<SampleLocation> locateOctahedralSamples(const TriangleMesh& mesh,
+                                                    const SphericalMap& map, int n) {
+  requireValidSize(n);
+  const SphereTriangulation sphere = triangulation(mesh, map);
+  const auto side = static_cast<std::size_t>(n + 1);
+  std::vector<SampleLocation> out(side * side);
+  forEachLocation(sphere, n, [&](int i, int j, const Location& at) {
+    out[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)] = {
+        static_cast<std::uint32_t>(at.triangle),
+        {static_cast<float>(at.weights[0]), static_cast<float>(at.weights[1]),
+         static_cast<float>(at.weights[2])}};
+  });
+  return out;
+}
+
+GeometryImage resampleOctahedral(const TriangleMesh& mesh, const SphericalMap& map, int n) {
+  return resample(mesh, map, n, [](int, int, const Location&) {});
 }
 
 Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int n,
@@ -206,14 +310,12 @@ Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int
     throw Error(ErrorKind::InvalidArgument, "expected one colour per vertex (" +
                                                 std::to_string(mesh.positions.size()) + "), got " +
                                                 std::to_string(vertexColours.size()));
-  Document document = makeDocument(resampleOctahedral(mesh, map, n));
-  if (vertexColours.empty()) return document;
-  const SphereTriangulation sphere = triangulation(mesh, map);
+  if (vertexColours.empty()) return makeDocument(resampleOctahedral(mesh, map, n));
+  requireValidSize(n);
   const auto side = static_cast<std::size_t>(n + 1);
-  std::vector<float>& texels = document.diffuse.texels;
-  texels.assign(side * side * 4, 0.0f);
-  forEachLocation(sphere, n, [&](int i, int j, const Location& at) {
-    const auto& f = sphere.triangles[at.triangle];
+  std::vector<float> texels(side * side * 4, 0.0f);
+  Document document = makeDocument(resample(mesh, map, n, [&](int i, int j, const Location& at) {
+    const auto& f = mesh.triangles[static_cast<std::size_t>(at.triangle)];
     float* out = &texels[(static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)) * 4];
     for (int k = 0; k < 3; ++k) {
       const Vec4f c = vertexColours[f[k]];
@@ -223,8 +325,77 @@ Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int
       out[2] += w * c.z;
       out[3] += w * c.w;
     }
-  });
-  // Identified samples share one direction, hence one colour: no seaming needed.
+  }));
+  seamLayer(texels, n, 4);
+  document.diffuse.texels = std::move(texels);
+  return document;
+}
+
+Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int n,
+                          std::span<const CornerUv> cornerUv, const RasterImage& texture) {
+  if (cornerUv.size() != mesh.triangles.size())
+    throw Error(ErrorKind::InvalidArgument, "expected texture coordinates for each of the " +
+                                                std::to_string(mesh.triangles.size()) +
+                                                " triangles, got " +
+                                                std::to_string(cornerUv.size()));
+  if (texture.width <= 0 || texture.height <= 0 || texture.channels < 1 || texture.channels > 4 ||
+      texture.pixels.size() != static_cast<std::size_t>(texture.width) *
+                                   static_cast<std::size_t>(texture.height) *
+                                   static_cast<std::size_t>(texture.channels))
+    throw Error(ErrorKind::InvalidArgument,
+                "the texture is empty or its pixels do not match its size (" +
+                    std::to_string(texture.width) + " x " + std::to_string(texture.height) + " x " +
+                    std::to_string(texture.channels) + ")");
+  requireValidSize(n);
+  const auto side = static_cast<std::size_t>(n + 1);
+  std::vector<float> texels(side * side * 4, 0.0f);
+  Document document = makeDocument(resample(mesh, map, n, [&](int i, int j, const Location& at) {
+    const CornerUv& uv = cornerUv[static_cast<std::size_t>(at.triangle)];
+    float u = 0, v = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto w = static_cast<float>(at.weights[k]);
+      u += w * uv[k][0];
+      v += w * uv[k][1];
+    }
+    const Vec4f c = sampleTexture(texture, u, v);
+    float* out = &texels[(static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)) * 4];
+    out[0] = c.x;
+    out[1] = c.y;
+    out[2] = c.z;
+    out[3] = c.w;
+  }));
+  seamLayer(texels, n, 4);
+  document.diffuse.texels = std::move(texels);
+  return document;
+}
+
+Document importValidatedMesh(const ValidatedMesh& mesh, const SphericalMap& map, int n,
+                             ImportedDiffuse* diffuse) {
+  ImportedDiffuse what;
+  what.notes = mesh.notes;
+  std::optional<RasterImage> texture;
+  if (!mesh.diffuseTexture.empty() && !mesh.cornerUv.empty()) {
+    try {
+      texture = readImage(mesh.diffuseTexture, 4);
+    } catch (const Error& e) {
+      what.notes.push_back("texture " + mesh.diffuseTexture.filename().string() +
+                           " could not be read (" + e.what() + "): no texture");
+    }
+  }
+  Document document;
+  if (texture) {
+    document = importToDocument(mesh.mesh, map, n, mesh.cornerUv, *texture);
+    what.source = DiffuseSource::Texture;
+    what.texture = mesh.diffuseTexture;
+    if (!mesh.vertexColours.empty())
+      what.notes.push_back("vertex colours ignored: the texture is used instead");
+  } else if (!mesh.vertexColours.empty()) {
+    document = importToDocument(mesh.mesh, map, n, mesh.vertexColours);
+    what.source = DiffuseSource::VertexColours;
+  } else {
+    document = importToDocument(mesh.mesh, map, n);
+  }
+  if (diffuse) *diffuse = std::move(what);
   return document;
 }
 

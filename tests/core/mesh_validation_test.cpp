@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -275,6 +276,81 @@ bool sameMesh(const TriangleMesh& a, const TriangleMesh& b) {
   return a.positions == b.positions && a.triangles == b.triangles;
 }
 
+// Attributes as affine functions of position, so that they can be checked after the cleanup
+// renumbers vertices and turns faces: bytes for colours, floats for texture coordinates.
+std::array<int, 3> colourBytes(Vec3f p) {
+  auto byte = [](float c) { return std::clamp(int(std::lround(127.5f + 100.0f * c)), 0, 255); };
+  return {byte(p.x), byte(p.y), byte(p.z)};
+}
+std::array<float, 2> uvOf(Vec3f p) {
+  return {0.5f + 0.25f * p.x + 0.125f * p.z, 0.5f + 0.25f * p.y};
+}
+
+std::string shortest(float v) {
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, r.ptr);
+}
+
+// An OBJ of `m` with `v x y z r g b` colours (bytes) and one `vt` per face corner, written in
+// the reverse order of the corners so that vt and v indices differ; faces alternate the
+// v/vt and v/vt/vn forms. `head` goes first (mtllib lines).
+std::string attributedObj(const TriangleMesh& m, bool colours, bool uvs,
+                          const std::string& head = {}) {
+  std::string s = head;
+  for (const Vec3f& p : m.positions) {
+    s += "v " + shortest(p.x) + " " + shortest(p.y) + " " + shortest(p.z);
+    if (colours) {
+      const auto c = colourBytes(p);
+      s += " " + std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
+    }
+    s += "\n";
+  }
+  const std::size_t corners = 3 * m.triangles.size();
+  for (std::size_t c = corners; c-- > 0;) {
+    const auto uv = uvOf(m.positions[m.triangles[c / 3][c % 3]]);
+    s += "vt " + shortest(uv[0]) + " " + shortest(uv[1]) + "\n";
+  }
+  s += "vn 0 0 1\n";
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    s += "f";
+    for (std::size_t k = 0; k < 3; ++k) {
+      s += " " + std::to_string(m.triangles[t][k] + 1);
+      if (uvs) s += "/" + std::to_string(corners - (3 * t + k));
+      if (t % 2) s += uvs ? "/1" : "//1";
+    }
+    s += "\n";
+  }
+  return s;
+}
+
+// Empty when every vertex colour and corner coordinate is the function of its position that
+// attributedObj wrote; otherwise the first mismatch.
+QString checkAttributes(const ValidatedMesh& r) {
+  if (r.vertexColours.size() != r.mesh.positions.size())
+    return QString("%1 colours for %2 vertices")
+        .arg(r.vertexColours.size())
+        .arg(r.mesh.positions.size());
+  for (std::size_t v = 0; v < r.mesh.positions.size(); ++v) {
+    const auto c = colourBytes(r.mesh.positions[v]);
+    const Vec4f got = r.vertexColours[v];
+    if (std::abs(got.x * 255 - float(c[0])) > 0.51f ||
+        std::abs(got.y * 255 - float(c[1])) > 0.51f ||
+        std::abs(got.z * 255 - float(c[2])) > 0.51f || got.w != 1.0f)
+      return QString("vertex %1: colour %2 %3 %4 %5")
+          .arg(v)
+          .arg(got.x)
+          .arg(got.y)
+          .arg(got.z)
+          .arg(got.w);
+  }
+  if (r.cornerUv.size() != r.mesh.triangles.size())
+    return QString("%1 corner triples for %2 triangles")
+        .arg(r.cornerUv.size())
+        .arg(r.mesh.triangles.size());
+  return {};
+}
+
 } // namespace
 
 class MeshValidationTest : public QObject {
@@ -294,6 +370,8 @@ private slots:
   void cleanupOfFixableMeshes();
   void fillHolesSmall();
   void fillHolesOpenBunny();
+  void attributesFollowTheCleanup();
+  void attributeNotes();
 
 private:
   QTemporaryDir dir_;
@@ -762,6 +840,180 @@ void MeshValidationTest::fillHolesOpenBunny() {
   // 223 edges in all, so at least 223 − 2 × 5 new faces.
   QVERIFY(result.mesh.triangles.size() >= std::size_t(69451 + 223 - 10));
   QVERIFY(result.mesh.triangles.size() <= std::size_t(69451 + 223));
+}
+
+void MeshValidationTest::attributesFollowTheCleanup() {
+  // The faults of cleanupOfFixableMeshes in an OBJ with colours and texture coordinates: every
+  // colour must move with its vertex and every coordinate stay with its corner.
+  TriangleMesh m = octahedron();
+  for (Tri& t : m.triangles)
+    std::swap(t[1], t[2]);
+  m.positions.insert(m.positions.begin(), Vec3f{0.5f, 0.25f, 0.125f});
+  for (Tri& t : m.triangles)
+    for (std::uint32_t& v : t)
+      ++v;
+  m.positions.push_back({0.75f, 0.75f, 0.75f});
+  m.triangles.push_back({1, 1, 3});
+  m.triangles.push_back(m.triangles[2]);
+  std::swap(m.triangles[4][0], m.triangles[4][1]);
+  const fs::path path = root() / "attributed.obj";
+  writeFile(path, attributedObj(m, true, true));
+  ValidatedMesh r;
+  NO_THROW(r = loadGenus0Mesh(path));
+  QVERIFY(checkGenus0(r.mesh).isEmpty());
+  QCOMPARE(r.cleanup.unusedVerticesRemoved, std::size_t(2));
+  QCOMPARE(r.cleanup.facesFlipped, std::size_t(1));
+  QVERIFY(r.cleanup.windingReversed);
+  const QString why = checkAttributes(r);
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k)
+      QCOMPARE(r.cornerUv[t][k], uvOf(r.mesh.positions[r.mesh.triangles[t][k]]));
+  // No mtllib: the coordinates are kept, with a note that there is no texture.
+  QVERIFY(r.diffuseTexture.empty());
+  QCOMPARE(r.notes.size(), std::size_t(1));
+  QVERIFY(r.notes[0].find("mtllib") != std::string::npos);
+
+  // Filled holes: a centre vertex gets the mean colour of its loop (colour is affine in
+  // position, so that is the colour of its position), the loop corners their coordinates.
+  TriangleMesh open = octahedron();
+  open.triangles.erase(open.triangles.begin(), open.triangles.begin() + 2);
+  writeFile(path, attributedObj(open, true, true));
+  ValidationOptions fill;
+  fill.fillHoles = true;
+  NO_THROW(r = loadGenus0Mesh(path, fill));
+  QCOMPARE(r.cleanup.holesFilled, std::size_t(1));
+  QCOMPARE(r.mesh.positions.size(), std::size_t(7));
+  const QString filled = checkAttributes(r);
+  QVERIFY2(filled.isEmpty(), qPrintable(filled));
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (r.mesh.triangles[t][k] < 6)
+        QCOMPARE(r.cornerUv[t][k], uvOf(r.mesh.positions[r.mesh.triangles[t][k]]));
+
+  // PLY colours, uchar and float, with alpha; vertices renumbered by the unused one.
+  std::string ply = "ply\nformat ascii 1.0\nelement vertex 7\nproperty float x\nproperty float y\n"
+                    "property float z\nproperty float nx\nproperty uchar red\n"
+                    "property uchar green\nproperty uchar blue\nproperty float alpha\n"
+                    "element face 8\nproperty list uchar int vertex_indices\nend_header\n"
+                    "9 9 9 0 255 0 0 1\n";
+  const TriangleMesh o = octahedron();
+  for (const Vec3f& p : o.positions) {
+    const auto c = colourBytes(p);
+    ply += shortest(p.x) + " " + shortest(p.y) + " " + shortest(p.z) + " 0 " +
+           std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) +
+           " 0.5\n";
+  }
+  for (const Tri& t : o.triangles)
+    ply += "3 " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " +
+           std::to_string(t[2] + 1) + "\n";
+  writeFile(root() / "coloured.ply", ply);
+  NO_THROW(r = loadGenus0Mesh(root() / "coloured.ply"));
+  QCOMPARE(r.vertexColours.size(), std::size_t(6));
+  for (std::size_t v = 0; v < 6; ++v) {
+    const auto c = colourBytes(r.mesh.positions[v]);
+    QCOMPARE(r.vertexColours[v].x, float(c[0]) / 255.0f);
+    QCOMPARE(r.vertexColours[v].z, float(c[2]) / 255.0f);
+    QCOMPARE(r.vertexColours[v].w, 0.5f);
+  }
+  QVERIFY(r.cornerUv.empty());
+  QVERIFY(r.notes.empty());
+}
+
+void MeshValidationTest::attributeNotes() {
+  // Attributes that cannot be used are notes; the geometry always imports.
+  const TriangleMesh o = octahedron();
+  const fs::path dir = root() / "notes";
+  fs::create_directories(dir / "maps");
+  const fs::path obj = dir / "model.obj";
+  auto load = [&](const std::string& text) {
+    writeFile(obj, text);
+    ValidatedMesh r;
+    try {
+      r = loadGenus0Mesh(obj);
+    } catch (const std::exception& e) {
+      qWarning("%s", e.what());
+      r.mesh.triangles.clear();
+    }
+    return r;
+  };
+  auto noted = [](const ValidatedMesh& r, const std::string& needle) {
+    for (const std::string& note : r.notes)
+      if (note.find(needle) != std::string::npos) return true;
+    QString all;
+    for (const std::string& note : r.notes)
+      all += QString::fromStdString(note) + " | ";
+    qWarning("no note with '%s' among: %s", needle.c_str(), qPrintable(all));
+    return false;
+  };
+
+  // Colours on some vertices only.
+  std::string text = attributedObj(o, true, false);
+  text.replace(text.find(" 228 128 128"), 12, "");
+  ValidatedMesh r = load(text);
+  QCOMPARE(r.mesh.triangles.size(), std::size_t(8));
+  QVERIFY(r.vertexColours.empty());
+  QVERIFY(noted(r, "only 5 of 6 vertices have colours"));
+  // Colours already in [0, 1] are not scaled.
+  r = load("v 1 0 0 1 0.5 0\nv -1 0 0 0 0 0\nv 0 1 0 0 0 0\nv 0 -1 0 0 0 0\nv 0 0 1 0 0 0\n"
+           "v 0 0 -1 0 0 0.25\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\n"
+           "f 1 4 6\n");
+  QCOMPARE(r.vertexColours.size(), std::size_t(6));
+  QCOMPARE(r.vertexColours[0], (Vec4f{1, 0.5f, 0, 1}));
+  QCOMPARE(r.vertexColours[5], (Vec4f{0, 0, 0.25f, 1}));
+
+  // Texture coordinates on some faces only, or a bad vt index: dropped.
+  text = attributedObj(o, false, true);
+  const std::size_t face = text.find("f ");
+  text.replace(face, text.find('\n', face) - face, "f 1 3 5");
+  r = load(text);
+  QCOMPARE(r.mesh.triangles.size(), std::size_t(8));
+  QVERIFY(r.cornerUv.empty());
+  QVERIFY(noted(r, "1 of 8 triangles have none"));
+  text = attributedObj(o, false, true);
+  text.replace(text.find("f 1/24 "), 7, "f 1/99 ");
+  r = load(text);
+  QCOMPARE(r.mesh.triangles.size(), std::size_t(8));
+  QVERIFY(r.cornerUv.empty());
+  QVERIFY(noted(r, "texture coordinate 99"));
+
+  // A missing .mtl, a .mtl without map_Kd, a map_Kd naming a missing file.
+  r = load(attributedObj(o, false, true, "mtllib absent.mtl\n"));
+  QCOMPARE(r.cornerUv.size(), std::size_t(8));
+  QVERIFY(noted(r, "material library absent.mtl not found"));
+  writeFile(dir / "plain.mtl", "newmtl a\nKd 1 0 0\n");
+  r = load(attributedObj(o, false, true, "mtllib plain.mtl\n"));
+  QVERIFY(noted(r, "has no diffuse texture"));
+  writeFile(dir / "lost.mtl", "newmtl a\nmap_Kd lost.png\n");
+  r = load(attributedObj(o, false, true, "mtllib lost.mtl\n"));
+  QVERIFY(r.diffuseTexture.empty());
+  QVERIFY(noted(r, "texture lost.png (map_Kd of lost.mtl) not found"));
+
+  // Found: options skipped, Windows separators, a name with a space, the second library, and a
+  // .mtl in another folder naming its texture relative to itself.
+  writeFile(dir / "maps" / "the skin.png", "not read here");
+  writeFile(dir / "maps" / "skin.mtl",
+            "newmtl a\nmap_Ka ambient.png\nmap_Kd -o 0 0 -s 1 1 1 -clamp on the skin.png\n");
+  r = load(attributedObj(o, false, true, "mtllib absent.mtl maps\\skin.mtl\n"));
+  QCOMPARE(fs::canonical(r.diffuseTexture), fs::canonical(dir / "maps" / "the skin.png"));
+  QVERIFY(noted(r, "absent.mtl not found"));
+  // The texture's own absolute path from another machine: found beside the .mtl by name.
+  writeFile(dir / "maps" / "far.mtl", "map_Kd C:\\Users\\artist\\the skin.png\n");
+  r = load(attributedObj(o, false, true, "mtllib maps/far.mtl\n"));
+  QVERIFY(!r.diffuseTexture.empty());
+  // A texture but no coordinates: a note, no texture.
+  r = load(attributedObj(o, false, false, "mtllib maps/skin.mtl\n"));
+  QVERIFY(r.diffuseTexture.empty());
+  QVERIFY(noted(r, "no texture coordinates"));
+  // PLY colour channels incomplete.
+  writeFile(dir / "partial.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                 "property float y\nproperty float z\nproperty uchar red\n"
+                                 "element face 4\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 0 1\n1 0 0 2\n0 1 0 3\n0 0 1 4\n3 0 2 1\n"
+                                 "3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  NO_THROW(r = loadGenus0Mesh(dir / "partial.ply"));
+  QVERIFY(r.vertexColours.empty());
+  QVERIFY(noted(r, "only some of red, green and blue"));
 }
 
 QTEST_GUILESS_MAIN(MeshValidationTest)

@@ -2,8 +2,11 @@
 
 #include "octaclay/core/triangle_mesh.h"
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace octaclay::core {
 
@@ -20,12 +23,28 @@ struct MeshCleanup {
   bool windingReversed = false; ///< every face turned so that the enclosed volume is positive
 };
 
+/// Texture coordinates (u, v) of a triangle's three corners, v pointing up the image (OBJ).
+using CornerUv = std::array<std::array<float, 2>, 3>;
+
 /// A mesh ready for spherical parameterization: closed, edge- and vertex-manifold, one
 /// component, genus 0, consistently oriented with positive signed volume, no unused vertices,
-/// no faces with a repeated corner.
+/// no faces with a repeated corner. The attributes follow the cleanup: colours are renumbered
+/// with the vertices, corner coordinates stay with their corners when faces are turned or
+/// dropped (a hole-filling face takes its corners' coordinates from their other faces).
 struct ValidatedMesh {
   TriangleMesh mesh;
   MeshCleanup cleanup;
+  /// One RGBA colour in [0, 1] per vertex of `mesh` when the file has vertex colours (PLY
+  /// red/green/blue[/alpha], OBJ `v x y z r g b`); otherwise empty.
+  std::vector<Vec4f> vertexColours;
+  /// One entry per triangle of `mesh` when every OBJ face has texture coordinates; else empty.
+  std::vector<CornerUv> cornerUv;
+  /// The OBJ's diffuse texture (the first map_Kd of its material libraries, resolved against
+  /// the .mtl's folder) when the file exists and cornerUv is not empty; otherwise empty.
+  std::filesystem::path diffuseTexture;
+  /// Attributes that were named but could not be used (a missing .mtl or texture, colours on
+  /// only some vertices), one sentence each, no path prefix.
+  std::vector<std::string> notes;
 };
 
 struct ValidationOptions {
@@ -39,7 +58,9 @@ struct ValidationOptions {
 /// bounds-checked readers of its own (OpenMesh's would silently repair the very faults this
 /// reports), then cleans it: removes unused vertices, welds STL corners by exact position, drops
 /// faces with a repeated corner and repeated faces, orients faces consistently and outward by
-/// signed volume, optionally fills small holes. Anything else is refused.
+/// signed volume, optionally fills small holes. Anything else is refused. Vertex colours, texture
+/// coordinates and the diffuse texture are kept (ValidatedMesh); a missing .mtl or texture only
+/// adds a note.
 /// Vertex numbers in messages count from 1 in file order.
 /// Throws Error(Io) when the file cannot be opened or read; Error(InvalidArgument) for an
 /// extension other than .obj, .ply, .stl, .off; Error(InvalidInput), starting with the path and
