@@ -1,4 +1,23 @@
 // main() of every brush pass: texels outside the brush's area keep their value bit-exactly.
+#if OCTACLAY_LAYER == LAYER_ALL
+// One pass for every layer (the body defines brushLayers()): brushInputAt runs once, and each
+// layer's value is the one from before the dab, whatever the body writes to another.
+layout(location = 0) out vec4 o_positions;
+layout(location = 1) out vec4 o_diffuse;
+layout(location = 2) out vec4 o_feature;
+
+void main() {
+  ivec2 t = ivec2(gl_FragCoord.xy);
+  vec4 positions = texelFetch(u_positions, t, 0);
+  vec4 diffuse = texelFetch(u_diffuseLayer, t, 0);
+  vec4 feature = texelFetch(u_featureLayer, t, 0);
+  BrushInput b = brushInputAt(t, positions);
+  if (b.weight != 0.0) brushLayers(positions, diffuse, feature, b); // negative weights pull
+  o_positions = positions;
+  o_diffuse = diffuse;
+  o_feature = feature;
+}
+#else
 out vec4 o_value;
 
 void main() {
@@ -7,3 +26,4 @@ void main() {
   BrushInput b = brushInputAt(t, value);
   o_value = b.weight != 0.0 ? brush(value, b) : value; // negative weights pull
 }
+#endif

@@ -1,11 +1,19 @@
 // Shared prelude of every brush pass. The host prepends `#version 430 core` and the defines
 // (OCTACLAY_LAYER, LAYER_*, BRUSH_AREA_*, BRUSH_FALLOFF_*) and appends the brush body and main().
+// OCTACLAY_LAYER is LAYER_ALL for a body that defines brushLayers(): one pass writes positions,
+// diffuse and feature.
+#if !defined(LAYER_ALL) // hosts that include the prelude for its helpers only
+#define LAYER_ALL 4
+#endif
 
 uniform sampler2D u_positions; // RGBA32F: xyz position, w saliency
-uniform sampler2D u_layer;     // the layer this pass writes (== u_positions for positions)
+uniform sampler2D u_layer;     // the layer this pass writes (== u_positions for positions and
+                               // LAYER_ALL)
 uniform sampler2D u_mask;      // R: 1 = full effect, 0 = blocked (read only if BRUSH_MASK_TEXTURE)
 uniform float u_maskFill;      // the mask's value everywhere while it is unpainted
 uniform vec4 u_layerFill;      // the written layer's base value (erase modes return to it)
+uniform vec4 u_diffuseFill;    // LAYER_ALL: the diffuse and feature layers' base values
+uniform vec4 u_featureFill;
 uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
 uniform int u_falloffCurveSize;
 uniform int u_size;            // N: the image has (N+1)^2 samples
@@ -17,6 +25,7 @@ uniform float u_pressure;
 uniform float u_normalCosine;  // volume+normal: minimum cos(angle) to the centre normal
 uniform ivec2 u_centreTexel;
 uniform sampler2D u_featureLayer; // the feature layer as it was before this dab (splats)
+uniform sampler2D u_diffuseLayer; // the diffuse layer as it was before this dab
 uniform vec3 u_projectionDir;     // splats: projection frame, object space, unit
 uniform vec3 u_projectionRight;
 uniform vec3 u_projectionUp;
@@ -128,8 +137,8 @@ BrushInput brushInputAt(ivec2 t, vec4 value) {
   BrushInput b;
   b.texel = t;
   b.uv = vec2(t) / float(u_size);
-#if OCTACLAY_LAYER == LAYER_POSITIONS
-  b.position = value.xyz;
+#if OCTACLAY_LAYER == LAYER_POSITIONS || OCTACLAY_LAYER == LAYER_ALL
+  b.position = value.xyz; // value is the positions texel
 #else
   b.position = texelFetch(u_positions, t, 0).xyz;
 #endif

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <epoxy/gl.h>
 #include <numbers>
+#include <regex>
 #include <sstream>
 
 namespace octaclay::gpu {
@@ -16,6 +17,8 @@ namespace octaclay::gpu {
 struct BrushEngine::LoadedBrush {
   BrushManifest manifest;
   std::string body;
+  // The body defines brushLayers(): one program writes every layer (keyed as positions).
+  bool allLayers = false;
   // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
   // painted-mask variants are compiled on first use.
   std::map<std::pair<BrushLayer, bool>, Program> programs;
@@ -67,8 +70,8 @@ std::string brushLog(const std::string& log, const std::string& file) {
   return out;
 }
 
-// Whether the brush body mentions `normal` (b.normal, normalAt) outside comments.
-bool readsNormals(const std::string& body) {
+// The brush body without its comments.
+std::string withoutComments(const std::string& body) {
   std::string code;
   for (std::size_t k = 0; k < body.size(); ++k) {
     if (body.compare(k, 2, "//") == 0) {
@@ -82,15 +85,28 @@ bool readsNormals(const std::string& body) {
     }
     code += body[k];
   }
-  return code.find("normal") != std::string::npos;
+  return code;
 }
 
-std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool maskTexture,
-                     const std::string& body) {
+// Whether the brush body mentions `normal` (b.normal, normalAt) outside comments.
+bool readsNormals(const std::string& body) {
+  return withoutComments(body).find("normal") != std::string::npos;
+}
+
+// Whether the brush body defines `void brushLayers(`: it writes all its layers in one pass.
+bool writesAllLayers(const std::string& body) {
+  static const std::regex definition(R"(\bvoid\s+brushLayers\s*\()");
+  return std::regex_search(withoutComments(body), definition);
+}
+
+// allLayers: the body defines brushLayers() and the program writes every layer at once.
+std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLayers,
+                     bool maskTexture, const std::string& body) {
   std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
-                       "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n";
+                       "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define LAYER_ALL 4\n";
   if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
-  source += std::string("#define OCTACLAY_LAYER ") + layerDefine(layer) + "\n";
+  source += std::string("#define OCTACLAY_LAYER ") +
+            (allLayers ? "LAYER_ALL" : layerDefine(layer)) + "\n";
   switch (manifest.area) {
   case AreaMode::Uv:
     source += "#define BRUSH_AREA_UV\n";
@@ -158,8 +174,15 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   // The layer's base value (what a new document holds): erase modes blend back to it.
   if (const core::Layer* l = documentLayer(doc.document(), layer))
     glUniform4f(location(program, "u_layerFill"), l->fill[0], l->fill[1], l->fill[2], l->fill[3]);
+  // brushLayers() brushes: every layer's base value.
+  glUniform4f(location(program, "u_diffuseFill"), doc.document().diffuse.fill[0],
+              doc.document().diffuse.fill[1], doc.document().diffuse.fill[2],
+              doc.document().diffuse.fill[3]);
+  glUniform4f(location(program, "u_featureFill"), doc.document().feature.fill[0],
+              doc.document().feature.fill[1], doc.document().feature.fill[2], 0.0f);
   glUniform1i(location(program, "u_positions"), 0);
   glUniform1i(location(program, "u_layer"), 1);
+  glUniform1i(location(program, "u_diffuseLayer"), 6);
   glUniform1i(location(program, "u_mask"), 2);
   glUniform1f(location(program, "u_maskFill"), doc.document().mask.fill[0]);
   glUniform1i(location(program, "u_size"), doc.size());
@@ -238,20 +261,27 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   auto brush = std::make_unique<LoadedBrush>();
   brush->manifest = manifest;
   brush->body = shaderSource;
+  brush->allLayers = writesAllLayers(shaderSource);
+  if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
+                                    BrushLayer::Mask) != manifest.writes.end())
+    throw GlError("brush " + manifest.id + ": " + (manifest.folder / manifest.shaderFile).string() +
+                  ": brushLayers() writes positions, diffuse and feature; a brush that writes "
+                  "the mask defines brush() instead");
   for (BrushLayer layer : manifest.writes)
     program(*brush, layer, false);
   brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version
 }
 
 const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool maskTexture) {
-  const auto key = std::pair{layer, maskTexture};
+  const auto key = std::pair{brush.allLayers ? BrushLayer::Positions : layer, maskTexture};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
   const std::string file = (brush.manifest.folder / brush.manifest.shaderFile).string();
   try {
     return brush.programs
-        .emplace(key, Program(file, rectsVertexShader(),
-                              assemble(brush.manifest, layer, maskTexture, brush.body)))
+        .emplace(key,
+                 Program(file, rectsVertexShader(),
+                         assemble(brush.manifest, layer, brush.allLayers, maskTexture, brush.body)))
         .first->second;
   } catch (const GlError& e) {
     throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
@@ -431,18 +461,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
   glViewport(0, 0, side, side);
-  // Positions last: every other layer's pass reads the positions from before the dab.
-  // Except for brushes that read the feature layer (splats): their positions pass displaces by
-  // the change of height detail, so it runs while the feature layer still holds the old one.
-  std::vector<BrushLayer> order = brush.manifest.writes;
-  const bool readsFeature = std::find(brush.manifest.reads.begin(), brush.manifest.reads.end(),
-                                      BrushLayer::Feature) != brush.manifest.reads.end();
-  std::stable_partition(order.begin(), order.end(), [readsFeature](BrushLayer l) {
-    return (l != BrushLayer::Positions) != readsFeature;
-  });
-  for (BrushLayer layer : order) {
-    const Program& pass = program(brush, layer, maskTexture);
-    document.scratch(layer).bindAsTarget();
+  const auto bindInputs = [&](const Program& pass, BrushLayer layer) {
     pass.use();
     setUniforms(pass, brush.manifest, document, layer, dab);
     glActiveTexture(GL_TEXTURE0);
@@ -453,8 +472,14 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
     glActiveTexture(GL_TEXTURE3);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Feature).id());
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Diffuse).id());
+    glActiveTexture(GL_TEXTURE0);
     bindMaterial(pass, brush.manifest, document, dab);
-    rectPass_.draw(passRects, side, side);
+  };
+  // The layer's scratch holds the pass's result over rects: back into the layer's texture,
+  // seamed, and into the mirror.
+  const auto finishLayer = [&](BrushLayer layer) {
     if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side})
       document.swapScratch(layer);
     else
@@ -462,8 +487,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
         copyRect(document.scratch(layer), document.texture(layer), r);
 
     if (result.seamed) {
-      // Into the scratch: after a whole-image swap the bound target is the layer's texture now,
-      // which the seam pass reads.
+      // Into the scratch: after a whole-image swap the scratch is the old texture, free to
+      // overwrite, and the seam pass reads the layer's texture.
       document.scratch(layer).bindAsTarget();
       seamProgram_.use();
       glUniform1i(seamProgram_.uniform("u_source"), 0);
@@ -481,6 +506,54 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     if (result.seamed)
       for (const core::TexelRect& line : lines)
         document.pull(layer, line);
+  };
+
+  if (brush.allLayers) {
+    // One pass writes every layer: each reads all layers as they were before the dab.
+    const Program& pass = program(brush, BrushLayer::Positions, maskTexture);
+    const std::array<BrushLayer, 3> attached{BrushLayer::Positions, BrushLayer::Diffuse,
+                                             BrushLayer::Feature};
+    if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
+    layersTarget_.bind();
+    std::array<GLenum, 3> drawBuffers{};
+    for (std::size_t k = 0; k < attached.size(); ++k) {
+      const bool written = std::find(brush.manifest.writes.begin(), brush.manifest.writes.end(),
+                                     attached[k]) != brush.manifest.writes.end();
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
+                             GL_TEXTURE_2D, written ? document.scratch(attached[k]).id() : 0, 0);
+      drawBuffers[k] = written ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k) : GL_NONE;
+    }
+    glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+    // u_layer: the positions (brushInputAt's value is the positions texel).
+    bindInputs(pass, BrushLayer::Positions);
+    rectPass_.draw(passRects, side, side);
+    // Detached: the framebuffer must not keep a document's textures alive, nor render into a
+    // texture that a whole-image swap makes a layer's.
+    for (std::size_t k = 0; k < attached.size(); ++k)
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
+                             GL_TEXTURE_2D, 0, 0);
+    checkGlError("brush " + brushId + " pass");
+    for (BrushLayer layer : brush.manifest.writes)
+      finishLayer(layer);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return result;
+  }
+
+  // Positions last: every other layer's pass reads the positions from before the dab.
+  // Except for brushes that read the feature layer: their positions pass displaces by the
+  // change of it, so it runs while the feature layer still holds the old one.
+  std::vector<BrushLayer> order = brush.manifest.writes;
+  const bool readsFeature = std::find(brush.manifest.reads.begin(), brush.manifest.reads.end(),
+                                      BrushLayer::Feature) != brush.manifest.reads.end();
+  std::stable_partition(order.begin(), order.end(), [readsFeature](BrushLayer l) {
+    return (l != BrushLayer::Positions) != readsFeature;
+  });
+  for (BrushLayer layer : order) {
+    const Program& pass = program(brush, layer, maskTexture);
+    document.scratch(layer).bindAsTarget();
+    bindInputs(pass, layer);
+    rectPass_.draw(passRects, side, side);
+    finishLayer(layer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;

@@ -1,12 +1,14 @@
 // The material splat brush on the GPU: one dab writes relief, colour, specular and reflectivity
 // inside its radius and nothing outside; every layer stays continuous over seams; projected
-// material texels keep their object-space size where the image is stretched, the uv mode's not.
+// material texels keep their object-space size where the image is stretched, the uv mode's not;
+// the one-pass splat (brushLayers) writes what per-layer passes of the same body would.
 #include "brush_test_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/image_io.h"
 #include "octaclay/core/octahedral.h"
 #include "octaclay/core/seaming.h"
 #include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/material_catalog.h"
 #include "octaclay/gpu/stroke.h"
@@ -14,6 +16,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <optional>
 
@@ -51,6 +54,34 @@ std::vector<float> layerTexels(const GpuDocument& d, BrushLayer layer) {
   return d.mirrorTexels(layer, {0, 0, side, side});
 }
 
+// The splat as per-layer passes (brush() branching on OCTACLAY_LAYER), the reference for the
+// one-pass brushLayers() body: the same arithmetic, one layer a pass.
+const char* const kPerLayerSplat = R"(
+vec2 splatCoordinates(BrushInput b) {
+  if (u_projection == 1) return vec2(b.texel - u_centreTexel) / u_tileSamples;
+  vec3 d = b.position - u_centre;
+  return vec2(dot(d, u_projectionRight), dot(d, u_projectionUp)) / u_tileSize;
+}
+
+vec4 brush(vec4 value, BrushInput b) {
+  vec2 c = splatCoordinates(b);
+  float w = clamp(b.weight, 0.0, 1.0);
+  vec4 surface = textureLod(u_materialSurface, c, u_materialLod);
+  float height = (surface.r - 0.5) * u_relief;
+#if OCTACLAY_LAYER == LAYER_POSITIONS
+  float before = texelFetch(u_featureLayer, b.texel, 0).r;
+  float after = mix(before, height, w);
+  return vec4(value.xyz - u_projectionDir * ((after - before) * u_heightScale), value.w);
+#elif OCTACLAY_LAYER == LAYER_DIFFUSE
+  vec4 colour = textureLod(u_materialColour, c, u_materialLod);
+  return vec4(mix(value.rgb, colour.rgb, w * colour.a), value.a);
+#else
+  return vec4(mix(value.r, height, w), mix(value.g, surface.g, w), mix(value.b, surface.b, w),
+              value.a);
+#endif
+}
+)";
+
 float luminanceAt(const GpuDocument& d, core::Sample s) {
   const std::vector<float> t = d.mirrorTexels(BrushLayer::Diffuse, {s.i, s.j, 1, 1});
   return (t[0] + t[1] + t[2]) / 3;
@@ -66,6 +97,8 @@ private slots:
   void oneDabWritesAllFourAttributesInsideItsRadiusOnly();
   void everyLayerStaysContinuousOverSeams();
   void projectedTexelsKeepTheirSizeWhereTheImageStretches();
+  void onePassWritesWhatPerLayerPassesWrite();
+  void brushLayersMustNotWriteTheMask();
 
 private:
   Dab splatDab(const GpuDocument& d, core::Sample s, float radius, const std::string& material,
@@ -256,6 +289,100 @@ void SplatTest::projectedTexelsKeepTheirSizeWhereTheImageStretches() {
            qPrintable(QString("view cell %1, expected %2").arg(view[0]).arg(expected)));
   // uv: the cells follow the image, stretched about 3x along x.
   QVERIFY2(uv[0] / uv[1] > 2.2f, qPrintable(QString("uv cells %1 x %2").arg(uv[0]).arg(uv[1])));
+}
+
+void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
+  // The reference runs the per-layer body in two brushes, each on its own copy of the document,
+  // so that every pass reads the layers from before the dab as the one pass does: the relief
+  // alone (it reads the old feature), then colour and feature (they read the old positions);
+  // after each dab the copies exchange what the other wrote.
+  BrushManifest relief = splat_, paint = splat_;
+  relief.id = "splat-reference-relief";
+  relief.writes = {BrushLayer::Positions};
+  paint.id = "splat-reference-paint";
+  paint.writes = {BrushLayer::Diffuse, BrushLayer::Feature};
+  paint.reads = {};
+  try {
+    engine_->load(relief, kPerLayerSplat);
+    engine_->load(paint, kPerLayerSplat);
+  } catch (const std::exception& e) {
+    QFAIL(e.what());
+  }
+
+  core::Document start = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128));
+  const int n = start.size(), side = n + 1;
+  for (bool masked : {false, true}) {
+    core::Document document = start;
+    if (masked) { // a painted mask: the BRUSH_MASK_TEXTURE variants
+      document.mask.texels.assign(static_cast<std::size_t>(side) * side, 1.0f);
+      for (int k = 0; k < side * side; k += 3)
+        document.mask.texels[static_cast<std::size_t>(k)] = 0.25f;
+      document.hasMask = true;
+    }
+    GpuDocument one(document), reliefOnly(document), paintOnly(document);
+    // Overlapping dabs (the later ones see the earlier ones' feature and relief), one across
+    // the left seam, in both projections.
+    int changed = 0;
+    for (const auto& [centre, projection] :
+         {std::pair{core::Sample{80, 64}, 0}, std::pair{core::Sample{86, 60}, 0},
+          std::pair{core::Sample{0, n / 3}, 1}, std::pair{core::Sample{76, 70}, 1}}) {
+      const Dab dab = splatDab(one, centre, 0.35f, "stone", projection);
+      const std::vector<float> before = layerTexels(one, BrushLayer::Diffuse);
+      engine_->dab(one, "splat", dab);
+      engine_->dab(reliefOnly, relief.id, dab);
+      engine_->dab(paintOnly, paint.id, dab);
+      const std::vector<float> after = layerTexels(one, BrushLayer::Diffuse);
+      for (std::size_t k = 0; k < after.size(); ++k)
+        changed += after[k] != before[k];
+
+      // Positions: float32 and the same arithmetic, up to the compiler's choice of fused
+      // multiply-adds: a couple of ulps (llvmpipe: the same bits, here and below).
+      const std::vector<float> p = layerTexels(one, BrushLayer::Positions);
+      const std::vector<float> pRef = layerTexels(reliefOnly, BrushLayer::Positions);
+      for (std::size_t k = 0; k < p.size(); ++k)
+        QVERIFY2(std::abs(p[k] - pRef[k]) <= 4e-7f * std::max(std::abs(p[k]), 1.0f),
+                 qPrintable(QString("masked %1, positions[%2]: %3 vs %4")
+                                .arg(masked)
+                                .arg(k)
+                                .arg(double(p[k]), 0, 'g', 9)
+                                .arg(double(pRef[k]), 0, 'g', 9)));
+      // Diffuse and feature are half floats: at most one rounding step apart (2^-11 relative).
+      for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature}) {
+        const std::vector<float> a = layerTexels(one, layer);
+        const std::vector<float> b = layerTexels(paintOnly, layer);
+        for (std::size_t k = 0; k < a.size(); ++k) {
+          const float step = std::max(std::abs(a[k]), std::abs(b[k])) * (1.0f / 1024) + 6e-8f;
+          QVERIFY2(std::abs(a[k] - b[k]) <= step,
+                   qPrintable(QString("masked %1, layer %2 [%3]: %4 vs %5")
+                                  .arg(masked)
+                                  .arg(int(layer))
+                                  .arg(k)
+                                  .arg(a[k])
+                                  .arg(b[k])));
+        }
+      }
+      const core::TexelRect all{0, 0, side, side};
+      reliefOnly.restore(BrushLayer::Diffuse, all, layerTexels(paintOnly, BrushLayer::Diffuse));
+      reliefOnly.restore(BrushLayer::Feature, all, layerTexels(paintOnly, BrushLayer::Feature));
+      paintOnly.restore(BrushLayer::Positions, all, pRef);
+    }
+    QVERIFY(changed > 1000);
+    QCOMPARE(core::maxSeamGap(one.document().positions), 0.0f);
+  }
+}
+
+void SplatTest::brushLayersMustNotWriteTheMask() {
+  BrushManifest m = splat_;
+  m.id = "splat-with-mask";
+  m.writes = {BrushLayer::Positions, BrushLayer::Mask};
+  bool threw = false;
+  try {
+    engine_->load(m, readFile(splat_.shaderPath()));
+  } catch (const GlError& e) {
+    threw = std::string(e.what()).find("brushLayers") != std::string::npos;
+  }
+  QVERIFY(threw);
+  QVERIFY(!engine_->has(m.id));
 }
 
 QTEST_APPLESS_MAIN(SplatTest)

@@ -50,13 +50,16 @@ public:
 
   /// Compiles the brush with the shared prelude. On failure throws GlError naming the brush's
   /// shader file and the compiler's log, and a previously loaded version of it stays in use.
+  /// A body that defines `void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4
+  /// feature, BrushInput b)` instead of `brush()` writes all its layers in one pass (it must not
+  /// write the mask; GlError otherwise).
   void load(const BrushManifest& manifest, const std::string& shaderSource);
   bool has(const std::string& id) const;
 
   /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
-  /// call), for each layer it writes,
-  /// then the seaming pass when it reached the border; the mirror is updated for those tiles.
-  /// Throws GlError for an unknown brush id.
+  /// call), for each layer it writes (one pass for all of them when the body defines
+  /// brushLayers()), then the seaming pass when it reached the border; the mirror is updated
+  /// for those tiles. Throws GlError for an unknown brush id.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
@@ -90,6 +93,9 @@ private:
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   Program seamProgram_;
   RectPass rectPass_;
+  /// brushLayers() passes: the written layers' scratch textures as colour attachments 0 to 2
+  /// (positions, diffuse, feature), attached for each dab and detached after it.
+  Framebuffer layersTarget_;
 };
 
 } // namespace octaclay::gpu
