@@ -362,6 +362,16 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
         }
       }
       const core::TexelRect all{0, 0, side, side};
+      // The mirror (pulled rect by rect, halves widened by GpuDocument) equals the textures.
+      for (BrushLayer layer : {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature}) {
+        const int c = GpuDocument::channels(layer);
+        const std::vector<float> mirror = layerTexels(one, layer);
+        const std::vector<float> texture = one.texture(layer).read({0, 0, side, side});
+        for (std::size_t t = 0; t < mirror.size() / static_cast<std::size_t>(c); ++t)
+          for (int k = 0; k < c; ++k)
+            QVERIFY2(mirror[t * c + k] == texture[t * 4 + k],
+                     qPrintable(QString("layer %1 texel %2").arg(int(layer)).arg(t)));
+      }
       reliefOnly.restore(BrushLayer::Diffuse, all, layerTexels(paintOnly, BrushLayer::Diffuse));
       reliefOnly.restore(BrushLayer::Feature, all, layerTexels(paintOnly, BrushLayer::Feature));
       paintOnly.restore(BrushLayer::Positions, all, pRef);
