@@ -199,12 +199,15 @@ void SphericalParameterizationTest::importsSharedMeshes_data() {
   QTest::newRow("airplane") << "airplane.obj";
   QTest::newRow("blub") << "blub.obj";
   QTest::newRow("wingnut") << "wingnut.obj";
-  // Passing too but slow here (15–60 s each): koala, nefertiti, igea. Still failing (flips left
-  // by the coarse-to-fine refinement on long thin parts): armadillo, horse, scorpion, sword,
-  // bunny_cgal (4 flips). OCTACLAY_IMPORT_ALL=1 adds them all; OCTACLAY_IMPORT_N sets N.
+  QTest::newRow("sword") << "sword.obj";
+  QTest::newRow("bunny_cgal") << "bunny_cgal.obj";
+  QTest::newRow("armadillo") << "armadillo.obj";
+  QTest::newRow("horse") << "horse.ply";
+  QTest::newRow("scorpion") << "scorpion.obj";
+  // Passing too but left out to keep the run short (7–20 s each in Release): koala, nefertiti,
+  // igea. OCTACLAY_IMPORT_ALL=1 adds them; OCTACLAY_IMPORT_N sets N.
   if (qEnvironmentVariableIsSet("OCTACLAY_IMPORT_ALL"))
-    for (const char* f : {"armadillo.obj", "bunny_cgal.obj", "horse.ply", "igea.ply", "koala.obj",
-                          "nefertiti.obj", "scorpion.obj", "sword.obj"})
+    for (const char* f : {"igea.ply", "koala.obj", "nefertiti.obj"})
       QTest::newRow(f) << f;
 }
 

@@ -28,10 +28,16 @@ inline double triangleArea(const Points& x, const Tri& t) {
 
 // The map is handed out in float: a triangle counts as flipped when its corners rounded to
 // float are not positively oriented, so that tiny triangles cannot flip in the conversion.
+// The round trip goes through a volatile: GCC 12 at -O3 was seen to drop double → float → double
+// round trips once inlined (the corners came back unrounded), which let triangles pass here that
+// the stored floats flip.
+inline double roundedToFloat(double v) {
+  const volatile float f = static_cast<float>(v);
+  return static_cast<double>(f);
+}
+
 inline Vec3d roundedToFloat(const Vec3d& p) {
-  const float x = static_cast<float>(p.x()), y = static_cast<float>(p.y()),
-              z = static_cast<float>(p.z());
-  return Vec3d(double(x), double(y), double(z));
+  return Vec3d(roundedToFloat(p.x()), roundedToFloat(p.y()), roundedToFloat(p.z()));
 }
 
 inline bool flipped(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
@@ -41,6 +47,16 @@ inline bool flipped(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
 
 inline bool flipped(const Points& s, const Tri& t) {
   return flipped(s[t[0]], s[t[1]], s[t[2]]);
+}
+
+// flipped() with a margin above the rounding error of the orientation of unit vectors (a few
+// 1e-16), so that a triangle accepted here is positive however its orientation is evaluated:
+// from any corner, in double or from the stored floats. Without it a vertex moved less than a
+// float's resolution from a neighbour leaves a triangle whose sign depends on the evaluation.
+inline bool flippedWithMargin(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  constexpr double margin = 4e-15;
+  return orientation(a, b, c) <= margin ||
+         orientation(roundedToFloat(a), roundedToFloat(b), roundedToFloat(c)) <= margin;
 }
 
 // Per-triangle stretch of the map from the (flat) sphere triangle p to the surface triangle q

@@ -1,8 +1,12 @@
 #include "detail/spherical_progressive.h"
 
+#include "detail/parallel_rows.h"
+#include "detail/spherical_stretch.h"
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <queue>
 
 namespace octaclay::core::detail {
@@ -230,62 +234,108 @@ std::vector<Collapse> simplify(CollapsibleMesh& mesh, const Points& x, int targe
 // The map's state during refinement, with Sander et al.'s local stretch optimization.
 class Refiner {
 public:
-  Refiner(const Points& x, const CollapsibleMesh& mesh, Points& s) : x_(x), mesh_(mesh), s_(s) {}
+  Refiner(const Points& x, const CollapsibleMesh& mesh, Points& s)
+      : x_(x), mesh_(mesh), s_(s), step_(s.size(), std::numeric_limits<double>::infinity()),
+        colour_(s.size(), -1) {}
 
-  // Σ A·(a + c)/2 over v's faces with v at p; infinite when one is flipped.
-  double ringEnergy(int v, const Vec3d& p) const {
-    double e = 0;
+  // v's triangles as seen from v.
+  void gatherRing(int v, std::vector<RingFace>& ring) const {
+    ring.clear();
     for (int f : mesh_.facesOf(v)) {
       const Tri& t = mesh_.faces()[f];
-      Vec3d q[3];
-      for (int k = 0; k < 3; ++k)
-        q[k] = t[k] == v ? p : s_[t[k]];
-      const TriangleStretch ts = triangleStretch(q[0], q[1], q[2], x_[t[0]], x_[t[1]], x_[t[2]]);
-      if (std::isnan(ts.meanSquare)) return std::numeric_limits<double>::infinity();
-      e += triangleArea(x_, t) * ts.meanSquare;
+      const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      ring.push_back({a, b, x_[v], x_[a], x_[b]});
     }
-    return e;
   }
 
-  // The shortest and longest distance from v to its neighbours on the sphere.
-  std::pair<double, double> ringEdges(int v) const {
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (int f : mesh_.facesOf(v))
-      for (int w : mesh_.faces()[f])
-        if (w != v) {
-          const double d = (s_[w] - s_[v]).norm();
-          shortest = std::min(shortest, d);
-          longest = std::max(longest, d);
-        }
-    return {shortest, longest};
+  // Σ A·(a + c)/2 over v's faces with v at p; infinite when one is flipped.
+  double ringEnergy(int v, const Vec3d& p) {
+    gatherRing(v, ring_);
+    return ringStretchEnergy(s_, ring_, p);
   }
 
-  // One gradient step with a halving line search from half the ring's size (so that a vertex
-  // next to a tiny triangle can still leave it quickly); returns whether v moved.
-  bool optimize(int v) {
-    const Vec3d p = s_[v];
-    const auto [shortest, longest] = ringEdges(v);
-    if (!(shortest > 0) || !std::isfinite(longest)) return false;
-    const Vec3d e1 =
-        (std::abs(p.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY()).cross(p).normalized();
-    const Vec3d e2 = p.cross(e1);
-    const double h = 1e-3 * shortest;
-    const double e0 = ringEnergy(v, p);
-    if (!std::isfinite(e0)) return false;
-    const Vec3d gradient =
-        (ringEnergy(v, (p + h * e1).normalized()) - ringEnergy(v, (p - h * e1).normalized())) * e1 +
-        (ringEnergy(v, (p + h * e2).normalized()) - ringEnergy(v, (p - h * e2).normalized())) * e2;
-    const double norm = gradient.norm();
-    if (!(norm > 0) || !std::isfinite(norm)) return false;
-    const Vec3d direction = -gradient / norm;
-    for (double step = 0.5 * longest; step > 1e-4 * shortest; step *= 0.5) {
-      const Vec3d q = (p + step * direction).normalized();
-      if (ringEnergy(v, q) < e0) {
-        s_[v] = q;
-        return true;
+  // One descent step of v; returns the energy decrease. `ring` is the caller's scratch, so
+  // that vertices that share no triangle can move on several threads at once.
+  double optimize(int v, std::vector<RingFace>& ring) {
+    gatherRing(v, ring);
+    return descend(s_, v, ring, step_[v]);
+  }
+  double optimize(int v) { return optimize(v, ring_); }
+
+  // `sweeps` Gauss–Seidel sweeps over `vertices`, each colour class of a greedy colouring (no
+  // two vertices of a class share a triangle) moved in parallel.
+  void relax(const std::vector<int>& vertices, int sweeps) {
+    std::vector<std::vector<int>>& classes = classes_;
+    for (auto& c : classes)
+      c.clear();
+    std::vector<char>& used = usedColours_;
+    for (int v : vertices) {
+      used.assign(classes.size() + 1, 0);
+      for (int f : mesh_.facesOf(v))
+        for (int w : mesh_.faces()[f])
+          if (w != v && colour_[w] >= 0) used[colour_[w]] = 1;
+      const int c = static_cast<int>(std::find(used.begin(), used.end(), 0) - used.begin());
+      colour_[v] = c;
+      if (c >= static_cast<int>(classes.size())) classes.resize(static_cast<std::size_t>(c) + 1);
+      classes[c].push_back(v);
+    }
+    for (int v : vertices)
+      colour_[v] = -1;
+    for (int sweep = 0; sweep < sweeps; ++sweep)
+      for (const std::vector<int>& c : classes)
+        parallelRows(
+            static_cast<int>(c.size()),
+            [&](int begin, int end) {
+              std::vector<RingFace> ring;
+              for (int i = begin; i < end; ++i)
+                optimize(c[i], ring);
+            },
+            512);
+  }
+
+  // The vertices within `rings` edges of `center`, in breadth-first order.
+  void region(int center, int rings, std::vector<int>& out) {
+    out.assign(1, center);
+    colour_[center] = -2;
+    std::size_t begin = 0;
+    for (int ring = 0; ring < rings; ++ring) {
+      const std::size_t end = out.size();
+      for (std::size_t i = begin; i < end; ++i)
+        for (int f : mesh_.facesOf(out[i]))
+          for (int w : mesh_.faces()[f])
+            if (colour_[w] != -2) {
+              colour_[w] = -2;
+              out.push_back(w);
+            }
+      begin = end;
+    }
+    for (int w : out)
+      colour_[w] = -1;
+  }
+
+  // The largest stretch (a + c)/2 over the triangles of `vertices` against their
+  // area-weighted mean; large where a triangle is far more squeezed than its neighbourhood.
+  double stretchJump(const std::vector<int>& vertices, const std::vector<int>& centre) {
+    double worst = 0, energy = 0, area = 0;
+    for (int v : vertices)
+      for (int f : mesh_.facesOf(v)) {
+        const Tri& t = mesh_.faces()[f];
+        const double a = triangleArea(x_, t);
+        const double e = stretchEnergy(s_[t[0]], s_[t[1]], s_[t[2]], x_[t[0]], x_[t[1]], x_[t[2]]);
+        if (!std::isfinite(e)) return std::numeric_limits<double>::infinity();
+        energy += e;
+        area += a;
       }
-    }
-    return false;
+    for (int v : centre)
+      for (int f : mesh_.facesOf(v)) {
+        const Tri& t = mesh_.faces()[f];
+        const double a = triangleArea(x_, t);
+        const double e = stretchEnergy(s_[t[0]], s_[t[1]], s_[t[2]], x_[t[0]], x_[t[1]], x_[t[2]]);
+        if (!std::isfinite(e)) return std::numeric_limits<double>::infinity();
+        if (a > 0) worst = std::max(worst, e / a);
+      }
+    return area > 0 ? worst / (energy / area) : 0;
   }
 
   // Places the re-inserted vertex u (whose collapse went into v) inside the kernel of its
@@ -453,14 +503,12 @@ public:
   }
 
   // The energy of all faces around u or v.
-  double edgeStarEnergy(int u, int v) const {
+  double edgeStarEnergy(int u, int v) {
     double e = ringEnergy(u, s_[u]) + ringEnergy(v, s_[v]);
     for (int f : mesh_.facesOf(u)) {
       const Tri& t = mesh_.faces()[f];
       if (t[0] != v && t[1] != v && t[2] != v) continue;
-      const TriangleStretch ts =
-          triangleStretch(s_[t[0]], s_[t[1]], s_[t[2]], x_[t[0]], x_[t[1]], x_[t[2]]);
-      e -= triangleArea(x_, t) * ts.meanSquare;
+      e -= stretchEnergy(s_[t[0]], s_[t[1]], s_[t[2]], x_[t[0]], x_[t[1]], x_[t[2]]);
     }
     return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
   }
@@ -469,6 +517,11 @@ private:
   const Points& x_;
   const CollapsibleMesh& mesh_;
   Points& s_;
+  std::vector<double> step_;
+  std::vector<int> colour_;
+  std::vector<std::vector<int>> classes_;
+  std::vector<char> usedColours_;
+  std::vector<RingFace> ring_;
   std::vector<std::pair<int, int>> scratch_;
   std::vector<int> scratchRing_;
   std::vector<Eigen::Vector2d> scratchPolygon_;
@@ -482,17 +535,15 @@ Points mapCoarseToFine(const Points& x, const std::vector<Tri>& triangles,
                        const std::function<void(double)>& progress) {
   const int n = static_cast<int>(x.size());
   CollapsibleMesh mesh(n, triangles);
-  std::vector<Collapse> sequence =
-      simplify(mesh, x, std::max(4, options.baseVertices), [&](double f) { progress(0.25 * f); });
-  progress(0.25);
+  std::vector<Collapse> collapses =
+      simplify(mesh, x, std::max(4, options.baseVertices), [&](double f) { progress(0.2 * f); });
+  progress(0.2);
 
-  // The base, renumbered compactly, onto the sphere. Where the whole-mesh map of the base
-  // leaves flipped triangles (a base too coarse to round out well), collapses are undone
-  // until the base has twice as many vertices, and it is tried again.
-  std::vector<Collapse> collapses = std::move(sequence);
+  // The base, renumbered compactly, onto the sphere: a tetrahedron onto a regular one, anything
+  // larger by `mapBase`. Returns whether no base triangle is flipped.
   Points s(x.size(), Vec3d::UnitZ());
   std::vector<int> original;
-  for (int attempt = 0;; ++attempt) {
+  const auto mapBaseMesh = [&] {
     std::vector<int> compact(static_cast<std::size_t>(n), -1);
     original.clear();
     Points baseX;
@@ -506,47 +557,69 @@ Points mapCoarseToFine(const Points& x, const std::vector<Tri>& triangles,
     for (Tri& t : baseTriangles)
       for (int& w : t)
         w = compact[w];
-    const Points baseSphere = mapBase(baseX, baseTriangles);
+    Points baseSphere;
+    if (baseX.size() == 4) {
+      const double third = 1 / std::sqrt(3.0);
+      baseSphere = {Vec3d(1, 1, 1) * third, Vec3d(1, -1, -1) * third, Vec3d(-1, 1, -1) * third,
+                    Vec3d(-1, -1, 1) * third};
+      if (flipped(baseSphere, baseTriangles.front()))
+        for (Vec3d& p : baseSphere)
+          p.x() = -p.x();
+    } else {
+      baseSphere = mapBase(baseX, baseTriangles);
+    }
     bool valid = true;
     for (const Tri& t : baseTriangles)
       valid = valid && !flipped(baseSphere, t);
     for (std::size_t i = 0; i < original.size(); ++i)
       s[original[i]] = baseSphere[i];
-    if (valid || collapses.empty() || attempt == 6) break;
-    for (std::size_t k = original.size(); k < 2 * original.size() && !collapses.empty(); ++k) {
-      mesh.undo(collapses.back());
-      collapses.pop_back();
-    }
+    return valid;
+  };
+  // Where the whole-mesh map cannot embed the base (long thin parts that conformal flow
+  // squeezes to nothing), the mesh is simplified on towards a tetrahedron, which needs no map
+  // at all; the refinement then inserts every vertex into a valid ring.
+  if (!mapBaseMesh() && mesh.aliveFaces().size() > 4) {
+    std::vector<Collapse> more = simplify(mesh, x, 4, [](double) {});
+    collapses.insert(collapses.end(), std::make_move_iterator(more.begin()),
+                     std::make_move_iterator(more.end()));
+    mapBaseMesh();
   }
   progress(0.35);
 
   Refiner refiner(x, mesh, s);
   std::vector<int> present = original;
-  const auto relaxAll = [&](int sweeps) {
-    for (int sweep = 0; sweep < sweeps; ++sweep)
-      for (int v : present)
-        refiner.optimize(v);
-  };
-  relaxAll(options.sweepsPerLevel);
+  refiner.relax(present, options.sweepsPerLevel);
   double nextLevel = static_cast<double>(present.size()) * options.levelGrowth;
-  std::vector<int> ring;
+  std::vector<int> ring, area;
+  std::size_t sinceReport = 0;
   for (std::size_t i = collapses.size(); i-- > 0;) {
     const Collapse& c = collapses[i];
     mesh.undo(c);
     refiner.place(c.u, c.v);
     present.push_back(c.u);
-    // The new vertex and its ring settle a little at once; the level's sweeps do the rest.
-    for (int round = 0; round < 3; ++round) {
-      for (int iteration = 0; iteration < 4; ++iteration)
-        if (!refiner.optimize(c.u)) break;
-      mesh.neighbours(c.u, ring);
-      for (int w : ring)
-        refiner.optimize(w);
-    }
+    // The new vertex and its ring settle at once; the level's sweeps do the rest.
+    for (int iteration = 0; iteration < 6; ++iteration)
+      if (!(refiner.optimize(c.u) > 0)) break;
+    mesh.neighbours(c.u, ring);
+    for (int w : ring)
+      refiner.optimize(w);
     refiner.optimize(c.u);
+    // Where the new vertex is still squeezed far more than its surroundings, its
+    // neighbourhood is relaxed as a whole, growing while that does not suffice.
+    for (int rings = 2; rings <= 4; ++rings) {
+      refiner.region(c.u, rings + 1, area);
+      if (refiner.stretchJump(area, {c.u, c.v}) <= 8) break;
+      refiner.region(c.u, rings, area);
+      for (int sweep = 0; sweep < 4 * rings; ++sweep)
+        for (int w : area)
+          refiner.optimize(w);
+    }
     if (static_cast<double>(present.size()) >= nextLevel || i == 0) {
-      relaxAll(options.sweepsPerLevel);
+      refiner.relax(present, options.sweepsPerLevel);
       nextLevel = static_cast<double>(present.size()) * options.levelGrowth;
+    }
+    if (++sinceReport == 1024 || i == 0) {
+      sinceReport = 0;
       progress(0.35 +
                0.65 * (1.0 - double(i) / double(std::max<std::size_t>(1, collapses.size()))));
     }

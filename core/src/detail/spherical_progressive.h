@@ -23,9 +23,9 @@ struct CoarseToFineOptions {
 /// Maps the closed genus-0 mesh (x, triangles), compact (every vertex referenced) and facing
 /// outward, onto the unit sphere. `mapBase` maps the base mesh (positions and triangles,
 /// renumbered compactly) bijectively onto the unit sphere. `progress` gets the fraction done in
-/// [0, 1] now and then; it may throw to stop. Returns one unit vector per vertex; some
-/// triangles may be flipped only where a re-inserted vertex found no valid place (rare; the
-/// caller untangles).
+/// [0, 1] now and then; it may throw to stop. Returns one unit vector per vertex; where the base
+/// map leaves no flips (a tetrahedron base never does) and every re-inserted vertex found a
+/// valid place, no triangle is flipped, in double or in float.
 Points mapCoarseToFine(const Points& x, const std::vector<Tri>& triangles,
                        const CoarseToFineOptions& options,
                        const std::function<Points(const Points&, const std::vector<Tri>&)>& mapBase,
