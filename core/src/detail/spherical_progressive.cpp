@@ -628,4 +628,29 @@ Points mapCoarseToFine(const Points& x, const std::vector<Tri>& triangles,
   return s;
 }
 
+void relaxStretchPower(Points& s, const Points& x, const std::vector<Tri>& triangles, double power,
+                       int maxSweeps, double tolerance) {
+  const int n = static_cast<int>(s.size());
+  std::vector<std::vector<RingFace>> rings(static_cast<std::size_t>(n));
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int v = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      rings[v].push_back({a, b, x[v], x[a], x[b]});
+    }
+  double total = 0;
+  for (int v = 0; v < n; ++v)
+    total += ringStretchEnergy(s, rings[v], s[v], nullptr, power) / 3;
+  if (!std::isfinite(total) || !(total > 0)) return;
+  std::vector<double> step(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  for (int sweep = 0; sweep < maxSweeps; ++sweep) {
+    // Each move changes only the moved vertex's triangles, so the ring decreases add up to the
+    // decrease of the whole energy.
+    double decrease = 0;
+    for (int v = 0; v < n; ++v)
+      decrease += descend(s, v, rings[v], step[v], power);
+    total -= decrease;
+    if (!(decrease > tolerance * total)) break;
+  }
+}
+
 } // namespace octaclay::core::detail

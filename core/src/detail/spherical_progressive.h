@@ -31,4 +31,11 @@ Points mapCoarseToFine(const Points& x, const std::vector<Tri>& triangles,
                        const std::function<Points(const Points&, const std::vector<Tri>&)>& mapBase,
                        const std::function<void(double)>& progress);
 
+/// Relaxes the map s of the mesh (x, triangles) towards a low Σ A·m^power, m each triangle's
+/// mean squared stretch (power above 1 targets the largest stretch), by flip-safe local
+/// descent sweeps over all vertices until a sweep lowers the energy by less than `tolerance`
+/// of it or `maxSweeps` have run. Serial: meant for small meshes.
+void relaxStretchPower(Points& s, const Points& x, const std::vector<Tri>& triangles, double power,
+                       int maxSweeps, double tolerance = 1e-5);
+
 } // namespace octaclay::core::detail

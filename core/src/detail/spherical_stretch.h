@@ -51,15 +51,25 @@ struct RingFace {
 };
 
 // The energy of v's triangles with v at p (infinite when one flips), and with `gradient` the
-// gradient with respect to p in space.
+// gradient with respect to p in space. With `power` ≠ 1, each triangle's term is A·m^power with m =
+// (a + c)/2 its mean squared stretch instead of A·m: a power above 1 weighs the most stretched
+// triangles more, towards the L∞ stretch.
 inline double ringStretchEnergy(const Points& s, std::span<const RingFace> ring, const Vec3d& p,
-                                Vec3d* gradient = nullptr) {
+                                Vec3d* gradient = nullptr, double power = 1) {
   double energy = 0;
   if (gradient) gradient->setZero();
   Vec3d g;
   for (const RingFace& f : ring) {
-    energy += stretchEnergy(p, s[f.a], s[f.b], f.qv, f.qa, f.qb, gradient ? &g : nullptr);
-    if (!std::isfinite(energy)) return std::numeric_limits<double>::infinity();
+    double e = stretchEnergy(p, s[f.a], s[f.b], f.qv, f.qa, f.qb, gradient ? &g : nullptr);
+    if (!std::isfinite(e)) return std::numeric_limits<double>::infinity();
+    if (power != 1) {
+      const double area = 0.5 * (f.qa - f.qv).cross(f.qb - f.qv).norm();
+      if (!(area > 0)) continue;
+      const double scale = std::pow(e / area, power - 1);
+      e *= scale;
+      g *= power * scale;
+    }
+    energy += e;
     if (gradient) *gradient += g;
   }
   return energy;
@@ -68,10 +78,11 @@ inline double ringStretchEnergy(const Points& s, std::span<const RingFace> ring,
 // One step of v down the gradient of its ring's stretch energy on the sphere, with a halving
 // line search from `step` (per vertex, adapted: doubled after a success, the last tried length
 // after a failure). Never flips a triangle. Returns the energy decrease (0 when v did not move).
-inline double descend(Points& s, int v, std::span<const RingFace> ring, double& step) {
+inline double descend(Points& s, int v, std::span<const RingFace> ring, double& step,
+                      double power = 1) {
   const Vec3d p = s[v];
   Vec3d gradient;
-  const double e0 = ringStretchEnergy(s, ring, p, &gradient);
+  const double e0 = ringStretchEnergy(s, ring, p, &gradient, power);
   if (!std::isfinite(e0)) return 0;
   gradient -= gradient.dot(p) * p;
   const double norm = gradient.norm();
@@ -87,7 +98,7 @@ inline double descend(Points& s, int v, std::span<const RingFace> ring, double& 
   double t = std::clamp(step, 1e-6 * shortest, 0.5 * longest);
   for (int attempt = 0; attempt < 40 && t > 1e-9 * shortest; ++attempt, t *= 0.5) {
     const Vec3d q = (p + t * direction).normalized();
-    const double e = ringStretchEnergy(s, ring, q);
+    const double e = ringStretchEnergy(s, ring, q, nullptr, power);
     if (e < e0) {
       s[v] = q;
       step = 2 * t;
