@@ -617,26 +617,21 @@ void ViewportWidget::refreshAfterHistory(const core::Stroke& stroke) {
 }
 
 bool ViewportWidget::undoStroke() {
-  if (!document_ || !history_.canUndo() || stroke_) return false;
-  makeCurrent();
-  const core::Stroke* s = nullptr;
-  try {
-    s = history_.undo(gpu::undoApplier(*document_));
-    if (s) refreshAfterHistory(*s);
-  } catch (const std::exception& e) {
-    fail(QString::fromUtf8(e.what()));
-  }
-  doneCurrent();
-  update();
-  return s != nullptr;
+  return stepHistory(&core::EditHistory::canUndo, &core::EditHistory::undo);
 }
 
 bool ViewportWidget::redoStroke() {
-  if (!document_ || !history_.canRedo() || stroke_) return false;
+  return stepHistory(&core::EditHistory::canRedo, &core::EditHistory::redo);
+}
+
+bool ViewportWidget::stepHistory(
+    bool (core::EditHistory::*can)() const,
+    const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&)) {
+  if (!document_ || !(history_.*can)() || stroke_) return false;
   makeCurrent();
   const core::Stroke* s = nullptr;
   try {
-    s = history_.redo(gpu::undoApplier(*document_));
+    s = (history_.*step)(gpu::undoApplier(*document_));
     if (s) refreshAfterHistory(*s);
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));

@@ -150,6 +150,9 @@ private:
   std::optional<gpu::BrushManifest> prepareBrush(const std::string& id);
   void refreshNormalsAround(std::vector<core::TexelRect> rects);
   void refreshAfterHistory(const core::Stroke& stroke);
+  /// Undo or redo on the GPU and the mirror, then the normals of what changed.
+  bool stepHistory(bool (core::EditHistory::*can)() const,
+                   const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&));
   float diagonal() const;
   void updateClipping();
   void fail(const QString& message);

@@ -3,9 +3,10 @@
 
 #include "octaclay/gpu/brush_catalog.h"
 
+#include "manifest_json.h"
+
 #include <algorithm>
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -22,30 +23,10 @@ fs::path manifestOf(const BrushManifest& brush) {
   return brush.folder / kManifestName;
 }
 
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  return value ? std::string(value) : std::string();
-}
-
 } // namespace
 
 std::vector<fs::path> BrushCatalog::defaultSearchPath(const fs::path& builtInFolder) {
-  std::vector<fs::path> folders{builtInFolder};
-  const std::string pluginPath = environment("OCTACLAY_PLUGIN_PATH");
-  std::size_t start = 0;
-  while (start <= pluginPath.size()) {
-    std::size_t end = pluginPath.find(':', start);
-    if (end == std::string::npos) end = pluginPath.size();
-    if (end > start) folders.emplace_back(pluginPath.substr(start, end - start));
-    start = end + 1;
-  }
-  // XDG Base Directory spec: a relative XDG_DATA_HOME is invalid and must be ignored.
-  const fs::path dataHome = environment("XDG_DATA_HOME");
-  if (dataHome.is_absolute())
-    folders.push_back(dataHome / "octaclay" / "brushes");
-  else if (const std::string home = environment("HOME"); !home.empty())
-    folders.push_back(fs::path(home) / ".local" / "share" / "octaclay" / "brushes");
-  return folders;
+  return detail::pluginSearchPath(builtInFolder, "OCTACLAY_PLUGIN_PATH", "brushes");
 }
 
 void BrushCatalog::scan(const std::vector<fs::path>& folders) {

@@ -3,24 +3,26 @@
 
 #include "octaclay/gpu/brush_manifest.h"
 
+#include "manifest_json.h"
+
 #include <algorithm>
-#include <cerrno>
-#include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <set>
-#include <sstream>
 
 namespace octaclay::gpu {
 
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
+using detail::describe;
+using detail::formatNumber;
+using detail::isValidId;
+using detail::json;
+using detail::listChoices;
+using detail::quote;
+using detail::shortDump;
 
 constexpr std::array kLayerNames{"positions", "diffuse", "feature", "mask"};
 constexpr std::array kAreaNames{"uv", "volume", "volume+normal"};
@@ -41,139 +43,16 @@ constexpr std::array kReservedParameterIds{"centre",    "radius", "strength", "p
 constexpr std::size_t kMinCurveSamples = 2, kMaxCurveSamples = 64;
 constexpr double kMaxSpacing = 10.0;
 
-std::string quote(std::string_view s) {
-  return json(std::string(s)).dump();
-}
-
-std::string formatNumber(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-// "float, int, bool, color or enum".
-template <std::size_t N> std::string listChoices(const std::array<const char*, N>& names) {
-  std::string out;
-  for (std::size_t k = 0; k < N; ++k) {
-    if (k > 0) out += k + 1 == N ? " or " : ", ";
-    out += names[k];
-  }
-  return out;
-}
-
-std::string shortDump(const json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
-
-// What a wrong value was, for "expected …, got …".
-std::string describe(const json& value) {
-  if (value.is_object()) return "an object";
-  if (value.is_array()) return "an array";
-  return shortDump(value);
-}
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j)
-    row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-// Lowercase words of [a-z0-9] joined by single '-' when strictHyphens, else [a-z0-9-]+.
-bool isValidId(std::string_view id, bool strictHyphens) {
-  if (id.empty()) return false;
-  for (std::size_t k = 0; k < id.size(); ++k) {
-    const char c = id[k];
-    const bool alnum = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
-    if (alnum) continue;
-    if (c != '-') return false;
-    if (strictHyphens && (k == 0 || k + 1 == id.size() || id[k + 1] == '-')) return false;
-  }
-  return true;
-}
-
-// Tracks the JSON path while nlohmann parses, to name a key that appears twice in one object
-// (nlohmann silently keeps the last one, which would hide a copy-paste mistake).
-class DuplicateKeyCheck {
+class ManifestParser : detail::ManifestReader {
 public:
-  explicit DuplicateKeyCheck(const fs::path& file) : file_(file) {}
-
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-    case json::parse_event_t::object_start:
-      stack_.push_back({true, {}, {}, 0});
-      break;
-    case json::parse_event_t::array_start:
-      stack_.push_back({false, {}, {}, 0});
-      break;
-    case json::parse_event_t::key: {
-      Frame& top = stack_.back();
-      top.key = parsed.get<std::string>();
-      if (!top.keys.insert(top.key).second)
-        throw BrushLoadError(file_.string() + ": " + path() +
-                             ": appears twice in the same object (remove one)");
-      break;
-    }
-    case json::parse_event_t::value:
-      advanceArray();
-      break;
-    case json::parse_event_t::object_end:
-    case json::parse_event_t::array_end:
-      stack_.pop_back();
-      advanceArray();
-      break;
-    }
-    return true;
-  }
-
-private:
-  struct Frame {
-    bool isObject;
-    std::set<std::string> keys;
-    std::string key;
-    std::size_t index;
-  };
-
-  void advanceArray() {
-    if (!stack_.empty() && !stack_.back().isObject) ++stack_.back().index;
-  }
-
-  std::string path() const {
-    std::string out;
-    for (const Frame& frame : stack_) {
-      if (frame.isObject)
-        out += (out.empty() ? "" : ".") + frame.key;
-      else
-        out += "[" + std::to_string(frame.index) + "]";
-    }
-    return out;
-  }
-
-  fs::path file_;
-  std::vector<Frame> stack_;
-};
-
-class ManifestParser {
-public:
-  explicit ManifestParser(const fs::path& file) : file_(file) {}
+  explicit ManifestParser(const fs::path& file) : ManifestReader(file, "manifest file") {}
 
   BrushManifest parse() {
     const json root = readJson();
     if (!root.is_object()) failFile("expected a JSON object { ... }, got " + describe(root));
 
     BrushManifest manifest;
-    manifest.folder = file_.parent_path();
+    manifest.folder = file().parent_path();
     // api first: a newer manifest may legitimately use fields this build does not know.
     manifest.api = parseApi(root);
     rejectUnknownFields(root, "", kTopLevelFields);
@@ -216,98 +95,6 @@ public:
   }
 
 private:
-  [[noreturn]] void failFile(const std::string& reason) const {
-    throw BrushLoadError(file_.string() + ": " + reason);
-  }
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw BrushLoadError(file_.string() + ": " + field + ": " + reason);
-  }
-
-  json readJson() const {
-    std::error_code ec;
-    const fs::file_status status = fs::status(file_, ec);
-    if (!fs::exists(status)) failFile("file not found");
-    if (fs::is_directory(status)) failFile("is a folder, not a manifest file");
-    std::ifstream in(file_, std::ios::binary);
-    if (!in) failFile(std::string("cannot be read (") + std::strerror(errno) + ")");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) failFile("cannot be read (read error)");
-    try {
-      return json::parse(text.str(), DuplicateKeyCheck(file_));
-    } catch (const json::parse_error& e) {
-      // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: …".
-      std::string detail = e.what();
-      const std::string marker = "parse error at ";
-      if (const auto at = detail.find(marker); at != std::string::npos)
-        detail = detail.substr(at + marker.size());
-      failFile("invalid JSON at byte " + std::to_string(e.byte) + ", " + detail);
-    }
-  }
-
-  template <std::size_t N>
-  void rejectUnknownFields(const json& object, const std::string& prefix,
-                           const std::array<const char*, N>& known) const {
-    for (const auto& [key, value] : object.items()) {
-      if (key.starts_with("x-")) continue;
-      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) !=
-          known.end())
-        continue;
-      std::string hint;
-      for (const char* k : known)
-        if (editDistance(key, k) <= 2) {
-          hint = " (did you mean " + quote(k) + "?)";
-          break;
-        }
-      if (hint.empty()) hint = " (prefix your own fields with x-)";
-      fail(prefix + key, "unknown field" + hint);
-    }
-  }
-
-  const json& required(const json& object, const char* key, const std::string& field) const {
-    if (!object.contains(key)) fail(field, "missing required field");
-    return object[key];
-  }
-
-  std::string string(const json& value, const std::string& field) const {
-    if (!value.is_string()) fail(field, "expected a string, got " + describe(value));
-    return value.get<std::string>();
-  }
-  std::string requiredString(const json& object, const char* key, const std::string& field) const {
-    return string(required(object, key, field), field);
-  }
-  std::optional<std::string> optionalString(const json& object, const char* key,
-                                            const std::string& field) const {
-    if (!object.contains(key)) return std::nullopt;
-    return string(object[key], field);
-  }
-
-  double number(const json& value, const std::string& field) const {
-    if (!value.is_number()) fail(field, "expected a number, got " + describe(value));
-    const double v = value.get<double>();
-    if (!std::isfinite(static_cast<float>(v)))
-      fail(field, formatNumber(v) + " is too large for a float");
-    return v;
-  }
-
-  int integer(const json& value, const std::string& field) const {
-    if (!value.is_number()) fail(field, "expected an integer, got " + describe(value));
-    const double v = value.get<double>();
-    if (v != std::floor(v) || v < std::numeric_limits<int>::min() ||
-        v > std::numeric_limits<int>::max())
-      fail(field, "expected an integer, got " + describe(value));
-    return static_cast<int>(v);
-  }
-
-  template <typename Enum, std::size_t N>
-  Enum choose(const std::string& value, const std::array<const char*, N>& names,
-              const std::string& field, const char* what) const {
-    for (std::size_t k = 0; k < N; ++k)
-      if (value == names[k]) return static_cast<Enum>(k);
-    fail(field,
-         "unknown " + std::string(what) + " " + quote(value) + " (use " + listChoices(names) + ")");
-  }
-
   int parseApi(const json& root) const {
     const int api = integer(required(root, "api", "api"), "api");
     if (api < 1) fail("api", "must be 1 or more, got " + std::to_string(api));
@@ -517,8 +304,6 @@ private:
       out.defaultValue[0] = static_cast<float>(it - out.options.begin());
     }
   }
-
-  fs::path file_;
 };
 
 } // namespace
@@ -546,7 +331,11 @@ const BrushParameter* BrushManifest::parameter(std::string_view parameterId) con
 }
 
 BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile) {
-  return ManifestParser(manifestFile).parse();
+  try {
+    return ManifestParser(manifestFile).parse();
+  } catch (const detail::ManifestError& e) {
+    throw BrushLoadError(e.what());
+  }
 }
 
 } // namespace octaclay::gpu

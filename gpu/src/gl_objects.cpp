@@ -2,8 +2,8 @@
 
 #include "octaclay/gpu/gl_error.h"
 
+#include <bit>
 #include <cstdint>
-#include <cstring>
 #include <epoxy/gl.h>
 #include <utility>
 #include <vector>
@@ -150,23 +150,16 @@ std::vector<float> Texture::read(Region region) const {
 
 namespace {
 
-// Exact: every half is a float. Subnormal halves are mantissa × 2^-24, also exact in float.
-float halfToFloat(std::uint16_t h) {
-  const std::uint32_t sign = static_cast<std::uint32_t>(h & 0x8000u) << 16;
-  const std::uint32_t exponent = (h >> 10) & 0x1fu, mantissa = h & 0x3ffu;
-  std::uint32_t bits;
-  if (exponent == 0) {
-    const float f = static_cast<float>(mantissa) * 5.9604644775390625e-8f;
-    std::memcpy(&bits, &f, sizeof bits);
-    bits |= sign;
-  } else if (exponent == 31) {
-    bits = sign | 0x7f800000u | (mantissa << 13);
-  } else {
-    bits = sign | ((exponent + 112) << 23) | (mantissa << 13);
-  }
-  float f;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
+// Exact half → float without branches, so the compiler vectorizes a row of them: the half's
+// exponent and mantissa moved into a float's and scaled by 2^112 (subnormal halves become
+// subnormal floats and scale exactly too); infinities and NaNs keep the all-ones exponent.
+float widenHalf(std::uint16_t h) {
+  const std::uint32_t magnitude = h & 0x7fffu;
+  const float scaled = std::bit_cast<float>(magnitude << 13) * 0x1p112f;
+  const std::uint32_t special = 0u - static_cast<std::uint32_t>(magnitude >= 0x7c00u);
+  const std::uint32_t bits = (((magnitude << 13) | 0x7f800000u) & special) |
+                             (std::bit_cast<std::uint32_t>(scaled) & ~special);
+  return std::bit_cast<float>(bits | (static_cast<std::uint32_t>(h & 0x8000u) << 16));
 }
 
 } // namespace
@@ -175,10 +168,12 @@ void Texture::readInto(Region region, float* out, int rowLength, int channels) c
   const GLenum layout = layoutOf(channels);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
   if (format_ == TextureFormat::Rgba16f) {
-    // Raw halves, widened here: a software driver's generic half-to-float read path with
+    // Raw halves widened here: a software driver's generic half-to-float read path with
     // channel conversion costs several times this loop.
     thread_local std::vector<std::uint16_t> halves;
+    thread_local std::vector<float> row;
     halves.resize(static_cast<std::size_t>(region.width) * region.height * 4);
+    row.resize(static_cast<std::size_t>(region.width) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 2);
     glPixelStorei(GL_PACK_ROW_LENGTH, 0);
     glReadPixels(region.x, region.y, region.width, region.height, GL_RGBA, GL_HALF_FLOAT,
@@ -187,9 +182,13 @@ void Texture::readInto(Region region, float* out, int rowLength, int channels) c
     for (int y = 0; y < region.height; ++y) {
       const std::uint16_t* from = halves.data() + static_cast<std::size_t>(y) * region.width * 4;
       float* to = out + static_cast<std::size_t>(y) * rowLength * channels;
-      for (int x = 0; x < region.width; ++x)
-        for (int c = 0; c < channels; ++c)
-          to[x * channels + c] = c < 4 ? halfToFloat(from[x * 4 + c]) : 0.0f;
+      float* widened = channels == 4 ? to : row.data();
+      for (int k = 0; k < region.width * 4; ++k)
+        widened[k] = widenHalf(from[k]);
+      if (channels != 4)
+        for (int x = 0; x < region.width; ++x)
+          for (int c = 0; c < channels; ++c)
+            to[x * channels + c] = row[static_cast<std::size_t>(x) * 4 + c];
     }
     return;
   }

@@ -3,9 +3,6 @@
 #include "octaclay/gpu/gl_error.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
-#include <epoxy/gl.h>
 #include <utility>
 #include <vector>
 
@@ -27,18 +24,6 @@ TextureFormat formatOf(BrushLayer layer) {
 
 Region toRegion(core::TexelRect r) {
   return {r.x, r.y, r.width, r.height};
-}
-
-// Exact half → float without branches, so the compiler vectorizes a row of them: the half's
-// exponent and mantissa moved into a float's and scaled by 2^112 (subnormal halves become
-// subnormal floats and scale exactly too); infinities and NaNs keep the all-ones exponent.
-float widenHalf(std::uint16_t h) {
-  const std::uint32_t magnitude = h & 0x7fffu;
-  const float scaled = std::bit_cast<float>(magnitude << 13) * 0x1p112f;
-  const std::uint32_t special = 0u - static_cast<std::uint32_t>(magnitude >= 0x7c00u);
-  const std::uint32_t bits = (((magnitude << 13) | 0x7f800000u) & special) |
-                             (std::bit_cast<std::uint32_t>(scaled) & ~special);
-  return std::bit_cast<float>(bits | (static_cast<std::uint32_t>(h & 0x8000u) << 16));
 }
 
 } // namespace
@@ -163,38 +148,7 @@ void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
   const int c = channels(layer);
   const int side = document_.positions.side();
   const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
-  const Texture& texture = textures_[index(layer)];
-  if (texture.format() == TextureFormat::Rgba16f) {
-    // Raw halves (a software driver's half-to-float read path costs several times as much),
-    // widened here by a conversion the compiler vectorizes: Texture::readInto's scalar one was
-    // about two thirds of the read-back of a splat dab's diffuse rects.
-    GLint drawTarget = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawTarget);
-    texture.bindAsTarget(); // its framebuffer, for reading
-    thread_local std::vector<std::uint16_t> halves;
-    halves.resize(static_cast<std::size_t>(rect.width) * rect.height * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 2);
-    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    glReadPixels(rect.x, rect.y, rect.width, rect.height, GL_RGBA, GL_HALF_FLOAT, halves.data());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawTarget));
-    checkGlError("layer read-back");
-    float* mirror = mirrorData(layer) + at;
-    thread_local std::vector<float> row;
-    row.resize(static_cast<std::size_t>(rect.width) * 4);
-    for (int y = 0; y < rect.height; ++y) {
-      const std::uint16_t* from = halves.data() + static_cast<std::size_t>(y) * rect.width * 4;
-      float* to = mirror + static_cast<std::size_t>(y) * side * c;
-      float* widened = c == 4 ? to : row.data();
-      for (int k = 0; k < rect.width * 4; ++k)
-        widened[k] = widenHalf(from[k]);
-      if (c != 4)
-        for (int x = 0; x < rect.width; ++x)
-          for (int k = 0; k < c; ++k)
-            to[x * c + k] = row[static_cast<std::size_t>(x) * 4 + k];
-    }
-  } else {
-    texture.readInto(toRegion(rect), mirrorData(layer) + at, side, c);
-  }
+  textures_[index(layer)].readInto(toRegion(rect), mirrorData(layer) + at, side, c);
   if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
   if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
 }
