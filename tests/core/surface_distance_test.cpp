@@ -1,5 +1,6 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/surface_distance.h"
+#include "test_meshes.h"
 
 // The closest-point primitives are private to core; the test reaches them by path.
 #include "../../core/src/detail/aabb_tree.h"
@@ -16,32 +17,9 @@ using detail::Vec3d;
 
 namespace {
 
-// An octahedron split `levels` times into four and projected onto the sphere of `radius`
-// around the origin: 8·4^levels triangles, extreme vertices on the axes (bbox [-r, r]³).
+// testing::unitSphere scaled to `radius`: extreme vertices on the axes (bbox [-r, r]³).
 TriangleMesh sphere(int levels, float radius) {
-  TriangleMesh mesh;
-  mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
-    const auto midpoint = [&](std::uint32_t i, std::uint32_t j) {
-      const auto key = std::minmax(i, j);
-      const auto [it, inserted] =
-          midpoints.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
-      if (inserted) mesh.positions.push_back(normalize(mesh.positions[i] + mesh.positions[j]));
-      return it->second;
-    };
-    std::vector<std::array<std::uint32_t, 3>> finer;
-    for (const auto& [a, b, c] : mesh.triangles) {
-      const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-      finer.push_back({a, ab, ca});
-      finer.push_back({ab, b, bc});
-      finer.push_back({ca, bc, c});
-      finer.push_back({ab, bc, ca});
-    }
-    mesh.triangles = std::move(finer);
-  }
+  TriangleMesh mesh = testing::unitSphere(levels);
   for (Vec3f& p : mesh.positions)
     p = p * radius;
   return mesh;
