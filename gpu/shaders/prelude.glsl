@@ -33,7 +33,8 @@ uniform vec3 u_projectionUp;
 // The chosen material's maps (repeat-wrapped) and scales, object units unless noted.
 uniform sampler2D u_materialColour;  // RGBA, alpha = coverage
 uniform sampler2D u_materialSurface; // R height (0.5 = none), G specular, B reflectivity
-uniform float u_materialLod;         // the mip level one sample's footprint needs
+uniform float u_materialLod;         // the mip level one sample's footprint needs, projected
+uniform float u_materialLodUv;       // the same through image coordinates (tiles of u_tileSamples)
 uniform float u_tileSize;    // one tile of the maps on the surface
 uniform float u_tileSamples; // the same, in image samples (uv projection)
 uniform float u_heightScale; // displacement of height 1 - 0.5

@@ -366,23 +366,18 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     glUniform1f(program.uniform("u_tileSize"), tileSize);
     glUniform1f(program.uniform("u_tileSamples"), tileSamples);
     glUniform1f(program.uniform("u_heightScale"), m.heightScale * tileSize);
-    // One mip level for the dab, from the sample spacing at its centre: the maps' texels one
-    // sample spans (a per-texel level would cost a position fetch and a log per texel).
-    const int projection = [&] {
-      for (const BrushParameter& q : manifest.parameters)
-        if (q.id == "projection") {
-          const auto v = dab.parameters.find(q.id);
-          return static_cast<int>(v != dab.parameters.end() ? v->second[0] : q.defaultValue[0]);
-        }
-      return 0;
-    }();
+    // One mip level for the dab per projection, from the sample spacing at its centre: the
+    // maps' texels one sample spans (a per-texel level would cost a position fetch and a log per
+    // texel). The brush picks the one its projection needs.
     const core::GeometryImage& image = document.document().positions;
     const core::Sample c = dab.centreTexel;
     const core::Sample next{c.i < document.size() ? c.i + 1 : c.i - 1, c.j};
     const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
-    const float tilesPerSample = projection == 1 ? 1.0f / tileSamples : spacing / tileSize;
-    glUniform1f(program.uniform("u_materialLod"),
-                std::max(0.0f, std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f))));
+    const auto lod = [&](float tilesPerSample) {
+      return std::max(0.0f, std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f)));
+    };
+    glUniform1f(program.uniform("u_materialLod"), lod(spacing / tileSize));
+    glUniform1f(program.uniform("u_materialLodUv"), lod(1.0f / tileSamples));
     return;
   }
 }

@@ -66,14 +66,14 @@ vec2 splatCoordinates(BrushInput b) {
 vec4 brush(vec4 value, BrushInput b) {
   vec2 c = splatCoordinates(b);
   float w = clamp(b.weight, 0.0, 1.0);
-  vec4 surface = textureLod(u_materialSurface, c, u_materialLod);
+  vec4 surface = textureLod(u_materialSurface, c, u_projection == 1 ? u_materialLodUv : u_materialLod);
   float height = (surface.r - 0.5) * u_relief;
 #if OCTACLAY_LAYER == LAYER_POSITIONS
   float before = texelFetch(u_featureLayer, b.texel, 0).r;
   float after = mix(before, height, w);
   return vec4(value.xyz - u_projectionDir * ((after - before) * u_heightScale), value.w);
 #elif OCTACLAY_LAYER == LAYER_DIFFUSE
-  vec4 colour = textureLod(u_materialColour, c, u_materialLod);
+  vec4 colour = textureLod(u_materialColour, c, u_projection == 1 ? u_materialLodUv : u_materialLod);
   return vec4(mix(value.rgb, colour.rgb, w * colour.a), value.a);
 #else
   return vec4(mix(value.r, height, w), mix(value.g, surface.g, w), mix(value.b, surface.b, w),

@@ -15,8 +15,9 @@ void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, B
   vec2 c = splatCoordinates(b);
   float w = clamp(b.weight, 0.0, 1.0);
   // textureLod with the host's level: implicit derivatives are undefined in a brush pass.
-  vec4 surface = textureLod(u_materialSurface, c, u_materialLod);
-  vec4 colour = textureLod(u_materialColour, c, u_materialLod);
+  float lod = u_projection == 1 ? u_materialLodUv : u_materialLod;
+  vec4 surface = textureLod(u_materialSurface, c, lod);
+  vec4 colour = textureLod(u_materialColour, c, lod);
   float height = (surface.r - 0.5) * u_relief; // signed height detail
   // Displace by the change of height detail this dab makes (feature still holds the old detail),
   // along the projection, like the paint: relief and colour line up seen from the view.
