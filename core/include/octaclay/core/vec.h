@@ -4,6 +4,12 @@
 
 namespace octaclay::core {
 
+/// A 2-vector of floats: image coordinates.
+struct Vec2f {
+  float x = 0, y = 0;
+  friend bool operator==(Vec2f a, Vec2f b) = default;
+};
+
 /// A 3-vector of floats: positions and normals in object space.
 struct Vec3f {
   float x = 0, y = 0, z = 0;
