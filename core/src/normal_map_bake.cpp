@@ -23,10 +23,18 @@ constexpr int kMaxResolution = 8192;
 class FullNormals {
 public:
   explicit FullNormals(const GeometryImage& image)
-      : n_(image.size()), normals_(computeNormals(image)) {
-    // A degenerate neighbourhood has no normal: take the direction from the origin.
-    for (std::size_t k = 0; k < normals_.size(); ++k)
-      if (length(normals_[k]) == 0) normals_[k] = normalize(image.texels()[k].xyz());
+      : n_(image.size()), normals_(image.texelCount()) {
+    const int side = image.side();
+    detail::parallelRows(side, [&](int j0, int j1) {
+      for (int j = j0; j < j1; ++j)
+        for (int i = 0; i < side; ++i) {
+          const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                                static_cast<std::size_t>(i);
+          normals_[k] = vertexNormal(image, {i, j});
+          // A degenerate neighbourhood has no normal: take the direction from the origin.
+          if (length(normals_[k]) == 0) normals_[k] = normalize(image.at(i, j).xyz());
+        }
+    });
   }
 
   Vec3f at(float s, float t) const {
