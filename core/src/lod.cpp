@@ -15,10 +15,16 @@
 namespace octaclay::core {
 namespace {
 
-// Full-resolution samples per LOD cell side the refit reads at most (a stride above 1 skips
-// samples on large footprints: the fit is a mean, 4×4 samples per cell estimate it well).
-constexpr int kRefitSamplesPerCell = 4;
-constexpr int kRefitIterations = 2;
+constexpr int kRefitIterations = 3;
+
+// The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
+// mean over each triangle, a few samples estimate it well).
+int refitStride(int n, std::size_t triangles) {
+  int stride = 1;
+  while (2.0 * double(n) * n / (4.0 * stride * stride) >= 16.0 * double(triangles))
+    stride *= 2;
+  return stride;
+}
 
 // Where a vertex of the octahedral LOD grid may move when collapsed (see seamVeto).
 enum class SeamClass : std::uint8_t { Interior, Cone, Bottom, Top, Left, Right };
@@ -170,9 +176,6 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
   LodMesh lod;
   lod.resampledSize = m;
   lod.mesh = extractMesh(resampled.image);
-  if (options.refitToSurface)
-    detail::refitToSurface(image, index, lod.mesh, std::max(1, (n / m) / kRefitSamplesPerCell),
-                           kRefitIterations);
   const std::vector<VertexCopies> copies = vertexCopies(resampled, index, n);
 
   const bool collapse =
@@ -213,11 +216,14 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     lod.cornerUv.resize(lod.mesh.triangles.size());
     for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
       lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
-    return lod;
+  } else {
+    lod.cornerUv.resize(lod.mesh.triangles.size());
+    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
   }
-  lod.cornerUv.resize(lod.mesh.triangles.size());
-  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-    lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
+  if (options.refitToSurface)
+    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
+                           kRefitIterations);
   return lod;
 }
 
