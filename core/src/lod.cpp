@@ -16,7 +16,7 @@
 namespace octaclay::core {
 namespace {
 
-constexpr int kRefitIterations = 3;
+constexpr int kRefitIterations = 2;
 
 // The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
 // mean over each triangle, a few samples estimate it well).
