@@ -4,6 +4,7 @@
 
 #include "detail/lod_refit.h"
 #include "detail/lod_resampling.h"
+#include "detail/quadric_collapse.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/vertex_collapse.h"
@@ -15,7 +16,7 @@
 namespace octaclay::core {
 namespace {
 
-constexpr int kRefitIterations = 3;
+constexpr int kRefitIterations = 2;
 
 // The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
 // mean over each triangle, a few samples estimate it well).
@@ -65,6 +66,9 @@ void checkOptions(const GeometryImage& image, const LodOptions& options) {
     throw Error(ErrorKind::InvalidArgument,
                 "triangle target " + std::to_string(options.targetTriangles) +
                     " is too small: a closed mesh has at least 4 triangles; ask for more than 4");
+  if (options.oversample < 1 || (options.oversample & (options.oversample - 1)) != 0)
+    throw Error(ErrorKind::InvalidArgument, "oversampling " + std::to_string(options.oversample) +
+                                                " is not a power of two; use 1, 2 or 4");
   if (!(options.maxError >= 0))
     throw Error(ErrorKind::InvalidArgument, "maximum error " + std::to_string(options.maxError) +
                                                 " is negative; use 0 (no bound) or more");
@@ -81,7 +85,7 @@ int chooseSize(int n, const LodOptions& options) {
   while (m < n / 2 &&
          2 * std::size_t(m) * std::size_t(m) < targetTriangleCount(options.targetTriangles))
     m *= 2;
-  return m;
+  return std::min(n / 2, m * options.oversample);
 }
 
 // For each vertex, the image coordinates (x/N, y/N) of its copies (1, 2 or 4).
@@ -195,6 +199,7 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     VertexCollapseOptions collapseOptions;
     collapseOptions.targetTriangles = options.targetTriangles;
     collapseOptions.maxError = options.maxError;
+    collapseOptions.engine = options.collapseEngine;
     collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
     // A seam vertex has a copy on each side of its seam; it may only slide along the seam
     // (into a vertex of the same seam or one of the seam's end cones), so that each triangle
@@ -208,7 +213,11 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
       return cornerCoordinates(tri, copies);
     };
-    CollapsedMesh collapsed = collapseVertices(lod.mesh, collapseOptions);
+    // The resampled mesh is closed and manifold by construction: the fast engine skips
+    // collapseVertices' topology check (a sort as costly as the collapse itself).
+    CollapsedMesh collapsed = options.collapseEngine == CollapseEngine::Fast
+                                  ? detail::quadricCollapse(lod.mesh, collapseOptions)
+                                  : collapseVertices(lod.mesh, collapseOptions);
     lod.mesh = std::move(collapsed.mesh);
     std::vector<VertexCopies> kept(collapsed.inputVertex.size());
     for (std::size_t v = 0; v < kept.size(); ++v)

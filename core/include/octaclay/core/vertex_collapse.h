@@ -12,7 +12,13 @@
 
 namespace octaclay::core {
 
+/// Which implementation collapses: OpenMesh's Decimater (a heap of per-vertex priorities, the
+/// strict order of quadric errors) or our flat-array passes (detail/quadric_collapse.h: the
+/// same checks, collapses in threshold passes, about 20× faster on LOD meshes).
+enum class CollapseEngine { Decimater, Fast };
+
 struct VertexCollapseOptions {
+  CollapseEngine engine = CollapseEngine::Decimater;
   /// Stop at this many triangles (0 = no count target). A closed mesh loses two triangles per
   /// collapse, so the result has the even count nearest above the target unless a bound
   /// below stops it first.
