@@ -136,6 +136,7 @@ Command addLodCommand(CLI::App& app) {
             if (opt->samples == 0)
               throw Error(ErrorKind::InvalidArgument, "--samples must be at least 1");
 
+            const auto commandStart = std::chrono::steady_clock::now();
             core::Document document = core::readDocument(opt->input, {.layers = false});
             core::GeometryImage& full = document.positions;
             const int n = full.size();
@@ -191,6 +192,7 @@ Command addLodCommand(CLI::App& app) {
                 core::extractMesh(full), lod.mesh, {.samplesPerSurface = opt->samples});
             const double measureMs = millisecondsSince(measureStart);
             const std::size_t fileVertices = core::lodVertices(lod).positions.size();
+            const double totalMs = millisecondsSince(commandStart);
 
             if (opt->json) {
               std::cout << nlohmann::json{{"input", opt->input},
@@ -211,6 +213,7 @@ Command addLodCommand(CLI::App& app) {
                                           {"bake_ms", bakeMs},
                                           {"write_ms", writeMs},
                                           {"measure_ms", measureMs},
+                                          {"total_ms", totalMs},
                                           {"rms", distance.rms},
                                           {"hausdorff", distance.hausdorff},
                                           {"psnr", distance.psnr},

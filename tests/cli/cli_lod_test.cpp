@@ -78,8 +78,10 @@ void CliLodTest::objWithMapAndFigures() {
   QCOMPARE(lod["normal_space"].toString(), QString("object"));
   QCOMPARE(lod["map_size"].toInt(), 64);
   QCOMPARE(lod["saliency_computed"].toBool(), true); // a new document has none
-  for (const char* ms : {"ms", "bake_ms", "saliency_ms", "write_ms"})
+  for (const char* ms : {"ms", "bake_ms", "saliency_ms", "write_ms", "measure_ms"})
     QVERIFY2(lod[ms].toDouble() > 0, ms);
+  QVERIFY(lod["total_ms"].toDouble() >=
+          lod["ms"].toDouble() + lod["bake_ms"].toDouble() + lod["measure_ms"].toDouble());
   // A blob at M = 16 is close but not equal to its N = 64 surface.
   const double rms = lod["rms"].toDouble(), hausdorff = lod["hausdorff"].toDouble();
   QVERIFY2(rms > 1e-5 && rms < 0.02, qPrintable(QString::number(rms)));
