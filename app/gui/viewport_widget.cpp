@@ -273,7 +273,7 @@ void ViewportWidget::setShowDiffuse(bool show) {
   update();
 }
 void ViewportWidget::setPreview(int channel) {
-  preview_ = std::clamp(channel, 0, 5);
+  preview_ = std::clamp(channel, 0, 6);
   update();
 }
 

@@ -72,7 +72,8 @@ public:
   void setPaintTarget(int brushLayer);
   void setShowDiffuse(bool show);
   void setShowMask(bool show);
-  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone.
+  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
+  /// 6 saliency (the positions' alpha) as a heat map.
   void setPreview(int channel);
   /// The materials splat brushes can use (engine order) and those that failed to load.
   QStringList materialIds() const;
