@@ -2,9 +2,11 @@
 
 #include "brush_panel.h"
 #include "layers_panel.h"
+#include "lod_generator.h"
 #include "lod_panel.h"
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/lod_export.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
 #include "octaclay/core/mesh_validation.h"
@@ -278,6 +280,50 @@ void MainWindow::connectParts() {
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
   viewport_->setBrushSettings(brushPanel_->settings());
+  connectLod();
+}
+
+void MainWindow::connectLod() {
+  lodGenerator_ = new LodGenerator([this] { return viewport_->positionsSnapshot(); }, this);
+  lodGenerator_->setOptions(lodPanel_->lodOptions());
+  const auto regenerate = [this] {
+    if (lodPanel_->lodShown()) lodGenerator_->request();
+  };
+  connect(viewport_, &ViewportWidget::surfaceChanged, this, regenerate);
+  connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
+    lodGenerator_->setOptions(lodPanel_->lodOptions());
+    updateSaliencyWanted();
+    regenerate();
+  });
+  connect(lodPanel_, &LodPanel::displayChanged, this, [this, regenerate](LodPanel::Display d) {
+    viewport_->setLodDisplay(static_cast<int>(d));
+    updateSaliencyWanted();
+    regenerate();
+  });
+  connect(layersPanel_, &LayersPanel::previewChanged, this, &MainWindow::updateSaliencyWanted);
+  connect(lodPanel_, &LodPanel::exportRequested, this, [this] {
+    const QString path = choose(FileRequest::ExportLod);
+    if (!path.isEmpty()) exportLod(path);
+  });
+  connect(lodGenerator_, &LodGenerator::generated, this,
+          [this](std::shared_ptr<const core::LodMesh> lod, double ms) {
+            lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
+            viewport_->setLodMesh(std::move(lod));
+          });
+  connect(lodGenerator_, &LodGenerator::measured, this,
+          [this](const core::SurfaceDistance& error) { lodPanel_->setLodError(error); });
+  connect(lodGenerator_, &LodGenerator::failed, this, [this](const QString& message) {
+    statusBar()->showMessage(tr("Level of detail: %1").arg(message), 10000);
+  });
+  updateSaliencyWanted();
+}
+
+void MainWindow::updateSaliencyWanted() {
+  constexpr int kSaliencyPreview = 6;
+  const core::ResampleMethod m = lodPanel_->method();
+  const bool salientLod = lodPanel_->lodShown() && (m == core::ResampleMethod::SalientPoint ||
+                                                    m == core::ResampleMethod::SalientAverage);
+  viewport_->setSaliencyWanted(layersPanel_->preview() == kSaliencyPreview || salientLod);
 }
 
 void MainWindow::refreshBrushes() {
@@ -347,6 +393,9 @@ QString MainWindow::choose(FileRequest request) {
   case FileRequest::Export:
     return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
                                         tr("Meshes (*.obj *.glb *.ply *.stl *.off)"));
+  case FileRequest::ExportLod:
+    return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
+                                        tr("Meshes with a normal map (*.obj *.glb)"));
   }
   return {};
 }
@@ -533,6 +582,53 @@ bool MainWindow::exportMesh(const QString& path, int divisor) {
   const QString error = runInBackground(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
     showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::exportLod(const QString& path) {
+  if (!viewport_->hasDocument()) return false;
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix != "obj" && suffix != "glb") {
+    showError(tr("Cannot export the level of detail to %1: use .obj or .glb").arg(path));
+    return false;
+  }
+  viewport_->endStroke();
+  // Salient methods read the saliency in alpha: make sure it is the current surface's.
+  updateSaliencyWanted();
+  const core::ResampleMethod m = lodPanel_->method();
+  if (m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage)
+    viewport_->setSaliencyWanted(true);
+  auto snapshot = viewport_->positionsSnapshot();
+  const core::LodOptions options = lodPanel_->lodOptions();
+  auto control = std::make_shared<TaskControl>();
+  const QString error = runInBackground(
+      tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+      [snapshot, options, path, control] {
+        const core::LodMesh lod = core::generateLod(*snapshot, options);
+        control->fraction = 0.3f;
+        if (control->cancel) return; // between steps: nothing written yet
+        // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
+        // the LOD's triangles dropped.
+        const int resolution = std::clamp(snapshot->size(), 2, 4096);
+        const core::NormalMap map =
+            core::bakeNormalMap(*snapshot, lod, core::NormalMapSpace::Object, resolution);
+        control->fraction = 0.8f;
+        if (control->cancel) return;
+        core::writeLodMesh(lod, map, toPath(path));
+        control->fraction = 1.0f;
+      },
+      control);
+  updateSaliencyWanted();
+  if (!error.isEmpty()) {
+    showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  if (control->cancel) {
+    statusBar()->showMessage(tr("Export cancelled; nothing was written"), 8000);
     return false;
   }
   lastError_.clear();

@@ -3,6 +3,7 @@
 #include "brush_settings.h"
 #include "octaclay/core/document.h"
 #include "octaclay/core/edit_history.h"
+#include "octaclay/core/lod.h"
 #include "octaclay/core/ray_pick.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/material_catalog.h"
@@ -24,6 +25,7 @@ class BrushLibrary;
 class GlContext;
 class GpuDocument;
 class ModelRenderer;
+class SaliencyPass;
 class StrokeSession;
 } // namespace octaclay::gpu
 
@@ -82,6 +84,24 @@ public:
   void setLevelDivisor(int divisor);
   int levelDivisor() const { return divisor_; }
 
+  /// What the view shows: the full resolution (0), the level of detail setLodMesh gave (1, the
+  /// full resolution until there is one), or both side by side (2: full resolution left, LOD
+  /// right, one camera; either half sculpts).
+  void setLodDisplay(int display);
+  int lodDisplay() const { return lodDisplay_; }
+  /// The LOD to show (uploaded at the next frame).
+  void setLodMesh(std::shared_ptr<const core::LodMesh> lod);
+  /// Triangles of the LOD the view draws (0 until one was uploaded).
+  long long lodTriangles() const;
+  /// A copy of the current positions (xyz and saliency), or null without a document.
+  std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
+  /// While wanted (the saliency heat map, a salient LOD), the positions' alpha holds the
+  /// saliency of the current surface: recomputed on the GPU now if stale, and after each stroke,
+  /// undo, redo and new document.
+  void setSaliencyWanted(bool wanted);
+  /// Whether the positions' alpha is the saliency of the current surface.
+  bool saliencyCurrent() const { return !saliencyStale_; }
+
   bool canUndo() const { return history_.canUndo(); }
   bool canRedo() const { return history_.canRedo(); }
   /// Reverts / reapplies the newest stroke on the GPU and the mirror; false if there is none.
@@ -121,6 +141,8 @@ signals:
   void errorOccurred(const QString& message);
   /// A frame showing the document was drawn.
   void framePainted();
+  /// The surface changed (dabs, a finished stroke, undo, redo, a new document).
+  void surfaceChanged();
 
 protected:
   void initializeGL() override;
@@ -155,16 +177,27 @@ private:
   bool stepHistory(bool (core::EditHistory::*can)() const,
                    const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&));
   float diagonal() const;
+  /// Recomputes the saliency if wanted and stale (GL current).
+  void refreshSaliency();
+  /// The part of the widget one model is drawn in (logical pixels): the left half side by side.
+  QRectF modelRect() const;
+  void applyLodDisplay();
   void updateClipping();
   void fail(const QString& message);
 
   vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
   vtkNew<vtkRenderer> renderer_;
   vtkNew<ModelProp> prop_;
+  vtkNew<vtkRenderer> lodRenderer_; // the right half, side by side
+  vtkNew<ModelProp> lodProp_;
 
   std::unique_ptr<gpu::GlContext> context_;
   std::unique_ptr<gpu::BrushLibrary> library_;
   std::unique_ptr<gpu::ModelRenderer> model_;
+  std::unique_ptr<gpu::SaliencyPass> saliency_;
+  bool saliencyWanted_ = false, saliencyStale_ = true;
+  int lodDisplay_ = 0;
+  std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
   std::unique_ptr<gpu::GpuDocument> document_;
   std::optional<core::Document> pending_;
   std::map<std::string, std::string> loadedVariant_; // brush id → what was compiled

@@ -1,0 +1,140 @@
+// The modeller's live level of detail (issue 7 target: N = 1024, 20 k triangles, regeneration
+// ≤ 16 ms): one regeneration step as the modeller runs it after each change of the surface —
+// the snapshot of the positions (the GPU document's mirror, kept equal to the texture after
+// every dab, copied as ViewportWidget::positionsSnapshot does), core::generateLod, and the upload
+// of the LOD mesh for drawing (ModelRenderer::setLodMesh, glFinish) — timed per part on a sphere
+// sculpted by push dabs between iterations; and the GPU saliency pass the salient methods read.
+#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/document.h"
+#include "octaclay/core/lod.h"
+#include "octaclay/core/normals.h"
+#include "octaclay/gpu/brush_library.h"
+#include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gpu_document.h"
+#include "octaclay/gpu/model_renderer.h"
+#include "octaclay/gpu/saliency.h"
+
+#include <benchmark/benchmark.h>
+#include <chrono>
+#include <epoxy/gl.h>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+using namespace octaclay;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct Session {
+  gpu::GlContext context = gpu::GlContext::createHeadless();
+  gpu::BrushLibrary library{{std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/brushes"}};
+  gpu::ModelRenderer renderer;
+  gpu::SaliencyPass saliency;
+  std::map<int, std::unique_ptr<gpu::GpuDocument>> documents;
+
+  // A sphere with saliency, sculpted by a ring of push dabs (made once per N).
+  gpu::GpuDocument& document(int n) {
+    auto& d = documents[n];
+    if (d) return *d;
+    d = std::make_unique<gpu::GpuDocument>(
+        core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
+    for (int k = 0; k < 16; ++k)
+      sculpt(*d, k);
+    saliency.run(*d);
+    glFinish();
+    return *d;
+  }
+
+  void sculpt(gpu::GpuDocument& document, int k) {
+    const int n = document.size();
+    const core::GeometryImage& image = document.document().positions;
+    gpu::Dab dab;
+    dab.centreTexel = {n / 2 + (k % 8) * n / 64, n / 2 + (k % 5) * n / 64};
+    dab.centre = image.at(dab.centreTexel).xyz();
+    dab.centreNormal = core::vertexNormal(image, dab.centreTexel);
+    dab.radius = 0.05f * document.bounds().diagonal();
+    dab.strength = k % 2 ? 0.1f : -0.05f;
+    library.engine().dab(document, "push", dab);
+  }
+};
+
+Session& session() {
+  static Session s;
+  return s;
+}
+
+// range(0): N; range(1): the method (ResampleMethod); range(2): the triangle target.
+void BM_LiveLodRegeneration(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.document(n);
+  core::LodOptions options;
+  options.method = static_cast<core::ResampleMethod>(state.range(1));
+  options.targetTriangles = static_cast<std::size_t>(state.range(2));
+  double snapshotMs = 0, generateMs = 0, uploadMs = 0;
+  std::size_t triangles = 0;
+  int k = 0;
+  for (auto _ : state) {
+    s.sculpt(document, k++); // the stroke goes on between regenerations (not timed)
+    glFinish();
+    const auto start = Clock::now();
+    const auto snapshot =
+        std::make_shared<const core::GeometryImage>(document.document().positions);
+    const double snapshotAt = msSince(start);
+    const core::LodMesh lod = core::generateLod(*snapshot, options);
+    const double generatedAt = msSince(start);
+    s.renderer.setLodMesh(lod);
+    glFinish();
+    const double total = msSince(start);
+    state.SetIterationTime(total / 1e3);
+    snapshotMs += snapshotAt;
+    generateMs += generatedAt - snapshotAt;
+    uploadMs += total - generatedAt;
+    triangles = lod.mesh.triangles.size();
+  }
+  const double runs = static_cast<double>(state.iterations());
+  state.counters["ms"] = (snapshotMs + generateMs + uploadMs) / runs;
+  state.counters["snapshot_ms"] = snapshotMs / runs;
+  state.counters["generate_ms"] = generateMs / runs;
+  state.counters["upload_ms"] = uploadMs / runs;
+  state.counters["triangles"] = static_cast<double>(triangles);
+  state.SetLabel(std::string(core::methodName(options.method)));
+}
+
+void BM_GpuSaliency(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.document(n);
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    s.saliency.run(document);
+    glFinish();
+    state.SetIterationTime(msSince(start) / 1e3);
+  }
+}
+
+constexpr int kSalientPoint = static_cast<int>(core::ResampleMethod::SalientPoint);
+constexpr int kPoint = static_cast<int>(core::ResampleMethod::Point);
+
+} // namespace
+
+BENCHMARK(BM_LiveLodRegeneration)
+    ->Args({1024, kSalientPoint, 20000})
+    ->Args({1024, kPoint, 20000})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(20);
+BENCHMARK(BM_GpuSaliency)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(2);
+
+BENCHMARK_MAIN();
