@@ -6,11 +6,10 @@
 // carries the image coordinates its vertex came from, so a normal map baked from the
 // full-resolution image textures it.
 
-#include <octaclay/core/geometry_image.h>
-#include <octaclay/core/triangle_mesh.h>
-
 #include <array>
 #include <cstddef>
+#include <octaclay/core/geometry_image.h>
+#include <octaclay/core/triangle_mesh.h>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -41,6 +40,10 @@ struct LodOptions {
   double maxError = 0;
   /// A collapse that turns any triangle's normal by more than this is refused.
   float maxNormalTurnDegrees = 60;
+  /// Move each resampled vertex along its normal to fit the full-resolution surface in the
+  /// least-squares sense before collapsing (detail: two Jacobi steps over the samples of
+  /// each LOD cell). Off: vertices are exactly the resampled samples.
+  bool refitToSurface = true;
 };
 
 struct LodMesh {

@@ -1,0 +1,60 @@
+#pragma once
+
+// Vertex collapse (issue 7, thesis 4.4): OpenMesh's Decimater with quadric priorities, run on
+// a closed genus-0 mesh (in practice the already small resampled LOD mesh).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <octaclay/core/triangle_mesh.h>
+#include <vector>
+
+namespace octaclay::core {
+
+struct VertexCollapseOptions {
+  /// Stop at this many triangles (0 = no count target). A closed mesh loses two triangles per
+  /// collapse, so the result has the even count nearest above the target unless a bound
+  /// below stops it first.
+  std::size_t targetTriangles = 0;
+  /// Refuse collapses whose quadric error (Garland–Heckbert, sum of squared distances to the
+  /// planes merged into the vertex) exceeds (maxError × bounding-box diagonal)²; 0 = no bound.
+  double maxError = 0;
+  /// Refuse a collapse that turns any surviving triangle's normal by more than this
+  /// (OpenMesh ModNormalFlipping) or lets the normal cone of the original triangles merged
+  /// into a triangle open wider than this (ModNormalDeviation): no result triangle deviates
+  /// more than this from the original triangles it stands for.
+  float maxNormalTurnDegrees = 60;
+  /// Refuse collapses that make a triangle with a longest-edge / height ratio above this
+  /// (OpenMesh ModAspectRatio); 0 = no bound.
+  float maxAspectRatio = 10;
+  /// When set, a collapse of vertex `from` into its neighbour `to` (indices into the input)
+  /// is refused unless allowCollapse(from, to) is true.
+  std::function<bool(std::uint32_t from, std::uint32_t to)> allowCollapse;
+  /// When set, the texture coordinates of a triangle's corners (vertex indices of the input):
+  /// a collapse is refused when any triangle it changes would get corner coordinates that are
+  /// not counter-clockwise (so a texture never folds over).
+  std::function<std::array<Vec2f, 3>(const std::array<std::uint32_t, 3>& triangle)>
+      cornerCoordinates;
+};
+
+struct CollapsedMesh {
+  /// Closed, manifold, genus 0 when the input is; counter-clockwise as the input. Vertices
+  /// keep their input positions (halfedge collapses move no vertex).
+  TriangleMesh mesh;
+  /// For each vertex of mesh, its index in the input.
+  std::vector<std::uint32_t> inputVertex;
+  /// For each triangle of mesh, the input triangle it is (with one or more corners moved by
+  /// collapses): its normal is within maxNormalTurnDegrees of that triangle's.
+  std::vector<std::uint32_t> inputTriangle;
+};
+
+/// Collapses vertices by increasing quadric error until the target or the error bound is met
+/// or no legal collapse is left. Collapses that would break the mesh's manifoldness or
+/// genus (OpenMesh's link condition) are refused; so is any collapse into a tetrahedron.
+/// Throws Error(InvalidArgument) when targetTriangles is 1 … 4, maxError < 0 or
+/// maxNormalTurnDegrees is not in (0, 180], Error(InvalidInput) when the mesh is not closed
+/// and edge-manifold.
+CollapsedMesh collapseVertices(const TriangleMesh& mesh, const VertexCollapseOptions& options);
+
+} // namespace octaclay::core

@@ -1,0 +1,224 @@
+// generateLod (lod.h): resample, refit to the full surface, collapse, and give every triangle
+// corner the image coordinates of its vertex's copy on the triangle's side of the seams.
+#include "octaclay/core/lod.h"
+
+#include "detail/lod_refit.h"
+#include "detail/lod_resampling.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/vertex_collapse.h"
+#include "octaclay/core/vertex_index.h"
+
+#include <algorithm>
+#include <string>
+
+namespace octaclay::core {
+namespace {
+
+// Full-resolution samples per LOD cell side the refit reads at most (a stride above 1 skips
+// samples on large footprints: the fit is a mean, 4×4 samples per cell estimate it well).
+constexpr int kRefitSamplesPerCell = 4;
+constexpr int kRefitIterations = 2;
+
+// Where a vertex of the octahedral LOD grid may move when collapsed (see seamVeto).
+enum class SeamClass : std::uint8_t { Interior, Cone, Bottom, Top, Left, Right };
+
+SeamClass seamClass(int m, Sample s) {
+  if (s == Sample{0, 0} || s == Sample{m / 2, 0} || s == Sample{0, m / 2} ||
+      s == Sample{m, m / 2} || s == Sample{m / 2, m})
+    return SeamClass::Cone;
+  if (s.j == 0) return SeamClass::Bottom;
+  if (s.j == m) return SeamClass::Top;
+  if (s.i == 0) return SeamClass::Left;
+  if (s.i == m) return SeamClass::Right;
+  return SeamClass::Interior;
+}
+
+// The cone point ending seam c besides the corner (0, 0).
+Sample seamMidpoint(int m, SeamClass c) {
+  switch (c) {
+  case SeamClass::Bottom:
+    return {m / 2, 0};
+  case SeamClass::Top:
+    return {m / 2, m};
+  case SeamClass::Left:
+    return {0, m / 2};
+  default:
+    return {m, m / 2};
+  }
+}
+
+std::size_t targetTriangleCount(std::size_t target) {
+  return target;
+}
+
+void checkOptions(const GeometryImage& image, const LodOptions& options) {
+  requireValidSize(image.size());
+  if (options.size != 0) detail::requireLodSize(image.size(), options.size);
+  if (options.targetTriangles > 0 && options.targetTriangles <= 4)
+    throw Error(ErrorKind::InvalidArgument,
+                "triangle target " + std::to_string(options.targetTriangles) +
+                    " is too small: a closed mesh has at least 4 triangles; ask for more than 4");
+  if (!(options.maxError >= 0))
+    throw Error(ErrorKind::InvalidArgument, "maximum error " + std::to_string(options.maxError) +
+                                                " is negative; use 0 (no bound) or more");
+  if (!(options.maxNormalTurnDegrees > 0 && options.maxNormalTurnDegrees <= 180))
+    throw Error(ErrorKind::InvalidArgument, "maximum normal turn " +
+                                                std::to_string(options.maxNormalTurnDegrees) +
+                                                " degrees is outside (0, 180]");
+}
+
+int chooseSize(int n, const LodOptions& options) {
+  if (options.size != 0) return options.size;
+  if (options.targetTriangles == 0) return n / 2;
+  int m = 2;
+  while (m < n / 2 &&
+         2 * std::size_t(m) * std::size_t(m) < targetTriangleCount(options.targetTriangles))
+    m *= 2;
+  return m;
+}
+
+// For each vertex, the image coordinates (x/N, y/N) of its copies (1, 2 or 4).
+struct VertexCopies {
+  std::array<Vec2f, 4> uv;
+  int count = 0;
+};
+
+std::vector<VertexCopies> vertexCopies(const detail::ResampledImage& resampled,
+                                       const VertexIndex& index, int n) {
+  const int m = index.size(), side = m + 1;
+  std::vector<VertexCopies> copies(index.vertexCount());
+  const float inv = 1.0f / float(n);
+  const auto uvAt = [&](Sample s) {
+    const Vec2f src = resampled.source[static_cast<std::size_t>(s.j) * side + s.i];
+    return Vec2f{src.x * inv, src.y * inv};
+  };
+  std::array<Sample, 4> same;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) {
+      const Sample s{i, j};
+      if (canonical(m, s) != s) continue;
+      VertexCopies& c = copies[index.at(i, j)];
+      c.count = identifiedSamples(m, s, same);
+      for (int k = 0; k < c.count; ++k)
+        c.uv[k] = uvAt(same[k]);
+    }
+  return copies;
+}
+
+float squaredDistance(Vec2f a, Vec2f b) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+}
+
+// Per triangle, the copies of its corners that lie together: the combination with the
+// smallest perimeter² sum in the image.
+std::array<Vec2f, 3> cornerCoordinates(const std::array<std::uint32_t, 3>& tri,
+                                       const std::vector<VertexCopies>& copies) {
+  const VertexCopies &a = copies[tri[0]], &b = copies[tri[1]], &c = copies[tri[2]];
+  std::array<Vec2f, 3> best{a.uv[0], b.uv[0], c.uv[0]};
+  if (a.count == 1 && b.count == 1 && c.count == 1) return best;
+  float bestSpread = -1;
+  for (int ia = 0; ia < a.count; ++ia)
+    for (int ib = 0; ib < b.count; ++ib)
+      for (int ic = 0; ic < c.count; ++ic) {
+        const float spread = squaredDistance(a.uv[ia], b.uv[ib]) +
+                             squaredDistance(b.uv[ib], c.uv[ic]) +
+                             squaredDistance(c.uv[ic], a.uv[ia]);
+        if (bestSpread < 0 || spread < bestSpread) {
+          bestSpread = spread;
+          best = {a.uv[ia], b.uv[ib], c.uv[ic]};
+        }
+      }
+  return best;
+}
+
+} // namespace
+
+std::string_view methodName(ResampleMethod method) {
+  switch (method) {
+  case ResampleMethod::Point:
+    return "point";
+  case ResampleMethod::Average:
+    return "average";
+  case ResampleMethod::SalientAverage:
+    return "salient-average";
+  case ResampleMethod::SalientPoint:
+    return "salient-point";
+  }
+  return "salient-point";
+}
+
+std::optional<ResampleMethod> parseResampleMethod(std::string_view name) {
+  for (const ResampleMethod m : {ResampleMethod::Point, ResampleMethod::Average,
+                                 ResampleMethod::SalientAverage, ResampleMethod::SalientPoint})
+    if (methodName(m) == name) return m;
+  return std::nullopt;
+}
+
+GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method) {
+  requireValidSize(image.size());
+  return detail::resampleWithSources(image, m, method).image;
+}
+
+LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
+  checkOptions(image, options);
+  const int n = image.size();
+  const int m = chooseSize(n, options);
+  const detail::ResampledImage resampled = detail::resampleWithSources(image, m, options.method);
+  const VertexIndex index(m);
+
+  LodMesh lod;
+  lod.resampledSize = m;
+  lod.mesh = extractMesh(resampled.image);
+  if (options.refitToSurface)
+    detail::refitToSurface(image, index, lod.mesh, std::max(1, (n / m) / kRefitSamplesPerCell),
+                           kRefitIterations);
+  const std::vector<VertexCopies> copies = vertexCopies(resampled, index, n);
+
+  const bool collapse =
+      (options.targetTriangles > 0 && options.targetTriangles < lod.mesh.triangles.size()) ||
+      options.maxError > 0;
+  if (collapse) {
+    std::vector<SeamClass> classes(index.vertexCount());
+    for (const Sample s : index.canonicalSamples())
+      classes[index.at(s.i, s.j)] = seamClass(m, s);
+    const std::uint32_t corner = index.at(0, 0);
+    std::array<std::uint32_t, 6> midpoint{};
+    for (const SeamClass c :
+         {SeamClass::Bottom, SeamClass::Top, SeamClass::Left, SeamClass::Right}) {
+      const Sample s = seamMidpoint(m, c);
+      midpoint[static_cast<int>(c)] = index.at(s.i, s.j);
+    }
+    VertexCollapseOptions collapseOptions;
+    collapseOptions.targetTriangles = options.targetTriangles;
+    collapseOptions.maxError = options.maxError;
+    collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
+    // A seam vertex has a copy on each side of its seam; it may only slide along the seam
+    // (into a vertex of the same seam or one of the seam's end cones), so that each triangle
+    // keeps corners on one side. Cones stay. Interior vertices move freely.
+    collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
+      const SeamClass c = classes[from];
+      if (c == SeamClass::Interior) return true;
+      if (c == SeamClass::Cone) return false;
+      return classes[to] == c || to == corner || to == midpoint[static_cast<int>(c)];
+    };
+    collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
+      return cornerCoordinates(tri, copies);
+    };
+    CollapsedMesh collapsed = collapseVertices(lod.mesh, collapseOptions);
+    lod.mesh = std::move(collapsed.mesh);
+    std::vector<VertexCopies> kept(collapsed.inputVertex.size());
+    for (std::size_t v = 0; v < kept.size(); ++v)
+      kept[v] = copies[collapsed.inputVertex[v]];
+    lod.cornerUv.resize(lod.mesh.triangles.size());
+    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
+    return lod;
+  }
+  lod.cornerUv.resize(lod.mesh.triangles.size());
+  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+    lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
+  return lod;
+}
+
+} // namespace octaclay::core
