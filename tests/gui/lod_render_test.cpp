@@ -9,7 +9,9 @@
 #include "octaclay/core/base_shapes.h"
 #include "viewport_widget.h"
 
+#include <QFile>
 #include <QImage>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -47,6 +49,7 @@ private slots:
   void heatMapIsRedOnASharpBumpAndBlueOnSmoothClay();
   void sideBySideShowsTheFullResolutionAndTheLod();
   void strokeUpdatesTheLiveLodAtItsTarget();
+  void exportWritesTheLodWithItsNormalMap();
 
 private:
   std::unique_ptr<MainWindow> makeWindow();
@@ -228,6 +231,33 @@ void LodRenderTest::strokeUpdatesTheLiveLodAtItsTarget() {
   };
   const float moved = std::abs(frontmost(*after) - frontmost(*before));
   QVERIFY2(moved > 0.01f, qPrintable(QString::number(moved)));
+}
+
+void LodRenderTest::exportWritesTheLodWithItsNormalMap() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Blob, 128, true));
+  window_->lodPanel()->setTargetTriangles(1000);
+  const QString obj = dir_.filePath("blob_lod.obj");
+  window_->setFileChooser([&](MainWindow::FileRequest request) {
+    return request == MainWindow::FileRequest::ExportLod ? obj : QString();
+  });
+  window_->lodPanel()->findChild<QPushButton*>(QStringLiteral("exportLod"))->click();
+  QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
+  // The OBJ's faces are the LOD's (within the collapse's 1 %), and its map lies beside it.
+  QFile file(obj);
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  int faces = 0;
+  while (!file.atEnd())
+    faces += file.readLine().startsWith("f ");
+  QVERIFY2(faces <= 1000 && faces >= 990, qPrintable(QString::number(faces)));
+  QVERIFY(QFileInfo::exists(dir_.filePath("blob_lod.mtl")));
+  const QImage map(dir_.filePath("blob_lod_normal.png"));
+  QCOMPARE(map.width(), 128);
+  // A bad extension is refused with a message, writing nothing.
+  QVERIFY(!window_->exportLod(dir_.filePath("blob_lod.ply")));
+  QVERIFY(window_->lastError().contains(".obj or .glb"));
+  QVERIFY(!QFileInfo::exists(dir_.filePath("blob_lod.ply")));
 }
 
 QTEST_MAIN(LodRenderTest)
