@@ -69,7 +69,9 @@ Session& session() {
   return s;
 }
 
-// range(0): N; range(1): the method (ResampleMethod); range(2): the triangle target.
+// range(0): N; range(1): the method (ResampleMethod); range(2): the triangle target (0: the
+// resampled grid of size range(4) alone, no collapse); range(3): 1 refits the resampled
+// vertices to the surface (generateLod's default), 0 does not.
 void BM_LiveLodRegeneration(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
@@ -77,6 +79,8 @@ void BM_LiveLodRegeneration(benchmark::State& state) {
   core::LodOptions options;
   options.method = static_cast<core::ResampleMethod>(state.range(1));
   options.targetTriangles = static_cast<std::size_t>(state.range(2));
+  options.refitToSurface = state.range(3) != 0;
+  options.size = static_cast<int>(state.range(4));
   double snapshotMs = 0, generateMs = 0, uploadMs = 0;
   std::size_t triangles = 0;
   int k = 0;
@@ -104,7 +108,8 @@ void BM_LiveLodRegeneration(benchmark::State& state) {
   state.counters["generate_ms"] = generateMs / runs;
   state.counters["upload_ms"] = uploadMs / runs;
   state.counters["triangles"] = static_cast<double>(triangles);
-  state.SetLabel(std::string(core::methodName(options.method)));
+  state.SetLabel(std::string(core::methodName(options.method)) +
+                 (options.refitToSurface ? ", refit" : ""));
 }
 
 void BM_GpuSaliency(benchmark::State& state) {
@@ -125,8 +130,12 @@ constexpr int kPoint = static_cast<int>(core::ResampleMethod::Point);
 } // namespace
 
 BENCHMARK(BM_LiveLodRegeneration)
-    ->Args({1024, kSalientPoint, 20000})
-    ->Args({1024, kPoint, 20000})
+    ->Args({1024, kSalientPoint, 20000, 1, 0})
+    ->Args({1024, kPoint, 20000, 1, 0})
+    ->Args({1024, kSalientPoint, 20000, 0, 0})
+    ->Args({1024, kSalientPoint, 0, 1, 128})
+    ->Args({1024, kSalientPoint, 0, 0, 128})
+    ->Args({1024, kSalientPoint, 0, 0, 64})
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->Iterations(20);
