@@ -59,12 +59,22 @@ const Texture& SaliencyPass::blurred(float sigma, int side, int n) {
   if (found != blurred_.end()) return found->second;
   Texture& out = blurred_.emplace(sigma, Texture(side, side, TextureFormat::R32f)).first->second;
   const Region all{0, 0, side, side};
+  // The truncated (⌈2σ⌉ taps, at least 1) kernel, normalised as the CPU reference does.
+  const int taps = std::max(1, static_cast<int>(std::ceil(2 * sigma)));
+  std::vector<float> kernel(static_cast<std::size_t>(2 * taps + 1));
+  float total = 0;
+  for (int d = -taps; d <= taps; ++d)
+    total += kernel[static_cast<std::size_t>(d + taps)] =
+        std::exp(-0.5f * float(d * d) / (sigma * sigma));
+  for (float& w : kernel)
+    w /= total;
+  if (!kernel_.id()) kernel_ = Buffer::create();
+  kernel_.upload(std::as_bytes(std::span(kernel)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, kernel_.id());
   blurProgram_.use();
   glUniform1i(blurProgram_.uniform("u_size"), n);
   glUniform1i(blurProgram_.uniform("u_source"), 0);
-  glUniform1f(blurProgram_.uniform("u_sigma"), sigma);
-  glUniform1i(blurProgram_.uniform("u_taps"),
-              std::max(1, static_cast<int>(std::ceil(2.0f * sigma))));
+  glUniform1i(blurProgram_.uniform("u_taps"), taps);
   sized(horizontal_, side, TextureFormat::R32f).bindAsTarget();
   bindTexture(0, curvature_);
   glUniform2i(blurProgram_.uniform("u_direction"), 1, 0);
@@ -73,6 +83,7 @@ const Texture& SaliencyPass::blurred(float sigma, int side, int n) {
   bindTexture(0, horizontal_);
   glUniform2i(blurProgram_.uniform("u_direction"), 0, 1);
   rectPass_.draw(std::span(&all, 1), side, side);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
   return out;
 }
 

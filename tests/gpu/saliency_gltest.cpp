@@ -119,10 +119,9 @@ core::GeometryImage SaliencyTest::runOnGpu(const core::GeometryImage& image) {
   return mirror;
 }
 
-// The GPU sums the same terms in float as the CPU, but its exp() and its kernel normalisation
-// (a division at the end instead of pre-divided weights) round differently: measured ~1e-6 of
-// the [0, 1] range; 1e-4 leaves room for other drivers and is still far below any real change
-// (the bumps stand out by 0.2).
+// The GPU sums the same terms in float with the same kernel as the CPU, but its normals and
+// fused multiply-adds round differently: measured ~1e-6 of the [0, 1] range; 1e-4 leaves room
+// for other drivers and is still far below any real change (the bumps stand out by 0.2).
 void SaliencyTest::bumpySphereMatchesTheCpuReference() {
   const core::GeometryImage image = bumpySphere(128);
   core::GeometryImage reference = image;

@@ -35,6 +35,7 @@ private:
 
   Program normalProgram_, curvatureProgram_, blurProgram_, combineProgram_, seamProgram_;
   RectPass rectPass_;
+  Buffer kernel_; // the blur's weights (shader storage, binding 1)
   Texture normals_, curvature_, horizontal_;
   std::map<float, Texture> blurred_;
   std::vector<Texture> sums_;
