@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <meshoptimizer.h>
 
 using namespace octaclay;
 
@@ -112,6 +113,50 @@ void BM_LiveLodRegeneration(benchmark::State& state) {
                  (options.refitToSurface ? ", refit" : ""));
 }
 
+// For comparison (not what the modeller runs): the resampled grid collapsed to the target by
+// meshopt_simplify instead of generateLod's OpenMesh vertex collapse (no seam vetoes, so its
+// corners' image coordinates would still need choosing): what a faster collapse would cost.
+void BM_LiveLodMeshoptCollapse(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.document(n);
+  core::LodOptions options;
+  options.method = core::ResampleMethod::SalientPoint;
+  options.refitToSurface = false;
+  options.size = static_cast<int>(state.range(1));
+  const std::size_t target = static_cast<std::size_t>(state.range(2));
+  double collapseMs = 0;
+  std::size_t triangles = 0;
+  int k = 0;
+  for (auto _ : state) {
+    s.sculpt(document, k++);
+    glFinish();
+    const auto start = Clock::now();
+    const auto snapshot =
+        std::make_shared<const core::GeometryImage>(document.document().positions);
+    core::LodMesh lod = core::generateLod(*snapshot, options);
+    const auto collapseStart = Clock::now();
+    std::vector<unsigned> indices;
+    for (const auto& t : lod.mesh.triangles)
+      indices.insert(indices.end(), t.begin(), t.end());
+    std::vector<unsigned> simplified(indices.size());
+    simplified.resize(meshopt_simplify(simplified.data(), indices.data(), indices.size(),
+                                       &lod.mesh.positions[0].x, lod.mesh.positions.size(),
+                                       sizeof(core::Vec3f), target * 3, 0.05f, 0, nullptr));
+    lod.mesh.triangles.resize(simplified.size() / 3);
+    lod.cornerUv.resize(simplified.size() / 3);
+    for (std::size_t t = 0; t < simplified.size() / 3; ++t)
+      lod.mesh.triangles[t] = {simplified[3 * t], simplified[3 * t + 1], simplified[3 * t + 2]};
+    collapseMs += msSince(collapseStart);
+    s.renderer.setLodMesh(lod);
+    glFinish();
+    state.SetIterationTime(msSince(start) / 1e3);
+    triangles = lod.mesh.triangles.size();
+  }
+  state.counters["collapse_ms"] = collapseMs / static_cast<double>(state.iterations());
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+
 void BM_GpuSaliency(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
@@ -136,6 +181,11 @@ BENCHMARK(BM_LiveLodRegeneration)
     ->Args({1024, kSalientPoint, 0, 1, 128})
     ->Args({1024, kSalientPoint, 0, 0, 128})
     ->Args({1024, kSalientPoint, 0, 0, 64})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(20);
+BENCHMARK(BM_LiveLodMeshoptCollapse)
+    ->Args({1024, 128, 20000})
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->Iterations(20);
