@@ -20,6 +20,7 @@
 #include <QSurfaceFormat>
 #include <QTabletEvent>
 #include <QWheelEvent>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -98,6 +99,8 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->SetBackgroundAlpha(1.0); // Qt composes the widget with its alpha
   renderer_->AddViewProp(prop_);
   prop_->draw = [this](vtkRenderer* r) { drawModel(r); };
+  connect(&saliencyJob_, &QFutureWatcher<std::vector<float>>::finished, this,
+          &ViewportWidget::cpuSaliencyFinished);
   // Side by side: the LOD in the right half, seen through the same camera.
   lodRenderer_->SetBackground(0.27, 0.29, 0.33);
   lodRenderer_->SetBackgroundAlpha(1.0);
@@ -108,6 +111,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 ViewportWidget::~ViewportWidget() {
+  saliencyJob_.waitForFinished();
   makeCurrent();
   stroke_.reset();
   document_.reset();
@@ -155,6 +159,10 @@ void ViewportWidget::initializeGL() {
     library_ = std::make_unique<gpu::BrushLibrary>(
         gpu::BrushCatalog::defaultSearchPath(OCTACLAY_SOURCE_BRUSHES));
     model_ = std::make_unique<gpu::ModelRenderer>();
+    const QString renderer = QString::fromLatin1(
+        reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER)));
+    saliencyOnCpu_ = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                     renderer.contains("SwiftShader");
     materials_.scan(gpu::MaterialCatalog::defaultSearchPath(
         std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "materials"));
     library_->engine().setMaterials(materials_);
@@ -229,7 +237,7 @@ bool ViewportWidget::uploadDocument(core::Document document) {
     return false;
   }
   history_.clear();
-  saliencyStale_ = true;
+  surfaceEdited();
   refreshSaliency();
   resetCamera();
   emit statsChanged();
@@ -323,14 +331,59 @@ void ViewportWidget::setSaliencyWanted(bool wanted) {
   emit surfaceChanged();
 }
 
+void ViewportWidget::surfaceEdited() {
+  saliencyStale_ = true;
+  ++surfaceVersion_;
+}
+
 void ViewportWidget::refreshSaliency() {
   if (!saliencyWanted_ || !saliencyStale_ || !document_ || !model_) return;
+  if (saliencyOnCpu_) {
+    if (saliencyJob_.isRunning()) return; // cpuSaliencyFinished starts the next one
+    auto image = std::make_shared<core::GeometryImage>(document_->document().positions);
+    saliencyJobVersion_ = surfaceVersion_;
+    saliencyJob_.setFuture(QtConcurrent::run([image] {
+      std::vector<float> values;
+      try {
+        core::computeSaliency(*image);
+      } catch (const std::exception&) {
+        return values; // empty: nothing written, the saliency stays stale
+      }
+      values.reserve(image->texelCount());
+      for (const core::Vec4f& t : image->texels())
+        values.push_back(t.w);
+      return values;
+    }));
+    return;
+  }
   try {
     if (!saliency_) saliency_ = std::make_unique<gpu::SaliencyPass>();
     saliency_->run(*document_);
     saliencyStale_ = false;
   } catch (const std::exception& e) {
     fail(QStringLiteral("Could not compute the saliency: %1").arg(e.what()));
+  }
+}
+
+void ViewportWidget::cpuSaliencyFinished() {
+  if (!document_) return;
+  const std::vector<float> values = saliencyJob_.result();
+  makeCurrent();
+  if (saliencyJobVersion_ == surfaceVersion_ &&
+      values.size() == document_->document().positions.texelCount()) {
+    try {
+      document_->writeSaliency(values);
+      saliencyStale_ = false;
+    } catch (const std::exception& e) {
+      fail(QStringLiteral("Could not store the saliency: %1").arg(e.what()));
+    }
+  } else if (saliencyJobVersion_ != surfaceVersion_ && !stroke_) {
+    refreshSaliency(); // the surface changed meanwhile (a stroke's end starts its own)
+  }
+  doneCurrent();
+  if (!saliencyStale_) {
+    update();
+    emit surfaceChanged(); // a salient LOD is regenerated with it
   }
 }
 
@@ -652,7 +705,7 @@ int ViewportWidget::runQueuedDabs() {
         strength *= pressure;
       made += stroke_->session->moveTo(sample, radius, stroke_->sign * strength, 1.0f);
     }
-    if (made > 0) saliencyStale_ = true;
+    if (made > 0) surfaceEdited();
     refreshNormalsAround(stroke_->session->takeTouched());
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));
@@ -723,7 +776,7 @@ bool ViewportWidget::stepHistory(
     s = (history_.*step)(gpu::undoApplier(*document_));
     if (s) {
       refreshAfterHistory(*s);
-      saliencyStale_ = true;
+      surfaceEdited();
       refreshSaliency();
     }
   } catch (const std::exception& e) {

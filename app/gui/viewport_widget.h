@@ -10,7 +10,9 @@
 #include "stroke_stabilizer.h"
 
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QOpenGLWidget>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -96,11 +98,18 @@ public:
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
   /// While wanted (the saliency heat map, a salient LOD), the positions' alpha holds the
-  /// saliency of the current surface: recomputed on the GPU now if stale, and after each stroke,
-  /// undo, redo and new document.
+  /// saliency of the current surface: recomputed if stale, and after each stroke, undo, redo and
+  /// new document — on the GPU (gpu::SaliencyPass) at once, or with the CPU reference on a
+  /// worker thread (see setSaliencyOnCpu), surfaceChanged() telling when it is in.
   void setSaliencyWanted(bool wanted);
   /// Whether the positions' alpha is the saliency of the current surface.
   bool saliencyCurrent() const { return !saliencyStale_; }
+  /// Computes the saliency with core::computeSaliency off the GUI thread instead of on the GPU.
+  /// On by default where GL is a software rasterizer (llvmpipe): there the GPU pass is CPU work
+  /// that would hold the GUI thread for seconds at N = 1024, the threaded CPU reference less and
+  /// in the background.
+  void setSaliencyOnCpu(bool onCpu) { saliencyOnCpu_ = onCpu; }
+  bool saliencyOnCpu() const { return saliencyOnCpu_; }
 
   bool canUndo() const { return history_.canUndo(); }
   bool canRedo() const { return history_.canRedo(); }
@@ -177,8 +186,11 @@ private:
   bool stepHistory(bool (core::EditHistory::*can)() const,
                    const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&));
   float diagonal() const;
-  /// Recomputes the saliency if wanted and stale (GL current).
+  /// Recomputes the saliency if wanted and stale (GL current), or starts the CPU job.
   void refreshSaliency();
+  void cpuSaliencyFinished();
+  /// The surface changed: the saliency is stale.
+  void surfaceEdited();
   /// The part of the widget one model is drawn in (logical pixels): the left half side by side.
   QRectF modelRect() const;
   void applyLodDisplay();
@@ -195,7 +207,9 @@ private:
   std::unique_ptr<gpu::BrushLibrary> library_;
   std::unique_ptr<gpu::ModelRenderer> model_;
   std::unique_ptr<gpu::SaliencyPass> saliency_;
-  bool saliencyWanted_ = false, saliencyStale_ = true;
+  bool saliencyWanted_ = false, saliencyStale_ = true, saliencyOnCpu_ = false;
+  std::uint64_t surfaceVersion_ = 0, saliencyJobVersion_ = 0; // the job's result fits its version
+  QFutureWatcher<std::vector<float>> saliencyJob_;
   int lodDisplay_ = 0;
   std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
   std::unique_ptr<gpu::GpuDocument> document_;

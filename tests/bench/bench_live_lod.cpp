@@ -169,6 +169,17 @@ void BM_GpuSaliency(benchmark::State& state) {
   }
 }
 
+// The CPU reference on the same image, for comparison with the GPU pass.
+void BM_CpuSaliency(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  core::GeometryImage image = session().document(n).document().positions;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    core::computeSaliency(image);
+    state.SetIterationTime(msSince(start) / 1e3);
+  }
+}
+
 constexpr int kSalientPoint = static_cast<int>(core::ResampleMethod::SalientPoint);
 constexpr int kPoint = static_cast<int>(core::ResampleMethod::Point);
 
@@ -190,6 +201,13 @@ BENCHMARK(BM_LiveLodMeshoptCollapse)
     ->UseManualTime()
     ->Iterations(20);
 BENCHMARK(BM_GpuSaliency)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(2);
+
+BENCHMARK(BM_CpuSaliency)
     ->Arg(256)
     ->Arg(1024)
     ->Unit(benchmark::kMillisecond)

@@ -113,8 +113,9 @@ void LodRenderTest::heatMapIsRedOnASharpBumpAndBlueOnSmoothClay() {
     QVERIFY(view->stroking());
     view->endStroke();
   }
+  view->setSaliencyOnCpu(false); // the GPU pass, whatever the GL (llvmpipe takes the CPU's)
   window_->layersPanel()->setPreview(6);
-  QVERIFY(view->saliencyCurrent()); // computed when the heat map was asked for
+  QVERIFY(view->saliencyCurrent()); // computed on the GPU when the heat map was asked for
   hideBrushOutline(view);
   const QImage image = view->grabFramebuffer();
   // The reddest pixel within 25 px of the bump (its rim and top are where the normal turns).
@@ -213,6 +214,9 @@ void LodRenderTest::strokeUpdatesTheLiveLodAtItsTarget() {
   for (int k = 1; k <= 10; ++k)
     QTest::mouseMove(view, (from + (to - from) * (k / 10.0)).toPoint());
   QTest::mouseRelease(view, Qt::LeftButton, {}, to.toPoint());
+  // salient-point reads the saliency: it follows the stroke (on a worker under llvmpipe), and
+  // the LOD is made again with it.
+  QVERIFY(QTest::qWaitFor([&] { return view->saliencyCurrent(); }, 30000));
   QVERIFY(waitForLod(generated, count));
   const std::shared_ptr<const core::LodMesh> after = window_->lodGenerator()->lod();
   QVERIFY(after && after != before);
