@@ -232,6 +232,8 @@ bool ViewportWidget::uploadDocument(core::Document document) {
     divisor_ = std::min(divisor_, std::max(1, n / 2));
     model_->setLevel(n, divisor_);
     model_->refreshAllNormals(*document_);
+    model_->setLodMesh({}); // the previous document's LOD is not this one's
+    pendingLod_.reset();
   } catch (const std::exception& e) {
     fail(QStringLiteral("Could not load the model onto the GPU: %1").arg(e.what()));
     return false;
@@ -443,6 +445,7 @@ ViewportStats ViewportWidget::stats() const {
     s.n = document().size();
     s.fullTriangles = 2LL * s.n * s.n;
     s.displayedTriangles = model_ && document_ ? model_->displayedTriangles() : 0;
+    if (lodDisplay_ == 1 && lodTriangles() > 0) s.displayedTriangles = lodTriangles();
   }
   return s;
 }

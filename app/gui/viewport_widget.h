@@ -41,7 +41,7 @@ struct ViewportStats {
   double lastDabMs = 0;       ///< engine time per dab of the last frame that dabbed
   long long dabs = 0;         ///< dabs made since the viewport was created
   int n = 0;                  ///< the document's N
-  long long displayedTriangles = 0, fullTriangles = 0;
+  long long displayedTriangles = 0, fullTriangles = 0; ///< displayed: the LOD's when shown alone
 };
 
 /// The 3D view: a Qt6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (VTK's Qt module is
