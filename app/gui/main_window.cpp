@@ -597,17 +597,20 @@ bool MainWindow::exportLod(const QString& path) {
     return false;
   }
   viewport_->endStroke();
-  // Salient methods read the saliency in alpha: make sure it is the current surface's.
-  updateSaliencyWanted();
+  // Salient methods read the saliency in alpha: the current surface's, from the viewport when it
+  // has it at once (GPU), else computed by the export's worker on its copy.
   const core::ResampleMethod m = lodPanel_->method();
-  if (m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage)
-    viewport_->setSaliencyWanted(true);
-  auto snapshot = viewport_->positionsSnapshot();
+  const bool salient =
+      m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
+  if (salient) viewport_->setSaliencyWanted(true);
+  const bool computeSaliency = salient && !viewport_->saliencyCurrent();
+  auto snapshot = std::make_shared<core::GeometryImage>(viewport_->document().positions);
   const core::LodOptions options = lodPanel_->lodOptions();
   auto control = std::make_shared<TaskControl>();
   const QString error = runInBackground(
       tr("Exporting %1…").arg(QFileInfo(path).fileName()),
-      [snapshot, options, path, control] {
+      [snapshot, options, path, control, computeSaliency] {
+        if (computeSaliency) core::computeSaliency(*snapshot);
         const core::LodMesh lod = core::generateLod(*snapshot, options);
         control->fraction = 0.3f;
         if (control->cancel) return; // between steps: nothing written yet
