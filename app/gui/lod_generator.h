@@ -39,8 +39,9 @@ public:
   /// Whether a generation or measurement runs or waits.
   bool busy() const { return generating_ || measuring_ || requested_; }
 
-  /// The newest LOD (null before the first).
+  /// The newest LOD (null before the first) and the positions it was made from.
   std::shared_ptr<const core::LodMesh> lod() const { return lod_; }
+  std::shared_ptr<const core::GeometryImage> lodSource() const { return lodSource_; }
 
 signals:
   /// A new LOD: its generation took milliseconds (snapshot + generateLod, on the worker).

@@ -2,6 +2,7 @@
 
 #include "brush_panel.h"
 #include "layers_panel.h"
+#include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "octaclay/core/document_io.h"
@@ -289,7 +290,14 @@ void MainWindow::connectLod() {
   const auto regenerate = [this] {
     if (lodPanel_->lodShown()) lodGenerator_->request();
   };
-  connect(viewport_, &ViewportWidget::surfaceChanged, this, regenerate);
+  // Each change of the surface: the shown LOD follows it at once (a frame's work), and a new one
+  // is generated in the background.
+  connect(viewport_, &ViewportWidget::surfaceChanged, this, [this, regenerate] {
+    if (lodPanel_->lodShown() && lodFollower_ && viewport_->hasDocument())
+      viewport_->setLodMesh(std::make_shared<const core::LodMesh>(
+          lodFollower_->follow(viewport_->document().positions)));
+    regenerate();
+  });
   connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
     lodGenerator_->setOptions(lodPanel_->lodOptions());
     updateSaliencyWanted();
@@ -308,6 +316,11 @@ void MainWindow::connectLod() {
   connect(lodGenerator_, &LodGenerator::generated, this,
           [this](std::shared_ptr<const core::LodMesh> lod, double ms) {
             lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
+            lodFollower_ = std::make_unique<LodFollower>(*lod, *lodGenerator_->lodSource());
+            // Made from a snapshot the stroke may have moved on from since.
+            if (viewport_->hasDocument())
+              lod = std::make_shared<const core::LodMesh>(
+                  lodFollower_->follow(viewport_->document().positions));
             viewport_->setLodMesh(std::move(lod));
           });
   connect(lodGenerator_, &LodGenerator::measured, this,
@@ -487,6 +500,7 @@ bool MainWindow::importMesh(const QString& path, int n) {
 }
 
 void MainWindow::adoptDocument(core::Document document, const QString& path) {
+  lodFollower_.reset(); // before the new document's surfaceChanged
   if (!viewport_->setDocument(std::move(document))) {
     showError(viewport_->error());
     return;

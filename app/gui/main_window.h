@@ -21,6 +21,7 @@ namespace octaclay::app {
 
 class BrushPanel;
 class LayersPanel;
+class LodFollower;
 class LodGenerator;
 class LodPanel;
 class ViewportWidget;
@@ -125,6 +126,7 @@ private:
   LayersPanel* layersPanel_ = nullptr;
   LodPanel* lodPanel_ = nullptr;
   LodGenerator* lodGenerator_ = nullptr;
+  std::unique_ptr<LodFollower> lodFollower_; // the newest LOD, moved with the surface each frame
   QUndoStack* undoStack_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QLabel* fpsLabel_ = nullptr;

@@ -3,7 +3,10 @@
 // the snapshot of the positions (the GPU document's mirror, kept equal to the texture after
 // every dab, copied as ViewportWidget::positionsSnapshot does), core::generateLod, and the upload
 // of the LOD mesh for drawing (ModelRenderer::setLodMesh, glFinish) — timed per part on a sphere
-// sculpted by push dabs between iterations; and the GPU saliency pass the salient methods read.
+// sculpted by push dabs between iterations; the per-frame step between regenerations (the LOD
+// following its source samples, app::LodFollower, and the upload); and the GPU saliency pass
+// the salient methods read.
+#include "lod_follow.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/document.h"
 #include "octaclay/core/lod.h"
@@ -113,6 +116,32 @@ void BM_LiveLodRegeneration(benchmark::State& state) {
                  (options.refitToSurface ? ", refit" : ""));
 }
 
+// What the modeller does each frame of a stroke between regenerations: the newest LOD's
+// vertices follow their source samples in the mirror (app::LodFollower), then the upload.
+void BM_LiveLodFollow(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  gpu::GpuDocument& document = s.document(n);
+  core::LodOptions options;
+  options.method = core::ResampleMethod::SalientPoint;
+  options.targetTriangles = static_cast<std::size_t>(state.range(1));
+  const core::GeometryImage source = document.document().positions;
+  const app::LodFollower follower(core::generateLod(source, options), source);
+  std::size_t triangles = 0;
+  int k = 0;
+  for (auto _ : state) {
+    s.sculpt(document, k++);
+    glFinish();
+    const auto start = Clock::now();
+    const core::LodMesh lod = follower.follow(document.document().positions);
+    s.renderer.setLodMesh(lod);
+    glFinish();
+    state.SetIterationTime(msSince(start) / 1e3);
+    triangles = lod.mesh.triangles.size();
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+
 // For comparison (not what the modeller runs): the resampled grid collapsed to the target by
 // meshopt_simplify instead of generateLod's OpenMesh vertex collapse (no seam vetoes, so its
 // corners' image coordinates would still need choosing): what a faster collapse would cost.
@@ -195,6 +224,11 @@ BENCHMARK(BM_LiveLodRegeneration)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->Iterations(20);
+BENCHMARK(BM_LiveLodFollow)
+    ->Args({1024, 20000})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(50);
 BENCHMARK(BM_LiveLodMeshoptCollapse)
     ->Args({1024, 128, 20000})
     ->Unit(benchmark::kMillisecond)

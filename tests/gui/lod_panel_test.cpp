@@ -1,6 +1,7 @@
 // The Level of detail dock's automatic-LOD controls (offscreen) and the live generator behind
 // them: generation off the GUI thread to the target, requests folding while one runs, and the
 // error readout against the full resolution.
+#include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "octaclay/core/base_shapes.h"
@@ -118,6 +119,49 @@ private slots:
     QVERIFY2(error.rms > 0 && error.rms < 0.01, qPrintable(QString::number(error.rms)));
     QVERIFY(error.hausdorff >= error.rms);
     QVERIFY(error.psnr > 40);
+  }
+
+  void followerMovesEachVertexWithItsSourceSample() {
+    core::GeometryImage then = core::makeBaseShape(core::BaseShape::Blob, 64);
+    core::LodOptions options;
+    options.method = core::ResampleMethod::Point;
+    options.targetTriangles = 500;
+    const core::LodMesh lod = core::generateLod(then, options);
+    const app::LodFollower follower(lod, then);
+    // Unchanged surface: the LOD as made, bit for bit.
+    const core::LodMesh same = follower.follow(then);
+    QVERIFY(same.mesh.positions == lod.mesh.positions);
+    // Lift the samples with x > 0.3 by 0.1 in z (a stand-in for a stroke).
+    core::GeometryImage now = then;
+    for (core::Vec4f& t : now.texels())
+      if (t.x > 0.3f) t.z += 0.1f;
+    const core::LodMesh moved = follower.follow(now);
+    QCOMPARE(moved.mesh.triangles, lod.mesh.triangles); // connectivity (and count) kept
+    QCOMPARE(moved.cornerUv.size(), lod.cornerUv.size());
+    int lifted = 0, kept = 0;
+    for (std::size_t v = 0; v < lod.mesh.positions.size(); ++v) {
+      const core::Sample s = follower.sources()[v];
+      const float dz = moved.mesh.positions[v].z - lod.mesh.positions[v].z;
+      QCOMPARE(moved.mesh.positions[v].x, lod.mesh.positions[v].x);
+      if (then.at(s).x > 0.3f) {
+        QVERIFY(std::abs(dz - 0.1f) < 1e-6f);
+        ++lifted;
+      } else {
+        QCOMPARE(dz, 0.0f);
+        ++kept;
+      }
+    }
+    QVERIFY(lifted > 20 && kept > 20);
+    // The source is the sample of the vertex's corner coordinates (or one identified with it,
+    // for a seam vertex whose other copy another triangle named).
+    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const core::Vec2f uv = lod.cornerUv[t][k];
+        const core::Sample corner{static_cast<int>(std::lround(uv.x * 64)),
+                                  static_cast<int>(std::lround(uv.y * 64))};
+        const core::Sample s = follower.sources()[lod.mesh.triangles[t][k]];
+        QVERIFY(core::canonical(64, s) == core::canonical(64, corner));
+      }
   }
 };
 
