@@ -16,6 +16,7 @@
 namespace octaclay::core {
 namespace {
 
+// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB (bench_lod).
 constexpr int kRefitIterations = 2;
 
 // The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
