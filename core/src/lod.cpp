@@ -4,6 +4,7 @@
 
 #include "detail/lod_refit.h"
 #include "detail/lod_resampling.h"
+#include "detail/quadric_collapse.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/vertex_collapse.h"
@@ -15,10 +16,17 @@
 namespace octaclay::core {
 namespace {
 
-// Full-resolution samples per LOD cell side the refit reads at most (a stride above 1 skips
-// samples on large footprints: the fit is a mean, 4×4 samples per cell estimate it well).
-constexpr int kRefitSamplesPerCell = 4;
+// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB (bench_lod).
 constexpr int kRefitIterations = 2;
+
+// The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
+// mean over each triangle, a few samples estimate it well).
+int refitStride(int n, std::size_t triangles) {
+  int stride = 1;
+  while (2.0 * double(n) * n / (4.0 * stride * stride) >= 16.0 * double(triangles))
+    stride *= 2;
+  return stride;
+}
 
 // Where a vertex of the octahedral LOD grid may move when collapsed (see seamVeto).
 enum class SeamClass : std::uint8_t { Interior, Cone, Bottom, Top, Left, Right };
@@ -48,10 +56,6 @@ Sample seamMidpoint(int m, SeamClass c) {
   }
 }
 
-std::size_t targetTriangleCount(std::size_t target) {
-  return target;
-}
-
 void checkOptions(const GeometryImage& image, const LodOptions& options) {
   requireValidSize(image.size());
   if (options.size != 0) detail::requireLodSize(image.size(), options.size);
@@ -59,6 +63,9 @@ void checkOptions(const GeometryImage& image, const LodOptions& options) {
     throw Error(ErrorKind::InvalidArgument,
                 "triangle target " + std::to_string(options.targetTriangles) +
                     " is too small: a closed mesh has at least 4 triangles; ask for more than 4");
+  if (options.oversample < 1 || (options.oversample & (options.oversample - 1)) != 0)
+    throw Error(ErrorKind::InvalidArgument, "oversampling " + std::to_string(options.oversample) +
+                                                " is not a power of two; use 1, 2 or 4");
   if (!(options.maxError >= 0))
     throw Error(ErrorKind::InvalidArgument, "maximum error " + std::to_string(options.maxError) +
                                                 " is negative; use 0 (no bound) or more");
@@ -72,10 +79,9 @@ int chooseSize(int n, const LodOptions& options) {
   if (options.size != 0) return options.size;
   if (options.targetTriangles == 0) return n / 2;
   int m = 2;
-  while (m < n / 2 &&
-         2 * std::size_t(m) * std::size_t(m) < targetTriangleCount(options.targetTriangles))
+  while (m < n / 2 && 2 * std::size_t(m) * std::size_t(m) < options.targetTriangles)
     m *= 2;
-  return m;
+  return std::min(n / 2, m * options.oversample);
 }
 
 // For each vertex, the image coordinates (x/N, y/N) of its copies (1, 2 or 4).
@@ -170,9 +176,6 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
   LodMesh lod;
   lod.resampledSize = m;
   lod.mesh = extractMesh(resampled.image);
-  if (options.refitToSurface)
-    detail::refitToSurface(image, index, lod.mesh, std::max(1, (n / m) / kRefitSamplesPerCell),
-                           kRefitIterations);
   const std::vector<VertexCopies> copies = vertexCopies(resampled, index, n);
 
   const bool collapse =
@@ -192,6 +195,7 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     VertexCollapseOptions collapseOptions;
     collapseOptions.targetTriangles = options.targetTriangles;
     collapseOptions.maxError = options.maxError;
+    collapseOptions.engine = options.collapseEngine;
     collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
     // A seam vertex has a copy on each side of its seam; it may only slide along the seam
     // (into a vertex of the same seam or one of the seam's end cones), so that each triangle
@@ -205,7 +209,11 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
       return cornerCoordinates(tri, copies);
     };
-    CollapsedMesh collapsed = collapseVertices(lod.mesh, collapseOptions);
+    // The resampled mesh is closed and manifold by construction: the fast engine skips
+    // collapseVertices' topology check (a sort as costly as the collapse itself).
+    CollapsedMesh collapsed = options.collapseEngine == CollapseEngine::Fast
+                                  ? detail::quadricCollapse(lod.mesh, collapseOptions)
+                                  : collapseVertices(lod.mesh, collapseOptions);
     lod.mesh = std::move(collapsed.mesh);
     std::vector<VertexCopies> kept(collapsed.inputVertex.size());
     for (std::size_t v = 0; v < kept.size(); ++v)
@@ -213,11 +221,14 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     lod.cornerUv.resize(lod.mesh.triangles.size());
     for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
       lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
-    return lod;
+  } else {
+    lod.cornerUv.resize(lod.mesh.triangles.size());
+    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
   }
-  lod.cornerUv.resize(lod.mesh.triangles.size());
-  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-    lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
+  if (options.refitToSurface)
+    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
+                           kRefitIterations);
   return lod;
 }
 

@@ -117,20 +117,29 @@ void LodTest::triangleTargetOnSphere() {
   QFETCH(ResampleMethod, method);
   GeometryImage image = makeBaseShape(BaseShape::Blob, 256);
   computeSaliency(image);
-  for (const std::size_t target : {std::size_t(100), std::size_t(1000), std::size_t(5000)}) {
-    LodOptions options;
-    options.method = method;
-    options.targetTriangles = target;
-    const LodMesh lod = generateLod(image, options);
-    // size 0: the smallest power of two whose 2M² triangles reach the target.
-    const int m = lod.resampledSize;
-    QVERIFY(2 * std::size_t(m) * m >= target && 2 * std::size_t(m / 2) * (m / 2) < target);
-    QVERIFY2(std::abs(double(lod.mesh.triangles.size()) - double(target)) <= 0.01 * double(target),
-             qPrintable(
-                 QString("%1 triangles for target %2").arg(lod.mesh.triangles.size()).arg(target)));
-    checkClosedGenus0(lod.mesh);
-    checkCornerUv(lod);
-  }
+  struct Variant {
+    int oversample;
+    CollapseEngine engine;
+  };
+  for (const Variant variant : {Variant{1, CollapseEngine::Fast}, Variant{2, CollapseEngine::Fast},
+                                Variant{1, CollapseEngine::Decimater}})
+    for (const std::size_t target : {std::size_t(100), std::size_t(1000), std::size_t(5000)}) {
+      LodOptions options;
+      options.method = method;
+      options.targetTriangles = target;
+      options.oversample = variant.oversample;
+      options.collapseEngine = variant.engine;
+      const LodMesh lod = generateLod(image, options);
+      // size 0: the smallest power of two whose 2M² triangles reach the target, times oversample.
+      const int m = lod.resampledSize / variant.oversample;
+      QVERIFY(2 * std::size_t(m) * m >= target && 2 * std::size_t(m / 2) * (m / 2) < target);
+      QVERIFY2(
+          std::abs(double(lod.mesh.triangles.size()) - double(target)) <= 0.01 * double(target),
+          qPrintable(
+              QString("%1 triangles for target %2").arg(lod.mesh.triangles.size()).arg(target)));
+      checkClosedGenus0(lod.mesh);
+      checkCornerUv(lod);
+    }
 }
 
 void LodTest::importedMeshes_data() {
@@ -243,6 +252,9 @@ void LodTest::badArgumentsNameTheirValue() {
   options.targetTriangles = 0;
   options.maxError = -0.5;
   expectError(options, "-0.5");
+  options.maxError = 0;
+  options.oversample = 3;
+  expectError(options, "3");
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 48, ResampleMethod::Point));
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 64, ResampleMethod::Point));
 }

@@ -1,8 +1,9 @@
 #include "detail/lod_refit.h"
 
-#include <array>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <thread>
-#include <vector>
 
 namespace octaclay::core::detail {
 namespace {
@@ -20,6 +21,51 @@ std::vector<Vec3f> vertexNormals(const TriangleMesh& mesh) {
   return normals;
 }
 
+// One full-resolution sample inside one LOD triangle.
+struct Covered {
+  std::uint32_t texel;    // index into the full image's texels
+  std::uint32_t triangle; // index into lod.triangles
+  float w1, w2;           // barycentric weights of corners 1 and 2
+};
+
+// The samples on the stride lattice that each triangle's corner coordinates enclose. A sample
+// on an edge shared by two triangles may be taken by both: the fit is a mean, that is harmless.
+std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv,
+                               std::size_t begin, std::size_t end, int stride) {
+  std::vector<Covered> covered;
+  const double share = double(end - begin) / double(std::max<std::size_t>(1, cornerUv.size()));
+  covered.reserve(std::size_t(share * double(n / stride + 1) * double(n / stride + 1)) +
+                  (end - begin));
+  const float scale = float(n);
+  for (std::size_t t = begin; t < end; ++t) {
+    const auto& c = cornerUv[t];
+    const float x0 = c[0].x * scale, y0 = c[0].y * scale;
+    const float x1 = c[1].x * scale, y1 = c[1].y * scale;
+    const float x2 = c[2].x * scale, y2 = c[2].y * scale;
+    const float area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+    if (!(area > 0)) continue;
+    const float inv = 1 / area, eps = -1e-4f;
+    const auto lattice = [&](float v, bool up) {
+      const int k = up ? int(std::floor(v / float(stride))) : int(std::ceil(v / float(stride)));
+      return std::clamp(k * stride, 0, n);
+    };
+    const int xBegin = lattice(std::min({x0, x1, x2}), false);
+    const int xEnd = lattice(std::max({x0, x1, x2}), true);
+    const int yBegin = lattice(std::min({y0, y1, y2}), false);
+    const int yEnd = lattice(std::max({y0, y1, y2}), true);
+    for (int y = yBegin; y <= yEnd; y += stride)
+      for (int x = xBegin; x <= xEnd; x += stride) {
+        const float px = float(x), py = float(y);
+        const float w1 = ((px - x0) * (y2 - y0) - (x2 - x0) * (py - y0)) * inv;
+        const float w2 = ((x1 - x0) * (py - y0) - (px - x0) * (y1 - y0)) * inv;
+        if (w1 < eps || w2 < eps || 1 - w1 - w2 < eps) continue;
+        covered.push_back(
+            {static_cast<std::uint32_t>(y * (n + 1) + x), static_cast<std::uint32_t>(t), w1, w2});
+      }
+  }
+  return covered;
+}
+
 struct Accumulator {
   std::vector<float> along; // Σ φ n·r per vertex
   std::vector<float> mass;  // Σ φ per vertex
@@ -27,70 +73,57 @@ struct Accumulator {
 
 } // namespace
 
-void refitToSurface(const GeometryImage& full, const VertexIndex& index, TriangleMesh& lod,
-                    int stride, int iterations) {
-  const int n = full.size(), m = index.size(), step = n / m, half = m / 2;
+void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2f, 3>>& cornerUv,
+                    TriangleMesh& lod, int stride, int iterations) {
+  // Rasterized in two halves of the triangles on two threads when there is enough work.
+  std::vector<Covered> covered;
+  if (cornerUv.size() >= 4096) {
+    const std::size_t half = cornerUv.size() / 2;
+    std::vector<Covered> second;
+    std::thread other(
+        [&] { second = rasterize(full.size(), cornerUv, half, cornerUv.size(), stride); });
+    covered = rasterize(full.size(), cornerUv, 0, half, stride);
+    other.join();
+    covered.insert(covered.end(), second.begin(), second.end());
+  } else {
+    covered = rasterize(full.size(), cornerUv, 0, cornerUv.size(), stride);
+  }
+  const std::span<const Vec4f> texels = full.texels();
   const std::size_t vertexCount = lod.positions.size();
-  const int rows = n / stride + 1;
+  std::array<Accumulator, 2> acc;
   for (int iteration = 0; iteration < iterations; ++iteration) {
     const std::vector<Vec3f> normals = vertexNormals(lod);
-    std::array<Accumulator, 2> acc;
     for (auto& a : acc) {
       a.along.assign(vertexCount, 0);
       a.mass.assign(vertexCount, 0);
     }
-    // Two bands (the machine's two threads), each accumulating into its own arrays.
-    const auto band = [&](int rowBegin, int rowEnd, Accumulator& out) {
-      for (int row = rowBegin; row < rowEnd; ++row) {
-        const int y = row * stride;
-        const int cj = std::min(y / step, m - 1);
-        const float fy = float(y - cj * step) / float(step);
-        const Vec4f* texels = &full.at(0, y);
-        for (int x = 0; x <= n; x += stride) {
-          const int ci = std::min(x / step, m - 1);
-          const float fx = float(x - ci * step) / float(step);
-          const std::uint32_t a = index.at(ci, cj), b = index.at(ci + 1, cj);
-          const std::uint32_t c = index.at(ci + 1, cj + 1), d = index.at(ci, cj + 1);
-          std::array<std::uint32_t, 3> v;
-          std::array<float, 3> w;
-          if ((ci < half) == (cj < half)) { // anti-diagonal split: abd | bcd
-            if (fx + fy <= 1) {
-              v = {a, b, d};
-              w = {1 - fx - fy, fx, fy};
-            } else {
-              v = {b, c, d};
-              w = {1 - fy, fx + fy - 1, 1 - fx};
-            }
-          } else if (fx >= fy) { // main diagonal: abc | acd
-            v = {a, b, c};
-            w = {1 - fx, fx - fy, fy};
-          } else {
-            v = {a, c, d};
-            w = {1 - fy, fx, fy - fx};
-          }
-          const Vec3f surface =
-              lod.positions[v[0]] * w[0] + lod.positions[v[1]] * w[1] + lod.positions[v[2]] * w[2];
-          const Vec3f r = texels[x].xyz() - surface;
-          for (int k = 0; k < 3; ++k) {
-            out.along[v[k]] += w[k] * dot(normals[v[k]], r);
-            out.mass[v[k]] += w[k];
-          }
+    const auto part = [&](std::size_t begin, std::size_t end, Accumulator& out) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const Covered& s = covered[k];
+        const auto& t = lod.triangles[s.triangle];
+        const float w0 = 1 - s.w1 - s.w2;
+        const Vec3f surface =
+            lod.positions[t[0]] * w0 + lod.positions[t[1]] * s.w1 + lod.positions[t[2]] * s.w2;
+        const Vec3f r = texels[s.texel].xyz() - surface;
+        const float w[3] = {w0, s.w1, s.w2};
+        for (int c = 0; c < 3; ++c) {
+          out.along[t[c]] += w[c] * dot(normals[t[c]], r);
+          out.mass[t[c]] += w[c];
         }
       }
     };
-    const int split = rows / 2;
-    if (rows >= 256) {
-      std::thread other([&] { band(split, rows, acc[1]); });
-      band(0, split, acc[0]);
+    const std::size_t split = covered.size() / 2;
+    if (covered.size() >= 32768) {
+      std::thread other([&] { part(split, covered.size(), acc[1]); });
+      part(0, split, acc[0]);
       other.join();
     } else {
-      band(0, rows, acc[0]);
+      part(0, covered.size(), acc[0]);
     }
     for (std::size_t v = 0; v < vertexCount; ++v) {
       const float mass = acc[0].mass[v] + acc[1].mass[v];
       if (mass <= 0) continue;
-      const float move = (acc[0].along[v] + acc[1].along[v]) / mass;
-      lod.positions[v] += normals[v] * move;
+      lod.positions[v] += normals[v] * ((acc[0].along[v] + acc[1].along[v]) / mass);
     }
   }
 }

@@ -12,21 +12,28 @@
 
 namespace octaclay::core {
 
+/// Which implementation collapses: OpenMesh's Decimater (a heap of per-vertex priorities, the
+/// strict order of quadric errors) or our flat-array passes (detail/quadric_collapse.h: the
+/// same checks, collapses in threshold passes, about 20× faster on LOD meshes).
+enum class CollapseEngine { Decimater, Fast };
+
 struct VertexCollapseOptions {
+  CollapseEngine engine = CollapseEngine::Decimater;
   /// Stop at this many triangles (0 = no count target). A closed mesh loses two triangles per
   /// collapse, so the result has the even count nearest above the target unless a bound
   /// below stops it first.
   std::size_t targetTriangles = 0;
-  /// Refuse collapses whose quadric error (Garland–Heckbert, sum of squared distances to the
-  /// planes merged into the vertex) exceeds (maxError × bounding-box diagonal)²; 0 = no bound.
+  /// Refuse collapses whose quadric error exceeds (maxError × bounding-box diagonal)²; 0 = no
+  /// bound. The error is Garland–Heckbert's, planes weighted by their triangle's area / the
+  /// input's mean triangle area: on an even mesh, the sum of squared distances from the kept
+  /// vertex to the planes of the triangles merged into it (both engines).
   double maxError = 0;
-  /// Refuse a collapse that turns any surviving triangle's normal by more than this
-  /// (OpenMesh ModNormalFlipping) or lets the normal cone of the original triangles merged
-  /// into a triangle open wider than this (ModNormalDeviation): no result triangle deviates
-  /// more than this from the original triangles it stands for.
+  /// Refuse a collapse that would turn any triangle's normal more than this away from the
+  /// normal of the input triangle it is (CollapsedMesh::inputTriangle), or leave it without
+  /// area: the bound holds for the result, not only for each step.
   float maxNormalTurnDegrees = 60;
-  /// Refuse collapses that make a triangle with a longest-edge / height ratio above this
-  /// (OpenMesh ModAspectRatio); 0 = no bound.
+  /// Refuse collapses that make a triangle's longest-edge / height ratio exceed this (unless
+  /// it was already above it and does not get worse); 0 = no bound.
   float maxAspectRatio = 10;
   /// When set, a collapse of vertex `from` into its neighbour `to` (indices into the input)
   /// is refused unless allowCollapse(from, to) is true.
@@ -49,10 +56,12 @@ struct CollapsedMesh {
   std::vector<std::uint32_t> inputTriangle;
 };
 
-/// Collapses vertices by increasing quadric error until the target or the error bound is met
-/// or no legal collapse is left. Collapses that would break the mesh's manifoldness or
-/// genus (OpenMesh's link condition) are refused; so is any collapse into a tetrahedron.
-/// Throws Error(InvalidArgument) when targetTriangles is 1 … 4, maxError < 0 or
+/// OpenMesh's Decimater with its quadric module (priority and optional error bound) and one
+/// binary module of ours checking normals, triangle shape, texture folds and the veto (see
+/// VertexCollapseOptions). Collapses vertices by increasing quadric error until the target or the
+/// error bound is met or no legal collapse is left. Collapses that would break the mesh's
+/// manifoldness or genus (OpenMesh's link condition) are refused; so is any collapse into a
+/// tetrahedron. Throws Error(InvalidArgument) when targetTriangles is 1 … 4, maxError < 0 or
 /// maxNormalTurnDegrees is not in (0, 180], Error(InvalidInput) when the mesh is not closed
 /// and edge-manifold.
 CollapsedMesh collapseVertices(const TriangleMesh& mesh, const VertexCollapseOptions& options);
