@@ -31,5 +31,6 @@ Command addCompareCommand(CLI::App& app);
 Command addStrokeCommand(CLI::App& app);
 Command addBrushesCommand(CLI::App& app);
 Command addImportCommand(CLI::App& app);
+Command addLodCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -1,6 +1,8 @@
 #include "commands.h"
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/lod.h"
+#include "octaclay/core/lod_export.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
 #include "octaclay/core/textured_export.h"
@@ -11,6 +13,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <system_error>
 #include <vector>
 
 namespace octaclay::app {
@@ -32,12 +35,85 @@ ExportKind exportKindFromPath(const std::string& output) {
                         ": unknown mesh format; use .obj, .glb, .ply, .stl or .off");
 }
 
+void requireNormalMapPath(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (!path.empty() && ext != ".png" && ext != ".exr")
+    throw core::Error(core::ErrorKind::InvalidArgument, "cannot write the normal map to " + path +
+                                                            ": use .png (8-bit) or .exr (float)");
+}
+
+// --normal-map: the full-resolution object-space normals over the image coordinates (they do
+// not depend on the mesh), written after the mesh; if the map fails the mesh files go too.
+void writeFullNormalMap(const core::GeometryImage& full, const std::string& path,
+                        std::vector<std::string>& files) {
+  if (path.empty()) return;
+  try {
+    core::writeNormalMap(core::bakeNormalMap(full, {}, core::NormalMapSpace::Object, full.size()),
+                         path);
+  } catch (...) {
+    std::error_code ec;
+    for (const std::string& file : files)
+      std::filesystem::remove(file, ec);
+    throw;
+  }
+  files.push_back(path);
+}
+
+// --triangles: the lod command's pipeline (salient-point resampling from --lod M or the smallest
+// M that reaches T, then vertex collapse). .obj and .glb carry an object-space normal map baked
+// from the full resolution; the other formats are geometry only.
+ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize,
+                         std::size_t triangles, const std::string& output,
+                         const std::string& normalMap, bool json) {
+  if (std::all_of(full.texels().begin(), full.texels().end(),
+                  [](const core::Vec4f& t) { return t.w == 0; }))
+    core::computeSaliency(full);
+  core::LodOptions options;
+  options.size = lodSize;
+  options.targetTriangles = triangles;
+  const core::LodMesh lod = core::generateLod(full, options);
+  std::vector<std::string> files;
+  std::size_t fileVertices = lod.mesh.positions.size();
+  if (kind == ExportKind::Plain) {
+    core::writeMesh(lod.mesh, output);
+    files.push_back(output);
+  } else {
+    const core::NormalMap map =
+        core::bakeNormalMap(full, lod, core::NormalMapSpace::Object, full.size());
+    for (const std::filesystem::path& path : core::writeLodMesh(lod, map, output))
+      files.push_back(path.string());
+    fileVertices = core::lodVertices(lod).positions.size();
+  }
+  writeFullNormalMap(full, normalMap, files);
+  if (json) {
+    std::cout << nlohmann::json{{"output", output},
+                                {"files", files},
+                                {"lod", lod.resampledSize},
+                                {"vertices", lod.mesh.positions.size()},
+                                {"triangles", lod.mesh.triangles.size()},
+                                {"file_vertices", fileVertices}}
+                     .dump()
+              << "\n";
+  } else {
+    std::cout << "wrote " << output << ": " << lod.mesh.positions.size() << " vertices, "
+              << lod.mesh.triangles.size() << " triangles (resampled to " << lod.resampledSize
+              << " of " << full.size() << ", then collapsed)\n";
+    for (std::size_t k = 1; k < files.size(); ++k)
+      std::cout << "wrote " << files[k] << "\n";
+  }
+  return kExitOk;
+}
+
 } // namespace
 
 Command addExportCommand(CLI::App& app) {
   struct Options {
     std::string input, output;
     int lod = 0;
+    long long triangles = 0;
+    std::string normalMap;
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
@@ -51,12 +127,27 @@ Command addExportCommand(CLI::App& app) {
   sub->add_option("--lod", opt->lod,
                   "Export the level of detail of size M (a power of two <= N): (M+1)^2 samples, "
                   "every N/M-th sample of the image. Default: full resolution");
+  sub->add_option("--triangles", opt->triangles,
+                  "Collapse vertices down to T triangles (> 4) as `octaclay-cli lod` does, from "
+                  "--lod M (below N) or the smallest M that reaches T. .obj and .glb then carry "
+                  "an object-space normal map baked from the full resolution instead of the "
+                  "painted layers");
+  sub->add_option("--normal-map", opt->normalMap,
+                  "Also write the object-space normal map of the full-resolution surface, N x N "
+                  "texels over the image coordinates: .png (8-bit) or .exr (float)");
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt, sub]() {
             const ExportKind kind = exportKindFromPath(opt->output);
-            const core::Document document =
-                core::readDocument(opt->input, {.layers = kind != ExportKind::Plain});
+            const bool collapse = opt->triangles != 0;
+            if (opt->triangles < 0 || (collapse && opt->triangles <= 4))
+              throw core::Error(core::ErrorKind::InvalidArgument,
+                                "--triangles " + std::to_string(opt->triangles) +
+                                    " is too small: a closed mesh has at least 4 triangles; ask "
+                                    "for more than 4");
+            requireNormalMapPath(opt->normalMap);
+            core::Document document =
+                core::readDocument(opt->input, {.layers = kind != ExportKind::Plain && !collapse});
             const int n = document.size();
             const int m = sub->count("--lod") > 0 ? opt->lod : n;
             if (m < 2 || m > n || (m & (m - 1)) != 0)
@@ -64,6 +155,16 @@ Command addExportCommand(CLI::App& app) {
                   core::ErrorKind::InvalidArgument,
                   "--lod " + std::to_string(opt->lod) +
                       " is not a power of two between 2 and N = " + std::to_string(n));
+            if (collapse) {
+              if (sub->count("--lod") > 0 && m == n)
+                throw core::Error(core::ErrorKind::InvalidArgument,
+                                  "--lod " + std::to_string(m) +
+                                      " with --triangles must be below N = " + std::to_string(n) +
+                                      ": vertex collapse starts from a resampled image");
+              return exportCollapsed(document.positions, kind, sub->count("--lod") > 0 ? m : 0,
+                                     static_cast<std::size_t>(opt->triangles), opt->output,
+                                     opt->normalMap, opt->json);
+            }
             // vertices and triangles describe the surface (welded, as info counts them); the
             // textured formats store (M+1)^2 samples, seam samples twice with their own texcoords.
             const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
@@ -90,6 +191,7 @@ Command addExportCommand(CLI::App& app) {
               break;
             }
             }
+            writeFullNormalMap(document.positions, opt->normalMap, files);
             if (opt->json) {
               std::cout << nlohmann::json{{"output", opt->output},
                                           {"files", files},

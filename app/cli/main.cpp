@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   const app::Command commands[] = {app::addNewCommand(cli),    app::addInfoCommand(cli),
                                    app::addExportCommand(cli), app::addCompareCommand(cli),
                                    app::addStrokeCommand(cli), app::addBrushesCommand(cli),
-                                   app::addImportCommand(cli)};
+                                   app::addImportCommand(cli), app::addLodCommand(cli)};
 
   try {
     cli.parse(argc, argv);

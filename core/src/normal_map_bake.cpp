@@ -23,10 +23,18 @@ constexpr int kMaxResolution = 8192;
 class FullNormals {
 public:
   explicit FullNormals(const GeometryImage& image)
-      : n_(image.size()), normals_(computeNormals(image)) {
-    // A degenerate neighbourhood has no normal: take the direction from the origin.
-    for (std::size_t k = 0; k < normals_.size(); ++k)
-      if (length(normals_[k]) == 0) normals_[k] = normalize(image.texels()[k].xyz());
+      : n_(image.size()), normals_(image.texelCount()) {
+    const int side = image.side();
+    detail::parallelRows(side, [&](int j0, int j1) {
+      for (int j = j0; j < j1; ++j)
+        for (int i = 0; i < side; ++i) {
+          const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                                static_cast<std::size_t>(i);
+          normals_[k] = vertexNormal(image, {i, j});
+          // A degenerate neighbourhood has no normal: take the direction from the origin.
+          if (length(normals_[k]) == 0) normals_[k] = normalize(image.at(i, j).xyz());
+        }
+    });
   }
 
   Vec3f at(float s, float t) const {
@@ -80,27 +88,34 @@ std::vector<int> rasterizeTriangles(const LodVertices& vertices, int resolution)
   std::vector<int> owner(
       static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution), -1);
   constexpr float kEdge = -1e-5f; // texel centres on a shared edge belong to both
-  for (std::size_t t = 0; t < vertices.triangles.size(); ++t) {
-    std::array<Vec2f, 3> q;
-    for (int c = 0; c < 3; ++c) {
-      const Vec2f uv = vertices.uvs[vertices.triangles[t][static_cast<std::size_t>(c)]];
-      q[static_cast<std::size_t>(c)] = {uv.x * r, uv.y * r};
-    }
-    const auto [xMin, xMax] = std::minmax({q[0].x, q[1].x, q[2].x});
-    const auto [yMin, yMax] = std::minmax({q[0].y, q[1].y, q[2].y});
-    const int x0 = std::max(0, static_cast<int>(std::floor(xMin - 0.5f)));
-    const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(xMax - 0.5f)));
-    const int y0 = std::max(0, static_cast<int>(std::floor(yMin - 0.5f)));
-    const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(yMax - 0.5f)));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        int& o = owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) +
-                       static_cast<std::size_t>(x)];
-        if (o >= 0) continue;
-        const auto b = barycentric(q, {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f});
-        if (b[0] >= kEdge && b[1] >= kEdge && b[2] >= kEdge) o = static_cast<int>(t);
+  // Triangles folded over in the image (an LOD vertex whose source sample crossed its
+  // neighbour's) overlap unfolded ones; those keep the texels, as they are the majority there.
+  for (const bool folded : {false, true})
+    for (std::size_t t = 0; t < vertices.triangles.size(); ++t) {
+      std::array<Vec2f, 3> q;
+      for (int c = 0; c < 3; ++c) {
+        const Vec2f uv = vertices.uvs[vertices.triangles[t][static_cast<std::size_t>(c)]];
+        q[static_cast<std::size_t>(c)] = {uv.x * r, uv.y * r};
       }
-  }
+      const float area =
+          (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
+      if ((area <= 0) != folded) continue;
+      const auto [xMin, xMax] = std::minmax({q[0].x, q[1].x, q[2].x});
+      const auto [yMin, yMax] = std::minmax({q[0].y, q[1].y, q[2].y});
+      const int x0 = std::max(0, static_cast<int>(std::floor(xMin - 0.5f)));
+      const int x1 = std::min(resolution - 1, static_cast<int>(std::ceil(xMax - 0.5f)));
+      const int y0 = std::max(0, static_cast<int>(std::floor(yMin - 0.5f)));
+      const int y1 = std::min(resolution - 1, static_cast<int>(std::ceil(yMax - 0.5f)));
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          int& o = owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) +
+                         static_cast<std::size_t>(x)];
+          if (o >= 0) continue;
+          const auto b =
+              barycentric(q, {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f});
+          if (b[0] >= kEdge && b[1] >= kEdge && b[2] >= kEdge) o = static_cast<int>(t);
+        }
+    }
   // Dilation: each pass gives uncovered texels a covered 4-neighbour's triangle.
   for (bool changed = true; changed;) {
     changed = false;

@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -91,6 +92,20 @@ bool locate(const LodVertices& v, Vec2f p, std::size_t& triangle, std::array<flo
   return best > -1e-4f;
 }
 
+// What a glTF viewer does with texel m inside triangle t at barycentrics b: interpolate the
+// vertices' t, b = cross(n, t)·w and n, normalise each, and map the texel through them.
+Vec3f decode(const LodVertices& v, std::size_t t, const std::array<float, 3>& b, Vec3f m) {
+  Vec3f tt{}, bb{}, nn{};
+  for (int c = 0; c < 3; ++c) {
+    const std::uint32_t k = v.triangles[t][std::size_t(c)];
+    const Vec3f tan{v.tangents[k][0], v.tangents[k][1], v.tangents[k][2]};
+    tt += tan * b[std::size_t(c)];
+    bb += cross(v.normals[k], tan) * (v.tangents[k][3] * b[std::size_t(c)]);
+    nn += v.normals[k] * b[std::size_t(c)];
+  }
+  return normalize(normalize(tt) * m.x + normalize(bb) * m.y + normalize(nn) * m.z);
+}
+
 // Signed image-space area of each triangle's corners (positive = counter-clockwise in (x, y)).
 double uvArea(Vec2f a, Vec2f b, Vec2f c) {
   return 0.5 *
@@ -123,10 +138,14 @@ class LodExportTest : public QObject {
 private slots:
   void initTestCase();
   void objectMapIsTheFullResolutionNormal();
+  void tangentMapDecodesToTheFullResolutionNormal_data() { addLodRows(); }
   void tangentMapDecodesToTheFullResolutionNormal();
+  void foldedTrianglesYieldTheirTexels();
+  void tangentFrameFollowsGltf_data() { addLodRows(); }
   void tangentFrameFollowsGltf();
   void badResolutionIsRefused();
   void pngAndExrHoldTheMap();
+  void objReadsBackClosedWithSeamSplitTexcoords_data() { addLodRows(); }
   void objReadsBackClosedWithSeamSplitTexcoords();
   void glbReadsBackWithTinygltf_data();
   void glbReadsBackWithTinygltf();
@@ -135,14 +154,36 @@ private slots:
 private:
   fs::path file(const QString& name) const { return fs::path(dir_.filePath(name).toStdString()); }
   QTemporaryDir dir_;
+  void addLodRows();
+  const LodMesh& lodRow();
   GeometryImage full_;
-  LodMesh lod_;
+  LodMesh lod_;                     // the plain subsampled grid: coordinates known exactly
+  std::map<QString, LodMesh> lods_; // generateLod's, with and without vertex collapse
 };
 
 void LodExportTest::initTestCase() {
   QVERIFY(dir_.isValid());
   full_ = bumpySphere(64);
   lod_ = gridLod(full_, 16);
+  lods_["grid"] = lod_;
+  GeometryImage salient = full_;
+  computeSaliency(salient);
+  lods_["salient-point"] =
+      generateLod(salient, {.size = 16, .method = ResampleMethod::SalientPoint});
+  lods_["average"] = generateLod(salient, {.size = 16, .method = ResampleMethod::Average});
+  lods_["collapsed"] = generateLod(salient, {.size = 32, .targetTriangles = 600});
+  QVERIFY(lods_["collapsed"].mesh.triangles.size() <= 620);
+}
+
+void LodExportTest::addLodRows() {
+  QTest::addColumn<QString>("lod");
+  for (const auto& [name, lod] : lods_)
+    QTest::newRow(qPrintable(name)) << name;
+}
+
+const LodMesh& LodExportTest::lodRow() {
+  return lods_.at(QTest::currentDataTag() ? QString(QTest::currentDataTag()).section(' ', 0, 0)
+                                          : "grid");
 }
 
 void LodExportTest::objectMapIsTheFullResolutionNormal() {
@@ -184,31 +225,21 @@ void LodExportTest::objectMapIsTheFullResolutionNormal() {
 }
 
 void LodExportTest::tangentMapDecodesToTheFullResolutionNormal() {
+  const LodMesh& lod = lodRow();
   const int r = 48; // not a multiple of M: texel centres fall anywhere in the LOD's triangles
-  const NormalMap object = bakeNormalMap(full_, lod_, NormalMapSpace::Object, r);
-  const NormalMap tangent = bakeNormalMap(full_, lod_, NormalMapSpace::Tangent, r);
+  const NormalMap object = bakeNormalMap(full_, lod, NormalMapSpace::Object, r);
+  const NormalMap tangent = bakeNormalMap(full_, lod, NormalMapSpace::Tangent, r);
   QCOMPARE(tangent.space, NormalMapSpace::Tangent);
-  const LodVertices v = lodVertices(lod_);
+  const LodVertices v = lodVertices(lod);
   float worst = 0, meanZ = 0, smallestZ = 1;
   for (int y = 0; y < r; ++y)
     for (int x = 0; x < r; ++x) {
       std::size_t t = 0;
       std::array<float, 3> b{};
       QVERIFY(locate(v, {(float(x) + 0.5f) / float(r), (float(y) + 0.5f) / float(r)}, t, b));
-      // What a glTF viewer does: interpolate the vertices' t, b = cross(n, t)·w and n,
-      // normalise each, and map the texel through them.
-      Vec3f tt{}, bb{}, nn{};
-      for (int c = 0; c < 3; ++c) {
-        const std::uint32_t k = v.triangles[t][std::size_t(c)];
-        const Vec3f tan{v.tangents[k][0], v.tangents[k][1], v.tangents[k][2]};
-        tt += tan * b[std::size_t(c)];
-        bb += cross(v.normals[k], tan) * (v.tangents[k][3] * b[std::size_t(c)]);
-        nn += v.normals[k] * b[std::size_t(c)];
-      }
       const Vec3f m = texel(tangent, x, y);
       QVERIFY(std::abs(length(m) - 1) < 1e-5f);
-      const Vec3f decoded =
-          normalize(normalize(tt) * m.x + normalize(bb) * m.y + normalize(nn) * m.z);
+      const Vec3f decoded = decode(v, t, b, m);
       worst = std::max(worst, angleDegrees(decoded, texel(object, x, y)));
       meanZ += m.z / float(r * r);
       smallestZ = std::min(smallestZ, m.z);
@@ -219,18 +250,72 @@ void LodExportTest::tangentMapDecodesToTheFullResolutionNormal() {
   QVERIFY2(smallestZ > 0.3f, qPrintable(QString("smallest z %1").arg(smallestZ)));
 }
 
+// Where an LOD's image coordinates fold (a vertex's source sample crossed its neighbour's), the
+// folded triangles overlap unfolded ones: those keep the texels, so the majority shades right.
+void LodExportTest::foldedTrianglesYieldTheirTexels() {
+  LodMesh lod = gridLod(full_, 16);
+  const Vec2f from{5.0f / 16, 5.0f / 16}, to{6.5f / 16, 5.5f / 16};
+  for (auto& corners : lod.cornerUv)
+    for (Vec2f& uv : corners)
+      if (uv == from) uv = to;
+  const LodVertices v = lodVertices(lod);
+  std::vector<bool> folded(v.triangles.size());
+  for (std::size_t t = 0; t < v.triangles.size(); ++t)
+    folded[t] =
+        uvArea(v.uvs[v.triangles[t][0]], v.uvs[v.triangles[t][1]], v.uvs[v.triangles[t][2]]) <= 0;
+  QVERIFY(std::count(folded.begin(), folded.end(), true) > 0);
+
+  const int r = 64;
+  const NormalMap object = bakeNormalMap(full_, lod, NormalMapSpace::Object, r);
+  const NormalMap tangent = bakeNormalMap(full_, lod, NormalMapSpace::Tangent, r);
+  int contested = 0;
+  float worst = 0;
+  for (int y = 0; y < r; ++y)
+    for (int x = 0; x < r; ++x) {
+      const Vec2f p{(float(x) + 0.5f) / float(r), (float(y) + 0.5f) / float(r)};
+      // Under a folded triangle two unfolded ones overlap (the winding number stays 1): the
+      // texel must decode right through one of them.
+      bool underFold = false;
+      float best = 180;
+      for (std::size_t t = 0; t < v.triangles.size(); ++t) {
+        const Vec2f a = v.uvs[v.triangles[t][0]], b = v.uvs[v.triangles[t][1]],
+                    c = v.uvs[v.triangles[t][2]];
+        const float det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        const float l1 = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
+        const float l2 = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
+        const float inside = std::min({1 - l1 - l2, l1, l2});
+        if (folded[t]) {
+          underFold = underFold || inside > 1e-4f;
+        } else if (inside > -1e-4f) {
+          const Vec3f decoded = decode(v, t, {1 - l1 - l2, l1, l2}, texel(tangent, x, y));
+          best = std::min(best, angleDegrees(decoded, texel(object, x, y)));
+        }
+      }
+      if (!underFold) continue;
+      ++contested;
+      worst = std::max(worst, best);
+    }
+  QVERIFY2(contested > 0, "the fold covers no texel");
+  QVERIFY2(
+      worst < 0.05f,
+      qPrintable(
+          QString("%1 texels under the fold, decoded up to %2° off").arg(contested).arg(worst)));
+}
+
 void LodExportTest::tangentFrameFollowsGltf() {
-  const LodVertices v = lodVertices(lod_);
-  QCOMPARE(v.triangles.size(), lod_.mesh.triangles.size());
+  const LodMesh& lod = lodRow();
+  const LodVertices v = lodVertices(lod);
+  QCOMPARE(v.triangles.size(), lod.mesh.triangles.size());
   // Seam vertices are split: more vertices than the welded mesh, each with one uv.
-  QVERIFY(v.positions.size() > lod_.mesh.positions.size());
-  QCOMPARE(v.positions.size(), std::size_t(17 * 17)); // the (M+1)² grid, M = 16
+  QVERIFY(v.positions.size() > lod.mesh.positions.size());
+  if (&lod == &lods_.at("grid"))
+    QCOMPARE(v.positions.size(), std::size_t(17 * 17)); // the (M+1)² grid, M = 16
   for (std::size_t k = 0; k < v.positions.size(); ++k) {
     const Vec3f t{v.tangents[k][0], v.tangents[k][1], v.tangents[k][2]};
     QVERIFY(std::abs(length(t) - 1) < 1e-5f);
     QVERIFY(std::abs(dot(t, v.normals[k])) < 1e-5f);
     QVERIFY(v.tangents[k][3] == 1.0f || v.tangents[k][3] == -1.0f);
-    QCOMPARE(v.positions[k], lod_.mesh.positions[v.welded[k]]);
+    QCOMPARE(v.positions[k], lod.mesh.positions[v.welded[k]]);
   }
   // Along each triangle the (corner-averaged) tangent follows increasing u and the bitangent
   // decreasing v.
@@ -303,23 +388,25 @@ void LodExportTest::pngAndExrHoldTheMap() {
 }
 
 void LodExportTest::objReadsBackClosedWithSeamSplitTexcoords() {
-  const NormalMap map = bakeNormalMap(full_, lod_, NormalMapSpace::Object, 32);
-  const fs::path obj = file("lod.obj");
-  const std::vector<fs::path> files = writeLodMesh(lod_, map, obj);
+  const LodMesh& lod = lodRow();
+  const NormalMap map = bakeNormalMap(full_, lod, NormalMapSpace::Object, 32);
+  const QString stem = QTest::currentDataTag();
+  const fs::path obj = file(stem + ".obj");
+  const std::vector<fs::path> files = writeLodMesh(lod, map, obj);
   QCOMPARE(files.size(), std::size_t(3));
   QCOMPARE(files[0], obj);
-  QCOMPARE(files[1], file("lod.mtl"));
-  QCOMPARE(files[2], file("lod_normal.png"));
+  QCOMPARE(files[1], file(stem + ".mtl"));
+  QCOMPARE(files[2], file(stem + "_normal.png"));
   for (const fs::path& f : files)
     QVERIFY2(fs::exists(f), f.c_str());
 
   const TriangleMesh back = readMesh(obj);
-  QCOMPARE(back.triangles.size(), lod_.mesh.triangles.size());
+  QCOMPARE(back.triangles.size(), lod.mesh.triangles.size());
   const MeshTopology topology = analyzeTopology(back);
   QVERIFY(topology.closed());
   QVERIFY(topology.manifold());
   QCOMPARE(topology.euler, 2LL);
-  QCOMPARE(topology.vertices, lod_.mesh.positions.size());
+  QCOMPARE(topology.vertices, lod.mesh.positions.size());
   QVERIFY(signedVolume(back) > 0);
 
   // Texture coordinates: inside [0, 1], and the triangles' image footprints tile the square
@@ -345,8 +432,8 @@ void LodExportTest::objReadsBackClosedWithSeamSplitTexcoords() {
       faces.push_back(f);
     }
   }
-  QCOMPARE(faces.size(), lod_.mesh.triangles.size());
-  QVERIFY(vt.size() > lod_.mesh.positions.size()); // seam vertices have several
+  QCOMPARE(faces.size(), lod.mesh.triangles.size());
+  QVERIFY(vt.size() > lod.mesh.positions.size()); // seam vertices have several
   for (const Vec2f uv : vt)
     QVERIFY(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1);
   double total = 0, smallest = 1;
@@ -359,9 +446,10 @@ void LodExportTest::objReadsBackClosedWithSeamSplitTexcoords() {
   QVERIFY(smallest > 0);
 
   const std::string mtl = readText(files[1]);
-  QVERIFY(mtl.find("norm lod_normal.png") != std::string::npos);
-  QVERIFY(mtl.find("map_Bump lod_normal.png") != std::string::npos);
-  QVERIFY(readText(obj).find("mtllib lod.mtl") != std::string::npos);
+  const std::string mapName = (stem + "_normal.png").toStdString();
+  QVERIFY(mtl.find("norm " + mapName + "\n") != std::string::npos);
+  QVERIFY(mtl.find("map_Bump " + mapName + "\n") != std::string::npos);
+  QVERIFY(readText(obj).find("mtllib " + (stem + ".mtl").toStdString()) != std::string::npos);
   const RasterImage image = readImage(files[2], 3);
   QCOMPARE(image.width, 32);
 }
@@ -390,10 +478,15 @@ void LodExportTest::glbReadsBackWithTinygltf() {
   const std::vector<float> positions = readFloats(model, primitive.attributes.at("POSITION"));
   const std::vector<float> tangents = readFloats(model, primitive.attributes.at("TANGENT"));
   const std::vector<float> uvs = readFloats(model, primitive.attributes.at("TEXCOORD_0"));
+  const std::vector<float> normals = readFloats(model, primitive.attributes.at("NORMAL"));
   QCOMPARE(positions.size(), 3 * v.positions.size());
   QCOMPARE(tangents.size(), 4 * v.positions.size());
   for (std::size_t k = 0; k < v.positions.size(); ++k) {
-    QCOMPARE(tangents[4 * k + 3], v.tangents[k][3]);
+    // The frame the tangent-space map was baked in, exactly.
+    for (std::size_t c = 0; c < 4; ++c)
+      QCOMPARE(tangents[4 * k + c], v.tangents[k][c]);
+    QCOMPARE((Vec3f{normals[3 * k], normals[3 * k + 1], normals[3 * k + 2]}), v.normals[k]);
+    QCOMPARE((Vec2f{uvs[2 * k], uvs[2 * k + 1]}), v.uvs[k]);
     QVERIFY(uvs[2 * k] >= 0 && uvs[2 * k] <= 1 && uvs[2 * k + 1] >= 0 && uvs[2 * k + 1] <= 1);
   }
   // Welding equal positions gives back the LOD's vertices.

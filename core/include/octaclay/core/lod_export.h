@@ -39,7 +39,10 @@ struct NormalMap {
 /// right), made orthogonal to the normal; the bitangent is cross(normal, tangent.xyz) · w, with
 /// w = ±1 chosen so that it points towards decreasing v (image row 0, "up" in the image: glTF's
 /// +Y, OpenGL's and Blender's "Y+" once OBJ's v axis is flipped). The octahedral map keeps
-/// orientation, so w is −1 everywhere on a sane LOD.
+/// orientation, so w is −1 everywhere on a sane LOD. The GLB carries this frame as NORMAL and
+/// TANGENT, so a glTF viewer decodes a Tangent map exactly; an OBJ has no tangents and viewers
+/// derive their own (MikkTSpace in Blender: the same axes, slightly different averaging), so
+/// tangent-space OBJ maps are close but not exact there.
 struct LodVertices {
   std::vector<Vec3f> positions, normals;
   std::vector<std::array<float, 4>> tangents; ///< xyz unit tangent, w handedness (±1)

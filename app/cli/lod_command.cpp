@@ -1,0 +1,242 @@
+// octaclay-cli lod: the thesis's automatic level of detail (chapter 4) from a document, written
+// with a normal map baked from the full-resolution image, and measured against it.
+
+#include "commands.h"
+#include "octaclay/core/document_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/lod.h"
+#include "octaclay/core/lod_export.h"
+#include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/surface_distance.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace octaclay::app {
+namespace {
+
+using core::Error;
+using core::ErrorKind;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+bool isPowerOfTwo(long long v) {
+  return v > 0 && (v & (v - 1)) == 0;
+}
+
+bool saliencyIsEmpty(const core::GeometryImage& image) {
+  return std::all_of(image.texels().begin(), image.texels().end(),
+                     [](const core::Vec4f& t) { return t.w == 0; });
+}
+
+} // namespace
+
+Command addLodCommand(CLI::App& app) {
+  struct Options {
+    std::string input, output, method = "salient-point", normalMap, space = "object";
+    long long size = 0, triangles = 0, mapSize = 0;
+    double maxError = 0;
+    std::size_t samples = 200'000;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand(
+      "lod", "Generate a level of detail (resample, then collapse vertices) and write it with a "
+             "normal map baked from the full-resolution image (OBJ + MTL + map, or GLB)");
+  sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  sub->add_option("--size", opt->size,
+                  "M: resample to (M+1)^2 samples, a power of two below N. Optional with "
+                  "--triangles (then the smallest M whose 2M^2 triangles reach T)");
+  sub->add_option("--method", opt->method,
+                  "How each LOD sample is chosen: salient-point (the thesis's best), "
+                  "salient-average, point or average")
+      ->capture_default_str();
+  sub->add_option("--triangles", opt->triangles,
+                  "Collapse vertices down to T triangles (more than 4)");
+  sub->add_option("--max-error", opt->maxError,
+                  "Stop collapsing before an error above this fraction of the bounding-box "
+                  "diagonal (0: no bound)");
+  sub->add_option("--normal-map", opt->normalMap,
+                  "Also write the baked normal map here: .png (8-bit) or .exr (float)");
+  sub->add_option("--normal-space", opt->space,
+                  "object (the thesis's choice: full-resolution normals) or tangent (relative "
+                  "to the LOD's glTF tangent frame; what glTF viewers read as normalTexture)")
+      ->capture_default_str();
+  sub->add_option("--map-size", opt->mapSize,
+                  "Normal map resolution R (R x R texels, 2 to 8192). Default: N");
+  sub->add_option("--samples", opt->samples,
+                  "Points sampled on each surface for the RMS / Hausdorff / PSNR figures")
+      ->capture_default_str();
+  sub->add_option("-o,--output", opt->output,
+                  "LOD to write: .obj (with .mtl and stem_normal.png beside it) or .glb")
+      ->required();
+  sub->add_flag("--json", opt->json, "Print one JSON object");
+
+  return {sub, [opt, sub]() {
+            // Arguments first, so a bad one is reported before any file is read.
+            const std::string ext = lowerExtension(opt->output);
+            if (ext != ".obj" && ext != ".glb")
+              throw Error(ErrorKind::InvalidArgument, "cannot write the LOD to " + opt->output +
+                                                          ": use .obj (with .mtl and normal "
+                                                          "map) or .glb");
+            const std::optional<core::ResampleMethod> method =
+                core::parseResampleMethod(opt->method);
+            if (!method)
+              throw Error(ErrorKind::InvalidArgument,
+                          "unknown --method '" + opt->method +
+                              "': use salient-point, salient-average, point or average");
+            const std::optional<core::NormalMapSpace> space = core::parseNormalMapSpace(opt->space);
+            if (!space)
+              throw Error(ErrorKind::InvalidArgument,
+                          "unknown --normal-space '" + opt->space + "': use object or tangent");
+            if (!opt->normalMap.empty() && lowerExtension(opt->normalMap) != ".png" &&
+                lowerExtension(opt->normalMap) != ".exr")
+              throw Error(ErrorKind::InvalidArgument, "cannot write the normal map to " +
+                                                          opt->normalMap +
+                                                          ": use .png (8-bit) or .exr (float)");
+            const bool hasSize = sub->count("--size") > 0, hasTriangles = opt->triangles != 0;
+            if (!hasSize && !hasTriangles)
+              throw Error(ErrorKind::InvalidArgument,
+                          "say how coarse: --size M (a power of two below N) and/or "
+                          "--triangles T");
+            if (hasSize && (opt->size < 2 || !isPowerOfTwo(opt->size)))
+              throw Error(ErrorKind::InvalidArgument,
+                          "--size " + std::to_string(opt->size) +
+                              " is not a power of two of at least 2 (e.g. 64, 128, 256)");
+            if (opt->triangles < 0 || (hasTriangles && opt->triangles <= 4))
+              throw Error(ErrorKind::InvalidArgument,
+                          "--triangles " + std::to_string(opt->triangles) +
+                              " is too small: a closed mesh has at least 4 triangles; ask for "
+                              "more than 4");
+            if (!(opt->maxError >= 0))
+              throw Error(ErrorKind::InvalidArgument,
+                          "--max-error " + std::to_string(opt->maxError) +
+                              " is negative: use 0 (no bound) or a fraction of the diagonal");
+            if (sub->count("--map-size") > 0 && (opt->mapSize < 2 || opt->mapSize > 8192))
+              throw Error(ErrorKind::InvalidArgument, "--map-size " + std::to_string(opt->mapSize) +
+                                                          " is out of range: use 2 to 8192");
+            if (opt->samples == 0)
+              throw Error(ErrorKind::InvalidArgument, "--samples must be at least 1");
+
+            const auto commandStart = std::chrono::steady_clock::now();
+            core::Document document = core::readDocument(opt->input, {.layers = false});
+            core::GeometryImage& full = document.positions;
+            const int n = full.size();
+            if (hasSize && opt->size >= n)
+              throw Error(ErrorKind::InvalidArgument,
+                          "--size " + std::to_string(opt->size) +
+                              " must be smaller than the document's N = " + std::to_string(n) +
+                              " (an LOD has fewer samples than the full image)");
+
+            // The salient methods read saliency from alpha; a document that never had it
+            // computed (all zero) gets the CPU reference pass.
+            const bool salient = *method == core::ResampleMethod::SalientPoint ||
+                                 *method == core::ResampleMethod::SalientAverage;
+            double saliencyMs = 0;
+            const bool computeSaliency = salient && saliencyIsEmpty(full);
+            if (computeSaliency) {
+              const auto start = std::chrono::steady_clock::now();
+              core::computeSaliency(full);
+              saliencyMs = millisecondsSince(start);
+            }
+
+            core::LodOptions options;
+            options.size = hasSize ? static_cast<int>(opt->size) : 0;
+            options.method = *method;
+            options.targetTriangles = static_cast<std::size_t>(opt->triangles);
+            options.maxError = opt->maxError;
+            const auto lodStart = std::chrono::steady_clock::now();
+            const core::LodMesh lod = core::generateLod(full, options);
+            const double lodMs = millisecondsSince(lodStart);
+
+            const int mapSize = sub->count("--map-size") > 0 ? static_cast<int>(opt->mapSize) : n;
+            const auto bakeStart = std::chrono::steady_clock::now();
+            const core::NormalMap map = core::bakeNormalMap(full, lod, *space, mapSize);
+            const double bakeMs = millisecondsSince(bakeStart);
+
+            // The separate map first: if the mesh then fails, it is taken back too.
+            const auto writeStart = std::chrono::steady_clock::now();
+            std::vector<std::string> files;
+            if (!opt->normalMap.empty()) core::writeNormalMap(map, opt->normalMap);
+            try {
+              for (const std::filesystem::path& f : core::writeLodMesh(lod, map, opt->output))
+                files.push_back(f.string());
+            } catch (...) {
+              std::error_code ec;
+              if (!opt->normalMap.empty()) std::filesystem::remove(opt->normalMap, ec);
+              throw;
+            }
+            if (!opt->normalMap.empty()) files.push_back(opt->normalMap);
+            const double writeMs = millisecondsSince(writeStart);
+
+            const auto measureStart = std::chrono::steady_clock::now();
+            const core::SurfaceDistance distance = core::compareSurfaces(
+                core::extractMesh(full), lod.mesh, {.samplesPerSurface = opt->samples});
+            const double measureMs = millisecondsSince(measureStart);
+            const std::size_t fileVertices = core::lodVertices(lod).positions.size();
+            const double totalMs = millisecondsSince(commandStart);
+
+            if (opt->json) {
+              std::cout << nlohmann::json{{"input", opt->input},
+                                          {"output", opt->output},
+                                          {"files", files},
+                                          {"document_size", n},
+                                          {"size", lod.resampledSize},
+                                          {"method", core::methodName(*method)},
+                                          {"triangles", lod.mesh.triangles.size()},
+                                          {"vertices", lod.mesh.positions.size()},
+                                          {"file_vertices", fileVertices},
+                                          {"full_triangles", 2 * std::size_t(n) * std::size_t(n)},
+                                          {"normal_space", core::normalMapSpaceName(*space)},
+                                          {"map_size", mapSize},
+                                          {"saliency_computed", computeSaliency},
+                                          {"ms", lodMs},
+                                          {"saliency_ms", saliencyMs},
+                                          {"bake_ms", bakeMs},
+                                          {"write_ms", writeMs},
+                                          {"measure_ms", measureMs},
+                                          {"total_ms", totalMs},
+                                          {"rms", distance.rms},
+                                          {"hausdorff", distance.hausdorff},
+                                          {"psnr", distance.psnr},
+                                          {"diagonal", distance.diagonal}}
+                               .dump()
+                        << "\n";
+            } else {
+              std::cout << "wrote " << opt->output << ": " << lod.mesh.triangles.size()
+                        << " triangles, " << lod.mesh.positions.size()
+                        << " vertices (M = " << lod.resampledSize << " of N = " << n << ", "
+                        << core::methodName(*method) << ") in " << lodMs << " ms\n"
+                        << "  against full resolution: RMS " << distance.rms * 100
+                        << " %, Hausdorff " << distance.hausdorff * 100
+                        << " % of the diagonal, PSNR " << distance.psnr << " dB\n"
+                        << "  " << core::normalMapSpaceName(*space) << "-space normal map "
+                        << mapSize << "x" << mapSize << " baked in " << bakeMs << " ms\n";
+              if (computeSaliency)
+                std::cout << "  saliency was empty: computed in " << saliencyMs << " ms\n";
+              for (std::size_t k = 1; k < files.size(); ++k)
+                std::cout << "wrote " << files[k] << "\n";
+            }
+            return kExitOk;
+          }};
+}
+
+} // namespace octaclay::app
