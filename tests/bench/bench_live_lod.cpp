@@ -143,7 +143,7 @@ void BM_LiveLodFollow(benchmark::State& state) {
 }
 
 // For comparison (not what the modeller runs): the resampled grid collapsed to the target by
-// meshopt_simplify instead of generateLod's OpenMesh vertex collapse (no seam vetoes, so its
+// meshopt_simplify instead of generateLod's own collapse (no seam vetoes, so its
 // corners' image coordinates would still need choosing): what a faster collapse would cost.
 void BM_LiveLodMeshoptCollapse(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
