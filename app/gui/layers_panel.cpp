@@ -130,8 +130,9 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
   preview_ = new QComboBox(this);
   preview_->setObjectName(QStringLiteral("preview"));
   preview_->addItems({tr("Shaded model"), tr("Diffuse colour"), tr("Height detail"), tr("Specular"),
-                      tr("Reflectivity"), tr("Mask")});
-  preview_->setToolTip(tr("Show the shaded model, or one layer channel alone"));
+                      tr("Reflectivity"), tr("Mask"), tr("Saliency")});
+  preview_->setToolTip(tr("Show the shaded model, one layer channel alone, or the saliency the "
+                          "level of detail keeps (a heat map: blue smooth, red salient)"));
   connect(preview_, &QComboBox::currentIndexChanged, this, [this](int index) {
     if (index >= 0) emit previewChanged(index);
   });

@@ -50,7 +50,8 @@ public:
   /// The state line shown for the layer, e.g. "uniform" (for tests).
   QString layerStateText(gpu::BrushLayer layer) const;
 
-  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone.
+  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
+  /// 6 saliency as a heat map.
   int preview() const;
   void setPreview(int channel);
 

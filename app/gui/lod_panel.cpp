@@ -4,9 +4,12 @@
 
 #include <QComboBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -58,7 +61,123 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent) {
   layout->addLayout(form);
   layout->addWidget(displayedLabel_);
   layout->addWidget(fullLabel_);
+  layout->addWidget(buildAutomaticLod());
   layout->addStretch(1);
+}
+
+QWidget* LodPanel::buildAutomaticLod() {
+  auto* box = new QGroupBox(tr("Automatic level of detail"));
+  methodCombo_ = new QComboBox;
+  methodCombo_->setObjectName(QStringLiteral("lodMethod"));
+  for (core::ResampleMethod m :
+       {core::ResampleMethod::Point, core::ResampleMethod::Average,
+        core::ResampleMethod::SalientAverage, core::ResampleMethod::SalientPoint})
+    methodCombo_->addItem(QString::fromUtf8(core::methodName(m)), static_cast<int>(m));
+  methodCombo_->setCurrentIndex(methodCombo_->findData(
+      static_cast<int>(core::ResampleMethod::SalientPoint))); // the thesis's best
+  methodCombo_->setToolTip(tr("How each LOD sample is picked from the full-resolution samples it "
+                              "stands for: the one at its place, their mean, their "
+                              "saliency-weighted mean, or the most salient one"));
+  connect(methodCombo_, &QComboBox::currentIndexChanged, this,
+          [this] { emit lodOptionsChanged(); });
+
+  targetSpin_ = new QSpinBox;
+  targetSpin_->setObjectName(QStringLiteral("lodTarget"));
+  targetSpin_->setRange(kMinTargetTriangles, kMaxTargetTriangles);
+  targetSpin_->setSingleStep(1000);
+  targetSpin_->setValue(kDefaultTargetTriangles);
+  targetSpin_->setGroupSeparatorShown(true);
+  targetSpin_->setSuffix(tr(" triangles"));
+  targetSpin_->setKeyboardTracking(false); // one regeneration per typed number, not per digit
+  connect(targetSpin_, &QSpinBox::valueChanged, this, [this] { emit lodOptionsChanged(); });
+
+  displayCombo_ = new QComboBox;
+  displayCombo_->setObjectName(QStringLiteral("lodDisplay"));
+  displayCombo_->addItems({tr("Full resolution"), tr("Level of detail"), tr("Side by side")});
+  displayCombo_->setToolTip(tr("What the viewport shows; the level of detail follows your strokes "
+                               "while it is shown"));
+  connect(displayCombo_, &QComboBox::currentIndexChanged, this,
+          [this](int index) { emit displayChanged(static_cast<Display>(std::max(index, 0))); });
+
+  lodLabel_ = new QLabel(tr("LOD: —"));
+  lodLabel_->setObjectName(QStringLiteral("lodTriangles"));
+  errorLabel_ = new QLabel(tr("Error: —"));
+  errorLabel_->setObjectName(QStringLiteral("lodError"));
+  errorLabel_->setToolTip(tr("Two-sided distance between the LOD and the full-resolution surface, "
+                             "as fractions of the bounding-box diagonal"));
+  errorLabel_->setWordWrap(true);
+  exportButton_ = new QPushButton(tr("Export…"));
+  exportButton_->setObjectName(QStringLiteral("exportLod"));
+  exportButton_->setToolTip(tr("Write the LOD as OBJ or GLB with a normal map baked from the full "
+                               "resolution"));
+  connect(exportButton_, &QPushButton::clicked, this, &LodPanel::exportRequested);
+
+  auto* form = new QFormLayout;
+  form->addRow(tr("Method"), methodCombo_);
+  form->addRow(tr("Target"), targetSpin_);
+  form->addRow(tr("Show"), displayCombo_);
+  auto* layout = new QVBoxLayout(box);
+  layout->addLayout(form);
+  layout->addWidget(lodLabel_);
+  layout->addWidget(errorLabel_);
+  layout->addWidget(exportButton_);
+  return box;
+}
+
+LodPanel::Display LodPanel::display() const {
+  return static_cast<Display>(std::max(displayCombo_->currentIndex(), 0));
+}
+
+void LodPanel::setDisplay(Display display) {
+  displayCombo_->setCurrentIndex(static_cast<int>(display));
+}
+
+core::ResampleMethod LodPanel::method() const {
+  return static_cast<core::ResampleMethod>(methodCombo_->currentData().toInt());
+}
+
+void LodPanel::setMethod(core::ResampleMethod method) {
+  methodCombo_->setCurrentIndex(methodCombo_->findData(static_cast<int>(method)));
+}
+
+int LodPanel::targetTriangles() const {
+  return targetSpin_->value();
+}
+
+void LodPanel::setTargetTriangles(int triangles) {
+  targetSpin_->setValue(triangles);
+}
+
+core::LodOptions LodPanel::lodOptions() const {
+  core::LodOptions options;
+  options.method = method();
+  options.targetTriangles = static_cast<std::size_t>(targetTriangles());
+  // size 0: the smallest M whose 2M² triangles reach the target, collapsed down to it.
+  return options;
+}
+
+void LodPanel::setLodResult(long long triangles, double milliseconds) {
+  lodLabel_->setText(
+      tr("LOD: %1 triangles in %2 ms").arg(groupedNumber(triangles)).arg(milliseconds, 0, 'f', 1));
+}
+
+void LodPanel::setLodError(const std::optional<core::SurfaceDistance>& error) {
+  if (!error) {
+    errorLabel_->setText(tr("Error: —"));
+    return;
+  }
+  errorLabel_->setText(tr("RMS %1 · Hausdorff %2 · PSNR %3 dB")
+                           .arg(error->rms, 0, 'g', 3)
+                           .arg(error->hausdorff, 0, 'g', 3)
+                           .arg(error->psnr, 0, 'f', 1));
+}
+
+QString LodPanel::lodText() const {
+  return lodLabel_->text();
+}
+
+QString LodPanel::errorText() const {
+  return errorLabel_->text();
 }
 
 void LodPanel::setDocumentSize(int n) {

@@ -1,10 +1,16 @@
 #pragma once
 
+#include "octaclay/core/lod.h"
+#include "octaclay/core/surface_distance.h"
+
 #include <QString>
 #include <QWidget>
+#include <optional>
 
 class QComboBox;
 class QLabel;
+class QPushButton;
+class QSpinBox;
 
 namespace octaclay::app {
 
@@ -12,7 +18,13 @@ namespace octaclay::app {
 /// viewport draws (N/1, N/2, … N/32, levels of at least 2 samples a side, shown as
 /// "N/8 (128)"), and the triangle counts of the displayed and of the full mesh. The divisor is
 /// what the user chose; until they choose, it follows each document to the largest level of
-/// at most 256 (the default display level). GUI thread.
+/// at most 256 (the default display level).
+///
+/// Below, the automatic level of detail (thesis chapter 4): the resampling method (point,
+/// average, salient average, salient point), the triangle target, what the viewport shows (the
+/// full resolution, the LOD, or both side by side; the LOD is regenerated live while it is
+/// shown), the LOD's triangles and generation time, its error against the full resolution
+/// (RMS, Hausdorff, PSNR) and Export… (the LOD with a baked normal map). GUI thread.
 class LodPanel : public QWidget {
   Q_OBJECT
 
@@ -21,6 +33,9 @@ public:
   static constexpr int kDefaultDisplaySize = 256;
   /// The coarsest level offered is N / kMaxDivisor.
   static constexpr int kMaxDivisor = 32;
+  /// The automatic LOD's triangle target: its range and default (the live-LOD target).
+  static constexpr int kMinTargetTriangles = 8, kMaxTargetTriangles = 10'000'000,
+                       kDefaultTargetTriangles = 20'000;
 
   explicit LodPanel(QWidget* parent = nullptr);
 
@@ -47,11 +62,43 @@ public:
   QString displayedText() const;
   QString fullText() const;
 
+  /// What the viewport shows.
+  enum class Display { FullResolution, Lod, SideBySide };
+  Display display() const;
+  /// Emits displayChanged when it changes.
+  void setDisplay(Display display);
+  /// Whether the LOD is wanted (shown alone or side by side): it is then kept up to date.
+  bool lodShown() const { return display() != Display::FullResolution; }
+
+  core::ResampleMethod method() const;
+  /// Emits lodOptionsChanged when it changes.
+  void setMethod(core::ResampleMethod method);
+  /// The vertex-collapse target, 8 … 10,000,000 triangles (20,000 by default).
+  int targetTriangles() const;
+  /// Clamped to the range; emits lodOptionsChanged when it changes.
+  void setTargetTriangles(int triangles);
+  /// generateLod's options for the method and target (size chosen from the target).
+  core::LodOptions lodOptions() const;
+
+  /// Shows "LOD: 20,000 triangles in 12.3 ms" for the newest LOD.
+  void setLodResult(long long triangles, double milliseconds);
+  /// Shows "RMS 0.00123 · Hausdorff 0.0101 · PSNR 58.2 dB" (fractions of the bounding-box
+  /// diagonal), or "Error: —" when there is no measurement.
+  void setLodError(const std::optional<core::SurfaceDistance>& error);
+  QString lodText() const;
+  QString errorText() const;
+
 signals:
   /// The user or setDivisor/setDocumentSize changed the divisor.
   void levelChanged(int divisor);
+  /// The method or the triangle target changed.
+  void lodOptionsChanged();
+  void displayChanged(octaclay::app::LodPanel::Display display);
+  /// Export… was pressed.
+  void exportRequested();
 
 private:
+  QWidget* buildAutomaticLod();
   bool isLevel(int divisor) const;
   void fillLevels();
   void applyDivisor(int divisor);
@@ -63,6 +110,12 @@ private:
   QComboBox* levelCombo_ = nullptr;
   QLabel* displayedLabel_ = nullptr;
   QLabel* fullLabel_ = nullptr;
+  QComboBox* methodCombo_ = nullptr;
+  QSpinBox* targetSpin_ = nullptr;
+  QComboBox* displayCombo_ = nullptr;
+  QLabel* lodLabel_ = nullptr;
+  QLabel* errorLabel_ = nullptr;
+  QPushButton* exportButton_ = nullptr;
 };
 
 } // namespace octaclay::app

@@ -2,9 +2,12 @@
 
 #include "brush_panel.h"
 #include "layers_panel.h"
+#include "lod_follow.h"
+#include "lod_generator.h"
 #include "lod_panel.h"
 #include "octaclay/core/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/lod_export.h"
 #include "octaclay/core/mesh_extraction.h"
 #include "octaclay/core/mesh_io.h"
 #include "octaclay/core/mesh_validation.h"
@@ -278,6 +281,62 @@ void MainWindow::connectParts() {
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
   viewport_->setBrushSettings(brushPanel_->settings());
+  connectLod();
+}
+
+void MainWindow::connectLod() {
+  lodGenerator_ = new LodGenerator([this] { return viewport_->positionsSnapshot(); }, this);
+  lodGenerator_->setOptions(lodPanel_->lodOptions());
+  const auto regenerate = [this] {
+    if (lodPanel_->lodShown()) lodGenerator_->request();
+  };
+  // Each change of the surface: the shown LOD follows it at once (a frame's work), and a new one
+  // is generated in the background.
+  connect(viewport_, &ViewportWidget::surfaceChanged, this, [this, regenerate] {
+    if (lodPanel_->lodShown() && lodFollower_ && viewport_->hasDocument())
+      viewport_->setLodMesh(std::make_shared<const core::LodMesh>(
+          lodFollower_->follow(viewport_->document().positions)));
+    regenerate();
+  });
+  connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
+    lodGenerator_->setOptions(lodPanel_->lodOptions());
+    updateSaliencyWanted();
+    regenerate();
+  });
+  connect(lodPanel_, &LodPanel::displayChanged, this, [this, regenerate](LodPanel::Display d) {
+    viewport_->setLodDisplay(static_cast<int>(d));
+    updateSaliencyWanted();
+    regenerate();
+  });
+  connect(layersPanel_, &LayersPanel::previewChanged, this, &MainWindow::updateSaliencyWanted);
+  connect(lodPanel_, &LodPanel::exportRequested, this, [this] {
+    const QString path = choose(FileRequest::ExportLod);
+    if (!path.isEmpty()) exportLod(path);
+  });
+  connect(lodGenerator_, &LodGenerator::generated, this,
+          [this](std::shared_ptr<const core::LodMesh> lod, double ms) {
+            lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
+            lodFollower_ = std::make_unique<LodFollower>(*lod, *lodGenerator_->lodSource());
+            // Made from a snapshot the stroke may have moved on from since.
+            if (viewport_->hasDocument())
+              lod = std::make_shared<const core::LodMesh>(
+                  lodFollower_->follow(viewport_->document().positions));
+            viewport_->setLodMesh(std::move(lod));
+          });
+  connect(lodGenerator_, &LodGenerator::measured, this,
+          [this](const core::SurfaceDistance& error) { lodPanel_->setLodError(error); });
+  connect(lodGenerator_, &LodGenerator::failed, this, [this](const QString& message) {
+    statusBar()->showMessage(tr("Level of detail: %1").arg(message), 10000);
+  });
+  updateSaliencyWanted();
+}
+
+void MainWindow::updateSaliencyWanted() {
+  constexpr int kSaliencyPreview = 6;
+  const core::ResampleMethod m = lodPanel_->method();
+  const bool salientLod = lodPanel_->lodShown() && (m == core::ResampleMethod::SalientPoint ||
+                                                    m == core::ResampleMethod::SalientAverage);
+  viewport_->setSaliencyWanted(layersPanel_->preview() == kSaliencyPreview || salientLod);
 }
 
 void MainWindow::refreshBrushes() {
@@ -347,6 +406,9 @@ QString MainWindow::choose(FileRequest request) {
   case FileRequest::Export:
     return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
                                         tr("Meshes (*.obj *.glb *.ply *.stl *.off)"));
+  case FileRequest::ExportLod:
+    return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
+                                        tr("Meshes with a normal map (*.obj *.glb)"));
   }
   return {};
 }
@@ -438,6 +500,7 @@ bool MainWindow::importMesh(const QString& path, int n) {
 }
 
 void MainWindow::adoptDocument(core::Document document, const QString& path) {
+  lodFollower_.reset(); // before the new document's surfaceChanged
   if (!viewport_->setDocument(std::move(document))) {
     showError(viewport_->error());
     return;
@@ -533,6 +596,56 @@ bool MainWindow::exportMesh(const QString& path, int divisor) {
   const QString error = runInBackground(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
     showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::exportLod(const QString& path) {
+  if (!viewport_->hasDocument()) return false;
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix != "obj" && suffix != "glb") {
+    showError(tr("Cannot export the level of detail to %1: use .obj or .glb").arg(path));
+    return false;
+  }
+  viewport_->endStroke();
+  // Salient methods read the saliency in alpha: the current surface's, from the viewport when it
+  // has it at once (GPU), else computed by the export's worker on its copy.
+  const core::ResampleMethod m = lodPanel_->method();
+  const bool salient =
+      m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
+  if (salient) viewport_->setSaliencyWanted(true);
+  const bool computeSaliency = salient && !viewport_->saliencyCurrent();
+  auto snapshot = std::make_shared<core::GeometryImage>(viewport_->document().positions);
+  const core::LodOptions options = lodPanel_->lodOptions();
+  auto control = std::make_shared<TaskControl>();
+  const QString error = runInBackground(
+      tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+      [snapshot, options, path, control, computeSaliency] {
+        if (computeSaliency) core::computeSaliency(*snapshot);
+        const core::LodMesh lod = core::generateLod(*snapshot, options);
+        control->fraction = 0.3f;
+        if (control->cancel) return; // between steps: nothing written yet
+        // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
+        // the LOD's triangles dropped.
+        const int resolution = std::clamp(snapshot->size(), 2, 4096);
+        const core::NormalMap map =
+            core::bakeNormalMap(*snapshot, lod, core::NormalMapSpace::Object, resolution);
+        control->fraction = 0.8f;
+        if (control->cancel) return;
+        core::writeLodMesh(lod, map, toPath(path));
+        control->fraction = 1.0f;
+      },
+      control);
+  updateSaliencyWanted();
+  if (!error.isEmpty()) {
+    showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  if (control->cancel) {
+    statusBar()->showMessage(tr("Export cancelled; nothing was written"), 8000);
     return false;
   }
   lastError_.clear();

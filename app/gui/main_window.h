@@ -21,6 +21,8 @@ namespace octaclay::app {
 
 class BrushPanel;
 class LayersPanel;
+class LodFollower;
+class LodGenerator;
 class LodPanel;
 class ViewportWidget;
 
@@ -36,7 +38,7 @@ public:
     bool askAboutRecovery = true; ///< false: pendingRecovery() is left for the caller
   };
   /// What a file chooser is asked for.
-  enum class FileRequest { Open, SaveAs, Export, Import };
+  enum class FileRequest { Open, SaveAs, Export, Import, ExportLod };
 
   explicit MainWindow(Options options);
   MainWindow() : MainWindow(Options{}) {}
@@ -67,6 +69,12 @@ public:
   bool importMesh(const QString& path, int n);
   /// Writes the mesh at level N/divisor (OBJ, PLY, STL or OFF by extension).
   bool exportMesh(const QString& path, int divisor);
+  /// Writes the Level of detail dock's LOD (its method and target) of the current surface as
+  /// OBJ + MTL or GLB with an object-space normal map baked from the full resolution, off the
+  /// GUI thread with progress.
+  bool exportLod(const QString& path);
+  /// Regenerates the live LOD in the background (while the dock shows it).
+  LodGenerator* lodGenerator() const { return lodGenerator_; }
 
   QString currentPath() const { return path_; }
   bool isModified() const;
@@ -108,12 +116,17 @@ private:
   QString runInBackground(const QString& label, const std::function<void()>& work,
                           std::shared_ptr<TaskControl> control = nullptr);
   void adoptDocument(core::Document document, const QString& path);
+  void connectLod();
+  /// Saliency is computed while the heat map or a salient LOD method needs it.
+  void updateSaliencyWanted();
 
   Options options_;
   ViewportWidget* viewport_ = nullptr;
   BrushPanel* brushPanel_ = nullptr;
   LayersPanel* layersPanel_ = nullptr;
   LodPanel* lodPanel_ = nullptr;
+  LodGenerator* lodGenerator_ = nullptr;
+  std::unique_ptr<LodFollower> lodFollower_; // the newest LOD, moved with the surface each frame
   QUndoStack* undoStack_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QLabel* fpsLabel_ = nullptr;

@@ -9,6 +9,7 @@
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/model_renderer.h"
+#include "octaclay/gpu/saliency.h"
 #include "octaclay/gpu/stroke.h"
 
 #include <QGuiApplication>
@@ -19,6 +20,7 @@
 #include <QSurfaceFormat>
 #include <QTabletEvent>
 #include <QWheelEvent>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -97,12 +99,23 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->SetBackgroundAlpha(1.0); // Qt composes the widget with its alpha
   renderer_->AddViewProp(prop_);
   prop_->draw = [this](vtkRenderer* r) { drawModel(r); };
+  connect(&saliencyJob_, &QFutureWatcher<std::vector<float>>::finished, this,
+          &ViewportWidget::cpuSaliencyFinished);
+  // Side by side: the LOD in the right half, seen through the same camera.
+  lodRenderer_->SetBackground(0.27, 0.29, 0.33);
+  lodRenderer_->SetBackgroundAlpha(1.0);
+  lodRenderer_->SetActiveCamera(renderer_->GetActiveCamera());
+  lodRenderer_->AddViewProp(lodProp_);
+  lodRenderer_->SetViewport(0.5, 0, 1, 1);
+  lodProp_->draw = [this](vtkRenderer* r) { drawModel(r); };
 }
 
 ViewportWidget::~ViewportWidget() {
+  saliencyJob_.waitForFinished();
   makeCurrent();
   stroke_.reset();
   document_.reset();
+  saliency_.reset();
   model_.reset();
   library_.reset();
   context_.reset();
@@ -146,6 +159,10 @@ void ViewportWidget::initializeGL() {
     library_ = std::make_unique<gpu::BrushLibrary>(
         gpu::BrushCatalog::defaultSearchPath(OCTACLAY_SOURCE_BRUSHES));
     model_ = std::make_unique<gpu::ModelRenderer>();
+    const QString renderer = QString::fromLatin1(
+        reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER)));
+    saliencyOnCpu_ = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                     renderer.contains("SwiftShader");
     materials_.scan(gpu::MaterialCatalog::defaultSearchPath(
         std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "materials"));
     library_->engine().setMaterials(materials_);
@@ -215,13 +232,18 @@ bool ViewportWidget::uploadDocument(core::Document document) {
     divisor_ = std::min(divisor_, std::max(1, n / 2));
     model_->setLevel(n, divisor_);
     model_->refreshAllNormals(*document_);
+    model_->setLodMesh({}); // the previous document's LOD is not this one's
+    pendingLod_.reset();
   } catch (const std::exception& e) {
     fail(QStringLiteral("Could not load the model onto the GPU: %1").arg(e.what()));
     return false;
   }
   history_.clear();
+  surfaceEdited();
+  refreshSaliency();
   resetCamera();
   emit statsChanged();
+  emit surfaceChanged();
   return true;
 }
 
@@ -272,8 +294,107 @@ void ViewportWidget::setShowDiffuse(bool show) {
   showDiffuse_ = show;
   update();
 }
+void ViewportWidget::setLodDisplay(int display) {
+  lodDisplay_ = std::clamp(display, 0, 2);
+  applyLodDisplay();
+  update();
+}
+
+void ViewportWidget::applyLodDisplay() {
+  const bool sideBySide = lodDisplay_ == 2;
+  renderer_->SetViewport(0, 0, sideBySide ? 0.5 : 1.0, 1);
+  if (sideBySide && !renderWindow_->HasRenderer(lodRenderer_))
+    renderWindow_->AddRenderer(lodRenderer_);
+  else if (!sideBySide && renderWindow_->HasRenderer(lodRenderer_))
+    renderWindow_->RemoveRenderer(lodRenderer_);
+}
+
+void ViewportWidget::setLodMesh(std::shared_ptr<const core::LodMesh> lod) {
+  pendingLod_ = std::move(lod);
+  update();
+}
+
+long long ViewportWidget::lodTriangles() const {
+  return model_ ? model_->lodTriangles() : 0;
+}
+
+std::shared_ptr<const core::GeometryImage> ViewportWidget::positionsSnapshot() const {
+  if (!hasDocument()) return nullptr;
+  return std::make_shared<const core::GeometryImage>(document().positions);
+}
+
+void ViewportWidget::setSaliencyWanted(bool wanted) {
+  saliencyWanted_ = wanted;
+  if (!wanted || !saliencyStale_ || !document_) return;
+  makeCurrent();
+  refreshSaliency();
+  doneCurrent();
+  update();
+  emit surfaceChanged();
+}
+
+void ViewportWidget::surfaceEdited() {
+  saliencyStale_ = true;
+  ++surfaceVersion_;
+}
+
+void ViewportWidget::refreshSaliency() {
+  if (!saliencyWanted_ || !saliencyStale_ || !document_ || !model_) return;
+  if (saliencyOnCpu_) {
+    if (saliencyJob_.isRunning()) return; // cpuSaliencyFinished starts the next one
+    auto image = std::make_shared<core::GeometryImage>(document_->document().positions);
+    saliencyJobVersion_ = surfaceVersion_;
+    saliencyJob_.setFuture(QtConcurrent::run([image] {
+      std::vector<float> values;
+      try {
+        core::computeSaliency(*image);
+      } catch (const std::exception&) {
+        return values; // empty: nothing written, the saliency stays stale
+      }
+      values.reserve(image->texelCount());
+      for (const core::Vec4f& t : image->texels())
+        values.push_back(t.w);
+      return values;
+    }));
+    return;
+  }
+  try {
+    if (!saliency_) saliency_ = std::make_unique<gpu::SaliencyPass>();
+    saliency_->run(*document_);
+    saliencyStale_ = false;
+  } catch (const std::exception& e) {
+    fail(QStringLiteral("Could not compute the saliency: %1").arg(e.what()));
+  }
+}
+
+void ViewportWidget::cpuSaliencyFinished() {
+  if (!document_) return;
+  const std::vector<float> values = saliencyJob_.result();
+  makeCurrent();
+  if (saliencyJobVersion_ == surfaceVersion_ &&
+      values.size() == document_->document().positions.texelCount()) {
+    try {
+      document_->writeSaliency(values);
+      saliencyStale_ = false;
+    } catch (const std::exception& e) {
+      fail(QStringLiteral("Could not store the saliency: %1").arg(e.what()));
+    }
+  } else if (saliencyJobVersion_ != surfaceVersion_ && !stroke_) {
+    refreshSaliency(); // the surface changed meanwhile (a stroke's end starts its own)
+  }
+  doneCurrent();
+  if (!saliencyStale_) {
+    update();
+    emit surfaceChanged(); // a salient LOD is regenerated with it
+  }
+}
+
+QRectF ViewportWidget::modelRect() const {
+  return {0, 0, lodDisplay_ == 2 ? width() / 2.0 : double(width()), double(height())};
+}
+
 void ViewportWidget::setPreview(int channel) {
-  preview_ = std::clamp(channel, 0, 5);
+  preview_ = std::clamp(channel, 0, 6);
   update();
 }
 
@@ -324,6 +445,7 @@ ViewportStats ViewportWidget::stats() const {
     s.n = document().size();
     s.fullTriangles = 2LL * s.n * s.n;
     s.displayedTriangles = model_ && document_ ? model_->displayedTriangles() : 0;
+    if (lodDisplay_ == 1 && lodTriangles() > 0) s.displayedTriangles = lodTriangles();
   }
   return s;
 }
@@ -379,26 +501,32 @@ std::optional<gpu::BrushManifest> ViewportWidget::prepareBrush(const std::string
 
 std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   if (!document_ || width() <= 0 || height() <= 0) return std::nullopt;
+  // Side by side, both halves show the model through one camera: the right half picks as the
+  // left does.
+  const QRectF view = modelRect();
+  if (p.x() >= view.width()) p.rx() -= view.width();
   vtkCamera* c = renderer_->GetActiveCamera();
   core::Camera camera;
   camera.eye = toVec(c->GetPosition());
   camera.target = toVec(c->GetFocalPoint());
   camera.up = toVec(c->GetViewUp());
   camera.fovYDegrees = static_cast<float>(c->GetViewAngle());
-  const core::Ray ray = core::cameraRay(camera, width(), height(), static_cast<float>(p.x()),
-                                        static_cast<float>(p.y()));
+  const core::Ray ray =
+      core::cameraRay(camera, static_cast<int>(view.width()), static_cast<int>(view.height()),
+                      static_cast<float>(p.x()), static_cast<float>(p.y()));
   return core::pickRay(document_->document().positions, document_->bounds(), ray);
 }
 
 QPointF ViewportWidget::project(core::Vec3f p) const {
   vtkCamera* c = renderer_->GetActiveCamera();
-  const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
+  const QRectF view = modelRect(); // side by side: where it appears in the left half
+  const double aspect = view.height() > 0 ? view.width() / view.height() : 1.0;
   vtkMatrix4x4* m = c->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
   const double in[4] = {p.x, p.y, p.z, 1.0};
   double out[4];
   m->MultiplyPoint(in, out);
   const double x = out[0] / out[3], y = out[1] / out[3];
-  return {(x * 0.5 + 0.5) * width(), (0.5 - y * 0.5) * height()};
+  return {(x * 0.5 + 0.5) * view.width(), (0.5 - y * 0.5) * view.height()};
 }
 
 void ViewportWidget::drawModel(vtkRenderer* r) {
@@ -430,7 +558,11 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(GL_BACK);
   try {
-    model_->draw(*document_, view);
+    const bool lod = r == lodRenderer_.Get() || (lodDisplay_ == 1 && model_->lodTriangles() > 0);
+    if (lod)
+      model_->drawLod(*document_, view);
+    else
+      model_->draw(*document_, view);
   } catch (const std::exception& e) {
     error_ = QString::fromUtf8(e.what());
   }
@@ -455,12 +587,21 @@ void ViewportWidget::paintGL() {
   drainGlErrors();
   const bool dabbed = runQueuedDabs() > 0;
   if (stroke_ && stroke_->ended) finishStroke();
+  if (pendingLod_) {
+    try {
+      model_->setLodMesh(*pendingLod_);
+    } catch (const std::exception& e) {
+      error_ = QString::fromUtf8(e.what());
+    }
+    pendingLod_.reset();
+  }
 
   vtkOpenGLState* state = renderWindow_->GetState();
   state->Reset(); // the engine and Qt changed GL state behind VTK's cache
   state->Push();
   state->vtkglDepthFunc(GL_LEQUAL);
   updateClipping();
+  if (lodDisplay_ == 2) lodRenderer_->ResetCameraClippingRange(prop_->bounds.data());
   renderWindow_->Render();
   state->Pop();
 
@@ -473,6 +614,7 @@ void ViewportWidget::paintGL() {
                                         size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
   state->Reset();
   if (dabbed || stroke_) emit statsChanged();
+  if (dabbed) emit surfaceChanged();
   if (document_) emit framePainted();
 }
 
@@ -566,6 +708,7 @@ int ViewportWidget::runQueuedDabs() {
         strength *= pressure;
       made += stroke_->session->moveTo(sample, radius, stroke_->sign * strength, 1.0f);
     }
+    if (made > 0) surfaceEdited();
     refreshNormalsAround(stroke_->session->takeTouched());
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));
@@ -587,7 +730,9 @@ void ViewportWidget::finishStroke() {
   stroke_.reset();
   if (dabs == 0 || record.tiles.empty()) return;
   history_.record(std::move(record));
+  refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
   emit strokeFinished(QString::fromStdString(label));
+  emit surfaceChanged();
 }
 
 void ViewportWidget::refreshNormalsAround(std::vector<core::TexelRect> rects) {
@@ -632,12 +777,17 @@ bool ViewportWidget::stepHistory(
   const core::Stroke* s = nullptr;
   try {
     s = (history_.*step)(gpu::undoApplier(*document_));
-    if (s) refreshAfterHistory(*s);
+    if (s) {
+      refreshAfterHistory(*s);
+      surfaceEdited();
+      refreshSaliency();
+    }
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));
   }
   doneCurrent();
   update();
+  if (s) emit surfaceChanged();
   return s != nullptr;
 }
 

@@ -3,13 +3,16 @@
 #include "brush_settings.h"
 #include "octaclay/core/document.h"
 #include "octaclay/core/edit_history.h"
+#include "octaclay/core/lod.h"
 #include "octaclay/core/ray_pick.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/material_catalog.h"
 #include "stroke_stabilizer.h"
 
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QOpenGLWidget>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -24,6 +27,7 @@ class BrushLibrary;
 class GlContext;
 class GpuDocument;
 class ModelRenderer;
+class SaliencyPass;
 class StrokeSession;
 } // namespace octaclay::gpu
 
@@ -37,7 +41,7 @@ struct ViewportStats {
   double lastDabMs = 0;       ///< engine time per dab of the last frame that dabbed
   long long dabs = 0;         ///< dabs made since the viewport was created
   int n = 0;                  ///< the document's N
-  long long displayedTriangles = 0, fullTriangles = 0;
+  long long displayedTriangles = 0, fullTriangles = 0; ///< displayed: the LOD's when shown alone
 };
 
 /// The 3D view: a Qt6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (VTK's Qt module is
@@ -72,7 +76,8 @@ public:
   void setPaintTarget(int brushLayer);
   void setShowDiffuse(bool show);
   void setShowMask(bool show);
-  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone.
+  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
+  /// 6 saliency (the positions' alpha) as a heat map.
   void setPreview(int channel);
   /// The materials splat brushes can use (engine order) and those that failed to load.
   QStringList materialIds() const;
@@ -80,6 +85,31 @@ public:
   /// Displays every divisor-th sample (N/divisor a side, clamped to at least 2).
   void setLevelDivisor(int divisor);
   int levelDivisor() const { return divisor_; }
+
+  /// What the view shows: the full resolution (0), the level of detail setLodMesh gave (1, the
+  /// full resolution until there is one), or both side by side (2: full resolution left, LOD
+  /// right, one camera; either half sculpts).
+  void setLodDisplay(int display);
+  int lodDisplay() const { return lodDisplay_; }
+  /// The LOD to show (uploaded at the next frame).
+  void setLodMesh(std::shared_ptr<const core::LodMesh> lod);
+  /// Triangles of the LOD the view draws (0 until one was uploaded).
+  long long lodTriangles() const;
+  /// A copy of the current positions (xyz and saliency), or null without a document.
+  std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
+  /// While wanted (the saliency heat map, a salient LOD), the positions' alpha holds the
+  /// saliency of the current surface: recomputed if stale, and after each stroke, undo, redo and
+  /// new document — on the GPU (gpu::SaliencyPass) at once, or with the CPU reference on a
+  /// worker thread (see setSaliencyOnCpu), surfaceChanged() telling when it is in.
+  void setSaliencyWanted(bool wanted);
+  /// Whether the positions' alpha is the saliency of the current surface.
+  bool saliencyCurrent() const { return !saliencyStale_; }
+  /// Computes the saliency with core::computeSaliency off the GUI thread instead of on the GPU.
+  /// On by default where GL is a software rasterizer (llvmpipe): there the GPU pass is CPU work
+  /// that would hold the GUI thread for seconds at N = 1024, the threaded CPU reference less and
+  /// in the background.
+  void setSaliencyOnCpu(bool onCpu) { saliencyOnCpu_ = onCpu; }
+  bool saliencyOnCpu() const { return saliencyOnCpu_; }
 
   bool canUndo() const { return history_.canUndo(); }
   bool canRedo() const { return history_.canRedo(); }
@@ -120,6 +150,8 @@ signals:
   void errorOccurred(const QString& message);
   /// A frame showing the document was drawn.
   void framePainted();
+  /// The surface changed (dabs, a finished stroke, undo, redo, a new document).
+  void surfaceChanged();
 
 protected:
   void initializeGL() override;
@@ -154,16 +186,32 @@ private:
   bool stepHistory(bool (core::EditHistory::*can)() const,
                    const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&));
   float diagonal() const;
+  /// Recomputes the saliency if wanted and stale (GL current), or starts the CPU job.
+  void refreshSaliency();
+  void cpuSaliencyFinished();
+  /// The surface changed: the saliency is stale.
+  void surfaceEdited();
+  /// The part of the widget one model is drawn in (logical pixels): the left half side by side.
+  QRectF modelRect() const;
+  void applyLodDisplay();
   void updateClipping();
   void fail(const QString& message);
 
   vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
   vtkNew<vtkRenderer> renderer_;
   vtkNew<ModelProp> prop_;
+  vtkNew<vtkRenderer> lodRenderer_; // the right half, side by side
+  vtkNew<ModelProp> lodProp_;
 
   std::unique_ptr<gpu::GlContext> context_;
   std::unique_ptr<gpu::BrushLibrary> library_;
   std::unique_ptr<gpu::ModelRenderer> model_;
+  std::unique_ptr<gpu::SaliencyPass> saliency_;
+  bool saliencyWanted_ = false, saliencyStale_ = true, saliencyOnCpu_ = false;
+  std::uint64_t surfaceVersion_ = 0, saliencyJobVersion_ = 0; // the job's result fits its version
+  QFutureWatcher<std::vector<float>> saliencyJob_;
+  int lodDisplay_ = 0;
+  std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
   std::unique_ptr<gpu::GpuDocument> document_;
   std::optional<core::Document> pending_;
   std::map<std::string, std::string> loadedVariant_; // brush id → what was compiled

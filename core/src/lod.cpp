@@ -16,6 +16,7 @@
 namespace octaclay::core {
 namespace {
 
+// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB (bench_lod).
 constexpr int kRefitIterations = 2;
 
 // The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
@@ -55,10 +56,6 @@ Sample seamMidpoint(int m, SeamClass c) {
   }
 }
 
-std::size_t targetTriangleCount(std::size_t target) {
-  return target;
-}
-
 void checkOptions(const GeometryImage& image, const LodOptions& options) {
   requireValidSize(image.size());
   if (options.size != 0) detail::requireLodSize(image.size(), options.size);
@@ -82,8 +79,7 @@ int chooseSize(int n, const LodOptions& options) {
   if (options.size != 0) return options.size;
   if (options.targetTriangles == 0) return n / 2;
   int m = 2;
-  while (m < n / 2 &&
-         2 * std::size_t(m) * std::size_t(m) < targetTriangleCount(options.targetTriangles))
+  while (m < n / 2 && 2 * std::size_t(m) * std::size_t(m) < options.targetTriangles)
     m *= 2;
   return std::min(n / 2, m * options.oversample);
 }

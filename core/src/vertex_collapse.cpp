@@ -190,8 +190,17 @@ CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOp
   decimater.add(quadric);
   decimater.add(guard);
   if (options.maxError > 0) {
+    // ModQuadric weights each plane by its triangle's area; dividing by the mean area gives
+    // the quadric the scale of a sum of squared distances, as the fast engine uses.
+    double totalArea = 0;
+    for (const auto& t : input.triangles) {
+      const Vec3f p0 = input.positions[t[0]];
+      totalArea +=
+          0.5 * double(length(cross(input.positions[t[1]] - p0, input.positions[t[2]] - p0)));
+    }
+    const double meanArea = totalArea / double(std::max<std::size_t>(1, input.triangles.size()));
     const double bound = options.maxError * boundingBox(input).diagonal();
-    decimater.module(quadric).set_max_err(bound * bound, false);
+    decimater.module(quadric).set_max_err(bound * bound * meanArea, false);
   } else {
     decimater.module(quadric).unset_max_err();
   }

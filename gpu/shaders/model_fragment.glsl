@@ -4,6 +4,7 @@
 // (DIFFUSE_TEXTURE, FEATURE_TEXTURE, MASK_TINT, REFLECTION, PREVIEW n): a software rasterizer
 // pays for every texture read a shader contains, taken or not, so unpainted layers are
 // uniforms and unused reads are compiled out.
+uniform sampler2D u_positions;   // w: saliency in [0, 1] (PREVIEW 6)
 uniform sampler2D u_normals;
 uniform sampler2D u_diffuse;
 uniform sampler2D u_mask;
@@ -66,6 +67,13 @@ void main() {
   colour = vec3(reflectivity);
 #elif PREVIEW == 5
   colour = vec3(mask);
+#elif PREVIEW == 6
+  // Heat map: blue (0) through cyan, green and yellow to red (1), shaded lightly so the form
+  // still reads.
+  float s = clamp(texture(u_positions, v_uv).a, 0.0, 1.0);
+  vec3 heat = clamp(vec3(4.0 * s - 2.0, s < 0.5 ? 4.0 * s : 4.0 - 4.0 * s, 2.0 - 4.0 * s),
+                    0.0, 1.0);
+  colour = heat * (0.55 + 0.45 * lambert);
 #endif
   if (u_showBrush) {
     float d = length(v_position - u_brushCentre);

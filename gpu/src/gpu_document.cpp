@@ -1,5 +1,6 @@
 #include "octaclay/gpu/gpu_document.h"
 
+#include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <algorithm>
@@ -164,6 +165,18 @@ float* GpuDocument::mirrorData(BrushLayer layer) {
       l->texels[k] = l->fill[k % c];
   }
   return l->texels.data();
+}
+
+void GpuDocument::writeSaliency(std::span<const float> saliency) {
+  std::span<core::Vec4f> texels = document_.positions.texels();
+  if (saliency.size() != texels.size())
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "saliency has " + std::to_string(saliency.size()) + " values for " +
+                          std::to_string(texels.size()) + " samples");
+  for (std::size_t k = 0; k < texels.size(); ++k)
+    texels[k].w = saliency[k];
+  const int side = document_.positions.side();
+  push(BrushLayer::Positions, {0, 0, side, side}); // the mirror's texels, now with the saliency
 }
 
 core::TileApplier undoApplier(GpuDocument& document) {

@@ -31,6 +31,15 @@ void bindTexture(int unit, const Texture& texture) {
   glBindTexture(GL_TEXTURE_2D, texture.id());
 }
 
+// Leaves no program or texture of a draw bound (VTK caches what it believes is bound).
+void unbindAfterDraw() {
+  for (int unit = 5; unit >= 0; --unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glUseProgram(0);
+}
+
 } // namespace
 
 ModelRenderer::ModelRenderer()
@@ -43,9 +52,9 @@ ModelRenderer::ModelRenderer()
 }
 
 const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
-                                          bool reflection, int preview) {
+                                          bool reflection, int preview, bool lodVertices) {
   const int key = (diffuseTexture ? 1 : 0) | (featureTexture ? 2 : 0) | (maskTint ? 4 : 0) |
-                  (reflection ? 8 : 0) | (preview << 4);
+                  (reflection ? 8 : 0) | (preview << 4) | (lodVertices ? 1 << 8 : 0);
   const auto found = drawPrograms_.find(key);
   if (found != drawPrograms_.end()) return found->second;
   std::string source = "#version 430 core\n";
@@ -56,11 +65,16 @@ const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTextu
   source += "#define PREVIEW " + std::to_string(preview) + "\n";
   source += detail::builtInShader("model_fragment.glsl");
   return drawPrograms_
-      .emplace(key, Program("model", detail::builtInShader("model_vertex.glsl"), source))
+      .emplace(key, Program("model",
+                            detail::builtInShader(lodVertices ? "model_lod_vertex.glsl"
+                                                              : "model_vertex.glsl"),
+                            source))
       .first->second;
 }
 
 ModelRenderer::~ModelRenderer() {
+  if (lodBuffer_) glDeleteBuffers(1, &lodBuffer_);
+  if (lodVertexArray_) glDeleteVertexArrays(1, &lodVertexArray_);
   if (indexBuffer_) glDeleteBuffers(1, &indexBuffer_);
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
@@ -147,10 +161,9 @@ void ModelRenderer::refreshAllNormals(GpuDocument& document) {
   refreshNormals(document, std::span(&all, 1));
 }
 
-void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
-  if (indexCount_ == 0 || n_ != document.size())
-    throw GlError("the model renderer's level was not set for this document");
-  if (normals_.width() != n_ + 1) refreshAllNormals(document);
+const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView& view,
+                                          bool lodVertices) {
+  if (normals_.width() != document.size() + 1) refreshAllNormals(document);
   const core::Document& d = document.document();
   const bool diffuseTexture = view.showDiffuse && !d.diffuse.uniform();
   const bool featureTexture = !d.feature.uniform();
@@ -159,7 +172,7 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   // Reflection only where something may reflect: a painted feature layer or a reflective fill.
   const bool reflection = environment_.id() != 0 && (featureTexture || d.feature.fill[2] > 0);
   const Program& p = drawVariant(diffuseTexture, featureTexture, maskTint, reflection,
-                                 static_cast<int>(view.preview));
+                                 static_cast<int>(view.preview), lodVertices);
   p.use();
   bindTexture(0, document.texture(BrushLayer::Positions));
   bindTexture(1, normals_);
@@ -179,9 +192,11 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glUniform3f(p.uniform("u_featureFill"), d.feature.fill[0], d.feature.fill[1], d.feature.fill[2]);
   glUniform1f(p.uniform("u_maskFill"), d.mask.fill[0]);
   glUniformMatrix4fv(p.uniform("u_objectToClip"), 1, GL_FALSE, view.objectToClip.data());
-  glUniform1i(p.uniform("u_step"), divisor_);
-  glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
-  glUniform1i(p.uniform("u_imageSide"), n_ + 1);
+  if (!lodVertices) {
+    glUniform1i(p.uniform("u_step"), divisor_);
+    glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
+  }
+  glUniform1i(p.uniform("u_imageSide"), document.size() + 1);
   glUniform3f(p.uniform("u_eye"), view.eye.x, view.eye.y, view.eye.z);
   glUniform1i(p.uniform("u_showBrush"), view.showBrush);
   glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
@@ -189,6 +204,13 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glUniform1f(p.uniform("u_brushRadius"), view.brushRadius);
   glUniform3f(p.uniform("u_brushColour"), view.brushColour[0], view.brushColour[1],
               view.brushColour[2]);
+  return p;
+}
+
+void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
+  if (indexCount_ == 0 || n_ != document.size())
+    throw GlError("the model renderer's level was not set for this document");
+  prepareDraw(document, view, false);
   if (chunksStale_) {
     chunks_->update(document.document().positions);
     chunksStale_ = false;
@@ -206,12 +228,50 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
   glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, starts.data(),
                       static_cast<GLsizei>(counts.size()));
   glBindVertexArray(0);
-  for (int unit = 5; unit >= 0; --unit) {
-    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
-  glUseProgram(0);
+  unbindAfterDraw();
   checkGlError("drawing the model");
+}
+
+void ModelRenderer::setLodMesh(const core::LodMesh& lod) {
+  // Five floats a corner: position, then image coordinates. Seam vertices get each triangle's
+  // own copy of their image coordinates, so no triangle's texture spans the seam.
+  std::vector<float> corners;
+  corners.reserve(lod.mesh.triangles.size() * 15);
+  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const core::Vec3f& p = lod.mesh.positions[lod.mesh.triangles[t][static_cast<std::size_t>(k)]];
+      const core::Vec2f uv =
+          t < lod.cornerUv.size() ? lod.cornerUv[t][static_cast<std::size_t>(k)] : core::Vec2f{};
+      corners.insert(corners.end(), {p.x, p.y, p.z, uv.x, uv.y});
+    }
+  if (!lodVertexArray_) {
+    glGenVertexArrays(1, &lodVertexArray_);
+    glGenBuffers(1, &lodBuffer_);
+    glBindVertexArray(lodVertexArray_);
+    glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float),
+                          reinterpret_cast<const void*>(3 * sizeof(float)));
+    glBindVertexArray(0);
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)),
+               corners.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  checkGlError("uploading the level-of-detail mesh");
+  lodTriangles_ = static_cast<long long>(lod.mesh.triangles.size());
+}
+
+void ModelRenderer::drawLod(GpuDocument& document, const ModelView& view) {
+  if (lodTriangles_ == 0) return;
+  prepareDraw(document, view, true);
+  glBindVertexArray(lodVertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * lodTriangles_));
+  glBindVertexArray(0);
+  unbindAfterDraw();
+  checkGlError("drawing the level-of-detail mesh");
 }
 
 } // namespace octaclay::gpu

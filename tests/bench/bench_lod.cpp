@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <meshoptimizer.h>
@@ -52,6 +53,14 @@ constexpr std::array kFractions = {0.01, 0.05, 0.25};
 using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time of the whole process (all threads), in ms: on a machine shared with other jobs the
+// wall clock counts their time too, the CPU time only ours.
+double processCpuMilliseconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 struct Options {
@@ -116,7 +125,8 @@ TriangleMesh compacted(const std::vector<Vec3f>& positions, const std::vector<un
 
 struct Timed {
   TriangleMesh mesh;
-  double ms = 0;
+  double ms = 0;    // wall clock
+  double cpuMs = 0; // process CPU time
 };
 
 Timed meshopt(const TriangleMesh& full, std::size_t triangles) {
@@ -126,12 +136,14 @@ Timed meshopt(const TriangleMesh& full, std::size_t triangles) {
       indices[3 * t + c] = full.triangles[t][c];
   std::vector<unsigned> out(indices.size());
   const auto start = Clock::now();
+  const double cpu = processCpuMilliseconds();
   const std::size_t count =
       meshopt_simplify(out.data(), indices.data(), indices.size(), &full.positions[0].x,
                        full.positions.size(), sizeof(Vec3f), 3 * triangles, 1.0f, 0, nullptr);
   const double ms = millisecondsSince(start);
+  const double cpuMs = processCpuMilliseconds() - cpu;
   out.resize(count);
-  return {compacted(full.positions, out), ms};
+  return {compacted(full.positions, out), ms, cpuMs};
 }
 
 // OpenMesh 9's TriConnectivity::is_collapse_ok looks a property up by name on every call and
@@ -170,6 +182,7 @@ private:
 Timed openmeshDecimater(const TriangleMesh& full, std::size_t triangles) {
   using Mesh = DecimaterMesh;
   const auto start = Clock::now();
+  const double cpu = processCpuMilliseconds();
   Mesh mesh;
   mesh.reserve(full.positions.size(), full.triangles.size() * 3 / 2, full.triangles.size());
   for (const Vec3f& p : full.positions)
@@ -185,6 +198,7 @@ Timed openmeshDecimater(const TriangleMesh& full, std::size_t triangles) {
   decimater.decimate_to_faces(0, triangles);
   mesh.garbage_collection();
   const double ms = millisecondsSince(start);
+  const double cpuMs = processCpuMilliseconds() - cpu;
   std::vector<Vec3f> positions;
   for (const auto v : mesh.vertices())
     positions.push_back(
@@ -193,24 +207,29 @@ Timed openmeshDecimater(const TriangleMesh& full, std::size_t triangles) {
   for (const auto f : mesh.faces())
     for (const auto v : mesh.fv_range(f))
       indices.push_back(unsigned(v.idx()));
-  return {compacted(positions, indices), ms};
+  return {compacted(positions, indices), ms, cpuMs};
 }
 
 Timed ours(const GeometryImage& image, const LodOptions& options, int runs) {
   Timed best;
-  best.ms = 1e30;
+  best.ms = best.cpuMs = 1e30;
   for (int r = 0; r < runs; ++r) {
     const auto start = Clock::now();
+    const double cpu = processCpuMilliseconds();
     LodMesh lod = generateLod(image, options);
     const double ms = millisecondsSince(start);
-    if (ms < best.ms) best = {std::move(lod.mesh), ms};
+    best.cpuMs = std::min(best.cpuMs, processCpuMilliseconds() - cpu);
+    if (ms < best.ms) {
+      best.ms = ms;
+      best.mesh = std::move(lod.mesh);
+    }
   }
   return best;
 }
 
 struct Verdict {
   std::string mesh, variant;
-  double fraction = 0, decibels = 0, speedup = 0;
+  double fraction = 0, decibels = 0, speedup = 0, cpuSpeedup = 0;
 };
 
 int run(const Options& options) {
@@ -230,10 +249,11 @@ int run(const Options& options) {
     if (std::fgets(line, sizeof line, load)) std::printf("load average at start: %s\n", line);
     std::fclose(load);
   }
-  std::printf("| mesh | N | fraction | method | triangles | ms | RMS %% | Hausdorff %% | PSNR dB | "
-              "x meshopt | dB over meshopt |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | N | fraction | method | triangles | ms | CPU ms | RMS %% | Hausdorff %% | "
+              "PSNR dB | x meshopt | x meshopt (CPU) | dB over meshopt |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::fflush(stdout);
-  double liveMs = -1;
+  double liveMs = -1, liveCpuMs = -1;
   for (const Input& input : inputs) {
     if (!options.meshFilter.empty() && input.name.find(options.meshFilter) == std::string::npos)
       continue;
@@ -267,10 +287,12 @@ int run(const Options& options) {
       const Timed opt = meshopt(full, triangles);
       const SurfaceDistance optDistance = compareSurfaces(full, opt.mesh, distance);
       const auto row = [&](const char* method, const Timed& t, const SurfaceDistance& d) {
-        std::printf("| %s | %d | %g %% | %s | %zu | %.1f | %.4f | %.3f | %.1f | %.1f | %+.1f |\n",
-                    input.name.c_str(), input.n, 100 * fraction, method, t.mesh.triangles.size(),
-                    t.ms, 100 * d.rms, 100 * d.hausdorff, d.psnr, opt.ms / t.ms,
-                    d.psnr - optDistance.psnr);
+        std::printf(
+            "| %s | %d | %g %% | %s | %zu | %.1f | %.1f | %.4f | %.3f | %.1f | %.1f | %.1f | %+.1f "
+            "|\n",
+            input.name.c_str(), input.n, 100 * fraction, method, t.mesh.triangles.size(), t.ms,
+            t.cpuMs, 100 * d.rms, 100 * d.hausdorff, d.psnr, opt.ms / t.ms, opt.cpuMs / t.cpuMs,
+            d.psnr - optDistance.psnr);
         std::fflush(stdout);
       };
       row("ours (salient-point)", our, ourDistance);
@@ -298,28 +320,31 @@ int run(const Options& options) {
         row("OpenMesh Decimater", om, compareSurfaces(full, om.mesh, distance));
       }
       verdicts.push_back({input.name, "oversample 1", fraction, ourDistance.psnr - optDistance.psnr,
-                          opt.ms / our.ms});
+                          opt.ms / our.ms, opt.cpuMs / our.cpuMs});
       verdicts.push_back({input.name, "oversample 2", fraction,
-                          fineDistance.psnr - optDistance.psnr, opt.ms / fine.ms});
+                          fineDistance.psnr - optDistance.psnr, opt.ms / fine.ms,
+                          opt.cpuMs / fine.cpuMs});
     }
     if (input.n == 1024) {
       LodOptions live;
       live.targetTriangles = kLiveTriangles;
-      liveMs = ours(image, live, 9).ms;
+      const Timed t = ours(image, live, 9);
+      liveMs = t.ms;
+      liveCpuMs = t.cpuMs;
     }
   }
   std::printf("\n");
   for (const Verdict& v : verdicts) {
     const bool pass = v.decibels >= kDecibelsAboveMeshopt && v.speedup >= kSpeedupOverMeshopt;
     std::printf("%s %s %g %% (%s): %+.1f dB over meshopt_simplify (target >= %+.0f), %.1fx "
-                "faster (target >= %.0fx)\n",
+                "faster (target >= %.0fx; %.1fx in CPU time)\n",
                 pass ? "PASS" : "MISS", v.mesh.c_str(), 100 * v.fraction, v.variant.c_str(),
-                v.decibels, kDecibelsAboveMeshopt, v.speedup, kSpeedupOverMeshopt);
+                v.decibels, kDecibelsAboveMeshopt, v.speedup, kSpeedupOverMeshopt, v.cpuSpeedup);
   }
   if (liveMs >= 0)
-    std::printf("%s live LOD: generateLod N = 1024, %zu-triangle target: %.1f ms (target <= %.0f "
-                "ms)\n",
-                liveMs <= kLiveMilliseconds ? "PASS" : "MISS", kLiveTriangles, liveMs,
+    std::printf("%s live LOD: generateLod N = 1024, %zu-triangle target: %.1f ms wall, %.1f ms CPU "
+                "over its threads (target <= %.0f ms)\n",
+                liveMs <= kLiveMilliseconds ? "PASS" : "MISS", kLiveTriangles, liveMs, liveCpuMs,
                 kLiveMilliseconds);
   return 0;
 }

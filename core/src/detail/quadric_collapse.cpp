@@ -49,6 +49,14 @@ public:
     deleted_.assign(t, 0);
     stamp_.assign(v, 0);
     stamp2_.assign(v, 0);
+    // Planes weighted by area / mean area: the order is that of area-weighted quadrics, the
+    // scale that of unweighted ones (sums of squared distances), which maxError is given in.
+    double totalArea = 0;
+    for (const auto& tri : triangles_) {
+      const Vec3f p0 = positions_[tri[0]];
+      totalArea += 0.5 * double(length(cross(positions_[tri[1]] - p0, positions_[tri[2]] - p0)));
+    }
+    const double areaScale = totalArea > 0 ? double(t) / totalArea : 1.0;
     for (std::size_t k = 0; k < t; ++k) {
       const auto& tri = triangles_[k];
       const Vec3f p0 = positions_[tri[0]];
@@ -59,7 +67,7 @@ public:
       if (twiceArea <= 0) continue;
       const double d = -double(dot(u, p0));
       Quadric q;
-      q.addPlane(u.x, u.y, u.z, d, 0.5 * twiceArea);
+      q.addPlane(u.x, u.y, u.z, d, 0.5 * twiceArea * areaScale);
       for (const std::uint32_t c : tri)
         quadrics_[c] += q;
     }

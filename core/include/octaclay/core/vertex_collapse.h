@@ -23,8 +23,10 @@ struct VertexCollapseOptions {
   /// collapse, so the result has the even count nearest above the target unless a bound
   /// below stops it first.
   std::size_t targetTriangles = 0;
-  /// Refuse collapses whose quadric error (Garland–Heckbert, sum of squared distances to the
-  /// planes merged into the vertex) exceeds (maxError × bounding-box diagonal)²; 0 = no bound.
+  /// Refuse collapses whose quadric error exceeds (maxError × bounding-box diagonal)²; 0 = no
+  /// bound. The error is Garland–Heckbert's, planes weighted by their triangle's area / the
+  /// input's mean triangle area: on an even mesh, the sum of squared distances from the kept
+  /// vertex to the planes of the triangles merged into it (both engines).
   double maxError = 0;
   /// Refuse a collapse that would turn any triangle's normal more than this away from the
   /// normal of the input triangle it is (CollapsedMesh::inputTriangle), or leave it without

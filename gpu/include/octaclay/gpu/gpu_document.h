@@ -44,6 +44,10 @@ public:
 
   static int channels(BrushLayer layer);
 
+  /// Writes saliency ((N+1)² values, row-major) into the positions' alpha of the mirror and the
+  /// texture; xyz stay as they are. Throws core::Error(InvalidArgument) for a wrong count.
+  void writeSaliency(std::span<const float> saliency);
+
 private:
   static std::size_t index(BrushLayer layer) { return static_cast<std::size_t>(layer); }
   core::Layer* mirrorLayer(BrushLayer layer);

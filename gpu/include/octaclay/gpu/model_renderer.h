@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/image_io.h"
+#include "octaclay/core/lod.h"
 #include "octaclay/core/tile_bounds.h"
 #include "octaclay/core/vec.h"
 #include "octaclay/gpu/gl_objects.h"
@@ -26,8 +27,9 @@ struct ModelView {
   core::Vec3f brushCentre;
   float brushRadius = 0;                     ///< object units
   std::array<float, 3> brushColour{1, 1, 1}; ///< outline colour
-  /// What the pixels show: the shaded model, or one channel alone.
-  enum class Preview { Shaded, Diffuse, HeightDetail, Specular, Reflectivity, Mask };
+  /// What the pixels show: the shaded model, one channel alone, or the saliency (the
+  /// positions' alpha) as a heat map.
+  enum class Preview { Shaded, Diffuse, HeightDetail, Specular, Reflectivity, Mask, Saliency };
   Preview preview = Preview::Shaded;
 };
 
@@ -67,10 +69,22 @@ public:
   /// Triangles the last draw() sent to the rasterizer (after chunk culling).
   long long drawnTriangles() const { return drawnTriangles_; }
 
+  /// Replaces the level-of-detail mesh drawLod() draws: a vertex buffer of its triangles'
+  /// corners with their image coordinates (lod.cornerUv), so it is shaded per pixel from the
+  /// full-resolution normal map and layers. Throws GlError.
+  void setLodMesh(const core::LodMesh& lod);
+  /// Triangles of the mesh setLodMesh() gave (0 before).
+  long long lodTriangles() const { return lodTriangles_; }
+  /// Draws the LOD mesh as draw() draws the level: same shading, layers and previews, into the
+  /// bound framebuffer with the current viewport. Does nothing while there is no LOD mesh.
+  void drawLod(GpuDocument& document, const ModelView& view);
+
 private:
   /// The draw program for one state, compiled on first use. Throws GlError.
   const Program& drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
-                             bool reflection, int preview);
+                             bool reflection, int preview, bool lodVertices);
+  /// Picks draw()'s or drawLod()'s program for view and sets its textures and uniforms.
+  const Program& prepareDraw(GpuDocument& document, const ModelView& view, bool lodVertices);
 
   Program normalProgram_;
   std::map<int, Program> drawPrograms_;
@@ -81,6 +95,8 @@ private:
   long long indexCount_ = 0, drawnTriangles_ = 0;
   std::unique_ptr<detail::ModelChunks> chunks_;
   bool chunksStale_ = true;
+  unsigned lodVertexArray_ = 0, lodBuffer_ = 0;
+  long long lodTriangles_ = 0;
 };
 
 } // namespace octaclay::gpu
