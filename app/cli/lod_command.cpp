@@ -51,7 +51,7 @@ bool saliencyIsEmpty(const core::GeometryImage& image) {
 
 Command addLodCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, method = "salient-point", normalMap, space = "object";
+    std::string input, output, method = "salient-point", normalMap, space;
     long long size = 0, triangles = 0, mapSize = 0;
     double maxError = 0;
     std::size_t samples = 200'000;
@@ -78,8 +78,8 @@ Command addLodCommand(CLI::App& app) {
                   "Also write the baked normal map here: .png (8-bit) or .exr (float)");
   sub->add_option("--normal-space", opt->space,
                   "object (the thesis's choice: full-resolution normals) or tangent (relative "
-                  "to the LOD's glTF tangent frame; what glTF viewers read as normalTexture)")
-      ->capture_default_str();
+                  "to the LOD's glTF tangent frame; what glTF viewers read as normalTexture). "
+                  "Default: object for .obj, tangent for .glb");
   sub->add_option("--map-size", opt->mapSize,
                   "Normal map resolution R (R x R texels, 2 to 8192). Default: N");
   sub->add_option("--samples", opt->samples,
@@ -103,6 +103,8 @@ Command addLodCommand(CLI::App& app) {
               throw Error(ErrorKind::InvalidArgument,
                           "unknown --method '" + opt->method +
                               "': use salient-point, salient-average, point or average");
+            // glTF viewers read only tangent-space maps, so a .glb gets one unless told.
+            if (opt->space.empty()) opt->space = ext == ".glb" ? "tangent" : "object";
             const std::optional<core::NormalMapSpace> space = core::parseNormalMapSpace(opt->space);
             if (!space)
               throw Error(ErrorKind::InvalidArgument,

@@ -162,6 +162,7 @@ void CliLodTest::triangleTargetAlonePicksTheSize() {
   RUN_JSON(lod, "lod", document_, "--triangles", "200", "-o", file("target.glb"), "--json");
   QCOMPARE(lod["size"].toInt(), 16); // the smallest M with 2M² ≥ 200
   QVERIFY(std::abs(lod["triangles"].toDouble() - 200) <= 2);
+  QCOMPARE(lod["normal_space"].toString(), QString("tangent")); // what glTF viewers read
 }
 
 void CliLodTest::humanOutputGivesTheFigures() {
