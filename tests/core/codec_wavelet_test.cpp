@@ -294,6 +294,7 @@ void CodecWaveletTest::rateAtPsnr() {
   if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_MODELS"))
     names = qEnvironmentVariable("OCTACLAY_WAVELET_MODELS").split(',');
   for (const QString& name : names) {
+    if (name == "none") continue;
     const FloatImage image = load(name);
     const TriangleMesh reference = extractMesh(toGeometryImage(image));
     const std::filesystem::path obj = "/tmp/wavelet-cache/" + name.toStdString() + ".grid.obj";
@@ -313,14 +314,26 @@ void CodecWaveletTest::rateAtPsnr() {
       measure(qEnvironmentVariable("OCTACLAY_WAVELET_BOUND").toDouble());
       continue;
     }
-    // Bisect log(bound) for 95 dB.
+    // Bisect log(bound) for 95 dB, then interpolate the rate between the two closest points.
     double lo = 1e-6, hi = 1e-3; // lo reaches 95 dB, hi does not
-    for (int k = 0; k < 7; ++k) {
+    std::pair<double, double> atLo{0, 0}, atHi{0, 0};
+    for (int k = 0; k < 6; ++k) {
       const double mid = std::sqrt(lo * hi);
-      (measure(mid).first >= 95.0 ? lo : hi) = mid;
+      const auto point = measure(mid);
+      if (point.first >= 95.0) {
+        lo = mid;
+        atLo = point;
+      } else {
+        hi = mid;
+        atHi = point;
+      }
     }
-    const auto [psnr, bpv] = measure(lo);
-    qInfo("%-14s 95 dB: %.3f bpv (%.2f dB, bound %.3g)", qPrintable(name), bpv, psnr, lo);
+    if (atLo.second == 0) atLo = measure(lo);
+    if (atHi.second == 0) atHi = measure(hi);
+    const double t = (95.0 - atHi.first) / (atLo.first - atHi.first);
+    qInfo("%-14s 95 dB: %.3f bpv (between %.3f bpv at %.2f dB and %.3f bpv at %.2f dB)",
+          qPrintable(name), atHi.second + t * (atLo.second - atHi.second), atLo.second, atLo.first,
+          atHi.second, atHi.first);
   }
   if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_NO_TIMING")) return;
   const FloatImage big = blob(1024);

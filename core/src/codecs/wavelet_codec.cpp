@@ -12,8 +12,10 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <limits>
 #include <string>
 #include <thread>
@@ -161,8 +163,7 @@ struct Errors {
 
 class ErrorMeter {
 public:
-  ErrorMeter(const std::vector<std::vector<float>>& original, int n)
-      : original_(original), n_(n) {
+  ErrorMeter(const std::vector<std::vector<float>>& original, int n) : original_(original), n_(n) {
     if (original.size() < static_cast<std::size_t>(detail::kVectorChannels)) return;
     GeometryImage image(n);
     auto texels = image.texels();
@@ -310,6 +311,7 @@ void requireDecodable(int n, int channels) {
 // byte to spare, unless `prefix`).
 FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channels,
                         std::size_t limit, bool prefix) {
+  const std::clock_t startCpu = std::clock();
   requireDecodable(n, channels);
   Reader in(stream.first(std::min(limit, stream.size())));
   const Header header = readHeader(in, n, channels);
@@ -357,8 +359,13 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   }
   if (!prefix && in.remaining() != 0) invalid("bytes after the last band");
 
+  const std::clock_t bandsCpu = std::clock();
   std::vector<std::vector<float>> rebuilt;
   detail::rebuild(planes, header.channels, rebuilt);
+  if (std::getenv("WQ_DEBUG"))
+    std::fprintf(stderr, "cpu: bands %.1f ms, rebuild %.1f ms\n",
+                 double(bandsCpu - startCpu) * 1000.0 / CLOCKS_PER_SEC,
+                 double(std::clock() - bandsCpu) * 1000.0 / CLOCKS_PER_SEC);
   FloatImage image{n, channels,
                    std::vector<float>(sampleCount(n) * static_cast<std::size_t>(channels))};
   for (std::size_t c = 0; c < rebuilt.size(); ++c)
@@ -405,7 +412,11 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     out.f32(cc.dc);
   }
   for (const Band& band : bandOrder(n)) {
-    const std::vector<std::uint8_t> bytes = detail::encodeBand(planes, band.level, band.orientation);
+    const std::vector<std::uint8_t> bytes =
+        detail::encodeBand(planes, band.level, band.orientation);
+    if (std::getenv("WQ_DEBUG"))
+      std::fprintf(stderr, "level %d orient %d: %zu bytes\n", band.level, int(band.orientation),
+                   bytes.size());
     out.u32(static_cast<std::uint32_t>(bytes.size()));
     out.bytes.insert(out.bytes.end(), bytes.begin(), bytes.end());
   }
