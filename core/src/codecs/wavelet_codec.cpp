@@ -222,7 +222,7 @@ double excess(const Errors& e, double target) {
 
 // Tangential steps are this many times the normal one.
 double tangentStepRatio() {
-  static const double ratio = std::getenv("WQ_T") ? std::atof(std::getenv("WQ_T")) : 3.0;
+  static const double ratio = std::getenv("WQ_T") ? std::atof(std::getenv("WQ_T")) : 4.0;
   return ratio;
 }
 
