@@ -128,9 +128,19 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
         };
         const std::int32_t left = value(i - d, j), up = value(i, j - d);
         const std::int32_t parent = g.hasParent ? q[index(parentCoordinate(i, s, n), pj)] : 0;
+        int parents = 2 * std::abs(parent);
+        if (g.hasParent) {
+          // The parent's own band neighbours, coarser and all known.
+          const int pi = parentCoordinate(i, s, n), pd = 4 * s;
+          const auto parentAt = [&](int ii, int jj) -> int {
+            return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : std::abs(q[index(ii, jj)]);
+          };
+          parents += (parentAt(pi - pd, pj) + parentAt(pi + pd, pj) + parentAt(pi, pj - pd) +
+                      parentAt(pi, pj + pd) + 1) / 2;
+        }
         const int m = 2 * (std::abs(left) + std::abs(up)) + std::abs(value(i - d, j - d)) +
                       std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
-                      std::abs(value(i, j - 2 * d)) + 2 * std::abs(parent);
+                      std::abs(value(i, j - 2 * d)) + parents;
         contexts[static_cast<std::size_t>(c)] = m;
         if (c < vectorChannels) vectorContext += m;
         signContexts[static_cast<std::size_t>(c)] =
