@@ -136,7 +136,8 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
             return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : std::abs(q[index(ii, jj)]);
           };
           parents += (parentAt(pi - pd, pj) + parentAt(pi + pd, pj) + parentAt(pi, pj - pd) +
-                      parentAt(pi, pj + pd) + 1) / 2;
+                      parentAt(pi, pj + pd) + 1) /
+                     2;
         }
         const int m = 2 * (std::abs(left) + std::abs(up)) + std::abs(value(i - d, j - d)) +
                       std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
