@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <vector>
@@ -113,6 +114,36 @@ std::pair<double, double> positionErrors(const FloatImage& original, const Float
     count += static_cast<std::size_t>(end - begin);
   });
   return {std::sqrt(normal / double(count)), std::sqrt(tangent / double(count))};
+}
+
+// The sculpted sphere of the codec benchmark (tests/bench/bench_codecs.cpp, branch
+// compresstools): Gaussian bumps and dents, a sharp equatorial ridge, ripples near one pole.
+FloatImage sculptedSphere(int n) {
+  struct Bump {
+    Vec3f centre;
+    float height, width;
+  };
+  const Bump bumps[] = {{{0.6f, 0.6f, 0.53f}, 0.25f, 0.35f},
+                        {{-0.8f, 0.2f, 0.56f}, -0.15f, 0.25f},
+                        {{0.1f, -0.9f, -0.42f}, 0.18f, 0.15f},
+                        {{-0.3f, -0.3f, -0.9f}, 0.3f, 0.4f},
+                        {{0.95f, -0.1f, 0.3f}, 0.08f, 0.08f}};
+  GeometryImage image(n);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const Vec3f d = octahedralDirection(n, i, j);
+      float r = 1;
+      for (const Bump& b : bumps) {
+        const Vec3f e = d - normalize(b.centre);
+        r += b.height * std::exp(-dot(e, e) / (b.width * b.width));
+      }
+      r += 0.06f * std::max(0.0f, 1 - std::abs(d.z) / 0.12f);
+      r += 0.01f * std::sin(40 * d.x) * std::sin(40 * d.y) * std::max(0.0f, d.z);
+      const Vec3f p = d * r;
+      image.at(i, j) = {p.x, p.y, p.z, 0};
+    }
+  seam(image);
+  return toFloatImage(image);
 }
 
 FloatImage blob(int n) {
@@ -335,6 +366,7 @@ void CodecWaveletTest::rateAtPsnr() {
   const auto load = [&](const QString& name) -> FloatImage {
     if (name == "blob") return blob(n);
     if (name == "sphere") return toFloatImage(makeBaseShape(BaseShape::Sphere, n));
+    if (name == "sculpted") return sculptedSphere(n);
     const std::filesystem::path cached = "/tmp/wavelet-cache/" + name.toStdString() + ".exr";
     if (std::filesystem::exists(cached)) return toFloatImage(readDocument(cached).positions);
     const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + name;
@@ -346,7 +378,7 @@ void CodecWaveletTest::rateAtPsnr() {
   };
   SurfaceDistanceOptions options;
   options.samplesPerSurface = 300'000;
-  QStringList names = {"sphere", "blob", "bunny_cgal.obj", "armadillo.obj", "igea.ply"};
+  QStringList names = {"sphere", "sculpted", "blob", "bunny_cgal.obj", "armadillo.obj", "igea.ply"};
   if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_MODELS"))
     names = qEnvironmentVariable("OCTACLAY_WAVELET_MODELS").split(',');
   for (const QString& name : names) {
@@ -392,17 +424,22 @@ void CodecWaveletTest::rateAtPsnr() {
           atHi.second, atHi.first);
   }
   if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_NO_TIMING")) return;
-  const FloatImage big = blob(1024);
-  const auto stream = encodeWavelet(big, 2e-5);
+  const FloatImage big = sculptedSphere(1024);
+  const auto stream = encodeWavelet(big, kWaveletDefaultBound);
+  // Wall time is only meaningful on an idle machine; CPU time (all threads) is shown beside it.
   QElapsedTimer timer;
-  double best = 1e9;
-  for (int k = 0; k < 5; ++k) {
+  double best = 1e9, bestCpu = 1e9;
+  for (int k = 0; k < 7; ++k) {
+    const std::clock_t cpu = std::clock();
     timer.start();
     const FloatImage decoded = decodeWavelet(stream, 1024, 3);
     best = std::min(best, double(timer.nsecsElapsed()) / 1e6);
+    bestCpu = std::min(bestCpu, double(std::clock() - cpu) * 1000.0 / CLOCKS_PER_SEC);
     QCOMPARE(decoded.n, 1024);
   }
-  qInfo("decode N = 1024 (blob, bound 2e-5, %zu bytes): %.1f ms", stream.size(), best);
+  qInfo("decode N = 1024 (sculpted sphere, default bound, %zu bytes): %.1f ms wall, %.1f ms "
+        "CPU",
+        stream.size(), best, bestCpu);
 }
 
 QTEST_GUILESS_MAIN(CodecWaveletTest)
