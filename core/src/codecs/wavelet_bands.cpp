@@ -110,6 +110,7 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
   std::vector<ChannelModels> models(static_cast<std::size_t>(planes.channels));
   std::array<BitModel, kBuckets> vectorZero;
   const int vectorChannels = planes.channels >= 3 ? 3 : 0;
+  if (vectorChannels > 0) planes.magnitude.resize(planes.q[0].size());
   const auto index = [w](int i, int j) {
     return static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
   };
@@ -119,45 +120,52 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
       const bool border = i == 0 || i == n || j == 0 || j == n;
       if (border && !isCanonicalSample(n, i, j)) continue;
       const std::size_t at = index(i, j);
-      std::array<int, kMaxCodedChannels> contexts{}, signContexts{};
-      int vectorContext = 0;
-      for (int c = 0; c < planes.channels; ++c) {
-        const std::int32_t* q = planes.q[static_cast<std::size_t>(c)].data();
+      const int pi = g.hasParent ? parentCoordinate(i, s, n) : 0;
+      // Weighted magnitudes of the coded neighbours in the band, the parent and its band
+      // neighbours; the signs of the nearest three.
+      struct Neighbourhood {
+        int m;
+        std::int32_t left, up, parent;
+      };
+      const auto neighbourhood = [&](const std::int32_t* q) {
         const auto value = [&](int ii, int jj) -> std::int32_t {
-          return ii < 0 || jj < 0 || ii > n ? 0 : q[index(ii, jj)];
+          return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : q[index(ii, jj)];
         };
-        const std::int32_t left = value(i - d, j), up = value(i, j - d);
-        const std::int32_t parent = g.hasParent ? q[index(parentCoordinate(i, s, n), pj)] : 0;
-        int parents = 2 * std::abs(parent);
+        Neighbourhood h{0, value(i - d, j), value(i, j - d), 0};
+        int parents = 0;
         if (g.hasParent) {
-          // The parent's own band neighbours, coarser and all known.
-          const int pi = parentCoordinate(i, s, n), pd = 4 * s;
-          const auto parentAt = [&](int ii, int jj) -> int {
-            return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : std::abs(q[index(ii, jj)]);
-          };
-          parents += (parentAt(pi - pd, pj) + parentAt(pi + pd, pj) + parentAt(pi, pj - pd) +
-                      parentAt(pi, pj + pd) + 1) /
-                     2;
+          const int pd = 4 * s;
+          h.parent = q[index(pi, pj)];
+          parents = 2 * std::abs(h.parent) +
+                    (std::abs(value(pi - pd, pj)) + std::abs(value(pi + pd, pj)) +
+                     std::abs(value(pi, pj - pd)) + std::abs(value(pi, pj + pd)) + 1) /
+                        2;
         }
-        const int m = 2 * (std::abs(left) + std::abs(up)) + std::abs(value(i - d, j - d)) +
-                      std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
-                      std::abs(value(i, j - 2 * d)) + parents;
-        contexts[static_cast<std::size_t>(c)] = m;
-        if (c < vectorChannels) vectorContext += m;
-        signContexts[static_cast<std::size_t>(c)] =
-            signClass(left) * 9 + signClass(up) * 3 + signClass(parent);
-      }
+        h.m = 2 * (std::abs(h.left) + std::abs(h.up)) + std::abs(value(i - d, j - d)) +
+              std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
+              std::abs(value(i, j - 2 * d)) + parents;
+        return h;
+      };
       int first = 0;
       if (vectorChannels > 0) {
-        // One decision for the whole position vector: most of a fine band is zero.
+        // One decision for the whole position vector (most of a fine band is zero), its
+        // context from the vector magnitudes so that a zero costs one neighbourhood, not three.
         bool any = false;
         for (int c = 0; c < vectorChannels; ++c)
           any = any || planes.q[static_cast<std::size_t>(c)][at] != 0;
+        const int vectorContext = neighbourhood(planes.magnitude.data()).m;
         if (coder.bit(vectorZero[static_cast<std::size_t>(bucket(vectorContext))], any) == 0) {
           for (int c = 0; c < vectorChannels; ++c)
             planes.q[static_cast<std::size_t>(c)][at] = 0;
           first = vectorChannels;
         }
+      }
+      std::array<int, kMaxCodedChannels> contexts{}, signContexts{};
+      for (int c = first; c < planes.channels; ++c) {
+        const Neighbourhood h = neighbourhood(planes.q[static_cast<std::size_t>(c)].data());
+        contexts[static_cast<std::size_t>(c)] = h.m;
+        signContexts[static_cast<std::size_t>(c)] =
+            signClass(h.left) * 9 + signClass(h.up) * 3 + signClass(h.parent);
       }
       int otherSum = 0;
       for (int c = first; c < planes.channels; ++c) {
@@ -171,15 +179,20 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
         q[at] = coded;
         otherSum = c == vectorChannels - 1 ? 0 : otherSum + std::abs(coded);
       }
+      int magnitude = 0;
+      for (int c = 0; c < vectorChannels; ++c)
+        magnitude += std::min(std::abs(planes.q[static_cast<std::size_t>(c)][at]), kMaxMagnitude);
+      if (vectorChannels > 0) planes.magnitude[at] = magnitude;
       if (border) {
         std::array<Sample, 4> copies;
         const int count = identifiedSamples(n, {i, j}, copies);
-        for (int k = 1; k < count; ++k)
-          for (int c = 0; c < planes.channels; ++c) {
-            auto& q = planes.q[static_cast<std::size_t>(c)];
-            q[index(copies[static_cast<std::size_t>(k)].i, copies[static_cast<std::size_t>(k)].j)] =
-                q[at];
-          }
+        for (int k = 1; k < count; ++k) {
+          const std::size_t copy =
+              index(copies[static_cast<std::size_t>(k)].i, copies[static_cast<std::size_t>(k)].j);
+          for (auto& q : planes.q)
+            q[copy] = q[at];
+          if (vectorChannels > 0) planes.magnitude[copy] = planes.magnitude[at];
+        }
       }
     }
   }
@@ -194,6 +207,14 @@ std::size_t bandSampleCount(int n, int level, Orientation orientation) {
     for (int i = g.iFirst; i <= n; i += 2 * g.s)
       count += isCanonicalSample(n, i, j) ? 1 : 0;
   return count;
+}
+
+void setVectorMagnitudes(CoefficientPlanes& planes) {
+  if (planes.channels < 3) return;
+  planes.magnitude.assign(planes.q[0].size(), 0);
+  for (std::size_t k = 0; k < planes.magnitude.size(); ++k)
+    planes.magnitude[k] =
+        std::abs(planes.q[0][k]) + std::abs(planes.q[1][k]) + std::abs(planes.q[2][k]);
 }
 
 std::vector<std::uint8_t> encodeBand(const CoefficientPlanes& planes, int level,

@@ -310,8 +310,9 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   requireDecodable(n, channels);
   Reader in(stream.first(std::min(limit, stream.size())));
   const Header header = readHeader(in, n, channels);
-  CoefficientPlanes planes{n, channels, {}};
+  CoefficientPlanes planes{n, channels, {}, {}};
   planes.q.assign(static_cast<std::size_t>(channels), std::vector<std::int32_t>(sampleCount(n)));
+  if (channels >= 3) planes.magnitude.assign(sampleCount(n), 0);
   const std::vector<Band> bands = bandOrder(n);
   std::size_t next = 0;
   while (next < bands.size()) {
@@ -387,7 +388,7 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     cc.dc = plane[0];
     coefficients.push_back(std::move(plane));
   }
-  CoefficientPlanes planes{n, image.channels, {}};
+  CoefficientPlanes planes{n, image.channels, {}, {}};
   planes.q.assign(static_cast<std::size_t>(image.channels),
                   std::vector<std::int32_t>(sampleCount(n)));
   chooseSteps(coefficients, ErrorMeter(original, n), coding, target, planes);
@@ -401,6 +402,7 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     out.f32(cc.step);
     out.f32(cc.dc);
   }
+  detail::setVectorMagnitudes(planes);
   for (const Band& band : bandOrder(n)) {
     const std::vector<std::uint8_t> bytes =
         detail::encodeBand(planes, band.level, band.orientation);

@@ -121,7 +121,9 @@ void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
               int c = 0;
               if (vector && exact == nullptr && q.q[0][k] == 0 && q.q[1][k] == 0 &&
                   q.q[2][k] == 0) {
-                c = 3; // a zero vector in any frame
+                // A zero vector in any frame; the planes hold zero there already.
+                if (channels == kVectorChannels) continue;
+                c = 3;
               } else if (vector) {
                 const Frame f = frameAt(planes, n, d, i, j);
                 std::array<float, 3> rebuilt{0, 0, 0};
