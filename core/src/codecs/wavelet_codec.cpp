@@ -362,6 +362,9 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   for (std::size_t c = 0; c < rebuilt.size(); ++c)
     for (std::size_t k = 0; k < rebuilt[c].size(); ++k)
       image.texels[k * static_cast<std::size_t>(channels) + c] = rebuilt[c][k];
+  // What the encoder wrote decodes near finite input; anything else was damaged.
+  for (float v : image.texels)
+    if (!std::isfinite(v)) invalid("it decodes to non-finite values");
   return image;
 }
 
@@ -454,6 +457,10 @@ Codec makeWaveletCodec() {
     return decodeWavelet(stream, n, channels);
   };
   codec.maxEncodedSize = [](int n, int channels, const CodecParams&) {
+    requireValidSize(n);
+    if (channels < 1 || channels > kMaxChannels)
+      throw Error(ErrorKind::InvalidArgument,
+                  "wavelet: " + std::to_string(channels) + " channels; it codes 1 to 4");
     std::size_t size = kFixedHeaderBytes + kChannelHeaderBytes * static_cast<std::size_t>(channels);
     for (const Band& band : bandOrder(n))
       size += 4 + detail::maxBandBytes(detail::bandSampleCount(n, band.level, band.orientation),
