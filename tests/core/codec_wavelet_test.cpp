@@ -281,13 +281,14 @@ void CodecWaveletTest::goldenStream() {
   // change: bump kWaveletVersion and update the expected values.
   const auto stream = encodeWavelet(wobbly(8), 1e-3);
   QCOMPARE(kWaveletVersion, std::uint16_t{1});
-  QCOMPARE(stream[0], std::uint8_t{1});
-  QCOMPARE(stream[1], std::uint8_t{0});
-  QCOMPARE(stream[2], std::uint8_t{8});
+  QCOMPARE(stream[0], std::uint8_t{4}); // codec code
+  QCOMPARE(stream[1], std::uint8_t{1}); // version, little-endian
+  QCOMPARE(stream[2], std::uint8_t{0});
+  QCOMPARE(stream[3], std::uint8_t{8}); // N
   qInfo("golden: %zu bytes, FNV-1a %016llx", stream.size(),
         static_cast<unsigned long long>(fnv1a(stream)));
-  QCOMPARE(stream.size(), std::size_t{288});
-  QCOMPARE(fnv1a(stream), std::uint64_t{0xdc0395f4f3367029});
+  QCOMPARE(stream.size(), std::size_t{289});
+  QCOMPARE(fnv1a(stream), std::uint64_t{0x8889000887d8d117});
 }
 
 void CodecWaveletTest::truncatedStreamsAreRefused() {
@@ -327,8 +328,11 @@ void CodecWaveletTest::wrongShapeIsRefused() {
   expectInvalidInput([&] { decodeWavelet(stream, 17, 3); });
   expectInvalidInput([&] { decodeWavelet(stream, 16, 0); });
   auto future = stream;
-  future[0] = 2;
+  future[1] = 2;
   expectInvalidInput([&] { decodeWavelet(future, 16, 3); });
+  auto otherCodec = stream;
+  otherCodec[0] = 5;
+  expectInvalidInput([&] { decodeWavelet(otherCodec, 16, 3); });
 }
 
 void CodecWaveletTest::badParametersAreRefused() {

@@ -26,10 +26,12 @@ using detail::ChannelCoding;
 using detail::CoefficientPlanes;
 using detail::Orientation;
 
-// Stream: u16 version, u32 n, u8 channels, then per channel f32 centre, step and DC; then
+// Stream: u8 codec code (4), u16 version, u32 n, u8 channels (the header every codec's stream
+// starts with), then per channel f32 centre, step and DC; then
 // per band, coarsest level first, orientations along i, along j, diagonal: u32 length and the
 // band's range-coded bytes. Little-endian.
-constexpr std::size_t kFixedHeaderBytes = 2 + 4 + 1;
+constexpr std::size_t kFixedHeaderBytes = 1 + 2 + 4 + 1;
+constexpr std::uint8_t kWaveletCode = 4;
 constexpr std::size_t kChannelHeaderBytes = 3 * 4;
 constexpr int kMaxChannels = 4;
 // Tangential steps are this many times the normal one: the rate minimum on armadillo at 95 dB
@@ -272,6 +274,10 @@ struct Header {
 };
 
 Header readHeader(Reader& in, int n, int channels) {
+  const auto code = in.uint(1);
+  if (code != kWaveletCode)
+    invalid("a stream of codec code " + std::to_string(code) + ", not wavelet (" +
+            std::to_string(kWaveletCode) + ")");
   const auto version = in.uint(2);
   if (version != kWaveletVersion)
     invalid("version " + std::to_string(version) + ", this build reads " +
@@ -397,6 +403,7 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
   chooseSteps(coefficients, ErrorMeter(original, n), coding, target, planes);
 
   Writer out;
+  out.u8(kWaveletCode);
   out.u16(kWaveletVersion);
   out.u32(static_cast<std::uint32_t>(n));
   out.u8(static_cast<std::uint8_t>(image.channels));
