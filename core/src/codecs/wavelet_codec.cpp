@@ -1,5 +1,6 @@
 #include "octaclay/core/wavelet_codec.h"
 
+#include "codecs/codec_list.h"
 #include "codecs/wavelet_bands.h"
 #include "codecs/wavelet_quantizer.h"
 #include "codecs/wavelet_transform.h"
