@@ -13,9 +13,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <ctime>
 #include <limits>
 #include <string>
 #include <thread>
@@ -27,10 +24,10 @@ using detail::ChannelCoding;
 using detail::CoefficientPlanes;
 using detail::Orientation;
 
-// Stream: u8 codec code (4), u16 version, u32 n, u8 channels (the header every codec's stream
-// starts with), then per channel f32 centre, step and DC; then
-// per band, coarsest level first, orientations along i, along j, diagonal: u32 length and the
-// band's range-coded bytes. Little-endian.
+// Stream, little-endian: u8 codec code (4), u16 version, u32 N, u8 channels (the header every
+// codec's stream starts with); per channel f32 centre, step and DC; then per band, coarsest
+// level first, orientations along i, along j, diagonal: u32 length and the band's range-coded
+// bytes.
 constexpr std::size_t kFixedHeaderBytes = 1 + 2 + 4 + 1;
 constexpr std::uint8_t kWaveletCode = 4;
 constexpr std::size_t kChannelHeaderBytes = 3 * 4;
@@ -317,6 +314,17 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   requireDecodable(n, channels);
   Reader in(stream.first(std::min(limit, stream.size())));
   const Header header = readHeader(in, n, channels);
+  // The band table must hold together before anything of the image's size is allocated.
+  if (!prefix) {
+    Reader scan = in;
+    for (std::size_t k = 0; k < bandOrder(n).size(); ++k) {
+      if (scan.remaining() < 4) invalid("truncated band");
+      const std::size_t length = scan.uint(4);
+      if (length > scan.remaining()) invalid("truncated band");
+      scan.take(length);
+    }
+    if (scan.remaining() != 0) invalid("bytes after the last band");
+  }
   CoefficientPlanes planes{n, channels, {}, {}};
   planes.q.assign(static_cast<std::size_t>(channels), std::vector<std::int32_t>(sampleCount(n)));
   if (channels >= 3) planes.magnitude.assign(sampleCount(n), 0);
