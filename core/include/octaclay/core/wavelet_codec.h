@@ -29,7 +29,7 @@ namespace octaclay::core {
 inline constexpr std::uint16_t kWaveletVersion = 1;
 inline constexpr double kWaveletMinBound = 1e-6;
 inline constexpr double kWaveletMaxBound = 0.1;
-inline constexpr double kWaveletDefaultBound = 2e-5;
+inline constexpr double kWaveletDefaultBound = 1.5e-5; ///< about 96 dB on scanned meshes
 /// The tangential error may be this many times the bound (see above): sliding along the
 /// surface barely changes its shape.
 inline constexpr double kWaveletTangentFactor = 16;
