@@ -31,5 +31,7 @@ Command addCompareCommand(CLI::App& app);
 Command addStrokeCommand(CLI::App& app);
 Command addBrushesCommand(CLI::App& app);
 Command addImportCommand(CLI::App& app);
+Command addCompressCommand(CLI::App& app);
+Command addDecompressCommand(CLI::App& app);
 
 } // namespace octaclay::app
