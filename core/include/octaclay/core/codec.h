@@ -24,17 +24,18 @@ struct FloatImage {
 };
 
 struct CodecParams {
-  /// Codec-specific, documented in each codec's CodecInfo::quality: bits for `bytepack`,
-  /// the JPEG-style quality 1 … 100 for `dct`, the error bound as a fraction of the
-  /// bounding-box diagonal for `wavelet`; ignored by lossless codecs.
+  /// Codec-specific, documented in each codec's CodecInfo::quality: the regions per side R of
+  /// the mip-map (a power of two, 1 … N) for `bytepack`, the JPEG-style quality 1 … 100 for
+  /// `dct`, the error bound as a fraction of the bounding-box diagonal for `wavelet`; ignored
+  /// by lossless codecs. 0 or less: the codec's default.
   double quality = 0;
   /// `exr` only: "zip", "piz", "pxr24" or "half".
   std::string mode;
 };
 
 struct CodecInfo {
-  std::string_view id;     ///< "bytepack", "dct", "exr", "wavelet", "lossless"
-  std::uint8_t code = 0;   ///< stored in the .ocz container
+  std::string_view id;       ///< "bytepack", "dct", "exr", "wavelet", "lossless"
+  std::uint8_t code = 0;     ///< stored in the .ocz container
   std::uint16_t version = 0; ///< written in each stream and checked on decode
   bool lossy = true;
   std::string_view quality; ///< what CodecParams::quality means, its range and default
@@ -49,6 +50,9 @@ struct Codec {
   std::function<FloatImage(std::span<const std::uint8_t>, int n, int channels)> decode;
   /// Upper bound of encode's output size for any image of this n and channels.
   std::function<std::size_t(int n, int channels, const CodecParams&)> maxEncodedSize;
+  /// The largest |decode(encode(image)) − image| any sample may have, per the codec's own
+  /// analysis (0 for exact codecs); empty when the codec states no such bound.
+  std::function<double(const FloatImage&, const CodecParams&)> errorBound;
 };
 
 /// All codecs, in the order above. Lossy codecs seam their output: identified samples decode
