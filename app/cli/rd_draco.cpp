@@ -171,7 +171,8 @@ RdPoint measureDraco(const RdReference& reference, int bits, int compressionLeve
   double sum = 0;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const core::Vec3f a = reference.meshNormals[nearest(mesh.positions[v])], b = normals[v];
-    sum += std::acos(std::clamp(static_cast<double>(core::dot(a, b)), -1.0, 1.0));
+    sum += std::atan2(static_cast<double>(core::length(core::cross(a, b))),
+                      static_cast<double>(core::dot(a, b)));
   }
   p.distortion.normalAngleDeg =
       mesh.positions.empty()

@@ -29,8 +29,10 @@ double millisecondsSince(Clock::time_point start) {
 }
 
 double angleDegrees(core::Vec3f a, core::Vec3f b) {
-  const double c = std::clamp(static_cast<double>(core::dot(a, b)), -1.0, 1.0);
-  return std::acos(c) * 180.0 / std::numbers::pi;
+  // atan2 of sine and cosine stays accurate near 0, where acos of a rounded cosine does not.
+  return std::atan2(static_cast<double>(core::length(core::cross(a, b))),
+                    static_cast<double>(core::dot(a, b))) *
+         180.0 / std::numbers::pi;
 }
 
 std::string number(double v, const char* format = "%.4g") {
@@ -105,7 +107,7 @@ std::vector<core::CodecParams> sweepSettings(const core::Codec& codec) {
     for (const char* mode : {"half", "pxr24", "piz", "zip"})
       out.push_back({.quality = 0, .mode = mode});
   } else if (id == "bytepack") {
-    qualities({4, 6, 8, 10, 12, 16});
+    qualities({1, 4, 16, 64, 256}); // regions per side R
   } else if (id == "dct") {
     qualities({10, 30, 50, 70, 85, 95, 100});
   } else if (id == "wavelet") {
@@ -121,6 +123,7 @@ std::vector<core::CodecParams> sweepSettings(const core::Codec& codec) {
 std::string describeSetting(const core::Codec& codec, const core::CodecParams& params) {
   if (!params.mode.empty()) return params.mode;
   if (!codec.info.lossy) return "-";
+  if (codec.info.id == "bytepack") return "R=" + number(params.quality);
   return "q=" + number(params.quality);
 }
 

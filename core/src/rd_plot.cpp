@@ -113,7 +113,17 @@ void drawPanel(cv::Mat canvas, std::span<const RdSeries> series, bool anglePanel
       panel.x.extend(p[0]);
       panel.y.extend(p[1]);
     }
-  if (panel.x.empty()) {
+  // Exact points (infinite PSNR) sit on the PSNR panel's top edge as triangles.
+  std::vector<std::pair<std::size_t, double>> exact;
+  if (!anglePanel)
+    for (std::size_t k = 0; k < series.size(); ++k)
+      for (const RdPlotPoint& p : series[k].points)
+        if (std::isinf(p.psnr) && p.psnr > 0 && p.bitsPerVertex > 0 &&
+            std::isfinite(p.bitsPerVertex)) {
+          exact.emplace_back(k, std::log2(p.bitsPerVertex));
+          panel.x.extend(exact.back().second);
+        }
+  if (panel.x.empty() || panel.y.empty()) {
     cv::putText(canvas, "no lossy points", {kLeft + 20, kHeight / 2}, cv::FONT_HERSHEY_SIMPLEX, 0.7,
                 kInk, 1, cv::LINE_AA);
     return;
@@ -135,6 +145,15 @@ void drawPanel(cv::Mat canvas, std::span<const RdSeries> series, bool anglePanel
                  cv::LINE_AA);
     }
   }
+  for (const auto& [k, x] : exact) {
+    const cv::Point top = panel.at(x, panel.y.hi);
+    const std::vector<cv::Point> triangle{
+        {top.x, top.y + 2}, {top.x - 7, top.y + 14}, {top.x + 7, top.y + 14}};
+    cv::fillConvexPoly(canvas, triangle, seriesColour(k), cv::LINE_AA);
+  }
+  if (!exact.empty())
+    cv::putText(canvas, "exact (top edge)", {kLeft + 6, kTop + 30}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                kInk, 1, cv::LINE_AA);
   // Legend in the panel's lower right (PSNR) or upper right (angle), where curves thin out.
   int y = anglePanel ? kTop + 20 : kHeight - kBottom - 20 * static_cast<int>(series.size());
   for (std::size_t k = 0; k < series.size(); ++k, y += 20) {

@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < all.size(); ++k)
       for (int channels : {1, 3, 4}) {
         std::vector<core::CodecParams> settings{{.quality = all[k].info.defaultQuality}};
+        if (all[k].info.id == "bytepack") settings = {{2, {}}, {4, {}}};
         if (all[k].info.id == "exr") settings = {{0, "zip"}, {0, "piz"}, {0, "pxr24"}, {0, "half"}};
         for (const core::CodecParams& params : settings) {
           try {
