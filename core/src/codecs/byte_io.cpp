@@ -22,6 +22,17 @@ double ByteReader::f64() {
   return std::bit_cast<double>(u64());
 }
 
+std::uint32_t ByteReader::varint32() {
+  std::uint64_t v = 0;
+  for (int shift = 0;; shift += 7) {
+    const std::uint8_t byte = u8();
+    v |= static_cast<std::uint64_t>(byte & 0x7f) << shift;
+    if (v > 0xffffffffu) fail("varint longer than 32 bits at offset " + std::to_string(offset_));
+    if (!(byte & 0x80)) return static_cast<std::uint32_t>(v);
+    if (shift >= 28) fail("varint longer than 32 bits at offset " + std::to_string(offset_));
+  }
+}
+
 std::uint64_t ByteReader::little(int count) {
   if (remaining() < static_cast<std::size_t>(count))
     fail("truncated: needs " + std::to_string(count) + " more bytes at offset " +

@@ -19,6 +19,12 @@ public:
   void u64(std::uint64_t v) { little(v, 8); }
   void f32(float v);
   void f64(double v);
+  /// LEB128: 7 bits a byte, low first.
+  void varint(std::uint64_t v) {
+    for (; v >= 0x80; v >>= 7)
+      bytes_.push_back(static_cast<std::uint8_t>(v | 0x80));
+    bytes_.push_back(static_cast<std::uint8_t>(v));
+  }
   void append(std::span<const std::uint8_t> data) {
     bytes_.insert(bytes_.end(), data.begin(), data.end());
   }
@@ -45,6 +51,8 @@ public:
   std::uint64_t u64() { return little(8); }
   float f32();
   double f64();
+  /// A LEB128 value of at most 32 bits.
+  std::uint32_t varint32();
   std::span<const std::uint8_t> take(std::uint64_t count);
   std::size_t offset() const { return offset_; }
   std::size_t remaining() const { return bytes_.size() - offset_; }

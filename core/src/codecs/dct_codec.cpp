@@ -1,9 +1,9 @@
 // `dct`: the thesis's floating-point JPEG (5.3). Each channel, less its minimum, is cut into
 // 8 × 8 blocks (the (N+1)² grid padded by repeating its last row and column), transformed by
-// OpenCV's DCT, and each coefficient divided by JPEG's luminance table scaled by the quality
-// (libjpeg's rule) times a unit of the channel's range / 2^14, then rounded. The integers go
-// frequency by frequency (DC differenced across blocks) as varints into a zstd block per
-// channel.
+// OpenCV (the DCT matrix from cv::dct, applied to bands of blocks by cv::gemm), and each
+// coefficient divided by JPEG's luminance table scaled by the quality (libjpeg's rule) times a unit
+// of the channel's range / 2^14, then rounded. The integers go frequency by frequency (DC
+// differenced across blocks) as varints into a zstd block per channel.
 
 #include "codecs/byte_io.h"
 #include "codecs/channel_stats.h"
@@ -75,37 +75,44 @@ Blocks blocksFor(int n) {
   return {b, b};
 }
 
-// 2D DCT (or inverse) of every 8 × 8 block held as 8 consecutive rows of `m` (count·8 × 8):
-// OpenCV transforms rows, so rows, transpose each block, rows, transpose back.
-void transformBlocks(cv::Mat& m, bool inverse) {
-  const auto transposeBlocks = [&m] {
-    for (int b = 0; b < m.rows / 8; ++b) {
-      cv::Mat block = m.rowRange(b * 8, b * 8 + 8);
-      cv::transpose(block.clone(), block);
-    }
-  };
-  for (int pass = 0; pass < 2; ++pass) {
-    if (inverse)
-      cv::idct(m, m, cv::DCT_ROWS);
-    else
-      cv::dct(m, m, cv::DCT_ROWS);
-    transposeBlocks();
-  }
+// The orthonormal 8-point DCT-II matrix C, from OpenCV's DCT of the unit vectors.
+const cv::Mat& dctMatrix() {
+  static const cv::Mat c = [] {
+    cv::Mat transposed;
+    cv::dct(cv::Mat::eye(8, 8, CV_32F), transposed, cv::DCT_ROWS);
+    return cv::Mat(transposed.t());
+  }();
+  return c;
 }
 
-// Block rows [rowBegin, rowEnd) of a padded plane (side²) as count·8 × 8 block rows.
-cv::Mat gatherBlocks(const std::vector<float>& plane, int side, const Blocks& blocks, int by,
-                     float offset) {
-  cv::Mat m(blocks.perRow * 8, 8, CV_32F);
-  for (int bx = 0; bx < blocks.perRow; ++bx)
-    for (int y = 0; y < 8; ++y) {
-      const int j = std::min(by * 8 + y, side - 1);
-      float* row = m.ptr<float>(bx * 8 + y);
-      for (int x = 0; x < 8; ++x)
-        row[x] =
-            plane[static_cast<std::size_t>(j) * side + std::min(bx * 8 + x, side - 1)] - offset;
-    }
-  return m;
+// A band of 8 image rows (8 × W, W = 8·blocks) holds a row of blocks side by side; C·band
+// transforms every block's columns at once, and the same memory viewed as W rows of 8 holds
+// one block row per row, so ·Cᵀ transforms the rows. Coefficient (u, v) of block b ends at
+// band(u, 8b + v). The inverse runs the steps backwards with the transposes.
+cv::Mat transformBand(const cv::Mat& band, bool inverse) {
+  const cv::Mat& c = dctMatrix();
+  cv::Mat first, second;
+  if (!inverse) {
+    cv::gemm(c, band, 1, cv::noArray(), 0, first);
+    cv::gemm(first.reshape(1, band.cols), c, 1, cv::noArray(), 0, second, cv::GEMM_2_T);
+    return second.reshape(1, 8);
+  }
+  cv::gemm(band.reshape(1, band.cols), c, 1, cv::noArray(), 0, first);
+  cv::gemm(c, first.reshape(1, 8), 1, cv::noArray(), 0, second, cv::GEMM_1_T);
+  return second;
+}
+
+// Band `by` of a plane (side²), less offset, padded by repeating the last row and column.
+cv::Mat gatherBand(const std::vector<float>& plane, int side, const Blocks& blocks, int by,
+                   float offset) {
+  cv::Mat band(8, blocks.perRow * 8, CV_32F);
+  for (int y = 0; y < 8; ++y) {
+    const int j = std::min(by * 8 + y, side - 1);
+    float* row = band.ptr<float>(y);
+    for (int x = 0; x < band.cols; ++x)
+      row[x] = plane[static_cast<std::size_t>(j) * side + std::min(x, side - 1)] - offset;
+  }
+  return band;
 }
 
 void putVarint(std::vector<std::uint8_t>& out, std::uint32_t v) {
@@ -133,15 +140,14 @@ std::vector<std::uint8_t> encodeChannel(const FloatImage& image, int c, const Ch
   // coefficients[k][block], k in zigzag order
   std::vector<std::int32_t> coefficients(static_cast<std::size_t>(blocks.count()) * 64);
   for (int by = 0; by < blocks.perColumn; ++by) {
-    cv::Mat m = gatherBlocks(plane, side, blocks, by, range.min);
-    transformBlocks(m, false);
+    const cv::Mat band = transformBand(gatherBand(plane, side, blocks, by, range.min), false);
     for (int bx = 0; bx < blocks.perRow; ++bx) {
-      const float* block = m.ptr<float>(bx * 8);
       const std::size_t b = static_cast<std::size_t>(by) * blocks.perRow + bx;
       for (int k = 0; k < 64; ++k) {
         const int at = kZigzag[k];
+        const float coefficient = band.at<float>(at / 8, bx * 8 + at % 8);
         coefficients[k * blocks.count() + b] = static_cast<std::int32_t>(
-            std::lround(block[at] / (static_cast<float>(table[at]) * unit)));
+            std::lround(coefficient / (static_cast<float>(table[at]) * unit)));
       }
     }
   }
@@ -240,25 +246,23 @@ FloatImage decode(std::span<const std::uint8_t> bytes, int n, int channels) {
   parallelTasks(channels * blocks.perColumn, [&](int task) {
     const int c = task / blocks.perColumn, by = task % blocks.perColumn;
     const DecodedChannel& channel = decoded[c];
-    cv::Mat m(blocks.perRow * 8, 8, CV_32F);
+    cv::Mat coefficients(8, blocks.perRow * 8, CV_32F);
     for (int bx = 0; bx < blocks.perRow; ++bx) {
-      float* block = m.ptr<float>(bx * 8);
       const std::size_t b = static_cast<std::size_t>(by) * blocks.perRow + bx;
       for (int k = 0; k < 64; ++k) {
         const int at = kZigzag[k];
-        block[at] = static_cast<float>(channel.coefficients[k * blocks.count() + b]) *
-                    (static_cast<float>(table[at]) * channel.unit);
+        coefficients.at<float>(at / 8, bx * 8 + at % 8) =
+            static_cast<float>(channel.coefficients[k * blocks.count() + b]) *
+            (static_cast<float>(table[at]) * channel.unit);
       }
     }
-    transformBlocks(m, true);
-    for (int bx = 0; bx < blocks.perRow; ++bx)
-      for (int y = 0; y < 8 && by * 8 + y < side; ++y) {
-        const float* row = m.ptr<float>(bx * 8 + y);
-        const int j = by * 8 + y;
-        for (int x = 0; x < 8 && bx * 8 + x < side; ++x)
-          image.texels[(static_cast<std::size_t>(j) * side + bx * 8 + x) * channels + c] =
-              row[x] + channel.offset;
-      }
+    const cv::Mat band = transformBand(coefficients, true);
+    for (int y = 0; y < 8 && by * 8 + y < side; ++y) {
+      const float* row = band.ptr<float>(y);
+      const std::size_t j = static_cast<std::size_t>(by * 8 + y);
+      for (int x = 0; x < side; ++x)
+        image.texels[(j * side + x) * channels + c] = row[x] + channel.offset;
+    }
   });
   copySeams(image);
   return image;

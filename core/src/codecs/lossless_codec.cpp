@@ -121,11 +121,11 @@ std::vector<std::uint8_t> encodeChannel(const std::vector<float>& plane, int n,
   ByteWriter out;
   out.u8(static_cast<std::uint8_t>(drop));
   for (const auto& s : streams)
-    out.u32(static_cast<std::uint32_t>(s.size()));
+    out.varint(s.size());
   for (const auto& s : streams)
     if (!s.empty()) writeZstdBlock(out, s, kZstdLevel);
   const auto bits = raw.finish();
-  out.u32(static_cast<std::uint32_t>(bits.size()));
+  out.varint(bits.size());
   out.append(bits);
   return out.take();
 }
@@ -145,14 +145,14 @@ void decodeChannel(std::span<const std::uint8_t> bytes, int n, bool canonicalOnl
   std::array<std::uint32_t, kWidths> counts{};
   std::uint64_t total = 0;
   for (auto& c : counts)
-    total += c = in.u32();
+    total += c = in.varint32();
   if (total != codedSamples(n, canonicalOnly))
     in.fail("holds " + std::to_string(total) + " samples, expected " +
             std::to_string(codedSamples(n, canonicalOnly)));
   std::array<std::vector<std::uint8_t>, kWidths> streams;
   for (int k = 0; k < kWidths; ++k)
     if (counts[k] > 0) streams[k] = readZstdBlock(in, counts[k]);
-  const std::uint32_t rawLength = in.u32();
+  const std::uint32_t rawLength = in.varint32();
   BitReader raw(in.take(rawLength), in);
   in.expectEnd();
 
@@ -239,8 +239,8 @@ std::size_t maxEncodedSize(int n, int channels, const CodecParams&) {
   const std::size_t count = sampleCount(n);
   // Per channel: widths (each context's block bounded by its own count; the bounds are
   // superadditive enough with one extra frame overhead per context), raw bits ≤ 31 per sample.
-  const std::size_t perChannel = 1 + 4 * kWidths + kWidths * zstdBlockBound(0) +
-                                 zstdBlockBound(count) + 4 + (count * 31 + 7) / 8;
+  const std::size_t perChannel = 1 + 5 * kWidths + kWidths * zstdBlockBound(0) +
+                                 zstdBlockBound(count) + 5 + (count * 31 + 7) / 8;
   return kStreamHeaderSize + 1 + channels * (4 + perChannel);
 }
 
