@@ -45,8 +45,9 @@ std::vector<double> qualitiesFor(const core::Codec& codec, int n) {
 
 QString formatBytes(std::size_t bytes) {
   if (bytes < 10 * 1024) return QObject::tr("%1 bytes").arg(bytes);
-  if (bytes < 10 * 1024 * 1024) return QObject::tr("%1 KB").arg(bytes / 1024.0, 0, 'f', 1);
-  return QObject::tr("%1 MB").arg(bytes / (1024.0 * 1024.0), 0, 'f', 2);
+  if (bytes < 10 * 1024 * 1024)
+    return QObject::tr("%1 KB").arg(static_cast<double>(bytes) / 1024.0, 0, 'f', 1);
+  return QObject::tr("%1 MB").arg(static_cast<double>(bytes) / (1024.0 * 1024.0), 0, 'f', 2);
 }
 
 } // namespace
