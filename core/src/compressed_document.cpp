@@ -52,11 +52,6 @@ const Codec& requireCodec(std::string_view id) {
   return *codec;
 }
 
-CodecParams effectiveParams(const Codec& codec, CodecParams params) {
-  if (params.quality <= 0) params.quality = codec.info.defaultQuality;
-  return params;
-}
-
 struct CodedLayer {
   const Codec* codec = nullptr;
   CodecParams params;
@@ -77,7 +72,7 @@ void writeCodedEntry(ByteWriter& out, int channels, const CodedLayer& coded) {
 CodedLayer codeLayer(const Codec& codec, const CodecParams& params, FloatImage image) {
   if (params.mode.size() > 255)
     throw Error(ErrorKind::InvalidArgument, "codec mode '" + params.mode + "' is too long");
-  CodedLayer coded{&codec, effectiveParams(codec, params), {}};
+  CodedLayer coded{&codec, params, {}}; // quality ≤ 0: the codec picks its default
   coded.stream = codec.encode(image, coded.params);
   return coded;
 }

@@ -7,6 +7,7 @@
 #include "octaclay/core/octahedral.h"
 
 #include <QtTest>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -74,6 +75,23 @@ inline GeometryImage asGeometry(const FloatImage& image) {
                      0.0f};
   }
   return g;
+}
+
+/// True when every set of identified samples holds bit-identical values in all channels.
+inline bool seamsBitExactForTest(const FloatImage& image) {
+  const int n = image.n;
+  const std::size_t c = std::size_t(image.channels);
+  std::array<Sample, 4> same;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const int count = identifiedSamples(n, {i, j}, same);
+      for (int k = 1; k < count; ++k)
+        if (std::memcmp(&image.texels[(std::size_t(same[0].j) * (n + 1) + same[0].i) * c],
+                        &image.texels[(std::size_t(same[k].j) * (n + 1) + same[k].i) * c],
+                        c * sizeof(float)) != 0)
+          return false;
+    }
+  return true;
 }
 
 /// "" when decode threw Error(InvalidInput), else what happened instead.

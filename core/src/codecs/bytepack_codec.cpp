@@ -23,13 +23,14 @@ constexpr CodecInfo kInfo{
     1,
     1,
     true,
-    "regions per side R of the mip-map, a power of two 1 … N (default 16; the thesis used 4, "
+    "regions per side R of the mip-map, a power of two 1 … N (default 16, or N when smaller; the "
+    "thesis used 4, "
     "16 and 64); each sample is within (region's delta range)/510 of the original",
     16};
 constexpr int kZstdLevel = 9;
 
 int regionsPerSide(const CodecParams& params, int n) {
-  const double q = params.quality > 0 ? params.quality : kInfo.defaultQuality;
+  const double q = params.quality > 0 ? params.quality : std::min<double>(kInfo.defaultQuality, n);
   const int r = static_cast<int>(q);
   if (r != q || r < 1 || r > n || (r & (r - 1)) != 0)
     throw Error(ErrorKind::InvalidArgument,

@@ -1,6 +1,9 @@
 // `lossless`: exact float32. Each channel is walked in raster order; a sample is predicted from
-// its decoded neighbours by the parallelogram rule (left + up − up-left, in float), both value
-// and prediction are mapped to integers in float order, and their difference is coded as a bit
+// its decoded neighbours, in float, by the rule its 32 × 32 block chose (the encoder tries
+// each): the parallelogram (Lorenzo) rule left + up − up-left, exact on planes and best on
+// scanned detail; the second-order Lorenzo rule over the 3 × 3 corner, exact on biquadratic
+// patches and twice as good on smooth surfaces; or their mean. Both value and prediction are
+// mapped to integers in float order, and their difference is coded as a bit
 // width (entropy-coded by zstd in 33 streams chosen by the neighbours' widths, an order-1
 // context) plus its raw low bits. Low mantissa bits that are zero in every sample (half-float
 // layers) are dropped first. Samples identified with a canonical one are copies when the input's
@@ -45,16 +48,28 @@ std::uint32_t restoreDropped(std::uint32_t reduced, int drop) {
   return (o & 0x80000000u) ? o : (o | ((1u << drop) - 1u));
 }
 
-float predict(const float* plane, int side, int i, int j) {
+enum Predictor : std::uint8_t { Parallelogram = 0, Quadratic = 1, Mean = 2 };
+constexpr int kPredictors = 3;
+constexpr int kBlock = 32;
+
+float predict(const float* plane, int side, int i, int j, int predictor) {
+  const auto at = [&](int di, int dj) {
+    return plane[static_cast<std::size_t>(j - dj) * side + (i - di)];
+  };
   float p;
   if (j == 0)
-    p = i == 0 ? 0.0f : plane[i - 1];
+    p = i == 0 ? 0.0f : at(1, 0);
   else if (i == 0)
-    p = plane[static_cast<std::size_t>(j - 1) * side];
+    p = at(0, 1);
   else {
-    const float* row = plane + static_cast<std::size_t>(j) * side;
-    const float* up = row - side;
-    p = (row[i - 1] + up[i]) - up[i - 1];
+    p = (at(1, 0) + at(0, 1)) - at(1, 1);
+    if (predictor != Parallelogram && i >= 2 && j >= 2) {
+      // −Σ c(a)c(b)·f(i−a, j−b) over (a, b) ≠ (0, 0) with c = (1, −2, 1); power-of-two
+      // weights keep every product exact, so the sum is the same on every IEEE machine.
+      const float q = ((2.0f * at(1, 0) - at(2, 0)) + (2.0f * at(0, 1) - at(0, 2))) +
+                      ((2.0f * at(2, 1) + 2.0f * at(1, 2)) - (4.0f * at(1, 1) + at(2, 2)));
+      p = predictor == Quadratic ? q : 0.5f * (p + q);
+    }
   }
   return std::isfinite(p) ? p : 0.0f;
 }
@@ -94,23 +109,55 @@ int droppableBits(const std::vector<float>& plane) {
   return used == 0 ? 23 : std::countr_zero(used);
 }
 
+int blocksPerSide(int n) {
+  return (n + 1 + kBlock - 1) / kBlock;
+}
+
+std::uint32_t zigzagResidual(std::uint32_t actual, std::uint32_t predicted, int drop) {
+  const std::int64_t modulus = std::int64_t{1} << (32 - drop);
+  std::int64_t d = static_cast<std::int64_t>(actual) - predicted;
+  if (d >= modulus / 2) d -= modulus;
+  if (d < -modulus / 2) d += modulus;
+  return static_cast<std::uint32_t>(d >= 0 ? 2 * d : -2 * d - 1);
+}
+
+// For each block, the predictor whose residuals have the fewest bits (the plane is exact, so
+// the decoder will predict from the same values).
+std::vector<std::uint8_t> choosePredictors(const std::vector<float>& plane, int n, int drop) {
+  const int side = n + 1, blocks = blocksPerSide(n);
+  std::vector<std::array<std::uint64_t, kPredictors>> cost(static_cast<std::size_t>(blocks) *
+                                                           blocks);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const std::uint32_t actual = toOrdered(plane[static_cast<std::size_t>(j) * side + i]) >> drop;
+      auto& c = cost[static_cast<std::size_t>(j / kBlock) * blocks + i / kBlock];
+      for (int k = 0; k < kPredictors; ++k)
+        c[k] += std::bit_width(
+            zigzagResidual(actual, toOrdered(predict(plane.data(), side, i, j, k)) >> drop, drop));
+    }
+  std::vector<std::uint8_t> chosen(cost.size());
+  for (std::size_t b = 0; b < cost.size(); ++b)
+    chosen[b] = static_cast<std::uint8_t>(std::min_element(cost[b].begin(), cost[b].end()) -
+                                          cost[b].begin());
+  return chosen;
+}
+
 std::vector<std::uint8_t> encodeChannel(const std::vector<float>& plane, int n,
                                         bool canonicalOnly) {
-  const int side = n + 1;
+  const int side = n + 1, blocks = blocksPerSide(n);
   const int drop = droppableBits(plane);
-  const std::uint64_t modulus = std::uint64_t{1} << (32 - drop);
+  const std::vector<std::uint8_t> predictors = choosePredictors(plane, n, drop);
   std::vector<std::uint8_t> widths(plane.size(), 0);
   std::array<std::vector<std::uint8_t>, kWidths> streams;
   BitWriter raw;
   walk(
       n, canonicalOnly,
       [&](int i, int j, std::size_t at) {
-        const std::uint32_t predicted = toOrdered(predict(plane.data(), side, i, j)) >> drop;
-        const std::uint32_t actual = toOrdered(plane[at]) >> drop;
-        std::int64_t d = static_cast<std::int64_t>(actual) - predicted;
-        if (d >= static_cast<std::int64_t>(modulus / 2)) d -= static_cast<std::int64_t>(modulus);
-        if (d < -static_cast<std::int64_t>(modulus / 2)) d += static_cast<std::int64_t>(modulus);
-        const std::uint32_t zig = static_cast<std::uint32_t>(d >= 0 ? 2 * d : -2 * d - 1);
+        const int predictor =
+            predictors[static_cast<std::size_t>(j / kBlock) * blocks + i / kBlock];
+        const std::uint32_t predicted =
+            toOrdered(predict(plane.data(), side, i, j, predictor)) >> drop;
+        const std::uint32_t zig = zigzagResidual(toOrdered(plane[at]) >> drop, predicted, drop);
         const int width = std::bit_width(zig);
         streams[context(widths.data(), side, i, j)].push_back(static_cast<std::uint8_t>(width));
         widths[at] = static_cast<std::uint8_t>(width);
@@ -120,6 +167,7 @@ std::vector<std::uint8_t> encodeChannel(const std::vector<float>& plane, int n,
 
   ByteWriter out;
   out.u8(static_cast<std::uint8_t>(drop));
+  writeZstdBlock(out, predictors, kZstdLevel);
   for (const auto& s : streams)
     out.varint(s.size());
   for (const auto& s : streams)
@@ -137,9 +185,13 @@ std::size_t codedSamples(int n, bool canonicalOnly) {
 void decodeChannel(std::span<const std::uint8_t> bytes, int n, bool canonicalOnly,
                    std::vector<float>& plane, const std::string& what) {
   ByteReader in(bytes, what);
-  const int side = n + 1;
+  const int side = n + 1, blocks = blocksPerSide(n);
   const int drop = in.u8();
   if (drop > 23) in.fail("dropped-bit count " + std::to_string(drop) + " is over 23");
+  const std::vector<std::uint8_t> predictors =
+      readZstdBlock(in, static_cast<std::size_t>(blocks) * blocks);
+  for (std::uint8_t p : predictors)
+    if (p >= kPredictors) in.fail("unknown predictor " + std::to_string(p));
   const std::uint64_t modulus = std::uint64_t{1} << (32 - drop);
   const int maxWidth = 32 - drop;
   std::array<std::uint32_t, kWidths> counts{};
@@ -174,7 +226,10 @@ void decodeChannel(std::span<const std::uint8_t> bytes, int n, bool canonicalOnl
           zig = (std::uint32_t{1} << (width - 1)) | (width > 1 ? raw.get(width - 1) : 0u);
         const std::int64_t d = (zig & 1u) ? -static_cast<std::int64_t>(zig >> 1) - 1
                                           : static_cast<std::int64_t>(zig >> 1);
-        const std::uint32_t predicted = toOrdered(predict(plane.data(), side, i, j)) >> drop;
+        const int predictor =
+            predictors[static_cast<std::size_t>(j / kBlock) * blocks + i / kBlock];
+        const std::uint32_t predicted =
+            toOrdered(predict(plane.data(), side, i, j, predictor)) >> drop;
         const std::uint64_t reduced =
             static_cast<std::uint64_t>(static_cast<std::int64_t>(predicted) + d) & (modulus - 1);
         plane[at] = fromOrdered(restoreDropped(static_cast<std::uint32_t>(reduced), drop));
@@ -239,8 +294,10 @@ std::size_t maxEncodedSize(int n, int channels, const CodecParams&) {
   const std::size_t count = sampleCount(n);
   // Per channel: widths (each context's block bounded by its own count; the bounds are
   // superadditive enough with one extra frame overhead per context), raw bits ≤ 31 per sample.
-  const std::size_t perChannel = 1 + 5 * kWidths + kWidths * zstdBlockBound(0) +
-                                 zstdBlockBound(count) + 5 + (count * 31 + 7) / 8;
+  const std::size_t blocks = static_cast<std::size_t>(blocksPerSide(n));
+  const std::size_t perChannel = 1 + zstdBlockBound(blocks * blocks) + 5 * kWidths +
+                                 kWidths * zstdBlockBound(0) + zstdBlockBound(count) + 5 +
+                                 (count * 31 + 7) / 8;
   return kStreamHeaderSize + 1 + channels * (4 + perChannel);
 }
 
