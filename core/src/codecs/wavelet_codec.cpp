@@ -4,12 +4,15 @@
 #include "codecs/wavelet_quantizer.h"
 #include "codecs/wavelet_transform.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry_image.h"
+#include "octaclay/core/normals.h"
 #include "octaclay/core/octahedral.h"
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -134,21 +137,6 @@ std::vector<float> seamedPlane(const FloatImage& image, int c) {
   return plane;
 }
 
-double rmsOverVertices(std::span<const float> a, std::span<const float> b, int n) {
-  const auto w = static_cast<std::size_t>(n) + 1;
-  double sum = 0;
-  std::size_t count = 0;
-  forEachCanonicalRun(n, [&](int j, int begin, int end) {
-    for (int i = begin; i < end; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
-      const double d = static_cast<double>(a[k]) - static_cast<double>(b[k]);
-      sum += d * d;
-    }
-    count += static_cast<std::size_t>(end - begin);
-  });
-  return std::sqrt(sum / static_cast<double>(count));
-}
-
 double positionDiagonal(const FloatImage& image) {
   const int spatial = std::min(image.channels, 3);
   double sum = 0;
@@ -164,30 +152,112 @@ double positionDiagonal(const FloatImage& image) {
   return std::sqrt(sum);
 }
 
-// The largest step whose reconstruction keeps the channel's RMS error within `target`.
-ChannelCoding chooseStep(std::span<const float> original, std::span<const float> coefficients,
-                         int n, ChannelCoding coding, double target, std::vector<std::int32_t>& q) {
-  std::vector<float> rebuilt(original.size());
-  const auto errorAt = [&](float step) {
-    coding.step = step;
-    detail::quantizePlane(coefficients, n, step, q);
-    detail::reconstructPlane(q, n, coding, rebuilt);
-    return rmsOverVertices(original, rebuilt, n);
+// The errors the bound is stated for, over the vertices: positions along the original
+// surface's normals and across them, other channels each alone.
+struct Errors {
+  double normal = 0, tangent = 0;
+  std::vector<double> scalar;
+};
+
+class ErrorMeter {
+public:
+  ErrorMeter(const std::vector<std::vector<float>>& original, int n)
+      : original_(original), n_(n) {
+    if (original.size() < static_cast<std::size_t>(detail::kVectorChannels)) return;
+    GeometryImage image(n);
+    auto texels = image.texels();
+    for (std::size_t k = 0; k < texels.size(); ++k)
+      texels[k] = {original[0][k], original[1][k], original[2][k], 0.0f};
+    normals_ = computeNormals(image);
+  }
+
+  Errors measure(const std::vector<std::vector<float>>& rebuilt) const {
+    const auto w = static_cast<std::size_t>(n_) + 1;
+    const std::size_t channels = original_.size();
+    const bool vector = !normals_.empty();
+    Errors e;
+    e.scalar.assign(channels, 0.0);
+    std::size_t count = 0;
+    forEachCanonicalRun(n_, [&](int j, int begin, int end) {
+      for (int i = begin; i < end; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
+        std::size_t c = 0;
+        if (vector) {
+          const Vec3f d{rebuilt[0][k] - original_[0][k], rebuilt[1][k] - original_[1][k],
+                        rebuilt[2][k] - original_[2][k]};
+          const double along = dot(d, normals_[k]);
+          e.normal += along * along;
+          e.tangent += std::max(0.0, static_cast<double>(dot(d, d)) - along * along);
+          c = 3;
+        }
+        for (; c < channels; ++c) {
+          const double d = static_cast<double>(rebuilt[c][k]) - original_[c][k];
+          e.scalar[c] += d * d;
+        }
+      }
+      count += static_cast<std::size_t>(end - begin);
+    });
+    const auto rms = [count](double sum) { return std::sqrt(sum / static_cast<double>(count)); };
+    e.normal = rms(e.normal);
+    e.tangent = rms(e.tangent);
+    for (double& x : e.scalar)
+      x = rms(x);
+    return e;
+  }
+
+private:
+  const std::vector<std::vector<float>>& original_;
+  int n_;
+  std::vector<Vec3f> normals_;
+};
+
+// How far the error is past the bound: ≤ 1 when every part is within it.
+double excess(const Errors& e, double target) {
+  double worst = std::max(e.normal / target, e.tangent / (kWaveletTangentFactor * target));
+  for (double x : e.scalar)
+    worst = std::max(worst, x / target);
+  return worst;
+}
+
+// Tangential steps are this many times the normal one.
+double tangentStepRatio() {
+  static const double ratio = std::getenv("WQ_T") ? std::atof(std::getenv("WQ_T")) : 3.0;
+  return ratio;
+}
+
+void setSteps(std::vector<ChannelCoding>& coding, double step) {
+  for (std::size_t c = 0; c < coding.size(); ++c)
+    coding[c].step = static_cast<float>(
+        c >= 1 && c < static_cast<std::size_t>(detail::kVectorChannels) &&
+                coding.size() >= static_cast<std::size_t>(detail::kVectorChannels)
+            ? step * tangentStepRatio()
+            : step);
+}
+
+// The largest steps whose reconstruction keeps every error within the bound; leaves q
+// quantized with them.
+void chooseSteps(const std::vector<std::vector<float>>& coefficients, const ErrorMeter& meter,
+                 std::vector<ChannelCoding>& coding, double target, CoefficientPlanes& q) {
+  std::vector<std::vector<float>> rebuilt;
+  const auto excessAt = [&](double step) {
+    setSteps(coding, step);
+    detail::rebuild(q, coding, rebuilt, &coefficients);
+    return excess(meter.measure(rebuilt), target);
   };
   double good = 0, bad = 0;
   double step = target * 3.0;
-  for (int iteration = 0; iteration < 24; ++iteration) {
-    const double error = errorAt(static_cast<float>(step));
-    if (error <= target) {
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    const double over = excessAt(step);
+    if (over <= 1) {
       good = step;
       if (bad == 0) {
-        step *= std::clamp(target / std::max(error, 1e-300), 1.1, 4.0);
+        step *= std::clamp(1 / std::max(over, 1e-300), 1.1, 4.0);
         continue;
       }
     } else {
       bad = step;
       if (good == 0) {
-        step *= std::clamp(target / error, 0.25, 0.9);
+        step *= std::clamp(1 / over, 0.25, 0.9);
         continue;
       }
     }
@@ -197,9 +267,7 @@ ChannelCoding chooseStep(std::span<const float> original, std::span<const float>
   if (good == 0)
     throw Error(ErrorKind::InvalidArgument,
                 "wavelet: the error bound cannot be met in float precision; use a larger one");
-  coding.step = static_cast<float>(good);
-  detail::quantizePlane(coefficients, n, coding.step, q);
-  return coding;
+  excessAt(good);
 }
 
 struct Header {
@@ -289,15 +357,13 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   }
   if (!prefix && in.remaining() != 0) invalid("bytes after the last band");
 
+  std::vector<std::vector<float>> rebuilt;
+  detail::rebuild(planes, header.channels, rebuilt);
   FloatImage image{n, channels,
                    std::vector<float>(sampleCount(n) * static_cast<std::size_t>(channels))};
-  std::vector<float> plane(sampleCount(n));
-  for (int c = 0; c < channels; ++c) {
-    detail::reconstructPlane(planes.q[static_cast<std::size_t>(c)], n,
-                             header.channels[static_cast<std::size_t>(c)], plane);
-    for (std::size_t k = 0; k < plane.size(); ++k)
-      image.texels[k * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)] = plane[k];
-  }
+  for (std::size_t c = 0; c < rebuilt.size(); ++c)
+    for (std::size_t k = 0; k < rebuilt[c].size(); ++k)
+      image.texels[k * static_cast<std::size_t>(channels) + c] = rebuilt[c][k];
   return image;
 }
 
@@ -310,31 +376,36 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
   if (!(diagonal > 0)) diagonal = 1; // a single point: bound the error absolutely
   const double target = bound * diagonal;
 
+  std::vector<std::vector<float>> original, coefficients;
+  std::vector<ChannelCoding> coding(static_cast<std::size_t>(image.channels));
+  for (int c = 0; c < image.channels; ++c) {
+    original.push_back(seamedPlane(image, c));
+    const auto [lo, hi] = std::minmax_element(original.back().begin(), original.back().end());
+    ChannelCoding& cc = coding[static_cast<std::size_t>(c)];
+    cc.centre = 0.5f * (*lo + *hi);
+    std::vector<float> plane(original.back().size());
+    for (std::size_t k = 0; k < plane.size(); ++k)
+      plane[k] = original.back()[k] - cc.centre;
+    detail::forwardWavelet(plane, n);
+    cc.dc = plane[0];
+    coefficients.push_back(std::move(plane));
+  }
+  CoefficientPlanes planes{n, image.channels, {}};
+  planes.q.assign(static_cast<std::size_t>(image.channels),
+                  std::vector<std::int32_t>(sampleCount(n)));
+  chooseSteps(coefficients, ErrorMeter(original, n), coding, target, planes);
+
   Writer out;
   out.u16(kWaveletVersion);
   out.u32(static_cast<std::uint32_t>(n));
   out.u8(static_cast<std::uint8_t>(image.channels));
-  CoefficientPlanes planes{n, image.channels, {}};
-  for (int c = 0; c < image.channels; ++c) {
-    const std::vector<float> original = seamedPlane(image, c);
-    const auto [lo, hi] = std::minmax_element(original.begin(), original.end());
-    ChannelCoding coding;
-    coding.centre = 0.5f * (*lo + *hi);
-    std::vector<float> coefficients(original.size());
-    for (std::size_t k = 0; k < original.size(); ++k)
-      coefficients[k] = original[k] - coding.centre;
-    detail::forwardWavelet(coefficients, n);
-    coding.dc = coefficients[0];
-    std::vector<std::int32_t> q(original.size());
-    coding = chooseStep(original, coefficients, n, coding, target, q);
-    out.f32(coding.centre);
-    out.f32(coding.step);
-    out.f32(coding.dc);
-    planes.q.push_back(std::move(q));
+  for (const ChannelCoding& cc : coding) {
+    out.f32(cc.centre);
+    out.f32(cc.step);
+    out.f32(cc.dc);
   }
   for (const Band& band : bandOrder(n)) {
-    const std::vector<std::uint8_t> bytes =
-        detail::encodeBand(planes, band.level, band.orientation);
+    const std::vector<std::uint8_t> bytes = detail::encodeBand(planes, band.level, band.orientation);
     out.u32(static_cast<std::uint32_t>(bytes.size()));
     out.bytes.insert(out.bytes.end(), bytes.begin(), bytes.end());
   }

@@ -1,8 +1,13 @@
 #pragma once
 
-// Scalar quantization of one channel's wavelet coefficients and the reconstruction of the
-// channel from them; the encoder's error check and the decoder share reconstructPlane, so
-// what the encoder measured is what the decoder returns.
+// Quantization of the wavelet coefficients and the reconstruction of the image from them, one
+// level at a time, coarse to fine. Positions (the first three channels of an image with three
+// or more) are quantized as vectors in a frame of the surface the coarser levels rebuilt: along
+// its normal with the finest step, across it (where the geometric error barely moves) with a
+// coarser one. The encoder and the decoder run the same code, so the frames, and what the
+// encoder measured, are what the decoder gets.
+
+#include "codecs/wavelet_bands.h"
 
 #include <cstdint>
 #include <span>
@@ -11,25 +16,23 @@
 namespace octaclay::core::detail {
 
 /// How one channel was coded: samples = reconstruction + centre, the DC coefficient kept as a
-/// float, the others as q·step.
+/// float, the others as q·step. For positions, the steps of channels 0, 1, 2 are those of the
+/// frame's normal and two tangents.
 struct ChannelCoding {
   float centre = 0;
   float step = 1;
   float dc = 0;
 };
 
-/// The reconstruction point of |q| ≥ 1 is (|q| + kReconstructionOffset)·step: coefficients
-/// are peaked at zero, so the mean of each quantization bin lies below its middle.
-inline constexpr float kRoundingOffset = 0.5f;
-inline constexpr float kReconstructionOffset = 0.0f;
+/// Positions are coded in frames when the image has at least this many channels.
+inline constexpr int kVectorChannels = 3;
 
-/// Quantizes every sample's coefficient but the DC (at the corners, set to 0).
-void quantizePlane(std::span<const float> coefficients, int n, float step,
-                   std::span<std::int32_t> q);
-
-/// The channel's (N+1)² samples from its quantized coefficients, seamed (each identified
-/// sample a bit copy of its canonical one).
-void reconstructPlane(std::span<const std::int32_t> q, int n, const ChannelCoding& coding,
-                      std::span<float> out);
+/// Fills `planes` (channels × (N+1)², seamed) from the quantized coefficients in q. With
+/// `exact` (the forward transform of the image, centred), quantizes them first into q, level
+/// by level, as the decoder will see them. `levels` finest levels beyond `completeLevels`
+/// coarsest ones stay zero (a progressive prefix).
+void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
+             std::vector<std::vector<float>>& planes,
+             const std::vector<std::vector<float>>* exact = nullptr);
 
 } // namespace octaclay::core::detail

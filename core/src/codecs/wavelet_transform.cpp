@@ -170,12 +170,15 @@ void forwardWavelet(std::span<float> plane, int n) {
   }
 }
 
-void inverseWavelet(std::span<float> plane, int n) {
+void inverseWaveletLevel(std::span<float> plane, int n, int level) {
   const Plane p{plane.data(), n};
-  for (int level = waveletLevels(n) - 1; level >= 0; --level) {
-    columnPass(p, 1 << level, false);
-    rowPass(p, 1 << level, false);
-  }
+  columnPass(p, 1 << level, false);
+  rowPass(p, 1 << level, false);
+}
+
+void inverseWavelet(std::span<float> plane, int n) {
+  for (int level = waveletLevels(n) - 1; level >= 0; --level)
+    inverseWaveletLevel(plane, n, level);
 }
 
 } // namespace octaclay::core::detail

@@ -17,5 +17,7 @@ int waveletLevels(int n);
 /// In place on one plane of (N+1)² floats, row-major.
 void forwardWavelet(std::span<float> plane, int n);
 void inverseWavelet(std::span<float> plane, int n);
+/// Undoes level `level` alone (levels above it undone already).
+void inverseWaveletLevel(std::span<float> plane, int n, int level);
 
 } // namespace octaclay::core::detail

@@ -23,6 +23,8 @@ inline constexpr std::uint16_t kWaveletVersion = 1;
 inline constexpr double kWaveletMinBound = 1e-6;
 inline constexpr double kWaveletMaxBound = 0.1;
 inline constexpr double kWaveletDefaultBound = 2e-5;
+/// The tangential error may be this many times the bound (see above).
+inline constexpr double kWaveletTangentFactor = 8;
 
 /// Throws Error(InvalidArgument) for a bound outside [kWaveletMinBound, kWaveletMaxBound], an
 /// invalid n, 1 ≤ channels ≤ 4 not holding, a texel count other than (N+1)²·channels or a
