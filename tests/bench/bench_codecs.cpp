@@ -19,6 +19,7 @@
 #include "octaclay/core/octahedral_resampling.h"
 #include "octaclay/core/seaming.h"
 #include "octaclay/core/spherical_parameterization.h"
+#include "octaclay/core/wavelet_codec.h"
 #include "rd_measure.h"
 
 #include <algorithm>
@@ -150,7 +151,7 @@ std::optional<app::RdPoint> waveletAt(const app::RdReference& reference, double 
                                       std::size_t samples) {
   const core::Codec* wavelet = core::findCodec(std::string_view("wavelet"));
   if (wavelet == nullptr) return std::nullopt;
-  double fine = 1e-8, coarse = 1e-2;
+  double fine = core::kWaveletMinBound, coarse = 1e-2;
   std::optional<app::RdPoint> best;
   for (int k = 0; k < 14; ++k) {
     const double bound = std::sqrt(fine * coarse);
@@ -267,7 +268,11 @@ int main(int argc, char** argv) {
     auto wanted = [&](const std::string& name) {
       return options.meshFilter.empty() || name.find(options.meshFilter) != std::string::npos;
     };
-    if (wanted("sculpted_sphere")) rdTable("sculpted_sphere", sculptedSphere(512), options, tally);
+    if (wanted("sculpted_sphere")) try {
+        rdTable("sculpted_sphere", sculptedSphere(512), options, tally);
+      } catch (const std::exception& e) {
+        tally.verdict(false, std::string("sculpted_sphere: ") + e.what());
+      }
     for (const char* mesh : {"bunny_cgal.obj", "armadillo.obj", "igea.ply"}) {
       const std::string name = fs::path(mesh).stem().string();
       if (!wanted(name)) continue;

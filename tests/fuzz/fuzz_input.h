@@ -1,7 +1,7 @@
 // How decode_fuzzer reads its input, shared with make_fuzz_corpus so that the seeds are valid
 // streams in this layout: byte 0 picks the target (0: the .ocz container, k ≥ 1: codec
 // (k − 1) mod #codecs, whose byte 1 gives N = 2^(1 + b mod 6) and byte 2 the channels
-// 1 + b mod 4); the rest is the stream.
+// 1 + b mod 4, and the wavelet's prefix length in its upper bits); the rest is the stream.
 #pragma once
 
 #include "octaclay/core/codec.h"
