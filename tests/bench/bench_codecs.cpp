@@ -171,6 +171,24 @@ std::optional<app::RdPoint> waveletAt(const app::RdReference& reference, double 
   return best;
 }
 
+// Draco's bits per vertex at `psnr`, interpolated (log bits, linear dB) between the two
+// quantizations of the sweep that bracket it.
+std::optional<double> dracoBitsAt(const std::vector<app::RdPoint>& points, double psnr) {
+  const app::RdPoint* below = nullptr;
+  for (const app::RdPoint& p : points) {
+    if (p.codec != "draco") continue;
+    if (p.distortion.psnr < psnr) {
+      below = &p;
+    } else if (below != nullptr) {
+      const double t =
+          (psnr - below->distortion.psnr) / (p.distortion.psnr - below->distortion.psnr);
+      return std::exp2(std::log2(below->bitsPerVertex) +
+                       t * (std::log2(p.bitsPerVertex) - std::log2(below->bitsPerVertex)));
+    }
+  }
+  return std::nullopt;
+}
+
 void rdTable(const std::string& name, const core::GeometryImage& image, const Options& options,
              Tally& tally) {
   const auto start = Clock::now();
@@ -191,6 +209,10 @@ void rdTable(const std::string& name, const core::GeometryImage& image, const Op
                 "seam gap %g\n",
                 kTargetPsnr, wavelet->quality, wavelet->bitsPerVertex, wavelet->distortion.psnr,
                 wavelet->bitsPerVertex / draco.bitsPerVertex, wavelet->distortion.maxSeamGap);
+    if (const auto equal = dracoBitsAt(points, kTargetPsnr))
+      std::printf("Draco at %g dB (interpolated between quantizations): %.3f bits/vertex; "
+                  "wavelet/Draco at equal PSNR %.2fx\n",
+                  kTargetPsnr, *equal, wavelet->bitsPerVertex / *equal);
     tally.verdict(wavelet->bitsPerVertex <= kWaveletOverDraco * draco.bitsPerVertex,
                   name + ": wavelet reaches 95 dB at <= 0.5x Draco's bits");
     tally.verdict(wavelet->distortion.maxSeamGap == 0, name + ": wavelet opens no crack");
