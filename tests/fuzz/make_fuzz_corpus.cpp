@@ -58,8 +58,8 @@ int main(int argc, char** argv) {
           try {
             const auto stream = all[k].encode(imageOf(shape, channels), params);
             writeSeed(dir,
-                      std::string(all[k].info.id) + params.mode + "_" + std::to_string(n) + "_" +
-                          std::to_string(channels),
+                      std::to_string(written) + "_" + std::string(all[k].info.id) + params.mode +
+                          "_" + std::to_string(n) + "_" + std::to_string(channels),
                       fuzz_input::header(k, n, channels), stream);
             ++written;
           } catch (const core::Error& e) {
