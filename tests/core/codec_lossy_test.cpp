@@ -86,6 +86,25 @@ private slots:
     }
   }
 
+  void flatThinAndNonFiniteChannels() {
+    FloatImage image = bumpyImage(16);
+    for (std::size_t k = 0; k < image.texels.size(); k += 3) {
+      image.texels[k] = 2.5f;                         // flat
+      image.texels[k + 1] = (k % 2) ? 1e-44f : 0.0f;  // denormal-thin
+      image.texels[k + 2] = (k % 7) ? 3e38f : -3e38f; // range overflows float
+    }
+    for (const char* id : {"bytepack", "dct"})
+      QVERIFY_THROWS_EXCEPTION(Error, findCodec(id)->encode(image, {}));
+    for (std::size_t k = 2; k < image.texels.size(); k += 3)
+      image.texels[k] = 1.0f;
+    for (const char* id : {"bytepack", "dct"}) {
+      const Codec& codec = *findCodec(id);
+      const FloatImage decoded = codec.decode(codec.encode(image, {}), 16, 3);
+      QVERIFY(maxAbsError(decoded, image) <= codec.errorBound(image, {}));
+      QCOMPARE(decoded.texels[0], 2.5f);
+    }
+  }
+
   void badParametersAreRefused() {
     const FloatImage image = bumpyImage(8);
     for (const Case& c :

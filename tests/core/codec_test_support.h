@@ -18,7 +18,7 @@
 
 namespace octaclay::core::testing {
 
-/// Sample (i, j)'s point on a bumpy octahedron-unfolded surface, from + − × only (no libm),
+/// Sample (i, j)'s point on a bumpy octahedron-unfolded surface, from + − × ÷ only (no libm),
 /// so golden streams do not depend on the C library; `channels` values per sample (the 4th
 /// is a ramp, the 1st of a 1-channel image is x).
 inline FloatImage bumpyImage(int n, int channels = 3) {
@@ -31,8 +31,8 @@ inline FloatImage bumpyImage(int n, int channels = 3) {
       x = (1.0f - std::abs(v)) * (u < 0 ? -1.0f : 1.0f);
       y = (1.0f - std::abs(u)) * (v < 0 ? -1.0f : 1.0f);
     }
-    const float bump = 1.0f + 0.125f * x * y - 0.0625f * z * z * x;
-    const float p[4] = {x * bump, y * bump, z * bump, 0.5f + 0.25f * u * v};
+    const float bump = 1.0f + x * y / 3.0f - z * z * x / 7.0f; // full mantissas
+    const float p[4] = {x * bump, y * bump, z * bump, 0.5f + u * v / 5.0f};
     return p[c];
   };
   for (int j = 0; j <= n; ++j)

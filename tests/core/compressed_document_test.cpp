@@ -112,6 +112,18 @@ private slots:
     QVERIFY(exrLayers.mask.texels == doc.mask.texels);
   }
 
+  void defaultOptionsUseTheWaveletCodecSeamed() {
+    const Document doc = paintedDocument(64);
+    const auto bytes = compressDocument(doc, {});
+    QCOMPARE(int(bytes[13]),
+             int(findCodec("wavelet")->info.code)); // positions: storage, channels, code
+    const Document back = decompressDocument(bytes);
+    QCOMPARE(maxSeamGap(back.positions), 0.0f);
+    const FloatImage original{64, 3, positionsOf(doc)};
+    QVERIFY(maxAbsError({64, 3, positionsOf(back)}, original) < 0.01); // the blob spans ~2.3
+    QVERIFY(back.diffuse.texels == doc.diffuse.texels);
+  }
+
   void unknownCodecIsRefused() {
     const Document doc = paintedDocument(8);
     for (const CompressOptions& options :

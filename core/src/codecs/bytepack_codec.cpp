@@ -11,6 +11,7 @@
 #include "codecs/zstd_blocks.h"
 #include "octaclay/core/error.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace octaclay::core {
@@ -65,6 +66,10 @@ std::vector<std::uint8_t> encode(const FloatImage& image, const CodecParams& par
   requireCodableImage(image, kInfo.id);
   const int n = image.n, side = n + 1, channels = image.channels;
   const int r = regionsPerSide(params, n);
+  for (const ChannelRange& range : channelRanges(image))
+    if (!std::isfinite(range.span()))
+      throw Error(ErrorKind::InvalidArgument,
+                  "bytepack: the image holds non-finite values or a range beyond float's");
   const std::size_t regionCount = static_cast<std::size_t>(r) * r;
   Regions regions{std::vector<float>(regionCount * channels),
                   std::vector<float>(regionCount * channels, INFINITY),

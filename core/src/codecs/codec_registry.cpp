@@ -4,12 +4,8 @@ namespace octaclay::core {
 
 const std::vector<Codec>& codecs() {
   static const std::vector<Codec> all = [] {
-    std::vector<Codec> list{makeBytepackCodec(), makeDctCodec(), makeExrCodec()};
-// The wavelet codec joins the list when its source (branch `wavelet`) is in the tree.
-#if __has_include("codecs/wavelet_codec.cpp")
-    list.push_back(makeWaveletCodec());
-#endif
-    list.push_back(makeLosslessCodec());
+    std::vector<Codec> list{makeBytepackCodec(), makeDctCodec(), makeExrCodec(), makeWaveletCodec(),
+                            makeLosslessCodec()};
     return list;
   }();
   return all;

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <opencv2/core.hpp>
 
 namespace octaclay::core {
@@ -60,9 +61,11 @@ std::array<int, 64> quantTable(int quality) {
   return table;
 }
 
+// A channel's quantizer unit; 1 for a flat or denormal-thin channel, whose coefficients all
+// round to zero either way.
 float unitOf(const ChannelRange& range) {
-  const float span = range.span();
-  return span > 0 ? static_cast<float>(span / kUnitsPerRange) : 1.0f;
+  const float unit = static_cast<float>(range.span() / kUnitsPerRange);
+  return unit >= std::numeric_limits<float>::min() ? unit : 1.0f;
 }
 
 struct Blocks {

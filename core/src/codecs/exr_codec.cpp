@@ -132,6 +132,43 @@ std::vector<std::uint8_t> encode(const FloatImage& image, const CodecParams& par
   return out.take();
 }
 
+// OpenEXR allocates what a header's attribute sizes and data window say before it reads them,
+// so the header is walked here first: every attribute must fit in the stream, and the data
+// window must be the (N+1)² grid.
+void checkExrHeaderBytes(const ByteReader& owner, std::span<const std::uint8_t> file, int n) {
+  ByteReader in(file, "exr stream");
+  if (in.u32() != 0x01312f76u) owner.fail("not an OpenEXR image (wrong magic number)");
+  if (in.u32() != 2u) owner.fail("not a single-part scanline OpenEXR image");
+  const auto nameOf = [&] {
+    std::string name;
+    for (std::uint8_t c = in.u8(); c != 0; c = in.u8())
+      if (name.size() < 255)
+        name += static_cast<char>(c);
+      else
+        owner.fail("OpenEXR attribute name too long");
+    return name;
+  };
+  bool window = false;
+  for (int count = 0;; ++count) {
+    const std::string name = nameOf();
+    if (name.empty()) break;
+    if (count >= 64) owner.fail("too many OpenEXR attributes");
+    const std::string type = nameOf();
+    const std::uint32_t size = in.u32();
+    if (size > in.remaining()) owner.fail("OpenEXR attribute " + name + " runs past the end");
+    ByteReader value(in.take(size), "exr stream");
+    if (name == "dataWindow" || name == "displayWindow") {
+      if (type != "box2i" || size != 16) owner.fail("OpenEXR " + name + " is not a box2i");
+      const std::uint32_t expected[4] = {0, 0, static_cast<std::uint32_t>(n),
+                                         static_cast<std::uint32_t>(n)};
+      for (std::uint32_t e : expected)
+        if (value.u32() != e) owner.fail("OpenEXR " + name + " is not the (N+1)² grid");
+      window = window || name == "dataWindow";
+    }
+  }
+  if (!window) owner.fail("OpenEXR header has no data window");
+}
+
 void checkExrHeader(const ByteReader& in, const Imf::Header& header, const Mode& mode, int n,
                     int channels) {
   const Imath::Box2i window = header.dataWindow();
@@ -153,7 +190,9 @@ FloatImage decode(std::span<const std::uint8_t> bytes, int n, int channels) {
   readStreamHeader(in, kInfo, n, channels);
   const std::uint8_t mode = in.u8();
   if (mode >= kModes.size()) in.fail("unknown mode " + std::to_string(mode));
-  MemoryIStream stream(in.take(in.remaining()));
+  const auto exrBytes = in.take(in.remaining());
+  checkExrHeaderBytes(in, exrBytes, n);
+  MemoryIStream stream(exrBytes);
   FloatImage image{n, channels, std::vector<float>(sampleCount(n) * channels)};
   const std::size_t xStride = sizeof(float) * channels;
   try {

@@ -12,17 +12,17 @@
 namespace octaclay::core::detail {
 namespace {
 
-constexpr int kBuckets = 12;
-constexpr int kLevelClasses = 3;
+constexpr int kBuckets = 24;
 constexpr int kOtherClasses = 4;
 constexpr int kExponents = 32;
+constexpr int kExponentClasses = 8;
+constexpr int kMaxCodedChannels = 4;
 
-// Context bucket of a weighted neighbourhood magnitude sum, roughly logarithmic.
+// Context bucket of a weighted neighbourhood magnitude sum: exact below 8, then two per octave.
 int bucket(int m) {
-  static constexpr std::array<std::uint8_t, 40> table = {
-      0, 1, 2, 3, 4, 5, 5, 6, 6, 7, 7, 7, 7,  8,  8,  8,  8,  8,  8,  8,
-      9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 9, 10, 10, 10, 10, 10, 10, 10, 10};
-  return m < static_cast<int>(table.size()) ? table[static_cast<std::size_t>(m)] : kBuckets - 1;
+  if (m < 8) return m;
+  const int width = std::bit_width(static_cast<unsigned>(m));
+  return std::min(2 * (width - 4) + 8 + ((m >> (width - 2)) & 1), kBuckets - 1);
 }
 
 struct ChannelModels {
@@ -30,7 +30,8 @@ struct ChannelModels {
   std::array<BitModel, 27> sign;
   std::array<BitModel, kBuckets * kOtherClasses> above1;
   std::array<BitModel, kBuckets> above2;
-  std::array<BitModel, kExponents> exponent;
+  std::array<BitModel, kExponents * kExponentClasses> exponent;
+  std::array<BitModel, kExponents> mantissa;
 };
 
 struct BandGeometry {
@@ -64,9 +65,10 @@ int signClass(std::int32_t v) {
 
 template <class Coder>
 std::int32_t codeValue(Coder& coder, ChannelModels& m, std::int32_t value, int context, int other,
-                       int signContext) {
+                       int signContext, bool knownNonzero) {
   const int zeroCtx = context * kOtherClasses + other;
-  if (coder.bit(m.zero[static_cast<std::size_t>(zeroCtx)], value != 0) == 0) return 0;
+  if (!knownNonzero && coder.bit(m.zero[static_cast<std::size_t>(zeroCtx)], value != 0) == 0)
+    return 0;
   const bool negative = coder.bit(m.sign[static_cast<std::size_t>(signContext)], value < 0) != 0;
   const std::uint32_t magnitude =
       value < 0 ? static_cast<std::uint32_t>(-static_cast<std::int64_t>(value))
@@ -79,12 +81,20 @@ std::int32_t codeValue(Coder& coder, ChannelModels& m, std::int32_t value, int c
       const std::uint32_t v = magnitude - 2; // ≥ 1 when encoding
       const int e = v == 0 ? 0 : std::bit_width(v) - 1;
       int decoded = 0;
+      const std::size_t exponents =
+          static_cast<std::size_t>(std::min(context / 3, kExponentClasses - 1)) * kExponents;
       while (decoded < kExponents - 1 &&
-             coder.bit(m.exponent[static_cast<std::size_t>(decoded)], decoded < e) != 0)
+             coder.bit(m.exponent[exponents + static_cast<std::size_t>(decoded)], decoded < e) != 0)
         ++decoded;
       std::uint32_t mantissa = 1;
-      for (int b = decoded - 1; b >= 0; --b)
-        mantissa = (mantissa << 1) | static_cast<std::uint32_t>(coder.raw((v >> b) & 1u));
+      for (int b = decoded - 1; b >= 0; --b) {
+        const int bit = static_cast<int>((v >> b) & 1u);
+        mantissa =
+            (mantissa << 1) |
+            static_cast<std::uint32_t>(
+                b == decoded - 1 ? coder.bit(m.mantissa[static_cast<std::size_t>(decoded)], bit)
+                                 : coder.raw(bit));
+      }
       result = std::min<std::uint32_t>(mantissa + 2, kMaxMagnitude);
     }
   }
@@ -97,9 +107,10 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
   const BandGeometry g = geometryOf(planes.n, level, orientation);
   const int n = g.n, s = g.s, d = 2 * s;
   const std::size_t w = static_cast<std::size_t>(n) + 1;
-  const int levelClass = std::min(level, kLevelClasses - 1);
-  (void)levelClass;
   std::vector<ChannelModels> models(static_cast<std::size_t>(planes.channels));
+  std::array<BitModel, kBuckets> vectorZero;
+  const int vectorChannels = planes.channels >= 3 ? 3 : 0;
+  if (vectorChannels > 0) planes.magnitude.resize(planes.q[0].size());
   const auto index = [w](int i, int j) {
     return static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
   };
@@ -109,34 +120,79 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
       const bool border = i == 0 || i == n || j == 0 || j == n;
       if (border && !isCanonicalSample(n, i, j)) continue;
       const std::size_t at = index(i, j);
-      int otherSum = 0;
-      for (int c = 0; c < planes.channels; ++c) {
-        std::int32_t* q = planes.q[static_cast<std::size_t>(c)].data();
+      const int pi = g.hasParent ? parentCoordinate(i, s, n) : 0;
+      // Weighted magnitudes of the coded neighbours in the band, the parent and its band
+      // neighbours; the signs of the nearest three.
+      struct Neighbourhood {
+        int m;
+        std::int32_t left, up, parent;
+      };
+      const auto neighbourhood = [&](const std::int32_t* q) {
         const auto value = [&](int ii, int jj) -> std::int32_t {
-          return ii < 0 || jj < 0 || ii > n ? 0 : q[index(ii, jj)];
+          return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : q[index(ii, jj)];
         };
-        const std::int32_t left = value(i - d, j), up = value(i, j - d);
-        const std::int32_t parent = g.hasParent ? q[index(parentCoordinate(i, s, n), pj)] : 0;
-        const int m = 2 * (std::abs(left) + std::abs(up)) + std::abs(value(i - d, j - d)) +
-                      std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
-                      std::abs(value(i, j - 2 * d)) + 2 * std::abs(parent);
-        const int context = bucket(m);
-        const int other = c == 0 ? 0 : 1 + std::min(otherSum, 2);
-        const int signContext = signClass(left) * 9 + signClass(up) * 3 + signClass(parent);
-        const std::int32_t coded = codeValue(coder, models[static_cast<std::size_t>(c)], q[at],
-                                             context, other, signContext);
-        q[at] = coded;
-        otherSum += std::abs(coded);
+        Neighbourhood h{0, value(i - d, j), value(i, j - d), 0};
+        int parents = 0;
+        if (g.hasParent) {
+          const int pd = 4 * s;
+          h.parent = q[index(pi, pj)];
+          parents = 2 * std::abs(h.parent) +
+                    (std::abs(value(pi - pd, pj)) + std::abs(value(pi + pd, pj)) +
+                     std::abs(value(pi, pj - pd)) + std::abs(value(pi, pj + pd)) + 1) /
+                        2;
+        }
+        h.m = 2 * (std::abs(h.left) + std::abs(h.up)) + std::abs(value(i - d, j - d)) +
+              std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
+              std::abs(value(i, j - 2 * d)) + parents;
+        return h;
+      };
+      int first = 0;
+      if (vectorChannels > 0) {
+        // One decision for the whole position vector (most of a fine band is zero), its
+        // context from the vector magnitudes so that a zero costs one neighbourhood, not three.
+        bool any = false;
+        for (int c = 0; c < vectorChannels; ++c)
+          any = any || planes.q[static_cast<std::size_t>(c)][at] != 0;
+        const int vectorContext = neighbourhood(planes.magnitude.data()).m;
+        if (coder.bit(vectorZero[static_cast<std::size_t>(bucket(vectorContext))], any) == 0) {
+          for (int c = 0; c < vectorChannels; ++c)
+            planes.q[static_cast<std::size_t>(c)][at] = 0;
+          first = vectorChannels;
+        }
       }
+      std::array<int, kMaxCodedChannels> contexts{}, signContexts{};
+      for (int c = first; c < planes.channels; ++c) {
+        const Neighbourhood h = neighbourhood(planes.q[static_cast<std::size_t>(c)].data());
+        contexts[static_cast<std::size_t>(c)] = h.m;
+        signContexts[static_cast<std::size_t>(c)] =
+            signClass(h.left) * 9 + signClass(h.up) * 3 + signClass(h.parent);
+      }
+      int otherSum = 0;
+      for (int c = first; c < planes.channels; ++c) {
+        std::int32_t* q = planes.q[static_cast<std::size_t>(c)].data();
+        const auto cc = static_cast<std::size_t>(c);
+        const int other = c == 0 || c == vectorChannels ? 0 : 1 + std::min(otherSum, 2);
+        // The last component of a non-zero vector whose others are zero is not zero.
+        const bool knownNonzero = c == vectorChannels - 1 && otherSum == 0;
+        const std::int32_t coded = codeValue(coder, models[cc], q[at], bucket(contexts[cc]), other,
+                                             signContexts[cc], knownNonzero);
+        q[at] = coded;
+        otherSum = c == vectorChannels - 1 ? 0 : otherSum + std::abs(coded);
+      }
+      int magnitude = 0;
+      for (int c = 0; c < vectorChannels; ++c)
+        magnitude += std::min(std::abs(planes.q[static_cast<std::size_t>(c)][at]), kMaxMagnitude);
+      if (vectorChannels > 0) planes.magnitude[at] = magnitude;
       if (border) {
         std::array<Sample, 4> copies;
         const int count = identifiedSamples(n, {i, j}, copies);
-        for (int k = 1; k < count; ++k)
-          for (int c = 0; c < planes.channels; ++c) {
-            auto& q = planes.q[static_cast<std::size_t>(c)];
-            q[index(copies[static_cast<std::size_t>(k)].i, copies[static_cast<std::size_t>(k)].j)] =
-                q[at];
-          }
+        for (int k = 1; k < count; ++k) {
+          const std::size_t copy =
+              index(copies[static_cast<std::size_t>(k)].i, copies[static_cast<std::size_t>(k)].j);
+          for (auto& q : planes.q)
+            q[copy] = q[at];
+          if (vectorChannels > 0) planes.magnitude[copy] = planes.magnitude[at];
+        }
       }
     }
   }
@@ -151,6 +207,14 @@ std::size_t bandSampleCount(int n, int level, Orientation orientation) {
     for (int i = g.iFirst; i <= n; i += 2 * g.s)
       count += isCanonicalSample(n, i, j) ? 1 : 0;
   return count;
+}
+
+void setVectorMagnitudes(CoefficientPlanes& planes) {
+  if (planes.channels < 3) return;
+  planes.magnitude.assign(planes.q[0].size(), 0);
+  for (std::size_t k = 0; k < planes.magnitude.size(); ++k)
+    planes.magnitude[k] =
+        std::abs(planes.q[0][k]) + std::abs(planes.q[1][k]) + std::abs(planes.q[2][k]);
 }
 
 std::vector<std::uint8_t> encodeBand(const CoefficientPlanes& planes, int level,
@@ -170,7 +234,7 @@ bool decodeBand(std::span<const std::uint8_t> bytes, CoefficientPlanes& planes, 
 
 std::size_t maxBandBytes(std::size_t samples, int channels) {
   // Per coefficient: zero, sign, > 1, > 2 and up to 31 exponent decisions, 31 raw bits.
-  constexpr std::size_t bitsPerValue = (4 + kExponents - 1) * kMaxBitsPerDecision + kExponents - 1;
+  constexpr std::size_t bitsPerValue = (5 + kExponents) * kMaxBitsPerDecision + kExponents;
   return samples * static_cast<std::size_t>(channels) * bitsPerValue / 8 + 16;
 }
 

@@ -25,7 +25,12 @@ struct CoefficientPlanes {
   int n = 0;
   int channels = 0;
   std::vector<std::vector<std::int32_t>> q;
+  /// With three or more channels: |q0| + |q1| + |q2| of the samples coded so far (contexts).
+  std::vector<std::int32_t> magnitude;
 };
+
+/// Fills planes.magnitude from complete planes (the encoder, before encodeBand).
+void setVectorMagnitudes(CoefficientPlanes& planes);
 
 /// Canonical samples of the band at this level (0 = finest) and orientation.
 std::size_t bandSampleCount(int n, int level, Orientation orientation);

@@ -1,5 +1,6 @@
 #include "octaclay/core/wavelet_codec.h"
 
+#include "codecs/codec_list.h"
 #include "codecs/wavelet_bands.h"
 #include "codecs/wavelet_quantizer.h"
 #include "codecs/wavelet_transform.h"
@@ -12,8 +13,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <thread>
@@ -25,12 +24,17 @@ using detail::ChannelCoding;
 using detail::CoefficientPlanes;
 using detail::Orientation;
 
-// Stream: u16 version, u32 n, u8 channels, then per channel f32 centre, step and DC; then
-// per band, coarsest level first, orientations along i, along j, diagonal: u32 length and the
-// band's range-coded bytes. Little-endian.
-constexpr std::size_t kFixedHeaderBytes = 2 + 4 + 1;
+// Stream, little-endian: u8 codec code (4), u16 version, u32 N, u8 channels (the header every
+// codec's stream starts with); per channel f32 centre, step and DC; then per band, coarsest
+// level first, orientations along i, along j, diagonal: u32 length and the band's range-coded
+// bytes.
+constexpr std::size_t kFixedHeaderBytes = 1 + 2 + 4 + 1;
+constexpr std::uint8_t kWaveletCode = 4;
 constexpr std::size_t kChannelHeaderBytes = 3 * 4;
 constexpr int kMaxChannels = 4;
+// Tangential steps are this many times the normal one: the rate minimum on armadillo at 95 dB
+// (3 and 5 cost ~1 % more); the tangential error stays well within kWaveletTangentFactor.
+constexpr double kTangentStepRatio = 4;
 
 std::size_t sampleCount(int n) {
   return static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1);
@@ -161,8 +165,7 @@ struct Errors {
 
 class ErrorMeter {
 public:
-  ErrorMeter(const std::vector<std::vector<float>>& original, int n)
-      : original_(original), n_(n) {
+  ErrorMeter(const std::vector<std::vector<float>>& original, int n) : original_(original), n_(n) {
     if (original.size() < static_cast<std::size_t>(detail::kVectorChannels)) return;
     GeometryImage image(n);
     auto texels = image.texels();
@@ -219,18 +222,12 @@ double excess(const Errors& e, double target) {
   return worst;
 }
 
-// Tangential steps are this many times the normal one.
-double tangentStepRatio() {
-  static const double ratio = std::getenv("WQ_T") ? std::atof(std::getenv("WQ_T")) : 3.0;
-  return ratio;
-}
-
 void setSteps(std::vector<ChannelCoding>& coding, double step) {
   for (std::size_t c = 0; c < coding.size(); ++c)
     coding[c].step = static_cast<float>(
         c >= 1 && c < static_cast<std::size_t>(detail::kVectorChannels) &&
                 coding.size() >= static_cast<std::size_t>(detail::kVectorChannels)
-            ? step * tangentStepRatio()
+            ? step * kTangentStepRatio
             : step);
 }
 
@@ -275,6 +272,10 @@ struct Header {
 };
 
 Header readHeader(Reader& in, int n, int channels) {
+  const auto code = in.uint(1);
+  if (code != kWaveletCode)
+    invalid("a stream of codec code " + std::to_string(code) + ", not wavelet (" +
+            std::to_string(kWaveletCode) + ")");
   const auto version = in.uint(2);
   if (version != kWaveletVersion)
     invalid("version " + std::to_string(version) + ", this build reads " +
@@ -313,8 +314,20 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   requireDecodable(n, channels);
   Reader in(stream.first(std::min(limit, stream.size())));
   const Header header = readHeader(in, n, channels);
-  CoefficientPlanes planes{n, channels, {}};
+  // The band table must hold together before anything of the image's size is allocated.
+  if (!prefix) {
+    Reader scan = in;
+    for (std::size_t k = 0; k < bandOrder(n).size(); ++k) {
+      if (scan.remaining() < 4) invalid("truncated band");
+      const std::size_t length = scan.uint(4);
+      if (length > scan.remaining()) invalid("truncated band");
+      scan.take(length);
+    }
+    if (scan.remaining() != 0) invalid("bytes after the last band");
+  }
+  CoefficientPlanes planes{n, channels, {}, {}};
   planes.q.assign(static_cast<std::size_t>(channels), std::vector<std::int32_t>(sampleCount(n)));
+  if (channels >= 3) planes.magnitude.assign(sampleCount(n), 0);
   const std::vector<Band> bands = bandOrder(n);
   std::size_t next = 0;
   while (next < bands.size()) {
@@ -364,6 +377,9 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   for (std::size_t c = 0; c < rebuilt.size(); ++c)
     for (std::size_t k = 0; k < rebuilt[c].size(); ++k)
       image.texels[k * static_cast<std::size_t>(channels) + c] = rebuilt[c][k];
+  // What the encoder wrote decodes near finite input; anything else was damaged.
+  for (float v : image.texels)
+    if (!std::isfinite(v)) invalid("it decodes to non-finite values");
   return image;
 }
 
@@ -390,12 +406,13 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     cc.dc = plane[0];
     coefficients.push_back(std::move(plane));
   }
-  CoefficientPlanes planes{n, image.channels, {}};
+  CoefficientPlanes planes{n, image.channels, {}, {}};
   planes.q.assign(static_cast<std::size_t>(image.channels),
                   std::vector<std::int32_t>(sampleCount(n)));
   chooseSteps(coefficients, ErrorMeter(original, n), coding, target, planes);
 
   Writer out;
+  out.u8(kWaveletCode);
   out.u16(kWaveletVersion);
   out.u32(static_cast<std::uint32_t>(n));
   out.u8(static_cast<std::uint8_t>(image.channels));
@@ -404,8 +421,10 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     out.f32(cc.step);
     out.f32(cc.dc);
   }
+  detail::setVectorMagnitudes(planes);
   for (const Band& band : bandOrder(n)) {
-    const std::vector<std::uint8_t> bytes = detail::encodeBand(planes, band.level, band.orientation);
+    const std::vector<std::uint8_t> bytes =
+        detail::encodeBand(planes, band.level, band.orientation);
     out.u32(static_cast<std::uint32_t>(bytes.size()));
     out.bytes.insert(out.bytes.end(), bytes.begin(), bytes.end());
   }
@@ -444,8 +463,9 @@ Codec makeWaveletCodec() {
                          4,
                          kWaveletVersion,
                          true,
-                         "error bound: the RMS error of each channel over the vertices, as a "
-                         "fraction of the bounding-box diagonal, 1e-6 … 0.1 (default 2e-5)",
+                         "error bound as a fraction of the bounding-box diagonal, 1e-6 … 0.1 "
+                         "(default 1.5e-5, about 96 dB): the RMS over the vertices of the "
+                         "position error along the surface normal (across it: 16x)",
                          kWaveletDefaultBound};
   codec.encode = [](const FloatImage& image, const CodecParams& params) {
     return encodeWavelet(image, params.quality > 0 ? params.quality : kWaveletDefaultBound);
@@ -454,6 +474,10 @@ Codec makeWaveletCodec() {
     return decodeWavelet(stream, n, channels);
   };
   codec.maxEncodedSize = [](int n, int channels, const CodecParams&) {
+    requireValidSize(n);
+    if (channels < 1 || channels > kMaxChannels)
+      throw Error(ErrorKind::InvalidArgument,
+                  "wavelet: " + std::to_string(channels) + " channels; it codes 1 to 4");
     std::size_t size = kFixedHeaderBytes + kChannelHeaderBytes * static_cast<std::size_t>(channels);
     for (const Band& band : bandOrder(n))
       size += 4 + detail::maxBandBytes(detail::bandSampleCount(n, band.level, band.orientation),

@@ -16,8 +16,8 @@ namespace {
 using Frame = std::array<std::array<float, 3>, 3>; // rows: normal, tangent, tangent
 
 std::int32_t quantize(float c, float step) {
-  const float magnitude = std::min(std::floor(std::abs(c) / step + 0.5f),
-                                   static_cast<float>(kMaxMagnitude - 1));
+  const float magnitude =
+      std::min(std::floor(std::abs(c) / step + 0.5f), static_cast<float>(kMaxMagnitude - 1));
   const auto m = static_cast<std::int32_t>(magnitude);
   return c < 0 ? -m : m;
 }
@@ -97,7 +97,8 @@ void seamPlane(std::vector<float>& plane, int n) {
 } // namespace
 
 void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
-             std::vector<std::vector<float>>& planes, const std::vector<std::vector<float>>* exact) {
+             std::vector<std::vector<float>>& planes,
+             const std::vector<std::vector<float>>* exact) {
   const int n = q.n, channels = q.channels;
   const auto w = static_cast<std::size_t>(n) + 1;
   planes.assign(static_cast<std::size_t>(channels), std::vector<float>(w * w, 0.0f));
@@ -118,7 +119,12 @@ void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
               const std::size_t k = static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
               std::array<float, 4> values{};
               int c = 0;
-              if (vector) {
+              if (vector && exact == nullptr && q.q[0][k] == 0 && q.q[1][k] == 0 &&
+                  q.q[2][k] == 0) {
+                // A zero vector in any frame; the planes hold zero there already.
+                if (channels == kVectorChannels) continue;
+                c = 3;
+              } else if (vector) {
                 const Frame f = frameAt(planes, n, d, i, j);
                 std::array<float, 3> rebuilt{0, 0, 0};
                 for (int r = 0; r < 3; ++r) {

@@ -27,10 +27,9 @@ struct ChannelCoding {
 /// Positions are coded in frames when the image has at least this many channels.
 inline constexpr int kVectorChannels = 3;
 
-/// Fills `planes` (channels × (N+1)², seamed) from the quantized coefficients in q. With
-/// `exact` (the forward transform of the image, centred), quantizes them first into q, level
-/// by level, as the decoder will see them. `levels` finest levels beyond `completeLevels`
-/// coarsest ones stay zero (a progressive prefix).
+/// Fills `planes` (channels × (N+1)², seamed) from the quantized coefficients in q (zero for
+/// bands a progressive prefix lacks). With `exact` (the forward transform of the image,
+/// centred), first quantizes it into q, level by level, in the frames the decoder will see.
 void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
              std::vector<std::vector<float>>& planes,
              const std::vector<std::vector<float>>* exact = nullptr);

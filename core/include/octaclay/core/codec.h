@@ -1,9 +1,11 @@
 #pragma once
 
 // Geometry-image codecs (thesis, chapter 5, and beyond it): each turns the (N+1)² float
-// planes of a layer into bytes and back. Decoders never trust their input: any stream that is
-// not exactly what the encoder wrote for that N is refused with Error(InvalidInput), never a
-// crash or an unbounded allocation.
+// planes of a layer into bytes and back. Decoders never trust their input: a stream that is
+// malformed for that N and channel count (truncated, wrong header, sizes that disagree) is
+// refused with Error(InvalidInput); a damaged payload that still parses decodes to some image
+// of the right shape. Never a crash or an allocation beyond what N and channels imply; the
+// .ocz container's CRC-32 refuses damaged files before any codec sees them.
 
 #include <cstddef>
 #include <cstdint>
@@ -37,8 +39,8 @@ struct CodecInfo {
   std::string_view id;       ///< "bytepack", "dct", "exr", "wavelet", "lossless"
   std::uint8_t code = 0;     ///< stored in the .ocz container
   std::uint16_t version = 0; ///< written in each stream and checked on decode
-  bool lossy = true;
-  std::string_view quality; ///< what CodecParams::quality means, its range and default
+  bool lossy = true;         ///< some parameters lose precision (exr: only pxr24 and half)
+  std::string_view quality;  ///< what CodecParams::quality means, its range and default
   double defaultQuality = 0;
 };
 

@@ -1,14 +1,21 @@
 #pragma once
 
 // The `wavelet` geometry codec (issue 8): a CDF 9/7 lifting transform over the octahedral
-// tiling of the plane (no seam is ever seen), one quantizer step per channel found so that an
-// error bound holds, and context-modelled adaptive range coding of the coefficients, coarse
-// bands first, so that a prefix of the stream decodes to a coarser model.
+// tiling of the plane (the transform never sees a seam), positions quantized as vectors in a
+// frame of the coarser rebuilt surface (fine steps along its normal, 4× coarser across it),
+// the step chosen so that an error bound holds, and context-modelled adaptive range coding of
+// the coefficients, coarse bands first, so that a prefix of the stream decodes to a coarser
+// model.
 //
-// Guarantee: for every channel c, the RMS over the N²+2 vertices (canonical samples) of
-// decoded − original (seamed: identified samples averaged) is ≤ bound × D, where D is the
-// diagonal of the bounding box of the first min(3, channels) channels (the positions). The
-// encoder checks this by decoding what it wrote. Identified samples decode bit-equal.
+// Guarantee, with D the diagonal of the bounding box of the first min(3, channels) channels
+// and RMS taken over the N²+2 vertices (canonical samples) against the input with identified
+// samples averaged:
+//   - 3 or 4 channels: the RMS of the position error's component along the input surface's
+//     vertex normals (core/normals.h computeNormals) is ≤ bound·D, the RMS length of its
+//     tangential part ≤ kWaveletTangentFactor·bound·D, and a 4th channel's RMS error ≤ bound·D;
+//   - 1 or 2 channels: each channel's RMS error is ≤ bound·D.
+// The encoder checks this by rebuilding what the decoder will. Identified samples decode
+// bit-equal (no cracks).
 
 #include "octaclay/core/codec.h"
 
@@ -22,9 +29,10 @@ namespace octaclay::core {
 inline constexpr std::uint16_t kWaveletVersion = 1;
 inline constexpr double kWaveletMinBound = 1e-6;
 inline constexpr double kWaveletMaxBound = 0.1;
-inline constexpr double kWaveletDefaultBound = 2e-5;
-/// The tangential error may be this many times the bound (see above).
-inline constexpr double kWaveletTangentFactor = 8;
+inline constexpr double kWaveletDefaultBound = 1.5e-5; ///< about 96 dB on scanned meshes
+/// The tangential error may be this many times the bound (see above): sliding along the
+/// surface barely changes its shape.
+inline constexpr double kWaveletTangentFactor = 16;
 
 /// Throws Error(InvalidArgument) for a bound outside [kWaveletMinBound, kWaveletMaxBound], an
 /// invalid n, 1 ≤ channels ≤ 4 not holding, a texel count other than (N+1)²·channels or a
