@@ -177,7 +177,7 @@ void writeRdPlot(std::span<const RdSeries> series, const std::string& title,
   for (int k = 0; k < 2; ++k)
     drawPanel(image(cv::Rect(k * kPanelWidth, 40, kPanelWidth, kHeight)), series, k == 1);
   detail::writeAtomically(png, [&](const std::filesystem::path& temporary) {
-    if (!cv::imwrite(temporary.string(), image))
+    if (!cv::imwrite(temporary.string(), image, {cv::IMWRITE_PNG_COMPRESSION, 9}))
       throw Error(ErrorKind::Io, png.string() + ": cannot write the plot");
   });
 }
