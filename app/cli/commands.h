@@ -32,5 +32,7 @@ Command addStrokeCommand(CLI::App& app);
 Command addBrushesCommand(CLI::App& app);
 Command addImportCommand(CLI::App& app);
 Command addLodCommand(CLI::App& app);
+Command addCompressCommand(CLI::App& app);
+Command addDecompressCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -15,6 +15,7 @@
 #include "octaclay/core/spherical_parameterization.h"
 #include "octaclay/core/textured_export.h"
 #include "octaclay/gpu/brush_library.h"
+#include "save_compressed_dialog.h"
 #include "stroke_command.h"
 #include "viewport_widget.h"
 
@@ -184,6 +185,16 @@ void MainWindow::buildMenus() {
           this, [this] {
             const QString path = choose(FileRequest::SaveAs);
             if (!path.isEmpty()) saveDocument(path);
+          });
+  connect(add(file, tr("Save &Compressed…"), "actionSaveCompressed"), &QAction::triggered, this,
+          [this] {
+            if (!viewport_->hasDocument()) return;
+            viewport_->endStroke();
+            SaveCompressedDialog dialog(
+                std::make_shared<const core::Document>(viewport_->document()), this);
+            if (dialog.exec() != QDialog::Accepted) return;
+            const QString path = choose(FileRequest::SaveCompressed);
+            if (!path.isEmpty()) saveCompressed(path, dialog.options());
           });
   connect(
       add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
@@ -396,7 +407,10 @@ QString MainWindow::choose(FileRequest request) {
   switch (request) {
   case FileRequest::Open:
     return QFileDialog::getOpenFileName(this, tr("Open model"), dir,
-                                        tr("Octaclay documents (*.exr)"));
+                                        tr("Octaclay documents (*.exr *.ocz)"));
+  case FileRequest::SaveCompressed:
+    return QFileDialog::getSaveFileName(this, tr("Save compressed model"), dir,
+                                        tr("Compressed Octaclay documents (*.ocz)"));
   case FileRequest::SaveAs:
     return QFileDialog::getSaveFileName(this, tr("Save model"), dir,
                                         tr("Octaclay documents (*.exr)"));
@@ -534,13 +548,15 @@ bool MainWindow::newDocument(core::BaseShape shape, int n, bool force) {
 bool MainWindow::openDocument(const QString& path) {
   auto read = std::make_shared<core::Document>();
   const QString error = runInBackground(tr("Opening %1…").arg(QFileInfo(path).fileName()),
-                                        [read, path] { *read = core::readDocument(toPath(path)); });
+                                        [read, path] { *read = readModelFile(path); });
   if (!error.isEmpty()) {
     showError(tr("Could not open %1: %2\nThe current model is unchanged.").arg(path, error));
     return false;
   }
-  adoptDocument(std::move(*read), QFileInfo(path).absoluteFilePath());
-  addRecentFile(path_);
+  // A compressed model opens untitled, so Save asks for an .exr instead of overwriting it.
+  const bool compressed = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0;
+  adoptDocument(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath());
+  addRecentFile(QFileInfo(path).absoluteFilePath());
   lastError_.clear();
   return true;
 }
@@ -565,6 +581,23 @@ bool MainWindow::saveDocument(const QString& path) {
   updateTitle();
   lastError_.clear();
   statusBar()->showMessage(tr("Saved %1").arg(path_), 5000);
+  return true;
+}
+
+bool MainWindow::saveCompressed(const QString& path, const core::CompressOptions& options) {
+  if (!viewport_->hasDocument()) return false;
+  viewport_->endStroke();
+  auto snapshot = std::make_shared<core::Document>(viewport_->document());
+  const QString error =
+      runInBackground(tr("Saving %1…").arg(QFileInfo(path).fileName()), [snapshot, path, options] {
+        core::writeCompressedDocument(*snapshot, options, toPath(path));
+      });
+  if (!error.isEmpty()) {
+    showError(tr("Could not save %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  statusBar()->showMessage(tr("Saved compressed %1").arg(path), 5000);
   return true;
 }
 

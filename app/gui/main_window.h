@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/base_shapes.h"
+#include "octaclay/core/compressed_document.h"
 #include "octaclay/core/document.h"
 #include "recovery_store.h"
 
@@ -38,7 +39,7 @@ public:
     bool askAboutRecovery = true; ///< false: pendingRecovery() is left for the caller
   };
   /// What a file chooser is asked for.
-  enum class FileRequest { Open, SaveAs, Export, Import, ExportLod };
+  enum class FileRequest { Open, SaveAs, Export, Import, ExportLod, SaveCompressed };
 
   explicit MainWindow(Options options);
   MainWindow() : MainWindow(Options{}) {}
@@ -59,11 +60,15 @@ public:
   /// A new document of this shape and size (made off the GUI thread). Asks about unsaved
   /// changes first unless force.
   bool newDocument(core::BaseShape shape, int n, bool force = false);
-  /// Reads path off the GUI thread with progress; on failure reports why and keeps the current
-  /// document. Does not ask about unsaved changes (the File menu does).
+  /// Reads path (.exr, or .ocz as an untitled model) off the GUI thread with progress; on failure
+  /// reports why and keeps the current document. Does not ask about unsaved changes (the File menu
+  /// does).
   bool openDocument(const QString& path);
   /// Saves atomically off the GUI thread; the document stays editable meanwhile.
   bool saveDocument(const QString& path);
+  /// Writes the document compressed (.ocz) atomically off the GUI thread with progress. The
+  /// document keeps its path and unsaved state: a lossy .ocz is not the model itself.
+  bool saveCompressed(const QString& path, const core::CompressOptions& options);
   /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, off the GUI thread
   /// with a cancellable progress dialog; on failure or cancel the current document stays.
   bool importMesh(const QString& path, int n);

@@ -1,0 +1,263 @@
+// octaclay-cli compress / decompress (issue 8): a document to the .ocz container and back,
+// with the size and error figures of the chosen codec, and `compress --sweep`, the
+// rate–distortion report of every codec beside Draco.
+
+#include "commands.h"
+#include "octaclay/core/compressed_document.h"
+#include "octaclay/core/document_io.h"
+#include "octaclay/core/error.h"
+#include "rd_measure.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace octaclay::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+void requireExtension(const std::string& path, const char* ext, const char* what) {
+  if (lowerExtension(path) != ext)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "cannot write " + path + ": " + what + " must end in " + ext);
+}
+
+std::string codecList() {
+  std::string list;
+  for (const core::Codec& c : core::codecs())
+    list += (list.empty() ? "" : ", ") + std::string(c.info.id);
+  return list;
+}
+
+const core::Codec& requireCodec(const std::string& id) {
+  const core::Codec* codec = core::findCodec(std::string_view(id));
+  if (codec == nullptr)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "unknown codec '" + id + "'; the codecs are " + codecList());
+  return *codec;
+}
+
+std::vector<std::uint8_t> readBytes(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw core::Error(core::ErrorKind::Io, path + ": no such file");
+  std::ifstream file(path, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
+                                  std::istreambuf_iterator<char>());
+  if (file.bad()) throw core::Error(core::ErrorKind::Io, path + ": cannot be read");
+  return bytes;
+}
+
+// Written beside, then renamed over the output, so a failure leaves no partial file.
+void writeBytesAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+  const std::filesystem::path temporary = path + ".part";
+  bool ok;
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file.write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    ok = static_cast<bool>(file.flush());
+  }
+  std::error_code ec;
+  if (ok) std::filesystem::rename(temporary, path, ec);
+  if (!ok || ec) {
+    std::filesystem::remove(temporary, ec);
+    throw core::Error(core::ErrorKind::Io, path + ": cannot be written");
+  }
+}
+
+nlohmann::json finiteOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+struct CompressOptionsCli {
+  std::string input, output, codec, mode;
+  double quality = -1; // < 0: the codec's default
+  bool json = false, sweep = false;
+  std::size_t samples = 0;
+};
+
+int runSweep(const CompressOptionsCli& opt) {
+  const std::string directory =
+      opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
+  const core::Document doc = core::readDocument(opt.input, {.layers = false});
+  const RdReference reference = makeRdReference(doc.positions);
+  const std::vector<RdPoint> points = sweep(reference, opt.samples);
+  const std::string title =
+      "Rate-distortion: " + std::filesystem::path(opt.input).filename().string() +
+      ", N = " + std::to_string(doc.size());
+  const auto paths = writeRdReport(points, title, directory);
+  if (opt.json) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const RdPoint& p : points)
+      rows.push_back({{"codec", p.codec},
+                      {"setting", p.setting},
+                      {"bytes", p.bytes},
+                      {"bits_per_vertex", p.bitsPerVertex},
+                      {"psnr", finiteOrNull(p.distortion.psnr)},
+                      {"normal_angle_deg", p.distortion.normalAngleDeg},
+                      {"max_seam_gap", p.distortion.maxSeamGap},
+                      {"exact", p.exact}});
+    std::cout << nlohmann::json{{"input", opt.input},
+                                {"n", doc.size()},
+                                {"markdown", paths[0].string()},
+                                {"csv", paths[1].string()},
+                                {"plot", paths[2].string()},
+                                {"points", rows}}
+                     .dump()
+              << "\n";
+  } else {
+    std::cout << rdMarkdown(points, title) << "\nwrote " << paths[0].string() << ", "
+              << paths[1].string() << ", " << paths[2].string() << "\n";
+  }
+  return kExitOk;
+}
+
+int runCompress(const CompressOptionsCli& opt) {
+  if (opt.sweep) return runSweep(opt);
+  if (opt.codec.empty())
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "compress needs --codec (one of " + codecList() + ") or --sweep");
+  if (opt.output.empty())
+    throw core::Error(core::ErrorKind::InvalidArgument, "compress needs -o doc.ocz");
+  const core::Codec& codec = requireCodec(opt.codec);
+  if (!opt.mode.empty() && codec.info.id != "exr")
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "--mode is an exr option; " + opt.codec + " has no modes");
+  if (opt.quality != -1 && !(opt.quality >= 0))
+    throw core::Error(core::ErrorKind::InvalidArgument, "--quality must be a number >= 0 (" +
+                                                            std::string(codec.info.id) + ": " +
+                                                            std::string(codec.info.quality) + ")");
+  requireExtension(opt.output, ".ocz", "the compressed document");
+
+  const core::Document doc = core::readDocument(opt.input);
+  core::CompressOptions options;
+  options.codec = opt.codec;
+  options.params.quality = opt.quality;
+  options.params.mode = opt.mode;
+  auto start = Clock::now();
+  const std::vector<std::uint8_t> bytes = core::compressDocument(doc, options);
+  const double encodeMs = millisecondsSince(start);
+  start = Clock::now();
+  const core::Document decoded = core::decompressDocument(bytes);
+  const double decodeMs = millisecondsSince(start);
+  writeBytesAtomically(opt.output, bytes);
+
+  const bool exact =
+      std::equal(doc.positions.texels().begin(), doc.positions.texels().end(),
+                 decoded.positions.texels().begin(), decoded.positions.texels().end());
+  const double quality = opt.quality >= 0 ? opt.quality : codec.info.defaultQuality;
+  nlohmann::json out{{"input", opt.input},
+                     {"output", opt.output},
+                     {"codec", opt.codec},
+                     {"lossy", codec.info.lossy},
+                     {"n", doc.size()},
+                     {"bytes", bytes.size()},
+                     {"bits_per_vertex", bitsPerVertex(bytes.size(), doc.size())},
+                     {"encode_ms", encodeMs},
+                     {"decode_ms", decodeMs},
+                     {"exact", exact}};
+  if (codec.info.lossy) out["quality"] = quality;
+  if (!opt.mode.empty()) out["mode"] = opt.mode;
+  if (!exact) {
+    const Distortion d =
+        measureDistortion(makeRdReference(doc.positions), decoded.positions, opt.samples);
+    out["psnr"] = finiteOrNull(d.psnr);
+    out["rms"] = d.rms;
+    out["hausdorff"] = d.hausdorff;
+    out["normal_angle_deg"] = d.normalAngleDeg;
+    out["max_seam_gap"] = d.maxSeamGap;
+  }
+  if (opt.json) {
+    std::cout << out.dump() << "\n";
+    return kExitOk;
+  }
+  std::cout << opt.output << ": " << bytes.size() << " bytes, "
+            << out["bits_per_vertex"].get<double>() << " bits per vertex (" << opt.codec
+            << ")\nencode " << encodeMs << " ms, decode " << decodeMs << " ms\n";
+  if (exact)
+    std::cout << "positions exact\n";
+  else
+    std::cout << "PSNR " << out["psnr"].dump() << " dB, RMS " << out["rms"].get<double>()
+              << ", Hausdorff " << out["hausdorff"].get<double>() << " of the diagonal\n"
+              << "mean normal angle " << out["normal_angle_deg"].get<double>()
+              << " deg, max seam gap " << out["max_seam_gap"].get<double>() << "\n";
+  return kExitOk;
+}
+
+} // namespace
+
+Command addCompressCommand(CLI::App& app) {
+  auto opt = std::make_shared<CompressOptionsCli>();
+  CLI::App* sub = app.add_subcommand(
+      "compress", "Store a document compressed (.ocz), or with --sweep write the "
+                  "rate-distortion report of every codec beside Draco");
+  sub->add_option("document", opt->input, "Document (.exr)")->required();
+  sub->add_option("--codec", opt->codec,
+                  "Positions codec: bytepack, dct, exr, wavelet or lossless");
+  sub->add_option("--quality", opt->quality,
+                  "Codec quality: bytepack bits, dct 1-100, wavelet error bound (fraction of "
+                  "the diagonal); default: the codec's");
+  sub->add_option("--mode", opt->mode, "exr only: zip, piz, pxr24 or half");
+  sub->add_option("-o,--output", opt->output,
+                  "Compressed document (.ocz); with --sweep the report folder");
+  sub->add_flag("--sweep", opt->sweep,
+                "Rate-distortion report: rd.md, rd.csv and rd.png for every codec and quality");
+  sub->add_option("--samples", opt->samples,
+                  "Random points per surface for the error, besides the vertices")
+      ->capture_default_str();
+  sub->add_flag("--json", opt->json, "Print one JSON object");
+  return {sub, [opt]() { return runCompress(*opt); }};
+}
+
+Command addDecompressCommand(CLI::App& app) {
+  struct Options {
+    std::string input, output;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* sub =
+      app.add_subcommand("decompress", "Turn a compressed document (.ocz) back into .exr");
+  sub->add_option("compressed", opt->input, "Compressed document (.ocz)")->required();
+  sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
+  sub->add_flag("--json", opt->json, "Print one JSON object");
+  return {sub, [opt]() {
+            requireExtension(opt->output, ".exr", "the document");
+            const std::vector<std::uint8_t> bytes = readBytes(opt->input);
+            const auto start = Clock::now();
+            const core::Document doc = core::decompressDocument(bytes);
+            const double decodeMs = millisecondsSince(start);
+            core::writeDocument(doc, opt->output);
+            if (opt->json)
+              std::cout << nlohmann::json{{"input", opt->input},
+                                          {"output", opt->output},
+                                          {"n", doc.size()},
+                                          {"bytes", bytes.size()},
+                                          {"decode_ms", decodeMs}}
+                               .dump()
+                        << "\n";
+            else
+              std::cout << opt->output << ": N = " << doc.size() << ", decoded in " << decodeMs
+                        << " ms\n";
+            return kExitOk;
+          }};
+}
+
+} // namespace octaclay::app

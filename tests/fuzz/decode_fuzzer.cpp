@@ -1,0 +1,51 @@
+// libFuzzer target for every decoder (issue 8): the .ocz container and each codec's stream
+// decoder must refuse any input with core::Error — never crash, read out of bounds, overflow
+// or allocate without bound. Anything else escaping (or a sanitizer report) is a finding.
+
+#include "fuzz_input.h"
+#include "octaclay/core/compressed_document.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/wavelet_codec.h"
+
+#include <cstdlib>
+
+namespace {
+
+// Runs one decoder; core::Error is the refusal every bad stream must get.
+template <class Decode> void refuseOrDecode(Decode&& decode) {
+  try {
+    decode();
+  } catch (const octaclay::core::Error&) {
+  }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz_input::Target target;
+  if (!fuzz_input::parse({data, size}, target)) return 0;
+  if (target.codec == nullptr) {
+    refuseOrDecode([&] {
+      const octaclay::core::Document doc = octaclay::core::decompressDocument(target.stream);
+      if (doc.size() <= 0) std::abort(); // a document that decodes has a size
+    });
+    return 0;
+  }
+  refuseOrDecode([&] {
+    const octaclay::core::FloatImage image =
+        target.codec->decode(target.stream, target.n, target.channels);
+    const std::size_t side = static_cast<std::size_t>(target.n) + 1;
+    // A stream that decodes gives exactly the image the container asked for.
+    if (image.n != target.n || image.channels != target.channels ||
+        image.texels.size() != side * side * static_cast<std::size_t>(target.channels))
+      std::abort();
+  });
+  // The wavelet's progressive prefixes are a decoder of their own; byte 2's upper bits pick
+  // the prefix length in 64ths of the stream.
+  if (target.codec->info.id == "wavelet")
+    refuseOrDecode([&] {
+      const std::size_t prefix = target.stream.size() * (data[2] >> 2) / 64;
+      octaclay::core::decodeWaveletPrefix(target.stream, target.n, target.channels, prefix);
+    });
+  return 0;
+}
