@@ -277,18 +277,18 @@ void CodecWaveletTest::prefixesRefine() {
 }
 
 void CodecWaveletTest::goldenStream() {
-  // Version 1 of the stream for a fixed small image. A change of these bytes is a format
+  // Version 2 of the stream for a fixed small image. A change of these bytes is a format
   // change: bump kWaveletVersion and update the expected values.
   const auto stream = encodeWavelet(wobbly(8), 1e-3);
-  QCOMPARE(kWaveletVersion, std::uint16_t{1});
+  QCOMPARE(kWaveletVersion, std::uint16_t{2});
   QCOMPARE(stream[0], std::uint8_t{4}); // codec code
-  QCOMPARE(stream[1], std::uint8_t{1}); // version, little-endian
+  QCOMPARE(stream[1], std::uint8_t{2}); // version, little-endian
   QCOMPARE(stream[2], std::uint8_t{0});
   QCOMPARE(stream[3], std::uint8_t{8}); // N
   qInfo("golden: %zu bytes, FNV-1a %016llx", stream.size(),
         static_cast<unsigned long long>(fnv1a(stream)));
-  QCOMPARE(stream.size(), std::size_t{289});
-  QCOMPARE(fnv1a(stream), std::uint64_t{0x8889000887d8d117});
+  QCOMPARE(stream.size(), std::size_t{292});
+  QCOMPARE(fnv1a(stream), std::uint64_t{0x5af2ad4efe3a2a03});
 }
 
 void CodecWaveletTest::truncatedStreamsAreRefused() {
@@ -328,8 +328,11 @@ void CodecWaveletTest::wrongShapeIsRefused() {
   expectInvalidInput([&] { decodeWavelet(stream, 17, 3); });
   expectInvalidInput([&] { decodeWavelet(stream, 16, 0); });
   auto future = stream;
-  future[1] = 2;
+  future[1] = 3;
   expectInvalidInput([&] { decodeWavelet(future, 16, 3); });
+  auto old = stream; // version 1 had one step for every level
+  old[1] = 1;
+  expectInvalidInput([&] { decodeWavelet(old, 16, 3); });
   auto otherCodec = stream;
   otherCodec[0] = 5;
   expectInvalidInput([&] { decodeWavelet(otherCodec, 16, 3); });

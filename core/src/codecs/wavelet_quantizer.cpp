@@ -15,9 +15,15 @@ namespace {
 
 using Frame = std::array<std::array<float, 3>, 3>; // rows: normal, tangent, tangent
 
+// A slightly wide zero bin (|c| < 0.56 step) and steps that shrink by 0.85 a level towards the
+// coarse ones: together 1.5 % fewer bits at 95 dB on armadillo (measured by rateAtPsnr; wider
+// zero bins, biased reconstruction and other level factors did worse).
+constexpr float kZeroThreshold = 0.56f;
+constexpr float kLevelStepFactor = 0.85f;
+
 std::int32_t quantize(float c, float step) {
-  const float magnitude =
-      std::min(std::floor(std::abs(c) / step + 0.5f), static_cast<float>(kMaxMagnitude - 1));
+  const float magnitude = std::min(std::floor(std::abs(c) / step + (1.0f - kZeroThreshold)),
+                                   static_cast<float>(kMaxMagnitude - 1));
   const auto m = static_cast<std::int32_t>(magnitude);
   return c < 0 ? -m : m;
 }
@@ -107,6 +113,7 @@ void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
   const bool vector = channels >= kVectorChannels;
   for (int level = waveletLevels(n) - 1; level >= 0; --level) {
     const int s = 1 << level, d = 2 * s;
+    const float levelScale = std::pow(kLevelStepFactor, static_cast<float>(level));
     parallelRows(
         n / s + 1,
         [&](int begin, int end) {
@@ -133,8 +140,8 @@ void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
                   if (exact != nullptr)
                     qr = quantize(f[rr][0] * (*exact)[0][k] + f[rr][1] * (*exact)[1][k] +
                                       f[rr][2] * (*exact)[2][k],
-                                  coding[rr].step);
-                  const float component = dequantize(qr, coding[rr].step);
+                                  coding[rr].step * levelScale);
+                  const float component = dequantize(qr, coding[rr].step * levelScale);
                   for (std::size_t x = 0; x < 3; ++x)
                     rebuilt[x] += component * f[rr][x];
                 }
@@ -144,8 +151,9 @@ void rebuild(CoefficientPlanes& q, std::span<const ChannelCoding> coding,
               }
               for (; c < channels; ++c) {
                 const auto cc = static_cast<std::size_t>(c);
-                if (exact != nullptr) q.q[cc][k] = quantize((*exact)[cc][k], coding[cc].step);
-                values[cc] = dequantize(q.q[cc][k], coding[cc].step);
+                if (exact != nullptr)
+                  q.q[cc][k] = quantize((*exact)[cc][k], coding[cc].step * levelScale);
+                values[cc] = dequantize(q.q[cc][k], coding[cc].step * levelScale);
               }
               std::array<Sample, 4> copies{Sample{i, j}};
               const int count = border ? identifiedSamples(n, {i, j}, copies) : 1;

@@ -16,8 +16,8 @@
 namespace octaclay::core::detail {
 
 /// How one channel was coded: samples = reconstruction + centre, the DC coefficient kept as a
-/// float, the others as q·step. For positions, the steps of channels 0, 1, 2 are those of the
-/// frame's normal and two tangents.
+/// float, the others as q·step·0.85^level (level 0 the finest). For positions, the steps of
+/// channels 0, 1, 2 are those of the frame's normal and two tangents.
 struct ChannelCoding {
   float centre = 0;
   float step = 1;
