@@ -252,6 +252,14 @@ bool ViewportWidget::hasDocument() const {
 }
 
 const core::Document& ViewportWidget::document() const {
+  if (document_ && document_->mirrorStale()) {
+    // Mid-stroke (autosave, save): the paint the stroke deferred is read back first.
+    auto* self = const_cast<ViewportWidget*>(this);
+    const bool wasCurrent = QOpenGLContext::currentContext() == context();
+    if (!wasCurrent) self->makeCurrent();
+    document_->syncMirror();
+    if (!wasCurrent) self->doneCurrent();
+  }
   return document_ ? document_->document() : *pending_;
 }
 

@@ -30,11 +30,15 @@ uniform vec3 u_projectionDir;     // splats: projection frame, object space, uni
 uniform vec3 u_projectionRight;
 uniform vec3 u_projectionUp;
 #if defined(BRUSH_MATERIAL)
-// The chosen material's maps (repeat-wrapped) and scales, object units unless noted.
-uniform sampler2D u_materialColour;  // RGBA, alpha = coverage
-uniform sampler2D u_materialSurface; // R height (0.5 = none), G specular, B reflectivity
-uniform float u_materialLod;         // the mip level one sample's footprint needs, projected
-uniform float u_materialLodUv;       // the same through image coordinates (tiles of u_tileSamples)
+// The chosen material's maps (repeat-wrapped, bilinear) and scales, object units unless noted.
+// Each sampler holds the one mip level this dab's footprint needs: the first pair for the
+// projection from the view, the Uv pair through image coordinates (tiles of u_tileSamples).
+uniform sampler2D u_materialColour;    // RGBA, alpha = coverage
+uniform sampler2D u_materialSurface;   // R height (0.5 = none), G specular, B reflectivity
+uniform sampler2D u_materialColourUv;  // the same maps at the uv projection's level
+uniform sampler2D u_materialSurfaceUv;
+uniform float u_materialLod;   // 0 (each sampler holds one level); kept for older brushes
+uniform float u_materialLodUv; // 0, likewise
 uniform float u_tileSize;    // one tile of the maps on the surface
 uniform float u_tileSamples; // the same, in image samples (uv projection)
 uniform float u_heightScale; // displacement of height 1 - 0.5

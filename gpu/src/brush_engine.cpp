@@ -19,6 +19,9 @@ struct BrushEngine::LoadedBrush {
   std::string body;
   // The body defines brushLayers(): one program writes every layer (keyed as positions).
   bool allLayers = false;
+  // brushLayers() bodies that never sample the paint layers themselves: the pass writes diffuse
+  // and feature in place, each texel read only by its own fragment (texture barrier rules).
+  bool paintInPlace = false;
   // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
   // painted-mask variants are compiled on first use.
   std::map<std::pair<BrushLayer, bool>, Program> programs;
@@ -39,6 +42,9 @@ const char* layerDefine(BrushLayer layer) {
   }
   return "LAYER_POSITIONS";
 }
+
+// Texture units 0-3 and 6 hold the document's layers; the material's four maps start here.
+constexpr GLint kMaterialUnit = 7;
 
 std::string uniformName(const std::string& parameterId) {
   std::string name = "u_" + parameterId;
@@ -97,6 +103,18 @@ bool readsNormals(const std::string& body) {
 bool writesAllLayers(const std::string& body) {
   static const std::regex definition(R"(\bvoid\s+brushLayers\s*\()");
   return std::regex_search(withoutComments(body), definition);
+}
+
+// Whether the body samples the diffuse or feature layer itself (at texels of its choosing).
+bool samplesPaintLayers(const std::string& body) {
+  const std::string code = withoutComments(body);
+  return code.find("u_diffuseLayer") != std::string::npos ||
+         code.find("u_featureLayer") != std::string::npos;
+}
+
+// GL 4.5 or ARB_texture_barrier: a pass may read the texel it writes.
+bool hasTextureBarrier() {
+  return epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_texture_barrier");
 }
 
 // allLayers: the body defines brushLayers() and the program writes every layer at once.
@@ -262,6 +280,8 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   brush->manifest = manifest;
   brush->body = shaderSource;
   brush->allLayers = writesAllLayers(shaderSource);
+  brush->paintInPlace =
+      brush->allLayers && !samplesPaintLayers(shaderSource) && hasTextureBarrier();
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
                                     BrushLayer::Mask) != manifest.writes.end())
     throw GlError("brush " + manifest.id + ": " + (manifest.folder / manifest.shaderFile).string() +
@@ -295,22 +315,32 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
     g.id = m.id;
     g.tileSize = m.tileSize;
     g.heightScale = m.heightScale;
+    // RGBA8 (the maps are 8-bit images), mipmapped, then one repeat-wrapped, bilinear view per
+    // level: a dab samples the one level its footprint needs. A per-texel mip choice
+    // (trilinear) would cost a software rasterizer more than the rest of the dab.
     auto upload = [](int width, int height, const std::vector<float>& rgba) {
-      // RGBA16F, repeat-wrapped and mipmapped so a far-away splat averages its texels instead
-      // of aliasing.
       int levels = 1;
       while ((std::max(width, height) >> levels) > 0)
         ++levels;
-      Texture t = Texture::withLevels(width, height, TextureFormat::Rgba16f, levels);
+      Texture t = Texture::withLevels(width, height, TextureFormat::Rgba8, levels);
       t.upload({0, 0, width, height}, rgba);
       glBindTexture(GL_TEXTURE_2D, t.id());
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
       glGenerateMipmap(GL_TEXTURE_2D);
+      std::vector<Texture> views;
+      for (int level = 0; level < levels; ++level) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        glTextureView(id, GL_TEXTURE_2D, t.id(), GL_RGBA8, static_cast<GLuint>(level), 1, 0, 1);
+        views.push_back(Texture::wrap(id, std::max(1, width >> level), std::max(1, height >> level),
+                                      TextureFormat::Rgba8));
+        glBindTexture(GL_TEXTURE_2D, id);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      }
       glBindTexture(GL_TEXTURE_2D, 0);
-      return t;
+      return views;
     };
     g.mapSize = m.colour.width;
     g.colour = upload(m.colour.width, m.colour.height, m.colour.pixels);
@@ -352,13 +382,6 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
                                                    : "'" + p.options.front() + "'") +
                     " is loaded (see resources/materials)");
     const GpuMaterial& m = materials_[static_cast<std::size_t>(index)];
-    glActiveTexture(GL_TEXTURE4);
-    glBindTexture(GL_TEXTURE_2D, m.colour.id());
-    glUniform1i(program.uniform("u_materialColour"), 4);
-    glActiveTexture(GL_TEXTURE5);
-    glBindTexture(GL_TEXTURE_2D, m.surface.id());
-    glUniform1i(program.uniform("u_materialSurface"), 5);
-    glActiveTexture(GL_TEXTURE0);
     const float diagonal = std::max(document.bounds().diagonal(), 1e-20f);
     const float tileSize = m.tileSize * diagonal;
     // uv projection measures in samples: the same fraction of N as of the diagonal.
@@ -368,16 +391,32 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     glUniform1f(program.uniform("u_heightScale"), m.heightScale * tileSize);
     // One mip level for the dab per projection, from the sample spacing at its centre: the
     // maps' texels one sample spans (a per-texel level would cost a position fetch and a log per
-    // texel). The brush picks the one its projection needs.
+    // texel). The brush samples the projection it needs.
     const core::GeometryImage& image = document.document().positions;
     const core::Sample c = dab.centreTexel;
     const core::Sample next{c.i < document.size() ? c.i + 1 : c.i - 1, c.j};
     const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
-    const auto lod = [&](float tilesPerSample) {
-      return std::max(0.0f, std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f)));
+    const auto level = [&](float tilesPerSample) {
+      const float lod = std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f));
+      return static_cast<std::size_t>(
+          std::clamp(std::lround(lod), 0L, static_cast<long>(m.colour.size()) - 1));
     };
-    glUniform1f(program.uniform("u_materialLod"), lod(spacing / tileSize));
-    glUniform1f(program.uniform("u_materialLodUv"), lod(1.0f / tileSamples));
+    const std::size_t projected = level(spacing / tileSize), uv = level(1.0f / tileSamples);
+    const std::array<std::pair<const char*, const Texture*>, 4> maps{
+        {{"u_materialColour", &m.colour[projected]},
+         {"u_materialSurface", &m.surface[projected]},
+         {"u_materialColourUv", &m.colour[uv]},
+         {"u_materialSurfaceUv", &m.surface[uv]}}};
+    for (std::size_t k = 0; k < maps.size(); ++k) {
+      const GLint unit = kMaterialUnit + static_cast<GLint>(k);
+      glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+      glBindTexture(GL_TEXTURE_2D, maps[k].second->id());
+      glUniform1i(program.uniform(maps[k].first), unit);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    // The bound maps hold one level each: older brushes' textureLod(…, u_materialLod) still works.
+    glUniform1f(program.uniform("u_materialLod"), 0.0f);
+    glUniform1f(program.uniform("u_materialLodUv"), 0.0f);
     return;
   }
 }
@@ -474,12 +513,14 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   };
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
-  const auto finishLayer = [&](BrushLayer layer) {
-    if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side})
+  const auto finishLayer = [&](BrushLayer layer, bool inPlace) {
+    if (inPlace) { // the pass wrote the layer's texture itself
+    } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
       document.swapScratch(layer);
-    else
+    } else {
       for (const core::TexelRect& r : rects)
         copyRect(document.scratch(layer), document.texture(layer), r);
+    }
 
     if (result.seamed) {
       // Into the scratch: after a whole-image swap the scratch is the old texture, free to
@@ -497,10 +538,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     checkGlError("brush " + brushId + " pass");
 
     for (const core::TexelRect& r : rects)
-      document.pull(layer, r);
+      document.changed(layer, r);
     if (result.seamed)
       for (const core::TexelRect& line : lines)
-        document.pull(layer, line);
+        document.changed(layer, line);
   };
 
   if (brush.allLayers) {
@@ -511,16 +552,23 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
     layersTarget_.bind();
     std::array<GLenum, 3> drawBuffers{};
+    // Positions always go to the scratch: the prelude reads neighbouring positions.
+    const auto inPlace = [&](BrushLayer layer) {
+      return brush.paintInPlace && layer != BrushLayer::Positions;
+    };
     for (std::size_t k = 0; k < attached.size(); ++k) {
       const bool written = std::find(brush.manifest.writes.begin(), brush.manifest.writes.end(),
                                      attached[k]) != brush.manifest.writes.end();
+      const Texture& target =
+          inPlace(attached[k]) ? document.texture(attached[k]) : document.scratch(attached[k]);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
-                             GL_TEXTURE_2D, written ? document.scratch(attached[k]).id() : 0, 0);
+                             GL_TEXTURE_2D, written ? target.id() : 0, 0);
       drawBuffers[k] = written ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k) : GL_NONE;
     }
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     // u_layer: the positions (brushInputAt's value is the positions texel).
     bindInputs(pass, BrushLayer::Positions);
+    if (brush.paintInPlace) glTextureBarrier(); // earlier writes to the layers are visible
     rectPass_.draw(passRects, side, side);
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
     // texture that a whole-image swap makes a layer's.
@@ -529,7 +577,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
     for (BrushLayer layer : brush.manifest.writes)
-      finishLayer(layer);
+      finishLayer(layer, inPlace(layer));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return result;
   }
@@ -548,7 +596,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     document.scratch(layer).bindAsTarget();
     bindInputs(pass, layer);
     rectPass_.draw(passRects, side, side);
-    finishLayer(layer);
+    finishLayer(layer, false);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;

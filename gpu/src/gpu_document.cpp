@@ -119,6 +119,7 @@ void GpuDocument::writeMirror(BrushLayer layer, core::TexelRect rect,
 }
 
 void GpuDocument::restore(BrushLayer layer, core::TexelRect rect, std::span<const float> texels) {
+  syncMirror(); // else a later sync would read deferred regions over what is restored here
   writeMirror(layer, rect, texels);
   push(layer, rect);
 }
@@ -152,6 +153,53 @@ void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
   textures_[index(layer)].readInto(toRegion(rect), mirrorData(layer) + at, side, c);
   if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
   if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
+}
+
+void GpuDocument::changed(BrushLayer layer, core::TexelRect rect) {
+  if (!deferring_ || layer == BrushLayer::Positions) {
+    pull(layer, rect);
+    return;
+  }
+  mirrorData(layer); // a uniform layer gets texels: brushes see it as painted from now on
+  if (layer == BrushLayer::Mask) document_.hasMask = true;
+  const int blocks = (document_.positions.side() + kStaleBlock - 1) / kStaleBlock;
+  std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
+  stale.resize(static_cast<std::size_t>(blocks) * blocks, 0);
+  for (int by = rect.y / kStaleBlock; by <= (rect.y + rect.height - 1) / kStaleBlock; ++by)
+    for (int bx = rect.x / kStaleBlock; bx <= (rect.x + rect.width - 1) / kStaleBlock; ++bx)
+      stale[static_cast<std::size_t>(by) * blocks + bx] = 1;
+  stale_ = true;
+}
+
+void GpuDocument::deferPaintPulls(bool on) {
+  deferring_ = on;
+  if (!on) syncMirror();
+}
+
+void GpuDocument::syncMirror() {
+  if (!stale_) return;
+  const int side = document_.positions.side();
+  const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
+  for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
+    std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
+    if (stale.empty()) continue;
+    // Runs of stale blocks along each block row, one read each.
+    for (int by = 0; by < blocks; ++by)
+      for (int bx = 0; bx < blocks;) {
+        if (!stale[static_cast<std::size_t>(by) * blocks + bx]) {
+          ++bx;
+          continue;
+        }
+        int end = bx;
+        while (end < blocks && stale[static_cast<std::size_t>(by) * blocks + end])
+          ++end;
+        const int x = bx * kStaleBlock, y = by * kStaleBlock;
+        pull(layer, {x, y, std::min(end * kStaleBlock, side) - x, std::min(kStaleBlock, side - y)});
+        bx = end;
+      }
+    stale.clear();
+  }
+  stale_ = false;
 }
 
 float* GpuDocument::mirrorData(BrushLayer layer) {

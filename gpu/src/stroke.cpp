@@ -131,7 +131,18 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
 
 struct StrokeSession::State {
   State(BrushEngine& e, GpuDocument& d, const BrushManifest& b, StrokeSettings s)
-      : engine(e), document(d), brush(b), settings(std::move(s)), undo(d, b.writes) {}
+      : engine(e), document(d), brush(b), settings(std::move(s)), undo(d, b.writes) {
+    // Paint layers are read back once at the stroke's end, not after every dab: the stroke
+    // itself reads only positions (and undo tiles before their first dab).
+    document.deferPaintPulls(true);
+  }
+  ~State() {
+    if (finished) return;
+    try {
+      document.deferPaintPulls(false);
+    } catch (...) { // an abandoned stroke: the textures stay right, only the mirror may lag
+    }
+  }
 
   BrushEngine& engine;
   GpuDocument& document;
@@ -268,6 +279,7 @@ core::Stroke StrokeSession::finish(const std::string& label) {
   State& st = *state_;
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
   st.finished = true;
+  st.document.deferPaintPulls(false);
   return st.undo.finish(label);
 }
 

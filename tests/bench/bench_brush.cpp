@@ -1,6 +1,7 @@
 // Time per dab of push and smooth at N = 256, 1024, 4096 with radii of 2, 10 and 30 % of the
-// bounding-box diagonal, material splat dabs at N = 1024, a whole-image smooth pass at each N, and effective bytes/s of a dab
-// beside a memcpy of the same bytes in the same run (issue 3's targets; ANCHORS.md's Blender).
+// bounding-box diagonal, material splat dabs at N = 1024, a whole-image smooth pass at each N, and
+// effective bytes/s of a dab beside a memcpy of the same bytes in the same run (issue 3's targets;
+// ANCHORS.md's Blender).
 #include "bench_support.h"
 #include "octaclay/core/base_shapes.h"
 #include "octaclay/core/normals.h"
@@ -61,6 +62,8 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   double seconds = 0;
   std::size_t texels = 0, inside = 0;
   int k = 0;
+  // As in a stroke: paint layers are read back once after the dabs (timed apart, sync_ms).
+  document.deferPaintPulls(true);
   for (auto _ : state) {
     gpu::Dab dab;
     dab.centreTexel = centres[k++ % 3];
@@ -81,6 +84,11 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
       for (const core::Vec4f& t : image.texels())
         inside += core::length(t.xyz() - dab.centre) < radius;
   }
+  const auto syncStart = std::chrono::steady_clock::now();
+  document.deferPaintPulls(false);
+  state.counters["sync_ms"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - syncStart)
+          .count();
   const double perDab = seconds / static_cast<double>(state.iterations());
   const std::size_t bytes = texels * 16 * 2; // RGBA32F read and written
   state.counters["ms_per_dab"] = perDab * 1e3;
@@ -117,23 +125,25 @@ void dabSizes(benchmark::internal::Benchmark* b) {
   b->Args({4096, 25});
 }
 
-// A stroke of 10 %-radius push dabs across the sphere, over two seams and a corner pole, with
-// the brush's own spacing, symmetry off, undo capture on: the sustained dab rate.
-void BM_PushStroke(benchmark::State& state) {
+// A stroke of 10 %-radius dabs across the sphere, over two seams and a corner pole, with the
+// brush's own spacing, symmetry off, undo capture on, the stroke's end (its deferred read-back
+// and undo record) included: the sustained dab rate of push and of the material splat.
+void runStroke(benchmark::State& state, const char* brush) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
   gpu::GpuDocument& document = s.freshDocument(n);
   gpu::StrokeSettings stroke;
-  stroke.brush = "push";
+  stroke.brush = brush;
   stroke.path = {{0.5f, 0.5f}, {1.0f, 0.5f}, {1.0f, 0.0f}, {0.5f, 0.0f}, {0.5f, 0.5f}};
   stroke.radius = 0.1f * document.bounds().diagonal();
-  const gpu::BrushManifest& push = *s.library.catalog().find("push");
+  stroke.spacing = 0.1f; // the same dabs for both brushes
+  const gpu::BrushManifest& manifest = *s.library.catalog().find(brush);
   int dabs = 0, k = 0;
   double seconds = 0;
   for (auto _ : state) {
     stroke.strength = k++ % 2 ? -0.05f : 0.05f; // out and back
     const auto start = std::chrono::steady_clock::now();
-    dabs += gpu::runStroke(s.library.engine(), document, push, stroke).dabs;
+    dabs += gpu::runStroke(s.library.engine(), document, manifest, stroke).dabs;
     glFinish();
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -142,6 +152,13 @@ void BM_PushStroke(benchmark::State& state) {
   }
   state.counters["dabs_per_s"] = dabs / seconds;
   state.counters["ms_per_dab"] = seconds * 1e3 / dabs;
+}
+
+void BM_PushStroke(benchmark::State& state) {
+  runStroke(state, "push");
+}
+void BM_SplatStroke(benchmark::State& state) {
+  runStroke(state, "splat");
 }
 
 BENCHMARK(BM_PushDab)
@@ -169,6 +186,7 @@ BENCHMARK(BM_SmoothFullImage)
     ->UseManualTime()
     ->Iterations(10);
 BENCHMARK(BM_PushStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
+BENCHMARK(BM_SplatStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 
 } // namespace
 

@@ -99,6 +99,7 @@ private slots:
   void projectedTexelsKeepTheirSizeWhereTheImageStretches();
   void onePassWritesWhatPerLayerPassesWrite();
   void brushLayersMustNotWriteTheMask();
+  void aStrokeReadsItsPaintBackOnceAtItsEnd();
 
 private:
   Dab splatDab(const GpuDocument& d, core::Sample s, float radius, const std::string& material,
@@ -393,6 +394,52 @@ void SplatTest::brushLayersMustNotWriteTheMask() {
   }
   QVERIFY(threw);
   QVERIFY(!engine_->has(m.id));
+}
+
+// A stroke defers the paint layers' read-back to its end: while it runs the mirror's paint lags
+// (positions never do); after finish() the mirror equals the textures texel for texel, and the
+// stroke's undo step restores the paint from before it.
+void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
+  GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+  const int n = d.size(), side = n + 1;
+  const std::vector<float> diffuse = layerTexels(d, BrushLayer::Diffuse);
+  const std::vector<float> feature = layerTexels(d, BrushLayer::Feature);
+  StrokeSettings settings;
+  settings.brush = "splat";
+  settings.radius = 0.3f;
+  settings.strength = 1.0f;
+  settings.parameters["material"] = {static_cast<float>(engine_->materialIndex("stone")), 0, 0, 0};
+  const core::Sample start{n / 2, n / 2}, end{n, n / 2}; // ends on the right seam
+  StrokeSession session(*engine_, d, splat_, settings);
+  session.moveTo(start, settings.radius, settings.strength, 1.0f);
+  QVERIFY(d.mirrorStale());
+  // The texture holds the paint already, the mirror not yet: nothing read back per dab.
+  QVERIFY(d.texture(BrushLayer::Diffuse).read({start.i, start.j, 1, 1})[0] !=
+          diffuse[(static_cast<std::size_t>(start.j) * side + start.i) * 4]);
+  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), diffuse);
+  // Positions are read back after every dab (the stroke walks on them).
+  const std::vector<float> texture = d.texture(BrushLayer::Positions).read({0, 0, side, side});
+  QCOMPARE(layerTexels(d, BrushLayer::Positions), texture);
+  session.moveTo(end, settings.radius, settings.strength, 1.0f);
+  QVERIFY(session.dabs() > 3);
+  core::Stroke undo = session.finish("splat");
+  QVERIFY(!d.mirrorStale());
+
+  const std::vector<float> paint = d.texture(BrushLayer::Diffuse).read({0, 0, side, side});
+  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), paint);
+  const std::vector<float> rgba = d.texture(BrushLayer::Feature).read({0, 0, side, side});
+  const std::vector<float> mirrored = layerTexels(d, BrushLayer::Feature);
+  for (std::size_t t = 0; t < mirrored.size() / 3; ++t)
+    for (std::size_t c = 0; c < 3; ++c)
+      QCOMPARE(mirrored[t * 3 + c], rgba[t * 4 + c]);
+  QVERIFY(paint != diffuse); // the stroke painted
+
+  core::EditHistory history;
+  history.record(std::move(undo));
+  QVERIFY(history.undo(undoApplier(d)));
+  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), diffuse);
+  QCOMPARE(layerTexels(d, BrushLayer::Feature), feature);
+  QCOMPARE(d.texture(BrushLayer::Diffuse).read({0, 0, side, side}), diffuse);
 }
 
 QTEST_APPLESS_MAIN(SplatTest)

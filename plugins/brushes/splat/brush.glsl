@@ -14,10 +14,16 @@ vec2 splatCoordinates(BrushInput b) {
 void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, BrushInput b) {
   vec2 c = splatCoordinates(b);
   float w = clamp(b.weight, 0.0, 1.0);
-  // textureLod with the host's level: implicit derivatives are undefined in a brush pass.
-  float lod = u_projection == 1 ? u_materialLodUv : u_materialLod;
-  vec4 surface = textureLod(u_materialSurface, c, lod);
-  vec4 colour = textureLod(u_materialColour, c, lod);
+  // The host bound the level this dab needs; textureLod: implicit derivatives are undefined in
+  // a brush pass.
+  vec4 surface, colour;
+  if (u_projection == 1) {
+    surface = textureLod(u_materialSurfaceUv, c, 0.0);
+    colour = textureLod(u_materialColourUv, c, 0.0);
+  } else {
+    surface = textureLod(u_materialSurface, c, 0.0);
+    colour = textureLod(u_materialColour, c, 0.0);
+  }
   float height = (surface.r - 0.5) * u_relief; // signed height detail
   // Displace by the change of height detail this dab makes (feature still holds the old detail),
   // along the projection, like the paint: relief and colour line up seen from the view.

@@ -82,8 +82,8 @@ private:
     std::string id;
     float tileSize = 0, heightScale = 0;
     int mapSize = 0;
-    Texture colour;  // RGBA
-    Texture surface; // R height, G specular, B reflectivity
+    std::vector<Texture> colour;  // RGBA, one view per mip level
+    std::vector<Texture> surface; // R height, G specular, B reflectivity, one view per level
   };
   void bindMaterial(const Program& program, const BrushManifest& manifest,
                     const GpuDocument& document, const Dab& dab) const;

@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gl_objects.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <utility>
 
@@ -15,7 +16,9 @@ namespace octaclay::gpu {
 /// A document being edited: its layers as GPU textures (each with a scratch twin for
 /// ping-pong passes) and a CPU mirror that the engine keeps equal to them, region by region,
 /// after every dab. The mirror answers tile bounds, picking, undo and saving without reading
-/// the full image back. All calls need the engine's context current.
+/// the full image back. With deferred paint pulls (a stroke's lifetime) the paint layers'
+/// changed regions are only recorded and read back together by syncMirror(); positions are
+/// always read back at once. All calls need the engine's context current.
 class GpuDocument {
 public:
   /// Uploads every layer, in row bands; progress (optional) is called after each with the
@@ -35,6 +38,16 @@ public:
   /// Copies rect of the layer's texture into the mirror (and refreshes tile bounds for
   /// positions). Painted-but-uniform mirror layers get their texels first.
   void pull(BrushLayer layer, core::TexelRect rect);
+  /// A pass changed rect of the layer's texture: pulled now, or for a paint layer while pulls
+  /// are deferred, recorded for syncMirror() (the layer gets its mirror texels now, so it stops
+  /// counting as uniform at once).
+  void changed(BrushLayer layer, core::TexelRect rect);
+  /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
+  void deferPaintPulls(bool on);
+  /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
+  bool mirrorStale() const { return stale_; }
+  /// Reads every deferred region back into the mirror, in merged rectangles.
+  void syncMirror();
   /// Writes rect of the mirror (e.g. restored by undo) to the layer's texture.
   void push(BrushLayer layer, core::TexelRect rect);
   /// The mirror's texels of rect, row-major, channels per texel as the layer has.
@@ -59,6 +72,10 @@ private:
   core::Document document_;
   core::TileBounds bounds_;
   std::array<Texture, 4> textures_, scratch_;
+  bool deferring_ = false, stale_ = false;
+  /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred.
+  static constexpr int kStaleBlock = 32;
+  std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
 };
 
 /// Undo/redo writes through this: each region goes to the mirror and the texture.
