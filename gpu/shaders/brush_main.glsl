@@ -12,6 +12,9 @@ void main() {
   vec4 diffuse = texelFetch(u_diffuseLayer, t, 0);
   vec4 feature = texelFetch(u_featureLayer, t, 0);
   BrushInput b = brushInputAt(t, positions);
+#if defined(BRUSH_IN_PLACE)
+  if (b.weight == 0.0) discard; // the targets are the layers: nothing to write, nothing to sample
+#endif
   if (b.weight != 0.0) brushLayers(positions, diffuse, feature, b); // negative weights pull
   o_positions = positions;
   o_diffuse = diffuse;
@@ -24,6 +27,9 @@ void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 value = texelFetch(u_layer, t, 0);
   BrushInput b = brushInputAt(t, value);
+#if defined(BRUSH_IN_PLACE)
+  if (b.weight == 0.0) discard;
+#endif
   o_value = b.weight != 0.0 ? brush(value, b) : value; // negative weights pull
 }
 #endif

@@ -19,9 +19,16 @@ struct BrushEngine::LoadedBrush {
   std::string body;
   // The body defines brushLayers(): one program writes every layer (keyed as positions).
   bool allLayers = false;
-  // brushLayers() bodies that never sample the paint layers themselves: the pass writes diffuse
-  // and feature in place, each texel read only by its own fragment (texture barrier rules).
-  bool paintInPlace = false;
+  // Per layer: its passes write the layer's texture in place instead of a scratch copy. Only
+  // where nothing reads other texels of that layer: each texel is then read by the fragment
+  // that writes it alone (the texture barrier rules).
+  std::array<bool, 4> inPlace{};
+  // Every layer the brush writes is written in place (the passes may discard unweighted texels).
+  bool allInPlace() const {
+    for (BrushLayer layer : manifest.writes)
+      if (!inPlace[static_cast<std::size_t>(layer)]) return false;
+    return true;
+  }
   // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
   // painted-mask variants are compiled on first use.
   std::map<std::pair<BrushLayer, bool>, Program> programs;
@@ -105,11 +112,15 @@ bool writesAllLayers(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
-// Whether the body samples the diffuse or feature layer itself (at texels of its choosing).
-bool samplesPaintLayers(const std::string& body) {
+// Whether the body's code (comments aside) names any of these.
+bool names(const std::string& body, std::initializer_list<const char*> words) {
   const std::string code = withoutComments(body);
-  return code.find("u_diffuseLayer") != std::string::npos ||
-         code.find("u_featureLayer") != std::string::npos;
+  return std::any_of(words.begin(), words.end(),
+                     [&](const char* w) { return code.find(w) != std::string::npos; });
+}
+
+bool needsNormals(const BrushManifest& manifest, const std::string& body) {
+  return manifest.area == AreaMode::VolumeNormal || readsNormals(body);
 }
 
 // GL 4.5 or ARB_texture_barrier: a pass may read the texel it writes.
@@ -119,7 +130,7 @@ bool hasTextureBarrier() {
 
 // allLayers: the body defines brushLayers() and the program writes every layer at once.
 std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLayers,
-                     bool maskTexture, const std::string& body) {
+                     bool maskTexture, bool inPlace, const std::string& body) {
   std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
                        "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define LAYER_ALL 4\n";
   if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
@@ -150,8 +161,9 @@ std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLa
     break;
   }
   // The prelude computes per-sample normals only for brushes that read them.
-  if (manifest.area == AreaMode::VolumeNormal || readsNormals(body))
-    source += "#define BRUSH_NEEDS_NORMAL\n";
+  if (needsNormals(manifest, body)) source += "#define BRUSH_NEEDS_NORMAL\n";
+  // Every target is the layer itself: an unweighted texel keeps its value unwritten.
+  if (inPlace) source += "#define BRUSH_IN_PLACE\n";
   for (const BrushParameter& p : manifest.parameters) {
     if (p.type == ParameterType::Material) {
       source += "#define BRUSH_MATERIAL\n";
@@ -280,8 +292,20 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   brush->manifest = manifest;
   brush->body = shaderSource;
   brush->allLayers = writesAllLayers(shaderSource);
-  brush->paintInPlace =
-      brush->allLayers && !samplesPaintLayers(shaderSource) && hasTextureBarrier();
+  if (hasTextureBarrier()) {
+    const std::string& b = shaderSource;
+    const bool all = brush->allLayers;
+    // Other texels are read through the neighbour helpers, the prelude's normals, or the
+    // layer's sampler named by the body.
+    brush->inPlace[0] =
+        !needsNormals(manifest, b) &&
+        !names(b, {"fetchPositions", "normalAt", "u_positions", "fetchLayer", "u_layer"});
+    brush->inPlace[1] = all ? !names(b, {"u_diffuseLayer"})
+                            : !names(b, {"fetchLayer", "u_layer", "u_diffuseLayer"});
+    brush->inPlace[2] = all ? !names(b, {"u_featureLayer"})
+                            : !names(b, {"fetchLayer", "u_layer", "u_featureLayer"});
+    brush->inPlace[3] = !all && !names(b, {"fetchLayer", "u_layer", "u_mask", "maskAt"});
+  }
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
                                     BrushLayer::Mask) != manifest.writes.end())
     throw GlError("brush " + manifest.id + ": " + (manifest.folder / manifest.shaderFile).string() +
@@ -301,7 +325,10 @@ const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool m
     return brush.programs
         .emplace(key,
                  Program(file, rectsVertexShader(),
-                         assemble(brush.manifest, layer, brush.allLayers, maskTexture, brush.body)))
+                         assemble(brush.manifest, layer, brush.allLayers, maskTexture,
+                                  brush.allLayers ? brush.allInPlace()
+                                                  : brush.inPlace[static_cast<std::size_t>(layer)],
+                                  brush.body)))
         .first->second;
   } catch (const GlError& e) {
     throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
@@ -552,9 +579,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
     layersTarget_.bind();
     std::array<GLenum, 3> drawBuffers{};
-    // Positions always go to the scratch: the prelude reads neighbouring positions.
+    // A layer whose texels the pass reads elsewhere goes to its scratch.
     const auto inPlace = [&](BrushLayer layer) {
-      return brush.paintInPlace && layer != BrushLayer::Positions;
+      return brush.inPlace[static_cast<std::size_t>(layer)];
     };
     for (std::size_t k = 0; k < attached.size(); ++k) {
       const bool written = std::find(brush.manifest.writes.begin(), brush.manifest.writes.end(),
@@ -568,7 +595,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     // u_layer: the positions (brushInputAt's value is the positions texel).
     bindInputs(pass, BrushLayer::Positions);
-    if (brush.paintInPlace) glTextureBarrier(); // earlier writes to the layers are visible
+    if (std::find(brush.inPlace.begin(), brush.inPlace.end(), true) != brush.inPlace.end())
+      glTextureBarrier(); // earlier writes to the layers written in place are visible
     rectPass_.draw(passRects, side, side);
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
     // texture that a whole-image swap makes a layer's.
@@ -593,10 +621,12 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   });
   for (BrushLayer layer : order) {
     const Program& pass = program(brush, layer, maskTexture);
-    document.scratch(layer).bindAsTarget();
+    const bool inPlace = brush.inPlace[static_cast<std::size_t>(layer)];
+    (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();
     bindInputs(pass, layer);
+    if (inPlace) glTextureBarrier();
     rectPass_.draw(passRects, side, side);
-    finishLayer(layer, false);
+    finishLayer(layer, inPlace);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;

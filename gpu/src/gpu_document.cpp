@@ -209,8 +209,12 @@ float* GpuDocument::mirrorData(BrushLayer layer) {
     const int c = channels(layer);
     const int side = document_.positions.side();
     l->texels.resize(static_cast<std::size_t>(side) * side * c);
-    for (std::size_t k = 0; k < l->texels.size(); ++k)
-      l->texels[k] = l->fill[k % c];
+    for (std::size_t k = 0; k < static_cast<std::size_t>(c); ++k)
+      l->texels[k] = l->fill[k];
+    // Doubling copies: a 4096 layer's fill is the first stroke's pause otherwise.
+    for (std::size_t done = c; done < l->texels.size(); done *= 2)
+      std::copy_n(l->texels.begin(), std::min(done, l->texels.size() - done),
+                  l->texels.begin() + static_cast<std::ptrdiff_t>(done));
   }
   return l->texels.data();
 }
