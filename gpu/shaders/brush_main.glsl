@@ -9,12 +9,12 @@ layout(location = 2) out vec4 o_feature;
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 positions = texelFetch(u_positions, t, 0);
-  vec4 diffuse = texelFetch(u_diffuseLayer, t, 0);
-  vec4 feature = texelFetch(u_featureLayer, t, 0);
   BrushInput b = brushInputAt(t, positions);
 #if defined(BRUSH_IN_PLACE)
   if (b.weight == 0.0) discard; // the targets are the layers: nothing to write, nothing to sample
 #endif
+  vec4 diffuse = texelFetch(u_diffuseLayer, t, 0);
+  vec4 feature = texelFetch(u_featureLayer, t, 0);
   if (b.weight != 0.0) brushLayers(positions, diffuse, feature, b); // negative weights pull
   o_positions = positions;
   o_diffuse = diffuse;
