@@ -395,8 +395,25 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   QVERIFY(qobject_cast<QComboBox*>(window_->brushPanel()->parameterWidget("material")));
   app::ViewportWidget* view = window_->viewport();
   const std::vector<float> before = positionsOf(*window_);
-  stroke(*window_, "splat", 0.08f, 1.0f, {view->width() / 2.0 - 40, view->height() / 2.0},
-         {view->width() / 2.0 + 40, view->height() / 2.0});
+  // Mid-stroke the paint is only on the GPU (read back at the stroke's end); the document the
+  // window saves or autosaves must hold it already.
+  window_->brushPanel()->setRadius(0.08f);
+  window_->brushPanel()->setStrength(1.0f);
+  const QPoint from(view->width() / 2 - 40, view->height() / 2);
+  QTest::mousePress(view, Qt::LeftButton, {}, from);
+  for (int k = 1; k <= 5; ++k)
+    QTest::mouseMove(view, from + QPoint(8 * k, 0));
+  view->repaint(); // the queued dabs run in paintGL
+  QVERIFY(!view->document().diffuse.uniform());
+  const core::Document& midStroke = view->document();
+  const int side = midStroke.size() + 1;
+  int painted = 0;
+  for (std::size_t k = 0; k < midStroke.diffuse.texels.size(); k += 4)
+    painted += std::abs(midStroke.diffuse.texels[k] - midStroke.diffuse.fill[0]) > 0.05f;
+  QVERIFY2(painted > side, qPrintable(QString::number(painted)));
+  for (int k = 6; k <= 10; ++k)
+    QTest::mouseMove(view, from + QPoint(8 * k, 0));
+  QTest::mouseRelease(view, Qt::LeftButton, {}, from + QPoint(80, 0));
   QCOMPARE(window_->undoStack()->count(), 1);
   const core::Document& d = view->document();
   QVERIFY(!bitEqual(before, positionsOf(*window_)));     // relief
