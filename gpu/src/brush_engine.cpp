@@ -112,11 +112,13 @@ bool writesAllLayers(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
-// Whether the body's code (comments aside) names any of these.
+// Whether the body's code (comments aside) names any of these identifiers (whole words:
+// u_layer is not u_layerFill).
 bool names(const std::string& body, std::initializer_list<const char*> words) {
   const std::string code = withoutComments(body);
-  return std::any_of(words.begin(), words.end(),
-                     [&](const char* w) { return code.find(w) != std::string::npos; });
+  return std::any_of(words.begin(), words.end(), [&](const char* w) {
+    return std::regex_search(code, std::regex(std::string("\\b") + w + "\\b"));
+  });
 }
 
 bool needsNormals(const BrushManifest& manifest, const std::string& body) {
