@@ -23,11 +23,16 @@ struct BrushEngine::LoadedBrush {
   // where nothing reads other texels of that layer: each texel is then read by the fragment
   // that writes it alone (the texture barrier rules).
   std::array<bool, 4> inPlace{};
-  // Every layer the brush writes is written in place (the passes may discard unweighted texels).
+  bool writesInPlace(BrushLayer layer) const { return inPlace[static_cast<std::size_t>(layer)]; }
+  // Whether every (any) layer the brush writes is written in place: all, and its passes may
+  // discard unweighted texels; any, and a pass needs a texture barrier first.
   bool allInPlace() const {
-    for (BrushLayer layer : manifest.writes)
-      if (!inPlace[static_cast<std::size_t>(layer)]) return false;
-    return true;
+    return std::all_of(manifest.writes.begin(), manifest.writes.end(),
+                       [this](BrushLayer l) { return writesInPlace(l); });
+  }
+  bool anyInPlace() const {
+    return std::any_of(manifest.writes.begin(), manifest.writes.end(),
+                       [this](BrushLayer l) { return writesInPlace(l); });
   }
   // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
   // painted-mask variants are compiled on first use.
@@ -112,10 +117,9 @@ bool writesAllLayers(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
-// Whether the body's code (comments aside) names any of these identifiers (whole words:
+// Whether code (a body without its comments) names any of these identifiers (whole words:
 // u_layer is not u_layerFill).
-bool names(const std::string& body, std::initializer_list<const char*> words) {
-  const std::string code = withoutComments(body);
+bool names(const std::string& code, std::initializer_list<const char*> words) {
   return std::any_of(words.begin(), words.end(), [&](const char* w) {
     return std::regex_search(code, std::regex(std::string("\\b") + w + "\\b"));
   });
@@ -295,18 +299,19 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   brush->body = shaderSource;
   brush->allLayers = writesAllLayers(shaderSource);
   if (hasTextureBarrier()) {
-    const std::string& b = shaderSource;
+    const std::string code = withoutComments(shaderSource);
+    // Other texels are read through the neighbour helpers, the prelude's normals, or a layer's
+    // sampler named by the body. A brushLayers() pass binds u_layer to the positions.
     const bool all = brush->allLayers;
-    // Other texels are read through the neighbour helpers, the prelude's normals, or the
-    // layer's sampler named by the body.
+    const auto readsOthers = [&](const char* sampler) {
+      return all ? names(code, {sampler}) : names(code, {"fetchLayer", "u_layer", sampler});
+    };
     brush->inPlace[0] =
-        !needsNormals(manifest, b) &&
-        !names(b, {"fetchPositions", "normalAt", "u_positions", "fetchLayer", "u_layer"});
-    brush->inPlace[1] = all ? !names(b, {"u_diffuseLayer"})
-                            : !names(b, {"fetchLayer", "u_layer", "u_diffuseLayer"});
-    brush->inPlace[2] = all ? !names(b, {"u_featureLayer"})
-                            : !names(b, {"fetchLayer", "u_layer", "u_featureLayer"});
-    brush->inPlace[3] = !all && !names(b, {"fetchLayer", "u_layer", "u_mask", "maskAt"});
+        !needsNormals(manifest, shaderSource) &&
+        !names(code, {"fetchPositions", "normalAt", "u_positions", "fetchLayer", "u_layer"});
+    brush->inPlace[1] = !readsOthers("u_diffuseLayer");
+    brush->inPlace[2] = !readsOthers("u_featureLayer");
+    brush->inPlace[3] = !all && !readsOthers("u_mask") && !names(code, {"maskAt"});
   }
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
                                     BrushLayer::Mask) != manifest.writes.end())
@@ -328,8 +333,7 @@ const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool m
         .emplace(key,
                  Program(file, rectsVertexShader(),
                          assemble(brush.manifest, layer, brush.allLayers, maskTexture,
-                                  brush.allLayers ? brush.allInPlace()
-                                                  : brush.inPlace[static_cast<std::size_t>(layer)],
+                                  brush.allLayers ? brush.allInPlace() : brush.writesInPlace(layer),
                                   brush.body)))
         .first->second;
   } catch (const GlError& e) {
@@ -359,6 +363,7 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
       for (int level = 0; level < levels; ++level) {
         GLuint id = 0;
         glGenTextures(1, &id);
+        // A view shares t's storage and keeps it alive after t is deleted on return.
         glTextureView(id, GL_TEXTURE_2D, t.id(), GL_RGBA8, static_cast<GLuint>(level), 1, 0, 1);
         views.push_back(Texture::wrap(id, std::max(1, width >> level), std::max(1, height >> level),
                                       TextureFormat::Rgba8));
@@ -542,8 +547,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   };
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
-  const auto finishLayer = [&](BrushLayer layer, bool inPlace) {
-    if (inPlace) { // the pass wrote the layer's texture itself
+  const auto finishLayer = [&](BrushLayer layer) {
+    if (brush.writesInPlace(layer)) {
+      // The pass wrote the layer's texture itself.
     } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
       document.swapScratch(layer);
     } else {
@@ -581,15 +587,12 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
     layersTarget_.bind();
     std::array<GLenum, 3> drawBuffers{};
-    // A layer whose texels the pass reads elsewhere goes to its scratch.
-    const auto inPlace = [&](BrushLayer layer) {
-      return brush.inPlace[static_cast<std::size_t>(layer)];
-    };
     for (std::size_t k = 0; k < attached.size(); ++k) {
       const bool written = std::find(brush.manifest.writes.begin(), brush.manifest.writes.end(),
                                      attached[k]) != brush.manifest.writes.end();
-      const Texture& target =
-          inPlace(attached[k]) ? document.texture(attached[k]) : document.scratch(attached[k]);
+      // A layer whose texels the pass reads elsewhere goes to its scratch.
+      const Texture& target = brush.writesInPlace(attached[k]) ? document.texture(attached[k])
+                                                               : document.scratch(attached[k]);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, written ? target.id() : 0, 0);
       drawBuffers[k] = written ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k) : GL_NONE;
@@ -597,8 +600,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     // u_layer: the positions (brushInputAt's value is the positions texel).
     bindInputs(pass, BrushLayer::Positions);
-    if (std::find(brush.inPlace.begin(), brush.inPlace.end(), true) != brush.inPlace.end())
-      glTextureBarrier(); // earlier writes to the layers written in place are visible
+    if (brush.anyInPlace()) glTextureBarrier(); // earlier writes to those layers are visible
     rectPass_.draw(passRects, side, side);
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
     // texture that a whole-image swap makes a layer's.
@@ -607,7 +609,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
     for (BrushLayer layer : brush.manifest.writes)
-      finishLayer(layer, inPlace(layer));
+      finishLayer(layer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return result;
   }
@@ -623,12 +625,12 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   });
   for (BrushLayer layer : order) {
     const Program& pass = program(brush, layer, maskTexture);
-    const bool inPlace = brush.inPlace[static_cast<std::size_t>(layer)];
+    const bool inPlace = brush.writesInPlace(layer);
     (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();
     bindInputs(pass, layer);
     if (inPlace) glTextureBarrier();
     rectPass_.draw(passRects, side, side);
-    finishLayer(layer, inPlace);
+    finishLayer(layer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;

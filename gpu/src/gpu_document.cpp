@@ -150,9 +150,8 @@ void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
   const int c = channels(layer);
   const int side = document_.positions.side();
   const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
-  textures_[index(layer)].readInto(toRegion(rect), mirrorData(layer) + at, side, c);
+  textures_[index(layer)].readInto(toRegion(rect), editedMirror(layer) + at, side, c);
   if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
-  if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
 }
 
 void GpuDocument::changed(BrushLayer layer, core::TexelRect rect) {
@@ -160,15 +159,18 @@ void GpuDocument::changed(BrushLayer layer, core::TexelRect rect) {
     pull(layer, rect);
     return;
   }
-  mirrorData(layer); // a uniform layer gets texels: brushes see it as painted from now on
-  if (layer == BrushLayer::Mask) document_.hasMask = true;
+  editedMirror(layer); // a uniform layer gets texels: brushes see it as painted from now on
   const int blocks = (document_.positions.side() + kStaleBlock - 1) / kStaleBlock;
   std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
   stale.resize(static_cast<std::size_t>(blocks) * blocks, 0);
   for (int by = rect.y / kStaleBlock; by <= (rect.y + rect.height - 1) / kStaleBlock; ++by)
     for (int bx = rect.x / kStaleBlock; bx <= (rect.x + rect.width - 1) / kStaleBlock; ++bx)
       stale[static_cast<std::size_t>(by) * blocks + bx] = 1;
-  stale_ = true;
+}
+
+bool GpuDocument::mirrorStale() const {
+  return std::any_of(staleBlocks_.begin(), staleBlocks_.end(),
+                     [](const std::vector<std::uint8_t>& s) { return !s.empty(); });
 }
 
 void GpuDocument::deferPaintPulls(bool on) {
@@ -177,7 +179,6 @@ void GpuDocument::deferPaintPulls(bool on) {
 }
 
 void GpuDocument::syncMirror() {
-  if (!stale_) return;
   const int side = document_.positions.side();
   const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
   for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
@@ -199,7 +200,11 @@ void GpuDocument::syncMirror() {
       }
     stale.clear();
   }
-  stale_ = false;
+}
+
+float* GpuDocument::editedMirror(BrushLayer layer) {
+  if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
+  return mirrorData(layer);
 }
 
 float* GpuDocument::mirrorData(BrushLayer layer) {

@@ -128,7 +128,7 @@ void dabSizes(benchmark::internal::Benchmark* b) {
 // A stroke of 10 %-radius dabs across the sphere, over two seams and a corner pole, with the
 // brush's own spacing, symmetry off, undo capture on, the stroke's end (its deferred read-back
 // and undo record) included: the sustained dab rate of push and of the material splat.
-void runStroke(benchmark::State& state, const char* brush) {
+void timeStrokes(benchmark::State& state, const char* brush) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
   gpu::GpuDocument& document = s.freshDocument(n);
@@ -155,10 +155,10 @@ void runStroke(benchmark::State& state, const char* brush) {
 }
 
 void BM_PushStroke(benchmark::State& state) {
-  runStroke(state, "push");
+  timeStrokes(state, "push");
 }
 void BM_SplatStroke(benchmark::State& state) {
-  runStroke(state, "splat");
+  timeStrokes(state, "splat");
 }
 
 BENCHMARK(BM_PushDab)

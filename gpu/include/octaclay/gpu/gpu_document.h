@@ -45,7 +45,7 @@ public:
   /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
   void deferPaintPulls(bool on);
   /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
-  bool mirrorStale() const { return stale_; }
+  bool mirrorStale() const;
   /// Reads every deferred region back into the mirror, in merged rectangles.
   void syncMirror();
   /// Writes rect of the mirror (e.g. restored by undo) to the layer's texture.
@@ -68,12 +68,14 @@ private:
   void writeMirror(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
   /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
   float* mirrorData(BrushLayer layer);
+  /// mirrorData for a layer a pass changed: a changed mask is one the document saves.
+  float* editedMirror(BrushLayer layer);
 
   core::Document document_;
   core::TileBounds bounds_;
   std::array<Texture, 4> textures_, scratch_;
-  bool deferring_ = false, stale_ = false;
-  /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred.
+  bool deferring_ = false;
+  /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred (empty: none).
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
 };
