@@ -30,7 +30,8 @@ uniform vec3 u_projectionDir;     // splats: projection frame, object space, uni
 uniform vec3 u_projectionRight;
 uniform vec3 u_projectionUp;
 #if defined(BRUSH_MATERIAL)
-// The chosen material's maps (repeat-wrapped, bilinear) and scales, object units unless noted.
+// The chosen material's maps (repeat-wrapped; nearest texel, bilinear where magnified) and
+// scales, object units unless noted.
 // Each sampler holds the one mip level this dab's footprint needs: the first pair for the
 // projection from the view, the Uv pair through image coordinates (tiles of u_tileSamples).
 uniform sampler2D u_materialColour;    // RGBA, alpha = coverage

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace octaclay::gpu {
 
@@ -348,9 +349,9 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
     g.id = m.id;
     g.tileSize = m.tileSize;
     g.heightScale = m.heightScale;
-    // RGBA8 (the maps are 8-bit images), mipmapped, then one repeat-wrapped, bilinear view per
-    // level: a dab samples the one level its footprint needs. A per-texel mip choice
-    // (trilinear) would cost a software rasterizer more than the rest of the dab.
+    // RGBA8 (the maps are 8-bit images), mipmapped, then one repeat-wrapped view per level: a
+    // dab samples the one level its footprint needs (bindMaterial sets the filter). A per-texel
+    // mip choice (trilinear) would cost a software rasterizer more than the rest of the dab.
     auto upload = [](int width, int height, const std::vector<float>& rgba) {
       int levels = 1;
       while ((std::max(width, height) >> levels) > 0)
@@ -430,22 +431,34 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     const core::Sample c = dab.centreTexel;
     const core::Sample next{c.i < document.size() ? c.i + 1 : c.i - 1, c.j};
     const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
+    struct Level {
+      std::size_t index;
+      GLint filter;
+    };
+    // Where a map texel spans more than about 1.4 samples (magnified past level 0) the maps are
+    // read bilinearly; elsewhere the chosen level's texels are about a sample wide and the
+    // nearest one is read: a bilinear sample costs a software rasterizer as much as the rest of
+    // a splat's texel.
     const auto level = [&](float tilesPerSample) {
       const float lod = std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f));
-      return static_cast<std::size_t>(
-          std::clamp(std::lround(lod), 0L, static_cast<long>(m.colour.size()) - 1));
+      return Level{static_cast<std::size_t>(
+                       std::clamp(std::lround(lod), 0L, static_cast<long>(m.colour.size()) - 1)),
+                   lod < -0.5f ? GL_LINEAR : GL_NEAREST};
     };
-    const std::size_t projected = level(spacing / tileSize), uv = level(1.0f / tileSamples);
-    const std::array<std::pair<const char*, const Texture*>, 4> maps{
-        {{"u_materialColour", &m.colour[projected]},
-         {"u_materialSurface", &m.surface[projected]},
-         {"u_materialColourUv", &m.colour[uv]},
-         {"u_materialSurfaceUv", &m.surface[uv]}}};
+    const Level projected = level(spacing / tileSize), uv = level(1.0f / tileSamples);
+    const std::array<std::tuple<const char*, const Texture*, GLint>, 4> maps{
+        {{"u_materialColour", &m.colour[projected.index], projected.filter},
+         {"u_materialSurface", &m.surface[projected.index], projected.filter},
+         {"u_materialColourUv", &m.colour[uv.index], uv.filter},
+         {"u_materialSurfaceUv", &m.surface[uv.index], uv.filter}}};
     for (std::size_t k = 0; k < maps.size(); ++k) {
+      const auto& [name, texture, filter] = maps[k];
       const GLint unit = kMaterialUnit + static_cast<GLint>(k);
       glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-      glBindTexture(GL_TEXTURE_2D, maps[k].second->id());
-      glUniform1i(program.uniform(maps[k].first), unit);
+      glBindTexture(GL_TEXTURE_2D, texture->id());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+      glUniform1i(program.uniform(name), unit);
     }
     glActiveTexture(GL_TEXTURE0);
     // The bound maps hold one level each: older brushes' textureLod(…, u_materialLod) still works.

@@ -27,7 +27,8 @@ using namespace octaclay::gpu::testing;
 namespace {
 
 // A black-and-white checker material, 8 × 8 cells a tile, flat: only its colour matters.
-void writeCheckerMaterial(const std::filesystem::path& folder) {
+void writeCheckerMaterial(const std::filesystem::path& folder, const std::string& id,
+                          float tileSize) {
   std::filesystem::create_directories(folder);
   const int side = 64;
   core::RasterImage colour{side, side, 3, {}}, flat{side, side, 1, {}}, zero{side, side, 1, {}};
@@ -43,8 +44,9 @@ void writeCheckerMaterial(const std::filesystem::path& folder) {
   core::writePng(zero, folder / "specular.png");
   core::writePng(zero, folder / "reflectivity.png");
   std::ofstream(folder / "material.json")
-      << R"({"id": "checker", "name": "Checker", "source": "test", "license": "CC0-1.0",
-            "tileSize": 0.07, "heightScale": 0.0,
+      << R"({"id": ")" << id << R"(", "name": "Checker", "source": "test", "license": "CC0-1.0",
+            "tileSize": )"
+      << tileSize << R"(, "heightScale": 0.0,
             "maps": {"height": "height.png", "colour": "colour.png",
                      "specular": "specular.png", "reflectivity": "reflectivity.png"}})";
 }
@@ -100,6 +102,7 @@ private slots:
   void onePassWritesWhatPerLayerPassesWrite();
   void brushLayersMustNotWriteTheMask();
   void aStrokeReadsItsPaintBackOnceAtItsEnd();
+  void mapsAreReadAtTheNearestTexelUnlessMagnified();
 
 private:
   Dab splatDab(const GpuDocument& d, core::Sample s, float radius, const std::string& material,
@@ -121,7 +124,10 @@ void SplatTest::initTestCase() {
     engine_.emplace();
     splat_ = builtInManifest("splat");
     engine_->load(splat_, readFile(splat_.shaderPath()));
-    writeCheckerMaterial(std::filesystem::path(dir_.path().toStdString()) / "checker");
+    const std::filesystem::path folder = dir_.path().toStdString();
+    writeCheckerMaterial(folder / "checker", "checker", 0.07f);
+    // 2 diagonals a tile: at N = 128 a map texel spans about four samples.
+    writeCheckerMaterial(folder / "checker-large", "checker-large", 2.0f);
     MaterialCatalog catalog;
     catalog.scan({std::filesystem::path(OCTACLAY_SOURCE_DIR) / "resources/materials",
                   dir_.path().toStdString()});
@@ -440,6 +446,44 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   QCOMPARE(layerTexels(d, BrushLayer::Diffuse), diffuse);
   QCOMPARE(layerTexels(d, BrushLayer::Feature), feature);
   QCOMPARE(d.texture(BrushLayer::Diffuse).read({0, 0, side, side}), diffuse);
+}
+
+// Where the bound level's texels are about a sample wide, a dab reads the nearest texel (the
+// checker's cells stay pure black and white); where the maps are magnified past level 0 it
+// reads them bilinearly, so samples near a cell edge take grey values between the two.
+void SplatTest::mapsAreReadAtTheNearestTexelUnlessMagnified() {
+  const auto greys = [&](const std::string& material, int& black, int& white) {
+    GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+    Dab dab = splatDab(d, {80, 64}, 0.35f, material, 0);
+    dab.strength = 100; // the weight clamps to 1 over nearly all the dab: diffuse = map colour
+    const std::vector<float> positions = layerTexels(d, BrushLayer::Positions);
+    engine_->dab(d, "splat", dab);
+    const std::vector<float> after = layerTexels(d, BrushLayer::Diffuse);
+    int grey = 0;
+    black = white = 0;
+    for (std::size_t k = 0; k < after.size(); k += 4) {
+      // Within 0.9 radii (1 − d²)² ≥ 0.036: the weight is 1 there.
+      const core::Vec3f p{positions[k], positions[k + 1], positions[k + 2]};
+      if (core::length(p - dab.centre) > 0.9f * dab.radius) continue;
+      const float v = after[k];
+      if (v <= 0.02f)
+        ++black;
+      else if (v >= 0.98f)
+        ++white;
+      else
+        ++grey;
+    }
+    return grey;
+  };
+  int black = 0, white = 0;
+  // N = 128, a tile of 0.07 diagonals: about 6.6 texels a sample at level 0, level 3 bound.
+  QCOMPARE(greys("checker", black, white), 0);
+  QVERIFY2(black > 100 && white > 100,
+           qPrintable(QString("%1 black, %2 white").arg(black).arg(white)));
+  // A tile of 2 diagonals: a texel spans about 4 samples.
+  const int grey = greys("checker-large", black, white);
+  QVERIFY2(grey > 10 && black > 100 && white > 100,
+           qPrintable(QString("%1 grey, %2 black, %3 white").arg(grey).arg(black).arg(white)));
 }
 
 QTEST_APPLESS_MAIN(SplatTest)
