@@ -629,7 +629,7 @@ void ViewportWidget::paintGL() {
 // ---------------------------------------------------------------------------------- strokes
 
 void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
-  if (!document_ || !library_) return;
+  if (!document_ || !library_ || stroke_) return; // one stroke at a time
   const std::optional<core::PickHit> hit = pickAt(p);
   if (!hit) return;
   std::string id = settings_.brushId;
@@ -815,6 +815,13 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   } else if (event->button() == Qt::LeftButton) {
     drag_ = (mods & Qt::ShiftModifier) ? Drag::Pan : Drag::Orbit; // off the model
   }
+  event->accept();
+}
+
+// The second press of a double click arrives while the first one's stroke or drag goes on: it
+// continues that, rather than starting a stroke over the first (whose undo would be lost).
+void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+  if (drag_ == Drag::None) mousePressEvent(event);
   event->accept();
 }
 

@@ -71,6 +71,7 @@ private slots:
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
   void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
   void splatLaysMaterialInOneStroke();
+  void aDoubleClickContinuesTheStrokeItInterrupts();
   void corruptFileFromTheFileMenuKeepsTheDocument();
   void importTurnsAMeshIntoAModelOrSaysWhyNot();
   void autosaveSurvivesACrashAndIsRecovered();
@@ -386,6 +387,33 @@ void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer(
   window_->layersPanel()->setPreview(0);
 }
 
+// A quick second press arrives as a double click while the first press's stroke is running: the
+// stroke goes on (its dabs land, one undo entry) instead of being replaced by a new one.
+void ModellerRenderTest::aDoubleClickContinuesTheStrokeItInterrupts() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  QVERIFY(window_->brushPanel()->selectBrush("push"));
+  window_->brushPanel()->setRadius(0.1f);
+  window_->brushPanel()->setStrength(0.5f);
+  app::ViewportWidget* view = window_->viewport();
+  const std::vector<float> before = positionsOf(*window_);
+  const QPoint from(view->width() / 2 - 30, view->height() / 2);
+  QTest::mousePress(view, Qt::LeftButton, {}, from);
+  // The press's dab runs in paintGL; a window shown just now may take a few events to paint.
+  view->repaint();
+  QTRY_VERIFY(!bitEqual(before, positionsOf(*window_)));
+  QMouseEvent doubleClick(QEvent::MouseButtonDblClick, QPointF(from),
+                          view->mapToGlobal(QPointF(from)), Qt::LeftButton, Qt::LeftButton, {});
+  QCoreApplication::sendEvent(view, &doubleClick);
+  for (int k = 1; k <= 6; ++k)
+    QTest::mouseMove(view, from + QPoint(10 * k, 0));
+  QTest::mouseRelease(view, Qt::LeftButton, {}, from + QPoint(60, 0));
+  QCOMPARE(window_->undoStack()->count(), 1);
+  window_->undoStack()->undo();
+  QVERIFY(bitEqual(before, positionsOf(*window_))); // one undo takes the whole stroke back
+}
+
 void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   window_ = makeWindow();
   QVERIFY(window_);
@@ -403,8 +431,9 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   QTest::mousePress(view, Qt::LeftButton, {}, from);
   for (int k = 1; k <= 5; ++k)
     QTest::mouseMove(view, from + QPoint(8 * k, 0));
-  view->repaint(); // the queued dabs run in paintGL
-  QVERIFY(!view->document().diffuse.uniform());
+  // The queued dabs run in paintGL; a window shown just now may take a few events to paint.
+  view->repaint();
+  QTRY_VERIFY(!view->document().diffuse.uniform());
   const core::Document& midStroke = view->document();
   const int side = midStroke.size() + 1;
   int painted = 0;
