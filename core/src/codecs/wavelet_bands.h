@@ -3,10 +3,11 @@
 // Entropy coding of one detail band of quantized wavelet coefficients: each canonical sample of
 // the band, all channels interleaved, through the adaptive range coder with contexts from the
 // sample's coded neighbours in the band, its parent in the next coarser band and the channels
-// already coded at the same sample.
+// already coded at the same sample; the models carry over from each band to the next finer one.
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -35,13 +36,26 @@ void setVectorMagnitudes(CoefficientPlanes& planes);
 /// Canonical samples of the band at this level (0 = finest) and orientation.
 std::size_t bandSampleCount(int n, int level, Orientation orientation);
 
+/// The adaptive models of one orientation's bands. Each band starts from what the next coarser
+/// band of its orientation learnt, so the encoder and the decoder code an orientation's bands
+/// coarsest first, all with one BandModels.
+class BandModels {
+public:
+  BandModels();
+  ~BandModels();
+  BandModels(BandModels&&) noexcept;
+  BandModels& operator=(BandModels&&) noexcept;
+  struct State;
+  std::unique_ptr<State> state;
+};
+
 std::vector<std::uint8_t> encodeBand(const CoefficientPlanes& planes, int level,
-                                     Orientation orientation);
+                                     Orientation orientation, BandModels& models);
 
 /// Fills the band's samples and their identified copies. Returns false for a damaged stream
 /// (the values written are then meaningless but bounded).
 bool decodeBand(std::span<const std::uint8_t> bytes, CoefficientPlanes& planes, int level,
-                Orientation orientation);
+                Orientation orientation, BandModels& models);
 
 /// The most bytes encodeBand can write for a band of `samples` samples of `channels` channels.
 std::size_t maxBandBytes(std::size_t samples, int channels);

@@ -32,8 +32,11 @@ float dequantize(std::int32_t q, float step) {
   return static_cast<float>(q) * step;
 }
 
-// The unit normal of the rebuilt surface's cell holding (i, j) at level spacing d, and two
-// tangents; the axes when the cell is degenerate.
+// The frame of sample (i, j) at level spacing d on the rebuilt surface: the unit normal of the
+// coarse cell holding it (of the two cells it borders when it lies on a cell edge), and two
+// tangents, the first across the cell's i direction, the second along it. Aligned with the
+// grid, the tangential details (mostly the parameterization's uneven speed along the
+// transform's direction) gather in the second; the axes when the cell is degenerate.
 Frame frameAt(const std::vector<std::vector<float>>& planes, int n, int d, int i, int j) {
   const int i0 = std::min(i / d * d, n - d), j0 = std::min(j / d * d, n - d);
   const auto w = static_cast<std::size_t>(n) + 1;
@@ -41,31 +44,46 @@ Frame frameAt(const std::vector<std::vector<float>>& planes, int n, int d, int i
     const std::size_t k = static_cast<std::size_t>(jj) * w + static_cast<std::size_t>(ii);
     return std::array<float, 3>{planes[0][k], planes[1][k], planes[2][k]};
   };
+  const auto cross = [](const std::array<float, 3>& u, const std::array<float, 3>& v) {
+    return std::array<float, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                u[0] * v[1] - u[1] * v[0]};
+  };
+  const auto cellNormal = [&](int ci, int cj) {
+    const auto a = point(ci, cj), b = point(ci + d, cj), c = point(ci, cj + d),
+               e = point(ci + d, cj + d);
+    return cross({e[0] - a[0], e[1] - a[1], e[2] - a[2]}, {c[0] - b[0], c[1] - b[1], c[2] - b[2]});
+  };
+  std::array<float, 3> normal = cellNormal(i0, j0);
+  // The other cell beside an edge sample (one coordinate a multiple of d, the other not).
+  int ci = -1, cj = -1;
+  if (i % d == 0 && j % d != 0) {
+    ci = i0 == i ? i - d : i;
+    cj = j0;
+  } else if (j % d == 0 && i % d != 0) {
+    ci = i0;
+    cj = j0 == j ? j - d : j;
+  }
+  if (ci >= 0 && cj >= 0 && ci + d <= n && cj + d <= n) {
+    const auto other = cellNormal(ci, cj);
+    for (std::size_t x = 0; x < 3; ++x)
+      normal[x] += other[x];
+  }
+  const auto unit = [](std::array<float, 3>& v) {
+    const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(length > 0) || !std::isfinite(length)) return false;
+    for (float& x : v)
+      x /= length;
+    return true;
+  };
+  const Frame axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  if (!unit(normal)) return axes;
   const auto a = point(i0, j0), b = point(i0 + d, j0), c = point(i0, j0 + d),
              e = point(i0 + d, j0 + d);
-  const std::array<float, 3> u{e[0] - a[0], e[1] - a[1], e[2] - a[2]};
-  const std::array<float, 3> v{c[0] - b[0], c[1] - b[1], c[2] - b[2]};
-  std::array<float, 3> normal{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                              u[0] * v[1] - u[1] * v[0]};
-  const float length =
-      std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-  if (!(length > 0) || !std::isfinite(length)) return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-  for (float& x : normal)
-    x /= length;
-  // First tangent: normal × the axis least along it.
-  const float ax = std::abs(normal[0]), ay = std::abs(normal[1]), az = std::abs(normal[2]);
-  std::array<float, 3> axis{0, 0, 0};
-  axis[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
-  std::array<float, 3> t{normal[1] * axis[2] - normal[2] * axis[1],
-                         normal[2] * axis[0] - normal[0] * axis[2],
-                         normal[0] * axis[1] - normal[1] * axis[0]};
-  const float tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-  for (float& x : t)
-    x /= tl;
-  const std::array<float, 3> s{normal[1] * t[2] - normal[2] * t[1],
-                               normal[2] * t[0] - normal[0] * t[2],
-                               normal[0] * t[1] - normal[1] * t[0]};
-  return {normal, t, s};
+  const std::array<float, 3> along{(b[0] - a[0]) + (e[0] - c[0]), (b[1] - a[1]) + (e[1] - c[1]),
+                                   (b[2] - a[2]) + (e[2] - c[2])};
+  std::array<float, 3> t = cross(normal, along);
+  if (!unit(t)) return axes;
+  return {normal, t, cross(normal, t)};
 }
 
 bool isCanonicalSample(int n, int i, int j) {

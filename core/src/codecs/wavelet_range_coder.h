@@ -1,8 +1,10 @@
 #pragma once
 
-// An adaptive binary range coder (the LZMA design: 11-bit probabilities adapting by 1/32 of
-// the distance to certainty), coding the wavelet coefficients' decisions.
+// An adaptive binary range coder (the LZMA design) coding the wavelet coefficients' decisions.
+// Each model mixes a fast and a slow estimate of its probability, and a new model learns from
+// its first decisions at rates 1/2, 1/4, …: a context's skew costs a few decisions, not dozens.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -10,29 +12,51 @@
 
 namespace octaclay::core::detail {
 
-constexpr int kProbabilityBits = 11;
+constexpr int kProbabilityBits = 15;
 constexpr std::uint32_t kProbabilityOne = 1 << kProbabilityBits;
-constexpr int kAdaptShift = 5;
-/// The most bits one adaptive decision can cost: probabilities stay within [31, 2017] / 2048.
-constexpr int kMaxBitsPerDecision = 7;
+// Adaptation rates 2^-5 and 2^-7 (measured on armadillo at 95 dB: 1.5 % fewer bits than one
+// rate of 2^-5; other pairs did no better).
+constexpr int kFastShift = 5;
+constexpr int kSlowShift = 7;
+constexpr std::uint32_t kMinProbability = 64;
+/// The most bits one adaptive decision can cost: probabilities stay within [64, 32704] / 32768.
+constexpr int kMaxBitsPerDecision = 9;
 
-/// The probability that the next decision is 0, in units of 1/2048.
+/// The probability that the next decision is 0, in units of 1/32768.
 struct BitModel {
-  std::uint32_t p = kProbabilityOne / 2;
+  std::uint16_t fast = kProbabilityOne / 2;
+  std::uint16_t slow = kProbabilityOne / 2;
+  std::uint16_t seen = 0; // decisions learnt from, up to kSlowShift
+
+  std::uint32_t p() const {
+    return std::clamp<std::uint32_t>((std::uint32_t{fast} + slow) >> 1, kMinProbability,
+                                     kProbabilityOne - kMinProbability);
+  }
+  void update(int bit) {
+    const int fastShift = std::min<int>(seen + 1, kFastShift);
+    const int slowShift = std::min<int>(seen + 1, kSlowShift);
+    if (seen < kSlowShift) ++seen;
+    if (bit == 0) {
+      fast = static_cast<std::uint16_t>(fast + ((kProbabilityOne - fast) >> fastShift));
+      slow = static_cast<std::uint16_t>(slow + ((kProbabilityOne - slow) >> slowShift));
+    } else {
+      fast = static_cast<std::uint16_t>(fast - (fast >> fastShift));
+      slow = static_cast<std::uint16_t>(slow - (slow >> slowShift));
+    }
+  }
 };
 
 class RangeEncoder {
 public:
   int bit(BitModel& model, int bit) {
-    const std::uint32_t bound = (range_ >> kProbabilityBits) * model.p;
+    const std::uint32_t bound = (range_ >> kProbabilityBits) * model.p();
     if (bit == 0) {
       range_ = bound;
-      model.p += (kProbabilityOne - model.p) >> kAdaptShift;
     } else {
       low_ += bound;
       range_ -= bound;
-      model.p -= model.p >> kAdaptShift;
     }
+    model.update(bit);
     normalize();
     return bit;
   }
@@ -88,18 +112,17 @@ public:
       code_ = (code_ << 8) | nextByte();
   }
   int bit(BitModel& model, int /*unused*/ = 0) {
-    const std::uint32_t bound = (range_ >> kProbabilityBits) * model.p;
+    const std::uint32_t bound = (range_ >> kProbabilityBits) * model.p();
     int bit;
     if (code_ < bound) {
       range_ = bound;
-      model.p += (kProbabilityOne - model.p) >> kAdaptShift;
       bit = 0;
     } else {
       code_ -= bound;
       range_ -= bound;
-      model.p -= model.p >> kAdaptShift;
       bit = 1;
     }
+    model.update(bit);
     normalize();
     return bit;
   }

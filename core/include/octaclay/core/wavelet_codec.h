@@ -26,7 +26,7 @@
 
 namespace octaclay::core {
 
-inline constexpr std::uint16_t kWaveletVersion = 2;
+inline constexpr std::uint16_t kWaveletVersion = 3;
 inline constexpr double kWaveletMinBound = 1e-6;
 inline constexpr double kWaveletMaxBound = 0.1;
 inline constexpr double kWaveletDefaultBound = 1.5e-5; ///< about 96 dB on scanned meshes
