@@ -162,7 +162,7 @@ std::optional<app::RdPoint> waveletAt(const app::RdReference& reference, double 
     } else {
       coarse = bound;
     }
-    if (coarse / fine < 1.05) break;
+    if (coarse / fine < 1.01) break; // within 1 % of the bound that just reaches target
   }
   if (!best) {
     const app::RdPoint p = app::measureCodec(reference, *wavelet, {fine, {}}, samples);
