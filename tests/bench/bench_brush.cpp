@@ -51,38 +51,50 @@ Session& session() {
   return s;
 }
 
-// Dabs cycle through three samples around the +z pole so the surface keeps changing.
+// Dabs cycle through three samples around the +z pole so the surface keeps changing. Pushes
+// alternate with pulls at the same places, so the sphere stays a sphere. Returns the seconds the
+// dab took, its GPU work included.
+double timedDab(Session& s, gpu::GpuDocument& document, const char* brush, float radius, int k,
+                gpu::DabResult* result = nullptr) {
+  const int n = document.size();
+  const core::GeometryImage& image = document.document().positions;
+  const core::Sample centres[] = {{n / 2, n / 2}, {n / 2 + n / 64, n / 2}, {n / 2, n / 2 + n / 64}};
+  gpu::Dab dab;
+  dab.centreTexel = centres[k % 3];
+  dab.centre = image.at(dab.centreTexel).xyz();
+  dab.centreNormal = core::vertexNormal(image, dab.centreTexel);
+  dab.radius = radius;
+  dab.strength = brush[0] == 'p' ? (k % 6 < 3 ? 0.1f : -0.1f) : 0.5f;
+  const auto start = std::chrono::steady_clock::now();
+  gpu::DabResult made = s.library.engine().dab(document, brush, dab);
+  glFinish(); // count the GPU's work, not just its queueing
+  if (result != nullptr) *result = std::move(made);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
   gpu::GpuDocument& document = s.freshDocument(n);
   const core::GeometryImage& image = document.document().positions;
   const float radius = radiusFraction * document.bounds().diagonal();
-  const core::Sample centres[] = {{n / 2, n / 2}, {n / 2 + n / 64, n / 2}, {n / 2, n / 2 + n / 64}};
   double seconds = 0;
   std::size_t texels = 0, inside = 0;
   int k = 0;
   // As in a stroke: paint layers are read back once after the dabs (timed apart, sync_ms).
   document.deferPaintPulls(true);
   for (auto _ : state) {
-    gpu::Dab dab;
-    dab.centreTexel = centres[k++ % 3];
-    dab.centre = image.at(dab.centreTexel).xyz();
-    dab.centreNormal = core::vertexNormal(image, dab.centreTexel);
-    dab.radius = radius;
-    // Pushes alternate with pulls at the same places, so the sphere stays a sphere.
-    dab.strength = brush[0] == 'p' ? (k % 6 < 3 ? 0.1f : -0.1f) : 0.5f;
-    const auto start = std::chrono::steady_clock::now();
-    const gpu::DabResult result = s.library.engine().dab(document, brush, dab);
-    glFinish(); // count the GPU's work, not just its queueing
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    gpu::DabResult result;
+    const int at = k++;
+    const double elapsed = timedDab(s, document, brush, radius, at, &result);
     state.SetIterationTime(elapsed);
     seconds += elapsed;
     texels = result.texels;
-    if (inside == 0)
+    if (inside == 0) {
+      const core::Vec3f centre = image.at({n / 2, n / 2}).xyz();
       for (const core::Vec4f& t : image.texels())
-        inside += core::length(t.xyz() - dab.centre) < radius;
+        inside += core::length(t.xyz() - centre) < radius;
+    }
   }
   const auto syncStart = std::chrono::steady_clock::now();
   document.deferPaintPulls(false);
@@ -97,6 +109,39 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   state.counters["inside"] = static_cast<double>(inside);
   state.counters["bytes_per_s"] = static_cast<double>(bytes) / perDab;
   state.counters["x_memcpy"] = perDab / memcpySeconds(bytes);
+}
+
+// Issue 5's ratio, robust to a shared machine whose speed drifts between benchmarks: every
+// iteration runs a block of push dabs and then a block of splat dabs of the same radius, each
+// brush on its own sphere; splat_over_push is the ratio of their summed times. Blocks, not single
+// dabs in turn: as in a stroke, each brush's dabs follow one another with its layers in cache.
+void BM_SplatOverPush(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Session& s = session();
+  s.freshDocument(n);
+  s.current.reset();
+  gpu::GpuDocument pushed(core::makeDocument(s.sphere)), splatted(core::makeDocument(s.sphere));
+  const float radius = static_cast<float>(state.range(1)) / 1000.0f * pushed.bounds().diagonal();
+  pushed.deferPaintPulls(true);
+  splatted.deferPaintPulls(true);
+  double push = 0, splat = 0;
+  int k = 0;
+  constexpr int kBlock = 8;
+  for (auto _ : state) {
+    double p = 0, q = 0;
+    for (int b = 0; b < kBlock; ++b)
+      p += timedDab(s, pushed, "push", radius, k + b);
+    for (int b = 0; b < kBlock; ++b)
+      q += timedDab(s, splatted, "splat", radius, k + b);
+    k += kBlock;
+    state.SetIterationTime(p + q);
+    push += p;
+    splat += q;
+  }
+  const auto iterations = static_cast<double>(state.iterations()) * kBlock;
+  state.counters["push_ms"] = push * 1e3 / iterations;
+  state.counters["splat_ms"] = splat * 1e3 / iterations;
+  state.counters["splat_over_push"] = splat / push;
 }
 
 // Radii are given in per mille of the diagonal.
@@ -178,6 +223,13 @@ BENCHMARK(BM_SplatDab)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(0.3);
+BENCHMARK(BM_SplatOverPush)
+    ->Args({1024, 20})
+    ->Args({1024, 100})
+    ->Args({1024, 300})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(1.0);
 BENCHMARK(BM_SmoothFullImage)
     ->Arg(256)
     ->Arg(1024)
