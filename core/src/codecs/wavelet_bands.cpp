@@ -19,6 +19,7 @@ constexpr int kExponents = 32;
 // sums) keep classes apart instead of sharing the top one.
 constexpr int kExponentClasses = 20;
 constexpr int kMaxCodedChannels = 4;
+constexpr std::int64_t kMaxContext = std::int64_t{1} << 30;
 
 // Context bucket of a weighted neighbourhood magnitude sum: exact below 8, then two per octave.
 int bucket(int m) {
@@ -148,20 +149,25 @@ void codeBand(Coder& coder, CoefficientPlanes& planes, int level, Orientation or
           return ii < 0 || jj < 0 || ii > n || jj > n ? 0 : q[index(ii, jj)];
         };
         Neighbourhood h{0, value(i - d, j), value(i, j - d), 0};
-        int parents = 0;
+        // In 64 bits and capped: a damaged stream may hold magnitudes up to kMaxMagnitude
+        // (three times that in the vector plane), whose weighted sum overflows an int.
+        const auto magnitude = [](std::int32_t v) { return std::abs(std::int64_t{v}); };
+        std::int64_t parents = 0;
         if (g.hasParent) {
           const int pd = 4 * s;
           h.parent = q[index(pi, pj)];
-          parents = 2 * std::abs(h.parent) +
-                    (std::abs(value(pi - pd, pj)) + std::abs(value(pi + pd, pj)) +
-                     std::abs(value(pi, pj - pd)) + std::abs(value(pi, pj + pd)) + 1) /
+          parents = 2 * magnitude(h.parent) +
+                    (magnitude(value(pi - pd, pj)) + magnitude(value(pi + pd, pj)) +
+                     magnitude(value(pi, pj - pd)) + magnitude(value(pi, pj + pd)) + 1) /
                         2;
         }
         // The parent's band is coarser, its coefficients several times larger: a quarter of
         // its weight (measured on armadillo: 1 % fewer bits than full weight).
-        h.m = 3 * (std::abs(h.left) + std::abs(h.up)) + std::abs(value(i - d, j - d)) +
-              std::abs(value(i + d, j - d)) + std::abs(value(i - 2 * d, j)) +
-              std::abs(value(i, j - 2 * d)) + (parents + 2) / 4;
+        const std::int64_t m = 3 * (magnitude(h.left) + magnitude(h.up)) +
+                               magnitude(value(i - d, j - d)) + magnitude(value(i + d, j - d)) +
+                               magnitude(value(i - 2 * d, j)) + magnitude(value(i, j - 2 * d)) +
+                               (parents + 2) / 4;
+        h.m = static_cast<int>(std::min<std::int64_t>(m, kMaxContext));
         return h;
       };
       int first = 0;
