@@ -58,6 +58,7 @@ const char* layerDefine(BrushLayer layer) {
 
 // Texture units 0-3 and 6 hold the document's layers; the material's four maps start here.
 constexpr GLint kMaterialUnit = 7;
+constexpr std::size_t kMaterialUnits = 4;
 
 std::string uniformName(const std::string& parameterId) {
   std::string name = "u_" + parameterId;
@@ -290,7 +291,8 @@ std::vector<Region> regions(const std::vector<core::TexelRect>& rects) {
 
 BrushEngine::BrushEngine()
     : seamProgram_("gpu/shaders/seam.glsl", rectsVertexShader(),
-                   "#version 430 core\n" + detail::builtInShader("seam.glsl")) {}
+                   "#version 430 core\n" + detail::builtInShader("seam.glsl")),
+      nearestMaps_(Sampler::repeating(false)), bilinearMaps_(Sampler::repeating(true)) {}
 
 BrushEngine::~BrushEngine() = default;
 
@@ -433,7 +435,7 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
     struct Level {
       std::size_t index;
-      GLint filter;
+      bool bilinear;
     };
     // Where a map texel spans more than about 1.4 samples (magnified past level 0) the maps are
     // read bilinearly; elsewhere the chosen level's texels are about a sample wide and the
@@ -443,21 +445,21 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
       const float lod = std::log2(std::max(tilesPerSample * float(m.mapSize), 1e-6f));
       return Level{static_cast<std::size_t>(
                        std::clamp(std::lround(lod), 0L, static_cast<long>(m.colour.size()) - 1)),
-                   lod < -0.5f ? GL_LINEAR : GL_NEAREST};
+                   lod < -0.5f};
     };
     const Level projected = level(spacing / tileSize), uv = level(1.0f / tileSamples);
-    const std::array<std::tuple<const char*, const Texture*, GLint>, 4> maps{
-        {{"u_materialColour", &m.colour[projected.index], projected.filter},
-         {"u_materialSurface", &m.surface[projected.index], projected.filter},
-         {"u_materialColourUv", &m.colour[uv.index], uv.filter},
-         {"u_materialSurfaceUv", &m.surface[uv.index], uv.filter}}};
+    const std::array<std::tuple<const char*, const Texture*, bool>, kMaterialUnits> maps{
+        {{"u_materialColour", &m.colour[projected.index], projected.bilinear},
+         {"u_materialSurface", &m.surface[projected.index], projected.bilinear},
+         {"u_materialColourUv", &m.colour[uv.index], uv.bilinear},
+         {"u_materialSurfaceUv", &m.surface[uv.index], uv.bilinear}}};
     for (std::size_t k = 0; k < maps.size(); ++k) {
-      const auto& [name, texture, filter] = maps[k];
+      const auto& [name, texture, bilinear] = maps[k];
       const GLint unit = kMaterialUnit + static_cast<GLint>(k);
       glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
       glBindTexture(GL_TEXTURE_2D, texture->id());
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+      // The filter belongs to the unit (both projections may read one level's texture).
+      glBindSampler(static_cast<GLuint>(unit), bilinear ? bilinearMaps_.id() : nearestMaps_.id());
       glUniform1i(program.uniform(name), unit);
     }
     glActiveTexture(GL_TEXTURE0);
@@ -536,6 +538,13 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const std::vector<core::TexelRect> lines = borderLines(side);
   const std::vector<Region> lineRects = regions(lines);
 
+  // The material samplers would override the filtering of whatever VTK binds to those units.
+  struct MaterialUnitsRelease {
+    ~MaterialUnitsRelease() {
+      for (std::size_t k = 0; k < kMaterialUnits; ++k)
+        glBindSampler(static_cast<GLuint>(kMaterialUnit) + static_cast<GLuint>(k), 0);
+    }
+  } releaseMaterialUnits;
   // The modeller's context carries VTK's and Qt's state: passes must not blend, test or cull.
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);

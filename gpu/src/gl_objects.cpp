@@ -323,6 +323,32 @@ void Buffer::upload(std::span<const std::byte> bytes) {
   checkGlError("buffer upload");
 }
 
+Sampler Sampler::repeating(bool bilinear) {
+  Sampler sampler;
+  glGenSamplers(1, &sampler.id_);
+  const GLint filter = bilinear ? GL_LINEAR : GL_NEAREST;
+  glSamplerParameteri(sampler.id_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glSamplerParameteri(sampler.id_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glSamplerParameteri(sampler.id_, GL_TEXTURE_MIN_FILTER, filter);
+  glSamplerParameteri(sampler.id_, GL_TEXTURE_MAG_FILTER, filter);
+  checkGlError("creating a sampler");
+  return sampler;
+}
+
+Sampler::Sampler(Sampler&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteSamplers(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+Sampler::~Sampler() {
+  if (id_) glDeleteSamplers(1, &id_);
+}
+
 RectPass::RectPass() : rects_(Buffer::create()) {
   glGenVertexArrays(1, &vertexArray_);
 }

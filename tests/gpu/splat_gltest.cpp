@@ -112,6 +112,7 @@ private:
   float cellSize(const GpuDocument& d, core::Sample centre, core::Vec3f axis, core::Vec3f offset,
                  float reach);
 
+  float edgeTileSize_ = 0;
   std::optional<GlContext> context_;
   std::optional<BrushEngine> engine_;
   BrushManifest splat_;
@@ -128,6 +129,13 @@ void SplatTest::initTestCase() {
     writeCheckerMaterial(folder / "checker", "checker", 0.07f);
     // 2 diagonals a tile: at N = 128 a map texel spans about four samples.
     writeCheckerMaterial(folder / "checker-large", "checker-large", 2.0f);
+    // A tile whose level-0 texels span 2^0.56 samples of the view projection at the test's dab
+    // centre (bilinear) and fewer of the uv projection (nearest): both read level 0.
+    const GpuDocument sphere(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+    const core::GeometryImage& p = sphere.document().positions;
+    const float spacing = core::length(p.at({81, 64}).xyz() - p.at({80, 64}).xyz());
+    edgeTileSize_ = spacing * 64.0f / (sphere.bounds().diagonal() * std::exp2(-0.56f));
+    writeCheckerMaterial(folder / "checker-edge", "checker-edge", edgeTileSize_);
     MaterialCatalog catalog;
     catalog.scan({std::filesystem::path(OCTACLAY_SOURCE_DIR) / "resources/materials",
                   dir_.path().toStdString()});
@@ -484,6 +492,12 @@ void SplatTest::mapsAreReadAtTheNearestTexelUnlessMagnified() {
   const int grey = greys("checker-large", black, white);
   QVERIFY2(grey > 10 && black > 100 && white > 100,
            qPrintable(QString("%1 grey, %2 black, %3 white").arg(grey).arg(black).arg(white)));
+  // The view projection magnified, the uv one not, both at level 0 (one texture on two units):
+  // the view projection still reads bilinearly.
+  QVERIFY2(std::log2(64.0f / (edgeTileSize_ * 128.0f)) > -0.5f, "the uv projection magnifies");
+  const int edgeGrey = greys("checker-edge", black, white);
+  QVERIFY2(edgeGrey > 0,
+           qPrintable(QString("%1 grey, %2 black, %3 white").arg(edgeGrey).arg(black).arg(white)));
 }
 
 QTEST_APPLESS_MAIN(SplatTest)

@@ -92,6 +92,8 @@ private:
   const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   Program seamProgram_;
+  /// The material maps' filters, bound per texture unit for a dab.
+  Sampler nearestMaps_, bilinearMaps_;
   RectPass rectPass_;
   /// brushLayers() passes: the written layers' scratch textures as colour attachments 0 to 2
   /// (positions, diffuse, feature), attached for each dab and detached after it.

@@ -107,6 +107,25 @@ private:
   unsigned id_ = 0;
 };
 
+/// Move-only owner of a sampler object: filtering and wrapping bound to a texture unit, over the
+/// bound texture's own parameters.
+class Sampler {
+public:
+  Sampler() = default;
+  /// A repeat-wrapped sampler reading the nearest texel, or bilinearly. Throws GlError.
+  static Sampler repeating(bool bilinear);
+  Sampler(Sampler&& other) noexcept;
+  Sampler& operator=(Sampler&& other) noexcept;
+  Sampler(const Sampler&) = delete;
+  Sampler& operator=(const Sampler&) = delete;
+  ~Sampler();
+
+  unsigned id() const { return id_; }
+
+private:
+  unsigned id_ = 0;
+};
+
 /// Draws fragment passes over lists of texel rectangles in one draw call each: the rectangles
 /// go to a shader-storage buffer that rectsVertexShader() turns into two triangles apiece.
 class RectPass {
