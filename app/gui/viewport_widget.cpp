@@ -802,6 +802,13 @@ bool ViewportWidget::stepHistory(
 // ------------------------------------------------------------------------------------ input
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
+  // One drag at a time: another button pressed during a stroke or an orbit does nothing, so the
+  // release of the button that began it always ends it.
+  if (drag_ != Drag::None) {
+    event->accept();
+    return;
+  }
+  dragButton_ = event->button();
   lastPos_ = event->position();
   const Qt::KeyboardModifiers mods = event->modifiers();
   if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier) && pickAt(lastPos_)) {
@@ -818,11 +825,9 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   event->accept();
 }
 
-// The second press of a double click arrives while the first one's stroke or drag goes on: it
-// continues that, rather than starting a stroke over the first (whose undo would be lost).
+// A double click's second press: a press like any other (ignored while a drag goes on).
 void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-  if (drag_ == Drag::None) mousePressEvent(event);
-  event->accept();
+  mousePressEvent(event);
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
@@ -870,6 +875,10 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+  if (drag_ != Drag::None && event->button() != dragButton_) {
+    event->accept(); // another button than the drag's
+    return;
+  }
   if (drag_ == Drag::Sculpt) endStroke();
   drag_ = Drag::None;
   hover_ = pickAt(event->position());

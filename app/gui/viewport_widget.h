@@ -230,6 +230,7 @@ private:
   StrokeStabilizer stabilizer_;
   std::optional<core::PickHit> hover_;
   Drag drag_ = Drag::None;
+  Qt::MouseButton dragButton_ = Qt::NoButton; ///< the button whose release ends drag_
   QPointF lastPos_;
   float tabletPressure_ = 1.0f;
   bool tabletDown_ = false;

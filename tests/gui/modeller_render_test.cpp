@@ -71,7 +71,7 @@ private slots:
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
   void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
   void splatLaysMaterialInOneStroke();
-  void aDoubleClickContinuesTheStrokeItInterrupts();
+  void otherPressesDuringAStrokeLeaveItWhole();
   void corruptFileFromTheFileMenuKeepsTheDocument();
   void importTurnsAMeshIntoAModelOrSaysWhyNot();
   void autosaveSurvivesACrashAndIsRecovered();
@@ -387,9 +387,9 @@ void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer(
   window_->layersPanel()->setPreview(0);
 }
 
-// A quick second press arrives as a double click while the first press's stroke is running: the
-// stroke goes on (its dabs land, one undo entry) instead of being replaced by a new one.
-void ModellerRenderTest::aDoubleClickContinuesTheStrokeItInterrupts() {
+// Presses during a stroke (a double click's, another button's) neither replace the stroke nor
+// end it: its dabs land, it is one undo entry, and the next press starts a new stroke.
+void ModellerRenderTest::otherPressesDuringAStrokeLeaveItWhole() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
@@ -406,12 +406,25 @@ void ModellerRenderTest::aDoubleClickContinuesTheStrokeItInterrupts() {
   QMouseEvent doubleClick(QEvent::MouseButtonDblClick, QPointF(from),
                           view->mapToGlobal(QPointF(from)), Qt::LeftButton, Qt::LeftButton, {});
   QCoreApplication::sendEvent(view, &doubleClick);
-  for (int k = 1; k <= 6; ++k)
+  for (int k = 1; k <= 3; ++k)
+    QTest::mouseMove(view, from + QPoint(10 * k, 0));
+  // The right button pressed and released mid-stroke: no orbit, and the stroke goes on.
+  QTest::mousePress(view, Qt::RightButton, {}, from + QPoint(30, 0));
+  QTest::mouseRelease(view, Qt::RightButton, {}, from + QPoint(30, 0));
+  QCOMPARE(window_->undoStack()->count(), 0); // not ended by the other button's release
+  for (int k = 4; k <= 6; ++k)
     QTest::mouseMove(view, from + QPoint(10 * k, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, from + QPoint(60, 0));
   QCOMPARE(window_->undoStack()->count(), 1);
+  const std::vector<float> stroked = positionsOf(*window_);
+  // Nothing is left hanging: the next press and release make a second stroke.
+  QTest::mousePress(view, Qt::LeftButton, {}, from, 500);
+  QTest::mouseRelease(view, Qt::LeftButton, {}, from);
+  QCOMPARE(window_->undoStack()->count(), 2);
   window_->undoStack()->undo();
-  QVERIFY(bitEqual(before, positionsOf(*window_))); // one undo takes the whole stroke back
+  QVERIFY(bitEqual(stroked, positionsOf(*window_)));
+  window_->undoStack()->undo();
+  QVERIFY(bitEqual(before, positionsOf(*window_))); // one undo takes the whole first stroke back
 }
 
 void ModellerRenderTest::splatLaysMaterialInOneStroke() {
