@@ -58,18 +58,30 @@ private slots:
       }
   }
 
+  // One row per codec and, for exr, per mode: each mode writes a differently built stream.
   void damagedStreamsAreRefused_data() {
     QTest::addColumn<int>("index");
-    for (int k = 0; k < int(codecs().size()); ++k)
-      QTest::newRow(codecs()[k].info.id.data()) << k;
+    QTest::addColumn<QString>("mode");
+    for (int k = 0; k < int(codecs().size()); ++k) {
+      const std::string id(codecs()[k].info.id);
+      if (id == "exr") {
+        for (const char* mode : {"zip", "piz", "pxr24", "half"})
+          QTest::newRow((id + " " + mode).c_str()) << k << QString(mode);
+      } else {
+        QTest::newRow(id.c_str()) << k << QString();
+      }
+    }
   }
 
   void damagedStreamsAreRefused() {
     QFETCH(int, index);
+    QFETCH(QString, mode);
     const Codec& codec = codecs()[index];
+    const CodecParams params =
+        mode.isEmpty() ? typicalParams(codec) : CodecParams{0, mode.toStdString()};
     for (int channels : {1, 3}) {
       const FloatImage image = bumpyImage(8, channels);
-      const auto stream = codec.encode(image, typicalParams(codec));
+      const auto stream = codec.encode(image, params);
       checkDamagedStreams(codec, stream, 8, channels);
     }
   }
@@ -78,8 +90,11 @@ private slots:
 
   void foreignHeadersAreRefused() {
     QFETCH(int, index);
+    QFETCH(QString, mode);
     const Codec& codec = codecs()[index];
-    const auto stream = codec.encode(bumpyImage(8), typicalParams(codec));
+    const CodecParams params =
+        mode.isEmpty() ? typicalParams(codec) : CodecParams{0, mode.toStdString()};
+    const auto stream = codec.encode(bumpyImage(8), params);
     const auto refusedWith = [&](std::vector<std::uint8_t> bytes, int n, int channels,
                                  const char* needle) {
       try {
