@@ -213,8 +213,8 @@ Command addCompressCommand(CLI::App& app) {
   sub->add_option("--codec", opt->codec,
                   "Positions codec: bytepack, dct, exr, wavelet or lossless");
   sub->add_option("--quality", opt->quality,
-                  "Codec quality: bytepack bits, dct 1-100, wavelet error bound (fraction of "
-                  "the diagonal); default: the codec's");
+                  "Codec quality: bytepack regions per side R (a power of two), dct 1-100, wavelet "
+                  "error bound (fraction of the diagonal); default: the codec's");
   sub->add_option("--mode", opt->mode, "exr only: zip, piz, pxr24 or half");
   sub->add_option("-o,--output", opt->output,
                   "Compressed document (.ocz); with --sweep the report folder");
