@@ -42,18 +42,13 @@ Frame frameAt(const std::vector<std::vector<float>>& planes, int n, int d, int i
   const auto w = static_cast<std::size_t>(n) + 1;
   const auto point = [&](int ii, int jj) {
     const std::size_t k = static_cast<std::size_t>(jj) * w + static_cast<std::size_t>(ii);
-    return std::array<float, 3>{planes[0][k], planes[1][k], planes[2][k]};
+    return Vec3f{planes[0][k], planes[1][k], planes[2][k]};
   };
-  const auto cross = [](const std::array<float, 3>& u, const std::array<float, 3>& v) {
-    return std::array<float, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                                u[0] * v[1] - u[1] * v[0]};
-  };
-  const auto cellNormal = [&](int ci, int cj) {
-    const auto a = point(ci, cj), b = point(ci + d, cj), c = point(ci, cj + d),
-               e = point(ci + d, cj + d);
-    return cross({e[0] - a[0], e[1] - a[1], e[2] - a[2]}, {c[0] - b[0], c[1] - b[1], c[2] - b[2]});
-  };
-  std::array<float, 3> normal = cellNormal(i0, j0);
+  // A cell's normal from its diagonals, unnormalized (larger cells weigh more).
+  const auto cellNormal = [&](Vec3f a, Vec3f b, Vec3f c, Vec3f e) { return cross(e - a, c - b); };
+  const Vec3f a = point(i0, j0), b = point(i0 + d, j0), c = point(i0, j0 + d),
+              e = point(i0 + d, j0 + d);
+  Vec3f normal = cellNormal(a, b, c, e);
   // The other cell beside an edge sample (one coordinate a multiple of d, the other not).
   int ci = -1, cj = -1;
   if (i % d == 0 && j % d != 0) {
@@ -63,27 +58,23 @@ Frame frameAt(const std::vector<std::vector<float>>& planes, int n, int d, int i
     ci = i0;
     cj = j0 == j ? j - d : j;
   }
-  if (ci >= 0 && cj >= 0 && ci + d <= n && cj + d <= n) {
-    const auto other = cellNormal(ci, cj);
-    for (std::size_t x = 0; x < 3; ++x)
-      normal[x] += other[x];
-  }
-  const auto unit = [](std::array<float, 3>& v) {
-    const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(length > 0) || !std::isfinite(length)) return false;
-    for (float& x : v)
-      x /= length;
+  if (ci >= 0 && cj >= 0 && ci + d <= n && cj + d <= n)
+    normal +=
+        cellNormal(point(ci, cj), point(ci + d, cj), point(ci, cj + d), point(ci + d, cj + d));
+  // Divides rather than core::normalize's multiply by 1/length: the stream's golden bytes depend
+  // on the rounding.
+  const auto unit = [](Vec3f& v) {
+    const float l = length(v);
+    if (!(l > 0) || !std::isfinite(l)) return false;
+    v = {v.x / l, v.y / l, v.z / l};
     return true;
   };
   const Frame axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
   if (!unit(normal)) return axes;
-  const auto a = point(i0, j0), b = point(i0 + d, j0), c = point(i0, j0 + d),
-             e = point(i0 + d, j0 + d);
-  const std::array<float, 3> along{(b[0] - a[0]) + (e[0] - c[0]), (b[1] - a[1]) + (e[1] - c[1]),
-                                   (b[2] - a[2]) + (e[2] - c[2])};
-  std::array<float, 3> t = cross(normal, along);
+  Vec3f t = cross(normal, (b - a) + (e - c));
   if (!unit(t)) return axes;
-  return {normal, t, cross(normal, t)};
+  const Vec3f s = cross(normal, t);
+  return {{{normal.x, normal.y, normal.z}, {t.x, t.y, t.z}, {s.x, s.y, s.z}}};
 }
 
 bool isCanonicalSample(int n, int i, int j) {
