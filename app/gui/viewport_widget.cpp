@@ -825,11 +825,6 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   event->accept();
 }
 
-// A double click's second press: a press like any other (ignored while a drag goes on).
-void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-  mousePressEvent(event);
-}
-
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPointF p = event->position();
   const QPointF delta = p - lastPos_;

@@ -351,9 +351,9 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
     g.id = m.id;
     g.tileSize = m.tileSize;
     g.heightScale = m.heightScale;
-    // RGBA8 (the maps are 8-bit images), mipmapped, then one repeat-wrapped view per level: a
-    // dab samples the one level its footprint needs (bindMaterial sets the filter). A per-texel
-    // mip choice (trilinear) would cost a software rasterizer more than the rest of the dab.
+    // RGBA8 (the maps are 8-bit images), mipmapped, then one view per level: a dab samples the
+    // one level its footprint needs, wrapped and filtered by the sampler bindMaterial binds. A
+    // per-texel mip choice (trilinear) would cost a software rasterizer more than the dab.
     auto upload = [](int width, int height, const std::vector<float>& rgba) {
       int levels = 1;
       while ((std::max(width, height) >> levels) > 0)
@@ -370,11 +370,6 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
         glTextureView(id, GL_TEXTURE_2D, t.id(), GL_RGBA8, static_cast<GLuint>(level), 1, 0, 1);
         views.push_back(Texture::wrap(id, std::max(1, width >> level), std::max(1, height >> level),
                                       TextureFormat::Rgba8));
-        glBindTexture(GL_TEXTURE_2D, id);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       }
       glBindTexture(GL_TEXTURE_2D, 0);
       return views;

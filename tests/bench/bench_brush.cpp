@@ -127,12 +127,14 @@ void BM_SplatOverPush(benchmark::State& state) {
   double push = 0, splat = 0;
   int k = 0;
   constexpr int kBlock = 8;
+  const auto block = [&](gpu::GpuDocument& document, const char* brush) {
+    double seconds = 0;
+    for (int b = 0; b < kBlock; ++b)
+      seconds += timedDab(s, document, brush, radius, k + b);
+    return seconds;
+  };
   for (auto _ : state) {
-    double p = 0, q = 0;
-    for (int b = 0; b < kBlock; ++b)
-      p += timedDab(s, pushed, "push", radius, k + b);
-    for (int b = 0; b < kBlock; ++b)
-      q += timedDab(s, splatted, "splat", radius, k + b);
+    const double p = block(pushed, "push"), q = block(splatted, "splat");
     k += kBlock;
     state.SetIterationTime(p + q);
     push += p;

@@ -19,6 +19,11 @@ CodecParams typicalParams(const Codec& codec) {
   return {}; // the codec's default
 }
 
+// A data row's settings: its exr mode, else the codec's typical ones.
+CodecParams rowParams(const Codec& codec, const QString& mode) {
+  return mode.isEmpty() ? typicalParams(codec) : CodecParams{0, mode.toStdString()};
+}
+
 } // namespace
 
 class CodecStreamsTest : public QObject {
@@ -77,8 +82,7 @@ private slots:
     QFETCH(int, index);
     QFETCH(QString, mode);
     const Codec& codec = codecs()[index];
-    const CodecParams params =
-        mode.isEmpty() ? typicalParams(codec) : CodecParams{0, mode.toStdString()};
+    const CodecParams params = rowParams(codec, mode);
     for (int channels : {1, 3}) {
       const FloatImage image = bumpyImage(8, channels);
       const auto stream = codec.encode(image, params);
@@ -92,8 +96,7 @@ private slots:
     QFETCH(int, index);
     QFETCH(QString, mode);
     const Codec& codec = codecs()[index];
-    const CodecParams params =
-        mode.isEmpty() ? typicalParams(codec) : CodecParams{0, mode.toStdString()};
+    const CodecParams params = rowParams(codec, mode);
     const auto stream = codec.encode(bumpyImage(8), params);
     const auto refusedWith = [&](std::vector<std::uint8_t> bytes, int n, int channels,
                                  const char* needle) {
