@@ -67,7 +67,8 @@ Command addLodCommand(CLI::App& app) {
                   "--triangles (then the smallest M whose 2M^2 triangles reach T)");
   sub->add_option("--method", opt->method,
                   "How each LOD sample is chosen: salient-point (the thesis's best), "
-                  "salient-average, point or average")
+                  "salient-average, point or average; or adaptive: full-resolution samples "
+                  "where the surface bends, no grid (--size then only sets 2M^2 triangles)")
       ->capture_default_str();
   sub->add_option("--triangles", opt->triangles,
                   "Collapse vertices down to T triangles (more than 4)");
@@ -102,7 +103,8 @@ Command addLodCommand(CLI::App& app) {
             if (!method)
               throw Error(ErrorKind::InvalidArgument,
                           "unknown --method '" + opt->method +
-                              "': use salient-point, salient-average, point or average");
+                              "': use salient-point, salient-average, point, average or "
+                              "adaptive");
             // glTF viewers read only tangent-space maps, so a .glb gets one unless told.
             if (opt->space.empty()) opt->space = ext == ".glb" ? "tangent" : "object";
             const std::optional<core::NormalMapSpace> space = core::parseNormalMapSpace(opt->space);
@@ -224,9 +226,12 @@ Command addLodCommand(CLI::App& app) {
                         << "\n";
             } else {
               std::cout << "wrote " << opt->output << ": " << lod.mesh.triangles.size()
-                        << " triangles, " << lod.mesh.positions.size()
-                        << " vertices (M = " << lod.resampledSize << " of N = " << n << ", "
-                        << core::methodName(*method) << ") in " << lodMs << " ms\n"
+                        << " triangles, " << lod.mesh.positions.size() << " vertices ("
+                        << (*method == core::ResampleMethod::Adaptive
+                                ? "samples of N = " + std::to_string(n)
+                                : "M = " + std::to_string(lod.resampledSize) +
+                                      " of N = " + std::to_string(n))
+                        << ", " << core::methodName(*method) << ") in " << lodMs << " ms\n"
                         << "  against full resolution: RMS " << distance.rms * 100
                         << " %, Hausdorff " << distance.hausdorff * 100
                         << " % of the diagonal, PSNR " << distance.psnr << " dB\n"

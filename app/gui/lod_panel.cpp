@@ -71,13 +71,15 @@ QWidget* LodPanel::buildAutomaticLod() {
   methodCombo_->setObjectName(QStringLiteral("lodMethod"));
   for (core::ResampleMethod m :
        {core::ResampleMethod::Point, core::ResampleMethod::Average,
-        core::ResampleMethod::SalientAverage, core::ResampleMethod::SalientPoint})
+        core::ResampleMethod::SalientAverage, core::ResampleMethod::SalientPoint,
+        core::ResampleMethod::Adaptive})
     methodCombo_->addItem(QString::fromUtf8(core::methodName(m)), static_cast<int>(m));
   methodCombo_->setCurrentIndex(methodCombo_->findData(
       static_cast<int>(core::ResampleMethod::SalientPoint))); // the thesis's best
   methodCombo_->setToolTip(tr("How each LOD sample is picked from the full-resolution samples it "
                               "stands for: the one at its place, their mean, their "
-                              "saliency-weighted mean, or the most salient one"));
+                              "saliency-weighted mean, or the most salient one; adaptive "
+                              "places its vertices where the surface bends, no grid"));
   connect(methodCombo_, &QComboBox::currentIndexChanged, this,
           [this] { emit lodOptionsChanged(); });
 

@@ -2,6 +2,7 @@
 // corner the image coordinates of its vertex's copy on the triangle's side of the seams.
 #include "octaclay/core/lod.h"
 
+#include "detail/lod_adaptive.h"
 #include "detail/lod_refit.h"
 #include "detail/lod_resampling.h"
 #include "detail/quadric_collapse.h"
@@ -138,6 +139,30 @@ std::array<Vec2f, 3> cornerCoordinates(const std::array<std::uint32_t, 3>& tri,
   return best;
 }
 
+// Without a target or an error bound, as many triangles as the N/2 grid (or the given M's).
+LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
+  const int n = image.size();
+  std::size_t target = options.targetTriangles;
+  if (target == 0 && options.maxError == 0) {
+    const std::size_t m = options.size != 0 ? std::size_t(options.size) : std::size_t(n / 2);
+    target = 2 * m * m;
+  }
+  BoundingBox box;
+  if (options.maxError > 0)
+    for (const Vec4f& t : image.texels())
+      box.extend(t.xyz());
+  detail::AdaptiveTriangulation triangulation =
+      detail::adaptiveTriangulation(image, target, options.maxError * box.diagonal());
+  LodMesh lod;
+  lod.resampledSize = n;
+  lod.mesh = std::move(triangulation.mesh);
+  lod.cornerUv = std::move(triangulation.cornerUv);
+  if (options.refitToSurface)
+    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
+                           kRefitIterations);
+  return lod;
+}
+
 } // namespace
 
 std::string_view methodName(ResampleMethod method) {
@@ -150,25 +175,33 @@ std::string_view methodName(ResampleMethod method) {
     return "salient-average";
   case ResampleMethod::SalientPoint:
     return "salient-point";
+  case ResampleMethod::Adaptive:
+    return "adaptive";
   }
   return "salient-point";
 }
 
 std::optional<ResampleMethod> parseResampleMethod(std::string_view name) {
-  for (const ResampleMethod m : {ResampleMethod::Point, ResampleMethod::Average,
-                                 ResampleMethod::SalientAverage, ResampleMethod::SalientPoint})
+  for (const ResampleMethod m :
+       {ResampleMethod::Point, ResampleMethod::Average, ResampleMethod::SalientAverage,
+        ResampleMethod::SalientPoint, ResampleMethod::Adaptive})
     if (methodName(m) == name) return m;
   return std::nullopt;
 }
 
 GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method) {
   requireValidSize(image.size());
+  if (method == ResampleMethod::Adaptive)
+    throw Error(ErrorKind::InvalidArgument,
+                "the adaptive method makes no grid to resample to; choose point, average, "
+                "salient-average or salient-point");
   return detail::resampleWithSources(image, m, method).image;
 }
 
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
   checkOptions(image, options);
   const int n = image.size();
+  if (options.method == ResampleMethod::Adaptive) return adaptiveLod(image, options);
   const int m = chooseSize(n, options);
   const detail::ResampledImage resampled = detail::resampleWithSources(image, m, options.method);
   const VertexIndex index(m);

@@ -138,6 +138,7 @@ ResampledImage resampleWithSources(const GeometryImage& image, int m, ResampleMe
               c = averageFootprint(image, centre, half, salient);
               break;
             case ResampleMethod::SalientPoint:
+            case ResampleMethod::Adaptive: // never here: generateLod and resampleImage divert it
               c = salientFootprint(image, m, lod, centre, step);
               break;
             }

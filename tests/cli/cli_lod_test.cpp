@@ -144,6 +144,7 @@ void CliLodTest::everyMethod_data() {
   QTest::newRow("average") << "average" << false;
   QTest::newRow("salient-average") << "salient-average" << true;
   QTest::newRow("salient-point") << "salient-point" << true;
+  QTest::newRow("adaptive") << "adaptive" << false; // --size 8: the 8-grid's 128 triangles
 }
 
 void CliLodTest::everyMethod() {

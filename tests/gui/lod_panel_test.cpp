@@ -36,7 +36,8 @@ private slots:
     QStringList names;
     for (int k = 0; k < methods->count(); ++k)
       names << methods->itemText(k);
-    QCOMPARE(names, (QStringList{"point", "average", "salient-average", "salient-point"}));
+    QCOMPARE(names,
+             (QStringList{"point", "average", "salient-average", "salient-point", "adaptive"}));
     QCOMPARE(panel.lodText(), QStringLiteral("LOD: —"));
     QCOMPARE(panel.errorText(), QStringLiteral("Error: —"));
   }

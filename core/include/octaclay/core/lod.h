@@ -34,6 +34,11 @@ enum class ResampleMethod {
   /// pick along the seam only (the vertex stays on it); the octahedron's six vertices (the
   /// image's corners and side midpoints) keep their own sample.
   SalientPoint,
+  /// No grid: samples of the full image chosen where the surface bends, by cutting the
+  /// right-triangle hierarchy over the image where its error (distance from the plane of the
+  /// triangle a sample splits) falls below a threshold set by the triangle target or maxError.
+  /// Flat parts get few large triangles, ridges and folds many small ones.
+  Adaptive,
 };
 
 /// "point", "average", "salient-average", "salient-point".
@@ -53,7 +58,8 @@ struct LodOptions {
   /// Vertex collapse down to this many triangles (0 = none); must be > 4 when set.
   std::size_t targetTriangles = 0;
   /// Vertex collapse stops before any collapse whose quadric error exceeds this fraction of
-  /// the bounding-box diagonal (0 = no bound).
+  /// the bounding-box diagonal (0 = no bound). Adaptive: no sample within this distance of the
+  /// planes of the triangles it would split is kept.
   double maxError = 0;
   /// A collapse that turns any triangle's normal by more than this is refused.
   float maxNormalTurnDegrees = 60;
@@ -77,7 +83,7 @@ struct LodMesh {
   /// (average methods). Every triangle's corners are counter-clockwise in the image and the
   /// triangles tile the unit square once (collapses that would fold them are refused).
   std::vector<std::array<Vec2f, 3>> cornerUv;
-  int resampledSize = 0; ///< M that was used
+  int resampledSize = 0; ///< M that was used; N for the adaptive method (no grid)
 };
 
 /// The LOD: resample to M (resampleImage), extract the welded mesh (2M² triangles), collapse

@@ -1,0 +1,229 @@
+// The adaptive LOD's triangulation (detail/lod_adaptive.h): errors computed bottom-up over the
+// right-triangle hierarchy, then the hierarchy cut where the errors fall below a threshold.
+#include "detail/lod_adaptive.h"
+
+#include "octaclay/core/octahedral.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+
+namespace octaclay::core::detail {
+namespace {
+
+// A triangle of the hierarchy as sample indices j·(N+1)+i: hypotenuse a–b, right angle at c,
+// counter-clockwise in the image. Its children are (c, a, m) and (b, c, m), m = (a + b) / 2.
+struct HierarchyTriangle {
+  std::uint32_t a, b, c, m;
+};
+
+// Per level, from the roots down, the triangles whose hypotenuse has a midpoint sample, and the
+// midpoints on the image border (identified with samples across a seam). The same for every
+// image of size N: built once per N.
+struct Hierarchy {
+  std::vector<std::vector<HierarchyTriangle>> levels;
+  std::vector<std::vector<std::uint32_t>> borderMidpoints;
+  std::vector<std::uint32_t> canonicalOf; ///< per sample, its canonical sample's index
+  /// The canonical samples but the octahedron's six vertices: those a threshold keeps or drops.
+  std::vector<std::uint32_t> optional;
+};
+
+std::array<HierarchyTriangle, 8> roots(int n) {
+  const int side = n + 1, h = n / 2;
+  const auto at = [side](int i, int j) { return static_cast<std::uint32_t>(j * side + i); };
+  std::array<HierarchyTriangle, 8> out{};
+  int k = 0;
+  for (const int qx : {0, 1})
+    for (const int qy : {0, 1}) {
+      const int px = qx * n, qyj = qy * n;
+      // Upper face (P, Q, C) and lower face (Q, P, K) of quadrant (qx, qy).
+      const std::array<std::array<int, 6>, 2> faces{
+          {{px, h, h, qyj, h, h}, {h, qyj, px, h, px, qyj}}};
+      for (const auto& f : faces) {
+        int ax = f[0], ay = f[1], bx = f[2], by = f[3];
+        const int cx = f[4], cy = f[5];
+        if ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0) {
+          std::swap(ax, bx);
+          std::swap(ay, by);
+        }
+        out[k++] = {at(ax, ay), at(bx, by), at(cx, cy), at((ax + bx) / 2, (ay + by) / 2)};
+      }
+    }
+  return out;
+}
+
+Hierarchy buildHierarchy(int n) {
+  const int side = n + 1;
+  Hierarchy h;
+  const auto root = roots(n);
+  std::vector<HierarchyTriangle> level(root.begin(), root.end());
+  const auto coordinates = [side](std::uint32_t s) { return Sample{int(s) % side, int(s) / side}; };
+  while (!level.empty()) {
+    std::vector<HierarchyTriangle> next;
+    std::vector<std::uint32_t> border;
+    for (const HierarchyTriangle& t : level) {
+      const Sample m = coordinates(t.m);
+      if (m.i == 0 || m.j == 0 || m.i == n || m.j == n) border.push_back(t.m);
+      for (const auto& [a, b, c] : {std::array{t.c, t.a, t.m}, std::array{t.b, t.c, t.m}}) {
+        const Sample sa = coordinates(a), sb = coordinates(b);
+        if ((sa.i + sb.i) % 2 != 0 || (sa.j + sb.j) % 2 != 0) continue; // a leaf: half a cell
+        next.push_back({a, b, c, static_cast<std::uint32_t>((a + b) / 2)});
+      }
+    }
+    h.levels.push_back(std::move(level));
+    h.borderMidpoints.push_back(std::move(border));
+    level = std::move(next);
+  }
+  h.canonicalOf.resize(static_cast<std::size_t>(side) * side);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const Sample c = canonical(n, {i, j});
+      h.canonicalOf[std::size_t(j) * side + i] = static_cast<std::uint32_t>(c.j * side + c.i);
+    }
+  std::vector<std::uint32_t> octahedron;
+  for (const HierarchyTriangle& r : root)
+    for (const std::uint32_t v : {r.a, r.b, r.c})
+      octahedron.push_back(h.canonicalOf[v]);
+  for (std::uint32_t k = 0; k < h.canonicalOf.size(); ++k)
+    if (h.canonicalOf[k] == k &&
+        std::find(octahedron.begin(), octahedron.end(), k) == octahedron.end())
+      h.optional.push_back(k);
+  return h;
+}
+
+// Kept for N ≤ 1024 (about 2N² triangles of 16 bytes: 37 MB at N = 1024), where the live LOD
+// asks for it again and again; built for each call above that (0.6 GB at N = 4096).
+std::shared_ptr<const Hierarchy> hierarchy(int n) {
+  constexpr int kLargestKept = 1024;
+  if (n > kLargestKept) return std::make_shared<const Hierarchy>(buildHierarchy(n));
+  static std::mutex lock;
+  static std::map<int, std::shared_ptr<const Hierarchy>> built;
+  const std::lock_guard guard(lock);
+  auto& kept = built[n];
+  if (!kept) kept = std::make_shared<const Hierarchy>(buildHierarchy(n));
+  return kept;
+}
+
+// How far m lies from the plane of (a, b, c) (from the chord's midpoint where the triangle is
+// degenerate); weighted, times √(2 · area): what leaving m out adds to the squared distance
+// integrated over the triangle scales as distance² · area, so large triangles split first.
+float splitError(Vec3f a, Vec3f b, Vec3f c, Vec3f m, bool weighted) {
+  const Vec3f normal = cross(b - a, c - a);
+  const float area2 = dot(normal, normal); // (2 · area)²
+  if (area2 > 1e-30f)
+    return std::abs(dot(m - a, normal)) /
+           (weighted ? std::sqrt(std::sqrt(area2)) : std::sqrt(area2));
+  const float chord = length(m - (a + b) * 0.5f);
+  return weighted ? chord * length(b - a) * 0.70710678f : chord;
+}
+
+float above(float e) {
+  return std::nextafter(e, std::numeric_limits<float>::infinity());
+}
+
+std::vector<float> sampleErrors(const GeometryImage& image, const Hierarchy& h, bool weighted) {
+  const int n = image.size();
+  const auto texels = image.texels();
+  std::vector<float> error(texels.size(), 0.0f);
+  std::array<Sample, 4> same;
+  for (std::size_t l = h.levels.size(); l-- > 0;) {
+    const bool children = l + 1 < h.levels.size();
+    for (const HierarchyTriangle& t : h.levels[l]) {
+      float e = splitError(texels[t.a].xyz(), texels[t.b].xyz(), texels[t.c].xyz(),
+                           texels[t.m].xyz(), weighted);
+      // Strictly above its children's: a threshold between equal errors then never keeps a
+      // sample without the samples its split depends on.
+      if (children) e = std::max({e, above(error[(t.c + t.a) / 2]), above(error[(t.b + t.c) / 2])});
+      error[t.m] = std::max(error[t.m], e);
+    }
+    // Identified samples are one vertex: each copy carries the largest of their errors, so the
+    // triangles on both sides of a seam split together.
+    for (const std::uint32_t m : h.borderMidpoints[l]) {
+      const int count = identifiedSamples(n, {int(m) % (n + 1), int(m) / (n + 1)}, same);
+      float e = 0;
+      for (int k = 0; k < count; ++k)
+        e = std::max(e, error[std::size_t(same[k].j) * (n + 1) + same[k].i]);
+      for (int k = 0; k < count; ++k)
+        error[std::size_t(same[k].j) * (n + 1) + same[k].i] = e;
+    }
+  }
+  return error;
+}
+
+} // namespace
+
+AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::size_t targetTriangles,
+                                            double maxError) {
+  const int n = image.size(), side = n + 1;
+  const std::shared_ptr<const Hierarchy> kept = hierarchy(n);
+  const Hierarchy& h = *kept;
+  // A distance bound needs plain distances; a triangle target is met best in the L2 sense.
+  const std::vector<float> error = sampleErrors(image, h, !(maxError > 0));
+
+  // The octahedron's six vertices are always kept; each other kept vertex adds two triangles.
+  // Keep the `extra` samples of largest error: all above the (extra + 1)-th largest and as many
+  // of those equal to it as fit (their parents' errors are larger, so any of them may go).
+  const std::vector<std::uint32_t>& samples = h.optional;
+  const std::size_t extra = targetTriangles > 8 ? (targetTriangles + 4) / 2 - 6 : 0;
+  float threshold = maxError > 0 ? static_cast<float>(maxError) : -1.0f; // kept: errors above
+  std::size_t ties = 0; // samples at the threshold also kept
+  if (targetTriangles > 0 && extra < samples.size()) {
+    std::vector<float> errors(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      errors[k] = error[samples[k]];
+    std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(extra),
+                     errors.end(), std::greater<float>());
+    if (errors[extra] > threshold) {
+      threshold = errors[extra];
+      const auto above = static_cast<std::size_t>(
+          std::count_if(errors.begin(), errors.end(), [&](float e) { return e > threshold; }));
+      ties = extra - above;
+    }
+  }
+  std::vector<std::uint8_t> keep(image.texelCount(), 0);
+  for (const std::uint32_t k : samples) {
+    const float e = error[k];
+    keep[k] = e > threshold || (e == threshold && ties > 0);
+    if (e == threshold && ties > 0) --ties;
+  }
+
+  AdaptiveTriangulation out;
+  std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
+  const auto texels = image.texels();
+  const auto vertexOf = [&](std::uint32_t s) {
+    const std::uint32_t c = h.canonicalOf[s];
+    std::uint32_t& v = vertex[c];
+    if (v == UINT32_MAX) {
+      v = static_cast<std::uint32_t>(out.mesh.positions.size());
+      out.mesh.positions.push_back(texels[c].xyz());
+    }
+    return v;
+  };
+  const float inv = 1.0f / float(n);
+  const auto uv = [&](std::uint32_t s) {
+    return Vec2f{float(int(s) % side) * inv, float(int(s) / side) * inv};
+  };
+  std::vector<std::array<std::uint32_t, 3>> stack;
+  for (const HierarchyTriangle& r : roots(n))
+    stack.push_back({r.a, r.b, r.c});
+  while (!stack.empty()) {
+    const auto [a, b, c] = stack.back();
+    stack.pop_back();
+    const Sample sa{int(a) % side, int(a) / side}, sb{int(b) % side, int(b) / side};
+    const bool splits = (sa.i + sb.i) % 2 == 0 && (sa.j + sb.j) % 2 == 0;
+    const std::uint32_t m = (a + b) / 2;
+    if (splits && keep[h.canonicalOf[m]]) {
+      stack.push_back({c, a, m});
+      stack.push_back({b, c, m});
+      continue;
+    }
+    out.mesh.triangles.push_back({vertexOf(a), vertexOf(b), vertexOf(c)});
+    out.cornerUv.push_back({uv(a), uv(b), uv(c)});
+  }
+  return out;
+}
+
+} // namespace octaclay::core::detail
