@@ -5,11 +5,13 @@
 #include "octaclay/core/octahedral.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <thread>
 
 namespace octaclay::core::detail {
 namespace {
@@ -29,6 +31,9 @@ struct Hierarchy {
   std::vector<std::uint32_t> canonicalOf; ///< per sample, its canonical sample's index
   /// The canonical samples but the octahedron's six vertices: those a threshold keeps or drops.
   std::vector<std::uint32_t> optional;
+  /// Each level sorted by midpoint, so that the two triangles sharing one are neighbours and
+  /// the level splits between threads without two writing one sample.
+  bool sortedByMidpoint = false;
 };
 
 std::array<HierarchyTriangle, 8> roots(int n) {
@@ -55,7 +60,7 @@ std::array<HierarchyTriangle, 8> roots(int n) {
   return out;
 }
 
-Hierarchy buildHierarchy(int n) {
+Hierarchy buildHierarchy(int n, bool sortByMidpoint) {
   const int side = n + 1;
   Hierarchy h;
   const auto root = roots(n);
@@ -73,6 +78,9 @@ Hierarchy buildHierarchy(int n) {
         next.push_back({a, b, c, static_cast<std::uint32_t>((a + b) / 2)});
       }
     }
+    if (sortByMidpoint)
+      std::sort(level.begin(), level.end(),
+                [](const HierarchyTriangle& x, const HierarchyTriangle& y) { return x.m < y.m; });
     h.levels.push_back(std::move(level));
     h.borderMidpoints.push_back(std::move(border));
     level = std::move(next);
@@ -91,6 +99,7 @@ Hierarchy buildHierarchy(int n) {
     if (h.canonicalOf[k] == k &&
         std::find(octahedron.begin(), octahedron.end(), k) == octahedron.end())
       h.optional.push_back(k);
+  h.sortedByMidpoint = sortByMidpoint;
   return h;
 }
 
@@ -98,12 +107,12 @@ Hierarchy buildHierarchy(int n) {
 // asks for it again and again; built for each call above that (0.6 GB at N = 4096).
 std::shared_ptr<const Hierarchy> hierarchy(int n) {
   constexpr int kLargestKept = 1024;
-  if (n > kLargestKept) return std::make_shared<const Hierarchy>(buildHierarchy(n));
+  if (n > kLargestKept) return std::make_shared<const Hierarchy>(buildHierarchy(n, false));
   static std::mutex lock;
   static std::map<int, std::shared_ptr<const Hierarchy>> built;
   const std::lock_guard guard(lock);
   auto& kept = built[n];
-  if (!kept) kept = std::make_shared<const Hierarchy>(buildHierarchy(n));
+  if (!kept) kept = std::make_shared<const Hierarchy>(buildHierarchy(n, true));
   return kept;
 }
 
@@ -131,13 +140,28 @@ std::vector<float> sampleErrors(const GeometryImage& image, const Hierarchy& h, 
   std::array<Sample, 4> same;
   for (std::size_t l = h.levels.size(); l-- > 0;) {
     const bool children = l + 1 < h.levels.size();
-    for (const HierarchyTriangle& t : h.levels[l]) {
-      float e = splitError(texels[t.a].xyz(), texels[t.b].xyz(), texels[t.c].xyz(),
-                           texels[t.m].xyz(), weighted);
-      // Strictly above its children's: a threshold between equal errors then never keeps a
-      // sample without the samples its split depends on.
-      if (children) e = std::max({e, above(error[(t.c + t.a) / 2]), above(error[(t.b + t.c) / 2])});
-      error[t.m] = std::max(error[t.m], e);
+    const std::vector<HierarchyTriangle>& level = h.levels[l];
+    const auto part = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const HierarchyTriangle& t = level[k];
+        float e = splitError(texels[t.a].xyz(), texels[t.b].xyz(), texels[t.c].xyz(),
+                             texels[t.m].xyz(), weighted);
+        // Strictly above its children's: a threshold between equal errors then never keeps a
+        // sample without the samples its split depends on.
+        if (children)
+          e = std::max({e, above(error[(t.c + t.a) / 2]), above(error[(t.b + t.c) / 2])});
+        error[t.m] = std::max(error[t.m], e);
+      }
+    };
+    std::size_t split = level.size() / 2;
+    if (h.sortedByMidpoint && level.size() >= 32768) {
+      while (split < level.size() && level[split].m == level[split - 1].m)
+        ++split;
+      std::thread other(part, split, level.size());
+      part(0, split);
+      other.join();
+    } else {
+      part(0, level.size());
     }
     // Identified samples are one vertex: each copy carries the largest of their errors, so the
     // triangles on both sides of a seam split together.
@@ -153,13 +177,39 @@ std::vector<float> sampleErrors(const GeometryImage& image, const Hierarchy& h, 
   return error;
 }
 
+// The (rank + 1)-th largest of error[k] over k in samples and how many are larger: a radix
+// select on the bits of the (non-negative) floats, which order like the floats.
+std::pair<float, std::size_t> largestBut(const std::vector<float>& error,
+                                         const std::vector<std::uint32_t>& samples,
+                                         std::size_t rank) {
+  const auto bits = [&](std::uint32_t k) { return std::bit_cast<std::uint32_t>(error[k]); };
+  std::vector<std::uint32_t> histogram(1u << 16, 0);
+  for (const std::uint32_t k : samples)
+    ++histogram[bits(k) >> 16];
+  std::size_t larger = 0;
+  auto bin = static_cast<std::uint32_t>(histogram.size() - 1);
+  while (larger + histogram[bin] <= rank)
+    larger += histogram[bin--];
+  std::vector<float> inBin;
+  inBin.reserve(histogram[bin]);
+  for (const std::uint32_t k : samples)
+    if (bits(k) >> 16 == bin) inBin.push_back(error[k]);
+  const std::size_t within = rank - larger;
+  std::nth_element(inBin.begin(), inBin.begin() + static_cast<std::ptrdiff_t>(within), inBin.end(),
+                   std::greater<float>());
+  const float value = inBin[within];
+  larger += static_cast<std::size_t>(
+      std::count_if(inBin.begin(), inBin.end(), [value](float e) { return e > value; }));
+  return {value, larger};
+}
+
 } // namespace
 
 AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::size_t targetTriangles,
                                             double maxError) {
   const int n = image.size(), side = n + 1;
-  const std::shared_ptr<const Hierarchy> kept = hierarchy(n);
-  const Hierarchy& h = *kept;
+  const std::shared_ptr<const Hierarchy> shared = hierarchy(n);
+  const Hierarchy& h = *shared;
   // A distance bound needs plain distances; a triangle target is met best in the L2 sense.
   const std::vector<float> error = sampleErrors(image, h, !(maxError > 0));
 
@@ -171,30 +221,31 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   float threshold = maxError > 0 ? static_cast<float>(maxError) : -1.0f; // kept: errors above
   std::size_t ties = 0; // samples at the threshold also kept
   if (targetTriangles > 0 && extra < samples.size()) {
-    std::vector<float> errors(samples.size());
-    for (std::size_t k = 0; k < samples.size(); ++k)
-      errors[k] = error[samples[k]];
-    std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(extra),
-                     errors.end(), std::greater<float>());
-    if (errors[extra] > threshold) {
-      threshold = errors[extra];
-      const auto above = static_cast<std::size_t>(
-          std::count_if(errors.begin(), errors.end(), [&](float e) { return e > threshold; }));
-      ties = extra - above;
+    const auto [value, larger] = largestBut(error, samples, extra);
+    if (value > threshold) {
+      threshold = value;
+      ties = extra - larger;
     }
   }
   std::vector<std::uint8_t> keep(image.texelCount(), 0);
+  std::size_t kept = 0;
   for (const std::uint32_t k : samples) {
     const float e = error[k];
-    keep[k] = e > threshold || (e == threshold && ties > 0);
-    if (e == threshold && ties > 0) --ties;
+    const bool tie = e == threshold && ties > 0;
+    keep[k] = e > threshold || tie;
+    ties -= tie;
+    kept += keep[k];
   }
 
   AdaptiveTriangulation out;
+  const std::size_t triangles = 2 * (6 + kept) - 4; // closed genus 0: T = 2V - 4
+  out.mesh.positions.reserve(6 + kept);
+  out.mesh.triangles.reserve(triangles);
+  out.cornerUv.reserve(triangles);
   std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
   const auto texels = image.texels();
-  const auto vertexOf = [&](std::uint32_t s) {
-    const std::uint32_t c = h.canonicalOf[s];
+  const auto vertexOf = [&](Sample s) {
+    const std::uint32_t c = h.canonicalOf[std::size_t(s.j) * side + s.i];
     std::uint32_t& v = vertex[c];
     if (v == UINT32_MAX) {
       v = static_cast<std::uint32_t>(out.mesh.positions.size());
@@ -203,22 +254,22 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
     return v;
   };
   const float inv = 1.0f / float(n);
-  const auto uv = [&](std::uint32_t s) {
-    return Vec2f{float(int(s) % side) * inv, float(int(s) / side) * inv};
-  };
-  std::vector<std::array<std::uint32_t, 3>> stack;
+  const auto uv = [inv](Sample s) { return Vec2f{float(s.i) * inv, float(s.j) * inv}; };
+  const auto sample = [side](std::uint32_t k) { return Sample{int(k) % side, int(k) / side}; };
+  std::vector<std::array<Sample, 3>> stack; // hypotenuse a-b, right angle at c
   for (const HierarchyTriangle& r : roots(n))
-    stack.push_back({r.a, r.b, r.c});
+    stack.push_back({sample(r.a), sample(r.b), sample(r.c)});
   while (!stack.empty()) {
     const auto [a, b, c] = stack.back();
     stack.pop_back();
-    const Sample sa{int(a) % side, int(a) / side}, sb{int(b) % side, int(b) / side};
-    const bool splits = (sa.i + sb.i) % 2 == 0 && (sa.j + sb.j) % 2 == 0;
-    const std::uint32_t m = (a + b) / 2;
-    if (splits && keep[h.canonicalOf[m]]) {
-      stack.push_back({c, a, m});
-      stack.push_back({b, c, m});
-      continue;
+    // A hypotenuse with a midpoint sample splits there when that sample is kept.
+    if (((a.i + b.i) | (a.j + b.j)) % 2 == 0) {
+      const Sample m{(a.i + b.i) / 2, (a.j + b.j) / 2};
+      if (keep[h.canonicalOf[std::size_t(m.j) * side + m.i]]) {
+        stack.push_back({c, a, m});
+        stack.push_back({b, c, m});
+        continue;
+      }
     }
     out.mesh.triangles.push_back({vertexOf(a), vertexOf(b), vertexOf(c)});
     out.cornerUv.push_back({uv(a), uv(b), uv(c)});
