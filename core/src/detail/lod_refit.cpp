@@ -28,8 +28,16 @@ struct Covered {
   float w1, w2;           // barycentric weights of corners 1 and 2
 };
 
-// The samples on the stride lattice that each triangle's corner coordinates enclose. A sample
-// on an edge shared by two triangles may be taken by both: the fit is a mean, that is harmless.
+// Whether directed edge d of a counter-clockwise triangle owns the samples on it: of the two
+// triangles sharing an edge, which see it in opposite directions, exactly one does.
+bool ownsEdge(long long dx, long long dy) {
+  return dy > 0 || (dy == 0 && dx < 0);
+}
+
+// The samples on the stride lattice that each triangle's corner coordinates enclose, each
+// sample in one triangle only: one on a shared edge or corner goes to the triangle whose edge
+// owns it (the rasterizer's fill rule), so vertices are not counted once per triangle around
+// them. Corner coordinates are whole samples (x / N, y / N), so the edge tests are exact.
 std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv,
                                std::size_t begin, std::size_t end, int stride) {
   std::vector<Covered> covered;
@@ -39,28 +47,38 @@ std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& c
   const float scale = float(n);
   for (std::size_t t = begin; t < end; ++t) {
     const auto& c = cornerUv[t];
-    const float x0 = c[0].x * scale, y0 = c[0].y * scale;
-    const float x1 = c[1].x * scale, y1 = c[1].y * scale;
-    const float x2 = c[2].x * scale, y2 = c[2].y * scale;
-    const float area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    if (!(area > 0)) continue;
-    const float inv = 1 / area, eps = -1e-4f;
-    const auto lattice = [&](float v, bool up) {
-      const int k = up ? int(std::floor(v / float(stride))) : int(std::ceil(v / float(stride)));
-      return std::clamp(k * stride, 0, n);
+    std::array<long long, 3> x{}, y{};
+    for (int k = 0; k < 3; ++k) {
+      x[k] = std::llround(c[k].x * scale);
+      y[k] = std::llround(c[k].y * scale);
+    }
+    const long long area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+    if (area <= 0) continue;
+    // Edge k runs from corner k to corner k+1; its function weighs the corner opposite it.
+    std::array<bool, 3> owns{};
+    for (int k = 0; k < 3; ++k)
+      owns[k] = ownsEdge(x[(k + 1) % 3] - x[k], y[(k + 1) % 3] - y[k]);
+    const auto edge = [&](int k, long long px, long long py) {
+      const int next = (k + 1) % 3;
+      return (x[next] - x[k]) * (py - y[k]) - (y[next] - y[k]) * (px - x[k]);
     };
-    const int xBegin = lattice(std::min({x0, x1, x2}), false);
-    const int xEnd = lattice(std::max({x0, x1, x2}), true);
-    const int yBegin = lattice(std::min({y0, y1, y2}), false);
-    const int yEnd = lattice(std::max({y0, y1, y2}), true);
-    for (int y = yBegin; y <= yEnd; y += stride)
-      for (int x = xBegin; x <= xEnd; x += stride) {
-        const float px = float(x), py = float(y);
-        const float w1 = ((px - x0) * (y2 - y0) - (x2 - x0) * (py - y0)) * inv;
-        const float w2 = ((x1 - x0) * (py - y0) - (px - x0) * (y1 - y0)) * inv;
-        if (w1 < eps || w2 < eps || 1 - w1 - w2 < eps) continue;
-        covered.push_back(
-            {static_cast<std::uint32_t>(y * (n + 1) + x), static_cast<std::uint32_t>(t), w1, w2});
+    const auto lattice = [&](long long v, bool up) {
+      const long long k = up ? v / stride : (v + stride - 1) / stride; // v ≥ 0
+      return static_cast<int>(std::clamp<long long>(k * stride, 0, n));
+    };
+    const int xBegin = lattice(std::min({x[0], x[1], x[2]}), false);
+    const int xEnd = lattice(std::max({x[0], x[1], x[2]}), true);
+    const int yBegin = lattice(std::min({y[0], y[1], y[2]}), false);
+    const int yEnd = lattice(std::max({y[0], y[1], y[2]}), true);
+    const float inv = 1.0f / float(area);
+    for (int py = yBegin; py <= yEnd; py += stride)
+      for (int px = xBegin; px <= xEnd; px += stride) {
+        const long long e0 = edge(0, px, py), e1 = edge(1, px, py), e2 = edge(2, px, py);
+        if (e0 < 0 || e1 < 0 || e2 < 0) continue;
+        if ((e0 == 0 && !owns[0]) || (e1 == 0 && !owns[1]) || (e2 == 0 && !owns[2])) continue;
+        // e1 (edge 1 → 2) weighs corner 0, e2 corner 1, e0 corner 2.
+        covered.push_back({static_cast<std::uint32_t>(py * (n + 1) + px),
+                           static_cast<std::uint32_t>(t), float(e2) * inv, float(e0) * inv});
       }
   }
   return covered;
