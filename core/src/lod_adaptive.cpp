@@ -244,8 +244,13 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   out.cornerUv.reserve(triangles);
   std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
   const auto texels = image.texels();
+  // Only border samples have another canonical sample (a table look-up costs a cache miss).
+  const auto canonicalIndex = [&](Sample s) -> std::uint32_t {
+    const auto k = static_cast<std::uint32_t>(s.j * side + s.i);
+    return s.i == 0 || s.j == 0 || s.i == n || s.j == n ? h.canonicalOf[k] : k;
+  };
   const auto vertexOf = [&](Sample s) {
-    const std::uint32_t c = h.canonicalOf[std::size_t(s.j) * side + s.i];
+    const std::uint32_t c = canonicalIndex(s);
     std::uint32_t& v = vertex[c];
     if (v == UINT32_MAX) {
       v = static_cast<std::uint32_t>(out.mesh.positions.size());
@@ -265,7 +270,7 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
     // A hypotenuse with a midpoint sample splits there when that sample is kept.
     if (((a.i + b.i) | (a.j + b.j)) % 2 == 0) {
       const Sample m{(a.i + b.i) / 2, (a.j + b.j) / 2};
-      if (keep[h.canonicalOf[std::size_t(m.j) * side + m.i]]) {
+      if (keep[canonicalIndex(m)]) {
         stack.push_back({c, a, m});
         stack.push_back({b, c, m});
         continue;

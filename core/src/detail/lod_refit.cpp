@@ -48,9 +48,9 @@ std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& c
   for (std::size_t t = begin; t < end; ++t) {
     const auto& c = cornerUv[t];
     std::array<long long, 3> x{}, y{};
-    for (int k = 0; k < 3; ++k) {
-      x[k] = std::llround(c[k].x * scale);
-      y[k] = std::llround(c[k].y * scale);
+    for (int k = 0; k < 3; ++k) { // whole samples in [0, N]: rounding by truncation is exact
+      x[k] = static_cast<long long>(c[k].x * scale + 0.5f);
+      y[k] = static_cast<long long>(c[k].y * scale + 0.5f);
     }
     const long long area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
     if (area <= 0) continue;
