@@ -109,8 +109,10 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
   const std::span<const Vec4f> texels = full.texels();
   const std::size_t vertexCount = lod.positions.size();
   std::array<Accumulator, 2> acc;
+  // The steps move vertices by a fraction of the sample spacing: their normals barely turn, so
+  // the first step's serve them all.
+  const std::vector<Vec3f> normals = vertexNormals(lod);
   for (int iteration = 0; iteration < iterations; ++iteration) {
-    const std::vector<Vec3f> normals = vertexNormals(lod);
     for (auto& a : acc) {
       a.along.assign(vertexCount, 0);
       a.mass.assign(vertexCount, 0);
