@@ -139,6 +139,51 @@ std::array<Vec2f, 3> cornerCoordinates(const std::array<std::uint32_t, 3>& tri,
   return best;
 }
 
+// Collapses lod.mesh (vertex v at grid sample sampleOf[v] of an m grid, image copies
+// copies[v]) to the options' target or error bound, and gives each triangle its corner
+// coordinates. A seam vertex has a copy on each side of its seam; it may only slide along the
+// seam (into a vertex of the same seam or one of the seam's end cones), so that each triangle
+// keeps corners on one side. Cones stay. Interior vertices move freely.
+void collapseLod(LodMesh& lod, int m, const std::vector<Sample>& sampleOf,
+                 const std::vector<VertexCopies>& copies, const LodOptions& options) {
+  std::vector<SeamClass> classes(sampleOf.size());
+  std::uint32_t corner = 0;
+  std::array<std::uint32_t, 6> midpoint{};
+  for (std::size_t v = 0; v < sampleOf.size(); ++v) {
+    const Sample s = sampleOf[v];
+    classes[v] = seamClass(m, s);
+    if (s == Sample{0, 0}) corner = static_cast<std::uint32_t>(v);
+    for (const SeamClass c : {SeamClass::Bottom, SeamClass::Top, SeamClass::Left, SeamClass::Right})
+      if (s == seamMidpoint(m, c)) midpoint[static_cast<int>(c)] = static_cast<std::uint32_t>(v);
+  }
+  VertexCollapseOptions collapseOptions;
+  collapseOptions.targetTriangles = options.targetTriangles;
+  collapseOptions.maxError = options.maxError;
+  collapseOptions.engine = options.collapseEngine;
+  collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
+  collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
+    const SeamClass c = classes[from];
+    if (c == SeamClass::Interior) return true;
+    if (c == SeamClass::Cone) return false;
+    return classes[to] == c || to == corner || to == midpoint[static_cast<int>(c)];
+  };
+  collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
+    return cornerCoordinates(tri, copies);
+  };
+  // The mesh is closed and manifold by construction: the fast engine skips collapseVertices'
+  // topology check (a sort as costly as the collapse itself).
+  CollapsedMesh collapsed = options.collapseEngine == CollapseEngine::Fast
+                                ? detail::quadricCollapse(lod.mesh, collapseOptions)
+                                : collapseVertices(lod.mesh, collapseOptions);
+  lod.mesh = std::move(collapsed.mesh);
+  std::vector<VertexCopies> kept(collapsed.inputVertex.size());
+  for (std::size_t v = 0; v < kept.size(); ++v)
+    kept[v] = copies[collapsed.inputVertex[v]];
+  lod.cornerUv.resize(lod.mesh.triangles.size());
+  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
+    lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
+}
+
 // Without a target or an error bound, as many triangles as the N/2 grid (or the given M's).
 LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
   const int n = image.size();
@@ -151,12 +196,30 @@ LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
   if (options.maxError > 0)
     for (const Vec4f& t : image.texels())
       box.extend(t.xyz());
+  // Oversampled: oversample² × the target's triangles, collapsed down to it (as the grid).
+  const bool collapse = options.oversample > 1 && target > 0;
+  const std::size_t cut =
+      collapse ? target * std::size_t(options.oversample) * std::size_t(options.oversample)
+               : target;
   detail::AdaptiveTriangulation triangulation =
-      detail::adaptiveTriangulation(image, target, options.maxError * box.diagonal());
+      detail::adaptiveTriangulation(image, cut, options.maxError * box.diagonal());
   LodMesh lod;
   lod.resampledSize = n;
   lod.mesh = std::move(triangulation.mesh);
   lod.cornerUv = std::move(triangulation.cornerUv);
+  if (collapse && target < lod.mesh.triangles.size()) {
+    std::vector<VertexCopies> copies(triangulation.vertexSample.size());
+    std::array<Sample, 4> same;
+    const float inv = 1.0f / float(n);
+    for (std::size_t v = 0; v < copies.size(); ++v) {
+      copies[v].count = identifiedSamples(n, triangulation.vertexSample[v], same);
+      for (int k = 0; k < copies[v].count; ++k)
+        copies[v].uv[k] = {float(same[k].i) * inv, float(same[k].j) * inv};
+    }
+    LodOptions collapseOptions = options;
+    collapseOptions.targetTriangles = target;
+    collapseLod(lod, n, triangulation.vertexSample, copies, collapseOptions);
+  }
   if (options.refitToSurface)
     detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
                            kRefitIterations);
@@ -215,45 +278,10 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
       (options.targetTriangles > 0 && options.targetTriangles < lod.mesh.triangles.size()) ||
       options.maxError > 0;
   if (collapse) {
-    std::vector<SeamClass> classes(index.vertexCount());
+    std::vector<Sample> sampleOf(index.vertexCount());
     for (const Sample s : index.canonicalSamples())
-      classes[index.at(s.i, s.j)] = seamClass(m, s);
-    const std::uint32_t corner = index.at(0, 0);
-    std::array<std::uint32_t, 6> midpoint{};
-    for (const SeamClass c :
-         {SeamClass::Bottom, SeamClass::Top, SeamClass::Left, SeamClass::Right}) {
-      const Sample s = seamMidpoint(m, c);
-      midpoint[static_cast<int>(c)] = index.at(s.i, s.j);
-    }
-    VertexCollapseOptions collapseOptions;
-    collapseOptions.targetTriangles = options.targetTriangles;
-    collapseOptions.maxError = options.maxError;
-    collapseOptions.engine = options.collapseEngine;
-    collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
-    // A seam vertex has a copy on each side of its seam; it may only slide along the seam
-    // (into a vertex of the same seam or one of the seam's end cones), so that each triangle
-    // keeps corners on one side. Cones stay. Interior vertices move freely.
-    collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
-      const SeamClass c = classes[from];
-      if (c == SeamClass::Interior) return true;
-      if (c == SeamClass::Cone) return false;
-      return classes[to] == c || to == corner || to == midpoint[static_cast<int>(c)];
-    };
-    collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
-      return cornerCoordinates(tri, copies);
-    };
-    // The resampled mesh is closed and manifold by construction: the fast engine skips
-    // collapseVertices' topology check (a sort as costly as the collapse itself).
-    CollapsedMesh collapsed = options.collapseEngine == CollapseEngine::Fast
-                                  ? detail::quadricCollapse(lod.mesh, collapseOptions)
-                                  : collapseVertices(lod.mesh, collapseOptions);
-    lod.mesh = std::move(collapsed.mesh);
-    std::vector<VertexCopies> kept(collapsed.inputVertex.size());
-    for (std::size_t v = 0; v < kept.size(); ++v)
-      kept[v] = copies[collapsed.inputVertex[v]];
-    lod.cornerUv.resize(lod.mesh.triangles.size());
-    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
+      sampleOf[index.at(s.i, s.j)] = s;
+    collapseLod(lod, m, sampleOf, copies, options);
   } else {
     lod.cornerUv.resize(lod.mesh.triangles.size());
     for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)

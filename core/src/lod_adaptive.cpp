@@ -240,6 +240,7 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   AdaptiveTriangulation out;
   const std::size_t triangles = 2 * (6 + kept) - 4; // closed genus 0: T = 2V - 4
   out.mesh.positions.reserve(6 + kept);
+  out.vertexSample.reserve(6 + kept);
   out.mesh.triangles.reserve(triangles);
   out.cornerUv.reserve(triangles);
   std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
@@ -255,6 +256,7 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
     if (v == UINT32_MAX) {
       v = static_cast<std::uint32_t>(out.mesh.positions.size());
       out.mesh.positions.push_back(texels[c].xyz());
+      out.vertexSample.push_back({int(c) % side, int(c) / side});
     }
     return v;
   };

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry_image.h"
+#include "octaclay/core/octahedral.h"
 #include "octaclay/core/triangle_mesh.h"
 
 #include <array>
@@ -26,6 +27,8 @@ struct AdaptiveTriangulation {
   /// Per triangle, its corners' image coordinates (x / N, y / N): every triangle lies in the
   /// image square, counter-clockwise, and together they tile it once.
   std::vector<std::array<Vec2f, 3>> cornerUv;
+  /// Per vertex, the canonical sample it is.
+  std::vector<Sample> vertexSample;
 };
 
 AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::size_t targetTriangles,
