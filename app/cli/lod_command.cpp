@@ -52,7 +52,7 @@ bool saliencyIsEmpty(const core::GeometryImage& image) {
 Command addLodCommand(CLI::App& app) {
   struct Options {
     std::string input, output, method = "salient-point", normalMap, space;
-    long long size = 0, triangles = 0, mapSize = 0;
+    long long size = 0, triangles = 0, mapSize = 0, oversample = 1;
     double maxError = 0;
     std::size_t samples = 200'000;
     bool json = false;
@@ -72,6 +72,11 @@ Command addLodCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--triangles", opt->triangles,
                   "Collapse vertices down to T triangles (more than 4)");
+  sub->add_option("--oversample", opt->oversample,
+                  "With --triangles: start from K times the grid (adaptive: K^2 times the "
+                  "triangles) and collapse down to T, so the collapse chooses where detail goes: "
+                  "closer to the surface, for several times the time. A power of two")
+      ->capture_default_str();
   sub->add_option("--max-error", opt->maxError,
                   "Stop collapsing before an error above this fraction of the bounding-box "
                   "diagonal (0: no bound)");
@@ -130,6 +135,10 @@ Command addLodCommand(CLI::App& app) {
                           "--triangles " + std::to_string(opt->triangles) +
                               " is too small: a closed mesh has at least 4 triangles; ask for "
                               "more than 4");
+            if (opt->oversample < 1 || opt->oversample > 16 || !isPowerOfTwo(opt->oversample))
+              throw Error(ErrorKind::InvalidArgument,
+                          "--oversample " + std::to_string(opt->oversample) +
+                              " is not a power of two from 1 to 16 (e.g. 1, 2 or 4)");
             if (!(opt->maxError >= 0))
               throw Error(ErrorKind::InvalidArgument,
                           "--max-error " + std::to_string(opt->maxError) +
@@ -167,6 +176,7 @@ Command addLodCommand(CLI::App& app) {
             options.method = *method;
             options.targetTriangles = static_cast<std::size_t>(opt->triangles);
             options.maxError = opt->maxError;
+            options.oversample = static_cast<int>(opt->oversample);
             const auto lodStart = std::chrono::steady_clock::now();
             const core::LodMesh lod = core::generateLod(full, options);
             const double lodMs = millisecondsSince(lodStart);
@@ -205,6 +215,7 @@ Command addLodCommand(CLI::App& app) {
                                           {"document_size", n},
                                           {"size", lod.resampledSize},
                                           {"method", core::methodName(*method)},
+                                          {"oversample", opt->oversample},
                                           {"triangles", lod.mesh.triangles.size()},
                                           {"vertices", lod.mesh.positions.size()},
                                           {"file_vertices", fileVertices},

@@ -45,6 +45,7 @@ private slots:
   void everyMethod_data();
   void everyMethod();
   void triangleTargetAlonePicksTheSize();
+  void oversampledAdaptive();
   void humanOutputGivesTheFigures();
   void refusals_data();
   void refusals();
@@ -166,6 +167,15 @@ void CliLodTest::triangleTargetAlonePicksTheSize() {
   QCOMPARE(lod["normal_space"].toString(), QString("tangent")); // what glTF viewers read
 }
 
+// --oversample 2 with the adaptive method: cut at 4 x the triangles, collapsed to the target.
+void CliLodTest::oversampledAdaptive() {
+  RUN_JSON(lod, "lod", document_, "--method", "adaptive", "--triangles", "300", "--oversample", "2",
+           "-o", file("oversampled.glb"), "--json");
+  QCOMPARE(lod["oversample"].toInt(), 2);
+  QVERIFY(std::abs(lod["triangles"].toDouble() - 300) <= 3);
+  QVERIFY(lod["psnr"].toDouble() > 20);
+}
+
 void CliLodTest::humanOutputGivesTheFigures() {
   const QStringList args{"lod", document_, "--size", "16", "-o", file("human.obj")};
   const Result r = runCli(args);
@@ -200,6 +210,8 @@ void CliLodTest::refusals_data() {
   QTest::newRow("negative error") << QStringList{"--size", "16", "--max-error", "-1", "-o", out}
                                   << kUsage << "negative";
   QTest::newRow("no size, no target") << QStringList{"-o", out} << kUsage << "--size";
+  QTest::newRow("oversample 3") << QStringList{"--triangles", "100", "--oversample", "3", "-o", out}
+                                << kUsage << "--oversample 3";
 }
 
 void CliLodTest::refusals() {
