@@ -53,7 +53,7 @@ Command addLodCommand(CLI::App& app) {
   struct Options {
     std::string input, output, method = "salient-point", normalMap, space;
     long long size = 0, triangles = 0, mapSize = 0, oversample = 1;
-    double maxError = 0;
+    double maxError = 0, maxAspect = 10;
     std::size_t samples = 200'000;
     bool json = false;
   };
@@ -76,6 +76,11 @@ Command addLodCommand(CLI::App& app) {
                   "With --triangles: start from K times the grid (adaptive: K^2 times the "
                   "triangles) and collapse down to T, so the collapse chooses where detail goes: "
                   "closer to the surface, for several times the time. A power of two")
+      ->capture_default_str();
+  sub->add_option("--max-aspect", opt->maxAspect,
+                  "Refuse collapses that make a triangle thinner than this longest edge / "
+                  "height (0: no bound, else 2 or more). Looser lets the collapse follow parts "
+                  "the image stretches")
       ->capture_default_str();
   sub->add_option("--max-error", opt->maxError,
                   "Stop collapsing before an error above this fraction of the bounding-box "
@@ -139,6 +144,10 @@ Command addLodCommand(CLI::App& app) {
               throw Error(ErrorKind::InvalidArgument,
                           "--oversample " + std::to_string(opt->oversample) +
                               " is not a power of two from 1 to 16 (e.g. 1, 2 or 4)");
+            if (!(opt->maxAspect == 0 || opt->maxAspect >= 2))
+              throw Error(ErrorKind::InvalidArgument,
+                          "--max-aspect " + std::to_string(opt->maxAspect) +
+                              " is below 2: use 0 (no bound) or 2 or more (default 10)");
             if (!(opt->maxError >= 0))
               throw Error(ErrorKind::InvalidArgument,
                           "--max-error " + std::to_string(opt->maxError) +
@@ -177,6 +186,7 @@ Command addLodCommand(CLI::App& app) {
             options.targetTriangles = static_cast<std::size_t>(opt->triangles);
             options.maxError = opt->maxError;
             options.oversample = static_cast<int>(opt->oversample);
+            options.maxAspectRatio = static_cast<float>(opt->maxAspect);
             const auto lodStart = std::chrono::steady_clock::now();
             const core::LodMesh lod = core::generateLod(full, options);
             const double lodMs = millisecondsSince(lodStart);

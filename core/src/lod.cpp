@@ -70,6 +70,11 @@ void checkOptions(const GeometryImage& image, const LodOptions& options) {
   if (!(options.maxError >= 0))
     throw Error(ErrorKind::InvalidArgument, "maximum error " + std::to_string(options.maxError) +
                                                 " is negative; use 0 (no bound) or more");
+  if (!(options.maxAspectRatio == 0 || options.maxAspectRatio >= 2))
+    throw Error(ErrorKind::InvalidArgument,
+                "maximum aspect ratio " + std::to_string(options.maxAspectRatio) +
+                    " is below 2 (an equilateral triangle's is 1.15, a half square's 2); use 0 "
+                    "(no bound) or 2 or more");
   if (!(options.maxNormalTurnDegrees > 0 && options.maxNormalTurnDegrees <= 180))
     throw Error(ErrorKind::InvalidArgument, "maximum normal turn " +
                                                 std::to_string(options.maxNormalTurnDegrees) +
@@ -161,6 +166,7 @@ void collapseLod(LodMesh& lod, int m, const std::vector<Sample>& sampleOf,
   collapseOptions.maxError = options.maxError;
   collapseOptions.engine = options.collapseEngine;
   collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
+  collapseOptions.maxAspectRatio = options.maxAspectRatio;
   collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
     const SeamClass c = classes[from];
     if (c == SeamClass::Interior) return true;

@@ -8,6 +8,7 @@
 //   - generateLod at N = 1024 with a 20 k-triangle target (the live LOD) in ≤ 16 ms.
 //
 //   bench_lod [--mesh SUBSTRING] [--samples COUNT] [--no-openmesh] [--methods] [--sphere-size N]
+//             [--max-aspect R]
 //
 // "ours ms" is the whole path from a full-resolution image whose saliency is already in its
 // alpha (the GPU keeps it up to date) to the final LOD mesh with its corner coordinates: the
@@ -70,6 +71,7 @@ struct Options {
   bool openmesh = true;
   bool methods = false;
   int sphereSize = 1024;
+  float maxAspect = 10; // LodOptions::maxAspectRatio of every row of ours
 };
 
 // A sphere sculpted the way a user would: a few soft bumps and dents, two sharp ridges
@@ -278,6 +280,7 @@ int run(const Options& options) {
       LodOptions lodOptions;
       lodOptions.targetTriangles = target;
       lodOptions.method = ResampleMethod::SalientPoint;
+      lodOptions.maxAspectRatio = options.maxAspect;
       const Timed our = ours(image, lodOptions, 5);
       const SurfaceDistance ourDistance = compareSurfaces(full, our.mesh, distance);
       LodOptions fineOptions = lodOptions;
@@ -379,6 +382,8 @@ int main(int argc, char** argv) {
       options.samples = std::strtoull(argv[++i], nullptr, 10);
     } else if (arg == "--sphere-size" && i + 1 < argc) {
       options.sphereSize = std::atoi(argv[++i]);
+    } else if (arg == "--max-aspect" && i + 1 < argc) {
+      options.maxAspect = std::strtof(argv[++i], nullptr);
     } else if (arg == "--no-openmesh") {
       options.openmesh = false;
     } else if (arg == "--methods") {

@@ -83,6 +83,7 @@ private slots:
   void adaptiveSpendsTrianglesWhereTheSurfaceBends();
   void adaptiveErrorBound();
   void adaptiveHasNoGrid();
+  void collapseKeepsTheShapeBound();
 };
 
 void LodTest::methodNamesRoundTrip() {
@@ -401,4 +402,39 @@ void LodTest::adaptiveHasNoGrid() {
     QCOMPARE(e.kind(), ErrorKind::InvalidArgument);
     QVERIFY2(std::string(e.what()).find("adaptive") != std::string::npos, e.what());
   }
+}
+
+// The collapse's shape bound reaches it: on a blob, whose M = 64 grid's triangles are half
+// squares (longest edge / height about 2), the LOD collapsed to 1000 triangles from there keeps
+// every triangle under the default bound 10; without a bound some get thinner than that (20.5
+// measured); a bound below 2 is refused.
+void LodTest::collapseKeepsTheShapeBound() {
+  GeometryImage image = makeBaseShape(BaseShape::Blob, 128);
+  computeSaliency(image);
+  const auto thinnest = [](const TriangleMesh& mesh) {
+    double worst = 0;
+    for (const auto& t : mesh.triangles) {
+      const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+      const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+      worst = std::max(worst, longest / double(length(cross(b - a, c - a))));
+    }
+    return worst;
+  };
+  LodOptions options;
+  options.refitToSurface = false; // the bound holds for the collapse's own positions
+  options.size = 64;
+  const double grid = thinnest(generateLod(image, options).mesh); // what the collapse starts from
+  options.size = 0;
+  options.targetTriangles = 1000;
+  options.oversample = 2; // M = 2 x 32
+  const double bounded = thinnest(generateLod(image, options).mesh);
+  options.maxAspectRatio = 0;
+  const double unbounded = thinnest(generateLod(image, options).mesh);
+  qInfo("thinnest triangle: %.1f in the grid, %.1f under the bound 10, %.1f without a bound", grid,
+        bounded, unbounded);
+  QVERIFY(grid < 3);
+  QVERIFY(bounded <= 10.0 * 1.0001);
+  QVERIFY(unbounded > 10);
+  options.maxAspectRatio = 1.5f;
+  QVERIFY_THROWS_EXCEPTION(Error, generateLod(image, options));
 }
