@@ -78,9 +78,9 @@ Command addLodCommand(CLI::App& app) {
                   "closer to the surface, for several times the time. A power of two")
       ->capture_default_str();
   sub->add_option("--max-aspect", opt->maxAspect,
-                  "Refuse collapses that make a triangle thinner than this longest edge / "
-                  "height (0: no bound, else 2 or more). Looser lets the collapse follow parts "
-                  "the image stretches")
+                  "Refuse collapses that make a triangle thinner (longest edge / height) than "
+                  "this and than twice what it was before the collapse began (0: no bound, else "
+                  "2 or more)")
       ->capture_default_str();
   sub->add_option("--max-error", opt->maxError,
                   "Stop collapsing before an error above this fraction of the bounding-box "

@@ -8,6 +8,7 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace octaclay::core {
@@ -60,7 +61,8 @@ private:
 //    input triangle's normal (or whose area would vanish) is refused; measured against the input
 //    rather than the previous step, so turns cannot add up over many collapses;
 //  - shape: a triangle whose aspect ratio (longest edge / its height) would exceed
-//    maxAspectRatio is refused unless it was already that thin;
+//    maxAspectRatio, or maxAspectGrowth × its input triangle's, is refused unless it was
+//    already that thin;
 //  - texture: with cornerCoordinates, a triangle whose corner coordinates would not stay
 //    counter-clockwise is refused;
 //  - the caller's allowCollapse veto, and no collapse below a tetrahedron (4 vertices).
@@ -72,10 +74,12 @@ public:
   DECIMATING_MODULE(ModGuardT, MeshT, Guard);
   explicit ModGuardT(MeshT& mesh) : Base(mesh, true) {}
 
-  void configure(const VertexCollapseOptions& options, std::vector<OpenMesh::Vec3d> inputNormals) {
+  void configure(const VertexCollapseOptions& options, std::vector<OpenMesh::Vec3d> inputNormals,
+                 std::vector<double> inputAspects) {
     options_ = &options;
     minCos_ = std::cos(double(options.maxNormalTurnDegrees) * M_PI / 180.0);
     inputNormals_ = std::move(inputNormals);
+    inputAspects_ = std::move(inputAspects);
   }
 
   float collapse_priority(const CollapseInfo& ci) override {
@@ -104,7 +108,9 @@ public:
         const double longest =
             std::max({(p[1] - p[0]).sqrnorm(), (p[2] - p[1]).sqrnorm(), (p[0] - p[2]).sqrnorm()});
         // longest / height = longest² / (2·area)
-        if (longest > maxAspect * twiceArea) {
+        const double bound =
+            std::max(maxAspect, double(options_->maxAspectGrowth) * inputAspects_[f.idx()]);
+        if (longest > bound * twiceArea) {
           std::array<OpenMesh::Vec3d, 3> q = p;
           q[moved] = ci.p0;
           const double before = ((q[1] - q[0]) % (q[2] - q[0])).norm();
@@ -128,6 +134,7 @@ private:
   const VertexCollapseOptions* options_ = nullptr;
   double minCos_ = 0.5;
   std::vector<OpenMesh::Vec3d> inputNormals_;
+  std::vector<double> inputAspects_; // longest edge / height of the input triangles
   std::size_t collapsed_ = 0;
 };
 
@@ -143,6 +150,10 @@ void checkOptions(const VertexCollapseOptions& options) {
     throw Error(ErrorKind::InvalidArgument, "maximum normal turn " +
                                                 std::to_string(options.maxNormalTurnDegrees) +
                                                 " degrees is outside (0, 180]");
+  if (!(options.maxAspectRatio >= 0 && options.maxAspectGrowth >= 0))
+    throw Error(ErrorKind::InvalidArgument,
+                "aspect bound " + std::to_string(options.maxAspectRatio) + " or growth " +
+                    std::to_string(options.maxAspectGrowth) + " is negative; use 0 (none) or more");
 }
 
 } // namespace
@@ -163,7 +174,9 @@ CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOp
   for (const Vec3f& p : input.positions)
     mesh.add_vertex(Mesh::Point(p.x, p.y, p.z));
   std::vector<OpenMesh::Vec3d> inputNormals;
+  std::vector<double> inputAspects;
   inputNormals.reserve(input.triangles.size());
+  inputAspects.reserve(input.triangles.size());
   std::size_t refused = 0;
   for (const auto& t : input.triangles) {
     const auto f = mesh.add_face(Mesh::VertexHandle(int(t[0])), Mesh::VertexHandle(int(t[1])),
@@ -173,6 +186,11 @@ CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOp
       continue;
     }
     inputNormals.push_back(mesh.calc_face_normal(f));
+    const Vec3f a = input.positions[t[0]], b = input.positions[t[1]], c = input.positions[t[2]];
+    const double twiceArea = length(cross(b - a, c - a));
+    const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+    inputAspects.push_back(twiceArea > 0 ? longest / twiceArea
+                                         : std::numeric_limits<double>::infinity());
   }
   std::size_t boundary = 0;
   for (const auto h : mesh.halfedges())
@@ -204,7 +222,7 @@ CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOp
   } else {
     decimater.module(quadric).unset_max_err();
   }
-  decimater.module(guard).configure(options, std::move(inputNormals));
+  decimater.module(guard).configure(options, std::move(inputNormals), std::move(inputAspects));
   decimater.initialize();
   if (options.targetTriangles > 0)
     decimater.decimate_to_faces(0, options.targetTriangles);

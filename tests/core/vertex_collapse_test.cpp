@@ -49,6 +49,8 @@ private slots:
   void errorBoundStopsEarlier();
   void vetoKeepsVertices_data();
   void vetoKeepsVertices();
+  void shapeBoundFollowsTheInput_data();
+  void shapeBoundFollowsTheInput();
   void badArguments();
 };
 
@@ -139,6 +141,47 @@ void VertexCollapseTest::vetoKeepsVertices() {
   checkClosedGenus0(out.mesh);
 }
 
+void VertexCollapseTest::shapeBoundFollowsTheInput_data() {
+  QTest::addColumn<bool>("fast");
+  QTest::newRow("fast") << true;
+  QTest::newRow("Decimater") << false;
+}
+
+// A sphere stretched 8 times along x: its input triangles are thin already. No triangle of the
+// result is thinner (longest edge / height) than the bound 10 or twice its input triangle, and
+// some use that room; with growth 0 the bound alone holds wherever the input was under it.
+void VertexCollapseTest::shapeBoundFollowsTheInput() {
+  QFETCH(bool, fast);
+  TriangleMesh input = bumpySphere();
+  for (Vec3f& p : input.positions)
+    p.x *= 8;
+  const auto aspect = [](const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& t) {
+    const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+    return longest / double(length(cross(b - a, c - a)));
+  };
+  VertexCollapseOptions options;
+  options.engine = fast ? CollapseEngine::Fast : CollapseEngine::Decimater;
+  options.targetTriangles = 1000;
+  const CollapsedMesh grown = collapseVertices(input, options);
+  int aboveTen = 0;
+  for (std::size_t t = 0; t < grown.mesh.triangles.size(); ++t) {
+    const double was = aspect(input, input.triangles[grown.inputTriangle[t]]);
+    const double now = aspect(grown.mesh, grown.mesh.triangles[t]);
+    QVERIFY2(now <= std::max(10.0, 2 * was) * 1.0001,
+             qPrintable(QString("aspect %1, input triangle %2").arg(now).arg(was)));
+    aboveTen += now > 10;
+  }
+  QVERIFY(aboveTen > 0);
+  options.maxAspectGrowth = 0;
+  const CollapsedMesh bounded = collapseVertices(input, options);
+  for (std::size_t t = 0; t < bounded.mesh.triangles.size(); ++t) {
+    const double was = aspect(input, input.triangles[bounded.inputTriangle[t]]);
+    if (was <= 10) QVERIFY(aspect(bounded.mesh, bounded.mesh.triangles[t]) <= 10 * 1.0001);
+  }
+  checkClosedGenus0(grown.mesh);
+}
+
 void VertexCollapseTest::badArguments() {
   const TriangleMesh input = testing::unitSphere(2);
   const auto expectError = [&](const TriangleMesh& mesh, const VertexCollapseOptions& options,
@@ -161,6 +204,9 @@ void VertexCollapseTest::badArguments() {
   options.maxNormalTurnDegrees = 0;
   expectError(input, options, ErrorKind::InvalidArgument, "0");
   options.maxNormalTurnDegrees = 60;
+  options.maxAspectGrowth = -1;
+  expectError(input, options, ErrorKind::InvalidArgument, "growth");
+  options.maxAspectGrowth = 2;
   TriangleMesh open = input;
   open.triangles.pop_back();
   expectError(open, options, ErrorKind::InvalidInput, "boundary");

@@ -64,10 +64,11 @@ struct LodOptions {
   double maxError = 0;
   /// A collapse that turns any triangle's normal by more than this is refused.
   float maxNormalTurnDegrees = 60;
-  /// A collapse that makes a triangle's longest edge / height exceed this is refused (unless
-  /// the triangle already did and gets no worse); 0 = no bound, else at least 2. Looser bounds
-  /// let the collapse follow parts the image stretches: armadillo, oversampled, gains 3-5 dB
-  /// at 25 (bench_lod with --max-aspect).
+  /// A collapse that makes a triangle's longest edge / height exceed this, and twice what its
+  /// triangle was in the mesh the collapse starts from, is refused (unless the triangle already
+  /// did and gets no worse); 0 = no bound, else at least 2. The factor two leaves the collapse
+  /// room where the image stretches the surface (armadillo oversampled: level with
+  /// meshoptimizer, 5 dB behind it under the bound alone).
   float maxAspectRatio = 10;
   /// Move each resampled vertex along its normal to fit the full-resolution surface in the
   /// least-squares sense before collapsing (detail: two Jacobi steps over the samples of

@@ -35,6 +35,10 @@ struct VertexCollapseOptions {
   /// Refuse collapses that make a triangle's longest-edge / height ratio exceed this (unless
   /// it was already above it and does not get worse); 0 = no bound.
   float maxAspectRatio = 10;
+  /// With maxAspectRatio set, a triangle may also get as thin as this many times its input
+  /// triangle (CollapsedMesh::inputTriangle) was: where the input is already stretched (a
+  /// geometry image's thin parts) the collapse keeps room to work. 0 = the bound alone.
+  float maxAspectGrowth = 2;
   /// When set, a collapse of vertex `from` into its neighbour `to` (indices into the input)
   /// is refused unless allowCollapse(from, to) is true.
   std::function<bool(std::uint32_t from, std::uint32_t to)> allowCollapse;
