@@ -96,6 +96,16 @@ struct VertexCopies {
   int count = 0;
 };
 
+// The copies of grid sample s of an m grid: its identified samples, each at uvAt(sample).
+template <class UvAt> VertexCopies copiesOf(int m, Sample s, UvAt&& uvAt) {
+  std::array<Sample, 4> same;
+  VertexCopies c;
+  c.count = identifiedSamples(m, s, same);
+  for (int k = 0; k < c.count; ++k)
+    c.uv[k] = uvAt(same[k]);
+  return c;
+}
+
 std::vector<VertexCopies> vertexCopies(const detail::ResampledImage& resampled,
                                        const VertexIndex& index, int n) {
   const int m = index.size(), side = m + 1;
@@ -105,15 +115,10 @@ std::vector<VertexCopies> vertexCopies(const detail::ResampledImage& resampled,
     const Vec2f src = resampled.source[static_cast<std::size_t>(s.j) * side + s.i];
     return Vec2f{src.x * inv, src.y * inv};
   };
-  std::array<Sample, 4> same;
   for (int j = 0; j <= m; ++j)
     for (int i = 0; i <= m; ++i) {
       const Sample s{i, j};
-      if (canonical(m, s) != s) continue;
-      VertexCopies& c = copies[index.at(i, j)];
-      c.count = identifiedSamples(m, s, same);
-      for (int k = 0; k < c.count; ++k)
-        c.uv[k] = uvAt(same[k]);
+      if (canonical(m, s) == s) copies[index.at(i, j)] = copiesOf(m, s, uvAt);
     }
   return copies;
 }
@@ -214,14 +219,12 @@ LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
   lod.mesh = std::move(triangulation.mesh);
   lod.cornerUv = std::move(triangulation.cornerUv);
   if (collapse && target < lod.mesh.triangles.size()) {
-    std::vector<VertexCopies> copies(triangulation.vertexSample.size());
-    std::array<Sample, 4> same;
     const float inv = 1.0f / float(n);
-    for (std::size_t v = 0; v < copies.size(); ++v) {
-      copies[v].count = identifiedSamples(n, triangulation.vertexSample[v], same);
-      for (int k = 0; k < copies[v].count; ++k)
-        copies[v].uv[k] = {float(same[k].i) * inv, float(same[k].j) * inv};
-    }
+    const auto uvAt = [inv](Sample s) { return Vec2f{float(s.i) * inv, float(s.j) * inv}; };
+    std::vector<VertexCopies> copies;
+    copies.reserve(triangulation.vertexSample.size());
+    for (const Sample s : triangulation.vertexSample)
+      copies.push_back(copiesOf(n, s, uvAt));
     LodOptions collapseOptions = options;
     collapseOptions.targetTriangles = target;
     collapseLod(lod, n, triangulation.vertexSample, copies, collapseOptions);

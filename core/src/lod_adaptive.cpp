@@ -36,9 +36,17 @@ struct Hierarchy {
   bool sortedByMidpoint = false;
 };
 
+// Sample (i, j) of an image with `side` samples a row as its index j·side + i, and back.
+std::uint32_t indexOf(int side, Sample s) {
+  return static_cast<std::uint32_t>(s.j * side + s.i);
+}
+Sample sampleOf(int side, std::uint32_t index) {
+  return {int(index) % side, int(index) / side};
+}
+
 std::array<HierarchyTriangle, 8> roots(int n) {
   const int side = n + 1, h = n / 2;
-  const auto at = [side](int i, int j) { return static_cast<std::uint32_t>(j * side + i); };
+  const auto at = [side](int i, int j) { return indexOf(side, {i, j}); };
   std::array<HierarchyTriangle, 8> out{};
   int k = 0;
   for (const int qx : {0, 1})
@@ -65,15 +73,14 @@ Hierarchy buildHierarchy(int n, bool sortByMidpoint) {
   Hierarchy h;
   const auto root = roots(n);
   std::vector<HierarchyTriangle> level(root.begin(), root.end());
-  const auto coordinates = [side](std::uint32_t s) { return Sample{int(s) % side, int(s) / side}; };
   while (!level.empty()) {
     std::vector<HierarchyTriangle> next;
     std::vector<std::uint32_t> border;
     for (const HierarchyTriangle& t : level) {
-      const Sample m = coordinates(t.m);
+      const Sample m = sampleOf(side, t.m);
       if (m.i == 0 || m.j == 0 || m.i == n || m.j == n) border.push_back(t.m);
       for (const auto& [a, b, c] : {std::array{t.c, t.a, t.m}, std::array{t.b, t.c, t.m}}) {
-        const Sample sa = coordinates(a), sb = coordinates(b);
+        const Sample sa = sampleOf(side, a), sb = sampleOf(side, b);
         if ((sa.i + sb.i) % 2 != 0 || (sa.j + sb.j) % 2 != 0) continue; // a leaf: half a cell
         next.push_back({a, b, c, static_cast<std::uint32_t>((a + b) / 2)});
       }
@@ -88,8 +95,7 @@ Hierarchy buildHierarchy(int n, bool sortByMidpoint) {
   h.canonicalOf.resize(static_cast<std::size_t>(side) * side);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
-      const Sample c = canonical(n, {i, j});
-      h.canonicalOf[std::size_t(j) * side + i] = static_cast<std::uint32_t>(c.j * side + c.i);
+      h.canonicalOf[indexOf(side, {i, j})] = indexOf(side, canonical(n, {i, j}));
     }
   std::vector<std::uint32_t> octahedron;
   for (const HierarchyTriangle& r : root)
@@ -134,7 +140,7 @@ float above(float e) {
 }
 
 std::vector<float> sampleErrors(const GeometryImage& image, const Hierarchy& h, bool weighted) {
-  const int n = image.size();
+  const int n = image.size(), side = n + 1;
   const auto texels = image.texels();
   std::vector<float> error(texels.size(), 0.0f);
   std::array<Sample, 4> same;
@@ -166,12 +172,12 @@ std::vector<float> sampleErrors(const GeometryImage& image, const Hierarchy& h, 
     // Identified samples are one vertex: each copy carries the largest of their errors, so the
     // triangles on both sides of a seam split together.
     for (const std::uint32_t m : h.borderMidpoints[l]) {
-      const int count = identifiedSamples(n, {int(m) % (n + 1), int(m) / (n + 1)}, same);
+      const int count = identifiedSamples(n, sampleOf(side, m), same);
       float e = 0;
       for (int k = 0; k < count; ++k)
-        e = std::max(e, error[std::size_t(same[k].j) * (n + 1) + same[k].i]);
+        e = std::max(e, error[indexOf(side, same[k])]);
       for (int k = 0; k < count; ++k)
-        error[std::size_t(same[k].j) * (n + 1) + same[k].i] = e;
+        error[indexOf(side, same[k])] = e;
     }
   }
   return error;
@@ -216,12 +222,11 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   // The octahedron's six vertices are always kept; each other kept vertex adds two triangles.
   // Keep the `extra` samples of largest error: all above the (extra + 1)-th largest and as many
   // of those equal to it as fit (their parents' errors are larger, so any of them may go).
-  const std::vector<std::uint32_t>& samples = h.optional;
   const std::size_t extra = targetTriangles > 8 ? (targetTriangles + 4) / 2 - 6 : 0;
   float threshold = maxError > 0 ? static_cast<float>(maxError) : -1.0f; // kept: errors above
   std::size_t ties = 0; // samples at the threshold also kept
-  if (targetTriangles > 0 && extra < samples.size()) {
-    const auto [value, larger] = largestBut(error, samples, extra);
+  if (targetTriangles > 0 && extra < h.optional.size()) {
+    const auto [value, larger] = largestBut(error, h.optional, extra);
     if (value > threshold) {
       threshold = value;
       ties = extra - larger;
@@ -229,7 +234,7 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   }
   std::vector<std::uint8_t> keep(image.texelCount(), 0);
   std::size_t kept = 0;
-  for (const std::uint32_t k : samples) {
+  for (const std::uint32_t k : h.optional) {
     const float e = error[k];
     const bool tie = e == threshold && ties > 0;
     keep[k] = e > threshold || tie;
@@ -246,8 +251,8 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
   const auto texels = image.texels();
   // Only border samples have another canonical sample (a table look-up costs a cache miss).
-  const auto canonicalIndex = [&](Sample s) -> std::uint32_t {
-    const auto k = static_cast<std::uint32_t>(s.j * side + s.i);
+  const auto canonicalIndex = [&](Sample s) {
+    const std::uint32_t k = indexOf(side, s);
     return s.i == 0 || s.j == 0 || s.i == n || s.j == n ? h.canonicalOf[k] : k;
   };
   const auto vertexOf = [&](Sample s) {
@@ -256,16 +261,15 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
     if (v == UINT32_MAX) {
       v = static_cast<std::uint32_t>(out.mesh.positions.size());
       out.mesh.positions.push_back(texels[c].xyz());
-      out.vertexSample.push_back({int(c) % side, int(c) / side});
+      out.vertexSample.push_back(sampleOf(side, c));
     }
     return v;
   };
   const float inv = 1.0f / float(n);
   const auto uv = [inv](Sample s) { return Vec2f{float(s.i) * inv, float(s.j) * inv}; };
-  const auto sample = [side](std::uint32_t k) { return Sample{int(k) % side, int(k) / side}; };
-  std::vector<std::array<Sample, 3>> stack; // hypotenuse a-b, right angle at c
-  for (const HierarchyTriangle& r : roots(n))
-    stack.push_back({sample(r.a), sample(r.b), sample(r.c)});
+  std::vector<std::array<Sample, 3>> stack;           // hypotenuse a-b, right angle at c
+  for (const HierarchyTriangle& r : h.levels.front()) // the roots
+    stack.push_back({sampleOf(side, r.a), sampleOf(side, r.b), sampleOf(side, r.c)});
   while (!stack.empty()) {
     const auto [a, b, c] = stack.back();
     stack.pop_back();

@@ -1,6 +1,7 @@
 #include "octaclay/core/triangle_mesh.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace octaclay::core {
 
@@ -70,6 +71,13 @@ MeshTopology analyzeTopology(const TriangleMesh& mesh) {
   topo.euler = static_cast<long long>(topo.vertices) - static_cast<long long>(topo.edges) +
                static_cast<long long>(topo.triangles);
   return topo;
+}
+
+double aspectRatio(Vec3f a, Vec3f b, Vec3f c) {
+  const double twiceArea = length(cross(b - a, c - a));
+  const double longest =
+      std::max({double(dot(b - a, b - a)), double(dot(c - b, c - b)), double(dot(a - c, a - c))});
+  return twiceArea > 0 ? longest / twiceArea : std::numeric_limits<double>::infinity();
 }
 
 } // namespace octaclay::core

@@ -8,7 +8,6 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 namespace octaclay::core {
@@ -134,7 +133,7 @@ private:
   const VertexCollapseOptions* options_ = nullptr;
   double minCos_ = 0.5;
   std::vector<OpenMesh::Vec3d> inputNormals_;
-  std::vector<double> inputAspects_; // longest edge / height of the input triangles
+  std::vector<double> inputAspects_; // aspectRatio of the input triangles
   std::size_t collapsed_ = 0;
 };
 
@@ -186,11 +185,8 @@ CollapsedMesh collapseVertices(const TriangleMesh& input, const VertexCollapseOp
       continue;
     }
     inputNormals.push_back(mesh.calc_face_normal(f));
-    const Vec3f a = input.positions[t[0]], b = input.positions[t[1]], c = input.positions[t[2]];
-    const double twiceArea = length(cross(b - a, c - a));
-    const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
-    inputAspects.push_back(twiceArea > 0 ? longest / twiceArea
-                                         : std::numeric_limits<double>::infinity());
+    inputAspects.push_back(
+        aspectRatio(input.positions[t[0]], input.positions[t[1]], input.positions[t[2]]));
   }
   std::size_t boundary = 0;
   for (const auto h : mesh.halfedges())

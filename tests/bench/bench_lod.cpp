@@ -29,6 +29,7 @@
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -281,21 +282,37 @@ int run(const Options& options) {
       lodOptions.targetTriangles = target;
       lodOptions.method = ResampleMethod::SalientPoint;
       lodOptions.maxAspectRatio = options.maxAspect;
-      const Timed our = ours(image, lodOptions, 5);
-      const SurfaceDistance ourDistance = compareSurfaces(full, our.mesh, distance);
-      LodOptions fineOptions = lodOptions;
-      fineOptions.oversample = 2;
-      const Timed fine = ours(image, fineOptions, 5);
-      const SurfaceDistance fineDistance = compareSurfaces(full, fine.mesh, distance);
-      LodOptions adaptiveOptions = lodOptions;
-      adaptiveOptions.method = ResampleMethod::Adaptive;
-      const Timed adaptive = ours(image, adaptiveOptions, 5);
-      const SurfaceDistance adaptiveDistance = compareSurfaces(full, adaptive.mesh, distance);
-      LodOptions adaptiveFineOptions = adaptiveOptions;
-      adaptiveFineOptions.oversample = 2;
-      const Timed adaptiveFine = ours(image, adaptiveFineOptions, 5);
-      const SurfaceDistance adaptiveFineDistance =
-          compareSurfaces(full, adaptiveFine.mesh, distance);
+      // Ours, each row and verdict: the grid and the adaptive method, plain and oversampled.
+      struct Variant {
+        const char *row, *verdict;
+        ResampleMethod method;
+        int oversample;
+        Timed timed;
+        SurfaceDistance distance;
+      };
+      std::array<Variant, 4> variants{
+          {{"ours (salient-point)", "oversample 1", ResampleMethod::SalientPoint, 1, {}, {}},
+           {"ours (salient-point, oversample 2)",
+            "oversample 2",
+            ResampleMethod::SalientPoint,
+            2,
+            {},
+            {}},
+           {"ours (adaptive)", "adaptive", ResampleMethod::Adaptive, 1, {}, {}},
+           {"ours (adaptive, oversample 2)",
+            "adaptive, oversample 2",
+            ResampleMethod::Adaptive,
+            2,
+            {},
+            {}}}};
+      for (Variant& v : variants) {
+        LodOptions variant = lodOptions;
+        variant.method = v.method;
+        variant.oversample = v.oversample;
+        v.timed = ours(image, variant, 5);
+        v.distance = compareSurfaces(full, v.timed.mesh, distance);
+      }
+      const Timed& our = variants[0].timed;
       const std::size_t triangles = our.mesh.triangles.size();
       const Timed opt = meshopt(full, triangles);
       const SurfaceDistance optDistance = compareSurfaces(full, opt.mesh, distance);
@@ -308,10 +325,8 @@ int run(const Options& options) {
             d.psnr - optDistance.psnr);
         std::fflush(stdout);
       };
-      row("ours (salient-point)", our, ourDistance);
-      row("ours (salient-point, oversample 2)", fine, fineDistance);
-      row("ours (adaptive)", adaptive, adaptiveDistance);
-      row("ours (adaptive, oversample 2)", adaptiveFine, adaptiveFineDistance);
+      for (const Variant& v : variants)
+        row(v.row, v.timed, v.distance);
       if (options.methods) {
         for (const ResampleMethod m :
              {ResampleMethod::Point, ResampleMethod::Average, ResampleMethod::SalientAverage}) {
@@ -334,17 +349,9 @@ int run(const Options& options) {
         const Timed om = openmeshDecimater(full, triangles);
         row("OpenMesh Decimater", om, compareSurfaces(full, om.mesh, distance));
       }
-      verdicts.push_back({input.name, "oversample 1", fraction, ourDistance.psnr - optDistance.psnr,
-                          opt.ms / our.ms, opt.cpuMs / our.cpuMs});
-      verdicts.push_back({input.name, "oversample 2", fraction,
-                          fineDistance.psnr - optDistance.psnr, opt.ms / fine.ms,
-                          opt.cpuMs / fine.cpuMs});
-      verdicts.push_back({input.name, "adaptive", fraction,
-                          adaptiveDistance.psnr - optDistance.psnr, opt.ms / adaptive.ms,
-                          opt.cpuMs / adaptive.cpuMs});
-      verdicts.push_back({input.name, "adaptive, oversample 2", fraction,
-                          adaptiveFineDistance.psnr - optDistance.psnr, opt.ms / adaptiveFine.ms,
-                          opt.cpuMs / adaptiveFine.cpuMs});
+      for (const Variant& v : variants)
+        verdicts.push_back({input.name, v.verdict, fraction, v.distance.psnr - optDistance.psnr,
+                            opt.ms / v.timed.ms, opt.cpuMs / v.timed.cpuMs});
     }
     if (input.n == 1024) {
       LodOptions live;

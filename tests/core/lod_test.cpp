@@ -413,11 +413,9 @@ void LodTest::collapseKeepsTheShapeBound() {
   computeSaliency(image);
   const auto thinnest = [](const TriangleMesh& mesh) {
     double worst = 0;
-    for (const auto& t : mesh.triangles) {
-      const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-      const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
-      worst = std::max(worst, longest / double(length(cross(b - a, c - a))));
-    }
+    for (const auto& t : mesh.triangles)
+      worst = std::max(
+          worst, aspectRatio(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
     return worst;
   };
   LodOptions options;

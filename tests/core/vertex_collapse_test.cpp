@@ -156,9 +156,7 @@ void VertexCollapseTest::shapeBoundFollowsTheInput() {
   for (Vec3f& p : input.positions)
     p.x *= 8;
   const auto aspect = [](const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& t) {
-    const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-    const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
-    return longest / double(length(cross(b - a, c - a)));
+    return aspectRatio(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
   };
   VertexCollapseOptions options;
   options.engine = fast ? CollapseEngine::Fast : CollapseEngine::Decimater;

@@ -30,13 +30,6 @@ struct Quadric {
   }
 };
 
-// Longest edge / height (longest² / twice the area); infinite for a degenerate triangle.
-float aspect(Vec3f a, Vec3f b, Vec3f c) {
-  const float twiceArea = length(cross(b - a, c - a));
-  const float longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
-  return twiceArea > 0 ? longest / twiceArea : std::numeric_limits<float>::infinity();
-}
-
 double errorAt(const Quadric& a, const Quadric& b, Vec3f p) {
   return std::max(0.0, a.error(p.x, p.y, p.z) + b.error(p.x, p.y, p.z));
 }
@@ -72,7 +65,7 @@ public:
       const double twiceArea = length(n);
       const Vec3f u = normalize(n);
       normals_[k] = u;
-      inputAspect_[k] = aspect(positions_[tri[0]], positions_[tri[1]], positions_[tri[2]]);
+      inputAspect_[k] = aspectRatio(positions_[tri[0]], positions_[tri[1]], positions_[tri[2]]);
       if (twiceArea <= 0) continue;
       const double d = -double(dot(u, p0));
       Quadric q;
@@ -255,7 +248,7 @@ private:
         };
         const double l = longest(p);
         const double bound =
-            std::max(maxAspect, double(options_.maxAspectGrowth) * double(inputAspect_[t]));
+            std::max(maxAspect, double(options_.maxAspectGrowth) * inputAspect_[t]);
         if (l > bound * twiceArea) {
           std::array<Vec3f, 3> q = p;
           q[m] = positions_[from];
@@ -323,8 +316,8 @@ private:
   std::vector<Vec3f> positions_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<Quadric> quadrics_;
-  std::vector<Vec3f> normals_;     // of the input triangles
-  std::vector<float> inputAspect_; // longest edge / height of the input triangles
+  std::vector<Vec3f> normals_;      // of the input triangles
+  std::vector<double> inputAspect_; // aspectRatio of the input triangles
   std::vector<std::uint8_t> deleted_;
   std::vector<std::uint32_t> stamp_, stamp2_;
   std::uint32_t stampValue_ = 0;

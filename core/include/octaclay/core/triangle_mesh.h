@@ -29,6 +29,10 @@ BoundingBox boundingBox(const TriangleMesh& mesh);
 /// Signed volume enclosed (positive for outward orientation of a closed mesh).
 double signedVolume(const TriangleMesh& mesh);
 
+/// How thin triangle (a, b, c) is: its longest edge / the height onto it (longest² / twice the
+/// area); 2 for half a square, infinity when the triangle has no area.
+double aspectRatio(Vec3f a, Vec3f b, Vec3f c);
+
 /// Combinatorial facts of an indexed triangle mesh.
 struct MeshTopology {
   std::size_t vertices = 0;       ///< referenced by at least one triangle
