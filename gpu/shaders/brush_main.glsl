@@ -13,8 +13,17 @@ void main() {
 #if defined(BRUSH_IN_PLACE)
   if (b.weight == 0.0) discard; // the targets are the layers: nothing to write, nothing to sample
 #endif
+  // A mixed layer is not read: the body gives (colour, amount) and the blender mixes it in.
+#if defined(BRUSH_MIX_DIFFUSE)
+  vec4 diffuse = vec4(0.0);
+#else
   vec4 diffuse = texelFetch(u_diffuseLayer, t, 0);
+#endif
+#if defined(BRUSH_MIX_FEATURE)
+  vec4 feature = vec4(0.0);
+#else
   vec4 feature = texelFetch(u_featureLayer, t, 0);
+#endif
   if (b.weight != 0.0) brushLayers(positions, diffuse, feature, b); // negative weights pull
   o_positions = positions;
   o_diffuse = diffuse;

@@ -25,19 +25,25 @@ struct BrushEngine::LoadedBrush {
   // that writes it alone (the texture barrier rules).
   std::array<bool, 4> inPlace{};
   bool writesInPlace(BrushLayer layer) const { return inPlace[static_cast<std::size_t>(layer)]; }
-  // Whether every (any) layer the brush writes is written in place: all, and its passes may
-  // discard unweighted texels; any, and a pass needs a texture barrier first.
+  // Layers the blender mixes the body's (colour, amount) into: written in place, never read.
+  bool mixes(BrushLayer layer) const {
+    return std::find(manifest.mix.begin(), manifest.mix.end(), layer) != manifest.mix.end();
+  }
+  // Whether every layer the brush writes is written in place: its passes may then discard
+  // unweighted texels.
   bool allInPlace() const {
     return std::all_of(manifest.writes.begin(), manifest.writes.end(),
                        [this](BrushLayer l) { return writesInPlace(l); });
   }
-  bool anyInPlace() const {
+  // Whether a pass reads a texel that it also writes (a texture barrier must come first).
+  bool readsWhatItWrites() const {
     return std::any_of(manifest.writes.begin(), manifest.writes.end(),
-                       [this](BrushLayer l) { return writesInPlace(l); });
+                       [this](BrushLayer l) { return writesInPlace(l) && !mixes(l); });
   }
-  // One per written layer (OCTACLAY_LAYER differs) and mask kind (BRUSH_MASK_TEXTURE); the
-  // painted-mask variants are compiled on first use.
-  std::map<std::pair<BrushLayer, bool>, Program> programs;
+  // One per written layer (OCTACLAY_LAYER differs), mask kind (BRUSH_MASK_TEXTURE) and the
+  // values of the enum parameters (constants in the source); all but the defaults' variants
+  // are compiled on first use.
+  std::map<std::tuple<BrushLayer, bool, std::vector<int>>, Program> programs;
 };
 
 namespace {
@@ -64,6 +70,21 @@ std::string uniformName(const std::string& parameterId) {
   std::string name = "u_" + parameterId;
   std::replace(name.begin(), name.end(), '-', '_');
   return name;
+}
+
+// The dab's value of each enum parameter (its default where the dab gives none), in manifest
+// order, clamped to the options: each set of values is a program of its own.
+std::vector<int> enumValues(const BrushManifest& manifest,
+                            const std::map<std::string, std::array<float, 4>>& given) {
+  std::vector<int> values;
+  for (const BrushParameter& p : manifest.parameters) {
+    if (p.type != ParameterType::Enum) continue;
+    const auto found = given.find(p.id);
+    const float v = found != given.end() ? found->second[0] : p.defaultValue[0];
+    const int last = std::max(0, static_cast<int>(p.options.size()) - 1);
+    values.push_back(std::clamp(static_cast<int>(std::lround(v)), 0, last));
+  }
+  return values;
 }
 
 // The brush body starts at line kBodyLine of the assembled source (`#line`), so compiler messages
@@ -137,8 +158,10 @@ bool hasTextureBarrier() {
 }
 
 // allLayers: the body defines brushLayers() and the program writes every layer at once.
+// enumValues: the enum parameters' values, in manifest order.
 std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLayers,
-                     bool maskTexture, bool inPlace, const std::string& body) {
+                     bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
+                     const std::string& body) {
   std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
                        "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define LAYER_ALL 4\n";
   if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
@@ -172,14 +195,23 @@ std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLa
   if (needsNormals(manifest, body)) source += "#define BRUSH_NEEDS_NORMAL\n";
   // Every target is the layer itself: an unweighted texel keeps its value unwritten.
   if (inPlace) source += "#define BRUSH_IN_PLACE\n";
+  for (BrushLayer mixed : manifest.mix)
+    source += mixed == BrushLayer::Diffuse ? "#define BRUSH_MIX_DIFFUSE\n"
+                                           : "#define BRUSH_MIX_FEATURE\n";
+  std::size_t enumIndex = 0;
   for (const BrushParameter& p : manifest.parameters) {
     if (p.type == ParameterType::Material) {
       source += "#define BRUSH_MATERIAL\n";
       continue;
     }
-    const char* type = p.type == ParameterType::Color  ? "vec4"
-                       : p.type == ParameterType::Enum ? "int"
-                                                       : "float";
+    // A constant, not a uniform: a software rasterizer runs both sides of a branch on a
+    // uniform, and a branch on a constant is folded away.
+    if (p.type == ParameterType::Enum) {
+      source += "const int " + uniformName(p.id) + " = " +
+                std::to_string(enumValues.at(enumIndex++)) + ";\n";
+      continue;
+    }
+    const char* type = p.type == ParameterType::Color ? "vec4" : "float";
     source += std::string("uniform ") + type + " " + uniformName(p.id) + ";\n";
   }
   source += detail::builtInShader("prelude.glsl");
@@ -259,12 +291,11 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   for (const BrushParameter& p : manifest.parameters) {
     const auto given = dab.parameters.find(p.id);
     const std::array<float, 4> v = given != dab.parameters.end() ? given->second : p.defaultValue;
-    if (p.type == ParameterType::Material) continue; // bound by the engine (bindMaterial)
+    // Materials are bound by the engine (bindMaterial), enums compiled in (enumValues).
+    if (p.type == ParameterType::Material || p.type == ParameterType::Enum) continue;
     const GLint at = location(program, uniformName(p.id).c_str());
     if (p.type == ParameterType::Color)
       glUniform4f(at, v[0], v[1], v[2], v[3]);
-    else if (p.type == ParameterType::Enum)
-      glUniform1i(at, static_cast<GLint>(v[0]));
     else
       glUniform1f(at, v[0]);
   }
@@ -316,18 +347,34 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
     brush->inPlace[2] = !readsOthers("u_featureLayer");
     brush->inPlace[3] = !all && !readsOthers("u_mask") && !names(code, {"maskAt"});
   }
+  if (!manifest.mix.empty()) {
+    const std::string file = (manifest.folder / manifest.shaderFile).string();
+    if (!brush->allLayers)
+      throw GlError("brush " + manifest.id + ": " + file +
+                    ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
+    const std::string code = withoutComments(shaderSource);
+    for (BrushLayer layer : manifest.mix) {
+      const char* sampler = layer == BrushLayer::Diffuse ? "u_diffuseLayer" : "u_featureLayer";
+      if (names(code, {sampler}))
+        throw GlError("brush " + manifest.id + ": " + file + ": it mixes " +
+                      std::string(toManifestName(layer)) + " (\"mix\"), so it cannot read " +
+                      sampler + ": the blender writes that layer during the pass");
+      brush->inPlace[static_cast<std::size_t>(layer)] = true; // the blender reads the target
+    }
+  }
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
                                     BrushLayer::Mask) != manifest.writes.end())
     throw GlError("brush " + manifest.id + ": " + (manifest.folder / manifest.shaderFile).string() +
                   ": brushLayers() writes positions, diffuse and feature; a brush that writes "
                   "the mask defines brush() instead");
   for (BrushLayer layer : manifest.writes)
-    program(*brush, layer, false);
+    program(*brush, layer, false, enumValues(manifest, {}));
   brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version
 }
 
-const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool maskTexture) {
-  const auto key = std::pair{brush.allLayers ? BrushLayer::Positions : layer, maskTexture};
+const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool maskTexture,
+                                    const std::vector<int>& enums) {
+  const auto key = std::tuple{brush.allLayers ? BrushLayer::Positions : layer, maskTexture, enums};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
   const std::string file = (brush.manifest.folder / brush.manifest.shaderFile).string();
@@ -337,7 +384,7 @@ const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool m
                  Program(file, rectsVertexShader(),
                          assemble(brush.manifest, layer, brush.allLayers, maskTexture,
                                   brush.allLayers ? brush.allInPlace() : brush.writesInPlace(layer),
-                                  brush.body)))
+                                  enums, brush.body)))
         .first->second;
   } catch (const GlError& e) {
     throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
@@ -521,6 +568,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   if (result.tiles.empty()) return result;
   LoadedBrush& brush = *brushes_.at(brushId);
   const bool maskTexture = !document.document().mask.uniform();
+  const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
   const int side = document.size() + 1;
   for (const core::TexelRect& t : result.tiles) {
     result.texels += static_cast<std::size_t>(t.width) * t.height;
@@ -555,10 +603,15 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
+    // A mixed layer is a target the pass must not sample (a feedback loop): its unit is empty.
     glActiveTexture(GL_TEXTURE3);
-    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Feature).id());
+    glBindTexture(GL_TEXTURE_2D, brush.mixes(BrushLayer::Feature)
+                                     ? 0
+                                     : document.texture(BrushLayer::Feature).id());
     glActiveTexture(GL_TEXTURE6);
-    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Diffuse).id());
+    glBindTexture(GL_TEXTURE_2D, brush.mixes(BrushLayer::Diffuse)
+                                     ? 0
+                                     : document.texture(BrushLayer::Diffuse).id());
     glActiveTexture(GL_TEXTURE0);
     bindMaterial(pass, brush.manifest, document, dab);
   };
@@ -598,7 +651,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
 
   if (brush.allLayers) {
     // One pass writes every layer: each reads all layers as they were before the dab.
-    const Program& pass = program(brush, BrushLayer::Positions, maskTexture);
+    const Program& pass = program(brush, BrushLayer::Positions, maskTexture, enums);
     const std::array<BrushLayer, 3> attached{BrushLayer::Positions, BrushLayer::Diffuse,
                                              BrushLayer::Feature};
     if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
@@ -613,12 +666,20 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, written ? target.id() : 0, 0);
       drawBuffers[k] = written ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k) : GL_NONE;
+      if (brush.mixes(attached[k])) { // rgb = mix(rgb, out.rgb, out.a); alpha kept
+        const auto buffer = static_cast<GLuint>(k);
+        glEnablei(GL_BLEND, buffer);
+        glBlendEquationi(buffer, GL_FUNC_ADD);
+        glBlendFuncSeparatei(buffer, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+      }
     }
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     // u_layer: the positions (brushInputAt's value is the positions texel).
     bindInputs(pass, BrushLayer::Positions);
-    if (brush.anyInPlace()) glTextureBarrier(); // earlier writes to those layers are visible
+    if (brush.readsWhatItWrites()) glTextureBarrier(); // earlier writes are visible
     rectPass_.draw(passRects, side, side);
+    for (BrushLayer layer : brush.manifest.mix)
+      glDisablei(GL_BLEND, static_cast<GLuint>(layer)); // attachment k holds layer k
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
     // texture that a whole-image swap makes a layer's.
     for (std::size_t k = 0; k < attached.size(); ++k)
@@ -641,7 +702,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     return (l != BrushLayer::Positions) != readsFeature;
   });
   for (BrushLayer layer : order) {
-    const Program& pass = program(brush, layer, maskTexture);
+    const Program& pass = program(brush, layer, maskTexture, enums);
     const bool inPlace = brush.writesInPlace(layer);
     (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();
     bindInputs(pass, layer);

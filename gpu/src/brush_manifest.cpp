@@ -31,8 +31,8 @@ constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
 constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
 
 constexpr std::array kTopLevelFields{
-    "id",    "name",   "version", "api",     "description",   "category", "shader",
-    "reads", "writes", "area",    "falloff", "falloff_curve", "spacing",  "parameters"};
+    "id",     "name", "version", "api",     "description",   "category", "shader",    "reads",
+    "writes", "mix",  "area",    "falloff", "falloff_curve", "spacing",  "parameters"};
 constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
                                       "min", "max",   "step",    "options"};
 // Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
@@ -75,6 +75,7 @@ public:
       manifest.reads = parseLayers(*reads, "reads");
     manifest.writes = parseLayers(required(root, "writes", "writes"), "writes");
     if (manifest.writes.empty()) fail("writes", "a brush must write at least one layer");
+    if (const json* mix = root.contains("mix") ? &root["mix"] : nullptr) parseMix(*mix, manifest);
 
     manifest.area =
         choose<AreaMode>(requiredString(root, "area", "area"), kAreaNames, "area", "area");
@@ -115,10 +116,12 @@ private:
       fail("shader", name + " not found in " + folder.string());
   }
 
-  std::vector<BrushLayer> parseLayers(const json& value, const std::string& field) const {
+  // example: the layer the message's hint shows.
+  std::vector<BrushLayer> parseLayers(const json& value, const std::string& field,
+                                      std::string_view example = kLayerNames[0]) const {
     if (!value.is_array())
       fail(field, "expected an array of layers, got " + describe(value) + " (use [\"" +
-                      kLayerNames[0] + "\"])");
+                      std::string(example) + "\"])");
     std::vector<BrushLayer> layers;
     for (std::size_t k = 0; k < value.size(); ++k) {
       const std::string item = field + "[" + std::to_string(k) + "]";
@@ -129,6 +132,19 @@ private:
       layers.push_back(layer);
     }
     return layers;
+  }
+
+  void parseMix(const json& value, BrushManifest& manifest) const {
+    manifest.mix = parseLayers(value, "mix", "diffuse");
+    for (std::size_t k = 0; k < manifest.mix.size(); ++k) {
+      const BrushLayer layer = manifest.mix[k];
+      const std::string item = "mix[" + std::to_string(k) + "]";
+      if (layer != BrushLayer::Diffuse && layer != BrushLayer::Feature)
+        fail(item, quote(toManifestName(layer)) + " cannot be mixed (only \"diffuse\" and "
+                                                  "\"feature\" can)");
+      if (std::find(manifest.writes.begin(), manifest.writes.end(), layer) == manifest.writes.end())
+        fail(item, quote(toManifestName(layer)) + " is not in \"writes\"");
+    }
   }
 
   void parseFalloffCurve(const json& root, BrushManifest& manifest) const {

@@ -120,6 +120,7 @@ void BrushManifestTest::goodManifestParses() {
     "shader": "brush.glsl",
     "reads": ["positions", "mask"],
     "writes": ["diffuse", "feature"],
+    "mix": ["feature"],
     "area": "uv",
     "falloff": "curve",
     "falloff_curve": [1, 0.5, 0],
@@ -148,6 +149,7 @@ void BrushManifestTest::goodManifestParses() {
   QCOMPARE(m.shaderPath(), root() / "good" / "brush.glsl");
   QVERIFY((m.reads == std::vector{BrushLayer::Positions, BrushLayer::Mask}));
   QVERIFY((m.writes == std::vector{BrushLayer::Diffuse, BrushLayer::Feature}));
+  QVERIFY((m.mix == std::vector{BrushLayer::Feature}));
   QCOMPARE(m.area, AreaMode::Uv);
   QCOMPARE(m.falloff, Falloff::Curve);
   QVERIFY((m.falloffCurve == std::vector{1.0f, 0.5f, 0.0f}));
@@ -249,6 +251,14 @@ void BrushManifestTest::badManifestIsRefused_data() {
       R"(writes[0]: unknown layer "colour" (use positions, diffuse, feature or mask))");
   row("layer twice", patched({{"writes", QJsonArray{"mask", "mask"}}}),
       R"(writes[1]: "mask" is listed twice)");
+  row("mix positions",
+      patched({{"writes", QJsonArray{"positions", "diffuse"}}, {"mix", QJsonArray{"positions"}}}),
+      R"(mix[0]: "positions" cannot be mixed (only "diffuse" and "feature" can))");
+  row("mix a layer not written",
+      patched({{"writes", QJsonArray{"diffuse"}}, {"mix", QJsonArray{"diffuse", "feature"}}}),
+      R"(mix[1]: "feature" is not in "writes")");
+  row("mix a string", patched({{"mix", "diffuse"}}),
+      R"(mix: expected an array of layers, got "diffuse" (use ["diffuse"]))");
   row("empty writes", patched({{"writes", QJsonArray{}}}),
       "writes: a brush must write at least one layer");
   row("unknown area", patched({{"area", "surface"}}),

@@ -103,6 +103,9 @@ private slots:
   void brushLayersMustNotWriteTheMask();
   void aStrokeReadsItsPaintBackOnceAtItsEnd();
   void mapsAreReadAtTheNearestTexelUnlessMagnified();
+  void aMixedLayerTakesTheBodysColourByItsAmount();
+  void aMixedLayerNeedsBrushLayersAndIsNotSampled();
+  void enumParametersAreConstantsPerValue();
 
 private:
   Dab splatDab(const GpuDocument& d, core::Sample s, float radius, const std::string& material,
@@ -317,6 +320,7 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
   paint.id = "splat-reference-paint";
   paint.writes = {BrushLayer::Diffuse, BrushLayer::Feature};
   paint.reads = {};
+  relief.mix = paint.mix = {}; // brush() bodies return the layer's value
   try {
     engine_->load(relief, kPerLayerSplat);
     engine_->load(paint, kPerLayerSplat);
@@ -498,6 +502,118 @@ void SplatTest::mapsAreReadAtTheNearestTexelUnlessMagnified() {
   const int edgeGrey = greys("checker-edge", black, white);
   QVERIFY2(edgeGrey > 0,
            qPrintable(QString("%1 grey, %2 black, %3 white").arg(edgeGrey).arg(black).arg(white)));
+}
+
+// A layer in "mix": the body's (colour, amount) is blended in by the GPU: rgb moves toward the
+// colour by the amount, alpha stays, texels of weight 0 keep their bits, and the body sees the
+// layer as zeros (it never reads it).
+void SplatTest::aMixedLayerTakesTheBodysColourByItsAmount() {
+  BrushManifest m = splat_;
+  m.id = "mix-test";
+  m.writes = {BrushLayer::Diffuse};
+  m.mix = {BrushLayer::Diffuse};
+  m.falloff = Falloff::Constant; // weight 1 over the whole radius
+  m.parameters.clear();
+  try {
+    // 1 + diffuse.r is 1 only if the layer comes in as zeros.
+    engine_->load(m, "void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 "
+                     "feature, BrushInput b) { diffuse = vec4(1.0 + diffuse.r, 0.0, 0.5, 0.25); }");
+  } catch (const std::exception& e) {
+    QFAIL(e.what());
+  }
+  core::Document document = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 256));
+  const int side = document.size() + 1;
+  document.diffuse.texels.resize(static_cast<std::size_t>(side) * side * 4);
+  for (std::size_t k = 0; k < document.diffuse.texels.size(); ++k)
+    // Varied, in [0, 1], and exact in half floats (the mirror then equals the texture).
+    document.diffuse.texels[k] = static_cast<float>((k * 37) % 65) / 64.0f;
+  GpuDocument d(document);
+  const std::vector<float> before = layerTexels(d, BrushLayer::Diffuse);
+  // Around the pole, tiles away from the seams: the varied paint is not seamed, and a seam pass
+  // would average it.
+  const core::Sample centre{128, 128};
+  const float radius = 0.4f;
+  const core::Vec3f c = d.document().positions.at(centre).xyz();
+  engine_->dab(d, m.id, dabAt(d.document().positions, centre, radius, 1.0f));
+  const std::vector<float> after = layerTexels(d, BrushLayer::Diffuse);
+  const std::array<float, 3> colour{1.0f, 0.0f, 0.5f};
+  int inside = 0;
+  for (int k = 0; k < side * side; ++k) {
+    const std::size_t t = static_cast<std::size_t>(k) * 4;
+    const core::Vec3f q = d.document().positions.texels()[static_cast<std::size_t>(k)].xyz();
+    if (core::length(q - c) >= radius) {
+      for (int ch = 0; ch < 4; ++ch)
+        QCOMPARE(after[t + ch], before[t + ch]);
+      continue;
+    }
+    ++inside;
+    for (int ch = 0; ch < 3; ++ch) {
+      const float expected = 0.75f * before[t + ch] + 0.25f * colour[ch];
+      QVERIFY2(std::abs(after[t + ch] - expected) <= expected / 1024 + 1e-6f,
+               qPrintable(QString("texel %1 channel %2: %3, expected %4")
+                              .arg(k)
+                              .arg(ch)
+                              .arg(after[t + ch])
+                              .arg(expected)));
+    }
+    QCOMPARE(after[t + 3], before[t + 3]);
+  }
+  QVERIFY(inside > 100);
+}
+
+void SplatTest::aMixedLayerNeedsBrushLayersAndIsNotSampled() {
+  const auto loadError = [&](BrushManifest m, const std::string& body) -> std::string {
+    try {
+      engine_->load(m, body);
+    } catch (const GlError& e) {
+      return engine_->has(m.id) ? "kept despite: " + std::string(e.what()) : e.what();
+    }
+    return "loaded";
+  };
+  BrushManifest m = splat_;
+  m.parameters.clear();
+  m.writes = {BrushLayer::Diffuse};
+  m.mix = {BrushLayer::Diffuse};
+  m.id = "mix-with-brush";
+  const std::string perLayer = loadError(m, "vec4 brush(vec4 v, BrushInput b) { return v; }");
+  QVERIFY2(perLayer.find("\"mix\" needs a brushLayers() body") != std::string::npos,
+           perLayer.c_str());
+  m.id = "mix-sampling";
+  const std::string sampling =
+      loadError(m, "void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, "
+                   "BrushInput b) { diffuse = texelFetch(u_diffuseLayer, b.texel, 0); }");
+  QVERIFY2(sampling.find("cannot read u_diffuseLayer") != std::string::npos, sampling.c_str());
+}
+
+// An enum is a constant of the program (usable where GLSL wants one: an array size) and each
+// value gets its own program: dabs alternating between values each get theirs.
+void SplatTest::enumParametersAreConstantsPerValue() {
+  BrushManifest m = splat_;
+  m.id = "enum-test";
+  m.writes = {BrushLayer::Diffuse};
+  m.mix = {};
+  m.falloff = Falloff::Constant;
+  BrushParameter tone;
+  tone.id = "tone";
+  tone.type = ParameterType::Enum;
+  tone.options = {"dark", "mid", "light"};
+  tone.max = 2;
+  m.parameters = {tone};
+  try {
+    engine_->load(m, "vec4 brush(vec4 v, BrushInput b) { float steps[u_tone + 1]; "
+                     "return vec4(vec3(float(steps.length() - 1) / 2.0), v.a); }");
+  } catch (const std::exception& e) {
+    QFAIL(e.what());
+  }
+  GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)));
+  const core::Sample centre{32, 32};
+  for (int value : {2, 0, 1, 2, 0}) {
+    Dab dab = dabAt(d.document().positions, centre, 0.3f, 1.0f);
+    dab.parameters["tone"] = {static_cast<float>(value), 0, 0, 0};
+    engine_->dab(d, m.id, dab);
+    QCOMPARE(d.mirrorTexels(BrushLayer::Diffuse, {centre.i, centre.j, 1, 1})[0],
+             static_cast<float>(value) / 2.0f);
+  }
 }
 
 QTEST_APPLESS_MAIN(SplatTest)

@@ -2,6 +2,7 @@
 // (R height detail, G specular, B reflectivity), each blended toward the material by the dab's
 // weight, so overlapping dabs converge to the material instead of piling it up. All three in one
 // pass (brushLayers): the material is sampled once per texel, at its position before the dab.
+// Diffuse is mixed by the GPU's blender ("mix" in the manifest): the pass never reads it.
 
 // Where sample b meets the material's maps, in tiles.
 vec2 splatCoordinates(BrushInput b) {
@@ -30,6 +31,6 @@ void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, B
   float before = feature.r;
   float after = mix(before, height, w);
   positions.xyz -= u_projectionDir * ((after - before) * u_heightScale);
-  diffuse.rgb = mix(diffuse.rgb, colour.rgb, w * colour.a);
+  diffuse = vec4(colour.rgb, w * colour.a); // mixed in by the blender (manifest "mix")
   feature.rgb = vec3(after, mix(feature.g, surface.g, w), mix(feature.b, surface.b, w));
 }

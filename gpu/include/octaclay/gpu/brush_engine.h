@@ -88,8 +88,10 @@ private:
   void bindMaterial(const Program& program, const BrushManifest& manifest,
                     const GpuDocument& document, const Dab& dab) const;
   std::vector<GpuMaterial> materials_;
-  /// The brush's program for a layer and mask kind, compiled on first use. Throws GlError.
-  const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture);
+  /// The brush's program for a layer, mask kind and enum parameters' values, compiled on first
+  /// use. Throws GlError.
+  const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture,
+                         const std::vector<int>& enums);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   Program seamProgram_;
   /// The material maps' filters, bound per texture unit for a dab.

@@ -63,6 +63,10 @@ struct BrushManifest {
   /// Layers the shader samples beyond the value it is given (empty allowed); layers it writes,
   /// one pass each, never empty and without duplicates.
   std::vector<BrushLayer> reads, writes;
+  /// Layers (diffuse or feature, each also in writes) a brushLayers() body hands back as a
+  /// colour to mix in and its amount in alpha: the GPU's blender mixes rgb by that amount and
+  /// keeps the layer's alpha, so the pass never reads the layer (its argument starts at zero).
+  std::vector<BrushLayer> mix;
   AreaMode area = AreaMode::Volume;
   Falloff falloff = Falloff::Smooth;
   /// Falloff::Curve only: 2 … 64 weights in [0, 1], sampled evenly from centre to rim.
