@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <epoxy/gl.h>
 #include <numbers>
 #include <regex>
@@ -306,10 +307,6 @@ void copyRect(const Texture& from, const Texture& to, core::TexelRect r) {
                      0, r.width, r.height, 1);
 }
 
-std::vector<core::TexelRect> borderLines(int side) {
-  return {{0, 0, side, 1}, {0, side - 1, side, 1}, {0, 1, 1, side - 2}, {side - 1, 1, 1, side - 2}};
-}
-
 std::vector<Region> regions(const std::vector<core::TexelRect>& rects) {
   std::vector<Region> out;
   out.reserve(rects.size());
@@ -578,8 +575,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
   const std::vector<Region> passRects = regions(rects);
-  const std::vector<core::TexelRect> lines = borderLines(side);
+  const std::vector<core::TexelRect> lines =
+      result.seamed ? seamRuns(result.tiles, side) : std::vector<core::TexelRect>{};
   const std::vector<Region> lineRects = regions(lines);
+  result.seams = lines;
 
   // The material samplers would override the filtering of whatever VTK binds to those units.
   struct MaterialUnitsRelease {
@@ -712,6 +711,47 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;
+}
+
+// Runs along the border lines (the rows whole, the columns without their corners). Elsewhere
+// identified samples are already equal, and the seaming pass would write them back unchanged.
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side) {
+  const int n = side - 1;
+  std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
+  for (auto& m : marked)
+    m.assign(static_cast<std::size_t>(side), 0);
+  const auto mark = [&](std::vector<std::uint8_t>& line, int begin, int end) {
+    for (int k = begin; k < end; ++k)
+      line[static_cast<std::size_t>(k)] = line[static_cast<std::size_t>(n - k)] = 1;
+  };
+  for (const core::TexelRect& t : tiles) {
+    if (t.y == 0) mark(marked[0], t.x, t.x + t.width);
+    if (t.y + t.height == side) mark(marked[1], t.x, t.x + t.width);
+    if (t.x == 0) mark(marked[2], t.y, t.y + t.height);
+    if (t.x + t.width == side) mark(marked[3], t.y, t.y + t.height);
+  }
+  const bool corner = marked[0][0] || marked[1][0] || marked[2][0] || marked[3][0];
+  for (int k : {0, 1})
+    marked[k][0] = marked[k][static_cast<std::size_t>(n)] = corner;
+  std::vector<core::TexelRect> runs;
+  for (int line = 0; line < 4; ++line) {
+    const bool row = line < 2;
+    const int begin = row ? 0 : 1, end = row ? side : n; // columns leave the corners to rows
+    for (int k = begin; k < end;) {
+      if (!marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(k)]) {
+        ++k;
+        continue;
+      }
+      int stop = k;
+      while (stop < end && marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(stop)])
+        ++stop;
+      const int at = line % 2 == 0 ? 0 : n;
+      runs.push_back(row ? core::TexelRect{k, at, stop - k, 1}
+                         : core::TexelRect{at, k, 1, stop - k});
+      k = stop;
+    }
+  }
+  return runs;
 }
 
 } // namespace octaclay::gpu

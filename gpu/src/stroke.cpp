@@ -34,16 +34,6 @@ public:
             before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
   }
 
-  void coverBorder() {
-    for (int k = 0; k < tiles_; ++k)
-      for (core::TexelRect r :
-           {core::TexelRect{k * core::StrokeRecorder::kTileSize, 0, 1, 1},
-            core::TexelRect{k * core::StrokeRecorder::kTileSize, side_ - 1, 1, 1},
-            core::TexelRect{0, k * core::StrokeRecorder::kTileSize, 1, 1},
-            core::TexelRect{side_ - 1, k * core::StrokeRecorder::kTileSize, 1, 1}})
-        cover(r);
-  }
-
   core::Stroke finish(const std::string& label) {
     core::StrokeRecorder recorder(side_);
     for (const Tile& t : before_)
@@ -155,7 +145,7 @@ struct StrokeSession::State {
   int dabs = 0;
   double engineMs = 0;
   std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
-  bool touchedBorder = false;                ///< a dab was seamed: the border lines changed
+  std::set<std::array<int, 4>> touchedSeams; ///< border runs seamed since the last takeTouched()
   bool finished = false;
 
   // One dab at s and its mirror images, capturing the undo tiles each may touch first.
@@ -177,17 +167,15 @@ struct StrokeSession::State {
       dab.parameters = settings.parameters;
       if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
       std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
-      bool border = false;
-      for (const core::TexelRect& r : reach) {
+      for (const core::TexelRect& r : reach)
         undo.cover(r);
-        border =
-            border || r.x == 0 || r.y == 0 || r.x + r.width == n + 1 || r.y + r.height == n + 1;
-      }
-      if (border) undo.coverBorder();
+      for (const core::TexelRect& r : seamRuns(reach, n + 1)) // the seaming pass's partners
+        undo.cover(r);
       const DabResult done = engine.dab(document, brush.id, dab, std::move(reach));
       for (const core::TexelRect& t : done.tiles)
         touchedTiles.insert({t.x, t.y, t.width, t.height});
-      touchedBorder = touchedBorder || done.seamed;
+      for (const core::TexelRect& t : done.seams)
+        touchedSeams.insert({t.x, t.y, t.width, t.height});
       ++dabs;
     }
   }
@@ -255,15 +243,11 @@ std::vector<core::TexelRect> StrokeSession::takeTouched() {
   for (const auto& t : st.touchedTiles)
     tiles.push_back({t[0], t[1], t[2], t[3]});
   std::vector<core::TexelRect> touched = core::mergeRects(std::move(tiles));
-  if (st.touchedBorder) {
-    // The seaming pass rewrites the whole border, beyond the tiles the dab ran over.
-    const int side = st.document.size() + 1;
-    touched.insert(
-        touched.end(),
-        {{0, 0, side, 1}, {0, side - 1, side, 1}, {0, 1, 1, side - 2}, {side - 1, 1, 1, side - 2}});
-  }
+  // The seaming pass also rewrites border samples identified with those the dabs reached.
+  for (const auto& t : st.touchedSeams)
+    touched.push_back({t[0], t[1], t[2], t[3]});
   st.touchedTiles.clear();
-  st.touchedBorder = false;
+  st.touchedSeams.clear();
   return touched;
 }
 

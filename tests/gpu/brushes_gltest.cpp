@@ -12,6 +12,7 @@
 #include "octaclay/gpu/gl_error.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -38,6 +39,7 @@ private slots:
   void paintChangesOnlyDiffuse();
   void brokenShaderNamesFileAndLine();
   void uvAreaContinuesAcrossSeamsAndCorners();
+  void seamRunsAreTheReachedBorderAndItsPartners();
 
 private:
   std::optional<GlContext> context_;
@@ -221,6 +223,32 @@ void BrushesTest::uvAreaContinuesAcrossSeamsAndCorners() {
   QCOMPARE(colour(2, 1), colour(n - 2, 1));
   QCOMPARE(colour(2, 1), colour(2, n - 1));
   QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+}
+
+// The seaming pass rewrites only the border samples a dab's tiles reach and those identified
+// with them: (N - i, j) on the rows, (i, N - j) on the columns, all four corners at once.
+void BrushesTest::seamRunsAreTheReachedBorderAndItsPartners() {
+  const int n = 256, side = n + 1;
+  const auto runs = [&](std::vector<core::TexelRect> tiles) {
+    std::vector<std::array<int, 4>> out;
+    for (const core::TexelRect& r : seamRuns(tiles, side))
+      out.push_back({r.x, r.y, r.width, r.height});
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  QVERIFY(runs({{32, 32, 32, 32}}).empty()); // inside: nothing to seam
+  // Left column rows 100-131 and their partners 125-156: one run.
+  QCOMPARE(runs({{0, 100, 32, 32}}), (std::vector<std::array<int, 4>>{{0, 100, 1, 57}}));
+  // Bottom row columns 64-95 and 161-192 (apart).
+  QCOMPARE(runs({{64, 0, 32, 32}}),
+           (std::vector<std::array<int, 4>>{{64, 0, 32, 1}, {161, 0, 32, 1}}));
+  // A corner tile: its row and column with their partners, and the four corners.
+  QCOMPARE(runs({{0, 0, 32, 32}}), (std::vector<std::array<int, 4>>{{0, 0, 32, 1},
+                                                                    {0, 1, 1, 31},
+                                                                    {0, 225, 1, 31},
+                                                                    {0, n, 1, 1},
+                                                                    {225, 0, 32, 1},
+                                                                    {n, n, 1, 1}}));
 }
 
 QTEST_APPLESS_MAIN(BrushesTest)

@@ -37,6 +37,9 @@ struct DabResult {
   std::vector<core::TexelRect> tiles; ///< tiles the pass ran over (their union bounds the change)
   std::size_t texels = 0;             ///< texels in those tiles
   bool seamed = false;                ///< the dab reached the border and was seamed
+  /// The border runs the seaming pass rewrote: those the tiles reach and the samples
+  /// identified with them (empty unless seamed).
+  std::vector<core::TexelRect> seams;
 };
 
 /// Runs brushes as render-to-texture passes over a GpuDocument. Create and use it on the thread
@@ -101,5 +104,11 @@ private:
   /// (positions, diffuse, feature), attached for each dab and detached after it.
   Framebuffer layersTarget_;
 };
+
+/// The border samples that a pass over tiles (of an image `side` samples wide) may change, and
+/// the samples identified with them (seam.glsl's partners: (N - i, j) along the bottom and top
+/// rows, (i, N - j) along the left and right columns, the four corners together): what the
+/// seaming pass after it rewrites.
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side);
 
 } // namespace octaclay::gpu
