@@ -242,48 +242,78 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
     kept += keep[k];
   }
 
-  AdaptiveTriangulation out;
-  const std::size_t triangles = 2 * (6 + kept) - 4; // closed genus 0: T = 2V - 4
-  out.mesh.positions.reserve(6 + kept);
-  out.vertexSample.reserve(6 + kept);
-  out.mesh.triangles.reserve(triangles);
-  out.cornerUv.reserve(triangles);
-  std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
-  const auto texels = image.texels();
   // Only border samples have another canonical sample (a table look-up costs a cache miss).
   const auto canonicalIndex = [&](Sample s) {
     const std::uint32_t k = indexOf(side, s);
     return s.i == 0 || s.j == 0 || s.i == n || s.j == n ? h.canonicalOf[k] : k;
   };
-  const auto vertexOf = [&](Sample s) {
-    const std::uint32_t c = canonicalIndex(s);
-    std::uint32_t& v = vertex[c];
-    if (v == UINT32_MAX) {
-      v = static_cast<std::uint32_t>(out.mesh.positions.size());
-      out.mesh.positions.push_back(texels[c].xyz());
-      out.vertexSample.push_back(sampleOf(side, c));
+  // The vertices: the octahedron's six and the kept samples, canonical copies only, numbered in
+  // index order (one pass in memory order; the cut below then only reads the numbers).
+  const std::vector<HierarchyTriangle>& rootLevel = h.levels.front();
+  for (const HierarchyTriangle& r : rootLevel)
+    for (const std::uint32_t corner : {r.a, r.b, r.c})
+      keep[canonicalIndex(sampleOf(side, corner))] = 1;
+  AdaptiveTriangulation out;
+  const auto texels = image.texels();
+  std::vector<std::uint32_t> vertex(image.texelCount(), UINT32_MAX);
+  out.mesh.positions.reserve(6 + kept);
+  out.vertexSample.reserve(6 + kept);
+  for (std::uint32_t k = 0; k < vertex.size(); ++k)
+    if (keep[k]) {
+      vertex[k] = static_cast<std::uint32_t>(out.mesh.positions.size());
+      out.mesh.positions.push_back(texels[k].xyz());
+      out.vertexSample.push_back(sampleOf(side, k));
     }
-    return v;
+
+  // The cut: from each root down to the triangles whose midpoint is dropped. The roots are
+  // split between two threads when the mesh is large; each lists its triangles in root order.
+  struct Cut {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<std::array<Vec2f, 3>> cornerUv;
   };
   const float inv = 1.0f / float(n);
   const auto uv = [inv](Sample s) { return Vec2f{float(s.i) * inv, float(s.j) * inv}; };
-  std::vector<std::array<Sample, 3>> stack;           // hypotenuse a-b, right angle at c
-  for (const HierarchyTriangle& r : h.levels.front()) // the roots
-    stack.push_back({sampleOf(side, r.a), sampleOf(side, r.b), sampleOf(side, r.c)});
-  while (!stack.empty()) {
-    const auto [a, b, c] = stack.back();
-    stack.pop_back();
-    // A hypotenuse with a midpoint sample splits there when that sample is kept.
-    if (((a.i + b.i) | (a.j + b.j)) % 2 == 0) {
-      const Sample m{(a.i + b.i) / 2, (a.j + b.j) / 2};
-      if (keep[canonicalIndex(m)]) {
-        stack.push_back({c, a, m});
-        stack.push_back({b, c, m});
-        continue;
+  const auto cut = [&](std::size_t firstRoot, std::size_t endRoot, std::size_t expected) {
+    Cut c;
+    c.triangles.reserve(expected);
+    c.cornerUv.reserve(expected);
+    std::vector<std::array<Sample, 3>> stack; // hypotenuse a-b, right angle at c
+    for (std::size_t r = endRoot; r-- > firstRoot;)
+      stack.push_back({sampleOf(side, rootLevel[r].a), sampleOf(side, rootLevel[r].b),
+                       sampleOf(side, rootLevel[r].c)});
+    while (!stack.empty()) {
+      const auto [a, b, corner] = stack.back();
+      stack.pop_back();
+      // A hypotenuse with a midpoint sample splits there when that sample is kept.
+      if (((a.i + b.i) | (a.j + b.j)) % 2 == 0) {
+        const Sample m{(a.i + b.i) / 2, (a.j + b.j) / 2};
+        if (keep[canonicalIndex(m)]) {
+          stack.push_back({b, corner, m});
+          stack.push_back({corner, a, m});
+          continue;
+        }
       }
+      c.triangles.push_back(
+          {vertex[canonicalIndex(a)], vertex[canonicalIndex(b)], vertex[canonicalIndex(corner)]});
+      c.cornerUv.push_back({uv(a), uv(b), uv(corner)});
     }
-    out.mesh.triangles.push_back({vertexOf(a), vertexOf(b), vertexOf(c)});
-    out.cornerUv.push_back({uv(a), uv(b), uv(c)});
+    return c;
+  };
+  const std::size_t triangles = 2 * (6 + kept) - 4; // closed genus 0: T = 2V - 4
+  if (triangles >= 32768) {
+    Cut second;
+    std::thread other([&] { second = cut(rootLevel.size() / 2, rootLevel.size(), triangles / 2); });
+    Cut first = cut(0, rootLevel.size() / 2, triangles / 2);
+    other.join();
+    out.mesh.triangles = std::move(first.triangles);
+    out.cornerUv = std::move(first.cornerUv);
+    out.mesh.triangles.insert(out.mesh.triangles.end(), second.triangles.begin(),
+                              second.triangles.end());
+    out.cornerUv.insert(out.cornerUv.end(), second.cornerUv.begin(), second.cornerUv.end());
+  } else {
+    Cut all = cut(0, rootLevel.size(), triangles);
+    out.mesh.triangles = std::move(all.triangles);
+    out.cornerUv = std::move(all.cornerUv);
   }
   return out;
 }
