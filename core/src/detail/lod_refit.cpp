@@ -38,9 +38,9 @@ bool ownsEdge(long long dx, long long dy) {
 // sample in one triangle only: one on a shared edge or corner goes to the triangle whose edge
 // owns it (the rasterizer's fill rule), so vertices are not counted once per triangle around
 // them. Corner coordinates are whole samples (x / N, y / N), so the edge tests are exact.
-std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv,
-                               std::size_t begin, std::size_t end, int stride) {
-  std::vector<Covered> covered;
+void rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::size_t begin,
+               std::size_t end, int stride, std::vector<Covered>& covered) {
+  covered.clear();
   const double share = double(end - begin) / double(std::max<std::size_t>(1, cornerUv.size()));
   covered.reserve(std::size_t(share * double(n / stride + 1) * double(n / stride + 1)) +
                   (end - begin));
@@ -81,8 +81,10 @@ std::vector<Covered> rasterize(int n, const std::vector<std::array<Vec2f, 3>>& c
                            static_cast<std::uint32_t>(t), float(e2) * inv, float(e0) * inv});
       }
   }
-  return covered;
 }
+
+// The most memory a thread's sample lists keep between calls (N = 1024 at stride 1 fits).
+constexpr std::size_t kKeptBytes = std::size_t(32) << 20;
 
 struct Accumulator {
   std::vector<float> along; // Σ φ n·r per vertex
@@ -93,18 +95,23 @@ struct Accumulator {
 
 void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2f, 3>>& cornerUv,
                     TriangleMesh& lod, int stride, int iterations) {
-  // Rasterized in two halves of the triangles on two threads when there is enough work.
-  std::vector<Covered> covered;
+  // Rasterized in two halves of the triangles on two threads when there is enough work. The
+  // lists keep their memory from call to call up to kKeptBytes (the live LOD refits again and
+  // again): fresh pages cost about as much as the rasterizing.
+  thread_local std::array<std::vector<Covered>, 2> lists;
+  std::vector<Covered>& covered = lists[0];
+  std::vector<Covered>& second = lists[1]; // a name the other thread reaches through the capture
+  const std::size_t lattice = std::size_t(full.size() / stride + 1);
+  covered.reserve(lattice * lattice); // each lattice sample lies in one triangle at most
   if (cornerUv.size() >= 4096) {
     const std::size_t half = cornerUv.size() / 2;
-    std::vector<Covered> second;
     std::thread other(
-        [&] { second = rasterize(full.size(), cornerUv, half, cornerUv.size(), stride); });
-    covered = rasterize(full.size(), cornerUv, 0, half, stride);
+        [&] { rasterize(full.size(), cornerUv, half, cornerUv.size(), stride, second); });
+    rasterize(full.size(), cornerUv, 0, half, stride, covered);
     other.join();
     covered.insert(covered.end(), second.begin(), second.end());
   } else {
-    covered = rasterize(full.size(), cornerUv, 0, cornerUv.size(), stride);
+    rasterize(full.size(), cornerUv, 0, cornerUv.size(), stride, covered);
   }
   const std::span<const Vec4f> texels = full.texels();
   const std::size_t vertexCount = lod.positions.size();
@@ -146,6 +153,8 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
       lod.positions[v] += normals[v] * ((acc[0].along[v] + acc[1].along[v]) / mass);
     }
   }
+  for (std::vector<Covered>& list : lists)
+    if (list.capacity() * sizeof(Covered) > kKeptBytes) std::vector<Covered>().swap(list);
 }
 
 } // namespace octaclay::core::detail
