@@ -303,7 +303,7 @@ AdaptiveTriangulation adaptiveTriangulation(const GeometryImage& image, std::siz
   if (triangles >= 32768) {
     Cut second;
     std::thread other([&] { second = cut(rootLevel.size() / 2, rootLevel.size(), triangles / 2); });
-    Cut first = cut(0, rootLevel.size() / 2, triangles / 2);
+    Cut first = cut(0, rootLevel.size() / 2, triangles); // becomes the output: room for both
     other.join();
     out.mesh.triangles = std::move(first.triangles);
     out.cornerUv = std::move(first.cornerUv);

@@ -345,7 +345,7 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
     brush->inPlace[3] = !all && !readsOthers("u_mask") && !names(code, {"maskAt"});
   }
   if (!manifest.mix.empty()) {
-    const std::string file = (manifest.folder / manifest.shaderFile).string();
+    const std::string file = manifest.shaderPath().string();
     if (!brush->allLayers)
       throw GlError("brush " + manifest.id + ": " + file +
                     ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
@@ -361,7 +361,7 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   }
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
                                     BrushLayer::Mask) != manifest.writes.end())
-    throw GlError("brush " + manifest.id + ": " + (manifest.folder / manifest.shaderFile).string() +
+    throw GlError("brush " + manifest.id + ": " + manifest.shaderPath().string() +
                   ": brushLayers() writes positions, diffuse and feature; a brush that writes "
                   "the mask defines brush() instead");
   for (BrushLayer layer : manifest.writes)
@@ -374,7 +374,7 @@ const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool m
   const auto key = std::tuple{brush.allLayers ? BrushLayer::Positions : layer, maskTexture, enums};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
-  const std::string file = (brush.manifest.folder / brush.manifest.shaderFile).string();
+  const std::string file = brush.manifest.shaderPath().string();
   try {
     return brush.programs
         .emplace(key,
@@ -567,18 +567,15 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const bool maskTexture = !document.document().mask.uniform();
   const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
   const int side = document.size() + 1;
-  for (const core::TexelRect& t : result.tiles) {
+  for (const core::TexelRect& t : result.tiles)
     result.texels += static_cast<std::size_t>(t.width) * t.height;
-    result.seamed =
-        result.seamed || t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
-  }
+  result.seams = seamRuns(result.tiles, side);
+  result.seamed = !result.seams.empty();
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
   const std::vector<Region> passRects = regions(rects);
-  const std::vector<core::TexelRect> lines =
-      result.seamed ? seamRuns(result.tiles, side) : std::vector<core::TexelRect>{};
+  const std::vector<core::TexelRect>& lines = result.seams;
   const std::vector<Region> lineRects = regions(lines);
-  result.seams = lines;
 
   // The material samplers would override the filtering of whatever VTK binds to those units.
   struct MaterialUnitsRelease {
@@ -716,6 +713,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
 // Runs along the border lines (the rows whole, the columns without their corners). Elsewhere
 // identified samples are already equal, and the seaming pass would write them back unchanged.
 std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side) {
+  const auto onBorder = [side](const core::TexelRect& t) {
+    return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
+  };
+  if (std::none_of(tiles.begin(), tiles.end(), onBorder)) return {}; // most dabs
   const int n = side - 1;
   std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
   for (auto& m : marked)

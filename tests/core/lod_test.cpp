@@ -268,9 +268,6 @@ void LodTest::badArgumentsNameTheirValue() {
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 64, ResampleMethod::Point));
 }
 
-QTEST_APPLESS_MAIN(LodTest)
-#include "lod_test.moc"
-
 void LodTest::adaptiveMeetsTargets_data() {
   QTest::addColumn<QString>("shape");
   QTest::newRow("blob") << "blob";
@@ -436,3 +433,6 @@ void LodTest::collapseKeepsTheShapeBound() {
   options.maxAspectRatio = 1.5f;
   QVERIFY_THROWS_EXCEPTION(Error, generateLod(image, options));
 }
+
+QTEST_APPLESS_MAIN(LodTest)
+#include "lod_test.moc"

@@ -142,9 +142,7 @@ void VertexCollapseTest::vetoKeepsVertices() {
 }
 
 void VertexCollapseTest::shapeBoundFollowsTheInput_data() {
-  QTest::addColumn<bool>("fast");
-  QTest::newRow("fast") << true;
-  QTest::newRow("Decimater") << false;
+  errorBoundStopsEarlier_data();
 }
 
 // A sphere stretched 8 times along x: its input triangles are thin already. No triangle of the

@@ -114,6 +114,9 @@ private:
   /// sample's position in direction axis (a checker cell's extent along it).
   float cellSize(const GpuDocument& d, core::Sample centre, core::Vec3f axis, core::Vec3f offset,
                  float reach);
+  /// The message load() throws for a brush, or "loaded"; "kept despite: …" if it threw but the
+  /// brush stayed loaded.
+  std::string loadError(const BrushManifest& m, const std::string& body);
 
   float edgeTileSize_ = 0;
   std::optional<GlContext> context_;
@@ -400,17 +403,21 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
   }
 }
 
+std::string SplatTest::loadError(const BrushManifest& m, const std::string& body) {
+  try {
+    engine_->load(m, body);
+  } catch (const GlError& e) {
+    return engine_->has(m.id) ? "kept despite: " + std::string(e.what()) : e.what();
+  }
+  return "loaded";
+}
+
 void SplatTest::brushLayersMustNotWriteTheMask() {
   BrushManifest m = splat_;
   m.id = "splat-with-mask";
   m.writes = {BrushLayer::Positions, BrushLayer::Mask};
-  bool threw = false;
-  try {
-    engine_->load(m, readFile(splat_.shaderPath()));
-  } catch (const GlError& e) {
-    threw = std::string(e.what()).find("brushLayers") != std::string::npos;
-  }
-  QVERIFY(threw);
+  const std::string error = loadError(m, readFile(splat_.shaderPath()));
+  QVERIFY2(error.find("brushLayers") != std::string::npos, error.c_str());
   QVERIFY(!engine_->has(m.id));
 }
 
@@ -562,14 +569,6 @@ void SplatTest::aMixedLayerTakesTheBodysColourByItsAmount() {
 }
 
 void SplatTest::aMixedLayerNeedsBrushLayersAndIsNotSampled() {
-  const auto loadError = [&](BrushManifest m, const std::string& body) -> std::string {
-    try {
-      engine_->load(m, body);
-    } catch (const GlError& e) {
-      return engine_->has(m.id) ? "kept despite: " + std::string(e.what()) : e.what();
-    }
-    return "loaded";
-  };
   BrushManifest m = splat_;
   m.parameters.clear();
   m.writes = {BrushLayer::Diffuse};
