@@ -570,12 +570,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   for (const core::TexelRect& t : result.tiles)
     result.texels += static_cast<std::size_t>(t.width) * t.height;
   result.seams = seamRuns(result.tiles, side);
-  result.seamed = !result.seams.empty();
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
   const std::vector<Region> passRects = regions(rects);
-  const std::vector<core::TexelRect>& lines = result.seams;
-  const std::vector<Region> lineRects = regions(lines);
+  const std::vector<Region> seamRects = regions(result.seams);
 
   // The material samplers would override the filtering of whatever VTK binds to those units.
   struct MaterialUnitsRelease {
@@ -623,7 +621,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
         copyRect(document.scratch(layer), document.texture(layer), r);
     }
 
-    if (result.seamed) {
+    if (!result.seams.empty()) {
       // Into the scratch: after a whole-image swap the scratch is the old texture, free to
       // overwrite, and the seam pass reads the layer's texture.
       document.scratch(layer).bindAsTarget();
@@ -632,17 +630,16 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glUniform1i(seamProgram_.uniform("u_size"), document.size());
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
-      rectPass_.draw(lineRects, side, side);
-      for (const core::TexelRect& line : lines)
-        copyRect(document.scratch(layer), document.texture(layer), line);
+      rectPass_.draw(seamRects, side, side);
+      for (const core::TexelRect& run : result.seams)
+        copyRect(document.scratch(layer), document.texture(layer), run);
     }
     checkGlError("brush " + brushId + " pass");
 
     for (const core::TexelRect& r : rects)
       document.changed(layer, r);
-    if (result.seamed)
-      for (const core::TexelRect& line : lines)
-        document.changed(layer, line);
+    for (const core::TexelRect& run : result.seams)
+      document.changed(layer, run);
   };
 
   if (brush.allLayers) {

@@ -40,10 +40,7 @@ bool ownsEdge(long long dx, long long dy) {
 // them. Corner coordinates are whole samples (x / N, y / N), so the edge tests are exact.
 void rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::size_t begin,
                std::size_t end, int stride, std::vector<Covered>& covered) {
-  covered.clear();
-  const double share = double(end - begin) / double(std::max<std::size_t>(1, cornerUv.size()));
-  covered.reserve(std::size_t(share * double(n / stride + 1) * double(n / stride + 1)) +
-                  (end - begin));
+  covered.clear(); // the caller reserves: each lattice sample lies in one triangle at most
   const float scale = float(n);
   for (std::size_t t = begin; t < end; ++t) {
     const auto& c = cornerUv[t];
@@ -102,8 +99,9 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
   std::vector<Covered>& covered = lists[0];
   std::vector<Covered>& second = lists[1]; // a name the other thread reaches through the capture
   const std::size_t lattice = std::size_t(full.size() / stride + 1);
-  covered.reserve(lattice * lattice); // each lattice sample lies in one triangle at most
+  covered.reserve(lattice * lattice); // both halves: each lattice sample in one triangle at most
   if (cornerUv.size() >= 4096) {
+    second.reserve(lattice * lattice / 2); // about its share; grows once if it covers more
     const std::size_t half = cornerUv.size() / 2;
     std::thread other(
         [&] { rasterize(full.size(), cornerUv, half, cornerUv.size(), stride, second); });

@@ -36,9 +36,8 @@ struct Dab {
 struct DabResult {
   std::vector<core::TexelRect> tiles; ///< tiles the pass ran over (their union bounds the change)
   std::size_t texels = 0;             ///< texels in those tiles
-  bool seamed = false;                ///< the dab reached the border and was seamed
   /// The border runs the seaming pass rewrote: those the tiles reach and the samples
-  /// identified with them (empty unless seamed).
+  /// identified with them (empty when the dab did not reach the border).
   std::vector<core::TexelRect> seams;
 };
 
