@@ -4,7 +4,7 @@
 // resources/environment/studio.png). Everything is computed from fixed seeds with integer
 // hashing, so the same build writes the same bytes every time and nothing is downloaded.
 
-#include "octaclay/core/image_io.h"
+#include "octaclay/core/document/image_io.h"
 
 #include <filesystem>
 #include <string>

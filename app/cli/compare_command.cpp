@@ -1,8 +1,8 @@
 #include "commands.h"
-#include "octaclay/core/document_io.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/mesh_io.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <cmath>
 #include <iostream>

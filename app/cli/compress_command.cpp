@@ -3,8 +3,8 @@
 // rate–distortion report of every codec beside Draco.
 
 #include "commands.h"
-#include "octaclay/core/compressed_document.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "rd_measure.h"
 

@@ -1,11 +1,11 @@
 #include "commands.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/lod_export.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/mesh_io.h"
-#include "octaclay/core/textured_export.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/export/textured_export.h"
 
 #include <algorithm>
 #include <cctype>

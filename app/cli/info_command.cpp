@@ -1,7 +1,7 @@
 #include "commands.h"
 #include "json_output.h"
-#include "octaclay/core/document_info.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/document/document_info.h"
+#include "octaclay/core/document/document_io.h"
 
 #include <iostream>
 #include <memory>

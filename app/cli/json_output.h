@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/triangle_mesh.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,12 +2,12 @@
 // with a normal map baked from the full-resolution image, and measured against it.
 
 #include "commands.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/lod_export.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,7 +1,7 @@
 #include "commands.h"
 #include "json_output.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 
 #include <chrono>

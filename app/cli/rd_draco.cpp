@@ -2,7 +2,7 @@
 // mesh with its positions quantized to 8 … 16 bits, encoded, decoded and measured like ours.
 
 #include "octaclay/core/error.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/measure/surface_distance.h"
 #include "rd_measure.h"
 
 #include <algorithm>

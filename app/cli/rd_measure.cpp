@@ -1,12 +1,12 @@
 #include "rd_measure.h"
 
 #include "octaclay/core/error.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/normals.h"
-#include "octaclay/core/octahedral.h"
-#include "octaclay/core/rd_plot.h"
-#include "octaclay/core/seaming.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/measure/rd_plot.h"
+#include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,9 +3,9 @@
 // Rate–distortion measurements of the position codecs (issue 8) and of Draco on the same
 // mesh: the figures `octaclay-cli compress --json`, `compress --sweep` and bench_codecs print.
 
-#include "octaclay/core/codec.h"
-#include "octaclay/core/geometry_image.h"
-#include "octaclay/core/triangle_mesh.h"
+#include "octaclay/core/codec/codec.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <cstddef>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #include "brush_setup.h"
 #include "commands.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"

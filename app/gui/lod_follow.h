@@ -1,7 +1,7 @@
 #pragma once
 
-#include "octaclay/core/geometry_image.h"
-#include "octaclay/core/lod.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/lod/lod.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // The live level of detail: generateLod and the error readout on worker threads.
 #include "lod_generator.h"
 
-#include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 #include <chrono>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "octaclay/core/geometry_image.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <QFutureWatcher>
 #include <QObject>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "octaclay/core/lod.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <QString>
 #include <QWidget>

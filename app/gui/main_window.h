@@ -1,8 +1,8 @@
 #pragma once
 
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/compressed_document.h"
-#include "octaclay/core/document.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document.h"
 #include "recovery_store.h"
 
 #include <QMainWindow>

@@ -1,6 +1,6 @@
 #include "recovery_store.h"
 
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 
 #include <QDir>

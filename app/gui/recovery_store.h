@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/document.h"
+#include "octaclay/core/document/document.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -1,10 +1,10 @@
 #include "save_compressed_dialog.h"
 
-#include "octaclay/core/codec.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/codec/codec.h"
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

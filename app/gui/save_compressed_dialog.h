@@ -1,7 +1,7 @@
 #pragma once
 
-#include "octaclay/core/compressed_document.h"
-#include "octaclay/core/document.h"
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document.h"
 
 #include <QDialog>
 #include <QFutureWatcher>

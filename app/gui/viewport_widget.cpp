@@ -2,8 +2,8 @@
 
 #include "model_prop.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/image_io.h"
-#include "octaclay/core/normals.h"
+#include "octaclay/core/document/image_io.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"

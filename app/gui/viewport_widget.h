@@ -1,10 +1,10 @@
 #pragma once
 
 #include "brush_settings.h"
-#include "octaclay/core/document.h"
-#include "octaclay/core/edit_history.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/ray_pick.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/ray_pick.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/material_catalog.h"
 #include "stroke_stabilizer.h"

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "octaclay/core/geometry_image.h"
-#include "octaclay/core/tile_bounds.h"
-#include "octaclay/core/vec.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/tile_bounds.h"
+#include "octaclay/core/geometry/vec.h"
 
 #include <cstdint>
 #include <span>

@@ -1,7 +1,7 @@
 #include "octaclay/gpu/stroke.h"
 
 #include "octaclay/core/error.h"
-#include "octaclay/core/normals.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <chrono>

@@ -3,8 +3,8 @@
 // effective bytes/s of a dab beside a memcpy of the same bytes in the same run (issue 3's targets;
 // ANCHORS.md's Blender).
 #include "bench_support.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/normals.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/material_catalog.h"

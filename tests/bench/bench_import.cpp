@@ -11,11 +11,11 @@
 // error in its rows, and the run goes on.
 // Always exits 0 once the table is printed (scripts/bench runs every benchmark under set -e);
 // misses are read from the table.
-#include "octaclay/core/document.h"
-#include "octaclay/core/mesh_validation.h"
-#include "octaclay/core/octahedral_resampling.h"
-#include "octaclay/core/spherical_parameterization.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <algorithm>
 #include <charconv>

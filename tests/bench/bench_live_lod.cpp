@@ -7,10 +7,10 @@
 // following its source samples, app::LodFollower, and the upload); and the GPU saliency pass
 // the salient methods read.
 #include "lod_follow.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/document.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/normals.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gpu_document.h"

@@ -17,13 +17,13 @@
 // compareSurfaces against the full-resolution mesh (fractions of its bounding-box diagonal).
 // --methods adds rows for the other resampling methods and for salient-point without refit.
 // Always exits 0 once the table is printed; misses are read from the PASS/MISS lines.
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/mesh_validation.h"
-#include "octaclay/core/octahedral_resampling.h"
-#include "octaclay/core/spherical_parameterization.h"
-#include "octaclay/core/surface_distance.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
@@ -175,7 +175,7 @@ Timed meshopt(const TriangleMesh& full, std::size_t triangles) {
 // OpenMesh 9's TriConnectivity::is_collapse_ok looks a property up by name on every call and
 // made the Decimater take minutes on 2N² triangles; the Decimater calls is_collapse_ok on its
 // mesh type, so this mesh answers it with the link condition for closed manifold meshes (as
-// core/src/vertex_collapse.cpp does). The priorities and collapses are OpenMesh's own.
+// core/src/lod/vertex_collapse.cpp does). The priorities and collapses are OpenMesh's own.
 class DecimaterMesh : public OpenMesh::TriMesh_ArrayKernelT<> {
 public:
   bool is_collapse_ok(HalfedgeHandle v0v1) {

@@ -5,9 +5,9 @@
 // frame is a synchronous paint of the widget followed by glFinish, so the GL work (llvmpipe
 // without a GPU) is counted. Needs an X display with GLX (scripts/bench runs it under Xvfb).
 #include "model_prop.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/document.h"
-#include "octaclay/core/mesh_extraction.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/gpu/brush_library.h"
 #include "viewport_widget.h"
 

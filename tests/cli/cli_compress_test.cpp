@@ -5,8 +5,8 @@
 // --sweep writes the rate-distortion table and a plot that holds curves.
 
 #include "cli_support.h"
-#include "octaclay/core/document_io.h"
-#include "octaclay/core/image_io.h"
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/document/image_io.h"
 
 #include <QDir>
 #include <QFile>

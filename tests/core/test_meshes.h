@@ -1,7 +1,7 @@
 // Meshes the core tests build themselves.
 #pragma once
 
-#include "octaclay/core/triangle_mesh.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <algorithm>
 #include <array>

@@ -4,7 +4,7 @@
 // 1 + b mod 4, and the wavelet's prefix length in its upper bits); the rest is the stream.
 #pragma once
 
-#include "octaclay/core/codec.h"
+#include "octaclay/core/codec/codec.h"
 
 #include <array>
 #include <cstddef>

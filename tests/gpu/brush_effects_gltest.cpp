@@ -4,9 +4,9 @@
 // same effect as away from them (no kink).
 
 #include "brush_test_support.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/seaming.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
 
 #include <QtTest>

@@ -2,7 +2,7 @@
 // files are recompiled on poll, keeping the previous program when the new one fails; brush folders
 // dropped into or deleted from the search path while running appear and vanish on poll.
 
-#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 

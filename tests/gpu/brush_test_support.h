@@ -2,7 +2,7 @@
 // placed on a sample of the current surface.
 #pragma once
 
-#include "octaclay/core/normals.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/brush_manifest.h"
 

@@ -3,9 +3,9 @@
 // samples stay equal (seams closed) wherever the dab lands.
 
 #include "brush_test_support.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/normals.h"
-#include "octaclay/core/seaming.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_context.h"

@@ -6,7 +6,7 @@
 // writes the same bytes on every run and what is committed under resources/.
 
 #include "material_generator.h"
-#include "octaclay/core/image_io.h"
+#include "octaclay/core/document/image_io.h"
 #include "octaclay/gpu/material_catalog.h"
 
 #include <QJsonDocument>

@@ -4,12 +4,12 @@
 // nearly the same Lambert image; the LOD drawn with its own normals gives a clearly different
 // one. The maps go through the 8-bit PNG a viewer would read.
 
-#include "../core/lod_test_support.h"
-#include "octaclay/core/image_io.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/lod_export.h"
-#include "octaclay/core/normals.h"
-#include "octaclay/core/vertex_index.h"
+#include "../core/lod/lod_test_support.h"
+#include "octaclay/core/document/image_io.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/geometry/vertex_index.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gl_objects.h"

@@ -7,8 +7,8 @@
 // tile leaves the border unpainted (an engine bug): that case is an expected failure below.
 
 #include "brush_test_support.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/octahedral.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/gpu/gl_context.h"
 
 #include <QtTest>

@@ -2,12 +2,12 @@
 // within a tolerance on a sphere with bumps and on an imported mesh, identified samples equal,
 // the mirror equal to the texture, xyz untouched, and the bumps salient where the smooth sphere
 // is not.
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/document.h"
-#include "octaclay/core/lod.h"
-#include "octaclay/core/mesh_validation.h"
-#include "octaclay/core/octahedral_resampling.h"
-#include "octaclay/core/spherical_parameterization.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"

@@ -3,10 +3,10 @@
 // material texels keep their object-space size where the image is stretched, the uv mode's not;
 // the one-pass splat (brushLayers) writes what per-layer passes of the same body would.
 #include "brush_test_support.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/image_io.h"
-#include "octaclay/core/octahedral.h"
-#include "octaclay/core/seaming.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/image_io.h"
+#include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"

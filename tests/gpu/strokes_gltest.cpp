@@ -5,10 +5,10 @@
 // it changed for redrawing, and its undo record restores the start bit-exactly.
 
 #include "brush_test_support.h"
-#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/mesh_extraction.h"
-#include "octaclay/core/seaming.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/stroke.h"

@@ -4,7 +4,7 @@
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
-#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <QComboBox>
 #include <QLabel>

@@ -6,7 +6,7 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "main_window.h"
-#include "octaclay/core/base_shapes.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "viewport_widget.h"
 
 #include <QFile>

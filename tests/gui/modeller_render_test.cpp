@@ -3,8 +3,8 @@
 #include "brush_panel.h"
 #include "layers_panel.h"
 #include "main_window.h"
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/seaming.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "viewport_widget.h"
 
 #include <QComboBox>

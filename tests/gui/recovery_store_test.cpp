@@ -2,8 +2,8 @@
 // restarts after it are simulated inside this one process by giving each store a PID of its
 // own: one that no process has (crashed) or this process's real one (running).
 
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/document.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
 #include "recovery_store.h"
 

@@ -4,10 +4,10 @@
 // for less error), and the options it hands back round-trip through a written .ocz that
 // File › Open's reader (readModelFile) opens again.
 
-#include "octaclay/core/base_shapes.h"
-#include "octaclay/core/codec.h"
-#include "octaclay/core/compressed_document.h"
-#include "octaclay/core/document_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/codec/codec.h"
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document_io.h"
 #include "save_compressed_dialog.h"
 
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/vec.h"
+#include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_objects.h"
 #include "octaclay/gpu/gpu_document.h"

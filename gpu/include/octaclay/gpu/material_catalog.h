@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/image_io.h"
+#include "octaclay/core/document/image_io.h"
 
 #include <filesystem>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/edit_history.h"
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/gpu/brush_engine.h"
 
 #include <array>

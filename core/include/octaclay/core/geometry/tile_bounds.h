@@ -1,0 +1,51 @@
+#pragma once
+
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
+
+#include <vector>
+
+namespace octaclay::core {
+
+/// A rectangle of samples: origin (x, y) = (i, j), size width × height.
+struct TexelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+  friend bool operator==(TexelRect a, TexelRect b) = default;
+};
+
+/// Bounding boxes of the positions per square tile of the image, and of groups of kGroup² tiles
+/// above them (a two-level min/max pyramid), so a brush finds the samples it can reach without
+/// scanning the image. Tiles are kTileSize samples wide; the last row and
+/// column of tiles are one sample wider (the image is (N+1)² and tiles cover it exactly).
+class TileBounds {
+public:
+  static constexpr int kTileSize = 32;
+  static constexpr int kGroup = 8;
+
+  TileBounds() = default;
+  explicit TileBounds(const GeometryImage& image);
+
+  int tilesPerSide() const { return tiles_; }
+  int groupsPerSide() const { return (tiles_ + kGroup - 1) / kGroup; }
+  /// The samples of tile (tx, ty).
+  TexelRect tileRect(int tx, int ty) const;
+  /// Recomputes the boxes of every tile that overlaps rect.
+  void refresh(const GeometryImage& image, TexelRect rect);
+  /// Tiles (as tx + ty · tilesPerSide) whose box comes within `radius` of `centre`.
+  std::vector<int> tilesNearSphere(Vec3f centre, float radius) const;
+  /// Bounds of the tile's samples and of the first sample past it in i and j (its cells).
+  const BoundingBox& box(int tile) const { return boxes_[tile]; }
+  /// Diagonal of the whole image's bounding box (the union of the tiles' boxes).
+  float diagonal() const;
+
+private:
+  int n_ = 0, tiles_ = 0;
+  std::vector<BoundingBox> boxes_, groups_;
+};
+
+/// The texels of disjoint rects covered by fewer, still disjoint rectangles: runs of
+/// side-by-side rects in a row band, then runs of equal spans in consecutive bands. A dab's
+/// tiles become a few rectangles, so it costs a few passes and read-backs instead of one a tile.
+std::vector<TexelRect> mergeRects(std::vector<TexelRect> rects);
+
+} // namespace octaclay::core

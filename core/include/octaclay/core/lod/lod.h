@@ -1,0 +1,132 @@
+#pragma once
+
+// Automatic level of detail from the geometry image (thesis, chapter 4): resample the image to
+// a smaller (M+1)² grid, seam it, then optionally collapse vertices down to a triangle target
+// or an error bound. The result is closed, manifold and genus 0, and each triangle corner
+// carries the image coordinates its vertex came from, so a normal map baked from the
+// full-resolution image textures it.
+
+#include <array>
+#include <cstddef>
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
+#include "octaclay/core/lod/vertex_collapse.h"
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace octaclay::core {
+
+/// How each LOD sample is chosen from its footprint of full-resolution samples. LOD sample
+/// (a, b) of an M grid stands for full-resolution sample (a·s, b·s), s = N/M, and its
+/// footprint is the samples (a·s + di, b·s + dj), |di|, |dj| ≤ s/2, read through wrap(). The
+/// tiling's half-turns map LOD grid points onto LOD grid points and footprints onto
+/// footprints, so identified LOD samples have the same footprint and stay equal; each vertex is
+/// computed once, at its canonical sample, then seamed (seaming.h).
+enum class ResampleMethod {
+  Point,   ///< the sample at (a·s, b·s)
+  Average, ///< the footprint's mean, weight 1 inside and ½ on its rim rows and columns (¼ at
+           ///< its corners), so neighbouring footprints' weights sum to one
+  SalientAverage, ///< the same mean with each weight times (saliency + 1/64)
+  /// The most salient sample within s/4 of (a·s, b·s) (ties: the nearest the centre, then the
+  /// first in row order): the thesis's best. s/4 rather than the whole footprint keeps every
+  /// LOD triangle counter-clockwise in the image whatever its corners pick. Samples on a seam
+  /// pick along the seam only (the vertex stays on it); the octahedron's six vertices (the
+  /// image's corners and side midpoints) keep their own sample.
+  SalientPoint,
+  /// No grid: samples of the full image chosen where the surface bends, by cutting the
+  /// right-triangle hierarchy over the image where its error (distance from the plane of the
+  /// triangle a sample splits) falls below a threshold set by the triangle target or maxError.
+  /// Flat parts get few large triangles, ridges and folds many small ones.
+  Adaptive,
+};
+
+/// "point", "average", "salient-average", "salient-point".
+std::string_view methodName(ResampleMethod method);
+std::optional<ResampleMethod> parseResampleMethod(std::string_view name);
+
+struct LodOptions {
+  /// M, the resampled grid's size: a power of two, 2 ≤ M < N. 0 = the smallest M whose 2M²
+  /// triangles reach targetTriangles, times oversample (M = N/2 at most; N/2 without a target).
+  int size = 0;
+  /// With size 0 and a target: resample to oversample × that M and collapse the rest. 1 is the
+  /// live LOD (fewest collapses); 2 starts from 4× the triangles, so the collapse chooses where
+  /// detail goes: +3–5 dB at 1–5 % of 2N² triangles, for 4–10× the time (bench_lod). A power
+  /// of two. Adaptive: cut the hierarchy at oversample² × the target's triangles and collapse
+  /// down to it (+4 to +11 dB at 1 % of 2N² on bunny and fandisk, for 3-10× the time).
+  int oversample = 1;
+  ResampleMethod method = ResampleMethod::SalientPoint;
+  /// Vertex collapse down to this many triangles (0 = none); must be > 4 when set.
+  std::size_t targetTriangles = 0;
+  /// Vertex collapse stops before any collapse whose quadric error exceeds this fraction of
+  /// the bounding-box diagonal (0 = no bound). Adaptive: no sample within this distance of the
+  /// planes of the triangles it would split is kept.
+  double maxError = 0;
+  /// A collapse that turns any triangle's normal by more than this is refused.
+  float maxNormalTurnDegrees = 60;
+  /// A collapse that makes a triangle's longest edge / height exceed this, and twice what its
+  /// triangle was in the mesh the collapse starts from, is refused (unless the triangle already
+  /// did and gets no worse); 0 = no bound, else at least 2. The factor two leaves the collapse
+  /// room where the image stretches the surface (armadillo oversampled: level with
+  /// meshoptimizer, 5 dB behind it under the bound alone).
+  float maxAspectRatio = 10;
+  /// Move each resampled vertex along its normal to fit the full-resolution surface in the
+  /// least-squares sense before collapsing (detail: two Jacobi steps over the samples of
+  /// each LOD cell). Off: vertices are exactly the resampled samples.
+  bool refitToSurface = true;
+  /// The live LOD needs the fast engine (vertex_collapse.h); the Decimater gives the strict
+  /// error order at about 20× the time.
+  CollapseEngine collapseEngine = CollapseEngine::Fast;
+};
+
+struct LodMesh {
+  /// Welded, closed, manifold, genus 0, counter-clockwise seen from outside.
+  TriangleMesh mesh;
+  /// Per triangle, the image coordinates of its three corners, in the same order as
+  /// mesh.triangles. Vertices on the octahedral seams have several image positions; each
+  /// triangle gets the copies that lie together, so no triangle spans the seam in the image.
+  /// Image coordinates are (x / N, y / N) for full-resolution sample (x, y): the sample the
+  /// vertex came from (point methods) or its LOD grid position scaled to the full image
+  /// (average methods). Every triangle's corners are counter-clockwise in the image and the
+  /// triangles tile the unit square once (collapses that would fold them are refused).
+  std::vector<std::array<Vec2f, 3>> cornerUv;
+  int resampledSize = 0; ///< M that was used; N for the adaptive method (no grid)
+};
+
+/// The LOD: resample to M (resampleImage), extract the welded mesh (2M² triangles), collapse
+/// to targetTriangles / maxError when set (vertex_collapse.h; seam vertices only slide along
+/// their seam, the octahedron's six vertices stay, no collapse folds the corner coordinates),
+/// then, with refitToSurface, move the vertices along their normals to the least-squares fit
+/// of the full-resolution samples each triangle covers in the image. Thread-safe for distinct
+/// images; uses two threads for the large loops.
+/// Throws Error(InvalidArgument) with a message naming the bad value when M ≥ N, M is not a
+/// power of two or M < 2, when targetTriangles is 1 … 4, maxError < 0, oversample is not a
+/// power of two or maxNormalTurnDegrees is outside (0, 180]. Needs the image's saliency in
+/// alpha for the salient methods (computeSaliency, or the GPU pass).
+LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
+
+/// The resampled, seamed (M+1)² image alone (step 1 of generateLod).
+GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method);
+
+/// The saliency formula, exactly (the GPU pass must match it; N is the image size, all reads of
+/// a sample outside the grid go through wrap(), so the octahedral tiling is seamless):
+///  1. n(s): vertexNormal (normals.h), the area-weighted normal of the incident triangles.
+///  2. curvature c(s) = ¼ Σ over the four axis neighbours q = s ± (1, 0), s ± (0, 1) of
+///     1 − n(s)·n(q) (the change of normal at distance one sample).
+///  3. G(c, σ): c blurred with the normalised Gaussian exp(−d²/2σ²), truncated at radius
+///     ⌈2σ⌉ samples, separably (rows then columns, each read through wrap(); the tiling's
+///     symmetries are half-turns, which map rows onto rows, so this is the exact 2-D blur of the
+///     tiled field).
+///  4. saliency(s) = Σ over scales σ of |G(c, σ)(s) − G(c, 2σ)(s)| (centre-surround at several
+///     radii, Lee et al. 2005), then divided by its maximum over the image (all zero stays zero).
+///  5. Identified samples take their canonical sample's value (they agree up to rounding).
+struct SaliencyOptions {
+  /// The centre scales σ in samples. Empty = {1, 2, 4, 8, 16} × N/256, each at least 1.
+  std::vector<float> scales;
+};
+
+/// CPU reference of the GPU saliency pass: writes each sample's saliency (formula above),
+/// normalised to [0, 1] over the image, into the position image's alpha. O(N² Σσ) time.
+void computeSaliency(GeometryImage& image, const SaliencyOptions& options = {});
+
+} // namespace octaclay::core

@@ -1,0 +1,17 @@
+#include "octaclay/core/document/document.h"
+
+namespace octaclay::core {
+
+std::vector<std::string> Layer::channelNames() const {
+  if (channels == 1) return {"Y"};
+  if (channels == 3) return {"R", "G", "B"};
+  return {"R", "G", "B", "A"};
+}
+
+Document makeDocument(GeometryImage image) {
+  Document document;
+  document.positions = std::move(image);
+  return document;
+}
+
+} // namespace octaclay::core

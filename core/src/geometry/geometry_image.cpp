@@ -1,0 +1,10 @@
+#include "octaclay/core/geometry/geometry_image.h"
+
+namespace octaclay::core {
+
+GeometryImage::GeometryImage(int n) : n_(n) {
+  requireValidSize(n);
+  texels_.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
+}
+
+} // namespace octaclay::core

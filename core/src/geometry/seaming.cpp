@@ -1,0 +1,50 @@
+#include "octaclay/core/geometry/seaming.h"
+
+#include <algorithm>
+
+namespace octaclay::core {
+namespace {
+
+// Calls f(canonical sample) once for every vertex that has more than one sample.
+template <class F> void forEachSeamVertex(int n, F&& f) {
+  f(Sample{0, 0});
+  for (int k = 1; k < n / 2; ++k) {
+    f(Sample{0, k});
+    f(Sample{n, k});
+    f(Sample{k, 0});
+    f(Sample{k, n});
+  }
+}
+
+} // namespace
+
+void seam(GeometryImage& image) {
+  const int n = image.size();
+  std::array<Sample, 4> same;
+  forEachSeamVertex(n, [&](Sample s) {
+    const int count = identifiedSamples(n, s, same);
+    Vec4f sum{};
+    for (int k = 0; k < count; ++k) {
+      const Vec4f& t = image.at(same[k]);
+      sum = {sum.x + t.x, sum.y + t.y, sum.z + t.z, sum.w + t.w};
+    }
+    const float inv = 1.0f / static_cast<float>(count);
+    const Vec4f mean{sum.x * inv, sum.y * inv, sum.z * inv, sum.w * inv};
+    for (int k = 0; k < count; ++k)
+      image.at(same[k]) = mean;
+  });
+}
+
+float maxSeamGap(const GeometryImage& image) {
+  const int n = image.size();
+  std::array<Sample, 4> same;
+  float gap = 0;
+  forEachSeamVertex(n, [&](Sample s) {
+    const int count = identifiedSamples(n, s, same);
+    for (int k = 1; k < count; ++k)
+      gap = std::max(gap, length(image.at(same[k]).xyz() - image.at(same[0]).xyz()));
+  });
+  return gap;
+}
+
+} // namespace octaclay::core

@@ -1,0 +1,114 @@
+// Normal maps on disk: 8-bit PNG through OpenCV (what every viewer reads) or float32 EXR through
+// OpenEXR (no quantisation, for offline renderers and tests).
+
+#include "detail/atomic_file.h"
+#include "lod/normal_map_encoding.h"
+#include "octaclay/core/error.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+namespace octaclay::core {
+namespace detail {
+
+void requireNormalMap(const NormalMap& map) {
+  if (map.resolution < 1 || map.texels.size() != static_cast<std::size_t>(map.resolution) *
+                                                     static_cast<std::size_t>(map.resolution))
+    throw Error(ErrorKind::InvalidArgument, "the normal map's resolution and texels disagree");
+}
+
+std::vector<unsigned char> encodeNormalMapPng(const NormalMap& map) {
+  requireNormalMap(map);
+  const int r = map.resolution;
+  cv::Mat bgr(r, r, CV_8UC3);
+  const auto byte = [](float c) {
+    return static_cast<std::uint8_t>(std::clamp(c * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f);
+  };
+  for (int y = 0; y < r; ++y) {
+    std::uint8_t* row = bgr.ptr<std::uint8_t>(y);
+    const Vec3f* in = map.texels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(r);
+    for (int x = 0; x < r; ++x) {
+      row[3 * x] = byte(in[x].z); // OpenCV stores BGR
+      row[3 * x + 1] = byte(in[x].y);
+      row[3 * x + 2] = byte(in[x].x);
+    }
+  }
+  std::vector<unsigned char> bytes;
+  bool ok = false;
+  try {
+    ok = cv::imencode(".png", bgr, bytes);
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (!ok) throw Error(ErrorKind::Io, "cannot encode the normal map as PNG");
+  return bytes;
+}
+
+} // namespace detail
+
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+void writePngBytes(const std::vector<unsigned char>& png, const std::filesystem::path& temporary,
+                   const std::filesystem::path& shown) {
+  std::ofstream out(temporary, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  out.close();
+  if (!out) throw Error(ErrorKind::Io, "cannot write " + shown.string());
+}
+
+void writeExr(const NormalMap& map, const std::filesystem::path& temporary) {
+  const int r = map.resolution;
+  Imf::Header header(r, r);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const char* channel : {"R", "G", "B"})
+    header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+  Imf::FrameBuffer frame;
+  char* base = reinterpret_cast<char*>(const_cast<Vec3f*>(map.texels.data()));
+  const std::size_t xStride = sizeof(Vec3f), yStride = xStride * static_cast<std::size_t>(r);
+  frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
+  frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
+  frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
+  Imf::OutputFile file(temporary.c_str(), header);
+  file.setFrameBuffer(frame);
+  file.writePixels(r);
+}
+
+} // namespace
+
+void writeNormalMap(const NormalMap& map, const std::filesystem::path& path) {
+  detail::requireNormalMap(map);
+  const std::string ext = lowerExtension(path);
+  if (ext == ".png") {
+    const std::vector<unsigned char> png = detail::encodeNormalMapPng(map);
+    detail::writeAtomically(
+        path, [&](const std::filesystem::path& temporary) { writePngBytes(png, temporary, path); });
+  } else if (ext == ".exr") {
+    detail::writeAtomically(path, [&](const std::filesystem::path& temporary) {
+      try {
+        writeExr(map, temporary);
+      } catch (const std::exception& e) {
+        throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + e.what());
+      }
+    });
+  } else {
+    throw Error(ErrorKind::InvalidArgument, "cannot write a normal map to " + path.string() +
+                                                ": use .png (8-bit) or .exr (float)");
+  }
+}
+
+} // namespace octaclay::core

@@ -1,0 +1,215 @@
+#include "octaclay/core/error.h"
+#include "octaclay/core/measure/surface_distance.h"
+#include "test_meshes.h"
+
+// The closest-point primitives are private to core; the test reaches them by path.
+#include "../../../core/src/detail/aabb_tree.h"
+
+#include <QtTest>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <utility>
+
+using namespace octaclay::core;
+using detail::Vec3d;
+
+namespace {
+
+// testing::unitSphere scaled to `radius`: extreme vertices on the axes (bbox [-r, r]³).
+TriangleMesh sphere(int levels, float radius) {
+  TriangleMesh mesh = testing::unitSphere(levels);
+  for (Vec3f& p : mesh.positions)
+    p = p * radius;
+  return mesh;
+}
+
+// The unit cube [0, 1]³ as 12 outward triangles, moved by `offset`.
+TriangleMesh cube(Vec3f offset = {}) {
+  TriangleMesh mesh;
+  for (std::uint32_t i = 0; i < 8; ++i)
+    mesh.positions.push_back(Vec3f{float(i & 1u), float((i >> 1) & 1u), float((i >> 2) & 1u)} +
+                             offset);
+  mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return mesh;
+}
+
+double distanceSquared(Vec3d p, Vec3d q) {
+  return dot(p - q, p - q);
+}
+
+} // namespace
+
+class SurfaceDistanceTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void closestPointRegions_data();
+  void closestPointRegions();
+  void closestPointDegenerate();
+  void treeMatchesBruteForce();
+  void identicalMeshesAreZero();
+  void concentricSpheres();
+  void translatedCube();
+  void seedStability();
+  void emptyMeshThrows();
+  void badIndexThrows();
+};
+
+void SurfaceDistanceTest::closestPointRegions_data() {
+  QTest::addColumn<Vec3d>("p");
+  QTest::addColumn<Vec3d>("expected");
+  // Triangle (0,0,0), (1,0,0), (0,1,0).
+  QTest::newRow("vertex a") << Vec3d{-1, -1, 0.5} << Vec3d{0, 0, 0};
+  QTest::newRow("vertex b") << Vec3d{2, -1, 0} << Vec3d{1, 0, 0};
+  QTest::newRow("vertex c") << Vec3d{-1, 2, 3} << Vec3d{0, 1, 0};
+  QTest::newRow("edge ab") << Vec3d{0.5, -1, 2} << Vec3d{0.5, 0, 0};
+  QTest::newRow("edge bc") << Vec3d{1, 1, -1} << Vec3d{0.5, 0.5, 0};
+  QTest::newRow("edge ca") << Vec3d{-1, 0.25, 0} << Vec3d{0, 0.25, 0};
+  QTest::newRow("face above") << Vec3d{0.25, 0.25, 5} << Vec3d{0.25, 0.25, 0};
+  QTest::newRow("face below") << Vec3d{0.125, 0.5, -2} << Vec3d{0.125, 0.5, 0};
+  QTest::newRow("on the face") << Vec3d{0.25, 0.5, 0} << Vec3d{0.25, 0.5, 0};
+}
+
+void SurfaceDistanceTest::closestPointRegions() {
+  QFETCH(Vec3d, p);
+  QFETCH(Vec3d, expected);
+  const Vec3d q = detail::closestPointOnTriangle(p, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  QVERIFY2(distanceSquared(q, expected) < 1e-24,
+           qPrintable(QString("got %1 %2 %3").arg(q.x).arg(q.y).arg(q.z)));
+}
+
+void SurfaceDistanceTest::closestPointDegenerate() {
+  // A point, a segment through three collinear corners, and a segment with a repeated corner.
+  QCOMPARE(detail::closestPointOnTriangle({3, 4, 5}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}),
+           (Vec3d{1, 1, 1}));
+  QVERIFY(
+      distanceSquared(detail::closestPointOnTriangle({1.5, 1, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}),
+                      {1.5, 0, 0}) < 1e-24);
+  QVERIFY(
+      distanceSquared(detail::closestPointOnTriangle({1, 0.5, 0}, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}),
+                      {0, 0.5, 0}) < 1e-24);
+}
+
+void SurfaceDistanceTest::treeMatchesBruteForce() {
+  // A bumpy sphere, so that many triangles are near-ties for queries around it.
+  TriangleMesh mesh = sphere(4, 1);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
+  for (Vec3f& p : mesh.positions)
+    p = p * (1 + jitter(random));
+  const detail::AabbTree tree(mesh);
+  QCOMPARE(tree.triangles().size(), mesh.triangles.size());
+
+  std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+  std::uint32_t hint = detail::AabbTree::noTriangle;
+  for (int i = 0; i < 500; ++i) {
+    const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
+    double expected = std::numeric_limits<double>::infinity();
+    for (const auto& [a, b, c] : mesh.triangles) {
+      const Vec3d q = detail::closestPointOnTriangle(
+          p, Vec3d(mesh.positions[a]), Vec3d(mesh.positions[b]), Vec3d(mesh.positions[c]));
+      expected = std::min(expected, distanceSquared(p, q));
+    }
+    const detail::AabbTree::Hit cold = tree.closest(p);
+    const detail::AabbTree::Hit warm = tree.closest(p, hint);
+    hint = warm.triangle;
+    QVERIFY(std::abs(cold.distanceSquared - expected) <= 1e-12 * expected);
+    QVERIFY(std::abs(warm.distanceSquared - expected) <= 1e-12 * expected);
+  }
+}
+
+void SurfaceDistanceTest::identicalMeshesAreZero() {
+  const TriangleMesh mesh = sphere(3, 1);
+  // Vertices alone land exactly on the other mesh's corners.
+  const SurfaceDistance vertices = compareSurfaces(mesh, mesh, {.samplesPerSurface = 0});
+  QCOMPARE(vertices.samples, 2 * mesh.positions.size());
+  QCOMPARE(vertices.rms, 0.0);
+  QCOMPARE(vertices.hausdorff, 0.0);
+  QVERIFY(std::isinf(vertices.psnr) && vertices.psnr > 0);
+
+  // Points inside triangles are off by rounding only.
+  const SurfaceDistance sampled = compareSurfaces(mesh, mesh, {.samplesPerSurface = 10'000});
+  QCOMPARE(sampled.samples, 2 * (mesh.positions.size() + 10'000));
+  QVERIFY(sampled.rms < 1e-12);
+  QVERIFY(sampled.hausdorff < 1e-12);
+  QVERIFY(sampled.psnr > 200);
+}
+
+void SurfaceDistanceTest::concentricSpheres() {
+  // Same tessellation scaled by 1.01: every point is 0.01·h from the other surface, h the
+  // distance of its face's plane from the centre (≥ 0.999 at this level), and 0.01 at vertices.
+  const TriangleMesh a = sphere(5, 1), b = sphere(5, 1.01f);
+  const SurfaceDistance d = compareSurfaces(a, b, {.samplesPerSurface = 50'000});
+  const double diagonal = 2 * std::sqrt(3.0);
+  QVERIFY(std::abs(d.diagonal - diagonal) < 1e-6);
+  const double expected = 0.01 / diagonal;
+  QVERIFY2(std::abs(d.rms / expected - 1) < 0.02, qPrintable(QString::number(d.rms / expected)));
+  QVERIFY2(std::abs(d.hausdorff / expected - 1) < 0.02,
+           qPrintable(QString::number(d.hausdorff / expected)));
+  QVERIFY(d.hausdorff >= d.rms);
+  QVERIFY(std::abs(d.psnr - 20 * std::log10(1 / d.rms)) < 1e-9);
+  QVERIFY(std::abs(d.psnr - 20 * std::log10(1 / expected)) < 0.2);
+}
+
+void SurfaceDistanceTest::translatedCube() {
+  // Cube b is cube a moved by d = 0.01 along x. Per unit area a point of a is d from b on face
+  // x = 0; min(d, distance to the face's border) on face x = 1; d − x on the strip x < d of the
+  // four side faces, 0 elsewhere. Integrating the squares: 2d² − (4/3)d³ + 2d⁴ over area 6.
+  // The other direction is the mirror image; the 16 corners barely move the mean.
+  const double d = 0.01;
+  const std::size_t n = 200'000;
+  const SurfaceDistance result =
+      compareSurfaces(cube(), cube({0.01f, 0, 0}), {.samplesPerSurface = n});
+  QCOMPARE(result.samples, 2 * (8 + n));
+  const double diagonal = std::sqrt(3.0);
+  QVERIFY(std::abs(result.diagonal - diagonal) < 1e-6);
+  const double expectedRms =
+      std::sqrt((2 * d * d - 4.0 / 3 * d * d * d + 2 * d * d * d * d) / 6) / diagonal;
+  QVERIFY2(std::abs(result.rms / expectedRms - 1) < 0.01,
+           qPrintable(QString::number(result.rms / expectedRms)));
+  // Float positions put b's face at 0.01f, not 0.01.
+  QVERIFY(std::abs(result.hausdorff - d / diagonal) < 1e-6);
+}
+
+void SurfaceDistanceTest::seedStability() {
+  const TriangleMesh a = cube(), b = cube({0.01f, 0, 0});
+  const SurfaceDistance first = compareSurfaces(a, b, {.samplesPerSurface = 100'000, .seed = 1});
+  const SurfaceDistance again = compareSurfaces(a, b, {.samplesPerSurface = 100'000, .seed = 1});
+  const SurfaceDistance other = compareSurfaces(a, b, {.samplesPerSurface = 100'000, .seed = 2});
+  QCOMPARE(again.rms, first.rms); // deterministic for a seed, whatever the thread count
+  QCOMPARE(again.hausdorff, first.hausdorff);
+  QVERIFY(first.rms != other.rms);
+  QVERIFY2(std::abs(first.rms / other.rms - 1) < 0.01,
+           qPrintable(QString("%1 vs %2").arg(first.rms).arg(other.rms)));
+}
+
+void SurfaceDistanceTest::emptyMeshThrows() {
+  const TriangleMesh empty, pointsOnly{{{0, 0, 0}, {1, 0, 0}}, {}};
+  for (const TriangleMesh* bad : {&empty, &pointsOnly}) {
+    for (const bool first : {true, false}) {
+      try {
+        first ? compareSurfaces(*bad, cube()) : compareSurfaces(cube(), *bad);
+        QFAIL("expected Error");
+      } catch (const Error& e) {
+        QCOMPARE(e.kind(), ErrorKind::InvalidInput);
+      }
+    }
+  }
+}
+
+void SurfaceDistanceTest::badIndexThrows() {
+  TriangleMesh broken = cube();
+  broken.triangles.back()[2] = 8;
+  try {
+    compareSurfaces(cube(), broken);
+    QFAIL("expected Error");
+  } catch (const Error& e) {
+    QCOMPARE(e.kind(), ErrorKind::InvalidInput);
+  }
+}
+
+QTEST_APPLESS_MAIN(SurfaceDistanceTest)
+#include "surface_distance_test.moc"
