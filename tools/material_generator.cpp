@@ -10,13 +10,14 @@
 
 #include "octaclay/core/error.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <numbers>
 #include <stdexcept>
 

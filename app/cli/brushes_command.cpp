@@ -1,12 +1,14 @@
 #include "brush_setup.h"
 #include "commands.h"
+
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace octaclay::app {
@@ -51,7 +53,7 @@ Command addBrushesCommand(CLI::App& app) {
                                         {"min", p.min},
                                         {"max", p.max}});
                 nlohmann::json writes = nlohmann::json::array();
-                for (gpu::BrushLayer l : b.writes)
+                for (core::EditLayer l : b.writes)
                   writes.push_back(gpu::toManifestName(l));
                 brushes.push_back({{"id", b.id},
                                    {"name", b.name},

@@ -1,13 +1,15 @@
 #include "commands.h"
+
 #include "octaclay/core/document/document_io.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/surface_distance.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 namespace octaclay::app {
 namespace {

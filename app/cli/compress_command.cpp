@@ -3,10 +3,13 @@
 // rate–distortion report of every codec beside Draco.
 
 #include "commands.h"
+#include "rd_measure.h"
+
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "rd_measure.h"
+
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -14,7 +17,6 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace octaclay::app {

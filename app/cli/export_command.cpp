@@ -1,18 +1,20 @@
 #include "commands.h"
+
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/export/textured_export.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <system_error>
 #include <vector>
 

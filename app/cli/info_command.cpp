@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/document_io.h"
 

@@ -2,12 +2,15 @@
 // with a normal map baked from the full-resolution image, and measured against it.
 
 #include "commands.h"
+
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/core/lod/lod_export.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/surface_distance.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +18,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <system_error>
 #include <vector>

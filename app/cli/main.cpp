@@ -1,4 +1,5 @@
 #include "commands.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_error.h"

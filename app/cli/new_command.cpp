@@ -1,8 +1,9 @@
 #include "commands.h"
 #include "json_output.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <chrono>
 #include <iostream>

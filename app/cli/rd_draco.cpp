@@ -1,16 +1,18 @@
 // Draco, the reference curve of the rate–distortion report: the reference's full-resolution
 // mesh with its positions quantized to 8 … 16 bits, encoded, decoded and measured like ours.
 
+#include "rd_measure.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/measure/surface_distance.h"
-#include "rd_measure.h"
+
+#include <draco/compression/decode.h>
+#include <draco/compression/encode.h>
+#include <draco/mesh/mesh.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <draco/compression/decode.h>
-#include <draco/compression/encode.h>
-#include <draco/mesh/mesh.h>
 #include <limits>
 #include <memory>
 #include <numbers>

@@ -4,8 +4,8 @@
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
-#include "octaclay/core/measure/rd_plot.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/measure/rd_plot.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <algorithm>

@@ -1,15 +1,17 @@
 #include "brush_setup.h"
 #include "commands.h"
+
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/stroke.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace octaclay::app {

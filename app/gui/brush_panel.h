@@ -1,6 +1,7 @@
 #pragma once
 
 #include "brush_settings.h"
+
 #include "octaclay/gpu/brush_manifest.h"
 
 #include <QColor>
@@ -8,6 +9,7 @@
 #include <QPushButton>
 #include <QString>
 #include <QWidget>
+
 #include <array>
 #include <map>
 #include <string>

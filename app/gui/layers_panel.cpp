@@ -18,43 +18,43 @@ namespace octaclay::app {
 
 namespace {
 
-using gpu::BrushLayer;
+using core::EditLayer;
 
-constexpr std::array kLayers{BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature,
-                             BrushLayer::Mask};
+constexpr std::array kLayers{core::EditLayer::Positions, core::EditLayer::Diffuse,
+                             core::EditLayer::Feature, core::EditLayer::Mask};
 
-std::size_t indexOf(BrushLayer layer) {
+std::size_t indexOf(core::EditLayer layer) {
   return static_cast<std::size_t>(layer);
 }
 
-QString layerKey(BrushLayer layer) {
+QString layerKey(core::EditLayer layer) {
   const std::string_view name = gpu::toManifestName(layer);
   return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
 }
 
-QString layerTitle(BrushLayer layer) {
+QString layerTitle(core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     return LayersPanel::tr("Positions");
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Diffuse:
     return LayersPanel::tr("Diffuse");
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return LayersPanel::tr("Feature");
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return LayersPanel::tr("Mask");
   }
   return {};
 }
 
-QString visibilityTip(BrushLayer layer) {
+QString visibilityTip(core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     return LayersPanel::tr("The surface itself is always shown");
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Diffuse:
     return LayersPanel::tr("Show the painted colour (off: plain clay)");
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return LayersPanel::tr("Show the feature layer's height, specular and reflectivity");
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return LayersPanel::tr("Tint masked (protected) areas");
   }
   return {};
@@ -67,17 +67,17 @@ QString stateText(bool painted) {
 } // namespace
 
 LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
-  painted_[indexOf(BrushLayer::Positions)] = true; // the surface is always real data
+  painted_[indexOf(core::EditLayer::Positions)] = true; // the surface is always real data
 
   QSettings settings;
   settings.beginGroup(QStringLiteral("layers"));
-  for (const BrushLayer layer : kLayers)
-    if (layer != BrushLayer::Positions)
+  for (const core::EditLayer layer : kLayers)
+    if (layer != core::EditLayer::Positions)
       visible_[indexOf(layer)] =
           settings.value(QStringLiteral("visible/") + layerKey(layer), true).toBool();
   const QString target = settings.value(QStringLiteral("paintTarget")).toString();
-  for (const BrushLayer layer : kLayers)
-    if (layer != BrushLayer::Positions && target == layerKey(layer)) paintTarget_ = layer;
+  for (const core::EditLayer layer : kLayers)
+    if (layer != core::EditLayer::Positions && target == layerKey(layer)) paintTarget_ = layer;
 
   auto* grid = new QGridLayout;
   grid->addWidget(new QLabel(tr("<b>Layer</b>")), 0, 0);
@@ -87,7 +87,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
 
   targetGroup_ = new QButtonGroup(this);
   targetGroup_->setExclusive(true);
-  for (const BrushLayer layer : kLayers) {
+  for (const core::EditLayer layer : kLayers) {
     const std::size_t k = indexOf(layer);
     const int row = static_cast<int>(k) + 1;
     grid->addWidget(new QLabel(layerTitle(layer)), row, 0);
@@ -96,7 +96,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     box->setObjectName(QStringLiteral("visible-") + layerKey(layer));
     box->setToolTip(visibilityTip(layer));
     box->setChecked(visible_[k]);
-    if (layer == BrushLayer::Positions) {
+    if (layer == core::EditLayer::Positions) {
       box->setEnabled(false);
     } else {
       connect(box, &QCheckBox::toggled, this, [this, layer](bool on) { setVisible(layer, on); });
@@ -104,7 +104,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     visibleBoxes_[k] = box;
     grid->addWidget(box, row, 1);
 
-    if (layer != BrushLayer::Positions) {
+    if (layer != core::EditLayer::Positions) {
       auto* radio = new QRadioButton;
       radio->setObjectName(QStringLiteral("target-") + layerKey(layer));
       radio->setToolTip(tr("Paint brushes write the %1 layer").arg(layerTitle(layer)));
@@ -123,7 +123,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
   }
   grid->setColumnStretch(3, 1);
   connect(targetGroup_, &QButtonGroup::idToggled, this, [this](int id, bool on) {
-    if (on) setPaintTarget(static_cast<BrushLayer>(id));
+    if (on) setPaintTarget(static_cast<core::EditLayer>(id));
   });
 
   // One channel alone, to see what a paint or splat stroke wrote where.
@@ -153,13 +153,13 @@ void LayersPanel::setPreview(int channel) {
   preview_->setCurrentIndex(channel);
 }
 
-bool LayersPanel::isVisible(BrushLayer layer) const {
-  return layer == BrushLayer::Positions || visible_[indexOf(layer)];
+bool LayersPanel::isVisible(core::EditLayer layer) const {
+  return layer == core::EditLayer::Positions || visible_[indexOf(layer)];
 }
 
-void LayersPanel::setVisible(BrushLayer layer, bool visible) {
+void LayersPanel::setVisible(core::EditLayer layer, bool visible) {
   const std::size_t k = indexOf(layer);
-  if (layer == BrushLayer::Positions || visible_[k] == visible) return;
+  if (layer == core::EditLayer::Positions || visible_[k] == visible) return;
   visible_[k] = visible;
   {
     const QSignalBlocker block(visibleBoxes_[k]);
@@ -169,12 +169,12 @@ void LayersPanel::setVisible(BrushLayer layer, bool visible) {
   emit visibilityChanged();
 }
 
-BrushLayer LayersPanel::paintTarget() const {
+core::EditLayer LayersPanel::paintTarget() const {
   return paintTarget_;
 }
 
-void LayersPanel::setPaintTarget(BrushLayer layer) {
-  if (layer == BrushLayer::Positions || layer == paintTarget_) return;
+void LayersPanel::setPaintTarget(core::EditLayer layer) {
+  if (layer == core::EditLayer::Positions || layer == paintTarget_) return;
   paintTarget_ = layer;
   {
     const QSignalBlocker block(targetGroup_);
@@ -184,25 +184,25 @@ void LayersPanel::setPaintTarget(BrushLayer layer) {
   emit paintTargetChanged();
 }
 
-void LayersPanel::setLayerState(BrushLayer layer, bool painted) {
+void LayersPanel::setLayerState(core::EditLayer layer, bool painted) {
   const std::size_t k = indexOf(layer);
   painted_[k] = painted;
   stateLabels_[k]->setText(stateText(painted));
 }
 
-bool LayersPanel::isPainted(BrushLayer layer) const {
+bool LayersPanel::isPainted(core::EditLayer layer) const {
   return painted_[indexOf(layer)];
 }
 
-QString LayersPanel::layerStateText(BrushLayer layer) const {
+QString LayersPanel::layerStateText(core::EditLayer layer) const {
   return stateLabels_[indexOf(layer)]->text();
 }
 
 void LayersPanel::save() const {
   QSettings settings;
   settings.beginGroup(QStringLiteral("layers"));
-  for (const BrushLayer layer : kLayers)
-    if (layer != BrushLayer::Positions)
+  for (const core::EditLayer layer : kLayers)
+    if (layer != core::EditLayer::Positions)
       settings.setValue(QStringLiteral("visible/") + layerKey(layer), visible_[indexOf(layer)]);
   settings.setValue(QStringLiteral("paintTarget"), layerKey(paintTarget_));
 }

@@ -4,6 +4,7 @@
 
 #include <QString>
 #include <QWidget>
+
 #include <array>
 
 class QButtonGroup;
@@ -32,23 +33,23 @@ public:
   using QWidget::setVisible;
 
   /// Whether the layer is shown; Positions always is.
-  bool isVisible(gpu::BrushLayer layer) const;
+  bool isVisible(core::EditLayer layer) const;
   /// Shows or hides the layer; emits visibilityChanged when that changes. Positions cannot be
   /// hidden (ignored).
-  void setVisible(gpu::BrushLayer layer, bool visible);
+  void setVisible(core::EditLayer layer, bool visible);
 
   /// The layer paint-category brushes write: Diffuse, Feature or Mask.
-  gpu::BrushLayer paintTarget() const;
+  core::EditLayer paintTarget() const;
   /// Makes layer the paint target; emits paintTargetChanged when it changes. Positions is not a
   /// paint target (ignored).
-  void setPaintTarget(gpu::BrushLayer layer);
+  void setPaintTarget(core::EditLayer layer);
 
   /// Says whether the layer holds painted data or is still uniform (its fill value).
-  void setLayerState(gpu::BrushLayer layer, bool painted);
+  void setLayerState(core::EditLayer layer, bool painted);
   /// What setLayerState last said (false, "uniform", until then).
-  bool isPainted(gpu::BrushLayer layer) const;
+  bool isPainted(core::EditLayer layer) const;
   /// The state line shown for the layer, e.g. "uniform" (for tests).
-  QString layerStateText(gpu::BrushLayer layer) const;
+  QString layerStateText(core::EditLayer layer) const;
 
   /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
   /// 6 saliency as a heat map.
@@ -68,7 +69,7 @@ private:
 
   std::array<bool, kLayerCount> visible_{true, true, true, true};
   std::array<bool, kLayerCount> painted_{};
-  gpu::BrushLayer paintTarget_ = gpu::BrushLayer::Diffuse;
+  core::EditLayer paintTarget_ = core::EditLayer::Diffuse;
 
   std::array<QCheckBox*, kLayerCount> visibleBoxes_{};
   std::array<QRadioButton*, kLayerCount> targetButtons_{}; // none for Positions

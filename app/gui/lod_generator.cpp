@@ -4,6 +4,7 @@
 #include "octaclay/core/geometry/mesh_extraction.h"
 
 #include <QtConcurrent/QtConcurrentRun>
+
 #include <chrono>
 
 namespace octaclay::app {

@@ -5,6 +5,7 @@
 
 #include <QString>
 #include <QWidget>
+
 #include <optional>
 
 class QComboBox;

@@ -7,6 +7,7 @@
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QTimer>
+
 #include <cstdio>
 
 int main(int argc, char** argv) {

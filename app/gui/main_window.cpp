@@ -5,19 +5,20 @@
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
-#include "octaclay/core/document/document_io.h"
-#include "octaclay/core/error.h"
-#include "octaclay/core/lod/lod_export.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
-#include "octaclay/core/export/mesh_io.h"
-#include "octaclay/core/import/mesh_validation.h"
-#include "octaclay/core/import/octahedral_resampling.h"
-#include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/export/textured_export.h"
-#include "octaclay/gpu/brush_library.h"
 #include "save_compressed_dialog.h"
 #include "stroke_command.h"
 #include "viewport_widget.h"
+
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/export/textured_export.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/gpu/brush_library.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -41,6 +42,7 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
+
 #include <cmath>
 #include <memory>
 
@@ -281,8 +283,8 @@ void MainWindow::connectParts() {
   connect(viewport_, &ViewportWidget::strengthStepRequested, this,
           [this](float f) { brushPanel_->setStrength(brushPanel_->strength() * f); });
   auto applyLayers = [this] {
-    viewport_->setShowDiffuse(layersPanel_->isVisible(gpu::BrushLayer::Diffuse));
-    viewport_->setShowMask(layersPanel_->isVisible(gpu::BrushLayer::Mask));
+    viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
+    viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
     viewport_->setPaintTarget(static_cast<int>(layersPanel_->paintTarget()));
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
@@ -376,9 +378,9 @@ void MainWindow::updateStatus() {
   lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
   if (viewport_->hasDocument()) {
     const core::Document& d = viewport_->document();
-    layersPanel_->setLayerState(gpu::BrushLayer::Diffuse, !d.diffuse.uniform());
-    layersPanel_->setLayerState(gpu::BrushLayer::Feature, !d.feature.uniform());
-    layersPanel_->setLayerState(gpu::BrushLayer::Mask, !d.mask.uniform());
+    layersPanel_->setLayerState(core::EditLayer::Diffuse, !d.diffuse.uniform());
+    layersPanel_->setLayerState(core::EditLayer::Feature, !d.feature.uniform());
+    layersPanel_->setLayerState(core::EditLayer::Mask, !d.mask.uniform());
   }
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 
-#include "octaclay/core/geometry/base_shapes.h"
+#include "recovery_store.h"
+
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document.h"
-#include "recovery_store.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <QMainWindow>
 #include <QPointer>
+
 #include <atomic>
 #include <functional>
 #include <memory>

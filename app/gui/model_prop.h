@@ -1,8 +1,9 @@
 #pragma once
 
+#include <vtkProp.h>
+
 #include <array>
 #include <functional>
-#include <vtkProp.h>
 
 class vtkRenderer;
 

@@ -10,10 +10,11 @@
 #include <QJsonObject>
 #include <QSaveFile>
 #include <QStandardPaths>
+#include <signal.h>
+
 #include <cerrno>
 #include <climits>
 #include <filesystem>
-#include <signal.h>
 #include <string>
 #include <utility>
 

@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QString>
+
 #include <optional>
 
 namespace octaclay::app {

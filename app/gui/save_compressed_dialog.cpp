@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QTimer>
 #include <QtConcurrent>
+
 #include <cmath>
 #include <filesystem>
 

@@ -6,6 +6,7 @@
 #include <QDialog>
 #include <QFutureWatcher>
 #include <QString>
+
 #include <memory>
 #include <optional>
 

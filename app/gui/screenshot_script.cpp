@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QtMath>
+
 #include <cstdio>
 
 namespace octaclay::app {

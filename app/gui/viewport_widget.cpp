@@ -1,8 +1,9 @@
 #include "viewport_widget.h"
 
 #include "model_prop.h"
-#include "octaclay/core/error.h"
+
 #include "octaclay/core/document/image_io.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
@@ -21,9 +22,6 @@
 #include <QTabletEvent>
 #include <QWheelEvent>
 #include <QtConcurrent/QtConcurrentRun>
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -32,6 +30,10 @@
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>
 #include <vtkRenderer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 
 namespace octaclay::app {
 
@@ -52,7 +54,7 @@ std::string variantKey(const gpu::BrushManifest& m) {
   std::string key{gpu::toManifestName(m.area)};
   key += '|';
   key += gpu::toManifestName(m.falloff);
-  for (gpu::BrushLayer l : m.writes) {
+  for (core::EditLayer l : m.writes) {
     key += '|';
     key += gpu::toManifestName(l);
   }
@@ -491,8 +493,8 @@ std::optional<gpu::BrushManifest> ViewportWidget::prepareBrush(const std::string
   // The Layers dock's paint target redirects colour paint (a brush writing only diffuse);
   // brushes made for another layer (mask, specular, reflectivity) keep theirs.
   if (variant.category == gpu::Category::Paint &&
-      variant.writes == std::vector<gpu::BrushLayer>{gpu::BrushLayer::Diffuse})
-    variant.writes = {static_cast<gpu::BrushLayer>(paintTarget_)};
+      variant.writes == std::vector<core::EditLayer>{core::EditLayer::Diffuse})
+    variant.writes = {static_cast<core::EditLayer>(paintTarget_)};
   const std::string key = variantKey(variant);
   auto found = loadedVariant_.find(id);
   if (found == loadedVariant_.end() ? key != variantKey(*base) : found->second != key) {

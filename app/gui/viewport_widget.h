@@ -1,22 +1,24 @@
 #pragma once
 
 #include "brush_settings.h"
+#include "stroke_stabilizer.h"
+
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
-#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/geometry/ray_pick.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/material_catalog.h"
-#include "stroke_stabilizer.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QOpenGLWidget>
+#include <vtkNew.h>
+
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <optional>
-#include <vtkNew.h>
 
 class vtkGenericOpenGLRenderWindow;
 class vtkObject;
@@ -218,7 +220,7 @@ private:
   core::EditHistory history_;
 
   BrushSettings settings_;
-  int paintTarget_ = 1; // gpu::BrushLayer::Diffuse
+  int paintTarget_ = 1; // core::EditLayer::Diffuse
   bool showDiffuse_ = true, showMask_ = true;
   int preview_ = 0;
   gpu::MaterialCatalog materials_;

@@ -1,14 +1,16 @@
 #include "octaclay/gpu/brush_engine.h"
 
+#include "shader_sources.h"
+
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/material_catalog.h"
-#include "shader_sources.h"
+
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <epoxy/gl.h>
 #include <numbers>
 #include <regex>
 #include <sstream>
@@ -25,39 +27,41 @@ struct BrushEngine::LoadedBrush {
   // where nothing reads other texels of that layer: each texel is then read by the fragment
   // that writes it alone (the texture barrier rules).
   std::array<bool, 4> inPlace{};
-  bool writesInPlace(BrushLayer layer) const { return inPlace[static_cast<std::size_t>(layer)]; }
+  bool writesInPlace(core::EditLayer layer) const {
+    return inPlace[static_cast<std::size_t>(layer)];
+  }
   // Layers the blender mixes the body's (colour, amount) into: written in place, never read.
-  bool mixes(BrushLayer layer) const {
+  bool mixes(core::EditLayer layer) const {
     return std::find(manifest.mix.begin(), manifest.mix.end(), layer) != manifest.mix.end();
   }
   // Whether every layer the brush writes is written in place: its passes may then discard
   // unweighted texels.
   bool allInPlace() const {
     return std::all_of(manifest.writes.begin(), manifest.writes.end(),
-                       [this](BrushLayer l) { return writesInPlace(l); });
+                       [this](core::EditLayer l) { return writesInPlace(l); });
   }
   // Whether a pass reads a texel that it also writes (a texture barrier must come first).
   bool readsWhatItWrites() const {
     return std::any_of(manifest.writes.begin(), manifest.writes.end(),
-                       [this](BrushLayer l) { return writesInPlace(l) && !mixes(l); });
+                       [this](core::EditLayer l) { return writesInPlace(l) && !mixes(l); });
   }
   // One per written layer (OCTACLAY_LAYER differs), mask kind (BRUSH_MASK_TEXTURE) and the
   // values of the enum parameters (constants in the source); all but the defaults' variants
   // are compiled on first use.
-  std::map<std::tuple<BrushLayer, bool, std::vector<int>>, Program> programs;
+  std::map<std::tuple<core::EditLayer, bool, std::vector<int>>, Program> programs;
 };
 
 namespace {
 
-const char* layerDefine(BrushLayer layer) {
+const char* layerDefine(core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     return "LAYER_POSITIONS";
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Diffuse:
     return "LAYER_DIFFUSE";
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return "LAYER_FEATURE";
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return "LAYER_MASK";
   }
   return "LAYER_POSITIONS";
@@ -160,7 +164,7 @@ bool hasTextureBarrier() {
 
 // allLayers: the body defines brushLayers() and the program writes every layer at once.
 // enumValues: the enum parameters' values, in manifest order.
-std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLayers,
+std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
                      const std::string& body) {
   std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
@@ -196,9 +200,9 @@ std::string assemble(const BrushManifest& manifest, BrushLayer layer, bool allLa
   if (needsNormals(manifest, body)) source += "#define BRUSH_NEEDS_NORMAL\n";
   // Every target is the layer itself: an unweighted texel keeps its value unwritten.
   if (inPlace) source += "#define BRUSH_IN_PLACE\n";
-  for (BrushLayer mixed : manifest.mix)
-    source += mixed == BrushLayer::Diffuse ? "#define BRUSH_MIX_DIFFUSE\n"
-                                           : "#define BRUSH_MIX_FEATURE\n";
+  for (core::EditLayer mixed : manifest.mix)
+    source += mixed == core::EditLayer::Diffuse ? "#define BRUSH_MIX_DIFFUSE\n"
+                                                : "#define BRUSH_MIX_FEATURE\n";
   std::size_t enumIndex = 0;
   for (const BrushParameter& p : manifest.parameters) {
     if (p.type == ParameterType::Material) {
@@ -226,22 +230,22 @@ GLint location(const Program& program, const char* name) {
   return program.uniform(name);
 }
 
-const core::Layer* documentLayer(const core::Document& d, BrushLayer layer) {
+const core::Layer* documentLayer(const core::Document& d, core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Diffuse:
     return &d.diffuse;
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return &d.feature;
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return &d.mask;
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     break;
   }
   return nullptr;
 }
 
 void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
-                 BrushLayer layer, const Dab& dab) {
+                 core::EditLayer layer, const Dab& dab) {
   // The layer's base value (what a new document holds): erase modes blend back to it.
   if (const core::Layer* l = documentLayer(doc.document(), layer))
     glUniform4f(location(program, "u_layerFill"), l->fill[0], l->fill[1], l->fill[2], l->fill[3]);
@@ -307,8 +311,8 @@ void copyRect(const Texture& from, const Texture& to, core::TexelRect r) {
                      0, r.width, r.height, 1);
 }
 
-std::vector<Region> regions(const std::vector<core::TexelRect>& rects) {
-  std::vector<Region> out;
+std::vector<core::TexelRect> regions(const std::vector<core::TexelRect>& rects) {
+  std::vector<core::TexelRect> out;
   out.reserve(rects.size());
   for (const core::TexelRect& r : rects)
     out.push_back({r.x, r.y, r.width, r.height});
@@ -350,8 +354,8 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
       throw GlError("brush " + manifest.id + ": " + file +
                     ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
     const std::string code = withoutComments(shaderSource);
-    for (BrushLayer layer : manifest.mix) {
-      const char* sampler = layer == BrushLayer::Diffuse ? "u_diffuseLayer" : "u_featureLayer";
+    for (core::EditLayer layer : manifest.mix) {
+      const char* sampler = layer == core::EditLayer::Diffuse ? "u_diffuseLayer" : "u_featureLayer";
       if (names(code, {sampler}))
         throw GlError("brush " + manifest.id + ": " + file + ": it mixes " +
                       std::string(toManifestName(layer)) + " (\"mix\"), so it cannot read " +
@@ -360,18 +364,19 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
     }
   }
   if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
-                                    BrushLayer::Mask) != manifest.writes.end())
+                                    core::EditLayer::Mask) != manifest.writes.end())
     throw GlError("brush " + manifest.id + ": " + manifest.shaderPath().string() +
                   ": brushLayers() writes positions, diffuse and feature; a brush that writes "
                   "the mask defines brush() instead");
-  for (BrushLayer layer : manifest.writes)
+  for (core::EditLayer layer : manifest.writes)
     program(*brush, layer, false, enumValues(manifest, {}));
   brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version
 }
 
-const Program& BrushEngine::program(LoadedBrush& brush, BrushLayer layer, bool maskTexture,
+const Program& BrushEngine::program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
                                     const std::vector<int>& enums) {
-  const auto key = std::tuple{brush.allLayers ? BrushLayer::Positions : layer, maskTexture, enums};
+  const auto key =
+      std::tuple{brush.allLayers ? core::EditLayer::Positions : layer, maskTexture, enums};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
   const std::string file = brush.manifest.shaderPath().string();
@@ -572,8 +577,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   result.seams = seamRuns(result.tiles, side);
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
-  const std::vector<Region> passRects = regions(rects);
-  const std::vector<Region> seamRects = regions(result.seams);
+  const std::vector<core::TexelRect> passRects = regions(rects);
+  const std::vector<core::TexelRect> seamRects = regions(result.seams);
 
   // The material samplers would override the filtering of whatever VTK binds to those units.
   struct MaterialUnitsRelease {
@@ -588,30 +593,30 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
   glViewport(0, 0, side, side);
-  const auto bindInputs = [&](const Program& pass, BrushLayer layer) {
+  const auto bindInputs = [&](const Program& pass, core::EditLayer layer) {
     pass.use();
     setUniforms(pass, brush.manifest, document, layer, dab);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Positions).id());
+    glBindTexture(GL_TEXTURE_2D, document.texture(core::EditLayer::Positions).id());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, document.texture(BrushLayer::Mask).id());
+    glBindTexture(GL_TEXTURE_2D, document.texture(core::EditLayer::Mask).id());
     // A mixed layer is a target the pass must not sample (a feedback loop): its unit is empty.
     glActiveTexture(GL_TEXTURE3);
-    glBindTexture(GL_TEXTURE_2D, brush.mixes(BrushLayer::Feature)
+    glBindTexture(GL_TEXTURE_2D, brush.mixes(core::EditLayer::Feature)
                                      ? 0
-                                     : document.texture(BrushLayer::Feature).id());
+                                     : document.texture(core::EditLayer::Feature).id());
     glActiveTexture(GL_TEXTURE6);
-    glBindTexture(GL_TEXTURE_2D, brush.mixes(BrushLayer::Diffuse)
+    glBindTexture(GL_TEXTURE_2D, brush.mixes(core::EditLayer::Diffuse)
                                      ? 0
-                                     : document.texture(BrushLayer::Diffuse).id());
+                                     : document.texture(core::EditLayer::Diffuse).id());
     glActiveTexture(GL_TEXTURE0);
     bindMaterial(pass, brush.manifest, document, dab);
   };
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
-  const auto finishLayer = [&](BrushLayer layer) {
+  const auto finishLayer = [&](core::EditLayer layer) {
     if (brush.writesInPlace(layer)) {
       // The pass wrote the layer's texture itself.
     } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
@@ -644,10 +649,11 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
 
   if (brush.allLayers) {
     // One pass writes every layer: each reads all layers as they were before the dab.
-    const Program& pass = program(brush, BrushLayer::Positions, maskTexture, enums);
-    const std::array<BrushLayer, 3> attached{BrushLayer::Positions, BrushLayer::Diffuse,
-                                             BrushLayer::Feature};
-    if (!layersTarget_.id()) layersTarget_ = Framebuffer(document.scratch(BrushLayer::Positions));
+    const Program& pass = program(brush, core::EditLayer::Positions, maskTexture, enums);
+    const std::array<core::EditLayer, 3> attached{
+        core::EditLayer::Positions, core::EditLayer::Diffuse, core::EditLayer::Feature};
+    if (!layersTarget_.id())
+      layersTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));
     layersTarget_.bind();
     std::array<GLenum, 3> drawBuffers{};
     for (std::size_t k = 0; k < attached.size(); ++k) {
@@ -668,10 +674,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     }
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     // u_layer: the positions (brushInputAt's value is the positions texel).
-    bindInputs(pass, BrushLayer::Positions);
+    bindInputs(pass, core::EditLayer::Positions);
     if (brush.readsWhatItWrites()) glTextureBarrier(); // earlier writes are visible
     rectPass_.draw(passRects, side, side);
-    for (BrushLayer layer : brush.manifest.mix)
+    for (core::EditLayer layer : brush.manifest.mix)
       glDisablei(GL_BLEND, static_cast<GLuint>(layer)); // attachment k holds layer k
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
     // texture that a whole-image swap makes a layer's.
@@ -679,7 +685,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
-    for (BrushLayer layer : brush.manifest.writes)
+    for (core::EditLayer layer : brush.manifest.writes)
       finishLayer(layer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return result;
@@ -688,13 +694,13 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   // Positions last: every other layer's pass reads the positions from before the dab.
   // Except for brushes that read the feature layer: their positions pass displaces by the
   // change of it, so it runs while the feature layer still holds the old one.
-  std::vector<BrushLayer> order = brush.manifest.writes;
+  std::vector<core::EditLayer> order = brush.manifest.writes;
   const bool readsFeature = std::find(brush.manifest.reads.begin(), brush.manifest.reads.end(),
-                                      BrushLayer::Feature) != brush.manifest.reads.end();
-  std::stable_partition(order.begin(), order.end(), [readsFeature](BrushLayer l) {
-    return (l != BrushLayer::Positions) != readsFeature;
+                                      core::EditLayer::Feature) != brush.manifest.reads.end();
+  std::stable_partition(order.begin(), order.end(), [readsFeature](core::EditLayer l) {
+    return (l != core::EditLayer::Positions) != readsFeature;
   });
-  for (BrushLayer layer : order) {
+  for (core::EditLayer layer : order) {
     const Program& pass = program(brush, layer, maskTexture, enums);
     const bool inPlace = brush.writesInPlace(layer);
     (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();

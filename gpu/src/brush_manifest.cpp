@@ -5,10 +5,11 @@
 
 #include "manifest_json.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace octaclay::gpu {
@@ -117,16 +118,16 @@ private:
   }
 
   // example: the layer the message's hint shows.
-  std::vector<BrushLayer> parseLayers(const json& value, const std::string& field,
-                                      std::string_view example = kLayerNames[0]) const {
+  std::vector<core::EditLayer> parseLayers(const json& value, const std::string& field,
+                                           std::string_view example = kLayerNames[0]) const {
     if (!value.is_array())
       fail(field, "expected an array of layers, got " + describe(value) + " (use [\"" +
                       std::string(example) + "\"])");
-    std::vector<BrushLayer> layers;
+    std::vector<core::EditLayer> layers;
     for (std::size_t k = 0; k < value.size(); ++k) {
       const std::string item = field + "[" + std::to_string(k) + "]";
-      const BrushLayer layer =
-          choose<BrushLayer>(string(value[k], item), kLayerNames, item, "layer");
+      const core::EditLayer layer =
+          choose<core::EditLayer>(string(value[k], item), kLayerNames, item, "layer");
       if (std::find(layers.begin(), layers.end(), layer) != layers.end())
         fail(item, quote(toManifestName(layer)) + " is listed twice");
       layers.push_back(layer);
@@ -137,9 +138,9 @@ private:
   void parseMix(const json& value, BrushManifest& manifest) const {
     manifest.mix = parseLayers(value, "mix", "diffuse");
     for (std::size_t k = 0; k < manifest.mix.size(); ++k) {
-      const BrushLayer layer = manifest.mix[k];
+      const core::EditLayer layer = manifest.mix[k];
       const std::string item = "mix[" + std::to_string(k) + "]";
-      if (layer != BrushLayer::Diffuse && layer != BrushLayer::Feature)
+      if (layer != core::EditLayer::Diffuse && layer != core::EditLayer::Feature)
         fail(item, quote(toManifestName(layer)) + " cannot be mixed (only \"diffuse\" and "
                                                   "\"feature\" can)");
       if (std::find(manifest.writes.begin(), manifest.writes.end(), layer) == manifest.writes.end())
@@ -324,7 +325,7 @@ private:
 
 } // namespace
 
-std::string_view toManifestName(BrushLayer layer) {
+std::string_view toManifestName(core::EditLayer layer) {
   return kLayerNames[static_cast<std::size_t>(layer)];
 }
 std::string_view toManifestName(AreaMode area) {

@@ -2,10 +2,11 @@
 
 #include "octaclay/gpu/gl_error.h"
 
-#include <cstdio>
 #include <dlfcn.h>
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+
+#include <cstdio>
 #include <vector>
 
 namespace octaclay::gpu {

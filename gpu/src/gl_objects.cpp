@@ -2,9 +2,10 @@
 
 #include "octaclay/gpu/gl_error.h"
 
+#include <epoxy/gl.h>
+
 #include <bit>
 #include <cstdint>
-#include <epoxy/gl.h>
 #include <utility>
 #include <vector>
 
@@ -29,7 +30,7 @@ FormatInfo info(TextureFormat format) {
   return {GL_RGBA32F, GL_RGBA};
 }
 
-std::size_t texelCount(Region r) {
+std::size_t texelCount(core::TexelRect r) {
   return static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
 }
 
@@ -135,14 +136,14 @@ void Texture::bindAsTarget() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
 }
 
-void Texture::upload(Region region, std::span<const float> texels) {
+void Texture::upload(core::TexelRect region, std::span<const float> texels) {
   if (texels.size() != texelCount(region) * static_cast<std::size_t>(channels()))
     throw GlError("texture upload: " + std::to_string(texels.size()) + " floats for a " +
                   std::to_string(region.width) + "x" + std::to_string(region.height) + " region");
   uploadFrom(region, texels.data(), region.width, channels());
 }
 
-std::vector<float> Texture::read(Region region) const {
+std::vector<float> Texture::read(core::TexelRect region) const {
   std::vector<float> texels(texelCount(region) * static_cast<std::size_t>(channels()));
   readInto(region, texels.data(), region.width, channels());
   return texels;
@@ -164,7 +165,7 @@ float widenHalf(std::uint16_t h) {
 
 } // namespace
 
-void Texture::readInto(Region region, float* out, int rowLength, int channels) const {
+void Texture::readInto(core::TexelRect region, float* out, int rowLength, int channels) const {
   const GLenum layout = layoutOf(channels);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
   if (format_ == TextureFormat::Rgba16f) {
@@ -199,7 +200,7 @@ void Texture::readInto(Region region, float* out, int rowLength, int channels) c
   checkGlError("texture read-back");
 }
 
-void Texture::uploadFrom(Region region, const float* in, int rowLength, int channels) {
+void Texture::uploadFrom(core::TexelRect region, const float* in, int rowLength, int channels) {
   const GLenum layout = layoutOf(channels);
   glBindTexture(GL_TEXTURE_2D, id_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -369,10 +370,10 @@ RectPass::~RectPass() {
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void RectPass::draw(std::span<const Region> rects, int width, int height) {
+void RectPass::draw(std::span<const core::TexelRect> rects, int width, int height) {
   if (rects.empty()) return;
   std::vector<GLint> data{width, height, 0, 0};
-  for (const Region& r : rects)
+  for (const core::TexelRect& r : rects)
     data.insert(data.end(), {r.x, r.y, r.width, r.height});
   rects_.upload(std::as_bytes(std::span(data)));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rects_.id());

@@ -10,33 +10,29 @@
 namespace octaclay::gpu {
 namespace {
 
-TextureFormat formatOf(BrushLayer layer) {
+TextureFormat formatOf(core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     return TextureFormat::Rgba32f; // float32 so edits and undo round-trip bit-exactly
-  case BrushLayer::Diffuse:
-  case BrushLayer::Feature:
+  case core::EditLayer::Diffuse:
+  case core::EditLayer::Feature:
     return TextureFormat::Rgba16f; // stored as half in the document anyway
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return TextureFormat::R32f;
   }
   return TextureFormat::Rgba32f;
 }
 
-Region toRegion(core::TexelRect r) {
-  return {r.x, r.y, r.width, r.height};
-}
-
 } // namespace
 
-int GpuDocument::channels(BrushLayer layer) {
+int GpuDocument::channels(core::EditLayer layer) {
   switch (layer) {
-  case BrushLayer::Positions:
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Positions:
+  case core::EditLayer::Diffuse:
     return 4;
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return 3;
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return 1;
   }
   return 4;
@@ -50,8 +46,8 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
   const int band = std::max(1, (1 << 20) / side);
   const int steps = 4 * ((side + band - 1) / band);
   int step = 0;
-  for (BrushLayer layer :
-       {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask}) {
     textures_[index(layer)] = Texture(side, side, formatOf(layer));
     scratch_[index(layer)] = Texture(side, side, formatOf(layer));
     for (int y = 0; y < side; y += band) {
@@ -68,32 +64,32 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
   }
 }
 
-core::Layer* GpuDocument::mirrorLayer(BrushLayer layer) {
+core::Layer* GpuDocument::mirrorLayer(core::EditLayer layer) {
   return const_cast<core::Layer*>(std::as_const(*this).mirrorLayer(layer));
 }
 
-const core::Layer* GpuDocument::mirrorLayer(BrushLayer layer) const {
+const core::Layer* GpuDocument::mirrorLayer(core::EditLayer layer) const {
   switch (layer) {
-  case BrushLayer::Diffuse:
+  case core::EditLayer::Diffuse:
     return &document_.diffuse;
-  case BrushLayer::Feature:
+  case core::EditLayer::Feature:
     return &document_.feature;
-  case BrushLayer::Mask:
+  case core::EditLayer::Mask:
     return &document_.mask;
-  case BrushLayer::Positions:
+  case core::EditLayer::Positions:
     break;
   }
   return nullptr;
 }
 
-std::vector<float> GpuDocument::mirrorTexels(BrushLayer layer, core::TexelRect rect) const {
+std::vector<float> GpuDocument::mirrorTexels(core::EditLayer layer, core::TexelRect rect) const {
   const int c = channels(layer);
   std::vector<float> texels(static_cast<std::size_t>(rect.width) * rect.height * c);
   const int side = document_.positions.side();
   for (int y = 0; y < rect.height; ++y)
     for (int x = 0; x < rect.width; ++x) {
       float* out = &texels[(static_cast<std::size_t>(y) * rect.width + x) * c];
-      if (layer == BrushLayer::Positions) {
+      if (layer == core::EditLayer::Positions) {
         const core::Vec4f& t = document_.positions.at(rect.x + x, rect.y + y);
         out[0] = t.x, out[1] = t.y, out[2] = t.z, out[3] = t.w;
         continue;
@@ -106,7 +102,7 @@ std::vector<float> GpuDocument::mirrorTexels(BrushLayer layer, core::TexelRect r
   return texels;
 }
 
-void GpuDocument::writeMirror(BrushLayer layer, core::TexelRect rect,
+void GpuDocument::writeMirror(core::EditLayer layer, core::TexelRect rect,
                               std::span<const float> texels) {
   const int c = channels(layer);
   const int side = document_.positions.side();
@@ -115,23 +111,24 @@ void GpuDocument::writeMirror(BrushLayer layer, core::TexelRect rect,
   for (int y = 0; y < rect.height; ++y)
     std::copy_n(&texels[y * rowFloats], rowFloats,
                 mirror + (static_cast<std::size_t>(rect.y + y) * side + rect.x) * c);
-  if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
+  if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rect);
 }
 
-void GpuDocument::restore(BrushLayer layer, core::TexelRect rect, std::span<const float> texels) {
+void GpuDocument::restore(core::EditLayer layer, core::TexelRect rect,
+                          std::span<const float> texels) {
   syncMirror(); // else a later sync would read deferred regions over what is restored here
   writeMirror(layer, rect, texels);
   push(layer, rect);
 }
 
-void GpuDocument::push(BrushLayer layer, core::TexelRect rect) {
+void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
   const core::Layer* l = mirrorLayer(layer);
   if (!l || !l->uniform()) { // straight from the mirror's memory
     const int c = channels(layer);
     const int side = document_.positions.side();
     const float* mirror = l ? l->texels.data() : &std::as_const(document_.positions).at(0, 0).x;
     textures_[index(layer)].uploadFrom(
-        toRegion(rect), mirror + (static_cast<std::size_t>(rect.y) * side + rect.x) * c, side, c);
+        rect, mirror + (static_cast<std::size_t>(rect.y) * side + rect.x) * c, side, c);
     return;
   }
   std::vector<float> texels = mirrorTexels(layer, rect);
@@ -143,19 +140,19 @@ void GpuDocument::push(BrushLayer layer, core::TexelRect rect) {
         rgba[t * 4 + k] = texels[t * 3 + k];
     texels = std::move(rgba);
   }
-  texture.upload(toRegion(rect), texels);
+  texture.upload(rect, texels);
 }
 
-void GpuDocument::pull(BrushLayer layer, core::TexelRect rect) {
+void GpuDocument::pull(core::EditLayer layer, core::TexelRect rect) {
   const int c = channels(layer);
   const int side = document_.positions.side();
   const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
-  textures_[index(layer)].readInto(toRegion(rect), editedMirror(layer) + at, side, c);
-  if (layer == BrushLayer::Positions) bounds_.refresh(document_.positions, rect);
+  textures_[index(layer)].readInto(rect, editedMirror(layer) + at, side, c);
+  if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rect);
 }
 
-void GpuDocument::changed(BrushLayer layer, core::TexelRect rect) {
-  if (!deferring_ || layer == BrushLayer::Positions) {
+void GpuDocument::changed(core::EditLayer layer, core::TexelRect rect) {
+  if (!deferring_ || layer == core::EditLayer::Positions) {
     pull(layer, rect);
     return;
   }
@@ -181,7 +178,8 @@ void GpuDocument::deferPaintPulls(bool on) {
 void GpuDocument::syncMirror() {
   const int side = document_.positions.side();
   const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
-  for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask}) {
+  for (core::EditLayer layer :
+       {core::EditLayer::Diffuse, core::EditLayer::Feature, core::EditLayer::Mask}) {
     std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
     if (stale.empty()) continue;
     // Runs of stale blocks along each block row, one read each.
@@ -202,12 +200,12 @@ void GpuDocument::syncMirror() {
   }
 }
 
-float* GpuDocument::editedMirror(BrushLayer layer) {
-  if (layer == BrushLayer::Mask) document_.hasMask = true; // a painted mask is saved
+float* GpuDocument::editedMirror(core::EditLayer layer) {
+  if (layer == core::EditLayer::Mask) document_.hasMask = true; // a painted mask is saved
   return mirrorData(layer);
 }
 
-float* GpuDocument::mirrorData(BrushLayer layer) {
+float* GpuDocument::mirrorData(core::EditLayer layer) {
   core::Layer* l = mirrorLayer(layer);
   if (!l) return &document_.positions.at(0, 0).x;
   if (l->uniform()) { // the first edit of a layer gives it texels
@@ -233,13 +231,13 @@ void GpuDocument::writeSaliency(std::span<const float> saliency) {
   for (std::size_t k = 0; k < texels.size(); ++k)
     texels[k].w = saliency[k];
   const int side = document_.positions.side();
-  push(BrushLayer::Positions, {0, 0, side, side}); // the mirror's texels, now with the saliency
+  push(core::EditLayer::Positions,
+       {0, 0, side, side}); // the mirror's texels, now with the saliency
 }
 
 core::TileApplier undoApplier(GpuDocument& document) {
-  return [&document](core::EditLayer layer, core::Region region, std::span<const float> texels) {
-    document.restore(static_cast<BrushLayer>(static_cast<int>(layer)),
-                     {region.x, region.y, region.width, region.height}, texels);
+  return [&document](core::EditLayer layer, core::TexelRect region, std::span<const float> texels) {
+    document.restore(layer, region, texels);
   };
 }
 

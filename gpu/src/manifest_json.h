@@ -4,9 +4,10 @@
 // the manifest's path and names the field ("parameters[2].type: …"), unknown fields are refused
 // with a did-you-mean hint, a key given twice is an error.
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>

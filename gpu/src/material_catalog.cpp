@@ -10,12 +10,14 @@
 #include "octaclay/gpu/material_catalog.h"
 
 #include "manifest_json.h"
+
 #include "octaclay/core/error.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 namespace octaclay::gpu {

@@ -1,11 +1,13 @@
 #include "octaclay/gpu/model_renderer.h"
 
 #include "model_chunks.h"
-#include "octaclay/core/error.h"
-#include "octaclay/gpu/gl_error.h"
 #include "shader_sources.h"
 
+#include "octaclay/core/error.h"
+#include "octaclay/gpu/gl_error.h"
+
 #include <epoxy/gl.h>
+
 #include <vector>
 
 namespace octaclay::gpu {
@@ -18,8 +20,8 @@ std::string normalPassSource() {
          detail::builtInShader("prelude.glsl") + detail::builtInShader("normal_map.glsl");
 }
 
-std::vector<Region> regions(std::span<const core::TexelRect> rects) {
-  std::vector<Region> out;
+std::vector<core::TexelRect> regions(std::span<const core::TexelRect> rects) {
+  std::vector<core::TexelRect> out;
   out.reserve(rects.size());
   for (const core::TexelRect& r : rects)
     out.push_back({r.x, r.y, r.width, r.height});
@@ -144,11 +146,11 @@ void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::
   normals_.bindAsTarget();
   glViewport(0, 0, side, side);
   normalProgram_.use();
-  bindTexture(0, document.texture(BrushLayer::Positions));
+  bindTexture(0, document.texture(core::EditLayer::Positions));
   glUniform1i(normalProgram_.uniform("u_positions"), 0);
   glUniform1i(normalProgram_.uniform("u_size"), document.size());
   glUniform3f(normalProgram_.uniform("u_centreNormal"), 0.0f, 0.0f, 1.0f);
-  const std::vector<Region> passRects = regions(rects);
+  const std::vector<core::TexelRect> passRects = regions(rects);
   rectPass_.draw(passRects, side, side);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
@@ -174,11 +176,11 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
   const Program& p = drawVariant(diffuseTexture, featureTexture, maskTint, reflection,
                                  static_cast<int>(view.preview), lodVertices);
   p.use();
-  bindTexture(0, document.texture(BrushLayer::Positions));
+  bindTexture(0, document.texture(core::EditLayer::Positions));
   bindTexture(1, normals_);
-  bindTexture(2, document.texture(BrushLayer::Diffuse));
-  bindTexture(3, document.texture(BrushLayer::Mask));
-  bindTexture(4, document.texture(BrushLayer::Feature));
+  bindTexture(2, document.texture(core::EditLayer::Diffuse));
+  bindTexture(3, document.texture(core::EditLayer::Mask));
+  bindTexture(4, document.texture(core::EditLayer::Feature));
   if (environment_.id()) bindTexture(5, environment_);
   glUniform1i(p.uniform("u_positions"), 0);
   glUniform1i(p.uniform("u_normals"), 1);

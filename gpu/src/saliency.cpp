@@ -1,11 +1,13 @@
 #include "octaclay/gpu/saliency.h"
 
-#include "octaclay/gpu/gl_error.h"
 #include "shader_sources.h"
+
+#include "octaclay/gpu/gl_error.h"
+
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <cmath>
-#include <epoxy/gl.h>
 
 namespace octaclay::gpu {
 namespace {
@@ -58,7 +60,7 @@ const Texture& SaliencyPass::blurred(float sigma, int side, int n) {
   auto found = blurred_.find(sigma);
   if (found != blurred_.end()) return found->second;
   Texture& out = blurred_.emplace(sigma, Texture(side, side, TextureFormat::R32f)).first->second;
-  const Region all{0, 0, side, side};
+  const core::TexelRect all{0, 0, side, side};
   // The truncated (⌈2σ⌉ taps, at least 1) kernel, normalised as the CPU reference does.
   const int taps = std::max(1, static_cast<int>(std::ceil(2 * sigma)));
   std::vector<float> kernel(static_cast<std::size_t>(2 * taps + 1));
@@ -89,7 +91,7 @@ const Texture& SaliencyPass::blurred(float sigma, int side, int n) {
 
 void SaliencyPass::run(GpuDocument& document, const core::SaliencyOptions& options) {
   const int n = document.size(), side = n + 1;
-  const Region all{0, 0, side, side};
+  const core::TexelRect all{0, 0, side, side};
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
@@ -100,7 +102,7 @@ void SaliencyPass::run(GpuDocument& document, const core::SaliencyOptions& optio
   normalProgram_.use();
   glUniform1i(normalProgram_.uniform("u_size"), n);
   glUniform1i(normalProgram_.uniform("u_positions"), 0);
-  bindTexture(0, document.texture(BrushLayer::Positions));
+  bindTexture(0, document.texture(core::EditLayer::Positions));
   rectPass_.draw(std::span(&all, 1), side, side);
 
   sized(curvature_, side, TextureFormat::R32f).bindAsTarget();

@@ -14,14 +14,10 @@
 namespace octaclay::gpu {
 namespace {
 
-core::EditLayer editLayer(BrushLayer layer) {
-  return static_cast<core::EditLayer>(static_cast<int>(layer));
-}
-
 // Captures each undo tile of the written layers the first time a dab may touch it.
 class UndoCapture {
 public:
-  UndoCapture(const GpuDocument& document, std::vector<BrushLayer> layers)
+  UndoCapture(const GpuDocument& document, std::vector<core::EditLayer> layers)
       : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
         tiles_(core::StrokeRecorder::tilesPerSide(side_)) {}
 
@@ -30,32 +26,32 @@ public:
     for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
       for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
         if (seen_.insert(ty * tiles_ + tx).second)
-          for (BrushLayer layer : layers_)
+          for (core::EditLayer layer : layers_)
             before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
   }
 
   core::Stroke finish(const std::string& label) {
     core::StrokeRecorder recorder(side_);
     for (const Tile& t : before_)
-      recorder.addTile(editLayer(t.layer), t.x, t.y, GpuDocument::channels(t.layer), t.texels,
+      recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
                        texels(t.layer, t.x, t.y));
     return recorder.finish(label);
   }
 
 private:
   struct Tile {
-    BrushLayer layer;
+    core::EditLayer layer;
     int x, y;
     std::vector<float> texels;
   };
 
-  std::vector<float> texels(BrushLayer layer, int tx, int ty) const {
-    const core::Region r = core::StrokeRecorder::tileRegion(side_, tx, ty);
+  std::vector<float> texels(core::EditLayer layer, int tx, int ty) const {
+    const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, tx, ty);
     return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
   }
 
   const GpuDocument& document_;
-  std::vector<BrushLayer> layers_;
+  std::vector<core::EditLayer> layers_;
   int side_, tiles_;
   std::set<int> seen_;
   std::vector<Tile> before_;

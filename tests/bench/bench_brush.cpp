@@ -3,6 +3,7 @@
 // effective bytes/s of a dab beside a memcpy of the same bytes in the same run (issue 3's targets;
 // ANCHORS.md's Blender).
 #include "bench_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_library.h"
@@ -11,9 +12,10 @@
 #include "octaclay/gpu/stroke.h"
 
 #include <benchmark/benchmark.h>
+#include <epoxy/gl.h>
+
 #include <chrono>
 #include <cstring>
-#include <epoxy/gl.h>
 #include <memory>
 #include <vector>
 

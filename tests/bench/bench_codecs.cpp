@@ -12,15 +12,16 @@
 // --report writes each mesh's rd.md, rd.csv and rd.png under FOLDER/<mesh>/.
 // Always exits 0 once the tables are printed; misses are read from the PASS/MISS lines.
 
-#include "octaclay/core/geometry/base_shapes.h"
+#include "rd_measure.h"
+
 #include "octaclay/core/codec/codec.h"
+#include "octaclay/core/codec/wavelet_codec.h"
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
-#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/codec/wavelet_codec.h"
-#include "rd_measure.h"
 
 #include <algorithm>
 #include <charconv>

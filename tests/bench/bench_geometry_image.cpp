@@ -1,12 +1,14 @@
 // Mesh extraction and EXR document save/load at N = 1024, each beside a memcpy of the same bytes
 // measured in the same run (issue 2's targets are ratios: extraction within 4x of memcpy).
 #include "bench_support.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 
-#include <algorithm>
 #include <benchmark/benchmark.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>

@@ -7,10 +7,11 @@
 // following its source samples, app::LodFollower, and the upload); and the GPU saliency pass
 // the salient methods read.
 #include "lod_follow.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gpu_document.h"
@@ -18,12 +19,13 @@
 #include "octaclay/gpu/saliency.h"
 
 #include <benchmark/benchmark.h>
-#include <chrono>
 #include <epoxy/gl.h>
+#include <meshoptimizer.h>
+
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <meshoptimizer.h>
 
 using namespace octaclay;
 

@@ -18,16 +18,18 @@
 // --methods adds rows for the other resampling methods and for salient-point without refit.
 // Always exits 0 once the table is printed; misses are read from the PASS/MISS lines.
 #include "octaclay/core/geometry/base_shapes.h"
-#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <meshoptimizer.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -37,7 +39,6 @@
 #include <ctime>
 #include <exception>
 #include <filesystem>
-#include <meshoptimizer.h>
 #include <string>
 #include <string_view>
 #include <type_traits>

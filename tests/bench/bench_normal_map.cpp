@@ -7,6 +7,7 @@
 #include "octaclay/core/lod/lod_export.h"
 
 #include <benchmark/benchmark.h>
+
 #include <filesystem>
 #include <map>
 

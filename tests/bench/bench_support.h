@@ -1,8 +1,9 @@
 // Shared by the benchmarks: the memcpy baseline every ratio (x_memcpy) is measured against.
 #pragma once
 
-#include <algorithm>
 #include <benchmark/benchmark.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <vector>

@@ -5,27 +5,18 @@
 // frame is a synchronous paint of the widget followed by glFinish, so the GL work (llvmpipe
 // without a GPU) is counted. Needs an X display with GLX (scripts/bench runs it under Xvfb).
 #include "model_prop.h"
-#include "octaclay/core/geometry/base_shapes.h"
+#include "viewport_widget.h"
+
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/gpu/brush_library.h"
-#include "viewport_widget.h"
 
 #include <QApplication>
 #include <QImage>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QWindow>
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <numbers>
-#include <optional>
-#include <string>
-#include <tuple>
-#include <vector>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -37,6 +28,17 @@
 #include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
 
 using namespace octaclay;
 

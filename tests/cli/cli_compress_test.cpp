@@ -5,6 +5,7 @@
 // --sweep writes the rate-distortion table and a plot that holds curves.
 
 #include "cli_support.h"
+
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/document/image_io.h"
 
@@ -13,6 +14,7 @@
 #include <QJsonArray>
 #include <QSet>
 #include <QTemporaryDir>
+
 #include <cmath>
 
 class CliCompressTest : public QObject {

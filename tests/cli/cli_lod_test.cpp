@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 #include <QtEndian>
+
 #include <cmath>
 
 namespace {

@@ -5,6 +5,7 @@
 
 #include <QJsonArray>
 #include <QTemporaryDir>
+
 #include <cmath>
 
 class CliPaintTest : public QObject {

@@ -3,6 +3,7 @@
 // normal or from a --view eye; unknown materials and bad views are usage errors.
 
 #include "cli_support.h"
+
 #include "octaclay/core/document/document_io.h"
 
 #include <QTemporaryDir>

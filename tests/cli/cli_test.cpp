@@ -13,6 +13,7 @@
 #include <QStringList>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <cmath>
 
 class CliTest : public QObject {

@@ -3,9 +3,10 @@
 // or allocate without bound. Anything else escaping (or a sanitizer report) is a finding.
 
 #include "fuzz_input.h"
+
 #include "octaclay/core/codec/compressed_document.h"
-#include "octaclay/core/error.h"
 #include "octaclay/core/codec/wavelet_codec.h"
+#include "octaclay/core/error.h"
 
 #include <cstdlib>
 

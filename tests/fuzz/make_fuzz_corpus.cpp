@@ -3,10 +3,11 @@
 // documents, each prefixed as fuzz_input.h reads them.
 
 #include "fuzz_input.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -4,12 +4,14 @@
 // same effect as away from them (no kink).
 
 #include "brush_test_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <cstring>
 #include <optional>

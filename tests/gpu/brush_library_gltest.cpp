@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gl_context.h"
 
 #include <QtTest>
+
 #include <fstream>
 #include <optional>
 

@@ -11,9 +11,11 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <chrono>
 #include <fstream>
 
+using namespace octaclay;
 using namespace octaclay::gpu;
 namespace fs = std::filesystem;
 
@@ -147,9 +149,9 @@ void BrushManifestTest::goodManifestParses() {
   QCOMPARE(m.shaderFile, std::string("brush.glsl"));
   QCOMPARE(m.folder, root() / "good");
   QCOMPARE(m.shaderPath(), root() / "good" / "brush.glsl");
-  QVERIFY((m.reads == std::vector{BrushLayer::Positions, BrushLayer::Mask}));
-  QVERIFY((m.writes == std::vector{BrushLayer::Diffuse, BrushLayer::Feature}));
-  QVERIFY((m.mix == std::vector{BrushLayer::Feature}));
+  QVERIFY((m.reads == std::vector{core::EditLayer::Positions, core::EditLayer::Mask}));
+  QVERIFY((m.writes == std::vector{core::EditLayer::Diffuse, core::EditLayer::Feature}));
+  QVERIFY((m.mix == std::vector{core::EditLayer::Feature}));
   QCOMPARE(m.area, AreaMode::Uv);
   QCOMPARE(m.falloff, Falloff::Curve);
   QVERIFY((m.falloffCurve == std::vector{1.0f, 0.5f, 0.0f}));
@@ -196,7 +198,7 @@ void BrushManifestTest::templateBrushParses() {
   }
   QCOMPARE(m.id, std::string("template-brush"));
   QCOMPARE(m.api, kBrushApiVersion);
-  QVERIFY((m.writes == std::vector{BrushLayer::Positions}));
+  QVERIFY((m.writes == std::vector{core::EditLayer::Positions}));
   QCOMPARE(m.area, AreaMode::VolumeNormal);
   const BrushParameter* height = m.parameter("height");
   QVERIFY(height);

@@ -3,6 +3,7 @@
 // samples stay equal (seams closed) wherever the dab lands.
 
 #include "brush_test_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/seaming.h"
@@ -12,6 +13,7 @@
 #include "octaclay/gpu/gl_error.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <fstream>
 #include <optional>
@@ -114,7 +116,8 @@ void BrushesTest::dabsOnSeamsAndPolesKeepTheSurfaceClosed() {
     }
   // The GPU textures and the CPU mirror agree everywhere.
   const int side = n + 1;
-  const std::vector<float> gpu = document.texture(BrushLayer::Positions).read({0, 0, side, side});
+  const std::vector<float> gpu =
+      document.texture(core::EditLayer::Positions).read({0, 0, side, side});
   QVERIFY(std::memcmp(gpu.data(), document.document().positions.texels().data(),
                       gpu.size() * sizeof(float)) == 0);
   QVERIFY(std::memcmp(gpu.data(), start.texels().data(), gpu.size() * sizeof(float)) != 0);

@@ -7,8 +7,9 @@
 #include "octaclay/gpu/gl_objects.h"
 
 #include <QtTest>
-#include <cstring>
 #include <epoxy/gl.h>
+
+#include <cstring>
 #include <optional>
 
 using namespace octaclay::gpu;

@@ -6,6 +6,7 @@
 // writes the same bytes on every run and what is committed under resources/.
 
 #include "material_generator.h"
+
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/gpu/material_catalog.h"
 
@@ -13,6 +14,7 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>

@@ -5,21 +5,23 @@
 // one. The maps go through the 8-bit PNG a viewer would read.
 
 #include "../core/lod/lod_test_support.h"
+
 #include "octaclay/core/document/image_io.h"
-#include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/vertex_index.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gl_objects.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include <epoxy/gl.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <epoxy/gl.h>
 #include <optional>
 #include <vector>
 

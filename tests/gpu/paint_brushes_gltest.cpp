@@ -7,11 +7,13 @@
 // tile leaves the border unpainted (an engine bug): that case is an expected failure below.
 
 #include "brush_test_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/gpu/gl_context.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -30,7 +32,7 @@ constexpr float kPaint = 0.0f, kErase = 1.0f; // indices of the "mode" enum's op
 
 struct PaintBrush {
   std::string id;
-  BrushLayer layer;
+  core::EditLayer layer;
   std::vector<int> channels;                              ///< mirror channels it writes
   std::map<std::string, std::array<float, 4>> parameters; ///< for paint mode
   std::array<float, 4> target;                            ///< paint mode's value, per channel
@@ -41,15 +43,15 @@ struct PaintBrush {
 PaintBrush paintBrush(const QString& id) {
   if (id == "paint")
     return {"paint",
-            BrushLayer::Diffuse,
+            core::EditLayer::Diffuse,
             {0, 1, 2, 3},
             {{"color", {0.1f, 0.3f, 0.9f, 0.5f}}},
             {0.1f, 0.3f, 0.9f, 0.5f}};
   if (id == "paint-specular")
-    return {"paint-specular", BrushLayer::Feature, {1}, {}, {0.0f, 0.9f, 0.0f, 0.0f}};
+    return {"paint-specular", core::EditLayer::Feature, {1}, {}, {0.0f, 0.9f, 0.0f, 0.0f}};
   if (id == "paint-reflectivity")
-    return {"paint-reflectivity", BrushLayer::Feature, {2}, {}, {0.0f, 0.0f, 0.8f, 0.0f}};
-  return {"mask", BrushLayer::Mask, {0}, {}, {0.0f, 0.0f, 0.0f, 0.0f}};
+    return {"paint-reflectivity", core::EditLayer::Feature, {2}, {}, {0.0f, 0.0f, 0.8f, 0.0f}};
+  return {"mask", core::EditLayer::Mask, {0}, {}, {0.0f, 0.0f, 0.0f, 0.0f}};
 }
 
 bool writes(const PaintBrush& brush, int channel) {
@@ -59,8 +61,8 @@ bool writes(const PaintBrush& brush, int channel) {
 // Diffuse and feature are RGBA16F textures: a value written there comes back rounded to a half
 // float (a relative step of 2^-11, under 5e-4 in [0, 1]), and the CPU's weight differs from the
 // GPU's by float rounding only. The mask is R32F.
-float tolerance(BrushLayer layer) {
-  return layer == BrushLayer::Mask ? 1e-5f : 1e-3f;
+float tolerance(core::EditLayer layer) {
+  return layer == core::EditLayer::Mask ? 1e-5f : 1e-3f;
 }
 
 // A value in [0, 1] that a half float holds exactly (k / 1024), the same for every sample
@@ -92,16 +94,16 @@ core::Document noisyDocument(int n) {
   return doc;
 }
 
-std::vector<float> texelsOf(const GpuDocument& document, BrushLayer layer) {
+std::vector<float> texelsOf(const GpuDocument& document, core::EditLayer layer) {
   const int side = document.size() + 1;
   return document.mirrorTexels(layer, {0, 0, side, side});
 }
 
-float baseOf(const GpuDocument& document, BrushLayer layer, int channel) {
+float baseOf(const GpuDocument& document, core::EditLayer layer, int channel) {
   const core::Document& d = document.document();
-  const core::Layer& l = layer == BrushLayer::Diffuse   ? d.diffuse
-                         : layer == BrushLayer::Feature ? d.feature
-                                                        : d.mask;
+  const core::Layer& l = layer == core::EditLayer::Diffuse   ? d.diffuse
+                         : layer == core::EditLayer::Feature ? d.feature
+                                                             : d.mask;
   return l.fill[channel];
 }
 
@@ -188,13 +190,14 @@ void PaintBrushesTest::dabMovesItsChannelsInsideTheRadiusOnly() {
   QFETCH(QString, brush);
   const PaintBrush b = paintBrush(brush);
   core::Document doc = noisyDocument(kSize);
-  if (b.layer == BrushLayer::Mask) {
+  if (b.layer == core::EditLayer::Mask) {
     fillWithNoise(doc.mask, kSize);
     doc.hasMask = true;
   }
   GpuDocument document(std::move(doc));
-  std::map<BrushLayer, std::vector<float>> layers;
-  for (BrushLayer l : {BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask})
+  std::map<core::EditLayer, std::vector<float>> layers;
+  for (core::EditLayer l :
+       {core::EditLayer::Diffuse, core::EditLayer::Feature, core::EditLayer::Mask})
     layers[l] = texelsOf(document, l);
   const std::vector<float> before = layers[b.layer];
   const int channels = GpuDocument::channels(b.layer);
@@ -267,7 +270,7 @@ void PaintBrushesTest::seamedDabOverTheWholeImage() {
 QString PaintBrushesTest::seamDabProblem(const PaintBrush& b, int n, core::Sample s) {
   const int channels = GpuDocument::channels(b.layer);
   core::Document doc = noisyDocument(n);
-  if (b.layer == BrushLayer::Mask) {
+  if (b.layer == core::EditLayer::Mask) {
     fillWithNoise(doc.mask, n);
     doc.hasMask = true;
   }
@@ -351,7 +354,7 @@ void PaintBrushesTest::fullWeightEraseRestoresTheBase() {
           continue;
         }
         const float base = baseOf(document, b.layer, c);
-        if (b.layer == BrushLayer::Mask)
+        if (b.layer == core::EditLayer::Mask)
           QVERIFY2(after[k] == base, qPrintable(where)); // R32F: exactly
         else
           QVERIFY2(std::abs(after[k] - base) <= tol, qPrintable(where));
@@ -393,7 +396,7 @@ void PaintBrushesTest::smoothEraseIsPartialTowardsTheRim() {
         QVERIFY2(std::abs(after[k] - (painted[k] + (base - painted[k]) * w)) <= tol,
                  qPrintable(where));
         if (w == 1.0f) { // the centre region
-          if (b.layer == BrushLayer::Mask)
+          if (b.layer == core::EditLayer::Mask)
             QVERIFY2(after[k] == base, qPrintable(where));
           else
             QVERIFY2(std::abs(after[k] - base) <= tol, qPrintable(where));
@@ -437,7 +440,7 @@ void PaintBrushesTest::maskBlocksPaint() {
   const core::Sample centre{kSize / 2, kSize / 2};
   const Dab protect = dabOf(document, centre, 0.3f, 1.0f, paintBrush("mask"), kPaint);
   engine_->dab(document, "mask-constant", protect);
-  const std::vector<float> mask = texelsOf(document, BrushLayer::Mask);
+  const std::vector<float> mask = texelsOf(document, core::EditLayer::Mask);
   const std::vector<float> before = texelsOf(document, b.layer);
   const Dab dab = dabOf(document, centre, 0.6f, 1.0f, b, kPaint);
   engine_->dab(document, b.id, dab);

@@ -2,18 +2,19 @@
 // within a tolerance on a sphere with bumps and on an imported mesh, identified samples equal,
 // the mirror equal to the texture, xyz untouched, and the bumps salient where the smooth sphere
 // is not.
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/saliency.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -91,7 +92,7 @@ core::GeometryImage SaliencyTest::runOnGpu(const core::GeometryImage& image) {
   const int n = image.size(), side = n + 1;
   // The texture holds what the mirror holds, and xyz are untouched.
   const std::vector<float> texels =
-      document.texture(gpu::BrushLayer::Positions).read({0, 0, side, side});
+      document.texture(core::EditLayer::Positions).read({0, 0, side, side});
   bool same = true, xyzKept = true;
   float peak = 0, low = 1;
   for (std::size_t k = 0; k < mirror.texelCount(); ++k) {

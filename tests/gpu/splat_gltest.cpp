@@ -3,8 +3,9 @@
 // material texels keep their object-space size where the image is stretched, the uv mode's not;
 // the one-pass splat (brushLayers) writes what per-layer passes of the same body would.
 #include "brush_test_support.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/document/image_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
@@ -15,6 +16,7 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -51,7 +53,7 @@ void writeCheckerMaterial(const std::filesystem::path& folder, const std::string
                      "specular": "specular.png", "reflectivity": "reflectivity.png"}})";
 }
 
-std::vector<float> layerTexels(const GpuDocument& d, BrushLayer layer) {
+std::vector<float> layerTexels(const GpuDocument& d, core::EditLayer layer) {
   const int side = d.size() + 1;
   return d.mirrorTexels(layer, {0, 0, side, side});
 }
@@ -85,7 +87,7 @@ vec4 brush(vec4 value, BrushInput b) {
 )";
 
 float luminanceAt(const GpuDocument& d, core::Sample s) {
-  const std::vector<float> t = d.mirrorTexels(BrushLayer::Diffuse, {s.i, s.j, 1, 1});
+  const std::vector<float> t = d.mirrorTexels(core::EditLayer::Diffuse, {s.i, s.j, 1, 1});
   return (t[0] + t[1] + t[2]) / 3;
 }
 
@@ -167,13 +169,13 @@ void SplatTest::oneDabWritesAllFourAttributesInsideItsRadiusOnly() {
   const core::Sample centre{80, 64}; // away from every seam
   const float radius = 0.35f;
   const core::Vec3f c = d.document().positions.at(centre).xyz();
-  const std::vector<float> positions = layerTexels(d, BrushLayer::Positions);
-  const std::vector<float> diffuse = layerTexels(d, BrushLayer::Diffuse);
-  const std::vector<float> feature = layerTexels(d, BrushLayer::Feature);
+  const std::vector<float> positions = layerTexels(d, core::EditLayer::Positions);
+  const std::vector<float> diffuse = layerTexels(d, core::EditLayer::Diffuse);
+  const std::vector<float> feature = layerTexels(d, core::EditLayer::Feature);
   engine_->dab(d, "splat", splatDab(d, centre, radius, "stone", 0));
-  const std::vector<float> positions2 = layerTexels(d, BrushLayer::Positions);
-  const std::vector<float> diffuse2 = layerTexels(d, BrushLayer::Diffuse);
-  const std::vector<float> feature2 = layerTexels(d, BrushLayer::Feature);
+  const std::vector<float> positions2 = layerTexels(d, core::EditLayer::Positions);
+  const std::vector<float> diffuse2 = layerTexels(d, core::EditLayer::Diffuse);
+  const std::vector<float> feature2 = layerTexels(d, core::EditLayer::Feature);
 
   const int side = d.size() + 1;
   int inside = 0, movedIn = 0, colouredIn = 0, shinyIn = 0, reflectiveIn = 0;
@@ -222,7 +224,7 @@ void SplatTest::everyLayerStaysContinuousOverSeams() {
   for (core::Sample centre : {core::Sample{0, n / 3}, core::Sample{0, 0}}) {
     engine_->dab(d, "splat", splatDab(d, centre, 0.4f, "brick", 0));
     QCOMPARE(core::maxSeamGap(d.document().positions), 0.0f);
-    for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature}) {
+    for (core::EditLayer layer : {core::EditLayer::Diffuse, core::EditLayer::Feature}) {
       const int channels = GpuDocument::channels(layer);
       int compared = 0;
       for (int j = 0; j <= n; ++j)
@@ -319,9 +321,9 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
   // after each dab the copies exchange what the other wrote.
   BrushManifest relief = splat_, paint = splat_;
   relief.id = "splat-reference-relief";
-  relief.writes = {BrushLayer::Positions};
+  relief.writes = {core::EditLayer::Positions};
   paint.id = "splat-reference-paint";
-  paint.writes = {BrushLayer::Diffuse, BrushLayer::Feature};
+  paint.writes = {core::EditLayer::Diffuse, core::EditLayer::Feature};
   paint.reads = {};
   relief.mix = paint.mix = {}; // brush() bodies return the layer's value
   try {
@@ -349,18 +351,18 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
          {std::pair{core::Sample{80, 64}, 0}, std::pair{core::Sample{86, 60}, 0},
           std::pair{core::Sample{0, n / 3}, 1}, std::pair{core::Sample{76, 70}, 1}}) {
       const Dab dab = splatDab(one, centre, 0.35f, "stone", projection);
-      const std::vector<float> before = layerTexels(one, BrushLayer::Diffuse);
+      const std::vector<float> before = layerTexels(one, core::EditLayer::Diffuse);
       engine_->dab(one, "splat", dab);
       engine_->dab(reliefOnly, relief.id, dab);
       engine_->dab(paintOnly, paint.id, dab);
-      const std::vector<float> after = layerTexels(one, BrushLayer::Diffuse);
+      const std::vector<float> after = layerTexels(one, core::EditLayer::Diffuse);
       for (std::size_t k = 0; k < after.size(); ++k)
         changed += after[k] != before[k];
 
       // Positions: float32 and the same arithmetic, up to the compiler's choice of fused
       // multiply-adds: a couple of ulps (llvmpipe: the same bits, here and below).
-      const std::vector<float> p = layerTexels(one, BrushLayer::Positions);
-      const std::vector<float> pRef = layerTexels(reliefOnly, BrushLayer::Positions);
+      const std::vector<float> p = layerTexels(one, core::EditLayer::Positions);
+      const std::vector<float> pRef = layerTexels(reliefOnly, core::EditLayer::Positions);
       for (std::size_t k = 0; k < p.size(); ++k)
         QVERIFY2(std::abs(p[k] - pRef[k]) <= 4e-7f * std::max(std::abs(p[k]), 1.0f),
                  qPrintable(QString("masked %1, positions[%2]: %3 vs %4")
@@ -369,7 +371,7 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
                                 .arg(double(p[k]), 0, 'g', 9)
                                 .arg(double(pRef[k]), 0, 'g', 9)));
       // Diffuse and feature are half floats: at most one rounding step apart (2^-11 relative).
-      for (BrushLayer layer : {BrushLayer::Diffuse, BrushLayer::Feature}) {
+      for (core::EditLayer layer : {core::EditLayer::Diffuse, core::EditLayer::Feature}) {
         const std::vector<float> a = layerTexels(one, layer);
         const std::vector<float> b = layerTexels(paintOnly, layer);
         for (std::size_t k = 0; k < a.size(); ++k) {
@@ -385,7 +387,8 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
       }
       const core::TexelRect all{0, 0, side, side};
       // The mirror (pulled rect by rect, halves widened by GpuDocument) equals the textures.
-      for (BrushLayer layer : {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature}) {
+      for (core::EditLayer layer :
+           {core::EditLayer::Positions, core::EditLayer::Diffuse, core::EditLayer::Feature}) {
         const int c = GpuDocument::channels(layer);
         const std::vector<float> mirror = layerTexels(one, layer);
         const std::vector<float> texture = one.texture(layer).read({0, 0, side, side});
@@ -394,9 +397,11 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
             QVERIFY2(mirror[t * c + k] == texture[t * 4 + k],
                      qPrintable(QString("layer %1 texel %2").arg(int(layer)).arg(t)));
       }
-      reliefOnly.restore(BrushLayer::Diffuse, all, layerTexels(paintOnly, BrushLayer::Diffuse));
-      reliefOnly.restore(BrushLayer::Feature, all, layerTexels(paintOnly, BrushLayer::Feature));
-      paintOnly.restore(BrushLayer::Positions, all, pRef);
+      reliefOnly.restore(core::EditLayer::Diffuse, all,
+                         layerTexels(paintOnly, core::EditLayer::Diffuse));
+      reliefOnly.restore(core::EditLayer::Feature, all,
+                         layerTexels(paintOnly, core::EditLayer::Feature));
+      paintOnly.restore(core::EditLayer::Positions, all, pRef);
     }
     QVERIFY(changed > 1000);
     QCOMPARE(core::maxSeamGap(one.document().positions), 0.0f);
@@ -415,7 +420,7 @@ std::string SplatTest::loadError(const BrushManifest& m, const std::string& body
 void SplatTest::brushLayersMustNotWriteTheMask() {
   BrushManifest m = splat_;
   m.id = "splat-with-mask";
-  m.writes = {BrushLayer::Positions, BrushLayer::Mask};
+  m.writes = {core::EditLayer::Positions, core::EditLayer::Mask};
   const std::string error = loadError(m, readFile(splat_.shaderPath()));
   QVERIFY2(error.find("brushLayers") != std::string::npos, error.c_str());
   QVERIFY(!engine_->has(m.id));
@@ -427,8 +432,8 @@ void SplatTest::brushLayersMustNotWriteTheMask() {
 void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
   const int n = d.size(), side = n + 1;
-  const std::vector<float> diffuse = layerTexels(d, BrushLayer::Diffuse);
-  const std::vector<float> feature = layerTexels(d, BrushLayer::Feature);
+  const std::vector<float> diffuse = layerTexels(d, core::EditLayer::Diffuse);
+  const std::vector<float> feature = layerTexels(d, core::EditLayer::Feature);
   StrokeSettings settings;
   settings.brush = "splat";
   settings.radius = 0.3f;
@@ -439,21 +444,21 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   session.moveTo(start, settings.radius, settings.strength, 1.0f);
   QVERIFY(d.mirrorStale());
   // The texture holds the paint already, the mirror not yet: nothing read back per dab.
-  QVERIFY(d.texture(BrushLayer::Diffuse).read({start.i, start.j, 1, 1})[0] !=
+  QVERIFY(d.texture(core::EditLayer::Diffuse).read({start.i, start.j, 1, 1})[0] !=
           diffuse[(static_cast<std::size_t>(start.j) * side + start.i) * 4]);
-  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), diffuse);
+  QCOMPARE(layerTexels(d, core::EditLayer::Diffuse), diffuse);
   // Positions are read back after every dab (the stroke walks on them).
-  const std::vector<float> texture = d.texture(BrushLayer::Positions).read({0, 0, side, side});
-  QCOMPARE(layerTexels(d, BrushLayer::Positions), texture);
+  const std::vector<float> texture = d.texture(core::EditLayer::Positions).read({0, 0, side, side});
+  QCOMPARE(layerTexels(d, core::EditLayer::Positions), texture);
   session.moveTo(end, settings.radius, settings.strength, 1.0f);
   QVERIFY(session.dabs() > 3);
   core::Stroke undo = session.finish("splat");
   QVERIFY(!d.mirrorStale());
 
-  const std::vector<float> paint = d.texture(BrushLayer::Diffuse).read({0, 0, side, side});
-  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), paint);
-  const std::vector<float> rgba = d.texture(BrushLayer::Feature).read({0, 0, side, side});
-  const std::vector<float> mirrored = layerTexels(d, BrushLayer::Feature);
+  const std::vector<float> paint = d.texture(core::EditLayer::Diffuse).read({0, 0, side, side});
+  QCOMPARE(layerTexels(d, core::EditLayer::Diffuse), paint);
+  const std::vector<float> rgba = d.texture(core::EditLayer::Feature).read({0, 0, side, side});
+  const std::vector<float> mirrored = layerTexels(d, core::EditLayer::Feature);
   for (std::size_t t = 0; t < mirrored.size() / 3; ++t)
     for (std::size_t c = 0; c < 3; ++c)
       QCOMPARE(mirrored[t * 3 + c], rgba[t * 4 + c]);
@@ -462,9 +467,9 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   core::EditHistory history;
   history.record(std::move(undo));
   QVERIFY(history.undo(undoApplier(d)));
-  QCOMPARE(layerTexels(d, BrushLayer::Diffuse), diffuse);
-  QCOMPARE(layerTexels(d, BrushLayer::Feature), feature);
-  QCOMPARE(d.texture(BrushLayer::Diffuse).read({0, 0, side, side}), diffuse);
+  QCOMPARE(layerTexels(d, core::EditLayer::Diffuse), diffuse);
+  QCOMPARE(layerTexels(d, core::EditLayer::Feature), feature);
+  QCOMPARE(d.texture(core::EditLayer::Diffuse).read({0, 0, side, side}), diffuse);
 }
 
 // Where the bound level's texels are about a sample wide, a dab reads the nearest texel (the
@@ -475,9 +480,9 @@ void SplatTest::mapsAreReadAtTheNearestTexelUnlessMagnified() {
     GpuDocument d(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
     Dab dab = splatDab(d, {80, 64}, 0.35f, material, 0);
     dab.strength = 100; // the weight clamps to 1 over nearly all the dab: diffuse = map colour
-    const std::vector<float> positions = layerTexels(d, BrushLayer::Positions);
+    const std::vector<float> positions = layerTexels(d, core::EditLayer::Positions);
     engine_->dab(d, "splat", dab);
-    const std::vector<float> after = layerTexels(d, BrushLayer::Diffuse);
+    const std::vector<float> after = layerTexels(d, core::EditLayer::Diffuse);
     int grey = 0;
     black = white = 0;
     for (std::size_t k = 0; k < after.size(); k += 4) {
@@ -517,8 +522,8 @@ void SplatTest::mapsAreReadAtTheNearestTexelUnlessMagnified() {
 void SplatTest::aMixedLayerTakesTheBodysColourByItsAmount() {
   BrushManifest m = splat_;
   m.id = "mix-test";
-  m.writes = {BrushLayer::Diffuse};
-  m.mix = {BrushLayer::Diffuse};
+  m.writes = {core::EditLayer::Diffuse};
+  m.mix = {core::EditLayer::Diffuse};
   m.falloff = Falloff::Constant; // weight 1 over the whole radius
   m.parameters.clear();
   try {
@@ -535,14 +540,14 @@ void SplatTest::aMixedLayerTakesTheBodysColourByItsAmount() {
     // Varied, in [0, 1], and exact in half floats (the mirror then equals the texture).
     document.diffuse.texels[k] = static_cast<float>((k * 37) % 65) / 64.0f;
   GpuDocument d(document);
-  const std::vector<float> before = layerTexels(d, BrushLayer::Diffuse);
+  const std::vector<float> before = layerTexels(d, core::EditLayer::Diffuse);
   // Around the pole, tiles away from the seams: the varied paint is not seamed, and a seam pass
   // would average it.
   const core::Sample centre{128, 128};
   const float radius = 0.4f;
   const core::Vec3f c = d.document().positions.at(centre).xyz();
   engine_->dab(d, m.id, dabAt(d.document().positions, centre, radius, 1.0f));
-  const std::vector<float> after = layerTexels(d, BrushLayer::Diffuse);
+  const std::vector<float> after = layerTexels(d, core::EditLayer::Diffuse);
   const std::array<float, 3> colour{1.0f, 0.0f, 0.5f};
   int inside = 0;
   for (int k = 0; k < side * side; ++k) {
@@ -571,8 +576,8 @@ void SplatTest::aMixedLayerTakesTheBodysColourByItsAmount() {
 void SplatTest::aMixedLayerNeedsBrushLayersAndIsNotSampled() {
   BrushManifest m = splat_;
   m.parameters.clear();
-  m.writes = {BrushLayer::Diffuse};
-  m.mix = {BrushLayer::Diffuse};
+  m.writes = {core::EditLayer::Diffuse};
+  m.mix = {core::EditLayer::Diffuse};
   m.id = "mix-with-brush";
   const std::string perLayer = loadError(m, "vec4 brush(vec4 v, BrushInput b) { return v; }");
   QVERIFY2(perLayer.find("\"mix\" needs a brushLayers() body") != std::string::npos,
@@ -589,7 +594,7 @@ void SplatTest::aMixedLayerNeedsBrushLayersAndIsNotSampled() {
 void SplatTest::enumParametersAreConstantsPerValue() {
   BrushManifest m = splat_;
   m.id = "enum-test";
-  m.writes = {BrushLayer::Diffuse};
+  m.writes = {core::EditLayer::Diffuse};
   m.mix = {};
   m.falloff = Falloff::Constant;
   BrushParameter tone;
@@ -610,7 +615,7 @@ void SplatTest::enumParametersAreConstantsPerValue() {
     Dab dab = dabAt(d.document().positions, centre, 0.3f, 1.0f);
     dab.parameters["tone"] = {static_cast<float>(value), 0, 0, 0};
     engine_->dab(d, m.id, dab);
-    QCOMPARE(d.mirrorTexels(BrushLayer::Diffuse, {centre.i, centre.j, 1, 1})[0],
+    QCOMPARE(d.mirrorTexels(core::EditLayer::Diffuse, {centre.i, centre.j, 1, 1})[0],
              static_cast<float>(value) / 2.0f);
   }
 }

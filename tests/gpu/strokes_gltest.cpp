@@ -5,8 +5,9 @@
 // it changed for redrawing, and its undo record restores the start bit-exactly.
 
 #include "brush_test_support.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/seaming.h"
 #include "octaclay/gpu/gl_context.h"
@@ -14,6 +15,7 @@
 #include "octaclay/gpu/stroke.h"
 
 #include <QtTest>
+
 #include <cstring>
 #include <optional>
 #include <random>
@@ -24,14 +26,14 @@ using namespace octaclay::gpu::testing;
 
 namespace {
 
-constexpr BrushLayer kLayers[] = {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature,
-                                  BrushLayer::Mask};
+constexpr core::EditLayer kLayers[] = {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                       core::EditLayer::Feature, core::EditLayer::Mask};
 
 // Every layer's texels as the mirror holds them (fill values expanded).
 std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
   const int side = document.size() + 1;
   std::vector<std::vector<float>> layers;
-  for (BrushLayer layer : kLayers)
+  for (core::EditLayer layer : kLayers)
     layers.push_back(document.mirrorTexels(layer, {0, 0, side, side}));
   return layers;
 }
@@ -40,9 +42,9 @@ std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
 std::vector<std::vector<float>> textureSnapshot(GpuDocument& document) {
   const int side = document.size() + 1;
   std::vector<std::vector<float>> layers;
-  for (BrushLayer layer : kLayers) {
+  for (core::EditLayer layer : kLayers) {
     std::vector<float> texels = document.texture(layer).read({0, 0, side, side});
-    if (layer == BrushLayer::Feature) {
+    if (layer == core::EditLayer::Feature) {
       std::vector<float> rgb;
       for (std::size_t t = 0; t < texels.size(); t += 4)
         rgb.insert(rgb.end(), {texels[t], texels[t + 1], texels[t + 2]});

@@ -4,6 +4,7 @@
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 
 #include <QComboBox>
@@ -12,6 +13,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QtTest>
+
 #include <cmath>
 
 using namespace octaclay;

@@ -6,8 +6,9 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "main_window.h"
-#include "octaclay/core/geometry/base_shapes.h"
 #include "viewport_widget.h"
+
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <QFile>
 #include <QImage>
@@ -16,6 +17,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <cmath>
 #include <memory>
 

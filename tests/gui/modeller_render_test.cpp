@@ -3,9 +3,10 @@
 #include "brush_panel.h"
 #include "layers_panel.h"
 #include "main_window.h"
+#include "viewport_widget.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/seaming.h"
-#include "viewport_widget.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -16,6 +17,7 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>

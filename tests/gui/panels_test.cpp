@@ -7,6 +7,7 @@
 #include "brush_panel.h"
 #include "layers_panel.h"
 #include "lod_panel.h"
+
 #include "octaclay/gpu/brush_manifest.h"
 
 #include <QCheckBox>
@@ -23,6 +24,7 @@
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -448,12 +450,12 @@ private slots:
   }
 
   void layersKeepAndPersistVisibilityAndTarget() {
-    using gpu::BrushLayer;
+    using core::EditLayer;
     {
       LayersPanel panel;
-      QCOMPARE(panel.paintTarget(), BrushLayer::Diffuse);
-      for (const BrushLayer layer :
-           {BrushLayer::Positions, BrushLayer::Diffuse, BrushLayer::Feature, BrushLayer::Mask})
+      QCOMPARE(panel.paintTarget(), core::EditLayer::Diffuse);
+      for (const core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                          core::EditLayer::Feature, core::EditLayer::Mask})
         QVERIFY(panel.isVisible(layer));
       auto* positions = panel.findChild<QCheckBox*>(QStringLiteral("visible-positions"));
       QVERIFY(positions);
@@ -462,39 +464,39 @@ private slots:
 
       QSignalSpy visibility(&panel, &LayersPanel::visibilityChanged);
       QSignalSpy target(&panel, &LayersPanel::paintTargetChanged);
-      panel.setVisible(BrushLayer::Positions, false);
-      QVERIFY(panel.isVisible(BrushLayer::Positions));
+      panel.setVisible(core::EditLayer::Positions, false);
+      QVERIFY(panel.isVisible(core::EditLayer::Positions));
       QCOMPARE(visibility.count(), 0);
-      panel.setVisible(BrushLayer::Mask, false);
-      QVERIFY(!panel.isVisible(BrushLayer::Mask));
+      panel.setVisible(core::EditLayer::Mask, false);
+      QVERIFY(!panel.isVisible(core::EditLayer::Mask));
       QVERIFY(!panel.findChild<QCheckBox*>(QStringLiteral("visible-mask"))->isChecked());
       panel.findChild<QCheckBox*>(QStringLiteral("visible-feature"))->setChecked(false);
-      QVERIFY(!panel.isVisible(BrushLayer::Feature));
+      QVERIFY(!panel.isVisible(core::EditLayer::Feature));
       QCOMPARE(visibility.count(), 2);
 
       panel.findChild<QRadioButton*>(QStringLiteral("target-feature"))->setChecked(true);
-      QCOMPARE(panel.paintTarget(), BrushLayer::Feature);
+      QCOMPARE(panel.paintTarget(), core::EditLayer::Feature);
       QCOMPARE(target.count(), 1);
       QVERIFY(!panel.findChild<QRadioButton*>(QStringLiteral("target-diffuse"))->isChecked());
-      panel.setPaintTarget(BrushLayer::Positions); // not paintable: ignored
-      QCOMPARE(panel.paintTarget(), BrushLayer::Feature);
+      panel.setPaintTarget(core::EditLayer::Positions); // not paintable: ignored
+      QCOMPARE(panel.paintTarget(), core::EditLayer::Feature);
       QCOMPARE(target.count(), 1);
 
-      QCOMPARE(panel.layerStateText(BrushLayer::Diffuse), QStringLiteral("uniform"));
-      panel.setLayerState(BrushLayer::Diffuse, true);
-      QVERIFY(panel.isPainted(BrushLayer::Diffuse));
-      QCOMPARE(panel.layerStateText(BrushLayer::Diffuse), QStringLiteral("painted"));
+      QCOMPARE(panel.layerStateText(core::EditLayer::Diffuse), QStringLiteral("uniform"));
+      panel.setLayerState(core::EditLayer::Diffuse, true);
+      QVERIFY(panel.isPainted(core::EditLayer::Diffuse));
+      QCOMPARE(panel.layerStateText(core::EditLayer::Diffuse), QStringLiteral("painted"));
       QCOMPARE(panel.findChild<QLabel*>(QStringLiteral("state-diffuse"))->text(),
                QStringLiteral("painted"));
     }
     LayersPanel panel;
-    QCOMPARE(panel.paintTarget(), BrushLayer::Feature);
+    QCOMPARE(panel.paintTarget(), core::EditLayer::Feature);
     QVERIFY(panel.findChild<QRadioButton*>(QStringLiteral("target-feature"))->isChecked());
-    QVERIFY(!panel.isVisible(BrushLayer::Mask));
-    QVERIFY(!panel.isVisible(BrushLayer::Feature));
-    QVERIFY(panel.isVisible(BrushLayer::Diffuse));
+    QVERIFY(!panel.isVisible(core::EditLayer::Mask));
+    QVERIFY(!panel.isVisible(core::EditLayer::Feature));
+    QVERIFY(panel.isVisible(core::EditLayer::Diffuse));
     QVERIFY(!panel.findChild<QCheckBox*>(QStringLiteral("visible-mask"))->isChecked());
-    QVERIFY(!panel.isPainted(BrushLayer::Diffuse)); // state is the document's, not persisted
+    QVERIFY(!panel.isPainted(core::EditLayer::Diffuse)); // state is the document's, not persisted
   }
 
   void lodListsLevelsAndCounts() {

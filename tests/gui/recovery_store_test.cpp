@@ -2,23 +2,25 @@
 // restarts after it are simulated inside this one process by giving each store a PID of its
 // own: one that no process has (crashed) or this process's real one (running).
 
-#include "octaclay/core/geometry/base_shapes.h"
+#include "recovery_store.h"
+
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
-#include "recovery_store.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <signal.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <functional>
 #include <memory>
-#include <signal.h>
-#include <sys/resource.h>
-#include <unistd.h>
 
 using octaclay::app::RecoveryStore;
 namespace core = octaclay::core;

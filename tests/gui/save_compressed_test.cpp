@@ -4,11 +4,12 @@
 // for less error), and the options it hands back round-trip through a written .ocz that
 // File › Open's reader (readModelFile) opens again.
 
-#include "octaclay/core/geometry/base_shapes.h"
+#include "save_compressed_dialog.h"
+
 #include "octaclay/core/codec/codec.h"
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document_io.h"
-#include "save_compressed_dialog.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <QComboBox>
 #include <QFileInfo>
@@ -16,6 +17,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <cmath>
 
 using namespace octaclay;

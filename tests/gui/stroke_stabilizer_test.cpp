@@ -5,6 +5,7 @@
 #include "stroke_stabilizer.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <limits>
 #include <numbers>

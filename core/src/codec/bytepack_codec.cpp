@@ -9,6 +9,7 @@
 #include "codec/codec_list.h"
 #include "codec/grid.h"
 #include "codec/zstd_blocks.h"
+
 #include "octaclay/core/error.h"
 
 #include <cmath>

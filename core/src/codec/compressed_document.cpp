@@ -11,12 +11,14 @@
 
 #include "codec/byte_io.h"
 #include "detail/atomic_file.h"
+
 #include "octaclay/core/error.h"
+
+#include <zlib.h>
 
 #include <array>
 #include <cmath>
 #include <fstream>
-#include <zlib.h>
 
 namespace octaclay::core {
 namespace {

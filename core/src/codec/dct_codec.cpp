@@ -10,12 +10,14 @@
 #include "codec/codec_list.h"
 #include "codec/grid.h"
 #include "codec/zstd_blocks.h"
+
 #include "octaclay/core/error.h"
+
+#include <opencv2/core.hpp>
 
 #include <array>
 #include <cmath>
 #include <limits>
-#include <opencv2/core.hpp>
 
 namespace octaclay::core {
 namespace {

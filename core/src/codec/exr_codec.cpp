@@ -5,6 +5,7 @@
 #include "codec/channel_stats.h"
 #include "codec/codec_list.h"
 #include "codec/grid.h"
+
 #include "octaclay/core/error.h"
 
 #include <ImfChannelList.h>
@@ -13,10 +14,11 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <half.h>
+
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <half.h>
 #include <thread>
 
 namespace octaclay::core {

@@ -14,6 +14,7 @@
 #include "codec/codec_list.h"
 #include "codec/grid.h"
 #include "codec/zstd_blocks.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/octahedral.h"
 

@@ -2,6 +2,7 @@
 
 #include "codec/wavelet_range_coder.h"
 #include "codec/wavelet_transform.h"
+
 #include "octaclay/core/geometry/octahedral.h"
 
 #include <algorithm>

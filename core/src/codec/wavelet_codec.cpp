@@ -4,6 +4,7 @@
 #include "codec/wavelet_bands.h"
 #include "codec/wavelet_quantizer.h"
 #include "codec/wavelet_transform.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/normals.h"

@@ -2,6 +2,7 @@
 
 #include "codec/wavelet_transform.h"
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/vec.h"
 

@@ -2,8 +2,9 @@
 
 #include "octaclay/core/error.h"
 
-#include <vector>
 #include <zstd.h>
+
+#include <vector>
 
 namespace octaclay::core::detail {
 

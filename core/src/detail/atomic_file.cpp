@@ -2,9 +2,10 @@
 
 #include "octaclay/core/error.h"
 
+#include <unistd.h>
+
 #include <random>
 #include <system_error>
-#include <unistd.h>
 
 namespace octaclay::core::detail {
 namespace fs = std::filesystem;

@@ -1,6 +1,7 @@
 #include "octaclay/core/document/document_info.h"
 
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/geometry/seaming.h"
 
 #include <atomic>

@@ -1,6 +1,7 @@
 #include "octaclay/core/document/document_io.h"
 
 #include "detail/atomic_file.h"
+
 #include "octaclay/core/error.h"
 
 #include <ImfChannelList.h>
@@ -11,11 +12,12 @@
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
+#include <half.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
-#include <half.h>
 #include <memory>
 #include <thread>
 

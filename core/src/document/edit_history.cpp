@@ -46,13 +46,13 @@ int layerIndex(EditLayer layer) {
   return index;
 }
 
-std::size_t area(Region r) {
+std::size_t area(TexelRect r) {
   return static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
 }
 
 // Checks that region lies inside a side × side image and texels holds it with `channels` floats
 // per texel.
-void checkRegion(Region region, int side, int channels, std::size_t floats) {
+void checkRegion(TexelRect region, int side, int channels, std::size_t floats) {
   if (region.width <= 0 || region.height <= 0 || region.x < 0 || region.y < 0 ||
       region.x > side - region.width || region.y > side - region.height)
     invalid("edit history: region (" + std::to_string(region.x) + ", " + std::to_string(region.y) +
@@ -67,7 +67,7 @@ void checkRegion(Region region, int side, int channels, std::size_t floats) {
 
 // Copies a row-major region of texels into a row-major side × side image of `channels` floats
 // per texel, bits as they are.
-void writeRegion(float* image, int side, int channels, Region region,
+void writeRegion(float* image, int side, int channels, TexelRect region,
                  std::span<const float> texels) {
   const std::size_t c = static_cast<std::size_t>(channels);
   const std::size_t rowFloats = static_cast<std::size_t>(region.width) * c;
@@ -118,8 +118,8 @@ void TileChange::apply(TileState state, const TileApplier& applyFn) const {
     // a partial last row. Each becomes one rectangle so a whole changed tile is one call.
     std::size_t row = pos / w, col = pos % w, remaining = count, done = 0;
     auto emit = [&](std::size_t x, std::size_t y, std::size_t width, std::size_t height) {
-      const Region part{region.x + static_cast<int>(x), region.y + static_cast<int>(y),
-                        static_cast<int>(width), static_cast<int>(height)};
+      const TexelRect part{region.x + static_cast<int>(x), region.y + static_cast<int>(y),
+                           static_cast<int>(width), static_cast<int>(height)};
       applyFn(layer, part, texels.subspan(done * c, width * height * c));
       done += width * height;
       remaining -= width * height;
@@ -187,7 +187,7 @@ int StrokeRecorder::tilesPerSide(int imageSide) {
   return imageSide <= 0 ? 0 : (imageSide + kTileSize - 1) / kTileSize;
 }
 
-Region StrokeRecorder::tileRegion(int imageSide, int tileX, int tileY) {
+TexelRect StrokeRecorder::tileRegion(int imageSide, int tileX, int tileY) {
   const int tiles = tilesPerSide(imageSide);
   if (tileX < 0 || tileY < 0 || tileX >= tiles || tileY >= tiles)
     invalid("edit history: tile (" + std::to_string(tileX) + ", " + std::to_string(tileY) +
@@ -201,7 +201,7 @@ Region StrokeRecorder::tileRegion(int imageSide, int tileX, int tileY) {
 void StrokeRecorder::addTile(EditLayer layer, int tileX, int tileY, int channels,
                              std::span<const float> before, std::span<const float> after) {
   const int li = layerIndex(layer);
-  const Region region = tileRegion(side_, tileX, tileY);
+  const TexelRect region = tileRegion(side_, tileX, tileY);
   if (channels != editLayerChannels(layer))
     invalid(std::string("StrokeRecorder::addTile: the ") + layerName(layer) + " layer has " +
             std::to_string(editLayerChannels(layer)) + " channels, not " +
@@ -299,7 +299,7 @@ void validateStroke(const Stroke& s) {
             "; build strokes with StrokeRecorder");
   std::size_t changed = 0;
   for (const TileChange& t : s.tiles) {
-    const Region expected = StrokeRecorder::tileRegion(s.imageSide, t.tileX, t.tileY);
+    const TexelRect expected = StrokeRecorder::tileRegion(s.imageSide, t.tileX, t.tileY);
     if (t.region != expected || t.channels != editLayerChannels(t.layer))
       invalid("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
               std::to_string(t.tileY) +
@@ -384,7 +384,7 @@ void EditHistory::clear() {
 // Appliers
 
 TileApplier applierFor(GeometryImage& image) {
-  return [&image](EditLayer layer, Region region, std::span<const float> texels) {
+  return [&image](EditLayer layer, TexelRect region, std::span<const float> texels) {
     if (layer != EditLayer::Positions)
       invalid(std::string("applierFor(GeometryImage&): cannot write the ") + layerName(layer) +
               " layer into a position image; use applierFor(Document&)");
@@ -395,7 +395,7 @@ TileApplier applierFor(GeometryImage& image) {
 }
 
 TileApplier applierFor(Document& doc) {
-  return [&doc](EditLayer layer, Region region, std::span<const float> texels) {
+  return [&doc](EditLayer layer, TexelRect region, std::span<const float> texels) {
     if (layer == EditLayer::Positions) {
       applierFor(doc.positions)(layer, region, texels);
       return;

@@ -1,12 +1,14 @@
 #include "octaclay/core/document/image_io.h"
 
 #include "detail/atomic_file.h"
+
 #include "octaclay/core/error.h"
 
-#include <algorithm>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include <algorithm>
 #include <system_error>
 
 namespace octaclay::core {

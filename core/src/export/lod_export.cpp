@@ -5,7 +5,10 @@
 
 #include "detail/atomic_file.h"
 #include "lod/normal_map_encoding.h"
+
 #include "octaclay/core/error.h"
+
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +16,6 @@
 #include <fstream>
 #include <string>
 #include <system_error>
-#include <tiny_gltf.h>
 
 namespace octaclay::core {
 namespace fs = std::filesystem;

@@ -1,11 +1,13 @@
 #include "octaclay/core/export/mesh_io.h"
 
 #include "detail/atomic_file.h"
+
 #include "octaclay/core/error.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+
 #include <algorithm>
 #include <cctype>
 

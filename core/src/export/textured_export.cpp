@@ -10,11 +10,17 @@
 
 #include "detail/atomic_file.h"
 #include "geometry/subsampling.h"
-#include "octaclay/core/error.h"
+
 #include "octaclay/core/document/image_io.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <array>
@@ -23,12 +29,8 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <string>
 #include <system_error>
-#include <tiny_gltf.h>
 
 namespace octaclay::core {
 namespace fs = std::filesystem;

@@ -1,6 +1,7 @@
 #include "octaclay/core/geometry/base_shapes.h"
 
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/geometry/seaming.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #include "octaclay/core/geometry/mesh_extraction.h"
 
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/geometry/vertex_index.h"
 
 namespace octaclay::core {

@@ -8,6 +8,7 @@
 #include "octaclay/core/import/mesh_validation.h"
 
 #include "import/mesh_readers.h"
+
 #include "octaclay/core/error.h"
 
 #include <algorithm>

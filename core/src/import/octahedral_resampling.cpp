@@ -4,8 +4,9 @@
 #include "octaclay/core/import/octahedral_resampling.h"
 
 #include "detail/parallel_rows.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"

@@ -3,6 +3,7 @@
 // Small geometric helpers shared by the spherical parameterization's stages.
 
 #include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 #include <limits>

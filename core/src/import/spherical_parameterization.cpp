@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -4,10 +4,11 @@
 #include "import/spherical_stretch.h"
 
 #include <Eigen/Core>
+#include <queue>
+
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
-#include <queue>
 
 namespace octaclay::core::detail {
 

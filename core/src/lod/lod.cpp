@@ -3,13 +3,14 @@
 #include "octaclay/core/lod/lod.h"
 
 #include "lod/adaptive.h"
+#include "lod/quadric_collapse.h"
 #include "lod/refit.h"
 #include "lod/resampling.h"
-#include "lod/quadric_collapse.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
-#include "octaclay/core/lod/vertex_collapse.h"
 #include "octaclay/core/geometry/vertex_index.h"
+#include "octaclay/core/lod/vertex_collapse.h"
 
 #include <algorithm>
 #include <string>

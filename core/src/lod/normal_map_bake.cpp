@@ -3,10 +3,11 @@
 // mesh"), and their tangent-space form relative to the LOD's own frame.
 
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod/lod_export.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/lod/lod_export.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,17 +3,19 @@
 
 #include "detail/atomic_file.h"
 #include "lod/normal_map_encoding.h"
+
 #include "octaclay/core/error.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 namespace octaclay::core {

@@ -6,6 +6,7 @@
 #include "lod/resampling.h"
 
 #include "detail/parallel_rows.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/seaming.h"
 

@@ -1,8 +1,9 @@
 // CPU reference of the saliency pass (lod.h, SaliencyOptions): curvature as the change of
 // normal, then Lee et al. 2005 centre-surround differences of Gaussian-blurred curvature.
 #include "detail/parallel_rows.h"
-#include "octaclay/core/lod/lod.h"
+
 #include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/lod/lod.h"
 
 #include <algorithm>
 #include <cmath>

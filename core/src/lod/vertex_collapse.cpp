@@ -1,11 +1,13 @@
 #include "octaclay/core/lod/vertex_collapse.h"
 
 #include "lod/quadric_collapse.h"
+
 #include "octaclay/core/error.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
 #include <algorithm>
 #include <cmath>
 #include <string>

@@ -1,15 +1,17 @@
 #include "octaclay/core/measure/rd_plot.h"
 
 #include "detail/atomic_file.h"
+
 #include "octaclay/core/error.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 namespace octaclay::core {
 namespace {

@@ -2,6 +2,7 @@
 #include "octaclay/core/measure/surface_distance.h"
 
 #include "detail/aabb_tree.h"
+
 #include "octaclay/core/error.h"
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 #include "codec_test_support.h"
 
 #include <QtTest>
+
 #include <random>
 
 using namespace octaclay::core;

@@ -8,6 +8,7 @@
 #include "codec_test_support.h"
 
 #include <QtTest>
+
 #include <bit>
 #include <cstdlib>
 #include <iostream>

@@ -2,10 +2,12 @@
 // values), seams as copies, and at most 0.6× EXR ZIP's size on a smooth model.
 
 #include "codec_test_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/seaming.h"
 
 #include <QtTest>
+
 #include <limits>
 #include <random>
 

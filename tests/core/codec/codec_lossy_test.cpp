@@ -3,6 +3,7 @@
 // refused.
 
 #include "codec_test_support.h"
+
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/seaming.h"
 

@@ -6,6 +6,7 @@
 #include "codec_test_support.h"
 
 #include <QtTest>
+
 #include <random>
 #include <set>
 

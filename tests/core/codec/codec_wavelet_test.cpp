@@ -1,19 +1,20 @@
-#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/codec/wavelet_codec.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
-#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
-#include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/measure/surface_distance.h"
-#include "octaclay/core/codec/wavelet_codec.h"
 
 #include <QElapsedTimer>
 #include <QtTest>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

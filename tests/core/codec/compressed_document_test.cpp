@@ -3,16 +3,18 @@
 // truncation, unknown codec, missing file).
 
 #include "codec_test_support.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/seaming.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include <zlib.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <zlib.h>
 
 using namespace octaclay::core;
 using namespace octaclay::core::testing;

@@ -1,10 +1,10 @@
 // Native document I/O: bit-exact round trips, headers, and every way a file can be wrong
 // (foreign EXR, truncated, missing channels, bad size, unwritable paths, failed overwrites).
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -13,6 +13,8 @@
 #include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
 #include <QtTest>
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -23,7 +25,6 @@
 #include <limits>
 #include <set>
 #include <string>
-#include <sys/resource.h>
 #include <vector>
 
 using namespace octaclay::core;

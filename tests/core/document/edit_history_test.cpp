@@ -7,6 +7,7 @@
 #include "octaclay/core/geometry/geometry_image.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -48,7 +49,7 @@ bool sameBits(const GeometryImage& a, const GeometryImage& b) {
 }
 
 // The texels of region r of a position image, row-major, 4 floats each, bits as stored.
-std::vector<float> readTile(const GeometryImage& img, Region r) {
+std::vector<float> readTile(const GeometryImage& img, TexelRect r) {
   std::vector<float> out(std::size_t(r.width) * std::size_t(r.height) * 4);
   for (int row = 0; row < r.height; ++row)
     std::memcpy(out.data() + std::size_t(row) * std::size_t(r.width) * 4, &img.at(r.x, r.y + row),
@@ -77,7 +78,7 @@ Stroke recordTiles(const GeometryImage& before, const GeometryImage& after,
                    const std::vector<std::pair<int, int>>& tiles, const std::string& label) {
   StrokeRecorder rec(before.side());
   for (auto [tx, ty] : tiles) {
-    const Region r = StrokeRecorder::tileRegion(before.side(), tx, ty);
+    const TexelRect r = StrokeRecorder::tileRegion(before.side(), tx, ty);
     rec.addTile(EditLayer::Positions, tx, ty, 4, readTile(before, r), readTile(after, r));
   }
   return rec.finish(label);
@@ -142,18 +143,18 @@ void EditHistoryTest::tileGeometry() {
   QCOMPARE(StrokeRecorder::tilesPerSide(1025), 17);
   QCOMPARE(StrokeRecorder::tilesPerSide(64), 1);
   QCOMPARE(StrokeRecorder::tilesPerSide(65), 2);
-  QCOMPARE(StrokeRecorder::tileRegion(257, 0, 0), (Region{0, 0, 64, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 3, 1), (Region{192, 64, 64, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 2), (Region{256, 128, 1, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 4), (Region{256, 256, 1, 1}));
-  QCOMPARE(StrokeRecorder::tileRegion(3, 0, 0), (Region{0, 0, 3, 3}));
+  QCOMPARE(StrokeRecorder::tileRegion(257, 0, 0), (TexelRect{0, 0, 64, 64}));
+  QCOMPARE(StrokeRecorder::tileRegion(257, 3, 1), (TexelRect{192, 64, 64, 64}));
+  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 2), (TexelRect{256, 128, 1, 64}));
+  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 4), (TexelRect{256, 256, 1, 1}));
+  QCOMPARE(StrokeRecorder::tileRegion(3, 0, 0), (TexelRect{0, 0, 3, 3}));
   // Tiles cover the image exactly once.
   for (int side : {3, 65, 129, 257}) {
     std::vector<int> cover(std::size_t(side) * std::size_t(side), 0);
     const int t = StrokeRecorder::tilesPerSide(side);
     for (int ty = 0; ty < t; ++ty)
       for (int tx = 0; tx < t; ++tx) {
-        const Region r = StrokeRecorder::tileRegion(side, tx, ty);
+        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
         for (int j = r.y; j < r.y + r.height; ++j)
           for (int i = r.x; i < r.x + r.width; ++i)
             ++cover[std::size_t(j) * std::size_t(side) + std::size_t(i)];
@@ -195,7 +196,7 @@ void EditHistoryTest::randomStrokesUndoRedo() {
   // stroke's changed count.
   std::size_t written = 0;
   const TileApplier write = applierFor(img);
-  const TileApplier counting = [&](EditLayer layer, Region r, std::span<const float> texels) {
+  const TileApplier counting = [&](EditLayer layer, TexelRect r, std::span<const float> texels) {
     written += std::size_t(r.width) * std::size_t(r.height);
     write(layer, r, texels);
   };
@@ -288,7 +289,7 @@ void EditHistoryTest::memoryFollowsChangedTexels() {
   // with a stride), and records `recordTiles` (the changed tile always included).
   auto strokeBytes = [&](int count, int stride, bool allTiles) {
     GeometryImage after = base;
-    const Region r = StrokeRecorder::tileRegion(base.side(), 1, 1);
+    const TexelRect r = StrokeRecorder::tileRegion(base.side(), 1, 1);
     for (int k = 0; k < count; ++k) {
       const int t = (k * stride) % (r.width * r.height);
       after.at(r.x + t % r.width, r.y + t / r.width).x += 0.25f;
@@ -489,9 +490,9 @@ void EditHistoryTest::documentLayers() {
   const std::vector<float> diffuseFill(doc.diffuse.fill.begin(), doc.diffuse.fill.begin() + 4);
 
   // Paint diffuse in tile (1, 0) (1 × 64 texels) and the mask in tile (0, 0) (64 × 64).
-  const Region rd = StrokeRecorder::tileRegion(side, 1, 0);
-  const Region rm = StrokeRecorder::tileRegion(side, 0, 0);
-  QCOMPARE(rd, (Region{64, 0, 1, 64}));
+  const TexelRect rd = StrokeRecorder::tileRegion(side, 1, 0);
+  const TexelRect rm = StrokeRecorder::tileRegion(side, 0, 0);
+  QCOMPARE(rd, (TexelRect{64, 0, 1, 64}));
   std::vector<float> dBefore, dAfter, mBefore(std::size_t(rm.width * rm.height), 1.0f), mAfter;
   for (int k = 0; k < rd.width * rd.height; ++k)
     dBefore.insert(dBefore.end(), diffuseFill.begin(), diffuseFill.end());
@@ -540,7 +541,7 @@ void EditHistoryTest::documentLayers() {
 
 void EditHistoryTest::badInputThrows() {
   const int side = 257;
-  const Region r = StrokeRecorder::tileRegion(side, 0, 0);
+  const TexelRect r = StrokeRecorder::tileRegion(side, 0, 0);
   const std::vector<float> tile(std::size_t(r.width * r.height * 4), 1.0f);
   std::vector<float> changed = tile;
   changed[0] = 2.0f;
@@ -576,7 +577,7 @@ void EditHistoryTest::badInputThrows() {
   QCOMPARE(history.undoCount(), std::size_t(1));
   // Another image size in the same history.
   StrokeRecorder small(65);
-  const Region rs = StrokeRecorder::tileRegion(65, 0, 0);
+  const TexelRect rs = StrokeRecorder::tileRegion(65, 0, 0);
   std::vector<float> a(std::size_t(rs.width * rs.height * 4), 0.0f), b = a;
   b[3] = 1.0f;
   small.addTile(EditLayer::Positions, 0, 0, 4, a, b);
@@ -595,7 +596,7 @@ void EditHistoryTest::badInputThrows() {
   QCOMPARE(history.redoCount(), std::size_t(0));
   // An empty stroke is ignored and does not clear the redo steps.
   GeometryImage img(256);
-  TileApplier paint = [](EditLayer, Region, std::span<const float>) {};
+  TileApplier paint = [](EditLayer, TexelRect, std::span<const float>) {};
   QVERIFY(history.undo(paint));
   history.record(StrokeRecorder(side).finish("empty"));
   QCOMPARE(history.redoCount(), std::size_t(1));
@@ -605,9 +606,9 @@ void EditHistoryTest::badInputThrows() {
   const TileApplier apply = applierFor(img);
   EXPECT_INVALID(history.redo(apply)); // the stroke also holds a diffuse tile
   QCOMPARE(history.redoCount(), std::size_t(1));
-  EXPECT_INVALID(apply(EditLayer::Positions, Region{250, 0, 8, 1}, std::vector<float>(32)));
-  EXPECT_INVALID(apply(EditLayer::Positions, Region{0, 0, 2, 1}, std::vector<float>(4)));
-  EXPECT_INVALID(apply(EditLayer::Positions, Region{-1, 0, 1, 1}, std::vector<float>(4)));
+  EXPECT_INVALID(apply(EditLayer::Positions, TexelRect{250, 0, 8, 1}, std::vector<float>(32)));
+  EXPECT_INVALID(apply(EditLayer::Positions, TexelRect{0, 0, 2, 1}, std::vector<float>(4)));
+  EXPECT_INVALID(apply(EditLayer::Positions, TexelRect{-1, 0, 1, 1}, std::vector<float>(4)));
   std::vector<float> wrong(5);
   EXPECT_INVALID(s.tiles[0].patch(TileState::Before, wrong));
   GeometryImage tiny(64); // side 65: a 257 stroke's tiles fall outside it

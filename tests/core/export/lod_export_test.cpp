@@ -5,19 +5,22 @@
 // texture coordinates tile the image square once; failures leave no file behind.
 
 #include "lod/lod_test_support.h"
-#include "octaclay/core/error.h"
+
 #include "octaclay/core/document/image_io.h"
-#include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
+#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/lod_export.h"
 
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <tiny_gltf.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -28,7 +31,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <tiny_gltf.h>
 #include <vector>
 
 using namespace octaclay::core;

@@ -1,13 +1,14 @@
 // Mesh export and import through OpenMesh: OBJ, PLY, STL and OFF round trips of extracted meshes,
 // and the errors for unknown extensions and unwritable paths.
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -3,16 +3,18 @@
 // tinygltf's loader (octaclay_core links the Debian tinygltf library privately, which puts it
 // on this test's link line too); and the errors.
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/error.h"
 #include "octaclay/core/document/image_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/export/textured_export.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
-#include "octaclay/core/export/textured_export.h"
 #include "octaclay/core/geometry/vertex_index.h"
 
 #include <QtTest>
+#include <tiny_gltf.h>
+
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -21,7 +23,6 @@
 #include <functional>
 #include <sstream>
 #include <string>
-#include <tiny_gltf.h>
 #include <vector>
 
 using namespace octaclay::core;

@@ -9,6 +9,7 @@
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <QtTest>
+
 #include <array>
 #include <cmath>
 #include <random>

@@ -1,13 +1,14 @@
 // Mesh extraction from the geometry image: counts, closedness, orientation and LOD subsampling.
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/geometry/vertex_index.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

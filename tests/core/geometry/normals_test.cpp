@@ -7,6 +7,7 @@
 #include "octaclay/core/geometry/octahedral.h"
 
 #include <QtTest>
+
 #include <array>
 #include <cmath>
 #include <vector>

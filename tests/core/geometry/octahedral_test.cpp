@@ -8,6 +8,7 @@
 #include "octaclay/core/geometry/vertex_index.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -6,6 +6,7 @@
 #include "octaclay/core/geometry/ray_pick.h"
 
 #include <QtTest>
+
 #include <random>
 
 using namespace octaclay::core;
@@ -46,7 +47,8 @@ void RayPickTest::hitsTheSampleUnderTheRay() {
     // Exact to one sample: the hit is within one sample spacing of the target's position, and
     // the reported sample is the target or one of its neighbours (through identification).
     // The ray passes through the sample's own position, a vertex of the mesh.
-    QVERIFY2(length(hit->position - p) < 1e-5f, qPrintable(QString::number(length(hit->position - p))));
+    QVERIFY2(length(hit->position - p) < 1e-5f,
+             qPrintable(QString::number(length(hit->position - p))));
     const Vec3f found = image.at(hit->sample).xyz();
     QVERIFY2(length(found - p) <= 1.5f * 3.1416f * 2.0f / float(n),
              qPrintable(QString("(%1,%2) picked (%3,%4)")

@@ -6,6 +6,7 @@
 #include "octaclay/core/geometry/tile_bounds.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <random>
 #include <set>

@@ -2,16 +2,18 @@
 // reach the diffuse layer of the imported document, checked against values computed here
 // independently; the shared meshes whose materials are absent import plain, with a note.
 
-#include "octaclay/core/error.h"
+#include "test_meshes.h"
+
 #include "octaclay/core/document/image_io.h"
-#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "test_meshes.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <algorithm>
 #include <array>
 #include <charconv>

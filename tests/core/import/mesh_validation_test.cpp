@@ -4,14 +4,15 @@
 // non-manifold edges, pinches, handles) is refused with an Error naming the problem; small holes
 // are filled on request.
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
-#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
+#include "octaclay/core/import/mesh_validation.h"
 
 #include <QtTest>
+
 #include <algorithm>
 #include <array>
 #include <bit>

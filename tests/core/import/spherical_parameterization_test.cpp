@@ -1,15 +1,17 @@
-#include "octaclay/core/geometry/base_shapes.h"
+#include "test_meshes.h"
+
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
-#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "test_meshes.h"
 
 #include <QElapsedTimer>
 #include <QtTest>
+
 #include <algorithm>
 #include <cmath>
 #include <map>

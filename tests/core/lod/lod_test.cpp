@@ -4,16 +4,18 @@
 // the grid where the surface has flat faces and sharp edges; bad arguments name their value.
 
 #include "lod_test_support.h"
-#include "octaclay/core/geometry/base_shapes.h"
+
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
-#include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <string>
 

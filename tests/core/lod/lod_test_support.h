@@ -3,8 +3,8 @@
 
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/geometry_image.h"
-#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/lod/lod.h"
 
 #include <cmath>
 

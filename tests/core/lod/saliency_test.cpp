@@ -5,6 +5,7 @@
 #include "octaclay/core/lod/lod.h"
 
 #include <QtTest>
+
 #include <cmath>
 
 using namespace octaclay::core;

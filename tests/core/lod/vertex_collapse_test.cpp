@@ -2,11 +2,13 @@
 // closed, manifold and genus 0, never turns a triangle's normal past the bound, honours the
 // error bound and the caller's veto, and names bad arguments.
 
-#include "octaclay/core/error.h"
-#include "octaclay/core/lod/vertex_collapse.h"
 #include "test_meshes.h"
 
+#include "octaclay/core/error.h"
+#include "octaclay/core/lod/vertex_collapse.h"
+
 #include <QtTest>
+
 #include <cmath>
 #include <string>
 

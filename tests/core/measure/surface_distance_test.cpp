@@ -1,11 +1,13 @@
+#include "test_meshes.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/measure/surface_distance.h"
-#include "test_meshes.h"
 
 // The closest-point primitives are private to core; the test reaches them by path.
 #include "../../../core/src/detail/aabb_tree.h"
 
 #include <QtTest>
+
 #include <cmath>
 #include <limits>
 #include <map>

@@ -92,7 +92,7 @@ private:
   std::vector<GpuMaterial> materials_;
   /// The brush's program for a layer, mask kind and enum parameters' values, compiled on first
   /// use. Throws GlError.
-  const Program& program(LoadedBrush& brush, BrushLayer layer, bool maskTexture,
+  const Program& program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
                          const std::vector<int>& enums);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   Program seamProgram_;

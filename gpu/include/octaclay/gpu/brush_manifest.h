@@ -1,5 +1,7 @@
 #pragma once
 
+#include "octaclay/core/document/edit_layer.h"
+
 #include <array>
 #include <filesystem>
 #include <stdexcept>
@@ -12,8 +14,6 @@ namespace octaclay::gpu {
 /// The brush API major version this build accepts: a manifest whose "api" is higher is refused.
 inline constexpr int kBrushApiVersion = 1;
 
-/// A document layer a brush reads or writes. The order is the layers' index everywhere in gpu.
-enum class BrushLayer { Positions, Diffuse, Feature, Mask };
 /// Where a dab applies: a disc in texture space ("uv"), a sphere in object space ("volume"), or
 /// that sphere limited to surface facing the same side as the centre's normal ("volume+normal").
 enum class AreaMode { Uv, Volume, VolumeNormal };
@@ -28,7 +28,7 @@ enum class ParameterType { Float, Int, Bool, Color, Enum, Material };
 
 /// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
 /// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
-std::string_view toManifestName(BrushLayer layer);
+std::string_view toManifestName(core::EditLayer layer);
 std::string_view toManifestName(AreaMode area);
 std::string_view toManifestName(Falloff falloff);
 std::string_view toManifestName(Category category);
@@ -62,11 +62,11 @@ struct BrushManifest {
   std::string shaderFile;
   /// Layers the shader samples beyond the value it is given (empty allowed); layers it writes,
   /// one pass each, never empty and without duplicates.
-  std::vector<BrushLayer> reads, writes;
+  std::vector<core::EditLayer> reads, writes;
   /// Layers (diffuse or feature, each also in writes) a brushLayers() body hands back as a
   /// colour to mix in and its amount in alpha: the GPU's blender mixes rgb by that amount and
   /// keeps the layer's alpha, so the pass never reads the layer (its argument starts at zero).
-  std::vector<BrushLayer> mix;
+  std::vector<core::EditLayer> mix;
   AreaMode area = AreaMode::Volume;
   Falloff falloff = Falloff::Smooth;
   /// Falloff::Curve only: 2 … 64 weights in [0, 1], sampled evenly from centre to rim.

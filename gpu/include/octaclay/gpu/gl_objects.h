@@ -1,5 +1,7 @@
 #pragma once
 
+#include "octaclay/core/geometry/texel_rect.h"
+
 #include <span>
 #include <string>
 #include <vector>
@@ -12,11 +14,6 @@ enum class TextureFormat {
   Rgba16f, ///< diffuse colour
   R32f,    ///< single-channel float data
   Rgba8,   ///< unit vectors stored as v/2 + 1/2 (the normal map): a quarter of the bytes to sample
-};
-
-/// A rectangle of texels: origin (x, y), size (width, height).
-struct Region {
-  int x = 0, y = 0, width = 0, height = 0;
 };
 
 /// Move-only owner of a 2D texture. Can be empty, adopt a foreign id (wrap) and give it back
@@ -36,15 +33,15 @@ public:
   ~Texture();
 
   /// Writes region from floats, channels-per-texel as the format has (4 or 1), row-major.
-  void upload(Region region, std::span<const float> texels);
+  void upload(core::TexelRect region, std::span<const float> texels);
   /// Reads region back as floats, row-major.
-  std::vector<float> read(Region region) const;
+  std::vector<float> read(core::TexelRect region) const;
   /// Reads region into a larger row-major float image: `out` is where the region's first texel
   /// goes, rows are rowLength texels apart, each texel `channels` floats (1, 3 or 4; channels
   /// the texture lacks read as 0, alpha as 1). Avoids a temporary and a copy per dab.
-  void readInto(Region region, float* out, int rowLength, int channels) const;
+  void readInto(core::TexelRect region, float* out, int rowLength, int channels) const;
   /// Writes region from a larger row-major float image laid out as for readInto.
-  void uploadFrom(Region region, const float* in, int rowLength, int channels);
+  void uploadFrom(core::TexelRect region, const float* in, int rowLength, int channels);
 
   unsigned id() const { return id_; }
   int width() const { return width_; }
@@ -137,7 +134,7 @@ public:
   ~RectPass();
 
   /// Runs the bound program over rects of a target of width × height texels (the viewport).
-  void draw(std::span<const Region> rects, int width, int height);
+  void draw(std::span<const core::TexelRect> rects, int width, int height);
 
 private:
   Buffer rects_;

@@ -29,19 +29,21 @@ public:
   const core::Document& document() const { return document_; }
   const core::TileBounds& bounds() const { return bounds_; }
 
-  Texture& texture(BrushLayer layer) { return textures_[index(layer)]; }
-  Texture& scratch(BrushLayer layer) { return scratch_[index(layer)]; }
+  Texture& texture(core::EditLayer layer) { return textures_[index(layer)]; }
+  Texture& scratch(core::EditLayer layer) { return scratch_[index(layer)]; }
   /// Exchanges a layer's texture and its scratch twin: after a pass that wrote every texel of
   /// the scratch, this replaces copying it back.
-  void swapScratch(BrushLayer layer) { std::swap(textures_[index(layer)], scratch_[index(layer)]); }
+  void swapScratch(core::EditLayer layer) {
+    std::swap(textures_[index(layer)], scratch_[index(layer)]);
+  }
 
   /// Copies rect of the layer's texture into the mirror (and refreshes tile bounds for
   /// positions). Painted-but-uniform mirror layers get their texels first.
-  void pull(BrushLayer layer, core::TexelRect rect);
+  void pull(core::EditLayer layer, core::TexelRect rect);
   /// A pass changed rect of the layer's texture: pulled now, or for a paint layer while pulls
   /// are deferred, recorded for syncMirror() (the layer gets its mirror texels now, so it stops
   /// counting as uniform at once).
-  void changed(BrushLayer layer, core::TexelRect rect);
+  void changed(core::EditLayer layer, core::TexelRect rect);
   /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
   void deferPaintPulls(bool on);
   /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
@@ -49,27 +51,27 @@ public:
   /// Reads every deferred region back into the mirror, in merged rectangles.
   void syncMirror();
   /// Writes rect of the mirror (e.g. restored by undo) to the layer's texture.
-  void push(BrushLayer layer, core::TexelRect rect);
+  void push(core::EditLayer layer, core::TexelRect rect);
   /// The mirror's texels of rect, row-major, channels per texel as the layer has.
-  std::vector<float> mirrorTexels(BrushLayer layer, core::TexelRect rect) const;
+  std::vector<float> mirrorTexels(core::EditLayer layer, core::TexelRect rect) const;
   /// Replaces rect of the mirror with texels (the layout of mirrorTexels) and pushes it.
-  void restore(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
+  void restore(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
 
-  static int channels(BrushLayer layer);
+  static int channels(core::EditLayer layer);
 
   /// Writes saliency ((N+1)² values, row-major) into the positions' alpha of the mirror and the
   /// texture; xyz stay as they are. Throws core::Error(InvalidArgument) for a wrong count.
   void writeSaliency(std::span<const float> saliency);
 
 private:
-  static std::size_t index(BrushLayer layer) { return static_cast<std::size_t>(layer); }
-  core::Layer* mirrorLayer(BrushLayer layer);
-  const core::Layer* mirrorLayer(BrushLayer layer) const;
-  void writeMirror(BrushLayer layer, core::TexelRect rect, std::span<const float> texels);
+  static std::size_t index(core::EditLayer layer) { return static_cast<std::size_t>(layer); }
+  core::Layer* mirrorLayer(core::EditLayer layer);
+  const core::Layer* mirrorLayer(core::EditLayer layer) const;
+  void writeMirror(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
   /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
-  float* mirrorData(BrushLayer layer);
+  float* mirrorData(core::EditLayer layer);
   /// mirrorData for a layer a pass changed: a changed mask is one the document saves.
-  float* editedMirror(BrushLayer layer);
+  float* editedMirror(core::EditLayer layer);
 
   core::Document document_;
   core::TileBounds bounds_;

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "octaclay/core/document/image_io.h"
-#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/core/geometry/vec.h"
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/gpu/gl_objects.h"
 #include "octaclay/gpu/gpu_document.h"
 

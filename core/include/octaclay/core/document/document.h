@@ -27,7 +27,7 @@ struct Document {
   Layer diffuse{"diffuse", 4, {0.8f, 0.8f, 0.8f, 1.0f}, {}};
   Layer feature{"feature", 3, {0.0f, 0.25f, 0.0f, 0.0f}, {}};
   Layer mask{"mask", 1, {1.0f, 0.0f, 0.0f, 0.0f}, {}}; ///< 1 = full brush effect, 0 = blocked
-  bool hasMask = false; ///< mask.Y is optional in the file
+  bool hasMask = false;                                ///< mask.Y is optional in the file
 
   int size() const { return positions.size(); }
 };

@@ -6,7 +6,9 @@
 // hands the texels back through a TileApplier (a GPU upload, or applierFor() on a CPU image).
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/edit_layer.h"
 #include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/texel_rect.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,21 +20,9 @@
 
 namespace octaclay::core {
 
-/// The image layers a stroke can change. Texels are float, editLayerChannels() per texel.
-enum class EditLayer { Positions, Diffuse, Feature, Mask };
-
-/// Floats per texel of layer: Positions 4 (xyz + saliency), Diffuse 4, Feature 3, Mask 1.
-int editLayerChannels(EditLayer layer);
-
-/// A rectangle of texels: origin (x, y) = (column i, row j), size width × height.
-struct Region {
-  int x = 0, y = 0, width = 0, height = 0;
-  friend bool operator==(Region a, Region b) = default;
-};
-
 /// Receives texels to write back: region of layer, row-major, region.width × region.height ×
 /// editLayerChannels(layer) floats. The span is only valid during the call.
-using TileApplier = std::function<void(EditLayer layer, Region region, std::span<const float>)>;
+using TileApplier = std::function<void(EditLayer layer, TexelRect region, std::span<const float>)>;
 
 /// Which side of a change to restore.
 enum class TileState { Before, After };
@@ -48,7 +38,7 @@ struct TileChange {
   EditLayer layer = EditLayer::Positions;
   int tileX = 0, tileY = 0; ///< tile coordinates, in units of StrokeRecorder::kTileSize
   int channels = 0;         ///< editLayerChannels(layer)
-  Region region;            ///< the tile's texels in the image
+  TexelRect region;         ///< the tile's texels in the image
   std::uint32_t changedTexels = 0;
   /// (skip, count) pairs in texels, in row-major order over region: skip unchanged, then count
   /// changed texels. Sum of counts == changedTexels.
@@ -91,7 +81,7 @@ public:
   /// Tiles per row (and per column) of an image imageSide texels wide: ceil(side / kTileSize).
   static int tilesPerSide(int imageSide);
   /// The texels of tile (tileX, tileY). Throws Error(InvalidArgument) if it is outside.
-  static Region tileRegion(int imageSide, int tileX, int tileY);
+  static TexelRect tileRegion(int imageSide, int tileX, int tileY);
 
   int imageSide() const { return side_; }
 

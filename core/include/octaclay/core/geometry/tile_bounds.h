@@ -1,17 +1,12 @@
 #pragma once
 
 #include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/texel_rect.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <vector>
 
 namespace octaclay::core {
-
-/// A rectangle of samples: origin (x, y) = (i, j), size width × height.
-struct TexelRect {
-  int x = 0, y = 0, width = 0, height = 0;
-  friend bool operator==(TexelRect a, TexelRect b) = default;
-};
 
 /// Bounding boxes of the positions per square tile of the image, and of groups of kGroup² tiles
 /// above them (a two-level min/max pyramid), so a brush finds the samples it can reach without

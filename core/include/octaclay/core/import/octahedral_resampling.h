@@ -1,12 +1,12 @@
 #pragma once
 
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/document/image_io.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/measure/surface_distance.h"
-#include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <array>
 #include <cstdint>

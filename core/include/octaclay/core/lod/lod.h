@@ -6,11 +6,12 @@
 // carries the image coordinates its vertex came from, so a normal map baked from the
 // full-resolution image textures it.
 
-#include <array>
-#include <cstddef>
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/lod/vertex_collapse.h"
+
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <string_view>
 #include <vector>

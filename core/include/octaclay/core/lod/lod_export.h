@@ -3,11 +3,12 @@
 // Normal maps baked from the full-resolution image for an LOD mesh, and the LOD written with
 // its map (OBJ + MTL + map, or GLB).
 
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/lod/lod.h"
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include "octaclay/core/geometry/geometry_image.h"
-#include "octaclay/core/lod/lod.h"
 #include <optional>
 #include <string_view>
 #include <vector>

@@ -3,11 +3,12 @@
 // Vertex collapse (issue 7, thesis 4.4): OpenMesh's Decimater with quadric priorities, run on
 // a closed genus-0 mesh (in practice the already small resampled LOD mesh).
 
+#include "octaclay/core/geometry/triangle_mesh.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include "octaclay/core/geometry/triangle_mesh.h"
 #include <vector>
 
 namespace octaclay::core {
