@@ -61,7 +61,7 @@ public:
   /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
   /// call), for each layer it writes (one pass for all of them when the body defines
   /// brushLayers()), then the seaming pass when it reached the border; the mirror is updated
-  /// for those tiles. Throws GlError for an unknown brush id.
+  /// for those tiles. Throws core::Error(UnknownId) for an unknown brush id.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
@@ -89,6 +89,9 @@ private:
   };
   void bindMaterial(const Program& program, const BrushManifest& manifest,
                     const GpuDocument& document, const Dab& dab) const;
+  /// Unbinds the material samplers from their units (they would override the filtering of
+  /// whatever else binds textures there).
+  static void releaseMaterialUnits();
   std::vector<GpuMaterial> materials_;
   /// The brush's program for a layer, mask kind and enum parameters' values, compiled on first
   /// use. Throws GlError.
