@@ -18,9 +18,6 @@ namespace octaclay::gpu {
 using detail::assemble;
 using detail::brushLog;
 using detail::enumValues;
-using detail::names;
-using detail::needsNormals;
-using detail::withoutComments;
 using detail::writesAllLayers;
 
 namespace {
@@ -44,32 +41,24 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   brush->body = shaderSource;
   brush->allLayers = writesAllLayers(shaderSource);
   if (hasTextureBarrier()) {
-    const std::string code = withoutComments(shaderSource);
-    // Other texels are read through the neighbour helpers, the prelude's normals, or a layer's
-    // sampler named by the body. A brushLayers() pass binds u_layer to the positions.
-    const bool all = brush->allLayers;
-    const auto readsOthers = [&](const char* sampler) {
-      return all ? names(code, {sampler}) : names(code, {"fetchLayer", "u_layer", sampler});
-    };
-    brush->inPlace[0] =
-        !needsNormals(manifest, shaderSource) &&
-        !names(code, {"fetchPositions", "normalAt", "u_positions", "fetchLayer", "u_layer"});
-    brush->inPlace[1] = !readsOthers("u_diffuseLayer");
-    brush->inPlace[2] = !readsOthers("u_featureLayer");
-    brush->inPlace[3] = !all && !readsOthers("u_mask") && !names(code, {"maskAt"});
+    // A layer is written in place unless the brush reads it ("reads": other texels of it);
+    // the prelude's normals read the positions' neighbours.
+    brush->inPlace[0] = !manifest.needsNormal() && !manifest.readsLayer(core::EditLayer::Positions);
+    brush->inPlace[1] = !manifest.readsLayer(core::EditLayer::Diffuse);
+    brush->inPlace[2] = !manifest.readsLayer(core::EditLayer::Feature);
+    brush->inPlace[3] = !brush->allLayers && !manifest.readsLayer(core::EditLayer::Mask);
   }
   if (!manifest.mix.empty()) {
     const std::string file = manifest.shaderPath().string();
     if (!brush->allLayers)
       throw GlError("brush " + manifest.id + ": " + file +
                     ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
-    const std::string code = withoutComments(shaderSource);
     for (core::EditLayer layer : manifest.mix) {
       const char* sampler = layer == core::EditLayer::Diffuse ? "u_diffuseLayer" : "u_featureLayer";
-      if (names(code, {sampler}))
+      if (manifest.readsLayer(layer))
         throw GlError("brush " + manifest.id + ": " + file + ": it mixes " +
                       std::string(toManifestName(layer)) + " (\"mix\"), so it cannot read " +
-                      sampler + ": the blender writes that layer during the pass");
+                      sampler + " (\"reads\"): the blender writes that layer during the pass");
       brush->inPlace[static_cast<std::size_t>(layer)] = true; // the blender reads the target
     }
   }
@@ -139,8 +128,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const auto bindInputs = [&](const Program& pass, core::EditLayer layer) {
     pass.use();
     detail::setUniforms(pass, brush.manifest, document, layer, dab);
-    detail::bindLayers(document, layer, brush.mixes(core::EditLayer::Diffuse),
-                       brush.mixes(core::EditLayer::Feature));
+    detail::bindLayers(document, layer, brush.samples(core::EditLayer::Diffuse),
+                       brush.samples(core::EditLayer::Feature));
     bindMaterial(pass, brush.manifest, document, dab);
   };
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,

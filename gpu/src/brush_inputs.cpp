@@ -91,13 +91,13 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   }
 }
 
-void bindLayers(GpuDocument& document, core::EditLayer layer, bool mixesDiffuse,
-                bool mixesFeature) {
+void bindLayers(GpuDocument& document, core::EditLayer layer, bool samplesDiffuse,
+                bool samplesFeature) {
   kPositionsUnit.bind(document.texture(core::EditLayer::Positions).id());
   kLayerUnit.bind(document.texture(layer).id());
   kMaskUnit.bind(document.texture(core::EditLayer::Mask).id());
-  kFeatureUnit.bind(mixesFeature ? 0 : document.texture(core::EditLayer::Feature).id());
-  kDiffuseUnit.bind(mixesDiffuse ? 0 : document.texture(core::EditLayer::Diffuse).id());
+  kFeatureUnit.bind(samplesFeature ? document.texture(core::EditLayer::Feature).id() : 0);
+  kDiffuseUnit.bind(samplesDiffuse ? document.texture(core::EditLayer::Diffuse).id() : 0);
   glActiveTexture(GL_TEXTURE0);
 }
 

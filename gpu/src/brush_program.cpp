@@ -29,11 +29,6 @@ const char* layerDefine(core::EditLayer layer) {
 // about it can name its file and its own line: Mesa prints "0:LINE(COL): …", NVIDIA "0(LINE) : …".
 constexpr int kBodyLine = 100001;
 
-// Whether the brush body mentions `normal` (b.normal, normalAt) outside comments.
-bool readsNormals(const std::string& body) {
-  return withoutComments(body).find("normal") != std::string::npos;
-}
-
 } // namespace
 
 std::string uniformName(const std::string& parameterId) {
@@ -97,16 +92,6 @@ bool writesAllLayers(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
-bool names(const std::string& code, std::initializer_list<const char*> words) {
-  return std::any_of(words.begin(), words.end(), [&](const char* w) {
-    return std::regex_search(code, std::regex(std::string("\\b") + w + "\\b"));
-  });
-}
-
-bool needsNormals(const BrushManifest& manifest, const std::string& body) {
-  return manifest.area == AreaMode::VolumeNormal || readsNormals(body);
-}
-
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
                      const std::string& body) {
@@ -140,7 +125,7 @@ std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool 
     break;
   }
   // The prelude computes per-sample normals only for brushes that read them.
-  if (needsNormals(manifest, body)) source += "#define BRUSH_NEEDS_NORMAL\n";
+  if (manifest.needsNormal()) source += "#define BRUSH_NEEDS_NORMAL\n";
   // Every target is the layer itself: an unweighted texel keeps its value unwritten.
   if (inPlace) source += "#define BRUSH_IN_PLACE\n";
   for (core::EditLayer mixed : manifest.mix)

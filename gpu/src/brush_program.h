@@ -4,7 +4,6 @@
 #include "octaclay/gpu/brush_manifest.h"
 
 #include <array>
-#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,12 +28,6 @@ std::string withoutComments(const std::string& body);
 
 /// Whether the brush body defines `void brushLayers(`: it writes all its layers in one pass.
 bool writesAllLayers(const std::string& body);
-
-/// Whether code (a body without its comments) names any of these identifiers (whole words:
-/// u_layer is not u_layerFill).
-bool names(const std::string& code, std::initializer_list<const char*> words);
-
-bool needsNormals(const BrushManifest& manifest, const std::string& body);
 
 /// The fragment source of one pass. allLayers: the body defines brushLayers() and the program
 /// writes every layer at once. enumValues: the enum parameters' values, in manifest order.

@@ -30,6 +30,11 @@ struct BrushEngine::LoadedBrush {
   bool mixes(core::EditLayer layer) const {
     return std::find(manifest.mix.begin(), manifest.mix.end(), layer) != manifest.mix.end();
   }
+  // Whether a pass samples the paint layer (diffuse or feature) through its own unit: a
+  // brushLayers() pass is given it unless mixed, a brush() pass samples what it reads.
+  bool samples(core::EditLayer layer) const {
+    return !mixes(layer) && (allLayers || manifest.readsLayer(layer));
+  }
   // Whether every layer the brush writes is written in place: its passes may then discard
   // unweighted texels.
   bool allInPlace() const {
