@@ -36,10 +36,11 @@ void BrushEngine::setMaterials(const MaterialCatalog& catalog) {
       for (int level = 0; level < levels; ++level) {
         GLuint id = 0;
         glGenTextures(1, &id);
-        // A view shares t's storage and keeps it alive after t is deleted on return.
+        // A view shares t's storage and keeps it alive after t is deleted on return; the
+        // Texture owns the view.
         glTextureView(id, GL_TEXTURE_2D, t.id(), GL_RGBA8, static_cast<GLuint>(level), 1, 0, 1);
-        views.push_back(Texture::wrap(id, std::max(1, width >> level), std::max(1, height >> level),
-                                      TextureFormat::Rgba8));
+        views.push_back(Texture::adopt(id, std::max(1, width >> level),
+                                       std::max(1, height >> level), TextureFormat::Rgba8));
       }
       glBindTexture(GL_TEXTURE_2D, 0);
       return views;
