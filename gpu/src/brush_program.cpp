@@ -29,6 +29,24 @@ const char* layerDefine(core::EditLayer layer) {
 // about it can name its file and its own line: Mesa prints "0:LINE(COL): …", NVIDIA "0(LINE) : …".
 constexpr int kBodyLine = 100001;
 
+// The brush body without its comments.
+std::string withoutComments(const std::string& body) {
+  std::string code;
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    if (body.compare(k, 2, "//") == 0) {
+      k = body.find('\n', k);
+      if (k == std::string::npos) break;
+    } else if (body.compare(k, 2, "/*") == 0) {
+      k = body.find("*/", k + 2);
+      if (k == std::string::npos) break;
+      ++k;
+      continue;
+    }
+    code += body[k];
+  }
+  return code;
+}
+
 } // namespace
 
 std::string uniformName(const std::string& parameterId) {
@@ -68,23 +86,6 @@ std::string brushLog(const std::string& log, const std::string& file) {
     out += line + "\n";
   }
   return out;
-}
-
-std::string withoutComments(const std::string& body) {
-  std::string code;
-  for (std::size_t k = 0; k < body.size(); ++k) {
-    if (body.compare(k, 2, "//") == 0) {
-      k = body.find('\n', k);
-      if (k == std::string::npos) break;
-    } else if (body.compare(k, 2, "/*") == 0) {
-      k = body.find("*/", k + 2);
-      if (k == std::string::npos) break;
-      ++k;
-      continue;
-    }
-    code += body[k];
-  }
-  return code;
 }
 
 bool writesAllLayers(const std::string& body) {

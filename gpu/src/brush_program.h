@@ -23,9 +23,6 @@ std::vector<int> enumValues(const BrushManifest& manifest,
 /// The compiler's log with the body's lines named as file:line.
 std::string brushLog(const std::string& log, const std::string& file);
 
-/// The brush body without its comments.
-std::string withoutComments(const std::string& body);
-
 /// Whether the brush body defines `void brushLayers(`: it writes all its layers in one pass.
 bool writesAllLayers(const std::string& body);
 

@@ -54,7 +54,9 @@ public:
   /// shader file and the compiler's log, and a previously loaded version of it stays in use.
   /// A body that defines `void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4
   /// feature, BrushInput b)` instead of `brush()` writes all its layers in one pass (it must not
-  /// write the mask; GlError otherwise).
+  /// write the mask; GlError otherwise). Everything else comes from the manifest: its reads
+  /// decide which layers are bound and which are written in place, its needs whether normals
+  /// are computed (a mixed layer must not be read; GlError otherwise).
   void load(const BrushManifest& manifest, const std::string& shaderSource);
   bool has(const std::string& id) const;
 
