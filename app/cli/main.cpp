@@ -14,6 +14,8 @@ namespace {
 int exitCodeFor(core::ErrorKind kind) {
   switch (kind) {
   case core::ErrorKind::InvalidArgument:
+  case core::ErrorKind::UnknownId: // the commands name unknown brushes as bad arguments
+  case core::ErrorKind::Cancelled: // as when a cancel was an InvalidArgument
     return app::kExitUsage;
   case core::ErrorKind::InvalidInput:
     return app::kExitInvalidInput;

@@ -137,8 +137,9 @@ float uvDistance(ivec2 t) {
 }
 
 // Fills the brush input of texel t; weight is 0 outside the brush's area. The normal costs
-// six reads, so it is computed only when the brush body or the area mode uses it
-// (BRUSH_NEEDS_NORMAL) and the texel is inside the radius; otherwise it is the centre normal.
+// six reads, so it is computed only when the manifest needs it ("needs": ["normal"]) or the area
+// mode uses it (BRUSH_NEEDS_NORMAL) and the texel is inside the radius; otherwise it is the
+// centre normal.
 BrushInput brushInputAt(ivec2 t, vec4 value) {
   BrushInput b;
   b.texel = t;

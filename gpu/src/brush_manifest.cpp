@@ -30,10 +30,11 @@ constexpr std::array kAreaNames{"uv", "volume", "volume+normal"};
 constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
 constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
 constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
+constexpr std::array kNeedNames{"normal"};
 
 constexpr std::array kTopLevelFields{
-    "id",     "name", "version", "api",     "description",   "category", "shader",    "reads",
-    "writes", "mix",  "area",    "falloff", "falloff_curve", "spacing",  "parameters"};
+    "id",     "name", "version", "api",  "description", "category",     "shader",  "reads",
+    "writes", "mix",  "needs",   "area", "falloff",     "falloffCurve", "spacing", "parameters"};
 constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
                                       "min", "max",   "step",    "options"};
 // Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
@@ -77,6 +78,8 @@ public:
     manifest.writes = parseLayers(required(root, "writes", "writes"), "writes");
     if (manifest.writes.empty()) fail("writes", "a brush must write at least one layer");
     if (const json* mix = root.contains("mix") ? &root["mix"] : nullptr) parseMix(*mix, manifest);
+    if (const json* needs = root.contains("needs") ? &root["needs"] : nullptr)
+      manifest.needs = parseNeeds(*needs);
 
     manifest.area =
         choose<AreaMode>(requiredString(root, "area", "area"), kAreaNames, "area", "area");
@@ -135,6 +138,20 @@ private:
     return layers;
   }
 
+  std::vector<BrushNeed> parseNeeds(const json& value) const {
+    if (!value.is_array())
+      fail("needs", "expected an array, got " + describe(value) + " (use [\"normal\"])");
+    std::vector<BrushNeed> needs;
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const std::string item = "needs[" + std::to_string(k) + "]";
+      const BrushNeed need = choose<BrushNeed>(string(value[k], item), kNeedNames, item, "need");
+      if (std::find(needs.begin(), needs.end(), need) != needs.end())
+        fail(item, quote(toManifestName(need)) + " is listed twice");
+      needs.push_back(need);
+    }
+    return needs;
+  }
+
   void parseMix(const json& value, BrushManifest& manifest) const {
     manifest.mix = parseLayers(value, "mix", "diffuse");
     for (std::size_t k = 0; k < manifest.mix.size(); ++k) {
@@ -150,19 +167,19 @@ private:
 
   void parseFalloffCurve(const json& root, BrushManifest& manifest) const {
     const bool isCurve = manifest.falloff == Falloff::Curve;
-    if (!root.contains("falloff_curve")) {
-      if (isCurve) fail("falloff_curve", "missing required field (\"falloff\" is \"curve\")");
+    if (!root.contains("falloffCurve")) {
+      if (isCurve) fail("falloffCurve", "missing required field (\"falloff\" is \"curve\")");
       return;
     }
-    if (!isCurve) fail("falloff_curve", "only used when \"falloff\" is \"curve\"");
-    const json& curve = root["falloff_curve"];
-    if (!curve.is_array()) fail("falloff_curve", "expected an array, got " + describe(curve));
+    if (!isCurve) fail("falloffCurve", "only used when \"falloff\" is \"curve\"");
+    const json& curve = root["falloffCurve"];
+    if (!curve.is_array()) fail("falloffCurve", "expected an array, got " + describe(curve));
     if (curve.size() < kMinCurveSamples || curve.size() > kMaxCurveSamples)
-      fail("falloff_curve", "needs " + std::to_string(kMinCurveSamples) + " to " +
-                                std::to_string(kMaxCurveSamples) + " values, got " +
-                                std::to_string(curve.size()));
+      fail("falloffCurve", "needs " + std::to_string(kMinCurveSamples) + " to " +
+                               std::to_string(kMaxCurveSamples) + " values, got " +
+                               std::to_string(curve.size()));
     for (std::size_t k = 0; k < curve.size(); ++k) {
-      const std::string item = "falloff_curve[" + std::to_string(k) + "]";
+      const std::string item = "falloffCurve[" + std::to_string(k) + "]";
       const double v = number(curve[k], item);
       if (v < 0.0 || v > 1.0) fail(item, formatNumber(v) + " is outside [0, 1]");
       manifest.falloffCurve.push_back(static_cast<float>(v));
@@ -339,6 +356,18 @@ std::string_view toManifestName(Category category) {
 }
 std::string_view toManifestName(ParameterType type) {
   return kTypeNames[static_cast<std::size_t>(type)];
+}
+std::string_view toManifestName(BrushNeed need) {
+  return kNeedNames[static_cast<std::size_t>(need)];
+}
+
+bool BrushManifest::readsLayer(core::EditLayer layer) const {
+  return std::find(reads.begin(), reads.end(), layer) != reads.end();
+}
+
+bool BrushManifest::needsNormal() const {
+  return area == AreaMode::VolumeNormal ||
+         std::find(needs.begin(), needs.end(), BrushNeed::Normal) != needs.end();
 }
 
 const BrushParameter* BrushManifest::parameter(std::string_view parameterId) const {

@@ -34,25 +34,6 @@ std::size_t texelCount(core::TexelRect r) {
   return static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
 }
 
-GLuint compileStage(const std::string& name, GLenum stage, const std::string& source) {
-  const GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok == GL_TRUE) return shader;
-  GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-  glGetShaderInfoLog(shader, length, nullptr, log.data());
-  glDeleteShader(shader);
-  while (!log.empty() && (log.back() == '\0' || log.back() == '\n'))
-    log.pop_back();
-  throw GlError(name + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                " shader does not compile:\n" + log);
-}
-
 } // namespace
 
 namespace {
@@ -90,7 +71,7 @@ Texture::Texture(int width, int height, TextureFormat format, int levels)
   checkGlError("allocating a " + std::to_string(width) + "x" + std::to_string(height) + " texture");
 }
 
-Texture Texture::wrap(unsigned id, int width, int height, TextureFormat format) {
+Texture Texture::adopt(unsigned id, int width, int height, TextureFormat format) {
   Texture texture;
   texture.id_ = id;
   texture.width_ = width;
@@ -99,15 +80,23 @@ Texture Texture::wrap(unsigned id, int width, int height, TextureFormat format) 
   return texture;
 }
 
+Texture Texture::wrap(unsigned id, int width, int height, TextureFormat format) {
+  Texture texture = adopt(id, width, height, format);
+  texture.owned_ = false;
+  return texture;
+}
+
 Texture::Texture(Texture&& other) noexcept
-    : id_(std::exchange(other.id_, 0)), width_(other.width_), height_(other.height_),
-      format_(other.format_), framebuffer_(std::exchange(other.framebuffer_, 0)) {}
+    : id_(std::exchange(other.id_, 0)), owned_(other.owned_), width_(other.width_),
+      height_(other.height_), format_(other.format_),
+      framebuffer_(std::exchange(other.framebuffer_, 0)) {}
 
 Texture& Texture::operator=(Texture&& other) noexcept {
   if (this != &other) {
     if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-    if (id_) glDeleteTextures(1, &id_);
+    if (id_ && owned_) glDeleteTextures(1, &id_);
     id_ = std::exchange(other.id_, 0);
+    owned_ = other.owned_;
     framebuffer_ = std::exchange(other.framebuffer_, 0);
     width_ = other.width_;
     height_ = other.height_;
@@ -118,7 +107,7 @@ Texture& Texture::operator=(Texture&& other) noexcept {
 
 Texture::~Texture() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-  if (id_) glDeleteTextures(1, &id_);
+  if (id_ && owned_) glDeleteTextures(1, &id_);
 }
 
 unsigned Texture::release() {
@@ -245,57 +234,6 @@ void Framebuffer::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, id_);
 }
 
-Program::Program(const std::string& name, const std::string& vertexSource,
-                 const std::string& fragmentSource) {
-  const GLuint vertex = compileStage(name, GL_VERTEX_SHADER, vertexSource);
-  GLuint fragment = 0;
-  try {
-    fragment = compileStage(name, GL_FRAGMENT_SHADER, fragmentSource);
-  } catch (...) {
-    glDeleteShader(vertex);
-    throw;
-  }
-  id_ = glCreateProgram();
-  glAttachShader(id_, vertex);
-  glAttachShader(id_, fragment);
-  glLinkProgram(id_);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(id_, length, nullptr, log.data());
-    glDeleteProgram(id_);
-    id_ = 0;
-    throw GlError(name + ": program does not link:\n" + log);
-  }
-}
-
-Program::Program(Program&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
-
-Program& Program::operator=(Program&& other) noexcept {
-  if (this != &other) {
-    if (id_) glDeleteProgram(id_);
-    id_ = std::exchange(other.id_, 0);
-  }
-  return *this;
-}
-
-Program::~Program() {
-  if (id_) glDeleteProgram(id_);
-}
-
-void Program::use() const {
-  glUseProgram(id_);
-}
-
-int Program::uniform(const char* name) const {
-  return glGetUniformLocation(id_, name);
-}
-
 Buffer Buffer::create() {
   Buffer buffer;
   glGenBuffers(1, &buffer.id_);
@@ -324,6 +262,31 @@ void Buffer::upload(std::span<const std::byte> bytes) {
   checkGlError("buffer upload");
 }
 
+VertexArray VertexArray::create() {
+  VertexArray array;
+  glGenVertexArrays(1, &array.id_);
+  checkGlError("creating a vertex array");
+  return array;
+}
+
+VertexArray::VertexArray(VertexArray&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+VertexArray& VertexArray::operator=(VertexArray&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteVertexArrays(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+VertexArray::~VertexArray() {
+  if (id_) glDeleteVertexArrays(1, &id_);
+}
+
+void VertexArray::bind() const {
+  glBindVertexArray(id_);
+}
+
 Sampler Sampler::repeating(bool bilinear) {
   Sampler sampler;
   glGenSamplers(1, &sampler.id_);
@@ -348,77 +311,6 @@ Sampler& Sampler::operator=(Sampler&& other) noexcept {
 
 Sampler::~Sampler() {
   if (id_) glDeleteSamplers(1, &id_);
-}
-
-RectPass::RectPass() : rects_(Buffer::create()) {
-  glGenVertexArrays(1, &vertexArray_);
-}
-
-RectPass::RectPass(RectPass&& other) noexcept
-    : rects_(std::move(other.rects_)), vertexArray_(std::exchange(other.vertexArray_, 0)) {}
-
-RectPass& RectPass::operator=(RectPass&& other) noexcept {
-  if (this != &other) {
-    if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
-    rects_ = std::move(other.rects_);
-    vertexArray_ = std::exchange(other.vertexArray_, 0);
-  }
-  return *this;
-}
-
-RectPass::~RectPass() {
-  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
-}
-
-void RectPass::draw(std::span<const core::TexelRect> rects, int width, int height) {
-  if (rects.empty()) return;
-  std::vector<GLint> data{width, height, 0, 0};
-  for (const core::TexelRect& r : rects)
-    data.insert(data.end(), {r.x, r.y, r.width, r.height});
-  rects_.upload(std::as_bytes(std::span(data)));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rects_.id());
-  glBindVertexArray(vertexArray_);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * rects.size()));
-  checkGlError("rectangle pass");
-}
-
-const std::string& rectsVertexShader() {
-  static const std::string source = R"(#version 430 core
-layout(std430, binding = 0) readonly buffer PassRects {
-  ivec4 target; // width, height
-  ivec4 rects[]; // x, y, width, height
-};
-void main() {
-  ivec4 r = rects[gl_VertexID / 6];
-  const ivec2 corners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1),
-                                    ivec2(1, 0), ivec2(1, 1), ivec2(0, 1));
-  vec2 p = vec2(r.xy + corners[gl_VertexID % 6] * r.zw) / vec2(target.xy);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-  return source;
-}
-
-void drawFullscreenPass() {
-  // Core profile needs a bound vertex array even when the vertex shader makes its own vertices.
-  // Vertex arrays are not shared between contexts: this assumes one engine context per process.
-  static GLuint vertexArray = 0;
-  if (!vertexArray) glGenVertexArrays(1, &vertexArray);
-  glBindVertexArray(vertexArray);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  checkGlError("full-screen pass");
-}
-
-const std::string& fullscreenVertexShader() {
-  static const std::string source = R"(#version 430 core
-out vec2 v_uv;
-void main() {
-  vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  v_uv = corner;
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-  return source;
 }
 
 } // namespace octaclay::gpu

@@ -47,11 +47,8 @@ void unbindAfterDraw() {
 ModelRenderer::ModelRenderer()
     : normalProgram_("normal map", rectsVertexShader(), normalPassSource()),
 
-      chunks_(std::make_unique<detail::ModelChunks>()) {
-  glGenVertexArrays(1, &vertexArray_);
-  glGenBuffers(1, &indexBuffer_);
-  checkGlError("creating the model's vertex array");
-}
+      vertexArray_(VertexArray::create()), indexBuffer_(Buffer::create()),
+      chunks_(std::make_unique<detail::ModelChunks>()) {}
 
 const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
                                           bool reflection, int preview, bool lodVertices) {
@@ -74,12 +71,7 @@ const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTextu
       .first->second;
 }
 
-ModelRenderer::~ModelRenderer() {
-  if (lodBuffer_) glDeleteBuffers(1, &lodBuffer_);
-  if (lodVertexArray_) glDeleteVertexArrays(1, &lodVertexArray_);
-  if (indexBuffer_) glDeleteBuffers(1, &indexBuffer_);
-  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
-}
+ModelRenderer::~ModelRenderer() = default;
 
 void ModelRenderer::setLevel(int n, int divisor) {
   if (divisor < 1 || (divisor & (divisor - 1)) != 0 || n % divisor != 0 || n / divisor < 2)
@@ -90,8 +82,8 @@ void ModelRenderer::setLevel(int n, int divisor) {
   chunks_->reset(n, divisor);
   chunksStale_ = true;
   const std::vector<std::uint32_t> indices = chunks_->indices();
-  glBindVertexArray(vertexArray_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  vertexArray_.bind();
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
                GL_STATIC_DRAW);
@@ -226,7 +218,7 @@ void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
     starts.push_back(reinterpret_cast<const void*>(offsets[k]));
     drawnTriangles_ += counts[k] / 3;
   }
-  glBindVertexArray(vertexArray_);
+  vertexArray_.bind();
   glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, starts.data(),
                       static_cast<GLsizei>(counts.size()));
   glBindVertexArray(0);
@@ -246,11 +238,11 @@ void ModelRenderer::setLodMesh(const core::LodMesh& lod) {
           t < lod.cornerUv.size() ? lod.cornerUv[t][static_cast<std::size_t>(k)] : core::Vec2f{};
       corners.insert(corners.end(), {p.x, p.y, p.z, uv.x, uv.y});
     }
-  if (!lodVertexArray_) {
-    glGenVertexArrays(1, &lodVertexArray_);
-    glGenBuffers(1, &lodBuffer_);
-    glBindVertexArray(lodVertexArray_);
-    glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_);
+  if (!lodVertexArray_.id()) {
+    lodVertexArray_ = VertexArray::create();
+    lodBuffer_ = Buffer::create();
+    lodVertexArray_.bind();
+    glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_.id());
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
     glEnableVertexAttribArray(1);
@@ -258,7 +250,7 @@ void ModelRenderer::setLodMesh(const core::LodMesh& lod) {
                           reinterpret_cast<const void*>(3 * sizeof(float)));
     glBindVertexArray(0);
   }
-  glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_);
+  glBindBuffer(GL_ARRAY_BUFFER, lodBuffer_.id());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)),
                corners.data(), GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -269,7 +261,7 @@ void ModelRenderer::setLodMesh(const core::LodMesh& lod) {
 void ModelRenderer::drawLod(GpuDocument& document, const ModelView& view) {
   if (lodTriangles_ == 0) return;
   prepareDraw(document, view, true);
-  glBindVertexArray(lodVertexArray_);
+  lodVertexArray_.bind();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * lodTriangles_));
   glBindVertexArray(0);
   unbindAfterDraw();

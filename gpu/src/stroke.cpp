@@ -2,7 +2,6 @@
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
-#include "octaclay/gpu/gl_error.h"
 
 #include <chrono>
 #include <cmath>
@@ -179,7 +178,8 @@ struct StrokeSession::State {
 
 StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                              StrokeSettings settings) {
-  if (!engine.has(brush.id)) throw GlError("no brush named '" + brush.id + "' is loaded");
+  if (!engine.has(brush.id))
+    throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brush.id + "' is loaded");
   settings.path.clear();
   state_ = std::make_unique<State>(engine, document, brush, std::move(settings));
   core::BoundingBox box;

@@ -14,6 +14,9 @@
 
 #include <chrono>
 #include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
 
 using namespace octaclay;
 using namespace octaclay::gpu;
@@ -88,6 +91,8 @@ private slots:
   void goodManifestParses();
   void templateBrushParses();
   void builtInBrushesParse();
+  void builtInBrushesDeclareWhatTheyRead();
+  void readmeMatchesThePreludeAndTheSchema();
   void badManifestIsRefused_data();
   void badManifestIsRefused();
   void missingFileIsRefused();
@@ -123,9 +128,10 @@ void BrushManifestTest::goodManifestParses() {
     "reads": ["positions", "mask"],
     "writes": ["diffuse", "feature"],
     "mix": ["feature"],
+    "needs": ["normal"],
     "area": "uv",
     "falloff": "curve",
-    "falloff_curve": [1, 0.5, 0],
+    "falloffCurve": [1, 0.5, 0],
     "spacing": 0.3,
     "parameters": [
       {"id": "count", "type": "int", "min": 1, "max": 9, "default": 3, "label": "Size"},
@@ -152,6 +158,10 @@ void BrushManifestTest::goodManifestParses() {
   QVERIFY((m.reads == std::vector{core::EditLayer::Positions, core::EditLayer::Mask}));
   QVERIFY((m.writes == std::vector{core::EditLayer::Diffuse, core::EditLayer::Feature}));
   QVERIFY((m.mix == std::vector{core::EditLayer::Feature}));
+  QVERIFY((m.needs == std::vector{BrushNeed::Normal}));
+  QVERIFY(m.needsNormal());
+  QVERIFY(m.readsLayer(core::EditLayer::Mask));
+  QVERIFY(!m.readsLayer(core::EditLayer::Diffuse));
   QCOMPARE(m.area, AreaMode::Uv);
   QCOMPARE(m.falloff, Falloff::Curve);
   QVERIFY((m.falloffCurve == std::vector{1.0f, 0.5f, 0.0f}));
@@ -218,6 +228,96 @@ void BrushManifestTest::builtInBrushesParse() {
   QVERIFY(catalog.notes().empty()); // built-in ids are unique
 }
 
+// The engine binds and computes what a manifest declares: each built-in brush declares in
+// "reads" exactly the layers its shader samples (through the prelude's helpers or a layer's
+// sampler) and needs "normal" exactly where it reads b.normal.
+void BrushManifestTest::builtInBrushesDeclareWhatTheyRead() {
+  BrushCatalog catalog;
+  catalog.scan({fs::path(OCTACLAY_SOURCE_DIR) / "plugins" / "brushes"});
+  QVERIFY(!catalog.brushes().empty());
+  const auto mentions = [](const std::string& code, const char* pattern) {
+    return std::regex_search(code, std::regex(pattern));
+  };
+  for (const BrushManifest& m : catalog.brushes()) {
+    // The body without its comments.
+    const std::string code = std::regex_replace(BrushCatalog::shaderSource(m),
+                                                std::regex(R"(//[^\n]*|/\*[\s\S]*?\*/)"), "");
+    const auto readsThrough = [&](core::EditLayer layer) {
+      switch (layer) {
+      case core::EditLayer::Positions:
+        return mentions(code, R"(\b(fetchPositions|normalAt|u_positions)\b)");
+      case core::EditLayer::Diffuse:
+        return mentions(code, R"(\bu_diffuseLayer\b)");
+      case core::EditLayer::Feature:
+        return mentions(code, R"(\bu_featureLayer\b)");
+      case core::EditLayer::Mask:
+        return mentions(code, R"(\b(maskAt|u_mask)\b)");
+      }
+      return false;
+    };
+    for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                  core::EditLayer::Feature, core::EditLayer::Mask})
+      QVERIFY2(m.readsLayer(layer) == readsThrough(layer),
+               (m.id + ": \"reads\" and " + std::string(toManifestName(layer))).c_str());
+    // Another texel of the written layer (fetchLayer, u_layer): none of the built-ins.
+    QVERIFY2(!mentions(code, R"(\b(fetchLayer|u_layer)\b)"), m.id.c_str());
+    const bool usesNormal = mentions(code, R"(\bb\.normal\b)");
+    QVERIFY2(usesNormal ==
+                 (std::find(m.needs.begin(), m.needs.end(), BrushNeed::Normal) != m.needs.end()),
+             (m.id + ": \"needs\": [\"normal\"]").c_str());
+  }
+}
+
+// plugins/examples/README.md cannot drift from the code: its uniform table lists exactly the
+// uniforms the prelude declares (name and type), its parameter-type table exactly the types the
+// manifest parser accepts.
+void BrushManifestTest::readmeMatchesThePreludeAndTheSchema() {
+  const fs::path source(OCTACLAY_SOURCE_DIR);
+  const auto lines = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);)
+      out.push_back(line);
+    return out;
+  };
+  const std::vector<std::string> readme = lines(source / "plugins" / "examples" / "README.md");
+  QVERIFY(!readme.empty());
+
+  std::set<std::string> declared, documented; // "type name[size]"
+  const std::regex declaration(R"(^\s*uniform\s+(\w+)\s+(\w+(\[\d+\])?)\s*;)");
+  for (const std::string& line : lines(source / "gpu" / "shaders" / "prelude.glsl")) {
+    std::smatch m;
+    if (std::regex_search(line, m, declaration)) declared.insert(m[1].str() + " " + m[2].str());
+  }
+  QVERIFY(declared.size() > 20);
+  const std::regex uniformRow(R"(^\|\s*`(u_\w+(\[\d+\])?)`\s*\|\s*`(\w+)`\s*\|)");
+  for (const std::string& line : readme) {
+    std::smatch m;
+    if (std::regex_search(line, m, uniformRow)) documented.insert(m[3].str() + " " + m[1].str());
+  }
+  for (const std::string& d : declared)
+    QVERIFY2(documented.count(d), ("README lacks the prelude's uniform " + d).c_str());
+  for (const std::string& d : documented)
+    QVERIFY2(declared.count(d), ("README documents a uniform the prelude lacks: " + d).c_str());
+
+  std::set<std::string> accepted, tabled;
+  for (int k = 0; k <= static_cast<int>(ParameterType::Material); ++k)
+    accepted.insert(std::string(toManifestName(static_cast<ParameterType>(k))));
+  const auto header = std::find_if(readme.begin(), readme.end(), [](const std::string& line) {
+    return line.rfind("| type | uniform |", 0) == 0;
+  });
+  QVERIFY2(header != readme.end(), "README has no | type | uniform | table");
+  for (auto row = header + 2; row != readme.end() && row->rfind("|", 0) == 0; ++row) {
+    std::istringstream cell(row->substr(1, row->find('|', 1) - 1));
+    for (std::string type; std::getline(cell, type, ',');) {
+      type.erase(0, type.find_first_not_of(' '));
+      type.erase(type.find_last_not_of(' ') + 1);
+      tabled.insert(type);
+    }
+  }
+  QVERIFY2(tabled == accepted, "README's parameter types differ from the manifest schema's");
+}
+
 void BrushManifestTest::badManifestIsRefused_data() {
   QTest::addColumn<QString>("manifest");
   QTest::addColumn<QString>("expected"); // the message after "<path>: "
@@ -261,6 +361,12 @@ void BrushManifestTest::badManifestIsRefused_data() {
       R"(mix[1]: "feature" is not in "writes")");
   row("mix a string", patched({{"mix", "diffuse"}}),
       R"(mix: expected an array of layers, got "diffuse" (use ["diffuse"]))");
+  row("unknown need", patched({{"needs", QJsonArray{"normals"}}}),
+      R"(needs[0]: unknown need "normals" (use normal))");
+  row("needs a string", patched({{"needs", "normal"}}),
+      R"(needs: expected an array, got "normal" (use ["normal"]))");
+  row("need twice", patched({{"needs", QJsonArray{"normal", "normal"}}}),
+      R"(needs[1]: "normal" is listed twice)");
   row("empty writes", patched({{"writes", QJsonArray{}}}),
       "writes: a brush must write at least one layer");
   row("unknown area", patched({{"area", "surface"}}),
@@ -268,17 +374,17 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("unknown falloff", patched({{"falloff", "gauss"}}),
       R"(falloff: unknown falloff "gauss" (use linear, smooth, constant or curve))");
   row("curve value above 1",
-      patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1, 1.5, 0}}}),
-      "falloff_curve[1]: 1.5 is outside [0, 1]");
+      patched({{"falloff", "curve"}, {"falloffCurve", QJsonArray{1, 1.5, 0}}}),
+      "falloffCurve[1]: 1.5 is outside [0, 1]");
   row("curve value below 0",
-      patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1, -0.25}}}),
-      "falloff_curve[1]: -0.25 is outside [0, 1]");
-  row("curve too short", patched({{"falloff", "curve"}, {"falloff_curve", QJsonArray{1}}}),
-      "falloff_curve: needs 2 to 64 values, got 1");
+      patched({{"falloff", "curve"}, {"falloffCurve", QJsonArray{1, -0.25}}}),
+      "falloffCurve[1]: -0.25 is outside [0, 1]");
+  row("curve too short", patched({{"falloff", "curve"}, {"falloffCurve", QJsonArray{1}}}),
+      "falloffCurve: needs 2 to 64 values, got 1");
   row("curve missing", patched({{"falloff", "curve"}}),
-      R"(falloff_curve: missing required field ("falloff" is "curve"))");
-  row("curve without curve falloff", patched({{"falloff_curve", QJsonArray{1, 0}}}),
-      R"(falloff_curve: only used when "falloff" is "curve")");
+      R"(falloffCurve: missing required field ("falloff" is "curve"))");
+  row("curve without curve falloff", patched({{"falloffCurve", QJsonArray{1, 0}}}),
+      R"(falloffCurve: only used when "falloff" is "curve")");
   row("unknown category", patched({{"category", "sculpting"}}),
       R"(category: unknown category "sculpting" (use sculpt, paint or splat))");
   row("typo in field", patched({{"shadr", "brush.glsl"}}),

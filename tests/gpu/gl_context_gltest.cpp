@@ -11,6 +11,7 @@
 
 #include <cstring>
 #include <optional>
+#include <utility>
 
 using namespace octaclay::gpu;
 
@@ -24,6 +25,8 @@ private slots:
   void scissoredPassTouchesOnlyItsRegion();
   void brokenShaderReportsNameAndLog();
   void adoptCurrentUsesTheSameContext();
+  void adoptOwnsAndWrapDoesNot();
+  void vertexArrayIsDeletedWithItsOwner();
 
 private:
   std::optional<GlContext> context_;
@@ -37,6 +40,34 @@ void GlContextTest::initTestCase() {
   }
   qInfo("%s: %s, %s", context_->platform().c_str(), context_->renderer().c_str(),
         context_->version().c_str());
+}
+
+// Texture::adopt takes ownership of a GL id; Texture::wrap only stands for it.
+void GlContextTest::adoptOwnsAndWrapDoesNot() {
+  Texture owner(4, 4, TextureFormat::Rgba32f);
+  const unsigned id = owner.id();
+  {
+    const Texture wrapped = Texture::wrap(id, 4, 4, TextureFormat::Rgba32f);
+    QCOMPARE(wrapped.id(), id);
+  }
+  QVERIFY(glIsTexture(id)); // the wrapper left it to its owner
+  Texture adopted = Texture::adopt(owner.release(), 4, 4, TextureFormat::Rgba32f);
+  QCOMPARE(adopted.id(), id);
+  adopted = Texture();
+  QVERIFY(!glIsTexture(id)); // the adopter deleted it
+}
+
+void GlContextTest::vertexArrayIsDeletedWithItsOwner() {
+  VertexArray array = VertexArray::create();
+  array.bind();
+  glBindVertexArray(0);
+  const unsigned id = array.id();
+  QVERIFY(glIsVertexArray(id));
+  VertexArray moved = std::move(array);
+  QCOMPARE(moved.id(), id);
+  QCOMPARE(array.id(), 0u);
+  moved = VertexArray();
+  QVERIFY(!glIsVertexArray(id));
 }
 
 void GlContextTest::contextIsCore43() {

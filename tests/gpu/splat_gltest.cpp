@@ -322,6 +322,7 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
   BrushManifest relief = splat_, paint = splat_;
   relief.id = "splat-reference-relief";
   relief.writes = {core::EditLayer::Positions};
+  relief.reads = {core::EditLayer::Feature}; // its body samples u_featureLayer
   paint.id = "splat-reference-paint";
   paint.writes = {core::EditLayer::Diffuse, core::EditLayer::Feature};
   paint.reads = {};
@@ -583,6 +584,7 @@ void SplatTest::aMixedLayerNeedsBrushLayersAndIsNotSampled() {
   QVERIFY2(perLayer.find("\"mix\" needs a brushLayers() body") != std::string::npos,
            perLayer.c_str());
   m.id = "mix-sampling";
+  m.reads = {core::EditLayer::Diffuse};
   const std::string sampling =
       loadError(m, "void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, "
                    "BrushInput b) { diffuse = texelFetch(u_diffuseLayer, b.texel, 0); }");

@@ -59,7 +59,7 @@ const char* const kEveryTypeManifest = R"({
   "writes": ["diffuse"],
   "area": "uv",
   "falloff": "curve",
-  "falloff_curve": [1.0, 0.5, 0.0],
+  "falloffCurve": [1.0, 0.5, 0.0],
   "parameters": [
     {"id": "depth", "label": "Depth", "type": "float", "default": 0.5, "min": -2, "max": 3,
      "step": 0.25, "tooltip": "How deep"},
@@ -214,7 +214,7 @@ private slots:
     QCOMPARE(panel.settings().falloff, gpu::Falloff::Constant);
     auto* falloff = panel.findChild<QComboBox*>(QStringLiteral("falloff"));
     QVERIFY(falloff);
-    QCOMPARE(falloff->count(), 3); // no curve without a falloff_curve
+    QCOMPARE(falloff->count(), 3); // no curve without a falloffCurve
     QCOMPARE(falloff->currentData().toInt(), static_cast<int>(gpu::Falloff::Constant));
   }
 

@@ -10,6 +10,8 @@ enum class ErrorKind {
   InvalidArgument, ///< a parameter out of range (size not a power of two, unknown shape …)
   InvalidInput,    ///< a file that exists but is not what it should be
   Io,              ///< a file that cannot be opened, read, written or renamed
+  UnknownId,       ///< a name that nothing loaded answers to (a brush id no brush has)
+  Cancelled,       ///< the user stopped the work (a progress callback returned false)
 };
 
 /// Every failure core reports: a message that says what was wrong and what to do.

@@ -54,14 +54,16 @@ public:
   /// shader file and the compiler's log, and a previously loaded version of it stays in use.
   /// A body that defines `void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4
   /// feature, BrushInput b)` instead of `brush()` writes all its layers in one pass (it must not
-  /// write the mask; GlError otherwise).
+  /// write the mask; GlError otherwise). Everything else comes from the manifest: its reads
+  /// decide which layers are bound and which are written in place, its needs whether normals
+  /// are computed (a mixed layer must not be read; GlError otherwise).
   void load(const BrushManifest& manifest, const std::string& shaderSource);
   bool has(const std::string& id) const;
 
   /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
   /// call), for each layer it writes (one pass for all of them when the body defines
   /// brushLayers()), then the seaming pass when it reached the border; the mirror is updated
-  /// for those tiles. Throws GlError for an unknown brush id.
+  /// for those tiles. Throws core::Error(UnknownId) for an unknown brush id.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
@@ -89,6 +91,9 @@ private:
   };
   void bindMaterial(const Program& program, const BrushManifest& manifest,
                     const GpuDocument& document, const Dab& dab) const;
+  /// Unbinds the material samplers from their units (they would override the filtering of
+  /// whatever else binds textures there).
+  static void releaseMaterialUnits();
   std::vector<GpuMaterial> materials_;
   /// The brush's program for a layer, mask kind and enum parameters' values, compiled on first
   /// use. Throws GlError.

@@ -25,6 +25,9 @@ enum class Category { Sculpt, Paint, Splat };
 /// (float, int and bool → float, color → vec4, enum → int). A material parameter declares no
 /// uniform: the engine binds the chosen material's maps (u_material*, see the prelude).
 enum class ParameterType { Float, Int, Bool, Color, Enum, Material };
+/// What the engine computes for a brush beyond its layers ("needs"): Normal is each sample's
+/// own surface normal (BrushInput.normal; six position reads a texel).
+enum class BrushNeed { Normal };
 
 /// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
 /// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
@@ -33,6 +36,7 @@ std::string_view toManifestName(AreaMode area);
 std::string_view toManifestName(Falloff falloff);
 std::string_view toManifestName(Category category);
 std::string_view toManifestName(ParameterType type);
+std::string_view toManifestName(BrushNeed need);
 
 /// One user-tunable value of a brush, shown as a widget and passed as uniform u_<id> (with '-'
 /// replaced by '_').
@@ -60,9 +64,13 @@ struct BrushManifest {
   Category category = Category::Sculpt;
   /// File name of the shader, relative to folder; the file existed when parsed.
   std::string shaderFile;
-  /// Layers the shader samples beyond the value it is given (empty allowed); layers it writes,
-  /// one pass each, never empty and without duplicates.
+  /// Layers the shader samples beyond the value(s) it is given (empty allowed): the engine binds
+  /// only these, and writes a layer in place only when nothing reads it. Layers it writes, one
+  /// pass each, never empty and without duplicates.
   std::vector<core::EditLayer> reads, writes;
+  /// What the engine computes for the shader; without Normal, BrushInput.normal is the centre's
+  /// normal (area "volume+normal" computes it anyway).
+  std::vector<BrushNeed> needs;
   /// Layers (diffuse or feature, each also in writes) a brushLayers() body hands back as a
   /// colour to mix in and its amount in alpha: the GPU's blender mixes rgb by that amount and
   /// keeps the layer's alpha, so the pass never reads the layer (its argument starts at zero).
@@ -78,6 +86,10 @@ struct BrushManifest {
   /// The folder holding manifest.json and the shader.
   std::filesystem::path folder;
 
+  /// Whether layer is in reads.
+  bool readsLayer(core::EditLayer layer) const;
+  /// Whether the passes compute each sample's normal: needs Normal, or area VolumeNormal.
+  bool needsNormal() const;
   /// The parameter with this id, or nullptr.
   const BrushParameter* parameter(std::string_view parameterId) const;
   /// folder / shaderFile.

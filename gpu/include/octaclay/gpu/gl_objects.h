@@ -16,8 +16,9 @@ enum class TextureFormat {
   Rgba8,   ///< unit vectors stored as v/2 + 1/2 (the normal map): a quarter of the bytes to sample
 };
 
-/// Move-only owner of a 2D texture. Can be empty, adopt a foreign id (wrap) and give it back
-/// (release). All calls need the owning context current on the calling thread.
+/// Move-only owner of a 2D texture. Can be empty, take ownership of a foreign id (adopt), stand
+/// for one it does not own (wrap) and give its id back (release). All calls need the owning
+/// context current on the calling thread.
 class Texture {
 public:
   Texture() = default;
@@ -25,6 +26,10 @@ public:
   Texture(int width, int height, TextureFormat format);
   /// The same with room for `levels` mipmap levels (fill them with glGenerateMipmap).
   static Texture withLevels(int width, int height, TextureFormat format, int levels);
+  /// Takes ownership of id: the texture deletes it.
+  static Texture adopt(unsigned id, int width, int height, TextureFormat format);
+  /// Stands for id without owning it: the texture never deletes it (its owner does, after the
+  /// texture is gone).
   static Texture wrap(unsigned id, int width, int height, TextureFormat format);
   Texture(Texture&& other) noexcept;
   Texture& operator=(Texture&& other) noexcept;
@@ -58,6 +63,7 @@ private:
   unsigned framebuffer() const;
 
   unsigned id_ = 0;
+  bool owned_ = true; // false: wrap()'s, deleted by its owner
   int width_ = 0, height_ = 0;
   TextureFormat format_ = TextureFormat::Rgba32f;
   mutable unsigned framebuffer_ = 0; // made on first use by read() or bindAsTarget()
@@ -104,6 +110,25 @@ private:
   unsigned id_ = 0;
 };
 
+/// Move-only owner of a vertex array object.
+class VertexArray {
+public:
+  VertexArray() = default;
+  /// A new vertex array object. Throws GlError.
+  static VertexArray create();
+  VertexArray(VertexArray&& other) noexcept;
+  VertexArray& operator=(VertexArray&& other) noexcept;
+  VertexArray(const VertexArray&) = delete;
+  VertexArray& operator=(const VertexArray&) = delete;
+  ~VertexArray();
+
+  void bind() const;
+  unsigned id() const { return id_; }
+
+private:
+  unsigned id_ = 0;
+};
+
 /// Move-only owner of a sampler object: filtering and wrapping bound to a texture unit, over the
 /// bound texture's own parameters.
 class Sampler {
@@ -129,16 +154,13 @@ class RectPass {
 public:
   /// Needs a current context. Throws GlError.
   RectPass();
-  RectPass(RectPass&&) noexcept;
-  RectPass& operator=(RectPass&&) noexcept;
-  ~RectPass();
 
   /// Runs the bound program over rects of a target of width × height texels (the viewport).
   void draw(std::span<const core::TexelRect> rects, int width, int height);
 
 private:
   Buffer rects_;
-  unsigned vertexArray_ = 0;
+  VertexArray vertexArray_;
 };
 
 /// The vertex shader of RectPass programs: gl_FragCoord.xy of every fragment is a texel centre

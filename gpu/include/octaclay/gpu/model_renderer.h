@@ -90,12 +90,14 @@ private:
   std::map<int, Program> drawPrograms_;
   RectPass rectPass_;
   Texture normals_, environment_;
-  unsigned vertexArray_ = 0, indexBuffer_ = 0;
+  VertexArray vertexArray_;
+  Buffer indexBuffer_;
   int n_ = 0, divisor_ = 0;
   long long indexCount_ = 0, drawnTriangles_ = 0;
   std::unique_ptr<detail::ModelChunks> chunks_;
   bool chunksStale_ = true;
-  unsigned lodVertexArray_ = 0, lodBuffer_ = 0;
+  VertexArray lodVertexArray_; // made by the first setLodMesh()
+  Buffer lodBuffer_;
   long long lodTriangles_ = 0;
 };
 

@@ -37,8 +37,9 @@ struct StrokeResult {
 
 /// Runs a stroke: dabs are spaced along the path by object-space distance on the current
 /// surface, each centred on the sample under its path point (re-picked after the previous dab),
-/// and repeated at the mirrored surface point for each symmetry plane. Throws GlError for an
-/// unknown brush, core::Error(InvalidArgument) for an empty path or a point outside [0, 1].
+/// and repeated at the mirrored surface point for each symmetry plane. Throws
+/// core::Error(UnknownId) for an unknown brush, core::Error(InvalidArgument) for an empty path or a
+/// point outside [0, 1].
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings);
 
@@ -56,7 +57,7 @@ namespace octaclay::gpu {
 /// it.
 class StrokeSession {
 public:
-  /// settings.path is ignored. Throws GlError for an unknown brush.
+  /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush.
   StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                 StrokeSettings settings);
   ~StrokeSession();

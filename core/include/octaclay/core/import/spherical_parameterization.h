@@ -24,10 +24,10 @@ struct SphericalMap {
   float stretchLinf = 0;
 };
 
-/// Thrown when the progress callback asks to stop: an Error of kind InvalidArgument.
+/// Thrown when the progress callback asks to stop: an Error of kind Cancelled.
 class Cancelled : public Error {
 public:
-  Cancelled() : Error(ErrorKind::InvalidArgument, "cancelled") {}
+  Cancelled() : Error(ErrorKind::Cancelled, "cancelled") {}
 };
 
 /// Tunables of parameterizeOnSphere; the defaults suit meshes of up to ~10⁵ vertices.

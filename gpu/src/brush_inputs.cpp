@@ -1,0 +1,104 @@
+#include "brush_inputs.h"
+
+#include "brush_program.h"
+#include "texture_units.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace octaclay::gpu::detail {
+namespace {
+
+GLint location(const Program& program, const char* name) {
+  return program.uniform(name);
+}
+
+const core::Layer* documentLayer(const core::Document& d, core::EditLayer layer) {
+  switch (layer) {
+  case core::EditLayer::Diffuse:
+    return &d.diffuse;
+  case core::EditLayer::Feature:
+    return &d.feature;
+  case core::EditLayer::Mask:
+    return &d.mask;
+  case core::EditLayer::Positions:
+    break;
+  }
+  return nullptr;
+}
+
+} // namespace
+
+void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
+                 core::EditLayer layer, const Dab& dab) {
+  // The layer's base value (what a new document holds): erase modes blend back to it.
+  if (const core::Layer* l = documentLayer(doc.document(), layer))
+    glUniform4f(location(program, "u_layerFill"), l->fill[0], l->fill[1], l->fill[2], l->fill[3]);
+  // brushLayers() brushes: every layer's base value.
+  glUniform4f(location(program, "u_diffuseFill"), doc.document().diffuse.fill[0],
+              doc.document().diffuse.fill[1], doc.document().diffuse.fill[2],
+              doc.document().diffuse.fill[3]);
+  glUniform4f(location(program, "u_featureFill"), doc.document().feature.fill[0],
+              doc.document().feature.fill[1], doc.document().feature.fill[2], 0.0f);
+  for (const BrushUnit& unit : kLayerUnits)
+    glUniform1i(location(program, unit.sampler), unit.unit);
+  glUniform1f(location(program, "u_maskFill"), doc.document().mask.fill[0]);
+  glUniform1i(location(program, "u_size"), doc.size());
+  glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
+  glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
+              dab.centreNormal.z);
+  float radius = dab.radius;
+  if (manifest.area ==
+      AreaMode::Uv) // measured in samples: the same fraction of N as of the diagonal
+    radius =
+        dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * static_cast<float>(doc.size());
+  glUniform1f(location(program, "u_radius"), radius);
+  glUniform1f(location(program, "u_strength"), dab.strength);
+  glUniform1f(location(program, "u_pressure"), dab.pressure);
+  glUniform1f(location(program, "u_normalCosine"),
+              std::cos(dab.normalAngleDegrees * std::numbers::pi_v<float> / 180.0f));
+  glUniform2i(location(program, "u_centreTexel"), dab.centreTexel.i, dab.centreTexel.j);
+  if (!manifest.falloffCurve.empty()) {
+    const GLsizei count =
+        static_cast<GLsizei>(std::min<std::size_t>(manifest.falloffCurve.size(), 64));
+    glUniform1fv(location(program, "u_falloffCurve"), count, manifest.falloffCurve.data());
+    glUniform1i(location(program, "u_falloffCurveSize"), count);
+  }
+  // The projection frame: along the view through the centre, or the centre normal headless.
+  const core::Vec3f dir =
+      core::normalize(dab.viewDirection ? *dab.viewDirection
+                                        : core::Vec3f{-dab.centreNormal.x, -dab.centreNormal.y,
+                                                      -dab.centreNormal.z});
+  const core::Vec3f helper = std::abs(dir.y) < 0.9f ? core::Vec3f{0, 1, 0} : core::Vec3f{1, 0, 0};
+  const core::Vec3f right = core::normalize(core::cross(helper, dir));
+  const core::Vec3f up = core::cross(dir, right);
+  glUniform3f(location(program, "u_projectionDir"), dir.x, dir.y, dir.z);
+  glUniform3f(location(program, "u_projectionRight"), right.x, right.y, right.z);
+  glUniform3f(location(program, "u_projectionUp"), up.x, up.y, up.z);
+  for (const BrushParameter& p : manifest.parameters) {
+    const auto given = dab.parameters.find(p.id);
+    const std::array<float, 4> v = given != dab.parameters.end() ? given->second : p.defaultValue;
+    // Materials are bound by the engine (bindMaterial), enums compiled in (enumValues).
+    if (p.type == ParameterType::Material || p.type == ParameterType::Enum) continue;
+    const GLint at = location(program, uniformName(p.id).c_str());
+    if (p.type == ParameterType::Color)
+      glUniform4f(at, v[0], v[1], v[2], v[3]);
+    else
+      glUniform1f(at, v[0]);
+  }
+}
+
+void bindLayers(GpuDocument& document, core::EditLayer layer, bool samplesDiffuse,
+                bool samplesFeature) {
+  kPositionsUnit.bind(document.texture(core::EditLayer::Positions).id());
+  kLayerUnit.bind(document.texture(layer).id());
+  kMaskUnit.bind(document.texture(core::EditLayer::Mask).id());
+  kFeatureUnit.bind(samplesFeature ? document.texture(core::EditLayer::Feature).id() : 0);
+  kDiffuseUnit.bind(samplesDiffuse ? document.texture(core::EditLayer::Diffuse).id() : 0);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+} // namespace octaclay::gpu::detail

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "octaclay/core/document/edit_layer.h"
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+// Program assembly: the defines, parameter uniforms, prelude, brush body and main() of a brush
+// pass, and the compiler's messages mapped back to the body's own lines.
+namespace octaclay::gpu::detail {
+
+/// The uniform of a parameter: u_<id>, '-' replaced by '_'.
+std::string uniformName(const std::string& parameterId);
+
+/// The dab's value of each enum parameter (its default where the dab gives none), in manifest
+/// order, clamped to the options: each set of values is a program of its own.
+std::vector<int> enumValues(const BrushManifest& manifest,
+                            const std::map<std::string, std::array<float, 4>>& given);
+
+/// The compiler's log with the body's lines named as file:line.
+std::string brushLog(const std::string& log, const std::string& file);
+
+/// Whether the brush body defines `void brushLayers(`: it writes all its layers in one pass.
+bool writesAllLayers(const std::string& body);
+
+/// The fragment source of one pass. allLayers: the body defines brushLayers() and the program
+/// writes every layer at once. enumValues: the enum parameters' values, in manifest order.
+std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
+                     bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
+                     const std::string& body);
+
+} // namespace octaclay::gpu::detail

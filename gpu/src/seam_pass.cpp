@@ -1,0 +1,85 @@
+#include "seam_pass.h"
+
+#include "shader_sources.h"
+#include "texture_copy.h"
+
+#include "octaclay/gpu/brush_engine.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+namespace octaclay::gpu {
+namespace detail {
+
+Program seamProgram() {
+  return Program("gpu/shaders/seam.glsl", rectsVertexShader(),
+                 "#version 430 core\n" + builtInShader("seam.glsl"));
+}
+
+void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
+               core::EditLayer layer, const std::vector<core::TexelRect>& runs) {
+  const int side = document.size() + 1;
+  // Into the scratch: after a whole-image swap the scratch is the old texture, free to
+  // overwrite, and the seam pass reads the layer's texture.
+  document.scratch(layer).bindAsTarget();
+  seam.use();
+  glUniform1i(seam.uniform("u_source"), 0);
+  glUniform1i(seam.uniform("u_size"), document.size());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
+  rectPass.draw(runs, side, side);
+  for (const core::TexelRect& run : runs)
+    copyRect(document.scratch(layer), document.texture(layer), run);
+}
+
+} // namespace detail
+
+// Runs along the border lines (the rows whole, the columns without their corners). Elsewhere
+// identified samples are already equal, and the seaming pass would write them back unchanged.
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side) {
+  const auto onBorder = [side](const core::TexelRect& t) {
+    return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
+  };
+  if (std::none_of(tiles.begin(), tiles.end(), onBorder)) return {}; // most dabs
+  const int n = side - 1;
+  std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
+  for (auto& m : marked)
+    m.assign(static_cast<std::size_t>(side), 0);
+  const auto mark = [&](std::vector<std::uint8_t>& line, int begin, int end) {
+    for (int k = begin; k < end; ++k)
+      line[static_cast<std::size_t>(k)] = line[static_cast<std::size_t>(n - k)] = 1;
+  };
+  for (const core::TexelRect& t : tiles) {
+    if (t.y == 0) mark(marked[0], t.x, t.x + t.width);
+    if (t.y + t.height == side) mark(marked[1], t.x, t.x + t.width);
+    if (t.x == 0) mark(marked[2], t.y, t.y + t.height);
+    if (t.x + t.width == side) mark(marked[3], t.y, t.y + t.height);
+  }
+  const bool corner = marked[0][0] || marked[1][0] || marked[2][0] || marked[3][0];
+  for (int k : {0, 1})
+    marked[k][0] = marked[k][static_cast<std::size_t>(n)] = corner;
+  std::vector<core::TexelRect> runs;
+  for (int line = 0; line < 4; ++line) {
+    const bool row = line < 2;
+    const int begin = row ? 0 : 1, end = row ? side : n; // columns leave the corners to rows
+    for (int k = begin; k < end;) {
+      if (!marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(k)]) {
+        ++k;
+        continue;
+      }
+      int stop = k;
+      while (stop < end && marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(stop)])
+        ++stop;
+      const int at = line % 2 == 0 ? 0 : n;
+      runs.push_back(row ? core::TexelRect{k, at, stop - k, 1}
+                         : core::TexelRect{at, k, 1, stop - k});
+      k = stop;
+    }
+  }
+  return runs;
+}
+
+} // namespace octaclay::gpu
