@@ -1,3 +1,4 @@
+#include "shared_data.h"
 #include "test_meshes.h"
 
 #include "octaclay/core/error.h"
@@ -196,7 +197,7 @@ void SphericalParameterizationTest::importsSharedMeshes_data() {
 void SphericalParameterizationTest::importsSharedMeshes() {
   QFETCH(QString, file);
   const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file;
-  if (!QFileInfo::exists(path)) QSKIP("shared mesh not available");
+  if (!QFileInfo::exists(path)) OCTACLAY_MISSING_SHARED_DATA(file);
   const TriangleMesh mesh = loadGenus0Mesh(path.toStdString()).mesh;
   const int n = qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N") > 0
                     ? qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N")
