@@ -4,8 +4,8 @@
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
-#include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 
 #include <chrono>

@@ -17,7 +17,7 @@
 #include "octaclay/core/codec/codec.h"
 #include "octaclay/core/codec/wavelet_codec.h"
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"

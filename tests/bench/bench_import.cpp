@@ -12,6 +12,7 @@
 // Always exits 0 once the table is printed (scripts/bench runs every benchmark under set -e);
 // misses are read from the table.
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"

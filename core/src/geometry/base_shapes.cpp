@@ -1,6 +1,7 @@
 #include "octaclay/core/geometry/base_shapes.h"
 
 #include "detail/parallel_rows.h"
+#include "geometry/octahedral_direction.h"
 
 #include "octaclay/core/geometry/seaming.h"
 
@@ -66,22 +67,7 @@ double blobRadius(double x, double y, double z) {
   return 0.85 + 0.15 * blobNoise(x, y, z);
 }
 
-struct Dir {
-  double x, y, z;
-};
-
-Dir octahedralDirectionD(int n, int i, int j) {
-  const double u = 2.0 * i / n - 1.0, v = 2.0 * j / n - 1.0;
-  const double au = std::abs(u), av = std::abs(v);
-  double x = u, y = v;
-  const double z = 1.0 - au - av;
-  if (z < 0) { // the lower half is folded over the square's corners
-    x = std::copysign(1.0 - av, u);
-    y = std::copysign(1.0 - au, v);
-  }
-  const double len = std::sqrt(x * x + y * y + z * z);
-  return {x / len, y / len, z / len};
-}
+using Dir = detail::Dir3d;
 
 Vec3f surfacePoint(BaseShape shape, Dir d) {
   double t = 1.0;
@@ -123,18 +109,13 @@ std::string_view baseShapeName(BaseShape shape) {
   return "sphere";
 }
 
-Vec3f octahedralDirection(int n, int i, int j) {
-  const Dir d = octahedralDirectionD(n, i, j);
-  return {float(d.x), float(d.y), float(d.z)};
-}
-
 GeometryImage makeBaseShape(BaseShape shape, int n) {
   GeometryImage image(n);
   const int side = image.side();
   detail::parallelRows(side, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
       for (int i = 0; i < side; ++i) {
-        const Vec3f p = surfacePoint(shape, octahedralDirectionD(n, i, j));
+        const Vec3f p = surfacePoint(shape, detail::octahedralDirectionD(n, i, j));
         image.at(i, j) = {p.x, p.y, p.z, 0.0f};
       }
   });

@@ -1,7 +1,10 @@
 #include "octaclay/core/geometry/octahedral.h"
 
+#include "geometry/octahedral_direction.h"
+
 #include "octaclay/core/error.h"
 
+#include <cmath>
 #include <string>
 
 namespace octaclay::core {
@@ -17,6 +20,25 @@ long long floorDiv(long long a, long long m) {
 }
 
 } // namespace
+
+Vec3f octahedralDirection(int n, int i, int j) {
+  const detail::Dir3d d = detail::octahedralDirectionD(n, i, j);
+  return {float(d.x), float(d.y), float(d.z)};
+}
+
+std::array<double, 2> octahedralSquarePoint(Vec3f direction) {
+  const double x = direction.x, y = direction.y, z = direction.z;
+  const double l1 = std::abs(x) + std::abs(y) + std::abs(z);
+  if (!(l1 > 0))
+    throw Error(ErrorKind::InvalidArgument, "octahedralSquarePoint needs a non-zero direction");
+  double u = x / l1, v = y / l1;
+  if (z < 0) { // the lower half folds over the square's corners (see octahedralDirection)
+    const double au = std::abs(u), av = std::abs(v);
+    u = std::copysign(1.0 - av, x);
+    v = std::copysign(1.0 - au, y);
+  }
+  return {0.5 * (u + 1.0), 0.5 * (v + 1.0)};
+}
 
 bool isValidSize(int n) {
   return n >= kMinSize && n <= kMaxSize && (n & (n - 1)) == 0;
@@ -108,5 +130,22 @@ int incidentTriangles(int n, Sample s, std::array<std::array<Sample, 3>, 6>& out
           if (tri[k] == s) out[count++] = {tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]};
   return count;
 }
+
+namespace detail {
+
+Dir3d octahedralDirectionD(int n, int i, int j) {
+  const double u = 2.0 * i / n - 1.0, v = 2.0 * j / n - 1.0;
+  const double au = std::abs(u), av = std::abs(v);
+  double x = u, y = v;
+  const double z = 1.0 - au - av;
+  if (z < 0) { // the lower half is folded over the square's corners
+    x = std::copysign(1.0 - av, u);
+    y = std::copysign(1.0 - au, v);
+  }
+  const double len = std::sqrt(x * x + y * y + z * z);
+  return {x / len, y / len, z / len};
+}
+
+} // namespace detail
 
 } // namespace octaclay::core

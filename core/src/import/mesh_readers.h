@@ -1,11 +1,13 @@
 #pragma once
 
+#include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace octaclay::core::detail {
@@ -42,5 +44,10 @@ struct RawMesh {
 /// the path. Damaged or missing attributes (colours, texture coordinates, materials) are never
 /// errors: they are dropped with a note.
 RawMesh readRawMesh(const std::filesystem::path& path);
+
+/// readRawMesh for contents already in memory (the fuzzers' entry): `text` is read as `format`,
+/// `path` names the file in messages and, for OBJ, is where material libraries are looked for.
+/// Throws Error(InvalidInput) as readRawMesh does.
+RawMesh parseRawMesh(const std::filesystem::path& path, MeshFormat format, std::string_view text);
 
 } // namespace octaclay::core::detail

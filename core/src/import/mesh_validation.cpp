@@ -1,13 +1,12 @@
-// Validation of imported meshes before spherical parameterization.
-// Based on: the half-edge view of Botsch, Kobbelt, Pauly, Alliez & Lévy, "Polygon Mesh
-// Processing" (2010), ch. 2 (manifoldness as one fan per vertex and at most two faces per edge,
-// orientation by propagation across edges) and the Euler–Poincaré formula V − E + F = 2 − 2g
-// for one closed orientable component. Edges are found by sorting half-edge keys and fans by
-// union-find over face corners, so every step is O(F log F).
+// Validation of imported meshes before spherical parameterization: cleanup, the topology checks
+// (mesh_topology.cpp), hole filling (mesh_repair.cpp) and the genus.
+// Based on: the Euler–Poincaré formula V − E + F = 2 − 2g for one closed orientable component.
 
 #include "octaclay/core/import/mesh_validation.h"
 
 #include "import/mesh_readers.h"
+#include "import/mesh_repair.h"
+#include "import/mesh_topology.h"
 
 #include "octaclay/core/error.h"
 
@@ -24,295 +23,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Tri = std::array<std::uint32_t, 3>;
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) {
-    std::iota(parent.begin(), parent.end(), std::uint32_t(0));
-  }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]]; // path halving keeps the trees flat
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using detail::Analysis;
+using detail::analyze;
+using detail::fillHoles;
+using detail::followCorners;
+using detail::kNone;
+using detail::Tri;
 
 std::string counted(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// Topology of a mesh whose faces have three distinct corners. Edge "slots" are 3f + k: the edge
-// from corner k of face f to corner k + 1.
-struct Analysis {
-  std::size_t edges = 0;
-  std::size_t nonManifoldEdges = 0;
-  std::uint32_t exampleA = 0, exampleB = 0; ///< vertices of one non-manifold edge
-  std::size_t exampleFaces = 0;
-  bool orientable = true;
-  std::vector<char> flip; ///< per face: turn it to agree with its component's majority
-  std::size_t components = 0;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> holeEdges; ///< (from, to) as a fill
-                                                                  ///< triangle must run them
-  std::size_t holes = 0;
-  std::size_t pinchVertices = 0;
-  std::uint32_t firstPinch = 0; ///< lowest-numbered pinch vertex
-  std::size_t firstPinchFans = 0;
-};
-
-Analysis analyze(const TriangleMesh& mesh) {
-  const auto& tris = mesh.triangles;
-  const std::size_t faceCount = tris.size();
-  Analysis a;
-
-  // Half-edges keyed by their unordered vertex pair, so the faces of one edge sort together.
-  struct HalfEdge {
-    std::uint64_t key;
-    std::uint32_t slot;
-    bool operator<(const HalfEdge& o) const {
-      return key < o.key || (key == o.key && slot < o.slot);
-    }
-  };
-  std::vector<HalfEdge> halfEdges(faceCount * 3);
-  for (std::size_t f = 0; f < faceCount; ++f)
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint64_t u = tris[f][k], v = tris[f][(k + 1) % 3];
-      halfEdges[3 * f + k] = {(std::min(u, v) << 32) | std::max(u, v),
-                              static_cast<std::uint32_t>(3 * f + k)};
-    }
-  std::sort(halfEdges.begin(), halfEdges.end());
-
-  auto from = [&](std::uint32_t slot) { return tris[slot / 3][slot % 3]; };
-  auto to = [&](std::uint32_t slot) { return tris[slot / 3][(slot % 3 + 1) % 3]; };
-
-  std::vector<std::uint32_t> neighbour(faceCount * 3, kNone); // the other slot on the same edge
-  std::vector<std::uint32_t> boundarySlots;
-  for (std::size_t i = 0; i < halfEdges.size();) {
-    std::size_t end = i + 1;
-    while (end < halfEdges.size() && halfEdges[end].key == halfEdges[i].key)
-      ++end;
-    ++a.edges;
-    const std::size_t count = end - i;
-    if (count == 1) {
-      boundarySlots.push_back(halfEdges[i].slot);
-    } else if (count == 2) {
-      neighbour[halfEdges[i].slot] = halfEdges[i + 1].slot;
-      neighbour[halfEdges[i + 1].slot] = halfEdges[i].slot;
-    } else {
-      if (a.nonManifoldEdges == 0 || count > a.exampleFaces) {
-        a.exampleA = from(halfEdges[i].slot);
-        a.exampleB = to(halfEdges[i].slot);
-        a.exampleFaces = count;
-      }
-      ++a.nonManifoldEdges;
-    }
-    i = end;
-  }
-
-  // Orientation and components: a breadth-first walk across two-face edges. Two faces agree
-  // when they run their shared edge in opposite directions.
-  a.flip.assign(faceCount, 0);
-  std::vector<char> seen(faceCount, 0);
-  std::vector<std::uint32_t> order;
-  order.reserve(faceCount);
-  for (std::size_t seed = 0; seed < faceCount; ++seed) {
-    if (seen[seed]) continue;
-    ++a.components;
-    const std::size_t begin = order.size();
-    seen[seed] = 1;
-    order.push_back(static_cast<std::uint32_t>(seed));
-    for (std::size_t q = begin; q < order.size(); ++q) {
-      const std::uint32_t f = order[q];
-      for (std::uint32_t k = 0; k < 3; ++k) {
-        const std::uint32_t other = neighbour[3 * f + k];
-        if (other == kNone) continue;
-        const std::uint32_t g = other / 3;
-        const bool sameDirection = from(3 * f + k) == from(other);
-        const char wanted = static_cast<char>(a.flip[f] ^ (sameDirection ? 1 : 0));
-        if (!seen[g]) {
-          seen[g] = 1;
-          a.flip[g] = wanted;
-          order.push_back(g);
-        } else if (a.flip[g] != wanted) {
-          a.orientable = false;
-        }
-      }
-    }
-    // Keep the orientation most faces already have; the volume test turns everything later.
-    const auto flipped = static_cast<std::size_t>(
-        std::count_if(order.begin() + static_cast<std::ptrdiff_t>(begin), order.end(),
-                      [&](std::uint32_t f) { return a.flip[f] != 0; }));
-    if (2 * flipped > order.size() - begin)
-      for (std::size_t q = begin; q < order.size(); ++q)
-        a.flip[order[q]] ^= 1;
-  }
-
-  // Holes: boundary edges, run the way a filling face would (opposite to their own face, as
-  // that face will be once flipped), grouped into loops by shared vertices.
-  UnionFind loops(mesh.positions.size());
-  for (const std::uint32_t slot : boundarySlots) {
-    const bool flipped = a.flip[slot / 3] != 0;
-    const std::uint32_t u = from(slot), v = to(slot);
-    a.holeEdges.emplace_back(flipped ? u : v, flipped ? v : u);
-    loops.unite(u, v);
-  }
-  std::vector<std::uint32_t> roots;
-  for (const auto& [u, v] : a.holeEdges)
-    roots.push_back(loops.find(u));
-  std::sort(roots.begin(), roots.end());
-  a.holes = static_cast<std::size_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
-
-  // Fans: corners 3f + k around one vertex join when their faces share an edge there. A vertex
-  // whose corners form more than one group is a pinch.
-  UnionFind fans(faceCount * 3);
-  for (std::uint32_t slot = 0; slot < neighbour.size(); ++slot) {
-    const std::uint32_t other = neighbour[slot];
-    if (other == kNone || other < slot) continue;
-    const std::uint32_t f = slot / 3, g = other / 3;
-    const std::uint32_t fk[2] = {slot, 3 * f + (slot % 3 + 1) % 3};
-    const std::uint32_t gk[2] = {other, 3 * g + (other % 3 + 1) % 3};
-    for (const std::uint32_t c : fk)
-      for (const std::uint32_t d : gk)
-        if (tris[c / 3][c % 3] == tris[d / 3][d % 3]) fans.unite(c, d);
-  }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> vertexFans(faceCount * 3);
-  for (std::uint32_t c = 0; c < vertexFans.size(); ++c)
-    vertexFans[c] = {tris[c / 3][c % 3], fans.find(c)};
-  std::sort(vertexFans.begin(), vertexFans.end());
-  vertexFans.erase(std::unique(vertexFans.begin(), vertexFans.end()), vertexFans.end());
-  for (std::size_t i = 0; i < vertexFans.size();) {
-    std::size_t end = i + 1;
-    while (end < vertexFans.size() && vertexFans[end].first == vertexFans[i].first)
-      ++end;
-    if (end - i > 1) {
-      if (a.pinchVertices == 0) {
-        a.firstPinch = vertexFans[i].first;
-        a.firstPinchFans = end - i;
-      }
-      ++a.pinchVertices;
-    }
-    i = end;
-  }
-  return a;
-}
-
-// Closes every hole whose loop is simple and at most maxEdges long; returns how many.
-// A new centre vertex gets the mean colour of its loop when `colours` is not empty.
-std::size_t fillHoles(TriangleMesh& mesh, std::vector<Vec4f>& colours,
-                      std::vector<std::pair<std::uint32_t, std::uint32_t>> edges,
-                      std::size_t maxEdges) {
-  std::sort(edges.begin(), edges.end());
-  auto outgoing = [&](std::uint32_t v) {
-    return std::equal_range(edges.begin(), edges.end(), std::pair{v, std::uint32_t(0)},
-                            [](const auto& x, const auto& y) { return x.first < y.first; });
-  };
-  std::vector<char> used(edges.size(), 0);
-  std::vector<std::uint32_t> loop;
-  std::size_t filled = 0;
-  for (std::size_t start = 0; start < edges.size(); ++start) {
-    if (used[start]) continue;
-    loop.clear();
-    bool simple = true;
-    std::size_t e = start;
-    while (true) {
-      used[e] = 1;
-      loop.push_back(edges[e].first);
-      const std::uint32_t next = edges[e].second;
-      if (next == edges[start].first) break;
-      // A vertex where two loops touch has a choice of ways on; such loops are left open
-      // rather than guessed.
-      const auto [lo, hi] = outgoing(next);
-      if (hi - lo != 1 || used[static_cast<std::size_t>(lo - edges.begin())]) {
-        simple = false;
-        break;
-      }
-      e = static_cast<std::size_t>(lo - edges.begin());
-    }
-    const auto [lo, hi] = outgoing(edges[start].first);
-    if (!simple || hi - lo != 1 || loop.size() > maxEdges) continue;
-    if (loop.size() == 3) {
-      mesh.triangles.push_back({loop[0], loop[1], loop[2]});
-    } else {
-      double sum[3] = {0, 0, 0};
-      for (const std::uint32_t v : loop) {
-        sum[0] += mesh.positions[v].x;
-        sum[1] += mesh.positions[v].y;
-        sum[2] += mesh.positions[v].z;
-      }
-      const double n = double(loop.size());
-      const auto centre = static_cast<std::uint32_t>(mesh.positions.size());
-      mesh.positions.push_back({float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)});
-      if (!colours.empty()) {
-        double rgba[4] = {0, 0, 0, 0};
-        for (const std::uint32_t v : loop) {
-          rgba[0] += colours[v].x;
-          rgba[1] += colours[v].y;
-          rgba[2] += colours[v].z;
-          rgba[3] += colours[v].w;
-        }
-        colours.push_back(
-            {float(rgba[0] / n), float(rgba[1] / n), float(rgba[2] / n), float(rgba[3] / n)});
-      }
-      for (std::size_t k = 0; k < loop.size(); ++k)
-        mesh.triangles.push_back({loop[k], loop[(k + 1) % loop.size()], centre});
-    }
-    ++filled;
-  }
-  return filled;
-}
-
 std::string handles(long long genus) {
   if (genus == 1) return "one handle";
   return std::to_string(genus) + " handles";
-}
-
-// Texture coordinates of each triangle, found again after the cleanup by matching vertices:
-// `source` names the triangle of `before` each one came from (kNone for hole fills), whose
-// corners are a permutation of its own.
-std::vector<CornerUv> followCorners(const std::vector<Tri>& tris, const std::vector<Tri>& before,
-                                    const std::vector<CornerUv>& cornerUv,
-                                    const std::vector<std::uint32_t>& source,
-                                    std::size_t vertexCount) {
-  std::vector<CornerUv> out(tris.size());
-  constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
-  std::vector<std::array<float, 2>> anyUv(vertexCount, {kUnknown, kUnknown});
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    if (source[t] == kNone) continue;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t v = tris[t][k];
-      const Tri& from = before[source[t]];
-      const auto j =
-          static_cast<std::size_t>(std::find(from.begin(), from.end(), v) - from.begin());
-      if (j == 3) continue; // cannot happen: faces are only turned, never rewired
-      out[t][k] = cornerUv[source[t]][j];
-      anyUv[v] = out[t][k];
-    }
-  }
-  // A filling face spans a hole the texture has no texels for: its loop corners take a
-  // coordinate they have on a neighbouring face, a centre vertex the mean of the others.
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    if (source[t] != kNone) continue;
-    std::array<float, 2> sum{0, 0};
-    int known = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-      out[t][k] = anyUv[tris[t][k]];
-      if (std::isnan(out[t][k][0])) continue;
-      sum[0] += out[t][k][0];
-      sum[1] += out[t][k][1];
-      ++known;
-    }
-    for (std::size_t k = 0; k < 3; ++k)
-      if (std::isnan(out[t][k][0]))
-        out[t][k] = known ? std::array<float, 2>{sum[0] / float(known), sum[1] / float(known)}
-                          : std::array<float, 2>{0, 0};
-  }
-  return out;
 }
 
 // Vertex colours and corner texture coordinates as read (either may be empty).

@@ -6,15 +6,12 @@
 #include "detail/parallel_rows.h"
 
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/base_shapes.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -172,24 +169,6 @@ void forEachLocation(const SphereTriangulation& mesh, int n, Sample&& sample) {
       },
       16);
 }
-
-} // namespace
-
-std::array<double, 2> octahedralSquarePoint(Vec3f direction) {
-  const double x = direction.x, y = direction.y, z = direction.z;
-  const double l1 = std::abs(x) + std::abs(y) + std::abs(z);
-  if (!(l1 > 0))
-    throw Error(ErrorKind::InvalidArgument, "octahedralSquarePoint needs a non-zero direction");
-  double u = x / l1, v = y / l1;
-  if (z < 0) { // the lower half folds over the square's corners (see octahedralDirection)
-    const double au = std::abs(u), av = std::abs(v);
-    u = std::copysign(1.0 - av, x);
-    v = std::copysign(1.0 - au, y);
-  }
-  return {0.5 * (u + 1.0), 0.5 * (v + 1.0)};
-}
-
-namespace {
 
 // The geometry image of resampleOctahedral; extra(i, j, location) is called for every sample
 // too, from several threads (rows in parallel), so that a layer is filled in the same walk.
@@ -368,46 +347,6 @@ Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int
   seamLayer(texels, n, 4);
   document.diffuse.texels = std::move(texels);
   return document;
-}
-
-Document importValidatedMesh(const ValidatedMesh& mesh, const SphericalMap& map, int n,
-                             ImportedDiffuse* diffuse) {
-  ImportedDiffuse what;
-  what.notes = mesh.notes;
-  std::optional<RasterImage> texture;
-  if (!mesh.diffuseTexture.empty() && !mesh.cornerUv.empty()) {
-    try {
-      texture = readImage(mesh.diffuseTexture, 4);
-    } catch (const Error& e) {
-      what.notes.push_back("texture " + mesh.diffuseTexture.filename().string() +
-                           " could not be read (" + e.what() + "): no texture");
-    }
-  }
-  Document document;
-  if (texture) {
-    document = importToDocument(mesh.mesh, map, n, mesh.cornerUv, *texture);
-    what.source = DiffuseSource::Texture;
-    what.texture = mesh.diffuseTexture;
-    if (!mesh.vertexColours.empty())
-      what.notes.push_back("vertex colours ignored: the texture is used instead");
-  } else if (!mesh.vertexColours.empty()) {
-    document = importToDocument(mesh.mesh, map, n, mesh.vertexColours);
-    what.source = DiffuseSource::VertexColours;
-  } else {
-    document = importToDocument(mesh.mesh, map, n);
-  }
-  if (diffuse) *diffuse = std::move(what);
-  return document;
-}
-
-ImportQuality measureImport(const TriangleMesh& mesh, const SphericalMap& map,
-                            const GeometryImage& image, const SurfaceDistanceOptions& options) {
-  ImportQuality quality;
-  quality.flipped = map.flipped;
-  quality.stretchL2 = map.stretchL2;
-  quality.stretchLinf = map.stretchLinf;
-  quality.distance = compareSurfaces(mesh, extractMesh(image), options);
-  return quality;
 }
 
 } // namespace octaclay::core

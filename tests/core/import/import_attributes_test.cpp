@@ -7,6 +7,7 @@
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"

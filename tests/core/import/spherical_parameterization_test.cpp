@@ -1,10 +1,13 @@
+#include "shared_data.h"
 #include "test_meshes.h"
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
@@ -194,7 +197,7 @@ void SphericalParameterizationTest::importsSharedMeshes_data() {
 void SphericalParameterizationTest::importsSharedMeshes() {
   QFETCH(QString, file);
   const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file;
-  if (!QFileInfo::exists(path)) QSKIP("shared mesh not available");
+  if (!QFileInfo::exists(path)) OCTACLAY_MISSING_SHARED_DATA(file);
   const TriangleMesh mesh = loadGenus0Mesh(path.toStdString()).mesh;
   const int n = qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N") > 0
                     ? qEnvironmentVariableIntValue("OCTACLAY_IMPORT_N")

@@ -4,6 +4,7 @@
 // the grid where the surface has flat faces and sharp edges; bad arguments name their value.
 
 #include "lod_test_support.h"
+#include "shared_data.h"
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -162,7 +163,7 @@ void LodTest::importedMeshes_data() {
 void LodTest::importedMeshes() {
   QFETCH(QString, file);
   if (!QFileInfo::exists(QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file))
-    QSKIP("shared mesh not available");
+    OCTACLAY_MISSING_SHARED_DATA(file);
   const GeometryImage image = importShared(qPrintable(file), 128);
   for (const ResampleMethod method : kMethods) {
     LodOptions options;
@@ -290,7 +291,7 @@ void LodTest::adaptiveMeetsTargets() {
     image = testing::bumpySphere(128);
   } else {
     if (!QFileInfo::exists(QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + shape))
-      QSKIP("shared mesh not available");
+      OCTACLAY_MISSING_SHARED_DATA(shape);
     image = importShared(qPrintable(shape), 128);
   }
   QCOMPARE(parseResampleMethod("adaptive"), std::optional(ResampleMethod::Adaptive));
@@ -335,7 +336,7 @@ void LodTest::adaptiveMeetsTargets() {
 // 77.3 dB adaptive; 6 dB is the margin asked for.
 void LodTest::adaptiveSpendsTrianglesWhereTheSurfaceBends() {
   if (!QFileInfo::exists(QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/fandisk.obj"))
-    QSKIP("shared mesh not available");
+    OCTACLAY_MISSING_SHARED_DATA(QStringLiteral("fandisk.obj"));
   const GeometryImage image = importShared("fandisk.obj", 128);
   const TriangleMesh full = extractMesh(image);
   LodOptions options;

@@ -1,9 +1,9 @@
 // Shapes and LODs the LOD export tests (core and GL) share.
 #pragma once
 
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/lod/lod.h"
 
 #include <cmath>

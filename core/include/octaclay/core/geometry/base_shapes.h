@@ -26,7 +26,4 @@ GeometryImage makeBaseShape(BaseShape shape, int n);
 /// and cylinder, radial distance for the blob.
 float baseShapeDistance(BaseShape shape, Vec3f p);
 
-/// The unit octahedron direction of sample (i, j) of an N grid, normalized.
-Vec3f octahedralDirection(int n, int i, int j);
-
 } // namespace octaclay::core

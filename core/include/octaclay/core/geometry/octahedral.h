@@ -1,5 +1,7 @@
 #pragma once
 
+#include "octaclay/core/geometry/vec.h"
+
 #include <array>
 #include <cstdint>
 
@@ -19,6 +21,15 @@ bool isValidSize(int n);
 
 /// Throws Error(InvalidArgument) naming n when !isValidSize(n).
 void requireValidSize(int n);
+
+/// The unit octahedron direction of sample (i, j) of an N grid, normalized.
+Vec3f octahedralDirection(int n, int i, int j);
+
+/// The point (s, t) ∈ [0, 1]² of the octahedral square whose direction is `direction` (any
+/// non-zero vector): the inverse of octahedralDirection, so that sample (i, j) of an N grid
+/// has (s, t) = (i / N, j / N). Directions on a fold of the square (z < 0 with x = 0 or
+/// y = 0) have two or four such points; one of them is returned.
+std::array<double, 2> octahedralSquarePoint(Vec3f direction);
 
 /// The grid sample (0 ≤ i, j ≤ n) that integer position s stands for in the octahedral tiling of
 /// the plane. Works for any int position (many periods away too); identity inside the grid.

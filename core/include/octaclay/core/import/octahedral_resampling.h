@@ -6,7 +6,6 @@
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/measure/surface_distance.h"
 
 #include <array>
 #include <cstdint>
@@ -15,12 +14,6 @@
 #include <vector>
 
 namespace octaclay::core {
-
-/// The point (s, t) ∈ [0, 1]² of the octahedral square whose direction is `direction` (any
-/// non-zero vector): the inverse of octahedralDirection, so that sample (i, j) of an N grid
-/// has (s, t) = (i / N, j / N). Directions on a fold of the square (z < 0 with x = 0 or
-/// y = 0) have two or four such points; one of them is returned.
-std::array<double, 2> octahedralSquarePoint(Vec3f direction);
 
 /// Where one sample of an octahedral grid lies on a mesh.
 struct SampleLocation {
@@ -62,34 +55,5 @@ Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int
 /// other than #T or an empty or inconsistent texture.
 Document importToDocument(const TriangleMesh& mesh, const SphericalMap& map, int n,
                           std::span<const CornerUv> cornerUv, const RasterImage& texture);
-
-/// Where an imported document's diffuse layer came from.
-enum class DiffuseSource { None, VertexColours, Texture };
-
-/// What importValidatedMesh did with the mesh's attributes.
-struct ImportedDiffuse {
-  DiffuseSource source = DiffuseSource::None;
-  std::filesystem::path texture;  ///< when source is Texture
-  std::vector<std::string> notes; ///< the mesh's notes, then what could not be used here
-};
-
-/// importToDocument with the best attribute `mesh` carries: its diffuse texture (read with
-/// readImage, 4 channels) when it has one, else its vertex colours, else the default fill. A
-/// texture that cannot be read is a note, not an error (colours are used instead, if any).
-/// Throws as importToDocument.
-Document importValidatedMesh(const ValidatedMesh& mesh, const SphericalMap& map, int n,
-                             ImportedDiffuse* diffuse = nullptr);
-
-/// How faithful an import is.
-struct ImportQuality {
-  int flipped = 0;          ///< of the spherical map
-  float stretchL2 = 0;      ///< of the spherical map (SphericalMap)
-  float stretchLinf = 0;    ///< of the spherical map
-  SurfaceDistance distance; ///< mesh against the image's extracted mesh (fractions of diagonal)
-};
-
-/// Measures map and image against `mesh` (extractMesh(image) at full resolution).
-ImportQuality measureImport(const TriangleMesh& mesh, const SphericalMap& map,
-                            const GeometryImage& image, const SurfaceDistanceOptions& options = {});
 
 } // namespace octaclay::core
