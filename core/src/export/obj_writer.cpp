@@ -89,8 +89,7 @@ void writeObjText(const ObjMesh& mesh, const ObjHeader& header, const fs::path& 
   w.finish();
 }
 
-} // namespace
-
+// Writes bytes to path atomically.
 void writeFileBytes(std::span<const unsigned char> bytes, const fs::path& path) {
   writeAtomically(path, [&](const fs::path& temporary) {
     std::ofstream out(temporary, std::ios::binary);
@@ -100,6 +99,8 @@ void writeFileBytes(std::span<const unsigned char> bytes, const fs::path& path) 
     if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + " (disk full?)");
   });
 }
+
+} // namespace
 
 void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
                           std::span<const ObjMap> maps, const std::string& mtl,

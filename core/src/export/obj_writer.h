@@ -48,7 +48,4 @@ void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
                           const std::filesystem::path& mtlPath,
                           const std::filesystem::path& objPath);
 
-/// Writes bytes to path atomically. Throws Error(Io) when they cannot be written.
-void writeFileBytes(std::span<const unsigned char> bytes, const std::filesystem::path& path);
-
 } // namespace octaclay::core::detail
