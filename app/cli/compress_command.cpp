@@ -8,6 +8,7 @@
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/file_extension.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,15 +29,8 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 void requireExtension(const std::string& path, const char* ext, const char* what) {
-  if (lowerExtension(path) != ext)
+  if (core::lowerExtension(path) != ext)
     throw core::Error(core::ErrorKind::InvalidArgument,
                       "cannot write " + path + ": " + what + " must end in " + ext);
 }

@@ -2,11 +2,14 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/export/textured_export.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/lod_vertices.h"
+#include "octaclay/core/lod/normal_map.h"
+#include "octaclay/core/lod/saliency.h"
 
 #include <nlohmann/json.hpp>
 

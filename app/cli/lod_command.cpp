@@ -5,15 +5,17 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/lod_export.h"
+#include "octaclay/core/file_extension.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/lod_vertices.h"
+#include "octaclay/core/lod/normal_map.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -31,13 +33,6 @@ using core::ErrorKind;
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
 }
 
 bool isPowerOfTwo(long long v) {
@@ -105,7 +100,7 @@ Command addLodCommand(CLI::App& app) {
 
   return {sub, [opt, sub]() {
             // Arguments first, so a bad one is reported before any file is read.
-            const std::string ext = lowerExtension(opt->output);
+            const std::string ext = core::lowerExtension(opt->output);
             if (ext != ".obj" && ext != ".glb")
               throw Error(ErrorKind::InvalidArgument, "cannot write the LOD to " + opt->output +
                                                           ": use .obj (with .mtl and normal "
@@ -123,8 +118,8 @@ Command addLodCommand(CLI::App& app) {
             if (!space)
               throw Error(ErrorKind::InvalidArgument,
                           "unknown --normal-space '" + opt->space + "': use object or tangent");
-            if (!opt->normalMap.empty() && lowerExtension(opt->normalMap) != ".png" &&
-                lowerExtension(opt->normalMap) != ".exr")
+            if (!opt->normalMap.empty() && core::lowerExtension(opt->normalMap) != ".png" &&
+                core::lowerExtension(opt->normalMap) != ".exr")
               throw Error(ErrorKind::InvalidArgument, "cannot write the normal map to " +
                                                           opt->normalMap +
                                                           ": use .png (8-bit) or .exr (float)");

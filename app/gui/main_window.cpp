@@ -11,13 +11,15 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/export/textured_export.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/normal_map.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/gpu/brush_library.h"
 
 #include <QApplication>

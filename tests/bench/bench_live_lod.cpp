@@ -12,6 +12,7 @@
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gpu_document.h"

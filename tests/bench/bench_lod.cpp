@@ -23,6 +23,7 @@
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>

@@ -2,9 +2,10 @@
 // `octaclay-cli lod` on a blob at N = 512 and 1024 with a 20 k-triangle LOD, map at N².
 // Prints time per bake; never a test.
 
+#include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/normal_map.h"
 
 #include <benchmark/benchmark.h>
 

@@ -7,7 +7,7 @@
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gpu_document.h"

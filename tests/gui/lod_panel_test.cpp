@@ -6,6 +6,7 @@
 #include "lod_panel.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/lod/saliency.h"
 
 #include <QComboBox>
 #include <QLabel>

@@ -4,6 +4,8 @@
 
 #include "octaclay/core/document/edit_history.h"
 
+#include "document/edit_checks.h"
+
 #include "octaclay/core/error.h"
 
 #include <algorithm>
@@ -14,11 +16,11 @@
 
 namespace octaclay::core {
 
-namespace {
+using detail::editLayerName;
+using detail::invalidEdit;
+using detail::texelArea;
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw Error(ErrorKind::InvalidArgument, message);
-}
+namespace {
 
 std::uint32_t bitsOf(const float* f) {
   std::uint32_t u;
@@ -26,59 +28,10 @@ std::uint32_t bitsOf(const float* f) {
   return u;
 }
 
-const char* layerName(EditLayer layer) {
-  switch (layer) {
-  case EditLayer::Positions:
-    return "positions";
-  case EditLayer::Diffuse:
-    return "diffuse";
-  case EditLayer::Feature:
-    return "feature";
-  case EditLayer::Mask:
-    return "mask";
-  }
-  return "unknown";
-}
-
 int layerIndex(EditLayer layer) {
   const int index = static_cast<int>(layer);
-  if (index < 0 || index > 3) invalid("edit history: unknown layer " + std::to_string(index));
+  if (index < 0 || index > 3) invalidEdit("edit history: unknown layer " + std::to_string(index));
   return index;
-}
-
-std::size_t area(TexelRect r) {
-  return static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height);
-}
-
-// Checks that region lies inside a side × side image and texels holds it with `channels` floats
-// per texel.
-void checkRegion(TexelRect region, int side, int channels, std::size_t floats) {
-  if (region.width <= 0 || region.height <= 0 || region.x < 0 || region.y < 0 ||
-      region.x > side - region.width || region.y > side - region.height)
-    invalid("edit history: region (" + std::to_string(region.x) + ", " + std::to_string(region.y) +
-            ") " + std::to_string(region.width) + "x" + std::to_string(region.height) +
-            " is outside the " + std::to_string(side) + "x" + std::to_string(side) +
-            " image; apply strokes only to the image they were recorded on");
-  if (floats != area(region) * static_cast<std::size_t>(channels))
-    invalid("edit history: " + std::to_string(floats) + " floats given for a region of " +
-            std::to_string(area(region)) + " texels with " + std::to_string(channels) +
-            " channels");
-}
-
-// Copies a row-major region of texels into a row-major side × side image of `channels` floats
-// per texel, bits as they are.
-void writeRegion(float* image, int side, int channels, TexelRect region,
-                 std::span<const float> texels) {
-  const std::size_t c = static_cast<std::size_t>(channels);
-  const std::size_t rowFloats = static_cast<std::size_t>(region.width) * c;
-  for (int row = 0; row < region.height; ++row) {
-    const std::size_t dst =
-        (static_cast<std::size_t>(region.y + row) * static_cast<std::size_t>(side) +
-         static_cast<std::size_t>(region.x)) *
-        c;
-    std::memcpy(image + dst, texels.data() + static_cast<std::size_t>(row) * rowFloats,
-                rowFloats * sizeof(float));
-  }
 }
 
 } // namespace
@@ -141,11 +94,11 @@ void TileChange::apply(TileState state, const TileApplier& applyFn) const {
 
 void TileChange::patch(TileState state, std::span<float> tile) const {
   const std::size_t c = static_cast<std::size_t>(channels);
-  if (tile.size() != area(region) * c)
-    invalid("TileChange::patch: the tile buffer holds " + std::to_string(tile.size()) +
-            " floats, expected " + std::to_string(area(region) * c) + " (" +
-            std::to_string(region.width) + "x" + std::to_string(region.height) + " texels x " +
-            std::to_string(channels) + " channels)");
+  if (tile.size() != texelArea(region) * c)
+    invalidEdit("TileChange::patch: the tile buffer holds " + std::to_string(tile.size()) +
+                " floats, expected " + std::to_string(texelArea(region) * c) + " (" +
+                std::to_string(region.width) + "x" + std::to_string(region.height) + " texels x " +
+                std::to_string(channels) + " channels)");
   std::size_t pos = 0, lit = 0;
   for (std::size_t r = 0; r + 1 < runs.size(); r += 2) {
     pos += runs[r];
@@ -176,8 +129,8 @@ std::size_t Stroke::computeBytes() const {
 
 StrokeRecorder::StrokeRecorder(int imageSide) : side_(imageSide) {
   if (imageSide < 2)
-    invalid("StrokeRecorder: image side " + std::to_string(imageSide) +
-            " is too small; pass N+1 of the geometry image (at least 3)");
+    invalidEdit("StrokeRecorder: image side " + std::to_string(imageSide) +
+                " is too small; pass N+1 of the geometry image (at least 3)");
   stroke_.imageSide = side_;
   const int tiles = tilesPerSide(side_);
   seen_.assign(4u * static_cast<std::size_t>(tiles) * static_cast<std::size_t>(tiles), 0);
@@ -190,10 +143,10 @@ int StrokeRecorder::tilesPerSide(int imageSide) {
 TexelRect StrokeRecorder::tileRegion(int imageSide, int tileX, int tileY) {
   const int tiles = tilesPerSide(imageSide);
   if (tileX < 0 || tileY < 0 || tileX >= tiles || tileY >= tiles)
-    invalid("edit history: tile (" + std::to_string(tileX) + ", " + std::to_string(tileY) +
-            ") is outside the image of side " + std::to_string(imageSide) + ", which has " +
-            std::to_string(tiles) + "x" + std::to_string(tiles) + " tiles of " +
-            std::to_string(kTileSize) + " texels");
+    invalidEdit("edit history: tile (" + std::to_string(tileX) + ", " + std::to_string(tileY) +
+                ") is outside the image of side " + std::to_string(imageSide) + ", which has " +
+                std::to_string(tiles) + "x" + std::to_string(tiles) + " tiles of " +
+                std::to_string(kTileSize) + " texels");
   const int x = tileX * kTileSize, y = tileY * kTileSize;
   return {x, y, std::min(kTileSize, imageSide - x), std::min(kTileSize, imageSide - y)};
 }
@@ -203,24 +156,24 @@ void StrokeRecorder::addTile(EditLayer layer, int tileX, int tileY, int channels
   const int li = layerIndex(layer);
   const TexelRect region = tileRegion(side_, tileX, tileY);
   if (channels != editLayerChannels(layer))
-    invalid(std::string("StrokeRecorder::addTile: the ") + layerName(layer) + " layer has " +
-            std::to_string(editLayerChannels(layer)) + " channels, not " +
-            std::to_string(channels));
+    invalidEdit(std::string("StrokeRecorder::addTile: the ") + editLayerName(layer) +
+                " layer has " + std::to_string(editLayerChannels(layer)) + " channels, not " +
+                std::to_string(channels));
   const std::size_t c = static_cast<std::size_t>(channels);
-  const std::size_t texelCount = area(region);
+  const std::size_t texelCount = texelArea(region);
   if (before.size() != texelCount * c || after.size() != texelCount * c)
-    invalid("StrokeRecorder::addTile: tile (" + std::to_string(tileX) + ", " +
-            std::to_string(tileY) + ") is " + std::to_string(region.width) + "x" +
-            std::to_string(region.height) + " texels x " + std::to_string(channels) +
-            " channels = " + std::to_string(texelCount * c) + " floats, but before has " +
-            std::to_string(before.size()) + " and after " + std::to_string(after.size()));
+    invalidEdit("StrokeRecorder::addTile: tile (" + std::to_string(tileX) + ", " +
+                std::to_string(tileY) + ") is " + std::to_string(region.width) + "x" +
+                std::to_string(region.height) + " texels x " + std::to_string(channels) +
+                " channels = " + std::to_string(texelCount * c) + " floats, but before has " +
+                std::to_string(before.size()) + " and after " + std::to_string(after.size()));
   const int tiles = tilesPerSide(side_);
   std::uint8_t& seen = seen_[static_cast<std::size_t>((li * tiles + tileY) * tiles + tileX)];
   if (seen)
-    invalid(std::string("StrokeRecorder::addTile: tile (") + std::to_string(tileX) + ", " +
-            std::to_string(tileY) + ") of the " + layerName(layer) +
-            " layer was already added to this stroke; add each tile once, with its state "
-            "before the stroke's first dab and after its last");
+    invalidEdit(std::string("StrokeRecorder::addTile: tile (") + std::to_string(tileX) + ", " +
+                std::to_string(tileY) + ") of the " + editLayerName(layer) +
+                " layer was already added to this stroke; add each tile once, with its state "
+                "before the stroke's first dab and after its last");
 
   auto changed = [&](std::size_t t) {
     for (std::size_t k = t * c; k < (t + 1) * c; ++k)
@@ -295,31 +248,31 @@ namespace {
 // A Stroke can be built by hand: check that applying it cannot read or write out of bounds.
 void validateStroke(const Stroke& s) {
   if (s.imageSide < 2)
-    invalid("EditHistory::record: the stroke has image side " + std::to_string(s.imageSide) +
-            "; build strokes with StrokeRecorder");
+    invalidEdit("EditHistory::record: the stroke has image side " + std::to_string(s.imageSide) +
+                "; build strokes with StrokeRecorder");
   std::size_t changed = 0;
   for (const TileChange& t : s.tiles) {
     const TexelRect expected = StrokeRecorder::tileRegion(s.imageSide, t.tileX, t.tileY);
     if (t.region != expected || t.channels != editLayerChannels(t.layer))
-      invalid("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
-              std::to_string(t.tileY) +
-              ") has a region or channel count that does not match its layer and image; build "
-              "strokes with StrokeRecorder");
+      invalidEdit("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
+                  std::to_string(t.tileY) +
+                  ") has a region or channel count that does not match its layer and image; build "
+                  "strokes with StrokeRecorder");
     std::size_t covered = 0, count = 0;
     for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
       covered += std::size_t{t.runs[r]} + t.runs[r + 1];
       count += t.runs[r + 1];
     }
     const std::size_t c = static_cast<std::size_t>(t.channels);
-    if (t.runs.size() % 2 != 0 || covered > area(t.region) || count != t.changedTexels ||
+    if (t.runs.size() % 2 != 0 || covered > texelArea(t.region) || count != t.changedTexels ||
         t.before.size() != count * c || t.xorBits.size() != count * c)
-      invalid("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
-              std::to_string(t.tileY) +
-              ") has an inconsistent payload; build strokes with StrokeRecorder");
+      invalidEdit("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
+                  std::to_string(t.tileY) +
+                  ") has an inconsistent payload; build strokes with StrokeRecorder");
     changed += count;
   }
   if (changed != s.changedTexels)
-    invalid("EditHistory::record: the stroke's changedTexels does not match its tiles");
+    invalidEdit("EditHistory::record: the stroke's changedTexels does not match its tiles");
 }
 
 } // namespace
@@ -330,9 +283,9 @@ void EditHistory::record(Stroke stroke) {
   if (stroke.tiles.empty()) return;
   validateStroke(stroke);
   if (!strokes_.empty() && strokes_.front().imageSide != stroke.imageSide)
-    invalid("EditHistory::record: the stroke is for an image of side " +
-            std::to_string(stroke.imageSide) + " but the history holds strokes for side " +
-            std::to_string(strokes_.front().imageSide) + "; clear() the history first");
+    invalidEdit("EditHistory::record: the stroke is for an image of side " +
+                std::to_string(stroke.imageSide) + " but the history holds strokes for side " +
+                std::to_string(strokes_.front().imageSide) + "; clear() the history first");
   stroke.bytes = stroke.computeBytes();
   while (strokes_.size() > cursor_) {
     bytes_ -= strokes_.back().bytes;
@@ -378,52 +331,6 @@ void EditHistory::clear() {
   strokes_.clear();
   cursor_ = 0;
   bytes_ = 0;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Appliers
-
-TileApplier applierFor(GeometryImage& image) {
-  return [&image](EditLayer layer, TexelRect region, std::span<const float> texels) {
-    if (layer != EditLayer::Positions)
-      invalid(std::string("applierFor(GeometryImage&): cannot write the ") + layerName(layer) +
-              " layer into a position image; use applierFor(Document&)");
-    checkRegion(region, image.side(), 4, texels.size());
-    static_assert(sizeof(Vec4f) == 4 * sizeof(float));
-    writeRegion(reinterpret_cast<float*>(image.texels().data()), image.side(), 4, region, texels);
-  };
-}
-
-TileApplier applierFor(Document& doc) {
-  return [&doc](EditLayer layer, TexelRect region, std::span<const float> texels) {
-    if (layer == EditLayer::Positions) {
-      applierFor(doc.positions)(layer, region, texels);
-      return;
-    }
-    Layer& target = layer == EditLayer::Diffuse   ? doc.diffuse
-                    : layer == EditLayer::Feature ? doc.feature
-                                                  : doc.mask;
-    const int side = doc.positions.side();
-    const int c = editLayerChannels(layer);
-    if (target.channels != c)
-      invalid("applierFor(Document&): the document's " + target.name + " layer has " +
-              std::to_string(target.channels) + " channels, the edit " + std::to_string(c));
-    checkRegion(region, side, c, texels.size());
-    const std::size_t texelCount = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-    if (target.uniform()) {
-      target.texels.resize(texelCount * static_cast<std::size_t>(c));
-      for (std::size_t t = 0; t < texelCount; ++t)
-        std::copy_n(target.fill.begin(), c,
-                    target.texels.begin() + static_cast<std::ptrdiff_t>(t) * c);
-    }
-    if (target.texels.size() != texelCount * static_cast<std::size_t>(c))
-      invalid("applierFor(Document&): the " + target.name + " layer holds " +
-              std::to_string(target.texels.size()) + " floats, not " +
-              std::to_string(texelCount * static_cast<std::size_t>(c)) +
-              " for its image; the document is inconsistent");
-    if (layer == EditLayer::Mask) doc.hasMask = true;
-    writeRegion(target.texels.data(), side, c, region, texels);
-  };
 }
 
 } // namespace octaclay::core

@@ -1,8 +1,9 @@
 // The LOD's vertex buffer: seam vertices split by image coordinates, with the normal and glTF
 // tangent frame that both the tangent-space bake and the exported files use.
 
+#include "octaclay/core/lod/lod_vertices.h"
+
 #include "octaclay/core/error.h"
-#include "octaclay/core/lod/lod_export.h"
 
 #include <bit>
 #include <cmath>

@@ -7,7 +7,8 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/lod_vertices.h"
+#include "octaclay/core/lod/normal_map.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/normal_map.h"
 
 #include <vector>
 

@@ -5,6 +5,8 @@
 #include "lod/normal_map_encoding.h"
 
 #include "octaclay/core/error.h"
+#include "octaclay/core/file_extension.h"
+#include "octaclay/core/lod/normal_map.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -14,7 +16,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <string>
 
@@ -57,13 +58,6 @@ std::vector<unsigned char> encodeNormalMapPng(const NormalMap& map) {
 } // namespace detail
 
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 void writePngBytes(const std::vector<unsigned char>& png, const std::filesystem::path& temporary,
                    const std::filesystem::path& shown) {

@@ -1,9 +1,10 @@
-// CPU reference of the saliency pass (lod.h, SaliencyOptions): curvature as the change of
+// CPU reference of the saliency pass (saliency.h, SaliencyOptions): curvature as the change of
 // normal, then Lee et al. 2005 centre-surround differences of Gaussian-blurred curvature.
+#include "octaclay/core/lod/saliency.h"
+
 #include "detail/parallel_rows.h"
 
 #include "octaclay/core/geometry/normals.h"
-#include "octaclay/core/lod/lod.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,25 +1,15 @@
 #include "octaclay/core/codec/wavelet_codec.h"
-#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/seaming.h"
-#include "octaclay/core/import/mesh_validation.h"
-#include "octaclay/core/import/octahedral_resampling.h"
-#include "octaclay/core/import/spherical_parameterization.h"
-#include "octaclay/core/measure/surface_distance.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <ctime>
-#include <filesystem>
 #include <limits>
 #include <vector>
 
@@ -117,36 +107,6 @@ std::pair<double, double> positionErrors(const FloatImage& original, const Float
   return {std::sqrt(normal / double(count)), std::sqrt(tangent / double(count))};
 }
 
-// The sculpted sphere of the codec benchmark (tests/bench/bench_codecs.cpp, branch
-// compresstools): Gaussian bumps and dents, a sharp equatorial ridge, ripples near one pole.
-FloatImage sculptedSphere(int n) {
-  struct Bump {
-    Vec3f centre;
-    float height, width;
-  };
-  const Bump bumps[] = {{{0.6f, 0.6f, 0.53f}, 0.25f, 0.35f},
-                        {{-0.8f, 0.2f, 0.56f}, -0.15f, 0.25f},
-                        {{0.1f, -0.9f, -0.42f}, 0.18f, 0.15f},
-                        {{-0.3f, -0.3f, -0.9f}, 0.3f, 0.4f},
-                        {{0.95f, -0.1f, 0.3f}, 0.08f, 0.08f}};
-  GeometryImage image(n);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const Vec3f d = octahedralDirection(n, i, j);
-      float r = 1;
-      for (const Bump& b : bumps) {
-        const Vec3f e = d - normalize(b.centre);
-        r += b.height * std::exp(-dot(e, e) / (b.width * b.width));
-      }
-      r += 0.06f * std::max(0.0f, 1 - std::abs(d.z) / 0.12f);
-      r += 0.01f * std::sin(40 * d.x) * std::sin(40 * d.y) * std::max(0.0f, d.z);
-      const Vec3f p = d * r;
-      image.at(i, j) = {p.x, p.y, p.z, 0};
-    }
-  seam(image);
-  return toFloatImage(image);
-}
-
 FloatImage blob(int n) {
   return toFloatImage(makeBaseShape(BaseShape::Blob, n));
 }
@@ -195,7 +155,6 @@ private slots:
   void wrongShapeIsRefused();
   void badParametersAreRefused();
   void registryEntryCodes();
-  void rateAtPsnr();
 };
 
 void CodecWaveletTest::errorStaysWithinTheBound_data() {
@@ -378,92 +337,6 @@ void CodecWaveletTest::registryEntryCodes() {
   qInfo("noise: %zu bytes of at most %zu", noisy.size(), codec.maxEncodedSize(16, 4, params));
   QVERIFY(noisy.size() <= codec.maxEncodedSize(16, 4, params));
   QVERIFY_THROWS_EXCEPTION(Error, codec.maxEncodedSize(15, 3, params));
-}
-
-// Measurement, not a check: OCTACLAY_WAVELET_RD=1 prints the bits per vertex at which each
-// model reaches 95 dB (and the decode time at N = 1024). Imports are cached in
-// /tmp/wavelet-cache.
-void CodecWaveletTest::rateAtPsnr() {
-  if (qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_RD")) QSKIP("set OCTACLAY_WAVELET_RD=1");
-  const int n = 512;
-  const auto load = [&](const QString& name) -> FloatImage {
-    if (name == "blob") return blob(n);
-    if (name == "sphere") return toFloatImage(makeBaseShape(BaseShape::Sphere, n));
-    if (name == "sculpted") return sculptedSphere(n);
-    const std::filesystem::path cached = "/tmp/wavelet-cache/" + name.toStdString() + ".exr";
-    if (std::filesystem::exists(cached)) return toFloatImage(readDocument(cached).positions);
-    const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + name;
-    const TriangleMesh mesh = loadGenus0Mesh(path.toStdString()).mesh;
-    const SphericalMap map = parameterizeOnSphere(mesh);
-    const Document doc = makeDocument(resampleOctahedral(mesh, map, n));
-    writeDocument(doc, cached);
-    return toFloatImage(doc.positions);
-  };
-  SurfaceDistanceOptions options;
-  // bench_codecs measures with the vertices alone (its default --samples 0).
-  options.samplesPerSurface = qEnvironmentVariableIntValue("OCTACLAY_WAVELET_SAMPLES");
-  QStringList names = {"sphere", "sculpted", "blob", "bunny_cgal.obj", "armadillo.obj", "igea.ply"};
-  if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_MODELS"))
-    names = qEnvironmentVariable("OCTACLAY_WAVELET_MODELS").split(',');
-  for (const QString& name : names) {
-    if (name == "none") continue;
-    const FloatImage image = load(name);
-    const TriangleMesh reference = extractMesh(toGeometryImage(image));
-    const std::filesystem::path obj = "/tmp/wavelet-cache/" + name.toStdString() + ".grid.obj";
-    if (!std::filesystem::exists(obj)) writeMesh(reference, obj);
-    const double vertices = double(n) * n + 2;
-    const auto measure = [&](double bound) {
-      const auto stream = encodeWavelet(image, bound);
-      const FloatImage decoded = decodeWavelet(stream, n, 3);
-      const double psnr =
-          compareSurfaces(reference, extractMesh(toGeometryImage(decoded)), options).psnr;
-      const double bpv = 8.0 * double(stream.size()) / vertices;
-      qInfo("  %-14s bound %.3g: %.3f bpv, %.2f dB, seam gap %g", qPrintable(name), bound, bpv,
-            psnr, double(maxSeamGap(toGeometryImage(decoded))));
-      return std::pair{psnr, bpv};
-    };
-    if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_BOUND")) {
-      measure(qEnvironmentVariable("OCTACLAY_WAVELET_BOUND").toDouble());
-      continue;
-    }
-    // Bisect log(bound) for 95 dB, then interpolate the rate between the two closest points.
-    double lo = 4e-6, hi = 8e-5; // lo reaches 95 dB, hi does not (on the usual models)
-    std::pair<double, double> atLo{0, 0}, atHi{0, 0};
-    for (int k = 0; k < 7; ++k) {
-      const double mid = std::sqrt(lo * hi);
-      const auto point = measure(mid);
-      if (point.first >= 95.0) {
-        lo = mid;
-        atLo = point;
-      } else {
-        hi = mid;
-        atHi = point;
-      }
-    }
-    if (atLo.second == 0) atLo = measure(lo);
-    if (atHi.second == 0) atHi = measure(hi);
-    const double t = (95.0 - atHi.first) / (atLo.first - atHi.first);
-    qInfo("%-14s 95 dB: %.3f bpv (between %.3f bpv at %.2f dB and %.3f bpv at %.2f dB)",
-          qPrintable(name), atHi.second + t * (atLo.second - atHi.second), atLo.second, atLo.first,
-          atHi.second, atHi.first);
-  }
-  if (!qEnvironmentVariableIsEmpty("OCTACLAY_WAVELET_NO_TIMING")) return;
-  const FloatImage big = sculptedSphere(1024);
-  const auto stream = encodeWavelet(big, kWaveletDefaultBound);
-  // Wall time is only meaningful on an idle machine; CPU time (all threads) is shown beside it.
-  QElapsedTimer timer;
-  double best = 1e9, bestCpu = 1e9;
-  for (int k = 0; k < 7; ++k) {
-    const std::clock_t cpu = std::clock();
-    timer.start();
-    const FloatImage decoded = decodeWavelet(stream, 1024, 3);
-    best = std::min(best, double(timer.nsecsElapsed()) / 1e6);
-    bestCpu = std::min(bestCpu, double(std::clock() - cpu) * 1000.0 / CLOCKS_PER_SEC);
-    QCOMPARE(decoded.n, 1024);
-  }
-  qInfo("decode N = 1024 (sculpted sphere, default bound, %zu bytes): %.1f ms wall, %.1f ms "
-        "CPU",
-        stream.size(), best, bestCpu);
 }
 
 QTEST_GUILESS_MAIN(CodecWaveletTest)

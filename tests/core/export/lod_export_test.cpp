@@ -8,11 +8,14 @@
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/lod/lod.h"
-#include "octaclay/core/lod/lod_export.h"
+#include "octaclay/core/lod/lod_vertices.h"
+#include "octaclay/core/lod/normal_map.h"
+#include "octaclay/core/lod/saliency.h"
 
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>

@@ -1,8 +1,8 @@
-// CPU saliency (lod.h, computeSaliency): normalised to [0, 1], equal on identified samples,
+// CPU saliency (saliency.h, computeSaliency): normalised to [0, 1], equal on identified samples,
 // high around a sharp feature and low on the smooth sphere far from it.
 
 #include "octaclay/core/geometry/base_shapes.h"
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/saliency.h"
 
 #include <QtTest>
 

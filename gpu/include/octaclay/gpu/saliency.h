@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/lod/lod.h"
+#include "octaclay/core/lod/saliency.h"
 #include "octaclay/gpu/gl_objects.h"
 #include "octaclay/gpu/gpu_document.h"
 

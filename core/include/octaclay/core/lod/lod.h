@@ -52,9 +52,9 @@ struct LodOptions {
   int size = 0;
   /// With size 0 and a target: resample to oversample × that M and collapse the rest. 1 is the
   /// live LOD (fewest collapses); 2 starts from 4× the triangles, so the collapse chooses where
-  /// detail goes: +3–5 dB at 1–5 % of 2N² triangles, for 4–10× the time (bench_lod). A power
-  /// of two. Adaptive: cut the hierarchy at oversample² × the target's triangles and collapse
-  /// down to it (+4 to +11 dB at 1 % of 2N² on bunny and fandisk, for 3-10× the time).
+  /// detail goes: closer to the surface for several times the time (docs/lod.md, bench_lod).
+  /// A power of two. Adaptive: cut the hierarchy at oversample² × the target's triangles and
+  /// collapse down to it.
   int oversample = 1;
   ResampleMethod method = ResampleMethod::SalientPoint;
   /// Vertex collapse down to this many triangles (0 = none); must be > 4 when set.
@@ -68,15 +68,14 @@ struct LodOptions {
   /// A collapse that makes a triangle's longest edge / height exceed this, and twice what its
   /// triangle was in the mesh the collapse starts from, is refused (unless the triangle already
   /// did and gets no worse); 0 = no bound, else at least 2. The factor two leaves the collapse
-  /// room where the image stretches the surface (armadillo oversampled: level with
-  /// meshoptimizer, 5 dB behind it under the bound alone).
+  /// room where the image stretches the surface (docs/lod.md measures it).
   float maxAspectRatio = 10;
   /// Move each resampled vertex along its normal to fit the full-resolution surface in the
   /// least-squares sense before collapsing (detail: two Jacobi steps over the samples of
   /// each LOD cell). Off: vertices are exactly the resampled samples.
   bool refitToSurface = true;
   /// The live LOD needs the fast engine (vertex_collapse.h); the Decimater gives the strict
-  /// error order at about 20× the time.
+  /// error order at a much higher cost.
   CollapseEngine collapseEngine = CollapseEngine::Fast;
 };
 
@@ -103,31 +102,10 @@ struct LodMesh {
 /// Throws Error(InvalidArgument) with a message naming the bad value when M ≥ N, M is not a
 /// power of two or M < 2, when targetTriangles is 1 … 4, maxError < 0, oversample is not a
 /// power of two or maxNormalTurnDegrees is outside (0, 180]. Needs the image's saliency in
-/// alpha for the salient methods (computeSaliency, or the GPU pass).
+/// alpha for the salient methods (computeSaliency in saliency.h, or the GPU pass).
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
 
 /// The resampled, seamed (M+1)² image alone (step 1 of generateLod).
 GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method);
-
-/// The saliency formula, exactly (the GPU pass must match it; N is the image size, all reads of
-/// a sample outside the grid go through wrap(), so the octahedral tiling is seamless):
-///  1. n(s): vertexNormal (normals.h), the area-weighted normal of the incident triangles.
-///  2. curvature c(s) = ¼ Σ over the four axis neighbours q = s ± (1, 0), s ± (0, 1) of
-///     1 − n(s)·n(q) (the change of normal at distance one sample).
-///  3. G(c, σ): c blurred with the normalised Gaussian exp(−d²/2σ²), truncated at radius
-///     ⌈2σ⌉ samples, separably (rows then columns, each read through wrap(); the tiling's
-///     symmetries are half-turns, which map rows onto rows, so this is the exact 2-D blur of the
-///     tiled field).
-///  4. saliency(s) = Σ over scales σ of |G(c, σ)(s) − G(c, 2σ)(s)| (centre-surround at several
-///     radii, Lee et al. 2005), then divided by its maximum over the image (all zero stays zero).
-///  5. Identified samples take their canonical sample's value (they agree up to rounding).
-struct SaliencyOptions {
-  /// The centre scales σ in samples. Empty = {1, 2, 4, 8, 16} × N/256, each at least 1.
-  std::vector<float> scales;
-};
-
-/// CPU reference of the GPU saliency pass: writes each sample's saliency (formula above),
-/// normalised to [0, 1] over the image, into the position image's alpha. O(N² Σσ) time.
-void computeSaliency(GeometryImage& image, const SaliencyOptions& options = {});
 
 } // namespace octaclay::core

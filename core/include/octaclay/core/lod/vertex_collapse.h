@@ -14,8 +14,8 @@
 namespace octaclay::core {
 
 /// Which implementation collapses: OpenMesh's Decimater (a heap of per-vertex priorities, the
-/// strict order of quadric errors) or our flat-array passes (detail/quadric_collapse.h: the
-/// same checks, collapses in threshold passes, about 20× faster on LOD meshes).
+/// strict order of quadric errors) or our flat-array passes (src/lod/quadric_collapse.h: the
+/// same checks, collapses in threshold passes, much faster on LOD meshes: docs/lod.md).
 enum class CollapseEngine { Decimater, Fast };
 
 struct VertexCollapseOptions {

@@ -1,0 +1,149 @@
+// The exports' binary glTF writer, through tinygltf: a maintained glTF 2.0 reader and writer
+// that Debian packages (libtinygltf-dev, built there as a shared library with its stb and JSON
+// dependencies, so linking TinyGLTF::TinyGLTF is all it takes). It also lets the tests read
+// the result back with a loader we did not write.
+
+#include "export/glb_writer.h"
+
+#include "detail/atomic_file.h"
+
+#include "octaclay/core/error.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
+
+#include <tiny_gltf.h>
+
+#include <fstream>
+
+namespace octaclay::core::detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Appends bytes to the buffer at a 4-byte aligned offset and returns the view's index.
+int appendView(tinygltf::Model& model, const void* data, std::size_t size, int target) {
+  std::vector<unsigned char>& bytes = model.buffers[0].data;
+  bytes.resize((bytes.size() + 3) / 4 * 4, 0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = bytes.size();
+  view.byteLength = size;
+  view.target = target;
+  const auto* begin = static_cast<const unsigned char*>(data);
+  bytes.insert(bytes.end(), begin, begin + size);
+  model.bufferViews.push_back(view);
+  return static_cast<int>(model.bufferViews.size() - 1);
+}
+
+// A float (or, with `target` the element array, uint32) attribute of `count` elements.
+template <class T>
+int appendAccessor(tinygltf::Model& model, std::span<const T> values, int target, int componentType,
+                   int type, std::size_t count) {
+  tinygltf::Accessor accessor;
+  accessor.bufferView = appendView(model, values.data(), values.size_bytes(), target);
+  accessor.componentType = componentType;
+  accessor.type = type;
+  accessor.count = count;
+  model.accessors.push_back(accessor);
+  return static_cast<int>(model.accessors.size() - 1);
+}
+
+void appendTexture(tinygltf::Model& model, const GlbTexture& texture) {
+  tinygltf::Image image;
+  image.name = texture.name;
+  image.mimeType = "image/png";
+  image.bufferView = appendView(model, texture.png.data(), texture.png.size(), 0);
+  model.images.push_back(image);
+  tinygltf::Texture gltfTexture;
+  gltfTexture.sampler = 0;
+  gltfTexture.source = static_cast<int>(model.images.size() - 1);
+  model.textures.push_back(gltfTexture);
+}
+
+tinygltf::Material gltfMaterial(const GlbMaterial& in) {
+  tinygltf::Material material;
+  material.name = in.name;
+  material.pbrMetallicRoughness.baseColorTexture.index = in.baseColorTexture;
+  material.pbrMetallicRoughness.metallicRoughnessTexture.index = in.metallicRoughnessTexture;
+  material.pbrMetallicRoughness.metallicFactor = in.metallicFactor;
+  material.pbrMetallicRoughness.roughnessFactor = in.roughnessFactor;
+  material.normalTexture.index = in.normalTexture;
+  if (in.objectSpaceNormalTexture >= 0)
+    material.extras = tinygltf::Value(tinygltf::Value::Object{
+        {"octaclay_object_space_normal_texture", tinygltf::Value(in.objectSpaceNormalTexture)}});
+  return material;
+}
+
+tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textures,
+                         const GlbMaterial& material) {
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "Octaclay";
+  model.buffers.emplace_back();
+  const std::size_t count = mesh.positions.size();
+  constexpr int kArray = TINYGLTF_TARGET_ARRAY_BUFFER;
+  constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  static_assert(sizeof(Vec3f) == 12 && sizeof(Vec2f) == 8);
+
+  tinygltf::Primitive primitive;
+  primitive.attributes["POSITION"] =
+      appendAccessor(model, mesh.positions, kArray, kFloat, TINYGLTF_TYPE_VEC3, count);
+  BoundingBox box;
+  for (const Vec3f& p : mesh.positions)
+    box.extend(p);
+  model.accessors.back().minValues = {box.min.x, box.min.y, box.min.z};
+  model.accessors.back().maxValues = {box.max.x, box.max.y, box.max.z};
+  primitive.attributes["NORMAL"] =
+      appendAccessor(model, mesh.normals, kArray, kFloat, TINYGLTF_TYPE_VEC3, count);
+  if (!mesh.tangents.empty())
+    primitive.attributes["TANGENT"] =
+        appendAccessor(model, mesh.tangents, kArray, kFloat, TINYGLTF_TYPE_VEC4, count);
+  primitive.attributes["TEXCOORD_0"] =
+      appendAccessor(model, mesh.texcoords, kArray, kFloat, TINYGLTF_TYPE_VEC2, count);
+  primitive.indices = appendAccessor(model, mesh.triangles, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER,
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                     mesh.triangles.size() * 3);
+  primitive.material = 0;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+
+  // Clamping keeps the image's border (the octahedral seam) from blending with the opposite
+  // side.
+  tinygltf::Sampler sampler;
+  sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+  sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+  model.samplers.push_back(sampler);
+  for (const GlbTexture& texture : textures)
+    appendTexture(model, texture);
+  model.materials.push_back(gltfMaterial(material));
+
+  tinygltf::Mesh gltfMesh;
+  gltfMesh.name = material.meshName;
+  gltfMesh.primitives.push_back(primitive);
+  model.meshes.push_back(gltfMesh);
+  tinygltf::Node node;
+  node.name = material.nodeName;
+  node.mesh = 0;
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+  return model;
+}
+
+} // namespace
+
+void writeGlbFile(const GlbMesh& mesh, std::span<const GlbTexture> textures,
+                  const GlbMaterial& material, const fs::path& path) {
+  const tinygltf::Model model = glbModel(mesh, textures, material);
+  writeAtomically(path, [&](const fs::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out) throw Error(ErrorKind::Io, "cannot open " + path.string() + " for writing");
+    tinygltf::TinyGLTF writer;
+    const bool ok = writer.WriteGltfSceneToStream(&model, out, false, true);
+    out.close();
+    if (!ok || !out) throw Error(ErrorKind::Io, "cannot write " + path.string());
+  });
+}
+
+} // namespace octaclay::core::detail

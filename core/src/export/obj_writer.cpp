@@ -1,0 +1,133 @@
+// The exports' OBJ writer: text through to_chars (shortest round-trip form, so positions are
+// exact), flushed in large blocks so that multi-gigabyte OBJs need no second copy in memory.
+
+#include "export/obj_writer.h"
+
+#include "detail/atomic_file.h"
+
+#include "octaclay/core/error.h"
+
+#include <charconv>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+namespace octaclay::core::detail {
+namespace fs = std::filesystem;
+
+namespace {
+
+class TextWriter {
+public:
+  // Writes to `path`; errors name `shown` (the file the user asked for, not its temporary).
+  TextWriter(const fs::path& path, const fs::path& shown)
+      : out_(path, std::ios::binary), shown_(shown) {
+    if (!out_) throw Error(ErrorKind::Io, "cannot open " + shown_.string() + " for writing");
+    buffer_.reserve(kBlock + 256);
+  }
+  TextWriter& text(std::string_view s) {
+    buffer_.append(s);
+    return *this;
+  }
+  TextWriter& number(float value) {
+    std::array<char, 32> digits{};
+    const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), value);
+    buffer_.append(digits.data(), result.ptr);
+    return *this;
+  }
+  TextWriter& number(std::uint64_t value) {
+    std::array<char, 24> digits{};
+    const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), value);
+    buffer_.append(digits.data(), result.ptr);
+    return *this;
+  }
+  void endLine() {
+    buffer_.push_back('\n');
+    if (buffer_.size() >= kBlock) flush();
+  }
+  void finish() {
+    flush();
+    out_.close();
+    if (!out_) throw Error(ErrorKind::Io, "cannot write " + shown_.string() + " (disk full?)");
+  }
+
+private:
+  static constexpr std::size_t kBlock = std::size_t{1} << 22;
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+    if (!out_) throw Error(ErrorKind::Io, "cannot write " + shown_.string() + " (disk full?)");
+  }
+  std::ofstream out_;
+  fs::path shown_;
+  std::string buffer_;
+};
+
+void writeObjText(const ObjMesh& mesh, const ObjHeader& header, const fs::path& path,
+                  const fs::path& shown) {
+  const auto& uvTriangles =
+      mesh.texcoordTriangles.empty() ? mesh.triangles : mesh.texcoordTriangles;
+  TextWriter w(path, shown);
+  w.text("# ").text(header.comment).endLine();
+  w.text("mtllib ").text(header.materialLibrary).endLine();
+  for (const Vec3f& p : mesh.positions)
+    w.text("v ").number(p.x).text(" ").number(p.y).text(" ").number(p.z).endLine();
+  for (const Vec2f& uv : mesh.texcoords)
+    w.text("vt ").number(uv.x).text(" ").number(uv.y).endLine();
+  for (const Vec3f& n : mesh.normals)
+    w.text("vn ").number(n.x).text(" ").number(n.y).text(" ").number(n.z).endLine();
+  w.text("usemtl ").text(header.material).endLine();
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    w.text("f");
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::uint64_t v = std::uint64_t{mesh.triangles[t][c]} + 1; // OBJ counts from 1
+      const std::uint64_t vt = std::uint64_t{uvTriangles[t][c]} + 1;
+      w.text(" ").number(v).text("/").number(vt).text("/").number(v);
+    }
+    w.endLine();
+  }
+  w.finish();
+}
+
+// Writes bytes to path atomically.
+void writeFileBytes(std::span<const unsigned char> bytes, const fs::path& path) {
+  writeAtomically(path, [&](const fs::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + " (disk full?)");
+  });
+}
+
+} // namespace
+
+void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
+                          std::span<const ObjMap> maps, const std::string& mtl,
+                          const fs::path& mtlPath, const fs::path& objPath) {
+  if ((!mesh.texcoordTriangles.empty() && mesh.texcoordTriangles.size() != mesh.triangles.size()) ||
+      mesh.normals.size() != mesh.positions.size())
+    throw Error(ErrorKind::InvalidArgument,
+                "cannot write " + objPath.string() +
+                    ": the OBJ's triangles or normals disagree in count");
+  std::vector<fs::path> written;
+  try {
+    for (const ObjMap& map : maps) {
+      writeFileBytes(map.bytes, map.path);
+      written.push_back(map.path);
+    }
+    writeFileBytes(std::span(reinterpret_cast<const unsigned char*>(mtl.data()), mtl.size()),
+                   mtlPath);
+    written.push_back(mtlPath);
+    writeAtomically(objPath, [&](const fs::path& temporary) {
+      writeObjText(mesh, header, temporary, objPath);
+    });
+  } catch (...) {
+    std::error_code ec;
+    for (const fs::path& file : written)
+      fs::remove(file, ec);
+    throw;
+  }
+}
+
+} // namespace octaclay::core::detail
