@@ -285,7 +285,7 @@ void MainWindow::connectParts() {
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
     viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
-    viewport_->setPaintTarget(static_cast<int>(layersPanel_->paintTarget()));
+    viewport_->setPaintTarget(layersPanel_->paintTarget());
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
   connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
@@ -317,7 +317,7 @@ void MainWindow::connectLod() {
     regenerate();
   });
   connect(lodPanel_, &LodPanel::displayChanged, this, [this, regenerate](LodPanel::Display d) {
-    viewport_->setLodDisplay(static_cast<int>(d));
+    viewport_->setLodDisplay(d);
     updateSaliencyWanted();
     regenerate();
   });
@@ -345,11 +345,11 @@ void MainWindow::connectLod() {
 }
 
 void MainWindow::updateSaliencyWanted() {
-  constexpr int kSaliencyPreview = 6;
   const core::ResampleMethod m = lodPanel_->method();
   const bool salientLod = lodPanel_->lodShown() && (m == core::ResampleMethod::SalientPoint ||
                                                     m == core::ResampleMethod::SalientAverage);
-  viewport_->setSaliencyWanted(layersPanel_->preview() == kSaliencyPreview || salientLod);
+  viewport_->setSaliencyWanted(layersPanel_->preview() == LayersPanel::Preview::Saliency ||
+                               salientLod);
 }
 
 void MainWindow::refreshBrushes() {
