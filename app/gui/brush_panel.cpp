@@ -1,4 +1,4 @@
-// The Brushes dock panel. The panel owns the values (store_, the stroke options); widgets only
+// The Brushes dock panel. The panel owns the brushes' values (store_); widgets only
 // show and edit them, so setters never depend on a widget's rounding (a spin box with one
 // decimal still hands back the exact radius given to setRadius).
 
@@ -6,21 +6,17 @@
 
 #include "brush_list.h"
 #include "parameter_form.h"
+#include "stroke_options_box.h"
 
-#include "octaclay/gpu/stroke.h"
-
-#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QFrame>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
-#include <QSlider>
 #include <QSplitter>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -31,8 +27,6 @@
 namespace octaclay::app {
 
 namespace {
-
-constexpr std::array kAxes{gpu::kSymmetryX, gpu::kSymmetryY, gpu::kSymmetryZ};
 
 QString falloffTitle(gpu::Falloff falloff) {
   switch (falloff) {
@@ -60,15 +54,11 @@ QString areaTitle(gpu::AreaMode area) {
   return {};
 }
 
-constexpr std::array kPressureNames{"none", "radius", "strength"};
-
 } // namespace
 
 // ---------------------------------------------------------------------------------------------
 
 BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
-  loadStrokeOptions();
-
   brushList_ = new QTreeWidget;
   brushList_->setObjectName(QStringLiteral("brushList"));
   brushList_->setHeaderHidden(true);
@@ -102,59 +92,13 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
   splitter->setChildrenCollapsible(false);
 
   // Stroke options: the same for every brush.
-  auto* stroke = new QGroupBox(tr("Stroke"));
-  auto* strokeLayout = new QFormLayout(stroke);
-
-  pressureCombo_ = makeNarrowCombo();
-  pressureCombo_->setObjectName(QStringLiteral("pressureTarget"));
-  pressureCombo_->addItem(tr("None"), static_cast<int>(PressureTarget::None));
-  pressureCombo_->addItem(tr("Radius"), static_cast<int>(PressureTarget::Radius));
-  pressureCombo_->addItem(tr("Strength"), static_cast<int>(PressureTarget::Strength));
-  pressureCombo_->setCurrentIndex(static_cast<int>(pressureTarget_));
-  pressureCombo_->setToolTip(tr("What pen pressure scales"));
-  connect(pressureCombo_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    if (index >= 0) setPressureTarget(static_cast<PressureTarget>(index));
-  });
-  strokeLayout->addRow(tr("Pressure"), pressureCombo_);
-
-  stabilizerSlider_ = new QSlider(Qt::Horizontal);
-  stabilizerSlider_->setObjectName(QStringLiteral("stabilizer"));
-  stabilizerSlider_->setRange(0, 100);
-  stabilizerSlider_->setValue(stabilizerPercent_);
-  stabilizerSlider_->setToolTip(tr("Lazy mouse: how far the brush trails the cursor, smoothing "
-                                   "the stroke (0 follows the cursor exactly)"));
-  stabilizerLabel_ = new QLabel;
-  stabilizerLabel_->setMinimumWidth(
-      stabilizerLabel_->fontMetrics().horizontalAdvance(QStringLiteral("100 %")));
-  stabilizerLabel_->setText(QStringLiteral("%1 %").arg(stabilizerPercent_));
-  connect(stabilizerSlider_, &QSlider::valueChanged, this,
-          [this](int percent) { setStabilizer(static_cast<float>(percent) / 100.0f); });
-  auto* stabilizerRow = new QHBoxLayout;
-  stabilizerRow->addWidget(stabilizerSlider_, 1);
-  stabilizerRow->addWidget(stabilizerLabel_);
-  strokeLayout->addRow(tr("Stabilizer"), stabilizerRow);
-
-  auto* symmetryRow = new QHBoxLayout;
-  const std::array<QString, 3> axisNames{QStringLiteral("X"), QStringLiteral("Y"),
-                                         QStringLiteral("Z")};
-  for (std::size_t k = 0; k < 3; ++k) {
-    auto* box = new QCheckBox(axisNames[k]);
-    box->setObjectName(QStringLiteral("symmetry") + axisNames[k]);
-    box->setToolTip(tr("Mirror strokes across the model's %1 = 0 plane").arg(axisNames[k]));
-    box->setChecked((symmetry_ & kAxes[k]) != 0);
-    const unsigned bit = kAxes[k];
-    connect(box, &QCheckBox::toggled, this,
-            [this, bit](bool on) { setSymmetry(on ? symmetry_ | bit : symmetry_ & ~bit); });
-    symmetryBoxes_[k] = box;
-    symmetryRow->addWidget(box);
-  }
-  symmetryRow->addStretch(1);
-  strokeLayout->addRow(tr("Symmetry"), symmetryRow);
+  strokeOptions_ = new StrokeOptionsBox;
+  connect(strokeOptions_, &StrokeOptionsBox::changed, this, &BrushPanel::settingsChanged);
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(errorFrame_);
   layout->addWidget(splitter, 1);
-  layout->addWidget(stroke);
+  layout->addWidget(strokeOptions_);
 
   rebuildForm();
 }
@@ -191,9 +135,9 @@ BrushSettings BrushPanel::settings() const {
   s.falloff = v.falloff;
   s.area = v.area;
   s.parameters = v.parameters;
-  s.pressureTarget = pressureTarget_;
-  s.stabilizer = static_cast<float>(stabilizerPercent_) / 100.0f;
-  s.symmetry = symmetry_;
+  s.pressureTarget = strokeOptions_->pressureTarget();
+  s.stabilizer = strokeOptions_->stabilizer();
+  s.symmetry = strokeOptions_->symmetry();
   return s;
 }
 
@@ -265,39 +209,15 @@ float BrushPanel::strength() const {
 }
 
 void BrushPanel::setPressureTarget(PressureTarget target) {
-  if (target == pressureTarget_) return;
-  pressureTarget_ = target;
-  {
-    const QSignalBlocker block(pressureCombo_);
-    pressureCombo_->setCurrentIndex(static_cast<int>(target));
-  }
-  saveStrokeOptions();
-  emit settingsChanged();
+  strokeOptions_->setPressureTarget(target);
 }
 
 void BrushPanel::setStabilizer(float amount) {
-  const int percent = static_cast<int>(std::lround(clampFinite(amount, 0.0f, 1.0f, 0.0f) * 100.0f));
-  if (percent == stabilizerPercent_) return;
-  stabilizerPercent_ = percent;
-  {
-    const QSignalBlocker block(stabilizerSlider_);
-    stabilizerSlider_->setValue(percent);
-  }
-  stabilizerLabel_->setText(QStringLiteral("%1 %").arg(percent));
-  saveStrokeOptions();
-  emit settingsChanged();
+  strokeOptions_->setStabilizer(amount);
 }
 
 void BrushPanel::setSymmetry(unsigned axes) {
-  axes &= gpu::kSymmetryX | gpu::kSymmetryY | gpu::kSymmetryZ;
-  if (axes == symmetry_) return;
-  symmetry_ = axes;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const QSignalBlocker block(symmetryBoxes_[k]);
-    symmetryBoxes_[k]->setChecked((axes & kAxes[k]) != 0);
-  }
-  saveStrokeOptions();
-  emit settingsChanged();
+  strokeOptions_->setSymmetry(axes);
 }
 
 QWidget* BrushPanel::parameterWidget(const QString& id) const {
@@ -329,29 +249,6 @@ void BrushPanel::setMaterials(QStringList ids) {
   if (ids == store_.materials()) return;
   store_.setMaterials(std::move(ids));
   rebuildForm();
-}
-
-void BrushPanel::saveStrokeOptions() const {
-  QSettings settings;
-  settings.beginGroup(QStringLiteral("brushPanel"));
-  settings.setValue(QStringLiteral("pressureTarget"),
-                    QString::fromLatin1(kPressureNames[static_cast<std::size_t>(pressureTarget_)]));
-  settings.setValue(QStringLiteral("stabilizer"), stabilizerPercent_);
-  settings.setValue(QStringLiteral("symmetry"), symmetry_);
-}
-
-void BrushPanel::loadStrokeOptions() {
-  QSettings settings;
-  settings.beginGroup(QStringLiteral("brushPanel"));
-  const QString pressure = settings.value(QStringLiteral("pressureTarget")).toString();
-  for (std::size_t k = 0; k < kPressureNames.size(); ++k)
-    if (pressure == QLatin1String(kPressureNames[k]))
-      pressureTarget_ = static_cast<PressureTarget>(k);
-  bool ok = false;
-  if (const int percent = settings.value(QStringLiteral("stabilizer")).toInt(&ok); ok)
-    stabilizerPercent_ = std::clamp(percent, 0, 100);
-  if (const uint axes = settings.value(QStringLiteral("symmetry")).toUInt(&ok); ok)
-    symmetry_ = axes & (gpu::kSymmetryX | gpu::kSymmetryY | gpu::kSymmetryZ);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -15,19 +15,19 @@
 #include <string>
 #include <vector>
 
-class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QFrame;
 class QLabel;
 class QScrollArea;
-class QSlider;
 class QTreeWidget;
 class QTreeWidgetItem;
 class QVBoxLayout;
 
 namespace octaclay::app {
+
+class StrokeOptionsBox;
 
 /// The Brushes dock panel: the brush list grouped by category, the brushes that failed to load,
 /// and a form for the current brush (radius, strength, falloff, area mode, then one widget per
@@ -96,8 +96,6 @@ private:
   const gpu::BrushManifest* findBrush(const QString& id) const;
   BrushValues& currentValues();
   const BrushValues& currentValues() const;
-  void saveStrokeOptions() const;
-  void loadStrokeOptions();
 
   void onCurrentItemChanged(QTreeWidgetItem* item);
   void makeCurrent(const QString& id);
@@ -111,10 +109,6 @@ private:
   QString currentId_;
   BrushValues noBrush_; // what radius() and friends use while no brush is loaded
 
-  PressureTarget pressureTarget_ = PressureTarget::Strength;
-  int stabilizerPercent_ = 0;
-  unsigned symmetry_ = 0;
-
   QTreeWidget* brushList_ = nullptr;
   QFrame* errorFrame_ = nullptr;
   QVBoxLayout* errorLayout_ = nullptr;
@@ -123,10 +117,7 @@ private:
   QPointer<QDoubleSpinBox> radiusSpin_;
   QPointer<QDoubleSpinBox> strengthSpin_;
   std::map<QString, QPointer<QWidget>> parameterWidgets_;
-  QComboBox* pressureCombo_ = nullptr;
-  QSlider* stabilizerSlider_ = nullptr;
-  QLabel* stabilizerLabel_ = nullptr;
-  std::array<QCheckBox*, 3> symmetryBoxes_{};
+  StrokeOptionsBox* strokeOptions_ = nullptr;
 };
 
 } // namespace octaclay::app
