@@ -182,8 +182,9 @@ void LayersPanel::setPaintTarget(core::EditLayer layer) {
   if (layer == core::EditLayer::Positions || layer == paintTarget_) return;
   paintTarget_ = layer;
   {
-    const QSignalBlocker block(targetGroup_);
-    targetButtons_[indexOf(layer)]->setChecked(true);
+    QRadioButton* button = targetButtons_[indexOf(layer)];
+    const QSignalBlocker block(button); // its toggled() would come back here
+    button->setChecked(true);
   }
   save();
   emit paintTargetChanged();
