@@ -1,10 +1,12 @@
 #include "brush_setup.h"
 #include "commands.h"
+#include "sculpt_session.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/stroke.h"
 
 #include <nlohmann/json.hpp>
@@ -210,11 +212,14 @@ Command addStrokeCommand(CLI::App& app) {
             const gpu::GlContext context = gpu::GlContext::createHeadless();
             gpu::BrushEngine engine;
             loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
-            engine.load(*brush, gpu::BrushCatalog::shaderSource(*brush));
-            gpu::GpuDocument gpuDocument(std::move(document));
-            settings.radius = opt->radius * gpuDocument.bounds().diagonal();
-            const gpu::StrokeResult result = gpu::runStroke(engine, gpuDocument, *brush, settings);
-            core::writeDocument(gpuDocument.document(), opt->output);
+            // Every dab applies the whole --strength (the modeller shares it out by spacing).
+            SculptSession session(DabStrength::Full);
+            session.setBrushes(engine, catalog);
+            session.loadBrush(*brush);
+            session.setDocument(std::move(document));
+            settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();
+            const gpu::StrokeResult result = session.strokeAlongPath(*brush, settings);
+            core::writeDocument(session.document(), opt->output);
 
             const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
             if (opt->json)

@@ -1,12 +1,12 @@
 #pragma once
 
 #include "brush_settings.h"
+#include "brush_value_store.h"
+#include "color_button.h"
 
 #include "octaclay/gpu/brush_manifest.h"
 
-#include <QColor>
 #include <QPointer>
-#include <QPushButton>
 #include <QString>
 #include <QWidget>
 
@@ -15,41 +15,19 @@
 #include <string>
 #include <vector>
 
-class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QFrame;
 class QLabel;
 class QScrollArea;
-class QSlider;
 class QTreeWidget;
 class QTreeWidgetItem;
 class QVBoxLayout;
 
 namespace octaclay::app {
 
-/// A button showing a colour (swatch and #rrggbbaa) that opens QColorDialog when clicked. The
-/// value is the `color` property, so tests and scripts can set it without the dialog.
-class ColorButton : public QPushButton {
-  Q_OBJECT
-  Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
-
-public:
-  explicit ColorButton(QWidget* parent = nullptr);
-
-  QColor color() const { return color_; }
-  /// Shows `color` (alpha included); emits colorChanged when it differs from the current one.
-  void setColor(const QColor& color);
-
-signals:
-  void colorChanged(const QColor& color);
-
-private:
-  void pickColor();
-
-  QColor color_;
-};
+class StrokeOptionsBox;
 
 /// The Brushes dock panel: the brush list grouped by category, the brushes that failed to load,
 /// and a form for the current brush (radius, strength, falloff, area mode, then one widget per
@@ -115,45 +93,21 @@ signals:
   void settingsChanged();
 
 private:
-  // What the user set for one brush; survives switching brushes.
-  struct BrushValues {
-    float radius = 0.05f;
-    float strength = 0.5f;
-    gpu::Falloff falloff = gpu::Falloff::Smooth;
-    gpu::AreaMode area = gpu::AreaMode::Volume;
-    std::map<std::string, std::array<float, 4>> parameters;
-  };
-
   const gpu::BrushManifest* findBrush(const QString& id) const;
   BrushValues& currentValues();
   const BrushValues& currentValues() const;
-  BrushValues defaultValues(const gpu::BrushManifest& brush) const;
-  BrushValues loadValues(const gpu::BrushManifest& brush) const;
-  void fitValues(const gpu::BrushManifest& brush, BrushValues& values) const;
-  void saveValues(const QString& id) const;
-  void saveStrokeOptions() const;
-  void loadStrokeOptions();
 
-  void fillBrushList();
-  void showErrors();
   void onCurrentItemChanged(QTreeWidgetItem* item);
   void makeCurrent(const QString& id);
   void rebuildForm();
-  QWidget* makeParameterWidget(const gpu::BrushParameter& parameter,
-                               const std::array<float, 4>& value);
   // Stores a value the user (or a setter) changed, persists it and emits settingsChanged.
   void valuesEdited();
 
   std::vector<gpu::BrushManifest> brushes_;
-  QStringList materials_;
   std::vector<std::string> errors_;
-  std::map<QString, BrushValues> values_;
+  BrushValueStore store_;
   QString currentId_;
   BrushValues noBrush_; // what radius() and friends use while no brush is loaded
-
-  PressureTarget pressureTarget_ = PressureTarget::Strength;
-  int stabilizerPercent_ = 0;
-  unsigned symmetry_ = 0;
 
   QTreeWidget* brushList_ = nullptr;
   QFrame* errorFrame_ = nullptr;
@@ -163,10 +117,7 @@ private:
   QPointer<QDoubleSpinBox> radiusSpin_;
   QPointer<QDoubleSpinBox> strengthSpin_;
   std::map<QString, QPointer<QWidget>> parameterWidgets_;
-  QComboBox* pressureCombo_ = nullptr;
-  QSlider* stabilizerSlider_ = nullptr;
-  QLabel* stabilizerLabel_ = nullptr;
-  std::array<QCheckBox*, 3> symmetryBoxes_{};
+  StrokeOptionsBox* strokeOptions_ = nullptr;
 };
 
 } // namespace octaclay::app

@@ -14,6 +14,8 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace octaclay::app {
 
 namespace {
@@ -109,7 +111,10 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
       radio->setObjectName(QStringLiteral("target-") + layerKey(layer));
       radio->setToolTip(tr("Paint brushes write the %1 layer").arg(layerTitle(layer)));
       radio->setChecked(layer == paintTarget_);
-      targetGroup_->addButton(radio, static_cast<int>(k));
+      targetGroup_->addButton(radio);
+      connect(radio, &QRadioButton::toggled, this, [this, layer](bool on) {
+        if (on) setPaintTarget(layer);
+      });
       targetButtons_[k] = radio;
       grid->addWidget(radio, row, 2);
     }
@@ -122,9 +127,6 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(state, row, 3);
   }
   grid->setColumnStretch(3, 1);
-  connect(targetGroup_, &QButtonGroup::idToggled, this, [this](int id, bool on) {
-    if (on) setPaintTarget(static_cast<core::EditLayer>(id));
-  });
 
   // One channel alone, to see what a paint or splat stroke wrote where.
   preview_ = new QComboBox(this);
@@ -134,7 +136,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
   preview_->setToolTip(tr("Show the shaded model, one layer channel alone, or the saliency the "
                           "level of detail keeps (a heat map: blue smooth, red salient)"));
   connect(preview_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    if (index >= 0) emit previewChanged(index);
+    if (index >= 0) emit previewChanged(static_cast<Preview>(index)); // rows in Preview's order
   });
   auto* previewRow = new QHBoxLayout;
   previewRow->addWidget(new QLabel(tr("Preview"), this));
@@ -146,11 +148,14 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
   layout->addStretch(1);
 }
 
-int LayersPanel::preview() const {
-  return preview_->currentIndex();
+LayersPanel::Preview LayersPanel::preview() const {
+  return static_cast<Preview>(std::max(preview_->currentIndex(), 0));
 }
-void LayersPanel::setPreview(int channel) {
-  preview_->setCurrentIndex(channel);
+void LayersPanel::setPreview(Preview preview) {
+  preview_->setCurrentIndex(static_cast<int>(preview));
+}
+void LayersPanel::setPreview(int row) {
+  preview_->setCurrentIndex(row);
 }
 
 bool LayersPanel::isVisible(core::EditLayer layer) const {
@@ -177,8 +182,9 @@ void LayersPanel::setPaintTarget(core::EditLayer layer) {
   if (layer == core::EditLayer::Positions || layer == paintTarget_) return;
   paintTarget_ = layer;
   {
-    const QSignalBlocker block(targetGroup_);
-    targetButtons_[indexOf(layer)]->setChecked(true);
+    QRadioButton* button = targetButtons_[indexOf(layer)];
+    const QSignalBlocker block(button); // its toggled() would come back here
+    button->setChecked(true);
   }
   save();
   emit paintTargetChanged();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/model_renderer.h"
 
 #include <QString>
 #include <QWidget>
@@ -51,13 +52,15 @@ public:
   /// The state line shown for the layer, e.g. "uniform" (for tests).
   QString layerStateText(core::EditLayer layer) const;
 
-  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
-  /// 6 saliency as a heat map.
-  int preview() const;
-  void setPreview(int channel);
+  using Preview = gpu::ModelView::Preview;
+  /// The shaded model, one layer channel alone, or the saliency as a heat map.
+  Preview preview() const;
+  void setPreview(Preview preview);
+  /// The preview list's row, in Preview's order (0 the shaded model … 6 saliency).
+  void setPreview(int row);
 
 signals:
-  void previewChanged(int channel);
+  void previewChanged(octaclay::gpu::ModelView::Preview preview);
   void visibilityChanged();
   void paintTargetChanged();
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "lod_display.h"
+
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/core/measure/surface_distance.h"
 
@@ -64,7 +66,7 @@ public:
   QString fullText() const;
 
   /// What the viewport shows.
-  enum class Display { FullResolution, Lod, SideBySide };
+  using Display = LodDisplay;
   Display display() const;
   /// Emits displayChanged when it changes.
   void setDisplay(Display display);
@@ -94,7 +96,7 @@ signals:
   void levelChanged(int divisor);
   /// The method or the triangle target changed.
   void lodOptionsChanged();
-  void displayChanged(octaclay::app::LodPanel::Display display);
+  void displayChanged(octaclay::app::LodDisplay display);
   /// Export… was pressed.
   void exportRequested();
 

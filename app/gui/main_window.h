@@ -1,5 +1,6 @@
 #pragma once
 
+#include "document_actions.h"
 #include "recovery_store.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -9,7 +10,6 @@
 #include <QMainWindow>
 #include <QPointer>
 
-#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -65,35 +65,41 @@ public:
   /// Reads path (.exr, or .ocz as an untitled model) off the GUI thread with progress; on failure
   /// reports why and keeps the current document. Does not ask about unsaved changes (the File menu
   /// does).
-  bool openDocument(const QString& path);
+  bool openDocument(const QString& path) { return documents_->openDocument(path); }
   /// Saves atomically off the GUI thread; the document stays editable meanwhile.
-  bool saveDocument(const QString& path);
+  bool saveDocument(const QString& path) { return documents_->saveDocument(path); }
   /// Writes the document compressed (.ocz) atomically off the GUI thread with progress. The
   /// document keeps its path and unsaved state: a lossy .ocz is not the model itself.
-  bool saveCompressed(const QString& path, const core::CompressOptions& options);
+  bool saveCompressed(const QString& path, const core::CompressOptions& options) {
+    return documents_->saveCompressed(path, options);
+  }
   /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, off the GUI thread
   /// with a cancellable progress dialog; on failure or cancel the current document stays.
-  bool importMesh(const QString& path, int n);
+  bool importMesh(const QString& path, int n) { return documents_->importMesh(path, n); }
   /// Writes the mesh at level N/divisor (OBJ, PLY, STL or OFF by extension).
-  bool exportMesh(const QString& path, int divisor);
+  bool exportMesh(const QString& path, int divisor) {
+    return documents_->exportMesh(path, divisor);
+  }
   /// Writes the Level of detail dock's LOD (its method and target) of the current surface as
   /// OBJ + MTL or GLB with an object-space normal map baked from the full resolution, off the
   /// GUI thread with progress.
-  bool exportLod(const QString& path);
+  bool exportLod(const QString& path) { return documents_->exportLod(path); }
   /// Regenerates the live LOD in the background (while the dock shows it).
   LodGenerator* lodGenerator() const { return lodGenerator_; }
 
-  QString currentPath() const { return path_; }
-  bool isModified() const;
+  QString currentPath() const { return documents_->currentPath(); }
+  bool isModified() const { return documents_->isModified(); }
   /// The last error shown to the user (tests read it), empty if none since the last success.
-  QString lastError() const { return lastError_; }
+  QString lastError() const { return documents_->lastError(); }
 
   /// Writes the recovery file now (the autosave timer calls this). Returns false on failure.
-  bool autosaveNow();
+  bool autosaveNow() { return documents_->autosaveNow(); }
   /// A recovery left by a session that crashed, found at start.
-  const std::optional<RecoveryStore::Pending>& pendingRecovery() const { return pending_; }
+  const std::optional<RecoveryStore::Pending>& pendingRecovery() const {
+    return documents_->pendingRecovery();
+  }
   /// Loads the pending recovery as the current (modified) document.
-  bool recover();
+  bool recover() { return documents_->recover(); }
   /// Checks for a crashed session's recovery (asking the user when options say so) and starts
   /// this session's autosave. Call once after show().
   void startSession();
@@ -107,27 +113,16 @@ private:
   void connectParts();
   void updateStatus();
   void updateTitle();
-  void addRecentFile(const QString& path);
   void rebuildRecentMenu();
   bool maybeSave();
-  void showError(const QString& message);
   QString choose(FileRequest request);
   void refreshBrushes();
-  /// Runs work off the GUI thread while the event loop (and a progress dialog after a short
-  /// delay) keeps the window responsive. Returns the work's error message, empty on success.
-  /// What a cancellable task shares with the GUI thread.
-  struct TaskControl {
-    std::atomic<float> fraction{0};
-    std::atomic<bool> cancel{false};
-  };
-  QString runInBackground(const QString& label, const std::function<void()>& work,
-                          std::shared_ptr<TaskControl> control = nullptr);
-  void adoptDocument(core::Document document, const QString& path);
   void connectLod();
   /// Saliency is computed while the heat map or a salient LOD method needs it.
   void updateSaliencyWanted();
 
   Options options_;
+  DocumentActions* documents_ = nullptr;
   ViewportWidget* viewport_ = nullptr;
   BrushPanel* brushPanel_ = nullptr;
   LayersPanel* layersPanel_ = nullptr;
@@ -142,13 +137,6 @@ private:
   QLabel* trianglesLabel_ = nullptr;
   QTimer* autosaveTimer_ = nullptr;
   std::function<QString(FileRequest)> chooser_;
-  RecoveryStore recovery_;
-  std::optional<RecoveryStore::Pending> pending_;
-  QString path_;
-  QString lastError_;
-  int autosavedIndex_ = -1; // undo index at the last autosave
-  bool busy_ = false;
-  bool forceModified_ = false; // a recovered document differs from any file
 };
 
 } // namespace octaclay::app

@@ -1,17 +1,21 @@
 #pragma once
 
 #include "brush_settings.h"
+#include "lod_display.h"
+#include "saliency_keeper.h"
+#include "sculpt_session.h"
 #include "stroke_stabilizer.h"
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_layer.h"
 #include "octaclay/core/geometry/ray_pick.h"
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/material_catalog.h"
+#include "octaclay/gpu/model_renderer.h"
 
 #include <QElapsedTimer>
-#include <QFutureWatcher>
 #include <QOpenGLWidget>
 #include <vtkNew.h>
 
@@ -27,10 +31,7 @@ class vtkRenderer;
 namespace octaclay::gpu {
 class BrushLibrary;
 class GlContext;
-class GpuDocument;
 class ModelRenderer;
-class SaliencyPass;
-class StrokeSession;
 } // namespace octaclay::gpu
 
 namespace octaclay::app {
@@ -49,9 +50,9 @@ struct ViewportStats {
 /// The 3D view: a Qt6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (VTK's Qt module is
 /// built for Qt5), whose GL context also runs the brush engine, so the full-resolution image
 /// never crosses to the CPU per frame. Owns the edited document (GPU textures plus the engine's
-/// CPU mirror), its brush library and its stroke history. Left-drag sculpts (Ctrl inverts,
-/// Shift smooths), right- or middle-drag orbits, Shift+middle or Ctrl+right pans, the wheel
-/// zooms; a left-drag that starts off the model orbits too.
+/// CPU mirror), its brush library and its stroke history, sculpted through a SculptSession.
+/// Left-drag sculpts (Ctrl inverts, Shift smooths), right- or middle-drag orbits, Shift+middle or
+/// Ctrl+right pans, the wheel zooms; a left-drag that starts off the model orbits too.
 class ViewportWidget : public QOpenGLWidget {
   Q_OBJECT
 public:
@@ -75,12 +76,12 @@ public:
   void setBrushSettings(const BrushSettings& settings);
   const BrushSettings& brushSettings() const { return settings_; }
   /// The layer paint-category brushes write (diffuse, feature or mask).
-  void setPaintTarget(int brushLayer);
+  void setPaintTarget(core::EditLayer layer);
   void setShowDiffuse(bool show);
   void setShowMask(bool show);
-  /// 0 the shaded model; 1 diffuse, 2 height detail, 3 specular, 4 reflectivity, 5 mask alone,
-  /// 6 saliency (the positions' alpha) as a heat map.
-  void setPreview(int channel);
+  /// The shaded model, one layer channel alone, or the saliency (the positions' alpha) as a
+  /// heat map.
+  void setPreview(gpu::ModelView::Preview preview);
   /// The materials splat brushes can use (engine order) and those that failed to load.
   QStringList materialIds() const;
   QStringList materialErrors() const;
@@ -88,11 +89,11 @@ public:
   void setLevelDivisor(int divisor);
   int levelDivisor() const { return divisor_; }
 
-  /// What the view shows: the full resolution (0), the level of detail setLodMesh gave (1, the
-  /// full resolution until there is one), or both side by side (2: full resolution left, LOD
-  /// right, one camera; either half sculpts).
-  void setLodDisplay(int display);
-  int lodDisplay() const { return lodDisplay_; }
+  /// What the view shows: the full resolution, the level of detail setLodMesh gave (the full
+  /// resolution until there is one), or both side by side (full resolution left, LOD right, one
+  /// camera; either half sculpts).
+  void setLodDisplay(LodDisplay display);
+  LodDisplay lodDisplay() const { return lodDisplay_; }
   /// The LOD to show (uploaded at the next frame).
   void setLodMesh(std::shared_ptr<const core::LodMesh> lod);
   /// Triangles of the LOD the view draws (0 until one was uploaded).
@@ -105,20 +106,20 @@ public:
   /// worker thread (see setSaliencyOnCpu), surfaceChanged() telling when it is in.
   void setSaliencyWanted(bool wanted);
   /// Whether the positions' alpha is the saliency of the current surface.
-  bool saliencyCurrent() const { return !saliencyStale_; }
+  bool saliencyCurrent() const { return saliency_.current(); }
   /// Computes the saliency with core::computeSaliency off the GUI thread instead of on the GPU.
   /// On by default where GL is a software rasterizer (llvmpipe): there the GPU pass is CPU work
   /// that would hold the GUI thread for seconds at N = 1024, the threaded CPU reference less and
   /// in the background.
-  void setSaliencyOnCpu(bool onCpu) { saliencyOnCpu_ = onCpu; }
-  bool saliencyOnCpu() const { return saliencyOnCpu_; }
+  void setSaliencyOnCpu(bool onCpu) { saliency_.setOnCpu(onCpu); }
+  bool saliencyOnCpu() const { return saliency_.onCpu(); }
 
-  bool canUndo() const { return history_.canUndo(); }
-  bool canRedo() const { return history_.canRedo(); }
+  bool canUndo() const { return session_.history().canUndo(); }
+  bool canRedo() const { return session_.history().canRedo(); }
   /// Reverts / reapplies the newest stroke on the GPU and the mirror; false if there is none.
   bool undoStroke();
   bool redoStroke();
-  core::EditHistory& history() { return history_; }
+  core::EditHistory& history() { return session_.history(); }
 
   void resetCamera();
   /// The surface point under widget position p (logical pixels), if any.
@@ -131,7 +132,7 @@ public:
   void beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers = {});
   void continueStrokeTo(QPointF p);
   void endStroke();
-  bool stroking() const { return stroke_ != nullptr; }
+  bool stroking() const { return session_.stroking(); }
 
   ViewportStats stats() const;
   /// Why GL or a brush failed, empty if nothing did.
@@ -168,7 +169,6 @@ protected:
   void leaveEvent(QEvent* event) override;
 
 private:
-  struct ActiveStroke;
   enum class Drag { None, Sculpt, Orbit, Pan };
 
   bool uploadDocument(core::Document document);
@@ -179,15 +179,10 @@ private:
   /// Runs the queued dabs (GL current). Returns how many were made.
   int runQueuedDabs();
   void finishStroke();
-  /// The manifest the current settings ask for (area, falloff, paint target) compiled; null
-  /// with error_ set if it cannot be.
-  std::optional<gpu::BrushManifest> prepareBrush(const std::string& id);
-  void refreshNormalsAround(std::vector<core::TexelRect> rects);
-  void refreshAfterHistory(const core::Stroke& stroke);
+  /// Recomputes the normals the touched texels' neighbourhoods read.
+  void refreshNormalsAround(std::vector<core::TexelRect> touched);
   /// Undo or redo on the GPU and the mirror, then the normals of what changed.
-  bool stepHistory(bool (core::EditHistory::*can)() const,
-                   const core::Stroke* (core::EditHistory::*step)(const core::TileApplier&));
-  float diagonal() const;
+  bool stepHistory(bool undo);
   /// Recomputes the saliency if wanted and stale (GL current), or starts the CPU job.
   void refreshSaliency();
   void cpuSaliencyFinished();
@@ -208,26 +203,20 @@ private:
   std::unique_ptr<gpu::GlContext> context_;
   std::unique_ptr<gpu::BrushLibrary> library_;
   std::unique_ptr<gpu::ModelRenderer> model_;
-  std::unique_ptr<gpu::SaliencyPass> saliency_;
-  bool saliencyWanted_ = false, saliencyStale_ = true, saliencyOnCpu_ = false;
-  std::uint64_t surfaceVersion_ = 0, saliencyJobVersion_ = 0; // the job's result fits its version
-  QFutureWatcher<std::vector<float>> saliencyJob_;
-  int lodDisplay_ = 0;
+  SaliencyKeeper saliency_;
+  LodDisplay lodDisplay_ = LodDisplay::FullResolution;
   std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
-  std::unique_ptr<gpu::GpuDocument> document_;
-  std::optional<core::Document> pending_;
-  std::map<std::string, std::string> loadedVariant_; // brush id → what was compiled
-  core::EditHistory history_;
+  SculptSession session_{DabStrength::SpacingShare};
+  std::optional<core::Document> pending_; // set before GL started (or when it failed)
 
   BrushSettings settings_;
-  int paintTarget_ = 1; // core::EditLayer::Diffuse
+  core::EditLayer paintTarget_ = core::EditLayer::Diffuse;
   bool showDiffuse_ = true, showMask_ = true;
-  int preview_ = 0;
+  gpu::ModelView::Preview preview_ = gpu::ModelView::Preview::Shaded;
   gpu::MaterialCatalog materials_;
   QStringList materialErrors_;
   int divisor_ = 4;
 
-  std::unique_ptr<ActiveStroke> stroke_;
   StrokeStabilizer stabilizer_;
   std::optional<core::PickHit> hover_;
   Drag drag_ = Drag::None;
@@ -241,8 +230,6 @@ private:
   QString error_;
   QElapsedTimer clock_;
   std::deque<qint64> frameTimes_;
-  double lastDabMs_ = 0;
-  long long dabCount_ = 0;
 };
 
 } // namespace octaclay::app

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "octaclay/gpu/brush_manifest.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace octaclay::app {
+
+/// Radius limits, as a fraction of the model's bounding-box diagonal.
+inline constexpr float kMinRadius = 0.001f, kMaxRadius = 1.0f;
+
+/// value clamped to [lo, hi]; fallback if it is not finite.
+float clampFinite(float value, float lo, float hi, float fallback);
+
+/// What the user set for one brush; survives switching brushes.
+struct BrushValues {
+  float radius = 0.05f;
+  float strength = 0.5f;
+  gpu::Falloff falloff = gpu::Falloff::Smooth;
+  gpu::AreaMode area = gpu::AreaMode::Volume;
+  std::map<std::string, std::array<float, 4>> parameters; ///< manifest parameter id → value
+};
+
+/// Each brush's values: remembered while the brushes are replaced, persisted with the
+/// default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
+/// and parameters/<parameter id>; enum options and materials by name). GUI thread.
+class BrushValueStore {
+public:
+  /// The installed materials' ids, in the engine's order: a material value is an index into
+  /// them.
+  const QStringList& materials() const { return materials_; }
+  void setMaterials(QStringList ids) { materials_ = std::move(ids); }
+
+  /// Keeps values for exactly these brushes: each one's from what the store remembers, else
+  /// from QSettings, else from the manifest, then fitted to the manifest (unknown parameters
+  /// dropped, values clamped to their ranges). For a duplicate id the first brush wins.
+  void setBrushes(const std::vector<gpu::BrushManifest>& brushes);
+  /// The values of brush id, or nullptr if the store has none.
+  BrushValues* find(const QString& id);
+  const BrushValues* find(const QString& id) const;
+  /// Persists brush's values (nothing if the store has none).
+  void save(const gpu::BrushManifest& brush) const;
+
+private:
+  BrushValues defaults(const gpu::BrushManifest& brush) const;
+  BrushValues load(const gpu::BrushManifest& brush) const;
+
+  std::map<QString, BrushValues> values_;
+  QStringList materials_;
+};
+
+} // namespace octaclay::app

@@ -1,0 +1,325 @@
+#include "document_actions.h"
+
+#include "lod_panel.h"
+#include "save_compressed_dialog.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/export/lod_export.h"
+#include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/export/textured_export.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/import/import.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/normal_map.h"
+#include "octaclay/core/lod/saliency.h"
+
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <memory>
+
+namespace octaclay::app {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+
+std::filesystem::path toPath(const QString& path) {
+  return std::filesystem::path(path.toStdString());
+}
+
+} // namespace
+
+DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qint64 sessionPid,
+                                 QObject* parent)
+    : QObject(parent), parts_(parts), runner_(parts.window), recovery_(recoveryFolder, sessionPid) {
+}
+
+bool DocumentActions::isModified() const {
+  return forceModified_ || !parts_.undoStack->isClean();
+}
+
+void DocumentActions::showError(const QString& message) {
+  lastError_ = message;
+  parts_.statusBar->showMessage(message, 15000);
+  auto* box = new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok,
+                              parts_.window);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open(); // window-modal, does not block the caller
+}
+
+bool DocumentActions::importMesh(const QString& path, int n) {
+  auto control = std::make_shared<TaskControl>();
+  auto made = std::make_shared<core::Document>();
+  auto report = std::make_shared<QString>();
+  const QString error = runner_.run(
+      tr("Importing %1…").arg(QFileInfo(path).fileName()),
+      [made, report, control, path, n] {
+        const core::ValidatedMesh mesh = core::loadGenus0Mesh(toPath(path));
+        const core::SphericalMap map = core::parameterizeOnSphere(mesh.mesh, [control](float f) {
+          control->fraction = 0.9f * f;
+          return !control->cancel.load();
+        });
+        if (map.flipped > 0)
+          throw core::Error(core::ErrorKind::InvalidInput,
+                            "the spherical map folds over itself (" + std::to_string(map.flipped) +
+                                " flipped triangles): this mesh is not supported yet");
+        core::ImportedDiffuse diffuse;
+        *made = core::importValidatedMesh(mesh, map, n, &diffuse);
+        control->fraction = 1.0f;
+        QString colour = QObject::tr("no colour");
+        if (diffuse.source == core::DiffuseSource::VertexColours)
+          colour = QObject::tr("vertex colours");
+        else if (diffuse.source == core::DiffuseSource::Texture)
+          colour = QObject::tr("texture %1")
+                       .arg(QString::fromStdString(diffuse.texture.filename().string()));
+        *report = QObject::tr("stretch %1, %2 flipped triangles, %3")
+                      .arg(static_cast<double>(map.stretchL2), 0, 'f', 2)
+                      .arg(map.flipped)
+                      .arg(colour);
+        // Attributes the file names but the import could not use (a missing .mtl or texture).
+        for (const std::string& note : diffuse.notes)
+          *report += QStringLiteral("; ") + QString::fromStdString(note);
+      },
+      control);
+  if (control->cancel) {
+    parts_.statusBar->showMessage(tr("Import cancelled; the current model is unchanged"), 8000);
+    return false;
+  }
+  if (!error.isEmpty()) {
+    showError(tr("Could not import %1: %2\nThe current model is unchanged.").arg(path, error));
+    return false;
+  }
+  adoptDocument(std::move(*made), {});
+  forceModified_ = true; // not saved anywhere yet
+  emit titleChanged();
+  lastError_.clear();
+  parts_.statusBar->showMessage(tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), *report),
+                                8000);
+  return true;
+}
+
+void DocumentActions::adoptDocument(core::Document document, const QString& path) {
+  emit aboutToAdopt(); // before the new document's surfaceChanged
+  if (!parts_.viewport->setDocument(std::move(document))) {
+    showError(parts_.viewport->error());
+    return;
+  }
+  parts_.undoStack->clear();
+  path_ = path;
+  forceModified_ = false;
+  autosavedIndex_ = -1;
+  parts_.lodPanel->setDocumentSize(parts_.viewport->document().size());
+  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  emit titleChanged();
+  emit adopted();
+}
+
+bool DocumentActions::newDocument(core::BaseShape shape, int n) {
+  auto made = std::make_shared<core::Document>();
+  const QString error = runner_.run(tr("Creating a model of size %1…").arg(n), [made, shape, n] {
+    *made = core::makeDocument(core::makeBaseShape(shape, n));
+  });
+  if (!error.isEmpty()) {
+    showError(tr("Could not create the model: %1").arg(error));
+    return false;
+  }
+  adoptDocument(std::move(*made), {});
+  lastError_.clear();
+  return true;
+}
+
+bool DocumentActions::openDocument(const QString& path) {
+  auto read = std::make_shared<core::Document>();
+  const QString error = runner_.run(tr("Opening %1…").arg(QFileInfo(path).fileName()),
+                                    [read, path] { *read = readModelFile(path); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not open %1: %2\nThe current model is unchanged.").arg(path, error));
+    return false;
+  }
+  // A compressed model opens untitled, so Save asks for an .exr instead of overwriting it.
+  const bool compressed = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0;
+  adoptDocument(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath());
+  addRecentFile(QFileInfo(path).absoluteFilePath());
+  lastError_.clear();
+  return true;
+}
+
+bool DocumentActions::saveDocument(const QString& path) {
+  if (!parts_.viewport->hasDocument()) return false;
+  parts_.viewport->endStroke();
+  // A snapshot: the save runs while the user may keep sculpting.
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  const QString error =
+      runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()),
+                  [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not save %1: %2").arg(path, error));
+    return false;
+  }
+  path_ = QFileInfo(path).absoluteFilePath();
+  parts_.undoStack->setClean();
+  forceModified_ = false;
+  recovery_.discard(); // the file now holds everything the recovery did
+  addRecentFile(path_);
+  emit titleChanged();
+  lastError_.clear();
+  parts_.statusBar->showMessage(tr("Saved %1").arg(path_), 5000);
+  return true;
+}
+
+bool DocumentActions::saveCompressed(const QString& path, const core::CompressOptions& options) {
+  if (!parts_.viewport->hasDocument()) return false;
+  parts_.viewport->endStroke();
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  const QString error =
+      runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()), [snapshot, path, options] {
+        core::writeCompressedDocument(*snapshot, options, toPath(path));
+      });
+  if (!error.isEmpty()) {
+    showError(tr("Could not save %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  parts_.statusBar->showMessage(tr("Saved compressed %1").arg(path), 5000);
+  return true;
+}
+
+bool DocumentActions::exportMesh(const QString& path, int divisor) {
+  if (!parts_.viewport->hasDocument()) return false;
+  // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  const bool obj = suffix == "obj", glb = suffix == "glb";
+  if (!obj && !glb && !core::meshFormatFromPath(toPath(path))) {
+    showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
+    return false;
+  }
+  std::function<void()> work;
+  if (obj || glb) {
+    parts_.viewport->endStroke();
+    auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+    work = [snapshot, path, divisor, obj] {
+      if (obj)
+        core::writeTexturedObj(*snapshot, divisor, toPath(path));
+      else
+        core::writeGlb(*snapshot, divisor, toPath(path));
+    };
+  } else {
+    auto snapshot = std::make_shared<core::GeometryImage>(parts_.viewport->document().positions);
+    work = [snapshot, path, divisor] {
+      core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
+    };
+  }
+  const QString error = runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
+  if (!error.isEmpty()) {
+    showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  lastError_.clear();
+  parts_.statusBar->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool DocumentActions::exportLod(const QString& path) {
+  if (!parts_.viewport->hasDocument()) return false;
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix != "obj" && suffix != "glb") {
+    showError(tr("Cannot export the level of detail to %1: use .obj or .glb").arg(path));
+    return false;
+  }
+  parts_.viewport->endStroke();
+  // Salient methods read the saliency in alpha: the current surface's, from the viewport when it
+  // has it at once (GPU), else computed by the export's worker on its copy.
+  const core::ResampleMethod m = parts_.lodPanel->method();
+  const bool salient =
+      m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
+  if (salient) parts_.viewport->setSaliencyWanted(true);
+  const bool computeSaliency = salient && !parts_.viewport->saliencyCurrent();
+  auto snapshot = std::make_shared<core::GeometryImage>(parts_.viewport->document().positions);
+  const core::LodOptions options = parts_.lodPanel->lodOptions();
+  auto control = std::make_shared<TaskControl>();
+  const QString error = runner_.run(
+      tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+      [snapshot, options, path, control, computeSaliency] {
+        if (computeSaliency) core::computeSaliency(*snapshot);
+        const core::LodMesh lod = core::generateLod(*snapshot, options);
+        control->fraction = 0.3f;
+        if (control->cancel) return; // between steps: nothing written yet
+        // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
+        // the LOD's triangles dropped.
+        const int resolution = std::clamp(snapshot->size(), 2, 4096);
+        const core::NormalMap map =
+            core::bakeNormalMap(*snapshot, lod, core::NormalMapSpace::Object, resolution);
+        control->fraction = 0.8f;
+        if (control->cancel) return;
+        core::writeLodMesh(lod, map, toPath(path));
+        control->fraction = 1.0f;
+      },
+      control);
+  emit saliencyWishChanged();
+  if (!error.isEmpty()) {
+    showError(tr("Could not export %1: %2").arg(path, error));
+    return false;
+  }
+  if (control->cancel) {
+    parts_.statusBar->showMessage(tr("Export cancelled; nothing was written"), 8000);
+    return false;
+  }
+  lastError_.clear();
+  parts_.statusBar->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool DocumentActions::autosaveNow() {
+  if (!parts_.viewport->hasDocument() || runner_.busy()) return false;
+  if (!isModified() || parts_.undoStack->index() == autosavedIndex_) return true;
+  parts_.viewport->endStroke();
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  const QString original = path_;
+  RecoveryStore* store = &recovery_;
+  const QString error = runner_.run(
+      tr("Autosaving…"), [snapshot, original, store] { store->save(*snapshot, original); });
+  if (!error.isEmpty()) {
+    parts_.statusBar->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+    return false;
+  }
+  autosavedIndex_ = parts_.undoStack->index();
+  return true;
+}
+
+bool DocumentActions::recover() {
+  if (!pending_) return false;
+  core::Document document;
+  const RecoveryStore::Pending pending = *pending_;
+  RecoveryStore* store = &recovery_;
+  const QString error = runner_.run(
+      tr("Recovering…"), [&document, pending, store] { document = store->load(pending); });
+  if (!error.isEmpty()) {
+    showError(tr("Could not recover the autosave: %1").arg(error));
+    return false;
+  }
+  adoptDocument(std::move(document), pending.originalPath);
+  forceModified_ = true; // it differs from the file on disk until saved
+  pending_.reset();
+  emit titleChanged();
+  return true;
+}
+
+void DocumentActions::addRecentFile(const QString& path) {
+  QSettings settings;
+  QStringList files = settings.value("recentFiles").toStringList();
+  files.removeAll(path);
+  files.prepend(path);
+  while (files.size() > kMaxRecentFiles)
+    files.removeLast();
+  settings.setValue("recentFiles", files);
+  emit recentFilesChanged();
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,102 @@
+#pragma once
+
+#include "background_task.h"
+#include "recovery_store.h"
+
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/geometry/base_shapes.h"
+
+#include <QObject>
+#include <QString>
+
+#include <optional>
+
+class QStatusBar;
+class QUndoStack;
+class QWidget;
+
+namespace octaclay::app {
+
+class LodPanel;
+class ViewportWidget;
+
+/// What the modeller does with document files: new, open, save, save compressed, import,
+/// export, export the LOD, autosave and recovery. Each reads or writes off the GUI thread
+/// (BackgroundTaskRunner), reports failures (a message box and the status bar, kept in
+/// lastError()) and keeps the document's path and saved state. GUI thread.
+class DocumentActions : public QObject {
+  Q_OBJECT
+public:
+  /// What the actions work on; all must outlive this object.
+  struct Parts {
+    QWidget* window = nullptr; ///< parent of dialogs
+    QStatusBar* statusBar = nullptr;
+    ViewportWidget* viewport = nullptr;
+    LodPanel* lodPanel = nullptr;
+    QUndoStack* undoStack = nullptr; ///< its clean state is the document's saved state
+  };
+  /// recoveryFolder and sessionPid as RecoveryStore's.
+  DocumentActions(Parts parts, const QString& recoveryFolder, qint64 sessionPid,
+                  QObject* parent = nullptr);
+
+  /// A new document of this shape and size (made off the GUI thread).
+  bool newDocument(core::BaseShape shape, int n);
+  /// Reads path (.exr, or .ocz as an untitled model); on failure reports why and keeps the
+  /// current document.
+  bool openDocument(const QString& path);
+  /// Saves atomically off the GUI thread; the document stays editable meanwhile.
+  bool saveDocument(const QString& path);
+  /// Writes the document compressed (.ocz). The document keeps its path and unsaved state.
+  bool saveCompressed(const QString& path, const core::CompressOptions& options);
+  /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, with a
+  /// cancellable progress dialog; on failure or cancel the current document stays.
+  bool importMesh(const QString& path, int n);
+  /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
+  bool exportMesh(const QString& path, int divisor);
+  /// Writes the Level of detail dock's LOD of the current surface (OBJ + MTL or GLB) with an
+  /// object-space normal map baked from the full resolution.
+  bool exportLod(const QString& path);
+
+  QString currentPath() const { return path_; }
+  bool isModified() const;
+  QString lastError() const { return lastError_; }
+
+  /// Writes the recovery file now if the document changed since. Returns false on failure.
+  bool autosaveNow();
+  RecoveryStore& recovery() { return recovery_; }
+  /// The recovery left by a crashed session (set by findRecovery()).
+  const std::optional<RecoveryStore::Pending>& pendingRecovery() const { return pending_; }
+  void findRecovery() { pending_ = recovery_.pending(); }
+  void forgetRecovery() { pending_.reset(); }
+  /// Loads the pending recovery as the current (modified) document.
+  bool recover();
+
+signals:
+  /// A document is about to replace the current one.
+  void aboutToAdopt();
+  /// A new document is in the viewport.
+  void adopted();
+  /// The path or the saved state changed.
+  void titleChanged();
+  /// A file was opened or saved: the recent files list changed.
+  void recentFilesChanged();
+  /// exportLod changed what saliency the viewport computes: the window restores its wish.
+  void saliencyWishChanged();
+
+private:
+  void showError(const QString& message);
+  void adoptDocument(core::Document document, const QString& path);
+  void addRecentFile(const QString& path);
+
+  Parts parts_;
+  BackgroundTaskRunner runner_;
+  RecoveryStore recovery_;
+  std::optional<RecoveryStore::Pending> pending_;
+  QString path_;
+  QString lastError_;
+  int autosavedIndex_ = -1;    // undo index at the last autosave
+  bool forceModified_ = false; // a recovered or imported document differs from any file
+};
+
+} // namespace octaclay::app

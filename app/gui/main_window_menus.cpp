@@ -1,0 +1,176 @@
+// The main window's menus: File (document actions), Edit (undo, redo, preferences) and View.
+
+#include "brush_panel.h"
+#include "lod_panel.h"
+#include "main_window.h"
+#include "save_compressed_dialog.h"
+#include "viewport_widget.h"
+
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDockWidget>
+#include <QFormLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <cmath>
+
+namespace octaclay::app {
+namespace {
+
+QString mib(std::size_t bytes) {
+  return QString::number(double(bytes) / (1 << 20), 'f', 1);
+}
+
+} // namespace
+
+void MainWindow::buildMenus() {
+  auto add = [this](QMenu* menu, const QString& text, const QString& name,
+                    QKeySequence shortcut = {}) {
+    QAction* a = menu->addAction(text);
+    a->setObjectName(name);
+    if (!shortcut.isEmpty()) a->setShortcut(shortcut);
+    return a;
+  };
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  connect(add(file, tr("&New…"), "actionNew", QKeySequence::New), &QAction::triggered, this,
+          [this] {
+            QDialog dialog(this);
+            dialog.setWindowTitle(tr("New model"));
+            auto* form = new QFormLayout(&dialog);
+            auto* shape = new QComboBox(&dialog);
+            for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+              shape->addItem(tr(s), QString(s));
+            auto* size = new QComboBox(&dialog);
+            for (int n : {64, 128, 256, 512, 1024, 2048, 4096})
+              size->addItem(QString::number(n), n);
+            size->setCurrentText("1024");
+            form->addRow(tr("Shape"), shape);
+            form->addRow(tr("Size N"), size);
+            auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+            form->addRow(buttons);
+            connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+            connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+            if (dialog.exec() != QDialog::Accepted) return;
+            newDocument(*core::parseBaseShape(shape->currentData().toString().toStdString()),
+                        size->currentData().toInt());
+          });
+  connect(add(file, tr("&Open…"), "actionOpen", QKeySequence::Open), &QAction::triggered, this,
+          [this] {
+            if (!maybeSave()) return;
+            const QString path = choose(FileRequest::Open);
+            if (!path.isEmpty()) openDocument(path);
+          });
+  connect(add(file, tr("&Import Mesh…"), "actionImport", QKeySequence(tr("Ctrl+I"))),
+          &QAction::triggered, this, [this] {
+            if (!maybeSave()) return;
+            const QString path = choose(FileRequest::Import);
+            if (path.isEmpty()) return;
+            int n = 512;
+            if (!chooser_) { // interactive: ask the image size
+              bool ok = false;
+              const QString size =
+                  QInputDialog::getItem(this, tr("Import mesh"), tr("Geometry image size N"),
+                                        {"128", "256", "512", "1024", "2048"}, 2, false, &ok);
+              if (!ok) return;
+              n = size.toInt();
+            }
+            importMesh(path, n);
+          });
+  recentMenu_ = file->addMenu(tr("Open &Recent"));
+  connect(
+      add(file, tr("&Save"), "actionSave", QKeySequence::Save), &QAction::triggered, this, [this] {
+        const QString path = currentPath().isEmpty() ? choose(FileRequest::SaveAs) : currentPath();
+        if (!path.isEmpty()) saveDocument(path);
+      });
+  connect(add(file, tr("Save &As…"), "actionSaveAs", QKeySequence::SaveAs), &QAction::triggered,
+          this, [this] {
+            const QString path = choose(FileRequest::SaveAs);
+            if (!path.isEmpty()) saveDocument(path);
+          });
+  connect(add(file, tr("Save &Compressed…"), "actionSaveCompressed"), &QAction::triggered, this,
+          [this] {
+            if (!viewport_->hasDocument()) return;
+            viewport_->endStroke();
+            SaveCompressedDialog dialog(
+                std::make_shared<const core::Document>(viewport_->document()), this);
+            if (dialog.exec() != QDialog::Accepted) return;
+            const QString path = choose(FileRequest::SaveCompressed);
+            if (!path.isEmpty()) saveCompressed(path, dialog.options());
+          });
+  connect(
+      add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
+      &QAction::triggered, this, [this] {
+        const QString path = choose(FileRequest::Export);
+        if (path.isEmpty() || !viewport_->hasDocument()) return;
+        int divisor = lodPanel_->divisor();
+        if (!chooser_) { // interactive: ask which level, offering the displayed one
+          const int n = viewport_->document().size();
+          QStringList levels;
+          for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
+            levels << tr("N/%1 (%2, %3 triangles)").arg(d).arg(n / d).arg(2LL * (n / d) * (n / d));
+          bool ok = false;
+          const QString level =
+              QInputDialog::getItem(this, tr("Export mesh"), tr("Level of detail"), levels,
+                                    static_cast<int>(std::log2(divisor)), false, &ok);
+          if (!ok) return;
+          divisor = 1 << levels.indexOf(level);
+        }
+        exportMesh(path, divisor);
+      });
+  file->addSeparator();
+  connect(add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit), &QAction::triggered, this,
+          &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = undoStack_->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName("actionUndo");
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = undoStack_->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName("actionRedo");
+  redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence::Redo});
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
+  connect(add(edit, tr("&Preferences…"), "actionPreferences"), &QAction::triggered, this, [this] {
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Preferences"));
+    auto* form = new QFormLayout(&dialog);
+    const core::EditHistory& h = viewport_->history();
+    form->addRow(tr("Undo history"), new QLabel(tr("%1 MiB used of a %2 MiB budget (%3 steps)")
+                                                    .arg(mib(h.bytes()), mib(h.budget()))
+                                                    .arg(h.undoCount() + h.redoCount())));
+    auto* minutes = new QSpinBox(&dialog);
+    minutes->setRange(0, 60);
+    minutes->setSuffix(tr(" min"));
+    minutes->setSpecialValueText(tr("off"));
+    minutes->setValue(options_.autosaveSeconds / 60);
+    form->addRow(tr("Autosave every"), minutes);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    if (dialog.exec() != QDialog::Accepted) return;
+    options_.autosaveSeconds = minutes->value() * 60;
+    QSettings().setValue("autosave/seconds", options_.autosaveSeconds);
+    if (options_.autosaveSeconds > 0)
+      autosaveTimer_->start(options_.autosaveSeconds * 1000);
+    else
+      autosaveTimer_->stop();
+  });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    view->addAction(dock->toggleViewAction());
+  view->addSeparator();
+  connect(add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(tr("Home"))),
+          &QAction::triggered, viewport_, &ViewportWidget::resetCamera);
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,107 @@
+// The viewport's frames: VTK renders into its own framebuffer, the model drawn by the GPU
+// renderer inside VTK's pass, then blitted into the widget's framebuffer.
+
+#include "camera_control.h"
+#include "model_prop.h"
+#include "viewport_widget.h"
+
+#include "octaclay/gpu/model_renderer.h"
+
+#include <QGuiApplication>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkRenderer.h>
+
+namespace octaclay::app {
+
+void ViewportWidget::drawModel(vtkRenderer* r) {
+  if (!session_.hasDocument() || !model_) return;
+  vtkCamera* camera = r->GetActiveCamera();
+  gpu::ModelView view;
+  view.objectToClip = objectToClip(*camera, r->GetTiledAspectRatio());
+  view.eye = toVec(camera->GetPosition());
+  view.showDiffuse = showDiffuse_;
+  view.showMask = showMask_;
+  view.preview = preview_;
+  if (hover_ && drag_ != Drag::Orbit && drag_ != Drag::Pan) {
+    view.showBrush = true;
+    view.brushCentre = hover_->position;
+    view.brushRadius = settings_.radius * session_.diagonal();
+    const bool inverted = QGuiApplication::keyboardModifiers() & Qt::ControlModifier;
+    view.brushColour = inverted ? std::array<float, 3>{1.0f, 0.45f, 0.35f}
+                                : std::array<float, 3>{1.0f, 1.0f, 1.0f};
+  }
+  vtkOpenGLState* state = renderWindow_->GetState();
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDisable(GL_BLEND);
+  // A closed surface never shows its back faces: culling halves what the rasterizer sees.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_BACK);
+  try {
+    const bool lod =
+        r == lodRenderer_.Get() || (lodDisplay_ == LodDisplay::Lod && model_->lodTriangles() > 0);
+    if (lod)
+      model_->drawLod(session_.gpuDocument(), view);
+    else
+      model_->draw(session_.gpuDocument(), view);
+  } catch (const std::exception& e) {
+    error_ = QString::fromUtf8(e.what());
+  }
+  // What VTK believes is bound is no longer so.
+  renderWindow_->GetShaderCache()->ReleaseCurrentShader();
+  state->vtkglDisable(GL_CULL_FACE);
+  state->ResetGLActiveTexture();
+}
+
+void ViewportWidget::paintGL() {
+  if (uploading_) return; // a document is half uploaded: keep the last frame
+  const qint64 now = clock_.elapsed();
+  frameTimes_.push_back(now);
+  while (!frameTimes_.empty() && now - frameTimes_.front() > 2000)
+    frameTimes_.pop_front();
+  QOpenGLExtraFunctions* gl = context()->extraFunctions();
+  if (!model_) {
+    gl->glClearColor(0.2f, 0.2f, 0.22f, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    return;
+  }
+  drainGlErrors();
+  const bool dabbed = runQueuedDabs() > 0;
+  if (pendingLod_) {
+    try {
+      model_->setLodMesh(*pendingLod_);
+    } catch (const std::exception& e) {
+      error_ = QString::fromUtf8(e.what());
+    }
+    pendingLod_.reset();
+  }
+
+  vtkOpenGLState* state = renderWindow_->GetState();
+  state->Reset(); // the engine and Qt changed GL state behind VTK's cache
+  state->Push();
+  state->vtkglDepthFunc(GL_LEQUAL);
+  updateClipping();
+  if (lodDisplay_ == LodDisplay::SideBySide)
+    lodRenderer_->ResetCameraClippingRange(prop_->bounds.data());
+  renderWindow_->Render();
+  state->Pop();
+
+  const QSize size = this->size() * devicePixelRatioF();
+  gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+  const GLenum buffer = GL_COLOR_ATTACHMENT0;
+  gl->glDrawBuffers(1, &buffer);
+  gl->glDisable(GL_SCISSOR_TEST);
+  renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size.width(), size.height(), 0, 0, size.width(),
+                                        size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  state->Reset();
+  if (dabbed || session_.stroking()) emit statsChanged();
+  if (dabbed) emit surfaceChanged();
+  if (session_.hasDocument()) emit framePainted();
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,122 @@
+// The viewport's strokes: pointer positions become the session's dabs, and what the dabs or
+// an undo changed gets its normals and saliency refreshed.
+
+#include "camera_control.h"
+#include "current_context.h"
+#include "viewport_widget.h"
+
+#include "octaclay/gpu/gpu_document.h"
+#include "octaclay/gpu/model_renderer.h"
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+namespace octaclay::app {
+
+void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
+  if (!session_.hasDocument() || !library_ || session_.stroking()) return; // one at a time
+  const std::optional<core::PickHit> hit = pickAt(p);
+  if (!hit) return;
+  const std::string id = (modifiers & Qt::ShiftModifier) ? "smooth" : settings_.brushId;
+  const float sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
+  try {
+    CurrentContext current(*this); // a changed area or falloff recompiles the brush
+    session_.beginStroke(id, settings_, paintTarget_, sign,
+                         toVec(renderer_->GetActiveCamera()->GetPosition()));
+  } catch (const std::exception& e) {
+    fail(QString::fromUtf8(e.what()));
+    return;
+  }
+  stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});
+  session_.queueDab(hit->sample, tabletDown_ ? tabletPressure_ : 1.0f);
+  hover_ = hit;
+  update();
+}
+
+void ViewportWidget::continueStrokeTo(QPointF p) {
+  if (!session_.stroking()) return;
+  for (const Point2& q : stabilizer_.moveTo({static_cast<float>(p.x()), static_cast<float>(p.y())}))
+    queueStrokePoint({q.x, q.y});
+  update();
+}
+
+void ViewportWidget::queueStrokePoint(QPointF p) {
+  const std::optional<core::PickHit> hit = pickAt(p);
+  if (!hit) return; // off the model: the stroke resumes where the pointer comes back
+  hover_ = hit;
+  session_.queueDab(hit->sample, tabletDown_ ? tabletPressure_ : 1.0f);
+}
+
+void ViewportWidget::endStroke() {
+  if (!session_.stroking()) return;
+  // Finish now rather than at the next paint: the document and undo must be complete when
+  // the caller (a mouse release, a test, a save) looks.
+  {
+    CurrentContext current(*this);
+    drainGlErrors();
+    runQueuedDabs();
+    finishStroke();
+  }
+  update();
+}
+
+int ViewportWidget::runQueuedDabs() {
+  DabRun run = session_.runQueuedDabs(settings_);
+  if (!run.error.empty()) {
+    fail(QString::fromStdString(run.error));
+    return run.made;
+  }
+  try {
+    if (run.made > 0) surfaceEdited();
+    refreshNormalsAround(std::move(run.touched));
+  } catch (const std::exception& e) {
+    fail(QString::fromUtf8(e.what()));
+  }
+  return run.made;
+}
+
+void ViewportWidget::finishStroke() {
+  const std::string label = session_.finishStroke();
+  if (label.empty()) return;
+  refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
+  emit strokeFinished(QString::fromStdString(label));
+  emit surfaceChanged();
+}
+
+void ViewportWidget::refreshNormalsAround(std::vector<core::TexelRect> touched) {
+  if (touched.empty() || !session_.hasDocument()) return;
+  gpu::GpuDocument& document = session_.gpuDocument();
+  model_->refreshNormals(document, normalRectsAround(std::move(touched), document.size() + 1));
+}
+
+bool ViewportWidget::undoStroke() {
+  return stepHistory(true);
+}
+
+bool ViewportWidget::redoStroke() {
+  return stepHistory(false);
+}
+
+bool ViewportWidget::stepHistory(bool undo) {
+  if (!session_.hasDocument() || !(undo ? canUndo() : canRedo()) || session_.stroking())
+    return false;
+  const core::Stroke* s = nullptr;
+  {
+    CurrentContext current(*this);
+    try {
+      s = undo ? session_.undo() : session_.redo();
+      if (s) {
+        refreshNormalsAround(changedRects(*s));
+        surfaceEdited();
+        refreshSaliency();
+      }
+    } catch (const std::exception& e) {
+      fail(QString::fromUtf8(e.what()));
+    }
+  }
+  update();
+  if (s) emit surfaceChanged();
+  return s != nullptr;
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,174 @@
+#include "sculpt_session.h"
+
+#include "octaclay/core/geometry/tile_bounds.h"
+#include "octaclay/gpu/brush_catalog.h"
+#include "octaclay/gpu/brush_engine.h"
+#include "octaclay/gpu/gpu_document.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace octaclay::app {
+
+struct SculptSession::ActiveStroke {
+  std::string brushId;
+  float unit = 1;     // object units per radius fraction: the diagonal when the stroke began
+  float dabShare = 1; // share of the strength each dab applies
+  gpu::BrushManifest manifest; // the stroke refers to it
+  float sign = 1;
+  std::unique_ptr<gpu::StrokeSession> stroke;
+  std::vector<std::pair<core::Sample, float>> queue; // sample, pressure
+};
+
+SculptSession::SculptSession(DabStrength rule) : rule_(rule) {}
+SculptSession::~SculptSession() = default;
+
+void SculptSession::setBrushes(gpu::BrushEngine& engine, const gpu::BrushCatalog& catalog) {
+  engine_ = &engine;
+  catalog_ = &catalog;
+}
+
+void SculptSession::loadBrush(const gpu::BrushManifest& brush) {
+  engine_->load(brush, gpu::BrushCatalog::shaderSource(brush));
+}
+
+void SculptSession::brushesReloaded(const std::vector<std::string>& ids) {
+  variants_.forget(ids);
+}
+
+void SculptSession::setDocument(core::Document document,
+                                const std::function<void(float)>& progress) {
+  auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document), progress);
+  stroke_.reset();
+  document_ = std::move(uploaded);
+  history_.clear();
+}
+
+const core::Document& SculptSession::document() const {
+  // Mid-stroke (autosave, save): the paint the stroke deferred is read back first.
+  if (document_->mirrorStale()) document_->syncMirror();
+  return document_->document();
+}
+
+float SculptSession::diagonal() const {
+  return document_ ? std::max(document_->bounds().diagonal(), 1e-6f) : 1.0f;
+}
+
+void SculptSession::releaseGpu() {
+  stroke_.reset();
+  document_.reset();
+}
+
+float SculptSession::dabShare(const gpu::BrushManifest& brush) const {
+  // A sculpt stroke's strength is how far it moves the surface per radius travelled, whatever
+  // the spacing: each dab applies strength × spacing, as overlapping dabs add up. Paint and
+  // splats blend toward a target, so overlaps converge instead of piling up: full strength.
+  if (rule_ == DabStrength::SpacingShare && brush.category == gpu::Category::Sculpt)
+    return std::clamp(brush.spacing, 0.01f, 1.0f);
+  return 1.0f;
+}
+
+void SculptSession::beginStroke(const std::string& id, const BrushSettings& settings,
+                                core::EditLayer paintTarget, float sign, core::Vec3f eye) {
+  auto stroke = std::make_unique<ActiveStroke>();
+  stroke->brushId = id;
+  stroke->manifest = variants_.prepare(*engine_, *catalog_, id, settings, paintTarget);
+  stroke->sign = sign;
+  // Fixed for the stroke: a stroke that grows the model must not grow its own brush.
+  stroke->unit = diagonal();
+  stroke->dabShare = dabShare(stroke->manifest);
+  gpu::StrokeSettings s;
+  s.brush = id;
+  s.radius = settings.radius * stroke->unit;
+  s.strength = settings.strength;
+  s.symmetry = settings.symmetry;
+  if (id == settings.brushId) s.parameters = settings.parameters;
+  s.viewEye = eye; // splats project from here
+  stroke->stroke = std::make_unique<gpu::StrokeSession>(*engine_, *document_, stroke->manifest, s);
+  stroke_ = std::move(stroke);
+}
+
+void SculptSession::queueDab(core::Sample s, float pressure) {
+  stroke_->queue.emplace_back(s, pressure);
+}
+
+DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
+  DabRun run;
+  if (!stroke_ || stroke_->queue.empty()) return run;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    for (const auto& [sample, pressure] : stroke_->queue) {
+      float radius = settings.radius * stroke_->unit;
+      float strength = settings.strength * stroke_->dabShare;
+      if (settings.pressureTarget == PressureTarget::Radius)
+        radius *= std::max(pressure, 0.05f);
+      else if (settings.pressureTarget == PressureTarget::Strength)
+        strength *= pressure;
+      run.made += stroke_->stroke->moveTo(sample, radius, stroke_->sign * strength, 1.0f);
+    }
+    run.touched = stroke_->stroke->takeTouched();
+  } catch (const std::exception& e) {
+    run.error = e.what();
+  }
+  stroke_->queue.clear();
+  dabCount_ += run.made;
+  if (run.made > 0)
+    lastDabMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count() /
+                 run.made;
+  return run;
+}
+
+std::string SculptSession::finishStroke() {
+  if (!stroke_) return {};
+  const std::string label = stroke_->brushId;
+  const int dabs = stroke_->stroke->dabs();
+  core::Stroke record = stroke_->stroke->finish(label);
+  stroke_.reset();
+  if (dabs == 0 || record.tiles.empty()) return {};
+  history_.record(std::move(record));
+  return label;
+}
+
+gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
+                                                 gpu::StrokeSettings settings) {
+  settings.strength *= dabShare(brush);
+  return gpu::runStroke(*engine_, *document_, brush, settings);
+}
+
+const core::Stroke* SculptSession::undo() {
+  if (!document_ || stroke_ || !history_.canUndo()) return nullptr;
+  return history_.undo(gpu::undoApplier(*document_));
+}
+
+const core::Stroke* SculptSession::redo() {
+  if (!document_ || stroke_ || !history_.canRedo()) return nullptr;
+  return history_.redo(gpu::undoApplier(*document_));
+}
+
+std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side) {
+  if (touched.empty()) return touched;
+  bool border = false;
+  for (core::TexelRect& r : touched) {
+    // A texel's normal reads its neighbours: grow by one.
+    const int x0 = std::max(0, r.x - 1), y0 = std::max(0, r.y - 1);
+    const int x1 = std::min(side, r.x + r.width + 1), y1 = std::min(side, r.y + r.height + 1);
+    r = {x0, y0, x1 - x0, y1 - y0};
+    border = border || x0 == 0 || y0 == 0 || x1 == side || y1 == side;
+  }
+  if (border) // neighbours across a seam sit on the opposite border
+    for (core::TexelRect r :
+         {core::TexelRect{0, 0, side, 2}, core::TexelRect{0, side - 2, side, 2},
+          core::TexelRect{0, 0, 2, side}, core::TexelRect{side - 2, 0, 2, side}})
+      touched.push_back(r);
+  return core::mergeRects(touched);
+}
+
+std::vector<core::TexelRect> changedRects(const core::Stroke& stroke) {
+  std::vector<core::TexelRect> rects;
+  for (const core::TileChange& t : stroke.tiles)
+    rects.push_back(t.region);
+  return rects;
+}
+
+} // namespace octaclay::app
