@@ -190,6 +190,18 @@ json ManifestReader::parseJson(std::string_view text) const {
     const std::string marker = "parse error at ";
     if (const auto at = detail.find(marker); at != std::string::npos)
       detail = detail.substr(at + marker.size());
+    // nlohmann quotes the bytes it last read: a stray byte (ill-formed UTF-8) is shown as \xFF,
+    // so the message itself stays UTF-8 (brushes --json prints it).
+    std::string shown;
+    for (const unsigned char c : detail) {
+      if (c >= 0x20 && c < 0x7f) {
+        shown += static_cast<char>(c);
+      } else {
+        static constexpr char kHex[] = "0123456789ABCDEF";
+        shown += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+      }
+    }
+    detail = std::move(shown);
     failFile("invalid JSON at byte " + std::to_string(e.byte) + ", " + detail);
   }
 }

@@ -15,6 +15,7 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
 
 class CliBrushSafetyTest : public QObject {
   Q_OBJECT
@@ -125,6 +126,8 @@ void CliBrushSafetyTest::unreadableManifestsNeitherBlockNorStopTheOthers() {
   QCOMPARE(::mkfifo((plugins / "fifo" / "manifest.json").c_str(), 0644), 0);
   fs::create_symlink("/dev/zero", plugins / "zero" / "manifest.json");
   fs::create_symlink("manifest.json", plugins / "loop" / "manifest.json");
+  fs::create_directories(plugins / "badbyte"); // ill-formed UTF-8: the message must stay JSON
+  std::ofstream(plugins / "badbyte" / "manifest.json") << "{\"id\": \"b\", \"name\": \"T\xff\"}";
   const QString out = file("pushed.exr");
   const QStringList args{"stroke", sphere_, "--brush", "push", "--path", "0.5,0.5", "-o", out};
   QElapsedTimer timer;

@@ -59,6 +59,7 @@ private slots:
   void unreadableShadersAreRefused();
   void unreadableMaterialManifestsAreListedAsBroken();
   void parameterChecksAreLinear();
+  void illFormedUtf8IsShownEscaped();
 };
 
 void PluginBoundsTest::unreadableManifestsAreListedAsBroken() {
@@ -175,6 +176,21 @@ void PluginBoundsTest::parameterChecksAreLinear() {
   } catch (const BrushLoadError& e) {
     QVERIFY2(contains(e.what(), "parameters[100000].id: \"p0\" is already used by parameters[0]"),
              e.what());
+  }
+}
+
+void PluginBoundsTest::illFormedUtf8IsShownEscaped() {
+  // nlohmann refuses the byte and quotes it; the message must stay UTF-8 (brushes --json).
+  QTemporaryDir dir;
+  const fs::path file = fs::path(dir.path().toStdString()) / "manifest.json";
+  try {
+    parseBrushManifestText("{\"id\": \"b\", \"name\": \"T\xff\"}", file);
+    QFAIL("a manifest with a stray byte was accepted");
+  } catch (const BrushLoadError& e) {
+    const std::string message = e.what();
+    QVERIFY2(contains(message, "\\xFF"), e.what());
+    for (const char c : message)
+      QVERIFY2(static_cast<unsigned char>(c) < 0x80, e.what());
   }
 }
 
