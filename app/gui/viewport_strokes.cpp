@@ -64,6 +64,7 @@ int ViewportWidget::runQueuedDabs() {
   DabRun run = session_.runQueuedDabs(settings_);
   if (!run.error.empty()) {
     fail(QString::fromStdString(run.error));
+    refreshAllNormals(); // the engine put the layers back as they were before the stroke
     return run.made;
   }
   try {
@@ -76,7 +77,14 @@ int ViewportWidget::runQueuedDabs() {
 }
 
 void ViewportWidget::finishStroke() {
-  const std::string label = session_.finishStroke();
+  std::string label;
+  try {
+    label = session_.finishStroke();
+  } catch (const std::exception& e) { // refused (non-finite result): the layers are back
+    fail(QString::fromUtf8(e.what()));
+    refreshAllNormals();
+    return;
+  }
   if (label.empty()) return;
   refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
   emit strokeFinished(QString::fromStdString(label));
@@ -87,6 +95,17 @@ void ViewportWidget::refreshNormalsAround(std::vector<core::TexelRect> touched) 
   if (touched.empty() || !session_.hasDocument()) return;
   gpu::GpuDocument& document = session_.gpuDocument();
   model_->refreshNormals(document, normalRectsAround(std::move(touched), document.size() + 1));
+}
+
+void ViewportWidget::refreshAllNormals() {
+  if (!session_.hasDocument()) return;
+  const int side = session_.gpuDocument().size() + 1;
+  try {
+    surfaceEdited();
+    refreshNormalsAround({core::TexelRect{0, 0, side, side}});
+  } catch (const std::exception& e) {
+    fail(QString::fromUtf8(e.what()));
+  }
 }
 
 bool ViewportWidget::undoStroke() {

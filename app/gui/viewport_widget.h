@@ -181,6 +181,8 @@ private:
   void finishStroke();
   /// Recomputes the normals the touched texels' neighbourhoods read.
   void refreshNormalsAround(std::vector<core::TexelRect> touched);
+  /// Redraws every normal and the picking bounds after the layers were put back wholesale.
+  void refreshAllNormals();
   /// Undo or redo on the GPU and the mirror, then the normals of what changed.
   bool stepHistory(bool undo);
   /// Recomputes the saliency if wanted and stale (GL current), or starts the CPU job.

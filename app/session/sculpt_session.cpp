@@ -18,6 +18,7 @@ struct SculptSession::ActiveStroke {
   float sign = 1;
   std::unique_ptr<gpu::StrokeSession> stroke;
   std::vector<std::pair<core::Sample, float>> queue; // sample, pressure
+  bool failed = false; // a dab threw: the engine restored the layers, no more dabs
 };
 
 SculptSession::SculptSession(DabStrength rule) : rule_(rule) {}
@@ -95,6 +96,10 @@ void SculptSession::queueDab(core::Sample s, float pressure) {
 DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
   DabRun run;
   if (!stroke_ || stroke_->queue.empty()) return run;
+  if (stroke_->failed) {
+    stroke_->queue.clear();
+    return run;
+  }
   const auto start = std::chrono::steady_clock::now();
   try {
     for (const auto& [sample, pressure] : stroke_->queue) {
@@ -109,6 +114,7 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
     run.touched = stroke_->stroke->takeTouched();
   } catch (const std::exception& e) {
     run.error = e.what();
+    stroke_->failed = true;
   }
   stroke_->queue.clear();
   dabCount_ += run.made;
@@ -123,8 +129,8 @@ std::string SculptSession::finishStroke() {
   if (!stroke_) return {};
   const std::string label = stroke_->brushId;
   const int dabs = stroke_->stroke->dabs();
-  core::Stroke record = stroke_->stroke->finish(label);
-  stroke_.reset();
+  const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
+  core::Stroke record = ending->stroke->finish(label);
   if (dabs == 0 || record.tiles.empty()) return {};
   history_.record(std::move(record));
   return label;

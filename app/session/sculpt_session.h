@@ -83,10 +83,14 @@ public:
   /// Queues a dab of the stroke at sample s; pressure in [0, 1].
   void queueDab(core::Sample s, float pressure);
   /// Makes the queued dabs with the settings' current radius, strength and pressure target,
-  /// then empties the queue. A failing dab ends the run (its error says why).
+  /// then empties the queue. A failing dab (a GL error, the watchdog) ends the run with its
+  /// error and the stroke with it: the layers are back as before the stroke, later dabs are
+  /// dropped and finishStroke() records nothing.
   DabRun runQueuedDabs(const BrushSettings& settings);
   /// Ends the stroke and records it in history(), labelled with its brush id, which it returns;
-  /// empty (nothing recorded) if it made no dab or changed nothing.
+  /// empty (nothing recorded) if it made no dab or changed nothing. When the result holds a
+  /// non-finite value the layers are restored, nothing is recorded, the stroke is over and
+  /// core::Error(InvalidInput) says where.
   std::string finishStroke();
 
   /// Runs a whole stroke along settings.path (runStroke's contract; radius in object units)

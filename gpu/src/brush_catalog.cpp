@@ -3,13 +3,10 @@
 
 #include "octaclay/gpu/brush_catalog.h"
 
+#include "bounded_file.h"
 #include "manifest_json.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace octaclay::gpu {
 
@@ -92,9 +89,7 @@ BrushCatalog::Listing BrushCatalog::listBrushFolders(const fs::path& folder) {
   std::error_code ec;
   if (!fs::exists(folder, ec)) return listing; // missing (usually the user folder): no brushes
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    std::error_code entryEc;
-    if (it->is_directory(entryEc) && fs::exists(it->path() / kManifestName, entryEc))
-      listing.brushFolders.push_back(it->path());
+    if (detail::holdsManifest(*it, kManifestName)) listing.brushFolders.push_back(it->path());
   }
   if (ec) {
     listing.listed = false;
@@ -114,13 +109,11 @@ const BrushManifest* BrushCatalog::find(std::string_view id) const {
 }
 
 std::string BrushCatalog::shaderSource(const BrushManifest& brush) {
-  const fs::path file = brush.shaderPath();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw BrushLoadError(file.string() + ": cannot be read (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw BrushLoadError(file.string() + ": cannot be read (read error)");
-  return text.str();
+  try {
+    return detail::readBoundedFile(brush.shaderPath(), detail::kMaxShaderBytes, "shader");
+  } catch (const detail::BoundedFileError& e) {
+    throw BrushLoadError(e.what());
+  }
 }
 
 std::vector<std::string> BrushCatalog::changedBrushes() {

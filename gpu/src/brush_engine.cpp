@@ -3,6 +3,7 @@
 #include "brush_inputs.h"
 #include "brush_program.h"
 #include "loaded_brush.h"
+#include "pass_watchdog.h"
 #include "seam_pass.h"
 #include "texture_copy.h"
 
@@ -11,6 +12,8 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <tuple>
 
 namespace octaclay::gpu {
@@ -27,11 +30,23 @@ bool hasTextureBarrier() {
   return epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_texture_barrier");
 }
 
+// $OCTACLAY_PASS_TIME_LIMIT_MS when it is a number of milliseconds >= 0 (0: no watchdog),
+// else 2 s. Lets a test (or a user on a slow GPU) change the limit of a command-line run.
+std::chrono::nanoseconds defaultPassTimeLimit() {
+  if (const char* text = std::getenv("OCTACLAY_PASS_TIME_LIMIT_MS")) {
+    char* end = nullptr;
+    const double ms = std::strtod(text, &end);
+    if (end != text && *end == '\0' && ms >= 0 && ms <= 1e9)
+      return std::chrono::nanoseconds(static_cast<std::int64_t>(ms * 1e6));
+  }
+  return std::chrono::seconds(2);
+}
+
 } // namespace
 
 BrushEngine::BrushEngine()
-    : seamProgram_(detail::seamProgram()), nearestMaps_(Sampler::repeating(false)),
-      bilinearMaps_(Sampler::repeating(true)) {}
+    : passTimeLimit_(defaultPassTimeLimit()), seamProgram_(detail::seamProgram()),
+      nearestMaps_(Sampler::repeating(false)), bilinearMaps_(Sampler::repeating(true)) {}
 
 BrushEngine::~BrushEngine() = default;
 
@@ -96,6 +111,20 @@ bool BrushEngine::has(const std::string& id) const {
   return brushes_.count(id) > 0;
 }
 
+const std::string* BrushEngine::brokenReason(const std::string& id) const {
+  const auto it = brushes_.find(id);
+  return it != brushes_.end() && !it->second->broken.empty() ? &it->second->broken : nullptr;
+}
+
+void BrushEngine::awaitPass(LoadedBrush& brush) {
+  if (detail::finishedWithin(passTimeLimit_)) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  brush.broken = brush.manifest.shaderPath().string() + ": a pass took longer than " +
+                 detail::describeLimit(passTimeLimit_) + " (brush " + brush.manifest.id +
+                 " is marked broken until it is loaded again)";
+  throw BrushTimeoutError(brush.broken);
+}
+
 DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab) {
   return this->dab(document, brushId, dab, reach(document, brushId, dab));
 }
@@ -106,6 +135,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   result.tiles = std::move(tiles);
   if (result.tiles.empty()) return result;
   LoadedBrush& brush = *brushes_.at(brushId);
+  if (!brush.broken.empty()) throw BrushTimeoutError(brush.broken);
   const bool maskTexture = !document.document().mask.uniform();
   const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
   const int side = document.size() + 1;
@@ -191,6 +221,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
+    awaitPass(brush);
     for (core::EditLayer layer : brush.manifest.writes)
       finishLayer(layer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -213,6 +244,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     bindInputs(pass, layer);
     if (inPlace) glTextureBarrier();
     rectPass_.draw(rects, side, side);
+    awaitPass(brush);
     finishLayer(layer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace octaclay::gpu {
 
@@ -49,8 +51,11 @@ class ManifestParser : detail::ManifestReader {
 public:
   explicit ManifestParser(const fs::path& file) : ManifestReader(file, "manifest file") {}
 
-  BrushManifest parse() {
-    const json root = readJson();
+  BrushManifest parse() { return parse(readJson()); }
+  BrushManifest parseText(std::string_view text) { return parse(parseJson(text)); }
+
+private:
+  BrushManifest parse(const json& root) {
     if (!root.is_object()) failFile("expected a JSON object { ... }, got " + describe(root));
 
     BrushManifest manifest;
@@ -99,7 +104,6 @@ public:
     return manifest;
   }
 
-private:
   int parseApi(const json& root) const {
     const int api = integer(required(root, "api", "api"), "api");
     if (api < 1) fail("api", "must be 1 or more, got " + std::to_string(api));
@@ -116,8 +120,10 @@ private:
       fail("shader", quote(name) + " must be a file name beside the manifest");
     const fs::path folder = manifest.folder.empty() ? fs::path(".") : manifest.folder;
     std::error_code ec;
-    if (!fs::is_regular_file(folder / name, ec))
-      fail("shader", name + " not found in " + folder.string());
+    const fs::file_status status = fs::status(folder / name, ec); // a stat: never opens it
+    if (!fs::exists(status)) fail("shader", name + " not found in " + folder.string());
+    if (!fs::is_regular_file(status))
+      fail("shader", name + " in " + folder.string() + " is not a regular file");
   }
 
   // example: the layer the message's hint shows.
@@ -188,13 +194,14 @@ private:
 
   void parseParameters(const json& value, BrushManifest& manifest) const {
     if (!value.is_array()) fail("parameters", "expected an array, got " + describe(value));
+    std::unordered_map<std::string, std::size_t> indexOf; // linear in the parameter count
+    manifest.parameters.reserve(value.size());
     for (std::size_t k = 0; k < value.size(); ++k) {
       const std::string field = "parameters[" + std::to_string(k) + "]";
       BrushParameter parameter = parseParameter(value[k], field);
-      for (std::size_t other = 0; other < manifest.parameters.size(); ++other)
-        if (manifest.parameters[other].id == parameter.id)
-          fail(field + ".id", quote(parameter.id) + " is already used by parameters[" +
-                                  std::to_string(other) + "]");
+      if (const auto [at, added] = indexOf.emplace(parameter.id, k); !added)
+        fail(field + ".id", quote(parameter.id) + " is already used by parameters[" +
+                                std::to_string(at->second) + "]");
       manifest.parameters.push_back(std::move(parameter));
     }
   }
@@ -314,12 +321,12 @@ private:
     const json& options = required(p, "options", optionsField);
     if (!options.is_array() || options.empty())
       fail(optionsField, "expected a non-empty array of strings, got " + describe(options));
+    std::unordered_set<std::string> seen;
     for (std::size_t k = 0; k < options.size(); ++k) {
       const std::string item = optionsField + "[" + std::to_string(k) + "]";
       std::string option = string(options[k], item);
       if (option.empty()) fail(item, "must not be empty");
-      if (std::find(out.options.begin(), out.options.end(), option) != out.options.end())
-        fail(item, quote(option) + " is listed twice");
+      if (!seen.insert(option).second) fail(item, quote(option) + " is listed twice");
       out.options.push_back(std::move(option));
     }
     out.min = 0.0f;
@@ -379,6 +386,15 @@ const BrushParameter* BrushManifest::parameter(std::string_view parameterId) con
 BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile) {
   try {
     return ManifestParser(manifestFile).parse();
+  } catch (const detail::ManifestError& e) {
+    throw BrushLoadError(e.what());
+  }
+}
+
+BrushManifest parseBrushManifestText(std::string_view text,
+                                     const std::filesystem::path& manifestFile) {
+  try {
+    return ManifestParser(manifestFile).parseText(text);
   } catch (const detail::ManifestError& e) {
     throw BrushLoadError(e.what());
   }

@@ -17,6 +17,8 @@ namespace octaclay::gpu {
 struct BrushEngine::LoadedBrush {
   BrushManifest manifest;
   std::string body;
+  // Set when a pass overran the watchdog's limit: the brush's dabs throw it until reloaded.
+  std::string broken;
   // The body defines brushLayers(): one program writes every layer (keyed as positions).
   bool allLayers = false;
   // Per layer: its passes write the layer's texture in place instead of a scratch copy. Only

@@ -1,15 +1,13 @@
 #include "manifest_json.h"
 
+#include "bounded_file.h"
+
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <limits>
-#include <set>
-#include <sstream>
+#include <unordered_set>
 
 namespace octaclay::gpu::detail {
 namespace {
@@ -21,50 +19,58 @@ std::string environment(const char* name) {
   return value ? std::string(value) : std::string();
 }
 
-// Tracks the JSON path while nlohmann parses, to name a key that appears twice in one object
-// (nlohmann silently keeps the last one, which would hide a copy-paste mistake).
-class DuplicateKeyCheck {
+// Names a key that appears twice in one object (nlohmann silently keeps the last one, which
+// would hide a copy-paste mistake): a SAX pass over text already known to be valid JSON. Not
+// nlohmann's parser callback: its end_object rescans the enclosing array, quadratic in the
+// array's length (10^5 parameters took seconds).
+class DuplicateKeyCheck : public nlohmann::json_sax<json> {
 public:
   explicit DuplicateKeyCheck(const fs::path& file) : file_(file) {}
 
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-    case json::parse_event_t::object_start:
-      stack_.push_back({true, {}, {}, 0});
-      break;
-    case json::parse_event_t::array_start:
-      stack_.push_back({false, {}, {}, 0});
-      break;
-    case json::parse_event_t::key: {
-      Frame& top = stack_.back();
-      top.key = parsed.get<std::string>();
-      if (!top.keys.insert(top.key).second)
-        throw ManifestError(file_.string() + ": " + path() +
-                            ": appears twice in the same object (remove one)");
-      break;
-    }
-    case json::parse_event_t::value:
-      advanceArray();
-      break;
-    case json::parse_event_t::object_end:
-    case json::parse_event_t::array_end:
-      stack_.pop_back();
-      advanceArray();
-      break;
-    }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    stack_.push_back({true, {}, {}, 0});
     return true;
+  }
+  bool key(string_t& key) override {
+    Frame& top = stack_.back();
+    top.key = key;
+    if (!top.keys.insert(key).second)
+      throw ManifestError(file_.string() + ": " + path() +
+                          ": appears twice in the same object (remove one)");
+    return true;
+  }
+  bool end_object() override { return end(); }
+  bool start_array(std::size_t) override {
+    stack_.push_back({false, {}, {}, 0});
+    return true;
+  }
+  bool end_array() override { return end(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false; // the text was parsed once already: cannot happen
   }
 
 private:
   struct Frame {
     bool isObject;
-    std::set<std::string> keys;
+    std::unordered_set<std::string> keys;
     std::string key;
     std::size_t index;
   };
 
-  void advanceArray() {
+  bool value() {
     if (!stack_.empty() && !stack_.back().isObject) ++stack_.back().index;
+    return true;
+  }
+  bool end() {
+    stack_.pop_back();
+    return value();
   }
 
   std::string path() const {
@@ -164,24 +170,48 @@ void ManifestReader::fail(const std::string& field, const std::string& reason) c
 
 json ManifestReader::readJson() const {
   std::error_code ec;
-  const fs::file_status status = fs::status(file_, ec);
-  if (!fs::exists(status)) failFile("file not found");
-  if (fs::is_directory(status)) failFile("is a folder, not a " + kind_);
-  std::ifstream in(file_, std::ios::binary);
-  if (!in) failFile(std::string("cannot be read (") + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) failFile("cannot be read (read error)");
+  if (!fs::exists(fs::symlink_status(file_, ec))) failFile("file not found");
   try {
-    return json::parse(text.str(), DuplicateKeyCheck(file_));
+    return parseJson(readBoundedFile(file_, kMaxManifestBytes, kind_));
+  } catch (const BoundedFileError& e) {
+    throw ManifestError(e.what());
+  }
+}
+
+json ManifestReader::parseJson(std::string_view text) const {
+  try {
+    json parsed = json::parse(text);
+    DuplicateKeyCheck check(file_);
+    json::sax_parse(text, &check);
+    return parsed;
   } catch (const json::parse_error& e) {
     // nlohmann: "[json.exception.parse_error.101] parse error at line 3, column 5: …".
     std::string detail = e.what();
     const std::string marker = "parse error at ";
     if (const auto at = detail.find(marker); at != std::string::npos)
       detail = detail.substr(at + marker.size());
+    // nlohmann quotes the bytes it last read: a stray byte (ill-formed UTF-8) is shown as \xFF,
+    // so the message itself stays UTF-8 (brushes --json prints it).
+    std::string shown;
+    for (const unsigned char c : detail) {
+      if (c >= 0x20 && c < 0x7f) {
+        shown += static_cast<char>(c);
+      } else {
+        static constexpr char kHex[] = "0123456789ABCDEF";
+        shown += {'\\', 'x', kHex[c >> 4], kHex[c & 15]};
+      }
+    }
+    detail = std::move(shown);
     failFile("invalid JSON at byte " + std::to_string(e.byte) + ", " + detail);
   }
+}
+
+bool holdsManifest(const fs::directory_entry& entry, const char* manifestName) {
+  std::error_code ec;
+  if (!entry.is_directory(ec)) return false;
+  // The name's own status: a manifest that is a broken link or a link loop is still a brush
+  // folder, one whose load fails and is listed as broken.
+  return fs::exists(fs::symlink_status(entry.path() / manifestName, ec));
 }
 
 void ManifestReader::unknownField(const std::string& prefix, const std::string& key,

@@ -50,6 +50,11 @@ std::vector<std::filesystem::path> pluginSearchPath(const std::filesystem::path&
                                                     const char* pathVariable,
                                                     const char* userFolder);
 
+/// Whether a listed folder entry is a plugin folder: a folder holding an entry named
+/// manifestName, whatever that entry is (a link loop or a FIFO is a folder to report as broken).
+/// Only stats: never opens the manifest.
+bool holdsManifest(const std::filesystem::directory_entry& entry, const char* manifestName);
+
 /// Field readers over one manifest file; each failure throws ManifestError.
 class ManifestReader {
 public:
@@ -62,8 +67,11 @@ public:
   [[noreturn]] void failFile(const std::string& reason) const;
   [[noreturn]] void fail(const std::string& field, const std::string& reason) const;
 
-  /// The file parsed, duplicate keys refused.
+  /// The file parsed, duplicate keys refused. Only a regular file of at most kMaxManifestBytes
+  /// is read (a FIFO, device or link loop is refused without blocking).
   json readJson() const;
+  /// text parsed as the file's contents, duplicate keys refused.
+  json parseJson(std::string_view text) const;
 
   /// Refuses keys of object not in known, except those starting with "x-".
   template <std::size_t N>

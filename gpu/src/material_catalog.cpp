@@ -163,9 +163,7 @@ void MaterialCatalog::scan(const std::vector<fs::path>& folders) {
     if (!fs::exists(folder, ec)) continue; // usually the user folder nobody created: no materials
     std::vector<fs::path> candidates;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-      std::error_code entryEc;
-      if (it->is_directory(entryEc) && fs::exists(it->path() / kManifestName, entryEc))
-        candidates.push_back(it->path());
+      if (detail::holdsManifest(*it, kManifestName)) candidates.push_back(it->path());
     }
     if (ec) {
       errors.push_back(folder.string() + ": cannot list the material folder (" + ec.message() +

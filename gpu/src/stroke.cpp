@@ -1,5 +1,7 @@
 #include "octaclay/gpu/stroke.h"
 
+#include "undo_capture.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 
@@ -13,48 +15,45 @@
 namespace octaclay::gpu {
 namespace {
 
-// Captures each undo tile of the written layers the first time a dab may touch it.
-class UndoCapture {
-public:
-  UndoCapture(const GpuDocument& document, std::vector<core::EditLayer> layers)
-      : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
-        tiles_(core::StrokeRecorder::tilesPerSide(side_)) {}
+[[noreturn]] void badSetting(const std::string& message) {
+  throw core::Error(core::ErrorKind::InvalidArgument, message);
+}
 
-  void cover(core::TexelRect rect) {
-    const int size = core::StrokeRecorder::kTileSize;
-    for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
-      for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
-        if (seen_.insert(ty * tiles_ + tx).second)
-          for (core::EditLayer layer : layers_)
-            before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+std::string formatValue(float v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
+  return std::to_string(v);
+}
+
+// NaN fails every comparison: each check is written so that it must pass, never so that it
+// must fail.
+void checkFinite(const char* what, float v) {
+  if (!std::isfinite(v))
+    badSetting(std::string(what) + " " + formatValue(v) + " is not a finite number");
+}
+
+void checkParameter(const BrushParameter& p, const std::array<float, 4>& v) {
+  const std::string name = "parameter '" + p.id + "'";
+  const std::size_t used = p.type == ParameterType::Color ? 4 : 1;
+  for (std::size_t c = 0; c < used; ++c)
+    checkFinite(name.c_str(), v[c]);
+  if (p.type == ParameterType::Material) return; // an index into the engine's materials
+  for (std::size_t c = 0; c < used; ++c)
+    if (!(v[c] >= p.min && v[c] <= p.max))
+      badSetting(name + " = " + formatValue(v[c]) + " is outside [" + formatValue(p.min) + ", " +
+                 formatValue(p.max) + "]");
+}
+
+void checkSettings(const BrushManifest& brush, const StrokeSettings& settings) {
+  for (const auto& [id, value] : settings.parameters)
+    if (const BrushParameter* p = brush.parameter(id)) checkParameter(*p, value);
+  if (settings.viewEye) {
+    checkFinite("the view's x", settings.viewEye->x);
+    checkFinite("the view's y", settings.viewEye->y);
+    checkFinite("the view's z", settings.viewEye->z);
   }
-
-  core::Stroke finish(const std::string& label) {
-    core::StrokeRecorder recorder(side_);
-    for (const Tile& t : before_)
-      recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
-                       texels(t.layer, t.x, t.y));
-    return recorder.finish(label);
-  }
-
-private:
-  struct Tile {
-    core::EditLayer layer;
-    int x, y;
-    std::vector<float> texels;
-  };
-
-  std::vector<float> texels(core::EditLayer layer, int tx, int ty) const {
-    const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, tx, ty);
-    return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
-  }
-
-  const GpuDocument& document_;
-  std::vector<core::EditLayer> layers_;
-  int side_, tiles_;
-  std::set<int> seen_;
-  std::vector<Tile> before_;
-};
+  checkFinite("the spacing", settings.spacing);
+}
 
 core::Sample sampleAt(int n, std::array<float, 2> uv) {
   return {static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
@@ -134,7 +133,7 @@ struct StrokeSession::State {
   const BrushManifest& brush;
   StrokeSettings settings;
   core::Vec3f centre; ///< of the bounding box at the stroke's start: symmetry mirrors through it
-  UndoCapture undo;
+  detail::UndoCapture undo;
   std::optional<core::Sample> previous; ///< the last sample walked; none before the first move
   float travelled = 0;                  ///< object-space distance since the last dab
   int dabs = 0;
@@ -142,6 +141,17 @@ struct StrokeSession::State {
   std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
   std::set<std::array<int, 4>> touchedSeams; ///< border runs seamed since the last takeTouched()
   bool finished = false;
+  bool abandoned = false; ///< a dab failed and the stroke was undone
+
+  // Puts the layers back as they were before the stroke; the session is over.
+  void abandon() {
+    finished = abandoned = true;
+    undo.restore();
+    try {
+      document.deferPaintPulls(false);
+    } catch (...) { // the restored texels are in the mirror and the textures already
+    }
+  }
 
   // One dab at s and its mirror images, capturing the undo tiles each may touch first.
   void dabAt(core::Sample s, float radius, float strength, float pressure) {
@@ -166,7 +176,13 @@ struct StrokeSession::State {
         undo.cover(r);
       for (const core::TexelRect& r : seamRuns(reach, n + 1)) // the seaming pass's partners
         undo.cover(r);
-      const DabResult done = engine.dab(document, brush.id, dab, std::move(reach));
+      DabResult done;
+      try {
+        done = engine.dab(document, brush.id, dab, std::move(reach));
+      } catch (...) { // a pass that failed or overran (the watchdog): all or nothing
+        abandon();
+        throw;
+      }
       for (const core::TexelRect& t : done.tiles)
         touchedTiles.insert({t.x, t.y, t.width, t.height});
       for (const core::TexelRect& t : done.seams)
@@ -180,6 +196,7 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
                              StrokeSettings settings) {
   if (!engine.has(brush.id))
     throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brush.id + "' is loaded");
+  checkSettings(brush, settings);
   settings.path.clear();
   state_ = std::make_unique<State>(engine, document, brush, std::move(settings));
   core::BoundingBox box;
@@ -195,7 +212,11 @@ StrokeSession::~StrokeSession() = default;
 
 int StrokeSession::moveTo(core::Sample s, float radius, float strength, float pressure) {
   State& st = *state_;
+  if (st.abandoned) throw std::logic_error("StrokeSession::moveTo after a dab failed");
   if (st.finished) throw std::logic_error("StrokeSession::moveTo after finish()");
+  checkFinite("the radius", radius);
+  checkFinite("the strength", strength);
+  checkFinite("the pressure", pressure);
   const int n = st.document.size();
   if (s.i < 0 || s.i > n || s.j < 0 || s.j > n)
     throw core::Error(core::ErrorKind::InvalidArgument,
@@ -257,6 +278,12 @@ double StrokeSession::engineMs() const {
 
 core::Stroke StrokeSession::finish(const std::string& label) {
   State& st = *state_;
+  if (st.abandoned) { // the layers are as before the stroke: nothing to undo
+    core::Stroke nothing;
+    nothing.label = label;
+    nothing.imageSide = st.document.size() + 1;
+    return nothing;
+  }
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
   st.finished = true;
   st.document.deferPaintPulls(false);

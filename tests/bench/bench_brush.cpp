@@ -1,7 +1,7 @@
 // Time per dab of push and smooth at N = 256, 1024, 4096 with radii of 2, 10 and 30 % of the
 // bounding-box diagonal, material splat dabs at N = 1024, a whole-image smooth pass at each N, and
 // effective bytes/s of a dab beside a memcpy of the same bytes in the same run (issue 3's targets;
-// ANCHORS.md's Blender).
+// ANCHORS.md's Blender), and a push dab at N = 1024 with and without the GPU watchdog (issue 20).
 #include "bench_support.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -214,6 +214,39 @@ void timeStrokes(benchmark::State& state, const char* brush) {
   state.counters["ms_per_dab"] = seconds * 1e3 / dabs;
 }
 
+// Issue 20's watchdog cost: blocks of push dabs with the watchdog (a fence and a bounded wait per
+// pass, the default 2 s limit) and without it (limit 0), alternating on one sphere, first one
+// then the other, so a machine whose speed drifts slows both alike. watchdog_over_off is the
+// ratio of their summed times (the target: at most 1.02).
+void BM_WatchdogCost(benchmark::State& state) {
+  Session& s = session();
+  gpu::GpuDocument& document = s.freshDocument(static_cast<int>(state.range(0)));
+  gpu::BrushEngine& engine = s.library.engine();
+  const float radius = static_cast<float>(state.range(1)) / 1000.0f * document.bounds().diagonal();
+  const auto block = [&](std::chrono::nanoseconds limit) {
+    engine.setPassTimeLimit(limit);
+    double seconds = 0;
+    for (int k = 0; k < 6; ++k) // an even count: each push is pulled back
+      seconds += timedDab(s, document, "push", radius, k);
+    return seconds;
+  };
+  double on = 0, off = 0;
+  int iteration = 0;
+  for (auto _ : state) {
+    const bool onFirst = iteration++ % 2 == 0;
+    const double a = block(onFirst ? std::chrono::seconds(2) : std::chrono::nanoseconds(0));
+    const double b = block(onFirst ? std::chrono::nanoseconds(0) : std::chrono::seconds(2));
+    state.SetIterationTime(a + b);
+    on += onFirst ? a : b;
+    off += onFirst ? b : a;
+  }
+  engine.setPassTimeLimit(std::chrono::seconds(2));
+  const double dabs = 6.0 * static_cast<double>(state.iterations());
+  state.counters["on_ms_per_dab"] = on * 1e3 / dabs;
+  state.counters["off_ms_per_dab"] = off * 1e3 / dabs;
+  state.counters["watchdog_over_off"] = on / off;
+}
+
 void BM_PushStroke(benchmark::State& state) {
   timeStrokes(state, "push");
 }
@@ -252,6 +285,11 @@ BENCHMARK(BM_SmoothFullImage)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->Iterations(10);
+BENCHMARK(BM_WatchdogCost)
+    ->Args({1024, 100})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(2.0);
 BENCHMARK(BM_PushStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 BENCHMARK(BM_SplatStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 

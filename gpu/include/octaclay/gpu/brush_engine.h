@@ -2,10 +2,12 @@
 
 #include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gl_objects.h"
 #include "octaclay/gpu/gpu_document.h"
 
 #include <array>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
@@ -41,8 +43,26 @@ struct DabResult {
   std::vector<core::TexelRect> seams;
 };
 
+/// A brush pass that overran the engine's time limit (the watchdog): what() is
+/// "<shader file>: a pass took longer than 2 s …". The brush is marked broken; the CLI exits 5.
+class BrushTimeoutError : public GlError {
+public:
+  using GlError::GlError;
+};
+
 /// Runs brushes as render-to-texture passes over a GpuDocument. Create and use it on the thread
 /// whose GL context is current.
+///
+/// The watchdog: each pass is fenced (glFenceSync) and waited for at most passTimeLimit(),
+/// where the dab reads its result back anyway. A pass that overruns marks its brush broken
+/// (its dabs throw until it is loaded again) and dab() throws BrushTimeoutError; a stroke
+/// (runStroke, StrokeSession) then restores the layers from its undo capture. The GPU may still
+/// be running the pass: the restore is queued behind it, so the document ends as it was once
+/// the pass completes. Drivers that recover from a hung shader only by a context reset (a GPU
+/// without preemption; the context reports GL_GUILTY_CONTEXT_RESET through robustness) lose
+/// every texture of the context: the caller then recreates the context, a BrushEngine and a
+/// GpuDocument from the CPU mirror (GpuDocument::document(), which the restore made equal to
+/// the document before the stroke) and reloads the brushes except the broken one.
 class BrushEngine {
 public:
   BrushEngine();
@@ -59,11 +79,20 @@ public:
   /// are computed (a mixed layer must not be read; GlError otherwise).
   void load(const BrushManifest& manifest, const std::string& shaderSource);
   bool has(const std::string& id) const;
+  /// Why the brush with this id is broken (a pass overran the time limit), or nullptr when it
+  /// is usable or unknown. Loading it again clears the mark.
+  const std::string* brokenReason(const std::string& id) const;
+
+  /// The watchdog's limit for one pass: 2 s by default, or $OCTACLAY_PASS_TIME_LIMIT_MS
+  /// (milliseconds, a fraction allowed) when set; zero turns the watchdog off.
+  void setPassTimeLimit(std::chrono::nanoseconds limit) { passTimeLimit_ = limit; }
+  std::chrono::nanoseconds passTimeLimit() const { return passTimeLimit_; }
 
   /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
   /// call), for each layer it writes (one pass for all of them when the body defines
   /// brushLayers()), then the seaming pass when it reached the border; the mirror is updated
-  /// for those tiles. Throws core::Error(UnknownId) for an unknown brush id.
+  /// for those tiles. Throws core::Error(UnknownId) for an unknown brush id, BrushTimeoutError
+  /// when a pass overran the time limit or the brush was marked broken by an earlier one.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
@@ -100,6 +129,10 @@ private:
   const Program& program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
                          const std::vector<int>& enums);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
+  std::chrono::nanoseconds passTimeLimit_ = std::chrono::seconds(2);
+  /// Waits for the pass just issued (the watchdog); on overrun marks the brush broken, unbinds
+  /// the framebuffer and throws BrushTimeoutError.
+  void awaitPass(LoadedBrush& brush);
   Program seamProgram_;
   /// The material maps' filters, bound per texture unit for a dab.
   Sampler nearestMaps_, bilinearMaps_;

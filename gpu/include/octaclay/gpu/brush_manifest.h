@@ -108,7 +108,13 @@ public:
 /// errors (a typo must not be silently ignored) except those whose name starts with "x-".
 /// Throws BrushLoadError on the first problem: unreadable file, JSON syntax (with the byte
 /// position), a missing or mistyped field, a value out of range, an api newer than
-/// kBrushApiVersion, or a shader file that is not beside the manifest. Any thread.
+/// kBrushApiVersion, or a shader file that is not beside the manifest. Only a regular file of at
+/// most 1 MB is read: a FIFO, a device (a link to /dev/zero) or a link loop is refused, naming
+/// the file, without blocking. Checks take time linear in the manifest's size. Any thread.
 BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile);
+/// The same over text already read, as if it were manifestFile's contents (the shader is still
+/// looked for beside manifestFile). For tests and the manifest fuzzer.
+BrushManifest parseBrushManifestText(std::string_view text,
+                                     const std::filesystem::path& manifestFile);
 
 } // namespace octaclay::gpu

@@ -37,9 +37,14 @@ struct StrokeResult {
 
 /// Runs a stroke: dabs are spaced along the path by object-space distance on the current
 /// surface, each centred on the sample under its path point (re-picked after the previous dab),
-/// and repeated at the mirrored surface point for each symmetry plane. Throws
-/// core::Error(UnknownId) for an unknown brush, core::Error(InvalidArgument) for an empty path or a
-/// point outside [0, 1].
+/// and repeated at the mirrored surface point for each symmetry plane. All or nothing: on any
+/// throw below after the first dab, the written layers are restored bit for bit from the
+/// stroke's undo capture. Throws core::Error(UnknownId) for an unknown brush,
+/// core::Error(InvalidArgument) for an empty path, a point outside [0, 1], a radius, strength,
+/// pressure, spacing or view that is not finite, or a parameter that is not finite or outside
+/// its [min, max]; core::Error(InvalidInput) when the result holds a non-finite value or a
+/// coordinate beyond ±1e18 ("the brush produced a non-finite value at sample (i, j) …");
+/// BrushTimeoutError when a pass overran the engine's time limit.
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings);
 
@@ -57,7 +62,9 @@ namespace octaclay::gpu {
 /// it.
 class StrokeSession {
 public:
-  /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush.
+  /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush,
+  /// core::Error(InvalidArgument) for a parameter, spacing or view that is not finite or a
+  /// parameter outside its [min, max].
   StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                 StrokeSettings settings);
   ~StrokeSession();
@@ -68,14 +75,19 @@ public:
   /// (as runStroke walks a segment). The first call dabs at s. radius, strength and pressure
   /// apply to the dabs this call makes (pen pressure varies along a stroke). Returns the number
   /// of dabs made, mirrored ones included. Throws core::Error(InvalidArgument) for a sample
-  /// outside the image.
+  /// outside the image or a radius, strength or pressure that is not finite. When a dab fails
+  /// (GlError, BrushTimeoutError from the watchdog) the layers are restored from the undo
+  /// capture before the error is rethrown; moveTo() must not be called again, and finish()
+  /// returns an empty record (nothing to undo).
   int moveTo(core::Sample s, float radius, float strength, float pressure = 1.0f);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
 
   int dabs() const;
   double engineMs() const;
-  /// The stroke's undo record, labelled; the session must not be used afterwards.
+  /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
+  /// layer now holds a non-finite value or a position beyond ±1e18, the layers are restored
+  /// bit for bit and core::Error(InvalidInput) names the sample instead.
   core::Stroke finish(const std::string& label);
 
 private:

@@ -1,0 +1,66 @@
+#include "undo_capture.h"
+
+#include "octaclay/core/error.h"
+
+#include <cmath>
+
+namespace octaclay::gpu::detail {
+
+UndoCapture::UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers)
+    : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
+      tiles_(core::StrokeRecorder::tilesPerSide(side_)) {}
+
+void UndoCapture::cover(core::TexelRect rect) {
+  const int size = core::StrokeRecorder::kTileSize;
+  for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
+    for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
+      if (seen_.insert(ty * tiles_ + tx).second)
+        for (core::EditLayer layer : layers_)
+          before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+}
+
+void UndoCapture::restore() {
+  for (const Tile& t : before_)
+    document_.restore(t.layer, core::StrokeRecorder::tileRegion(side_, t.x, t.y), t.texels);
+}
+
+core::Stroke UndoCapture::finish(const std::string& label) {
+  core::StrokeRecorder recorder(side_);
+  for (const Tile& t : before_) {
+    std::vector<float> after = texels(t.layer, t.x, t.y);
+    checkFinite(t, after); // on the after-tiles read anyway: no extra readback
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels, after);
+  }
+  return recorder.finish(label);
+}
+
+std::vector<float> UndoCapture::texels(core::EditLayer layer, int tx, int ty) const {
+  const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, tx, ty);
+  return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
+}
+
+void UndoCapture::checkFinite(const Tile& t, const std::vector<float>& after) {
+  const bool positions = t.layer == core::EditLayer::Positions;
+  const std::size_t channels = static_cast<std::size_t>(GpuDocument::channels(t.layer));
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    const float v = after[k];
+    // Positions' xyz are bounded; their w (saliency) and paint channels only need be finite.
+    const bool bounded = positions && k % channels < 3;
+    if (std::isfinite(v) && (!bounded || std::abs(v) <= kMaxCoordinate)) continue;
+    const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, t.x, t.y);
+    const int texel = static_cast<int>(k / channels);
+    const std::string sample = "(" + std::to_string(r.x + texel % r.width) + ", " +
+                               std::to_string(r.y + texel / r.width) + ")";
+    restore();
+    const std::string layer(toManifestName(t.layer));
+    throw core::Error(core::ErrorKind::InvalidInput,
+                      std::isfinite(v)
+                          ? "the brush moved sample " + sample +
+                                " beyond the ±1e18 a coordinate may have; the "
+                                "stroke was undone"
+                          : "the brush produced a non-finite value at sample " + sample +
+                                " of the " + layer + " layer; the stroke was undone");
+  }
+}
+
+} // namespace octaclay::gpu::detail

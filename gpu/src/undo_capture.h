@@ -1,0 +1,51 @@
+#pragma once
+
+// A stroke's undo capture: each undo tile of the written layers, read from the mirror the first
+// time a dab may touch it. It also makes a stroke all-or-nothing: a failed dab or a result that
+// is not finite puts the captured tiles back, bit for bit.
+
+#include "octaclay/core/document/edit_history.h"
+#include "octaclay/gpu/gpu_document.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace octaclay::gpu::detail {
+
+/// The largest |coordinate| a stroke may leave in the positions: far below float's limit, so
+/// the bounding box's diagonal (and every distance between samples) stays finite.
+inline constexpr float kMaxCoordinate = 1e18f;
+
+class UndoCapture {
+public:
+  UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers);
+
+  /// Captures the tiles of rect not captured yet.
+  void cover(core::TexelRect rect);
+  /// Writes every captured tile back to the mirror and the texture (the stroke is undone).
+  void restore();
+  /// The stroke's undo record, from the captured tiles and the mirror as it is now. When a
+  /// written texel is not finite, or a position lies beyond kMaxCoordinate, restores the
+  /// captured tiles first and throws core::Error(InvalidInput) naming the sample.
+  core::Stroke finish(const std::string& label);
+
+private:
+  struct Tile {
+    core::EditLayer layer;
+    int x, y;
+    std::vector<float> texels;
+  };
+
+  std::vector<float> texels(core::EditLayer layer, int tx, int ty) const;
+  /// Throws (after restore()) when after, tile t's texels now, holds a value not to commit.
+  void checkFinite(const Tile& t, const std::vector<float>& after);
+
+  GpuDocument& document_;
+  std::vector<core::EditLayer> layers_;
+  int side_, tiles_;
+  std::set<int> seen_;
+  std::vector<Tile> before_;
+};
+
+} // namespace octaclay::gpu::detail
