@@ -13,6 +13,7 @@
 #include <QImage>
 #include <QProgressDialog>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
@@ -71,6 +72,7 @@ private slots:
   void fineBumpShowsInTheShadingAtLevelEighth();
   void modifiersKeysAndPenPressureShapeTheStroke();
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
+  void strokeWithANonFiniteResultIsUndoneWithAMessage();
   void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
   void splatLaysMaterialInOneStroke();
   void otherPressesDuringAStrokeLeaveItWhole();
@@ -498,6 +500,35 @@ void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {
   view->beginStrokeAt({view->width() / 2.0, view->height() / 2.0});
   view->endStroke();
   QVERIFY(!bitEqual(before, positionsOf(*window_)));
+  std::filesystem::remove_all(target);
+}
+
+// Issue 20: a brush whose result is NaN is refused when the stroke ends; the model is as it
+// was, nothing joins the undo stack, the status bar says why, and the next stroke works.
+void ModellerRenderTest::strokeWithANonFiniteResultIsUndoneWithAMessage() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  const std::filesystem::path target = std::filesystem::path(pluginDir_.toStdString()) / "nan";
+  std::filesystem::create_directories(target);
+  std::ofstream(target / "brush.glsl")
+      << "vec4 brush(vec4 value, BrushInput b) {\n"
+         "  return b.weight > 0.0 ? vec4(uintBitsToFloat(0x7fc00000u)) : value;\n}\n";
+  std::ofstream(target / "manifest.json")
+      << R"({"id": "test-nan", "name": "NaN", "api": 1, "shader": "brush.glsl",
+             "writes": ["positions"], "area": "volume", "falloff": "constant"})";
+  QTRY_VERIFY_WITH_TIMEOUT(window_->brushPanel()->brushIds().contains("test-nan"), 8000);
+  const std::vector<float> before = positionsOf(*window_);
+  app::ViewportWidget* view = window_->viewport();
+  const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+  stroke(*window_, "test-nan", 0.05f, 0.2f, centre, centre + QPointF(20, 0));
+  QVERIFY(bitEqual(before, positionsOf(*window_)));
+  QCOMPARE(window_->undoStack()->count(), 0);
+  const QString message = window_->statusBar()->currentMessage();
+  QVERIFY2(message.contains("non-finite value"), qPrintable(message));
+  stroke(*window_, "push", 0.05f, 0.2f, centre, centre + QPointF(20, 0));
+  QVERIFY(!bitEqual(before, positionsOf(*window_)));
+  QCOMPARE(window_->undoStack()->count(), 1);
   std::filesystem::remove_all(target);
 }
 
