@@ -125,6 +125,7 @@ private slots:
   void oczClaimingLargerNUnderMemoryLimit();
   void hugeMeshCoordinatesRefused();
   void facesSharingNoVerticesHintWelding();
+  void pipesAreNotRead();
   void jsonWithNonUtf8FileName();
   void brushesJsonWithNonUtf8Manifest();
   // QTemporaryDir cannot remove names that are not UTF-8.
@@ -297,6 +298,19 @@ void CliValidationTest::facesSharingNoVerticesHintWelding() {
     QVERIFY2(!err.contains("try --fill-holes"), qPrintable(describe(args, r)));
     QVERIFY(!QFileInfo::exists(out));
   }
+}
+
+// A named pipe as input would block forever: refused as a file that cannot be read (exit 4).
+void CliValidationTest::pipesAreNotRead() {
+  for (const char* name : {"pipe.exr", "pipe.ocz"}) {
+    const std::string fifo = dir_.path().toStdString() + "/" + name;
+    QVERIFY(mkfifo(fifo.c_str(), 0644) == 0);
+  }
+  EXPECT_MESSAGE(kIo, QString(), QStringList{"not a regular file"}, "info", file("pipe.exr"));
+  EXPECT_MESSAGE(kIo, file("p.obj"), QStringList{"pipe.exr"}, "export", file("pipe.exr"), "-o",
+                 file("p.obj"));
+  EXPECT_MESSAGE(kIo, file("p.exr"), QStringList{"pipe.ocz"}, "decompress", file("pipe.ocz"), "-o",
+                 file("p.exr"));
 }
 
 void CliValidationTest::jsonWithNonUtf8FileName() {

@@ -242,6 +242,9 @@ Document readCompressedDocument(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder");
+  // A pipe or device would block or never end: only regular files are read.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::Io,

@@ -59,6 +59,9 @@ void requireExrMagic(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder, not a document");
+  // A pipe or device would block or never end: only regular files are read.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::Io, "cannot open " + path.string() +
