@@ -121,6 +121,7 @@ private slots:
   void nonFiniteArguments();
   void emptyOutputIsABadArgument();
   void overflowingDocumentRefused();
+  void partialLayerRefusedByEveryCommand();
   void overflowingOczRefused();
   void oczClaimingLargerNUnderMemoryLimit();
   void hugeMeshCoordinatesRefused();
@@ -224,6 +225,28 @@ void CliValidationTest::overflowingDocumentRefused() {
   EXPECT_MESSAGE(kInvalidInput, file("h.obj"), tooLarge, "export", huge, "-o", file("h.obj"));
   EXPECT_MESSAGE(kInvalidInput, file("s.exr"), tooLarge, "stroke", huge, "--brush", "push",
                  "--path", "0.5,0.5", "-o", file("s.exr"));
+}
+
+// Renaming diffuse.R in the header leaves diffuse with 3 of its 4 channels: `info` and `lod`
+// (which read positions only) refuse it as `stroke`, `export` and `compress` do.
+void CliValidationTest::partialLayerRefusedByEveryCommand() {
+  QFile source(doc_);
+  QVERIFY(source.open(QIODevice::ReadOnly));
+  QByteArray bytes = source.readAll();
+  const qsizetype at = bytes.indexOf(QByteArray("diffuse.R", 10));
+  QVERIFY(at > 0);
+  bytes[at + 8] = 'S';
+  const QString partial = file("partial.exr");
+  writeFile(partial, bytes);
+  const QStringList why{"diffuse has 3 of its 4 channels"};
+  EXPECT_MESSAGE(kInvalidInput, QString(), why, "info", partial);
+  EXPECT_MESSAGE(kInvalidInput, file("pl.obj"), why, "lod", partial, "--size", "8", "-o",
+                 file("pl.obj"));
+  EXPECT_MESSAGE(kInvalidInput, file("pe.obj"), why, "export", partial, "-o", file("pe.obj"));
+  EXPECT_MESSAGE(kInvalidInput, file("pc.ocz"), why, "compress", partial, "--codec", "lossless",
+                 "-o", file("pc.ocz"));
+  EXPECT_MESSAGE(kInvalidInput, file("ps.exr"), why, "stroke", partial, "--brush", "push", "--path",
+                 "0.5,0.5", "-o", file("ps.exr"));
 }
 
 void CliValidationTest::overflowingOczRefused() {
