@@ -1,5 +1,6 @@
 #include "brush_setup.h"
 #include "commands.h"
+#include "json_output.h"
 
 #include "octaclay/gpu/brush_library.h"
 #include "octaclay/gpu/gl_context.h"
@@ -66,7 +67,7 @@ Command addBrushesCommand(CLI::App& app) {
               }
               for (const std::string& message : problems)
                 errors.push_back(message);
-              std::cout << nlohmann::json{{"brushes", brushes}, {"errors", errors}}.dump() << "\n";
+              std::cout << app::JsonReply{{"brushes", brushes}, {"errors", errors}}.dump() << "\n";
               return kExitOk;
             }
             for (const gpu::BrushManifest* brush : usable) {

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "json_output.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/export/mesh_io.h"
@@ -55,7 +56,7 @@ Command addCompareCommand(CLI::App& app) {
               // JSON has no infinity: identical surfaces report psnr null.
               out["psnr"] =
                   std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr);
-              std::cout << out.dump() << "\n";
+              std::cout << jsonText(out) << "\n";
             } else {
               std::cout << "RMS        " << d.rms << " of the diagonal (" << d.rms * d.diagonal
                         << ")\n"

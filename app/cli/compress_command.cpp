@@ -3,6 +3,8 @@
 // rate–distortion report of every codec beside Draco.
 
 #include "commands.h"
+#include "finite_arguments.h"
+#include "json_output.h"
 #include "rd_measure.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -111,7 +113,7 @@ int runSweep(const CompressOptionsCli& opt) {
                       {"normal_angle_deg", p.distortion.normalAngleDeg},
                       {"max_seam_gap", p.distortion.maxSeamGap},
                       {"exact", p.exact}});
-    std::cout << nlohmann::json{{"input", opt.input},
+    std::cout << app::JsonReply{{"input", opt.input},
                                 {"n", doc.size()},
                                 {"markdown", paths[0].string()},
                                 {"csv", paths[1].string()},
@@ -149,7 +151,23 @@ int runCompress(const CompressOptionsCli& opt) {
   options.params.quality = opt.quality;
   options.params.mode = opt.mode;
   auto start = Clock::now();
-  const std::vector<std::uint8_t> bytes = core::compressDocument(doc, options);
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = core::compressDocument(doc, options);
+  } catch (const core::Error& e) {
+    // With no --quality or --mode the codec's defaults failed: the document is at fault, not
+    // an argument the user gave.
+    if (opt.quality != -1 || !opt.mode.empty() || e.kind() != core::ErrorKind::InvalidArgument)
+      throw;
+    const std::string why = e.what();
+    const bool precision = why.find("float precision") != std::string::npos;
+    throw core::Error(core::ErrorKind::InvalidInput,
+                      opt.input + ": " + opt.codec + " cannot code this document at its defaults" +
+                          (precision ? " (its coordinates are too large for float precision "
+                                       "at its size: move it near the origin or scale it down)"
+                                     : std::string()) +
+                          ": " + why);
+  }
   const double encodeMs = millisecondsSince(start);
   start = Clock::now();
   const core::Document decoded = core::decompressDocument(bytes);
@@ -182,7 +200,7 @@ int runCompress(const CompressOptionsCli& opt) {
     out["max_seam_gap"] = d.maxSeamGap;
   }
   if (opt.json) {
-    std::cout << out.dump() << "\n";
+    std::cout << jsonText(out) << "\n";
     return kExitOk;
   }
   std::cout << opt.output << ": " << bytes.size() << " bytes, "
@@ -210,7 +228,8 @@ Command addCompressCommand(CLI::App& app) {
                   "Positions codec: bytepack, dct, exr, wavelet or lossless");
   sub->add_option("--quality", opt->quality,
                   "Codec quality: bytepack regions per side R (a power of two), dct 1-100, wavelet "
-                  "error bound (fraction of the diagonal); default: the codec's");
+                  "error bound (fraction of the diagonal); default: the codec's")
+      ->check(kFiniteNumber);
   sub->add_option("--mode", opt->mode, "exr only: zip, piz, pxr24 or half");
   sub->add_option("-o,--output", opt->output,
                   "Compressed document (.ocz); with --sweep the report folder");
@@ -238,11 +257,18 @@ Command addDecompressCommand(CLI::App& app) {
             requireExtension(opt->output, ".exr", "the document");
             const std::vector<std::uint8_t> bytes = readBytes(opt->input);
             const auto start = Clock::now();
-            const core::Document doc = core::decompressDocument(bytes);
+            const core::Document doc = [&] {
+              try {
+                return core::decompressDocument(bytes);
+              } catch (const core::Error& e) {
+                if (e.kind() != core::ErrorKind::InvalidInput) throw;
+                throw core::Error(e.kind(), opt->input + ": " + e.what());
+              }
+            }();
             const double decodeMs = millisecondsSince(start);
             core::writeDocument(doc, opt->output);
             if (opt->json)
-              std::cout << nlohmann::json{{"input", opt->input},
+              std::cout << app::JsonReply{{"input", opt->input},
                                           {"output", opt->output},
                                           {"n", doc.size()},
                                           {"bytes", bytes.size()},

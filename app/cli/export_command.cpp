@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "json_output.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
@@ -93,7 +94,7 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
   }
   writeFullNormalMap(full, normalMap, files);
   if (json) {
-    std::cout << nlohmann::json{{"output", output},
+    std::cout << app::JsonReply{{"output", output},
                                 {"files", files},
                                 {"lod", lod.resampledSize},
                                 {"vertices", lod.mesh.positions.size()},
@@ -198,7 +199,7 @@ Command addExportCommand(CLI::App& app) {
             }
             writeFullNormalMap(document.positions, opt->normalMap, files);
             if (opt->json) {
-              std::cout << nlohmann::json{{"output", opt->output},
+              std::cout << app::JsonReply{{"output", opt->output},
                                           {"files", files},
                                           {"lod", m},
                                           {"vertices", vertices},

@@ -117,7 +117,7 @@ Command addImportCommand(CLI::App& app) {
         const std::string diffuseFrom = describe(diffuse);
 
         if (opt->json) {
-          std::cout << nlohmann::json{{"input", opt->input},
+          std::cout << app::JsonReply{{"input", opt->input},
                                       {"output", opt->output},
                                       {"size", opt->size},
                                       {"mesh_vertices", validated.mesh.positions.size()},

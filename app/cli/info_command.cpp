@@ -35,7 +35,7 @@ Command addInfoCommand(CLI::App& app) {
                 }
 
             if (opt->json) {
-              std::cout << nlohmann::json{{"document", opt->input},
+              std::cout << app::JsonReply{{"document", opt->input},
                                           {"format_version", header.formatVersion},
                                           {"size", info.size},
                                           {"samples", (info.size + 1) * (info.size + 1)},

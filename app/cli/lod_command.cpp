@@ -2,6 +2,8 @@
 // with a normal map baked from the full-resolution image, and measured against it.
 
 #include "commands.h"
+#include "finite_arguments.h"
+#include "json_output.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
@@ -78,10 +80,12 @@ Command addLodCommand(CLI::App& app) {
                   "Refuse collapses that make a triangle thinner (longest edge / height) than "
                   "this and than twice what it was before the collapse began (0: no bound, else "
                   "2 or more)")
+      ->check(kFiniteNumber)
       ->capture_default_str();
   sub->add_option("--max-error", opt->maxError,
                   "Stop collapsing before an error above this fraction of the bounding-box "
-                  "diagonal (0: no bound)");
+                  "diagonal (0: no bound)")
+      ->check(kFiniteNumber);
   sub->add_option("--normal-map", opt->normalMap,
                   "Also write the baked normal map here: .png (8-bit) or .exr (float)");
   sub->add_option("--normal-space", opt->space,
@@ -216,7 +220,7 @@ Command addLodCommand(CLI::App& app) {
             const double totalMs = millisecondsSince(commandStart);
 
             if (opt->json) {
-              std::cout << nlohmann::json{{"input", opt->input},
+              std::cout << app::JsonReply{{"input", opt->input},
                                           {"output", opt->output},
                                           {"files", files},
                                           {"document_size", n},

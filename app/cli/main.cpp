@@ -25,6 +25,19 @@ int exitCodeFor(core::ErrorKind kind) {
   return app::kExitInternal;
 }
 
+// `-o ''` names no file: a bad argument, reported before anything is read.
+void requireNamedOutput(const CLI::App& subcommand) {
+  const CLI::Option* output = subcommand.get_option_no_throw("--output");
+  if (output && output->count() > 0 && output->as<std::string>().empty())
+    throw core::Error(core::ErrorKind::InvalidArgument, "-o names no file: give an output path");
+}
+
+// Only `new` and `import` allocate what --size asks for; anywhere else memory runs out on what
+// an input file declares.
+bool sizedByArgument(const CLI::App& subcommand) {
+  return subcommand.get_name() == "new" || subcommand.get_name() == "import";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -44,9 +57,14 @@ int main(int argc, char** argv) {
     return code == 0 ? app::kExitOk : app::kExitUsage;
   }
 
+  const CLI::App* chosen = nullptr;
   try {
     for (const app::Command& command : commands)
-      if (command.subcommand->parsed()) return command.run();
+      if (command.subcommand->parsed()) {
+        chosen = command.subcommand;
+        requireNamedOutput(*chosen);
+        return command.run();
+      }
   } catch (const core::Error& e) {
     std::cerr << "octaclay-cli: error: " << e.what() << "\n";
     return exitCodeFor(e.kind());
@@ -57,8 +75,13 @@ int main(int argc, char** argv) {
     std::cerr << "octaclay-cli: error: " << e.what() << "\n";
     return app::kExitInvalidInput;
   } catch (const std::bad_alloc&) {
-    std::cerr << "octaclay-cli: error: out of memory; try a smaller --size\n";
-    return app::kExitInternal;
+    if (chosen && sizedByArgument(*chosen)) {
+      std::cerr << "octaclay-cli: error: out of memory; try a smaller --size\n";
+      return app::kExitInternal;
+    }
+    std::cerr << "octaclay-cli: error: out of memory while reading the input: it declares more "
+                 "data than this machine can hold (a damaged or hostile file?)\n";
+    return app::kExitInvalidInput;
   } catch (const std::exception& e) {
     std::cerr << "octaclay-cli: internal error: " << e.what() << " (please report this)\n";
     return app::kExitInternal;

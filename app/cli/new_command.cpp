@@ -42,7 +42,7 @@ Command addNewCommand(CLI::App& app) {
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
             if (opt->json) {
-              std::cout << nlohmann::json{{"output", opt->output},
+              std::cout << app::JsonReply{{"output", opt->output},
                                           {"shape", opt->shape},
                                           {"size", opt->size},
                                           {"vertices",

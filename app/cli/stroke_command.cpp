@@ -1,5 +1,7 @@
 #include "brush_setup.h"
 #include "commands.h"
+#include "finite_arguments.h"
+#include "json_output.h"
 #include "sculpt_session.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -12,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -36,6 +39,7 @@ std::vector<float> numbers(const std::string& text, char separator) {
       used = 0;
     }
     if (used == 0 || used != item.size()) badArgument("'" + item + "' is not a number");
+    if (!std::isfinite(v)) badArgument("'" + item + "' is not a finite number");
     values.push_back(v);
   }
   return values;
@@ -160,11 +164,14 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("--param", opt->params, "Brush parameter id=value (repeatable)");
   sub->add_option("--path", opt->path, "u,v[;u,v...] in [0, 1]: one pair is one dab")->required();
   sub->add_option("--radius", opt->radius, "Fraction of the bounding-box diagonal")
+      ->check(kFiniteNumber)
       ->capture_default_str();
   sub->add_option("--strength", opt->strength, "Fraction of the radius; negative pulls")
+      ->check(kFiniteNumber)
       ->capture_default_str();
   sub->add_option("--spacing", opt->spacing,
-                  "Between dabs, fraction of the radius (default: the brush's)");
+                  "Between dabs, fraction of the radius (default: the brush's)")
+      ->check(kFiniteNumber);
   sub->add_option("--symmetry", opt->symmetry, "Mirror planes through the model's centre: x, y, z");
   sub->add_option("--view", opt->view,
                   "Camera eye x,y,z: splats project from it through each dab's centre "
@@ -173,6 +180,8 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt]() {
+            requireFinite(opt->strength, "--strength");
+            requireFinite(opt->spacing, "--spacing");
             if (!(opt->radius > 0 && opt->radius <= 1))
               badArgument("--radius must be in (0, 1] (a fraction of the bounding-box diagonal)");
             const std::vector<std::array<float, 2>> path = parsePath(opt->path);
@@ -223,7 +232,7 @@ Command addStrokeCommand(CLI::App& app) {
 
             const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
             if (opt->json)
-              std::cout << nlohmann::json{{"output", opt->output},
+              std::cout << app::JsonReply{{"output", opt->output},
                                           {"brush", brush->id},
                                           {"dabs", result.dabs},
                                           {"engine_ms", result.engineMs},

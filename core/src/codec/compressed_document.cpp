@@ -12,6 +12,7 @@
 #include "codec/byte_io.h"
 #include "detail/atomic_file.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
 #include <zlib.h>
@@ -19,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <new>
 
 namespace octaclay::core {
 namespace {
@@ -149,7 +151,9 @@ Document decompressDocument(std::span<const std::uint8_t> bytes) {
   if (layerCount != kLayerCount)
     in.fail(std::to_string(layerCount) + " layers, expected " + std::to_string(kLayerCount));
 
-  Document doc = makeDocument(GeometryImage(static_cast<int>(n)));
+  // Nothing of N's size is allocated until the entries and every stream's length hold
+  // together and the positions decode: a header that lies about N costs no memory.
+  Document doc;
   const std::array<Layer*, 4> layers{nullptr, &doc.diffuse, &doc.feature, &doc.mask};
   const std::array<const char*, 4> names{"positions", "diffuse", "feature", "mask"};
   struct Entry {
@@ -186,20 +190,35 @@ Document decompressDocument(std::span<const std::uint8_t> bytes) {
       in.fail(name + " has storage kind " + std::to_string(storage) + ", which is not valid");
     }
   }
-  for (int k = 0; k < kLayerCount; ++k) {
-    if (!entries[k].codec) continue;
-    const auto stream = in.take(entries[k].length);
-    FloatImage image = entries[k].codec->decode(stream, static_cast<int>(n), entries[k].channels);
-    if (k == 0) {
-      for (std::size_t t = 0; t < doc.positions.texelCount(); ++t) {
-        const float* p = &image.texels[t * 3];
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-          in.fail("position " + std::to_string(t) + " is not a finite number");
-        doc.positions.texels()[t] = {p[0], p[1], p[2], 0.0f};
+  if (!entries[0].codec) in.fail("positions are not stored");
+  std::uint64_t streamBytes = 0;
+  for (const Entry& e : entries) {
+    if (e.length > in.remaining()) in.fail("a layer's stream is longer than the file");
+    streamBytes += e.length;
+  }
+  if (streamBytes != in.remaining())
+    in.fail("the layers' streams hold " + std::to_string(streamBytes) + " bytes, the file " +
+            std::to_string(in.remaining()));
+
+  try {
+    for (int k = 0; k < kLayerCount; ++k) {
+      if (!entries[k].codec) continue;
+      const auto stream = in.take(entries[k].length);
+      FloatImage image = entries[k].codec->decode(stream, static_cast<int>(n), entries[k].channels);
+      if (k == 0) {
+        doc.positions = GeometryImage(static_cast<int>(n));
+        for (std::size_t t = 0; t < doc.positions.texelCount(); ++t) {
+          const float* p = &image.texels[t * 3];
+          doc.positions.texels()[t] = {p[0], p[1], p[2], 0.0f};
+        }
+        if (const auto problem = positionsProblem(doc.positions)) in.fail(*problem);
+      } else {
+        layers[k]->texels = std::move(image.texels);
       }
-    } else {
-      layers[k]->texels = std::move(image.texels);
     }
+  } catch (const std::bad_alloc&) {
+    in.fail("not enough memory to decode N = " + std::to_string(n) +
+            ": the document is larger than this machine can hold");
   }
   in.expectEnd();
   return doc;
@@ -223,6 +242,9 @@ Document readCompressedDocument(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder");
+  // A pipe or device would block or never end: only regular files are read.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::Io,

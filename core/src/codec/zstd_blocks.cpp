@@ -21,6 +21,11 @@ void writeZstdBlock(ByteWriter& out, std::span<const std::uint8_t> data, int lev
 std::vector<std::uint8_t> readZstdBlock(ByteReader& in, std::size_t expected) {
   const std::uint32_t length = in.u32();
   const auto frame = in.take(length);
+  // A zstd block is at least 3 bytes and holds at most 128 KiB: a frame claiming more than
+  // that ratio allows is refused before its output is allocated.
+  if (expected / (std::size_t{128} << 10) > frame.size() / 3 + 1)
+    in.fail("an entropy-coded block of " + std::to_string(frame.size()) +
+            " bytes cannot hold the " + std::to_string(expected) + " bytes it should");
   const unsigned long long declared = ZSTD_getFrameContentSize(frame.data(), frame.size());
   if (declared != expected)
     in.fail("entropy-coded block declares " +

@@ -2,6 +2,7 @@
 
 #include "detail/atomic_file.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
 #include <ImfChannelList.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <thread>
 
 namespace octaclay::core {
@@ -57,6 +59,9 @@ void requireExrMagic(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder, not a document");
+  // A pipe or device would block or never end: only regular files are read.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw Error(ErrorKind::Io, "cannot open " + path.string() +
@@ -102,6 +107,7 @@ DocumentHeader checkHeader(const fs::path& path, const Imf::Header& header) {
   for (const char* name : kPositionChannels)
     if (!header.channels().findChannel(name))
       refuse(path, std::string("missing channel ") + name + " (positions need P.X, P.Y, P.Z)");
+  if (const auto problem = layerChannelsProblem(result.channels)) refuse(path, *problem);
   return result;
 }
 
@@ -134,16 +140,13 @@ void addLayerSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const L
 }
 
 // Adds slices that read a layer's channels into its texels; an absent layer keeps its default.
-void addLayerReadSlices(const fs::path& path, Imf::FrameBuffer& frame, const Imath::Box2i& window,
+void addLayerReadSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window,
                         const DocumentHeader& header, Layer& layer, int side) {
   const auto names = layer.channelNames();
   int present = 0;
   for (const auto& n : names)
     present += std::count(header.channels.begin(), header.channels.end(), layer.name + "." + n) > 0;
-  if (present == 0) return;
-  if (present != layer.channels)
-    refuse(path, "layer " + layer.name + " has " + std::to_string(present) + " of its " +
-                     std::to_string(layer.channels) + " channels");
+  if (present == 0) return; // checkHeader refused a partial layer
 
   layer.texels.assign(static_cast<std::size_t>(side) * side * layer.channels, 0.0f);
   const std::size_t xStride = sizeof(float) * layer.channels;
@@ -201,24 +204,21 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
           Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
     if (options.layers)
       for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-        addLayerReadSlices(path, frame, window, header, *layer, side);
+        addLayerReadSlices(frame, window, header, *layer, side);
     // One read for every channel: each readPixels call decompresses the whole file again.
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
 
-    for (int j = 0; j < side; ++j)
-      for (int i = 0; i < side; ++i) {
-        const Vec4f& t = document.positions.at(i, j);
-        if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
-          refuse(path, "position at sample (" + std::to_string(i) + ", " + std::to_string(j) +
-                           ") is not a finite number");
-      }
+    if (const auto problem = positionsProblem(document.positions)) refuse(path, *problem);
 
     for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
       collapseUniformLayer(*layer);
     document.hasMask = std::count(header.channels.begin(), header.channels.end(), "mask.Y") > 0;
   } catch (const Error&) {
     throw;
+  } catch (const std::bad_alloc&) {
+    refuse(path, "not enough memory to read it: the document is larger than this machine can "
+                 "hold");
   } catch (const std::exception& e) {
     refuse(path, std::string("corrupt or truncated OpenEXR data: ") + e.what());
   }

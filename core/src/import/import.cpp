@@ -1,5 +1,6 @@
 #include "octaclay/core/import/import.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -36,6 +37,9 @@ Document importValidatedMesh(const ValidatedMesh& mesh, const SphericalMap& map,
   } else {
     document = importToDocument(mesh.mesh, map, n);
   }
+  // Resampling can overflow where the mesh did not; such a document could never be read again.
+  if (const auto problem = positionsProblem(document.positions))
+    throw Error(ErrorKind::InvalidInput, "the imported surface cannot be stored: " + *problem);
   if (diffuse) *diffuse = std::move(what);
   return document;
 }

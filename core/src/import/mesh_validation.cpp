@@ -8,11 +8,13 @@
 #include "import/mesh_repair.h"
 #include "import/mesh_topology.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -82,6 +84,10 @@ ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const Validatio
       refuse("vertex " + std::to_string(v + 1) +
              " has a coordinate that is not a finite number (NaN or infinity) — the file is "
              "damaged; re-export it");
+    if (used[v] && std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
+      refuse("vertex " + std::to_string(v + 1) +
+             " has a coordinate too large for a document (beyond 1e18, where the bounding "
+             "box overflows) — scale the model down before importing it");
   }
 
   if (weld) {
@@ -182,7 +188,12 @@ ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const Validatio
   if (!a.holeEdges.empty()) {
     std::string what = "open: " + counted(a.holes, "hole", "holes") + ", " +
                        counted(a.holeEdges.size(), "boundary edge", "boundary edges");
-    if (!options.fillHoles)
+    if (a.components > 1)
+      // Filling would close each piece on its own: the pieces need joining, not holes filling.
+      what += " in " + std::to_string(a.components) +
+              " pieces that share no vertices — weld coincident vertices (merge by distance) in "
+              "a modelling tool";
+    else if (!options.fillHoles)
       what += " — close them first (or try --fill-holes)";
     else
       what += " left after filling " + counted(cleanup.holesFilled, "hole", "holes") +
@@ -199,7 +210,10 @@ ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const Validatio
   if (a.components > 1)
     refuse(std::to_string(a.components) +
            " components: only one closed surface can become a geometry image — keep the "
-           "largest or split the file");
+           "largest or split the file" +
+           (cleanup.holesFilled ? std::string(" (if its faces were meant to touch, weld "
+                                              "coincident vertices instead of filling holes)")
+                                : std::string()));
 
   std::size_t vertexCount = 0;
   {
@@ -273,13 +287,20 @@ ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const Validatio
 } // namespace
 
 ValidatedMesh loadGenus0Mesh(const fs::path& path, const ValidationOptions& options) {
-  detail::RawMesh raw = detail::readRawMesh(path);
-  ValidatedMesh out =
-      validate(std::move(raw.mesh), {std::move(raw.vertexColours), std::move(raw.cornerUv)},
-               options, path.string() + ": ", raw.cornersPerFace, raw.shortFaces);
-  out.diffuseTexture = std::move(raw.diffuseTexture);
-  out.notes = std::move(raw.notes);
-  return out;
+  try {
+    detail::RawMesh raw = detail::readRawMesh(path);
+    ValidatedMesh out =
+        validate(std::move(raw.mesh), {std::move(raw.vertexColours), std::move(raw.cornerUv)},
+                 options, path.string() + ": ", raw.cornersPerFace, raw.shortFaces);
+    out.diffuseTexture = std::move(raw.diffuseTexture);
+    out.notes = std::move(raw.notes);
+    return out;
+  } catch (const std::bad_alloc&) {
+    // The file, not --size, asked for the memory: say so (main's message is about --size).
+    throw Error(ErrorKind::InvalidInput, path.string() +
+                                             ": not enough memory to read this mesh: it is "
+                                             "larger than this machine can hold");
+  }
 }
 
 ValidatedMesh validateGenus0Mesh(TriangleMesh mesh, const ValidationOptions& options) {

@@ -1,0 +1,199 @@
+// The checks every reader shares (document_checks.h): documents whose bounding box overflows
+// float and partial layers are refused by the full read, the positions-only read (`info`,
+// `lod`) and the header read alike; .ocz files are refused on the same grounds, and one whose
+// header claims a larger N than its streams hold is refused before anything of that size is
+// allocated.
+
+#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/document/document_checks.h"
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIntAttribute.h>
+#include <ImfOutputFile.h>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace octaclay::core;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Writes an Octaclay-looking EXR with Imf directly (the writer may refuse such documents):
+// an N = 16 sphere whose sample (3, 4) has x = `x`, plus float channels `extra` (zero).
+void writeExr(const fs::path& path, float x, const std::vector<std::string>& extra = {}) {
+  const int n = 16, side = n + 1;
+  const GeometryImage sphere = makeBaseShape(BaseShape::Sphere, n);
+  Imf::Header header(side, side);
+  header.insert("octaclay.format", Imf::IntAttribute(1));
+  std::vector<std::vector<float>> planes(3 + extra.size(),
+                                         std::vector<float>(std::size_t(side) * side, 0.0f));
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const Vec4f& t = sphere.at(i, j);
+      const std::size_t k = std::size_t(j) * side + i;
+      planes[0][k] = t.x;
+      planes[1][k] = t.y;
+      planes[2][k] = t.z;
+    }
+  planes[0][std::size_t(4) * side + 3] = x;
+  std::vector<std::string> names{"P.X", "P.Y", "P.Z"};
+  names.insert(names.end(), extra.begin(), extra.end());
+  Imf::FrameBuffer frame;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes[c].data()),
+                                      sizeof(float), sizeof(float) * side));
+  }
+  Imf::OutputFile out(path.c_str(), header);
+  out.setFrameBuffer(frame);
+  out.writePixels(side);
+}
+
+QString errorOf(const std::function<void()>& f, ErrorKind kind, const QString& needle) {
+  try {
+    f();
+  } catch (const Error& e) {
+    if (e.kind() != kind) return QString("wrong error kind: ") + e.what();
+    if (!QString(e.what()).contains(needle))
+      return QString("message lacks '%1': %2").arg(needle, e.what());
+    return {};
+  } catch (const std::exception& e) {
+    return QString("not a core::Error: ") + e.what();
+  }
+  return "no error";
+}
+
+#define EXPECT_ERROR(call, kind, needle)                                                           \
+  do {                                                                                             \
+    const QString why_ = errorOf([&] { call; }, kind, needle);                                     \
+    QVERIFY2(why_.isEmpty(), qPrintable(why_));                                                    \
+  } while (false)
+
+void resealCrc(std::vector<std::uint8_t>& bytes) {
+  const std::size_t body = bytes.size() - 4;
+  const auto crc = static_cast<std::uint32_t>(
+      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(body)));
+  for (int k = 0; k < 4; ++k)
+    bytes[body + k] = std::uint8_t(crc >> (8 * k));
+}
+
+} // namespace
+
+class DocumentChecksTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase() { QVERIFY(dir_.isValid()); }
+
+  void positionsProblemNamesTheCause() {
+    GeometryImage image = makeBaseShape(BaseShape::Sphere, 8);
+    QVERIFY(!positionsProblem(image));
+    image.at(1, 2).z = 1e18f; // at the bound: still fine
+    QVERIFY(!positionsProblem(image));
+    image.at(1, 2).z = -3e19f;
+    const auto huge = positionsProblem(image);
+    QVERIFY(huge && huge->find("too large") != std::string::npos);
+    image.at(1, 2).z = std::numeric_limits<float>::infinity();
+    const auto inf = positionsProblem(image);
+    QVERIFY(inf && inf->find("(1, 2)") != std::string::npos);
+  }
+
+  void layerChannelsProblemNamesTheLayer() {
+    QVERIFY(!layerChannelsProblem({"P.X", "P.Y", "P.Z"}));
+    QVERIFY(!layerChannelsProblem({"P.X", "diffuse.R", "diffuse.G", "diffuse.B", "diffuse.A"}));
+    const auto partial = layerChannelsProblem({"P.X", "diffuse.R", "diffuse.G"});
+    QVERIFY(partial && partial->find("diffuse has 2 of its 4") != std::string::npos);
+  }
+
+  // Every read refuses what the others refuse: `info` and `lod` read positions only.
+  void overflowingDocumentRefusedOnEveryRead() {
+    const fs::path p = path("huge.exr");
+    writeExr(p, 3e19f);
+    for (bool layers : {true, false})
+      EXPECT_ERROR(readDocument(p, {layers}), ErrorKind::InvalidInput, "too large");
+    writeExr(p, 9e17f); // large but the diagonal stays finite
+    QCOMPARE(readDocument(p, {false}).size(), 16);
+  }
+
+  void partialLayerRefusedOnEveryRead() {
+    const fs::path p = path("partial.exr");
+    writeExr(p, 0.5f, {"diffuse.R", "diffuse.G"});
+    EXPECT_ERROR(readDocumentHeader(p), ErrorKind::InvalidInput, "diffuse has 2 of its 4");
+    for (bool layers : {true, false})
+      EXPECT_ERROR(readDocument(p, {layers}), ErrorKind::InvalidInput, "diffuse has 2 of its 4");
+  }
+
+  void overflowingOczRefused() {
+    Document doc = makeDocument(makeBaseShape(BaseShape::Sphere, 16));
+    doc.positions.at(5, 5).y = 1e30f;
+    std::vector<std::uint8_t> bytes;
+    try {
+      bytes = compressDocument(doc, {"lossless", {}, "lossless"});
+    } catch (const Error&) {
+      return; // refusing to code it is fine too
+    }
+    EXPECT_ERROR(decompressDocument(bytes), ErrorKind::InvalidInput, "too large");
+  }
+
+  // N changed in the container only, checksum redone: the stream's own header disagrees, and
+  // nothing of N = 8192's size (1 GB) may be allocated before that is found. Run in a child
+  // whose address space may grow by only 512 MB, where such an allocation would fail.
+  void oczClaimingLargerNRefusedWithoutAllocating() {
+    const Document doc = makeDocument(makeBaseShape(BaseShape::Sphere, 32));
+    std::vector<std::uint8_t> bytes = compressDocument(doc, {"lossless", {}, "lossless"});
+    const std::uint32_t n = 8192;
+    for (int k = 0; k < 4; ++k)
+      bytes[6 + k] = std::uint8_t(n >> (8 * k));
+    resealCrc(bytes);
+    EXPECT_ERROR(decompressDocument(bytes), ErrorKind::InvalidInput, "N = ");
+
+    const pid_t child = fork();
+    QVERIFY(child >= 0);
+    if (child == 0) {
+      unsigned long pages = 0;
+      if (FILE* statm = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(statm, "%lu", &pages) != 1) pages = 0;
+        std::fclose(statm);
+      }
+      const rlim_t cap = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE)) + (512ull << 20);
+      const rlimit limit{cap, cap};
+      setrlimit(RLIMIT_AS, &limit);
+      try {
+        decompressDocument(bytes);
+      } catch (const Error& e) {
+        _exit(e.kind() == ErrorKind::InvalidInput ? 0 : 1);
+      } catch (...) {
+        _exit(2);
+      }
+      _exit(3);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    QVERIFY2(WIFEXITED(status) && WEXITSTATUS(status) == 0,
+             qPrintable(QString("child status %1").arg(status)));
+  }
+
+private:
+  fs::path path(const char* name) const { return fs::path(dir_.path().toStdString()) / name; }
+  QTemporaryDir dir_;
+};
+
+QTEST_GUILESS_MAIN(DocumentChecksTest)
+#include "document_checks_test.moc"
