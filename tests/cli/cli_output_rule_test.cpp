@@ -85,6 +85,7 @@ private slots:
   void diskFullFailsAndKeepsThePreviousFiles_data();
   void diskFullFailsAndKeepsThePreviousFiles();
   void failedObjExportKeepsThePreviousSet();
+  void concurrentObjExportsNeverMix();
   void sigtermDuringALargeSaveKeepsTheDocument();
   void staleTemporaryOfADeadRunIsRemoved();
   void fifoTargetIsRefused();
@@ -163,6 +164,30 @@ void CliOutputRuleTest::failedObjExportKeepsThePreviousSet() {
   EXPECT_FAILURE(kIo, "", "export", blob_, "-o", obj, "--normal-map", file("missing/normals.png"));
   QVERIFY2(temporaries(folder).isEmpty(), qPrintable(temporaries(folder).join(", ")));
   QVERIFY2(snapshot(folder) == before, "the previous OBJ, MTL or maps changed");
+}
+
+void CliOutputRuleTest::concurrentObjExportsNeverMix() {
+  // Each document's set exported alone, as the reference of what one writer leaves.
+  std::vector<std::map<QString, QByteArray>> references;
+  for (const QString& document : {cube_, blob_}) {
+    const QString folder = file(QString("alone-%1").arg(references.size()));
+    QVERIFY(QDir().mkpath(folder));
+    RUN_JSON(alone, "export", document, "-o", folder + "/x.obj", "--json");
+    references.push_back(snapshot(folder));
+  }
+  const QString folder = file("together");
+  QVERIFY(QDir().mkpath(folder));
+  for (int round = 0; round < 5; ++round) {
+    QProcess first, second;
+    first.start(QStringLiteral(OCTACLAY_CLI), {"export", cube_, "-o", folder + "/x.obj"});
+    second.start(QStringLiteral(OCTACLAY_CLI), {"export", blob_, "-o", folder + "/x.obj"});
+    QVERIFY(first.waitForFinished(60000) && second.waitForFinished(60000));
+    QCOMPARE(first.exitCode(), kOk);
+    QCOMPARE(second.exitCode(), kOk);
+    const auto together = snapshot(folder);
+    QVERIFY2(together == references[0] || together == references[1],
+             "the OBJ, MTL and maps come from different exports");
+  }
 }
 
 void CliOutputRuleTest::sigtermDuringALargeSaveKeepsTheDocument() {

@@ -36,6 +36,16 @@ std::string reason(int error) {
   return std::generic_category().message(error); // thread-safe, unlike strerror
 }
 
+// Libraries (OpenEXR) name the file they wrote: the user asked for the target, not the hidden
+// temporary.
+std::string namingTarget(std::string message, const fs::path& temporary, const fs::path& target) {
+  const std::string hidden = temporary.string(), shown = target.string();
+  for (std::size_t at = message.find(hidden); at != std::string::npos;
+       at = message.find(hidden, at + shown.size()))
+    message.replace(at, hidden.size(), shown);
+  return message;
+}
+
 fs::path folderOf(const fs::path& target) {
   return target.parent_path().empty() ? fs::path(".") : target.parent_path();
 }
@@ -199,15 +209,15 @@ void OutputSet::stage(const fs::path& target, const std::function<void(const fs:
     struct stat previous {};
     if (::stat(target.c_str(), &previous) == 0)
       ::chmod(staged.temporary.c_str(), previous.st_mode & 0777);
-  } catch (const Error&) {
+  } catch (const Error& e) {
     dropLast();
-    throw;
+    throw Error(e.kind(), namingTarget(e.what(), staged.temporary, target));
   } catch (const std::bad_alloc&) {
     dropLast();
     throw;
   } catch (const std::exception& e) {
     dropLast();
-    failWrite(target, e.what());
+    failWrite(target, namingTarget(e.what(), staged.temporary, target));
   }
 }
 
