@@ -8,6 +8,7 @@
 #include "rd_measure.h"
 
 #include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/file_extension.h"
@@ -63,24 +64,6 @@ std::vector<std::uint8_t> readBytes(const std::string& path) {
   return bytes;
 }
 
-// Written beside, then renamed over the output, so a failure leaves no partial file.
-void writeBytesAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-  const std::filesystem::path temporary = path + ".part";
-  bool ok;
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file.write(reinterpret_cast<const char*>(bytes.data()),
-               static_cast<std::streamsize>(bytes.size()));
-    ok = static_cast<bool>(file.flush());
-  }
-  std::error_code ec;
-  if (ok) std::filesystem::rename(temporary, path, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw core::Error(core::ErrorKind::Io, path + ": cannot be written");
-  }
-}
-
 nlohmann::json finiteOrNull(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
@@ -92,16 +75,10 @@ struct CompressOptionsCli {
   std::size_t samples = 0;
 };
 
-int runSweep(const CompressOptionsCli& opt) {
-  const std::string directory =
-      opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
-  const core::Document doc = core::readDocument(opt.input, {.layers = false});
-  const RdReference reference = makeRdReference(doc.positions);
-  const std::vector<RdPoint> points = sweep(reference, opt.samples);
-  const std::string title =
-      "Rate-distortion: " + std::filesystem::path(opt.input).filename().string() +
-      ", N = " + std::to_string(doc.size());
-  const auto paths = writeRdReport(points, title, directory);
+std::string sweepReport(const CompressOptionsCli& opt, const core::Document& doc,
+                        std::span<const RdPoint> points, const std::string& title,
+                        const std::vector<std::filesystem::path>& paths) {
+  std::ostringstream out;
   if (opt.json) {
     nlohmann::json rows = nlohmann::json::array();
     for (const RdPoint& p : points)
@@ -113,17 +90,45 @@ int runSweep(const CompressOptionsCli& opt) {
                       {"normal_angle_deg", p.distortion.normalAngleDeg},
                       {"max_seam_gap", p.distortion.maxSeamGap},
                       {"exact", p.exact}});
-    std::cout << app::JsonReply{{"input", opt.input},
-                                {"n", doc.size()},
-                                {"markdown", paths[0].string()},
-                                {"csv", paths[1].string()},
-                                {"plot", paths[2].string()},
-                                {"points", rows}}
-                     .dump()
-              << "\n";
+    out << app::JsonReply{{"input", opt.input},
+                          {"n", doc.size()},
+                          {"markdown", paths[0].string()},
+                          {"csv", paths[1].string()},
+                          {"plot", paths[2].string()},
+                          {"points", rows}}
+               .dump()
+        << "\n";
   } else {
-    std::cout << rdMarkdown(points, title) << "\nwrote " << paths[0].string() << ", "
-              << paths[1].string() << ", " << paths[2].string() << "\n";
+    out << rdMarkdown(points, title) << "\nwrote " << paths[0].string() << ", " << paths[1].string()
+        << ", " << paths[2].string() << "\n";
+  }
+  return out.str();
+}
+
+int runSweep(const CompressOptionsCli& opt) {
+  const std::string directory =
+      opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
+  const core::Document doc = core::readDocument(opt.input, {.layers = false});
+  const RdReference reference = makeRdReference(doc.positions);
+  const std::vector<RdPoint> points = sweep(reference, opt.samples);
+  const std::string title =
+      "Rate-distortion: " + std::filesystem::path(opt.input).filename().string() +
+      ", N = " + std::to_string(doc.size());
+  // A report folder this run creates goes again when the report fails.
+  std::error_code ec;
+  const bool created = std::filesystem::create_directories(directory, ec);
+  if (ec || !std::filesystem::is_directory(directory))
+    throw core::Error(core::ErrorKind::Io, "cannot write the report to " + directory + ": " +
+                                               (ec ? ec.message() : "it is not a folder"));
+  try {
+    core::OutputSet set;
+    const auto paths = stageRdReport(points, title, directory, set);
+    const std::string report = sweepReport(opt, doc, points, title, paths);
+    set.commit();
+    std::cout << report;
+  } catch (...) {
+    if (created) std::filesystem::remove(directory, ec);
+    throw;
   }
   return kExitOk;
 }
@@ -172,7 +177,6 @@ int runCompress(const CompressOptionsCli& opt) {
   start = Clock::now();
   const core::Document decoded = core::decompressDocument(bytes);
   const double decodeMs = millisecondsSince(start);
-  writeBytesAtomically(opt.output, bytes);
 
   const bool exact =
       std::equal(doc.positions.texels().begin(), doc.positions.texels().end(),
@@ -199,20 +203,26 @@ int runCompress(const CompressOptionsCli& opt) {
     out["normal_angle_deg"] = d.normalAngleDeg;
     out["max_seam_gap"] = d.maxSeamGap;
   }
+  // Measured and reported before the file is committed: a failure leaves the previous one.
+  std::ostringstream report;
   if (opt.json) {
-    std::cout << jsonText(out) << "\n";
+    report << jsonText(out) << "\n";
+    core::writeBytesAtomically(opt.output, bytes);
+    std::cout << report.str();
     return kExitOk;
   }
-  std::cout << opt.output << ": " << bytes.size() << " bytes, "
-            << out["bits_per_vertex"].get<double>() << " bits per vertex (" << opt.codec
-            << ")\nencode " << encodeMs << " ms, decode " << decodeMs << " ms\n";
+  report << opt.output << ": " << bytes.size() << " bytes, " << out["bits_per_vertex"].get<double>()
+         << " bits per vertex (" << opt.codec << ")\nencode " << encodeMs << " ms, decode "
+         << decodeMs << " ms\n";
   if (exact)
-    std::cout << "positions exact\n";
+    report << "positions exact\n";
   else
-    std::cout << "PSNR " << out["psnr"].dump() << " dB, RMS " << out["rms"].get<double>()
-              << ", Hausdorff " << out["hausdorff"].get<double>() << " of the diagonal\n"
-              << "mean normal angle " << out["normal_angle_deg"].get<double>()
-              << " deg, max seam gap " << out["max_seam_gap"].get<double>() << "\n";
+    report << "PSNR " << out["psnr"].dump() << " dB, RMS " << out["rms"].get<double>()
+           << ", Hausdorff " << out["hausdorff"].get<double>() << " of the diagonal\n"
+           << "mean normal angle " << out["normal_angle_deg"].get<double>() << " deg, max seam gap "
+           << out["max_seam_gap"].get<double>() << "\n";
+  core::writeBytesAtomically(opt.output, bytes);
+  std::cout << report.str();
   return kExitOk;
 }
 
@@ -266,18 +276,20 @@ Command addDecompressCommand(CLI::App& app) {
               }
             }();
             const double decodeMs = millisecondsSince(start);
-            core::writeDocument(doc, opt->output);
+            std::ostringstream report; // made before the save, which commits last
             if (opt->json)
-              std::cout << app::JsonReply{{"input", opt->input},
-                                          {"output", opt->output},
-                                          {"n", doc.size()},
-                                          {"bytes", bytes.size()},
-                                          {"decode_ms", decodeMs}}
-                               .dump()
-                        << "\n";
+              report << app::JsonReply{{"input", opt->input},
+                                       {"output", opt->output},
+                                       {"n", doc.size()},
+                                       {"bytes", bytes.size()},
+                                       {"decode_ms", decodeMs}}
+                            .dump()
+                     << "\n";
             else
-              std::cout << opt->output << ": N = " << doc.size() << ", decoded in " << decodeMs
-                        << " ms\n";
+              report << opt->output << ": N = " << doc.size() << ", decoded in " << decodeMs
+                     << " ms\n";
+            core::writeDocument(doc, opt->output);
+            std::cout << report.str();
             return kExitOk;
           }};
 }

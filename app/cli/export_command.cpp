@@ -1,6 +1,7 @@
 #include "commands.h"
 #include "json_output.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/lod_export.h"
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <system_error>
 #include <vector>
 
@@ -51,19 +53,12 @@ void requireNormalMapPath(const std::string& path) {
 }
 
 // --normal-map: the full-resolution object-space normals over the image coordinates (they do
-// not depend on the mesh), written after the mesh; if the map fails the mesh files go too.
-void writeFullNormalMap(const core::GeometryImage& full, const std::string& path,
-                        std::vector<std::string>& files) {
+// not depend on the mesh), committed with the mesh's files as one set.
+void stageFullNormalMap(const core::GeometryImage& full, const std::string& path,
+                        core::OutputSet& set, std::vector<std::string>& files) {
   if (path.empty()) return;
-  try {
-    core::writeNormalMap(core::bakeNormalMap(full, {}, core::NormalMapSpace::Object, full.size()),
-                         path);
-  } catch (...) {
-    std::error_code ec;
-    for (const std::string& file : files)
-      std::filesystem::remove(file, ec);
-    throw;
-  }
+  core::stageNormalMap(core::bakeNormalMap(full, {}, core::NormalMapSpace::Object, full.size()),
+                       path, set);
   files.push_back(path);
 }
 
@@ -80,35 +75,40 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
   options.size = lodSize;
   options.targetTriangles = triangles;
   const core::LodMesh lod = core::generateLod(full, options);
+  core::OutputSet set;
   std::vector<std::string> files;
   std::size_t fileVertices = lod.mesh.positions.size();
   if (kind == ExportKind::Plain) {
-    core::writeMesh(lod.mesh, output);
+    core::stageMesh(lod.mesh, output, set);
     files.push_back(output);
   } else {
     const core::NormalMap map =
         core::bakeNormalMap(full, lod, core::NormalMapSpace::Object, full.size());
-    for (const std::filesystem::path& path : core::writeLodMesh(lod, map, output))
+    for (const std::filesystem::path& path : core::stageLodMesh(lod, map, output, set))
       files.push_back(path.string());
     fileVertices = core::lodVertices(lod).positions.size();
   }
-  writeFullNormalMap(full, normalMap, files);
+  stageFullNormalMap(full, normalMap, set, files);
+  // The report is made before the commit: a failure there leaves the previous files.
+  std::ostringstream report;
   if (json) {
-    std::cout << app::JsonReply{{"output", output},
-                                {"files", files},
-                                {"lod", lod.resampledSize},
-                                {"vertices", lod.mesh.positions.size()},
-                                {"triangles", lod.mesh.triangles.size()},
-                                {"file_vertices", fileVertices}}
-                     .dump()
-              << "\n";
+    report << app::JsonReply{{"output", output},
+                             {"files", files},
+                             {"lod", lod.resampledSize},
+                             {"vertices", lod.mesh.positions.size()},
+                             {"triangles", lod.mesh.triangles.size()},
+                             {"file_vertices", fileVertices}}
+                  .dump()
+           << "\n";
   } else {
-    std::cout << "wrote " << output << ": " << lod.mesh.positions.size() << " vertices, "
-              << lod.mesh.triangles.size() << " triangles (resampled to " << lod.resampledSize
-              << " of " << full.size() << ", then collapsed)\n";
+    report << "wrote " << output << ": " << lod.mesh.positions.size() << " vertices, "
+           << lod.mesh.triangles.size() << " triangles (resampled to " << lod.resampledSize
+           << " of " << full.size() << ", then collapsed)\n";
     for (std::size_t k = 1; k < files.size(); ++k)
-      std::cout << "wrote " << files[k] << "\n";
+      report << "wrote " << files[k] << "\n";
   }
+  set.commit();
+  std::cout << report.str();
   return kExitOk;
 }
 
@@ -175,47 +175,52 @@ Command addExportCommand(CLI::App& app) {
             // textured formats store (M+1)^2 samples, seam samples twice with their own texcoords.
             const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
             std::size_t vertices = mm + 2, triangles = 2 * mm, fileVertices = vertices;
+            core::OutputSet set;
             std::vector<std::string> files;
             switch (kind) {
             case ExportKind::TexturedObj:
-              core::writeTexturedObj(document, n / m, opt->output);
+              core::stageTexturedObj(document, n / m, opt->output, set);
               for (const std::filesystem::path& path : core::texturedObjFiles(opt->output))
                 files.push_back(path.string());
               fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
               break;
             case ExportKind::Glb:
-              core::writeGlb(document, n / m, opt->output);
+              core::stageGlb(document, n / m, opt->output, set);
               files.push_back(opt->output);
               fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
               break;
             case ExportKind::Plain: {
               const core::TriangleMesh mesh = core::extractMesh(document.positions, n / m);
-              core::writeMesh(mesh, opt->output);
+              core::stageMesh(mesh, opt->output, set);
               files.push_back(opt->output);
               vertices = fileVertices = mesh.positions.size();
               triangles = mesh.triangles.size();
               break;
             }
             }
-            writeFullNormalMap(document.positions, opt->normalMap, files);
+            stageFullNormalMap(document.positions, opt->normalMap, set, files);
+            // The report is made before the commit: a failure there leaves the previous files.
+            std::ostringstream report;
             if (opt->json) {
-              std::cout << app::JsonReply{{"output", opt->output},
-                                          {"files", files},
-                                          {"lod", m},
-                                          {"vertices", vertices},
-                                          {"triangles", triangles},
-                                          {"file_vertices", fileVertices}}
-                               .dump()
-                        << "\n";
+              report << app::JsonReply{{"output", opt->output},
+                                       {"files", files},
+                                       {"lod", m},
+                                       {"vertices", vertices},
+                                       {"triangles", triangles},
+                                       {"file_vertices", fileVertices}}
+                            .dump()
+                     << "\n";
             } else {
-              std::cout << "wrote " << opt->output << ": " << vertices << " vertices, " << triangles
-                        << " triangles (level " << m << " of " << n << ")";
+              report << "wrote " << opt->output << ": " << vertices << " vertices, " << triangles
+                     << " triangles (level " << m << " of " << n << ")";
               if (fileVertices != vertices)
-                std::cout << ", " << fileVertices << " samples with texture coordinates";
-              std::cout << "\n";
+                report << ", " << fileVertices << " samples with texture coordinates";
+              report << "\n";
               for (std::size_t k = 1; k < files.size(); ++k)
-                std::cout << "wrote " << files[k] << "\n";
+                report << "wrote " << files[k] << "\n";
             }
+            set.commit();
+            std::cout << report.str();
             return kExitOk;
           }};
 }

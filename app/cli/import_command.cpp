@@ -11,6 +11,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace octaclay::app {
@@ -77,88 +78,90 @@ Command addImportCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
   sub->add_flag("--quiet", opt->quiet, "No progress line on stderr");
 
-  return {
-      sub, [opt]() {
-        core::requireValidSize(opt->size);
-        const auto start = std::chrono::steady_clock::now();
-        ProgressLine progress(!opt->quiet);
-        core::ValidationOptions validation;
-        validation.fillHoles = opt->fillHoles;
-        validation.maxHoleEdges = opt->maxHoleEdges;
-        const core::ValidatedMesh validated = core::loadGenus0Mesh(opt->input, validation);
-        const double loadMs = millisecondsSince(start);
+  return {sub, [opt]() {
+            core::requireValidSize(opt->size);
+            const auto start = std::chrono::steady_clock::now();
+            ProgressLine progress(!opt->quiet);
+            core::ValidationOptions validation;
+            validation.fillHoles = opt->fillHoles;
+            validation.maxHoleEdges = opt->maxHoleEdges;
+            const core::ValidatedMesh validated = core::loadGenus0Mesh(opt->input, validation);
+            const double loadMs = millisecondsSince(start);
 
-        const auto mapStart = std::chrono::steady_clock::now();
-        const core::SphericalMap map =
-            core::parameterizeOnSphere(validated.mesh, [&](float fraction) {
-              progress.report("mapping to the sphere", fraction);
-              return true;
-            });
-        const double mapMs = millisecondsSince(mapStart);
-        if (map.flipped > 0)
-          throw core::Error(core::ErrorKind::InvalidInput,
-                            opt->input + ": the spherical map folds over itself (" +
-                                std::to_string(map.flipped) +
-                                " flipped triangles); this mesh is not supported yet");
-        progress.report("resampling", 0.0f);
-        const auto sampleStart = std::chrono::steady_clock::now();
-        core::ImportedDiffuse diffuse;
-        const core::Document document =
-            core::importValidatedMesh(validated, map, opt->size, &diffuse);
-        const double sampleMs = millisecondsSince(sampleStart);
-        core::writeDocument(document, opt->output);
-        progress.report("measuring", 0.0f);
-        core::SurfaceDistanceOptions distanceOptions;
-        distanceOptions.samplesPerSurface = 200'000;
-        const core::ImportQuality quality =
-            core::measureImport(validated.mesh, map, document.positions, distanceOptions);
-        const double totalMs = millisecondsSince(start);
-        const core::MeshCleanup& c = validated.cleanup;
-        const std::string diffuseFrom = describe(diffuse);
+            const auto mapStart = std::chrono::steady_clock::now();
+            const core::SphericalMap map =
+                core::parameterizeOnSphere(validated.mesh, [&](float fraction) {
+                  progress.report("mapping to the sphere", fraction);
+                  return true;
+                });
+            const double mapMs = millisecondsSince(mapStart);
+            if (map.flipped > 0)
+              throw core::Error(core::ErrorKind::InvalidInput,
+                                opt->input + ": the spherical map folds over itself (" +
+                                    std::to_string(map.flipped) +
+                                    " flipped triangles); this mesh is not supported yet");
+            progress.report("resampling", 0.0f);
+            const auto sampleStart = std::chrono::steady_clock::now();
+            core::ImportedDiffuse diffuse;
+            const core::Document document =
+                core::importValidatedMesh(validated, map, opt->size, &diffuse);
+            const double sampleMs = millisecondsSince(sampleStart);
+            progress.report("measuring", 0.0f);
+            core::SurfaceDistanceOptions distanceOptions;
+            distanceOptions.samplesPerSurface = 200'000;
+            const core::ImportQuality quality =
+                core::measureImport(validated.mesh, map, document.positions, distanceOptions);
+            const double totalMs = millisecondsSince(start);
+            const core::MeshCleanup& c = validated.cleanup;
+            const std::string diffuseFrom = describe(diffuse);
 
-        if (opt->json) {
-          std::cout << app::JsonReply{{"input", opt->input},
-                                      {"output", opt->output},
-                                      {"size", opt->size},
-                                      {"mesh_vertices", validated.mesh.positions.size()},
-                                      {"mesh_triangles", validated.mesh.triangles.size()},
-                                      {"cleanup",
-                                       {{"unused_vertices_removed", c.unusedVerticesRemoved},
-                                        {"duplicate_vertices_welded", c.duplicateVerticesWelded},
-                                        {"degenerate_faces_removed", c.degenerateFacesRemoved},
-                                        {"duplicate_faces_removed", c.duplicateFacesRemoved},
-                                        {"faces_flipped", c.facesFlipped},
-                                        {"winding_reversed", c.windingReversed},
-                                        {"holes_filled", c.holesFilled}}},
-                                      {"diffuse", diffuseFrom},
-                                      {"notes", diffuse.notes},
-                                      {"flipped_triangles", quality.flipped},
-                                      {"stretch_l2", quality.stretchL2},
-                                      {"stretch_linf", quality.stretchLinf},
-                                      {"rms", quality.distance.rms},
-                                      {"hausdorff", quality.distance.hausdorff},
-                                      {"load_ms", loadMs},
-                                      {"parameterize_ms", mapMs},
-                                      {"resample_ms", sampleMs},
-                                      {"total_ms", totalMs}}
-                           .dump()
-                    << "\n";
-        } else {
-          std::cout << "imported " << opt->input << " (" << validated.mesh.triangles.size()
-                    << " triangles) as " << opt->output << ", N = " << opt->size << "\n"
-                    << "  stretch    L2 " << quality.stretchL2 << ", Linf " << quality.stretchLinf
-                    << ", flipped triangles " << quality.flipped << "\n"
-                    << "  distance   RMS " << quality.distance.rms * 100 << " %, Hausdorff "
-                    << quality.distance.hausdorff * 100 << " % of the bounding-box diagonal\n"
-                    << "  diffuse    " << diffuseFrom << "\n"
-                    << "  time       " << totalMs << " ms (parameterization " << mapMs << " ms)\n";
-          if (c.windingReversed) std::cout << "  note       faces were wound inward: reversed\n";
-          if (c.holesFilled) std::cout << "  note       " << c.holesFilled << " holes filled\n";
-          for (const std::string& note : diffuse.notes)
-            std::cout << "  note       " << note << "\n";
-        }
-        return kExitOk;
-      }};
+            // Measured and reported before the document is committed.
+            std::ostringstream report;
+            if (opt->json) {
+              report << app::JsonReply{{"input", opt->input},
+                                       {"output", opt->output},
+                                       {"size", opt->size},
+                                       {"mesh_vertices", validated.mesh.positions.size()},
+                                       {"mesh_triangles", validated.mesh.triangles.size()},
+                                       {"cleanup",
+                                        {{"unused_vertices_removed", c.unusedVerticesRemoved},
+                                         {"duplicate_vertices_welded", c.duplicateVerticesWelded},
+                                         {"degenerate_faces_removed", c.degenerateFacesRemoved},
+                                         {"duplicate_faces_removed", c.duplicateFacesRemoved},
+                                         {"faces_flipped", c.facesFlipped},
+                                         {"winding_reversed", c.windingReversed},
+                                         {"holes_filled", c.holesFilled}}},
+                                       {"diffuse", diffuseFrom},
+                                       {"notes", diffuse.notes},
+                                       {"flipped_triangles", quality.flipped},
+                                       {"stretch_l2", quality.stretchL2},
+                                       {"stretch_linf", quality.stretchLinf},
+                                       {"rms", quality.distance.rms},
+                                       {"hausdorff", quality.distance.hausdorff},
+                                       {"load_ms", loadMs},
+                                       {"parameterize_ms", mapMs},
+                                       {"resample_ms", sampleMs},
+                                       {"total_ms", totalMs}}
+                            .dump()
+                     << "\n";
+            } else {
+              report << "imported " << opt->input << " (" << validated.mesh.triangles.size()
+                     << " triangles) as " << opt->output << ", N = " << opt->size << "\n"
+                     << "  stretch    L2 " << quality.stretchL2 << ", Linf " << quality.stretchLinf
+                     << ", flipped triangles " << quality.flipped << "\n"
+                     << "  distance   RMS " << quality.distance.rms * 100 << " %, Hausdorff "
+                     << quality.distance.hausdorff * 100 << " % of the bounding-box diagonal\n"
+                     << "  diffuse    " << diffuseFrom << "\n"
+                     << "  time       " << totalMs << " ms (parameterization " << mapMs << " ms)\n";
+              if (c.windingReversed) report << "  note       faces were wound inward: reversed\n";
+              if (c.holesFilled) report << "  note       " << c.holesFilled << " holes filled\n";
+              for (const std::string& note : diffuse.notes)
+                report << "  note       " << note << "\n";
+            }
+            core::writeDocument(document, opt->output);
+            std::cout << report.str();
+            return kExitOk;
+          }};
 }
 
 } // namespace octaclay::app

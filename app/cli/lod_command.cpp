@@ -5,6 +5,7 @@
 #include "finite_arguments.h"
 #include "json_output.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/lod_export.h"
@@ -22,8 +23,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace octaclay::app {
@@ -197,19 +198,17 @@ Command addLodCommand(CLI::App& app) {
             const core::NormalMap map = core::bakeNormalMap(full, lod, *space, mapSize);
             const double bakeMs = millisecondsSince(bakeStart);
 
-            // The separate map first: if the mesh then fails, it is taken back too.
+            // Every file is staged, measured and reported before the set is committed: any
+            // failure until then leaves the previous files and no temporary.
             const auto writeStart = std::chrono::steady_clock::now();
+            core::OutputSet set;
             std::vector<std::string> files;
-            if (!opt->normalMap.empty()) core::writeNormalMap(map, opt->normalMap);
-            try {
-              for (const std::filesystem::path& f : core::writeLodMesh(lod, map, opt->output))
-                files.push_back(f.string());
-            } catch (...) {
-              std::error_code ec;
-              if (!opt->normalMap.empty()) std::filesystem::remove(opt->normalMap, ec);
-              throw;
+            for (const std::filesystem::path& f : core::stageLodMesh(lod, map, opt->output, set))
+              files.push_back(f.string());
+            if (!opt->normalMap.empty()) {
+              core::stageNormalMap(map, opt->normalMap, set);
+              files.push_back(opt->normalMap);
             }
-            if (!opt->normalMap.empty()) files.push_back(opt->normalMap);
             const double writeMs = millisecondsSince(writeStart);
 
             const auto measureStart = std::chrono::steady_clock::now();
@@ -219,51 +218,54 @@ Command addLodCommand(CLI::App& app) {
             const std::size_t fileVertices = core::lodVertices(lod).positions.size();
             const double totalMs = millisecondsSince(commandStart);
 
+            std::ostringstream report;
             if (opt->json) {
-              std::cout << app::JsonReply{{"input", opt->input},
-                                          {"output", opt->output},
-                                          {"files", files},
-                                          {"document_size", n},
-                                          {"size", lod.resampledSize},
-                                          {"method", core::methodName(*method)},
-                                          {"oversample", opt->oversample},
-                                          {"triangles", lod.mesh.triangles.size()},
-                                          {"vertices", lod.mesh.positions.size()},
-                                          {"file_vertices", fileVertices},
-                                          {"full_triangles", 2 * std::size_t(n) * std::size_t(n)},
-                                          {"normal_space", core::normalMapSpaceName(*space)},
-                                          {"map_size", mapSize},
-                                          {"saliency_computed", computeSaliency},
-                                          {"ms", lodMs},
-                                          {"saliency_ms", saliencyMs},
-                                          {"bake_ms", bakeMs},
-                                          {"write_ms", writeMs},
-                                          {"measure_ms", measureMs},
-                                          {"total_ms", totalMs},
-                                          {"rms", distance.rms},
-                                          {"hausdorff", distance.hausdorff},
-                                          {"psnr", distance.psnr},
-                                          {"diagonal", distance.diagonal}}
-                               .dump()
-                        << "\n";
+              report << app::JsonReply{{"input", opt->input},
+                                       {"output", opt->output},
+                                       {"files", files},
+                                       {"document_size", n},
+                                       {"size", lod.resampledSize},
+                                       {"method", core::methodName(*method)},
+                                       {"oversample", opt->oversample},
+                                       {"triangles", lod.mesh.triangles.size()},
+                                       {"vertices", lod.mesh.positions.size()},
+                                       {"file_vertices", fileVertices},
+                                       {"full_triangles", 2 * std::size_t(n) * std::size_t(n)},
+                                       {"normal_space", core::normalMapSpaceName(*space)},
+                                       {"map_size", mapSize},
+                                       {"saliency_computed", computeSaliency},
+                                       {"ms", lodMs},
+                                       {"saliency_ms", saliencyMs},
+                                       {"bake_ms", bakeMs},
+                                       {"write_ms", writeMs},
+                                       {"measure_ms", measureMs},
+                                       {"total_ms", totalMs},
+                                       {"rms", distance.rms},
+                                       {"hausdorff", distance.hausdorff},
+                                       {"psnr", distance.psnr},
+                                       {"diagonal", distance.diagonal}}
+                            .dump()
+                     << "\n";
             } else {
-              std::cout << "wrote " << opt->output << ": " << lod.mesh.triangles.size()
-                        << " triangles, " << lod.mesh.positions.size() << " vertices ("
-                        << (*method == core::ResampleMethod::Adaptive
-                                ? "samples of N = " + std::to_string(n)
-                                : "M = " + std::to_string(lod.resampledSize) +
-                                      " of N = " + std::to_string(n))
-                        << ", " << core::methodName(*method) << ") in " << lodMs << " ms\n"
-                        << "  against full resolution: RMS " << distance.rms * 100
-                        << " %, Hausdorff " << distance.hausdorff * 100
-                        << " % of the diagonal, PSNR " << distance.psnr << " dB\n"
-                        << "  " << core::normalMapSpaceName(*space) << "-space normal map "
-                        << mapSize << "x" << mapSize << " baked in " << bakeMs << " ms\n";
+              report << "wrote " << opt->output << ": " << lod.mesh.triangles.size()
+                     << " triangles, " << lod.mesh.positions.size() << " vertices ("
+                     << (*method == core::ResampleMethod::Adaptive
+                             ? "samples of N = " + std::to_string(n)
+                             : "M = " + std::to_string(lod.resampledSize) +
+                                   " of N = " + std::to_string(n))
+                     << ", " << core::methodName(*method) << ") in " << lodMs << " ms\n"
+                     << "  against full resolution: RMS " << distance.rms * 100 << " %, Hausdorff "
+                     << distance.hausdorff * 100 << " % of the diagonal, PSNR " << distance.psnr
+                     << " dB\n"
+                     << "  " << core::normalMapSpaceName(*space) << "-space normal map " << mapSize
+                     << "x" << mapSize << " baked in " << bakeMs << " ms\n";
               if (computeSaliency)
-                std::cout << "  saliency was empty: computed in " << saliencyMs << " ms\n";
+                report << "  saliency was empty: computed in " << saliencyMs << " ms\n";
               for (std::size_t k = 1; k < files.size(); ++k)
-                std::cout << "wrote " << files[k] << "\n";
+                report << "wrote " << files[k] << "\n";
             }
+            set.commit();
+            std::cout << report.str();
             return kExitOk;
           }};
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace octaclay::app {
 
@@ -37,24 +38,26 @@ Command addNewCommand(CLI::App& app) {
             const auto start = std::chrono::steady_clock::now();
             const core::Document document =
                 core::makeDocument(core::makeBaseShape(*shape, opt->size));
-            core::writeDocument(document, opt->output);
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
+            std::ostringstream report; // made before the save, which commits last
             if (opt->json) {
-              std::cout << app::JsonReply{{"output", opt->output},
-                                          {"shape", opt->shape},
-                                          {"size", opt->size},
-                                          {"vertices",
-                                           std::uint64_t(opt->size) * std::uint64_t(opt->size) + 2},
-                                          {"ms", ms}}
-                               .dump()
-                        << "\n";
+              report << app::JsonReply{{"output", opt->output},
+                                       {"shape", opt->shape},
+                                       {"size", opt->size},
+                                       {"vertices",
+                                        std::uint64_t(opt->size) * std::uint64_t(opt->size) + 2},
+                                       {"ms", ms}}
+                            .dump()
+                     << "\n";
             } else {
-              std::cout << "created " << opt->output << ": " << opt->shape << ", N = " << opt->size
-                        << " (" << opt->size + 1 << "x" << opt->size + 1 << " samples) in " << ms
-                        << " ms\n";
+              report << "created " << opt->output << ": " << opt->shape << ", N = " << opt->size
+                     << " (" << opt->size + 1 << "x" << opt->size + 1 << " samples) in " << ms
+                     << " ms\n";
             }
+            core::writeDocument(document, opt->output);
+            std::cout << report.str();
             return kExitOk;
           }};
 }

@@ -1,5 +1,6 @@
 #include "rd_measure.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/normals.h"
@@ -222,38 +223,14 @@ std::string rdCsv(std::span<const RdPoint> points) {
   return out.str();
 }
 
-namespace {
-
-void writeText(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".part";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file << text;
-    if (!file.flush())
-      throw core::Error(core::ErrorKind::Io, path.string() + ": cannot be written");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw core::Error(core::ErrorKind::Io, path.string() + ": cannot be written");
-  }
-}
-
-} // namespace
-
-std::vector<std::filesystem::path> writeRdReport(std::span<const RdPoint> points,
+std::vector<std::filesystem::path> stageRdReport(std::span<const RdPoint> points,
                                                  const std::string& title,
-                                                 const std::filesystem::path& directory) {
-  std::error_code ec;
-  std::filesystem::create_directories(directory, ec);
-  if (ec || !std::filesystem::is_directory(directory))
-    throw core::Error(core::ErrorKind::Io,
-                      directory.string() + ": cannot create the report folder");
+                                                 const std::filesystem::path& directory,
+                                                 core::OutputSet& set) {
   const std::vector<std::filesystem::path> paths{directory / "rd.md", directory / "rd.csv",
                                                  directory / "rd.png"};
-  writeText(paths[0], rdMarkdown(points, title));
-  writeText(paths[1], rdCsv(points));
+  set.stageText(paths[0], rdMarkdown(points, title));
+  set.stageText(paths[1], rdCsv(points));
   // One curve per codec (and exr mode), in the order met; Draco first, the reference.
   std::vector<core::RdSeries> series{{"draco (level 7)", {}}};
   std::map<std::string, std::size_t> seriesOf;
@@ -270,7 +247,21 @@ std::vector<std::filesystem::path> writeRdReport(std::span<const RdPoint> points
         {p.bitsPerVertex, p.exact ? std::numeric_limits<double>::infinity() : p.distortion.psnr,
          p.exact ? 0.0 : p.distortion.normalAngleDeg});
   }
-  core::writeRdPlot(series, title, paths[2]);
+  core::stageRdPlot(series, title, paths[2], set);
+  return paths;
+}
+
+std::vector<std::filesystem::path> writeRdReport(std::span<const RdPoint> points,
+                                                 const std::string& title,
+                                                 const std::filesystem::path& directory) {
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec || !std::filesystem::is_directory(directory))
+    throw core::Error(core::ErrorKind::Io,
+                      directory.string() + ": cannot create the report folder");
+  core::OutputSet set;
+  std::vector<std::filesystem::path> paths = stageRdReport(points, title, directory, set);
+  set.commit();
   return paths;
 }
 

@@ -4,6 +4,7 @@
 // mesh: the figures `octaclay-cli compress --json`, `compress --sweep` and bench_codecs print.
 
 #include "octaclay/core/codec/codec.h"
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
@@ -73,7 +74,13 @@ std::vector<RdPoint> sweep(const RdReference& reference, std::size_t samples);
 
 std::string rdMarkdown(std::span<const RdPoint> points, const std::string& title);
 std::string rdCsv(std::span<const RdPoint> points);
-/// Writes rd.md, rd.csv and rd.png into directory (created); returns the three paths.
+/// Stages rd.md, rd.csv and rd.png in directory (which must exist) into `set`; returns the
+/// three paths.
+std::vector<std::filesystem::path> stageRdReport(std::span<const RdPoint> points,
+                                                 const std::string& title,
+                                                 const std::filesystem::path& directory,
+                                                 core::OutputSet& set);
+/// stageRdReport into directory (created), committed at once; returns the three paths.
 std::vector<std::filesystem::path> writeRdReport(std::span<const RdPoint> points,
                                                  const std::string& title,
                                                  const std::filesystem::path& directory);

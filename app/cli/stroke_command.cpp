@@ -179,74 +179,74 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
-  return {sub, [opt]() {
-            requireFinite(opt->strength, "--strength");
-            requireFinite(opt->spacing, "--spacing");
-            if (!(opt->radius > 0 && opt->radius <= 1))
-              badArgument("--radius must be in (0, 1] (a fraction of the bounding-box diagonal)");
-            const std::vector<std::array<float, 2>> path = parsePath(opt->path);
-            const gpu::BrushCatalog catalog = scanBrushes();
-            const gpu::BrushManifest* brush = catalog.find(opt->brush);
-            if (!brush) {
-              // A brush folder of that name that failed to load: say why, not just "no brush".
-              for (const gpu::BrushCatalogError& e : catalog.errors())
-                if (e.path.parent_path().filename() == opt->brush ||
-                    e.path.filename() == opt->brush)
-                  throw gpu::BrushLoadError(e.message);
-              std::string known;
-              for (const auto& b : catalog.brushes())
-                known += (known.empty() ? "" : ", ") + b.id;
-              badArgument("no brush '" + opt->brush + "' (loaded: " + known + ")");
-            }
-            gpu::StrokeSettings settings;
-            settings.brush = brush->id;
-            settings.path = path;
-            settings.strength = opt->strength;
-            settings.spacing = opt->spacing;
-            settings.symmetry = parseSymmetry(opt->symmetry);
-            for (const std::string& p : opt->params) {
-              const auto eq = p.find('=');
-              if (eq == std::string::npos) badArgument("--param '" + p + "' is not id=value");
-              settings.parameters[p.substr(0, eq)] =
-                  parseParameter(*brush, p.substr(0, eq), p.substr(eq + 1));
-            }
+  return {
+      sub, [opt]() {
+        requireFinite(opt->strength, "--strength");
+        requireFinite(opt->spacing, "--spacing");
+        if (!(opt->radius > 0 && opt->radius <= 1))
+          badArgument("--radius must be in (0, 1] (a fraction of the bounding-box diagonal)");
+        const std::vector<std::array<float, 2>> path = parsePath(opt->path);
+        const gpu::BrushCatalog catalog = scanBrushes();
+        const gpu::BrushManifest* brush = catalog.find(opt->brush);
+        if (!brush) {
+          // A brush folder of that name that failed to load: say why, not just "no brush".
+          for (const gpu::BrushCatalogError& e : catalog.errors())
+            if (e.path.parent_path().filename() == opt->brush || e.path.filename() == opt->brush)
+              throw gpu::BrushLoadError(e.message);
+          std::string known;
+          for (const auto& b : catalog.brushes())
+            known += (known.empty() ? "" : ", ") + b.id;
+          badArgument("no brush '" + opt->brush + "' (loaded: " + known + ")");
+        }
+        gpu::StrokeSettings settings;
+        settings.brush = brush->id;
+        settings.path = path;
+        settings.strength = opt->strength;
+        settings.spacing = opt->spacing;
+        settings.symmetry = parseSymmetry(opt->symmetry);
+        for (const std::string& p : opt->params) {
+          const auto eq = p.find('=');
+          if (eq == std::string::npos) badArgument("--param '" + p + "' is not id=value");
+          settings.parameters[p.substr(0, eq)] =
+              parseParameter(*brush, p.substr(0, eq), p.substr(eq + 1));
+        }
 
-            if (!opt->view.empty()) {
-              const std::vector<float> eye = numbers(opt->view, ',');
-              if (eye.size() != 3) badArgument("--view takes the camera eye as x,y,z");
-              settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
-            }
+        if (!opt->view.empty()) {
+          const std::vector<float> eye = numbers(opt->view, ',');
+          if (eye.size() != 3) badArgument("--view takes the camera eye as x,y,z");
+          settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
+        }
 
-            core::Document document = core::readDocument(opt->input);
-            const gpu::GlContext context = gpu::GlContext::createHeadless();
-            gpu::BrushEngine engine;
-            loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
-            // Every dab applies the whole --strength (the modeller shares it out by spacing).
-            SculptSession session(DabStrength::Full);
-            session.setBrushes(engine, catalog);
-            session.loadBrush(*brush);
-            session.setDocument(std::move(document));
-            settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();
-            const gpu::StrokeResult result = session.strokeAlongPath(*brush, settings);
-            core::writeDocument(session.document(), opt->output);
-
-            const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
-            if (opt->json)
-              std::cout << app::JsonReply{{"output", opt->output},
-                                          {"brush", brush->id},
-                                          {"dabs", result.dabs},
-                                          {"engine_ms", result.engineMs},
-                                          {"ms_per_dab", perDab},
-                                          {"changed_tiles", result.undo.tiles.size()},
-                                          {"undo_bytes", result.undo.computeBytes()}}
-                               .dump()
-                        << "\n";
-            else
-              std::cout << "stroke " << brush->id << ": " << result.dabs << " dabs in "
-                        << result.engineMs << " ms (" << perDab << " ms per dab), wrote "
-                        << opt->output << "\n";
-            return kExitOk;
-          }};
+        core::Document document = core::readDocument(opt->input);
+        const gpu::GlContext context = gpu::GlContext::createHeadless();
+        gpu::BrushEngine engine;
+        loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
+        // Every dab applies the whole --strength (the modeller shares it out by spacing).
+        SculptSession session(DabStrength::Full);
+        session.setBrushes(engine, catalog);
+        session.loadBrush(*brush);
+        session.setDocument(std::move(document));
+        settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();
+        const gpu::StrokeResult result = session.strokeAlongPath(*brush, settings);
+        const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
+        std::ostringstream report; // made before the save, which commits last
+        if (opt->json)
+          report << app::JsonReply{{"output", opt->output},
+                                   {"brush", brush->id},
+                                   {"dabs", result.dabs},
+                                   {"engine_ms", result.engineMs},
+                                   {"ms_per_dab", perDab},
+                                   {"changed_tiles", result.undo.tiles.size()},
+                                   {"undo_bytes", result.undo.computeBytes()}}
+                        .dump()
+                 << "\n";
+        else
+          report << "stroke " << brush->id << ": " << result.dabs << " dabs in " << result.engineMs
+                 << " ms (" << perDab << " ms per dab), wrote " << opt->output << "\n";
+        core::writeDocument(session.document(), opt->output);
+        std::cout << report.str();
+        return kExitOk;
+      }};
 }
 
 } // namespace octaclay::app

@@ -10,8 +10,8 @@
 #include "octaclay/core/codec/compressed_document.h"
 
 #include "codec/byte_io.h"
-#include "detail/atomic_file.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
@@ -227,15 +227,7 @@ Document decompressDocument(std::span<const std::uint8_t> bytes) {
 void writeCompressedDocument(const Document& doc, const CompressOptions& options,
                              const std::filesystem::path& path) {
   const auto bytes = compressDocument(doc, options);
-  detail::writeAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(ErrorKind::Io, "cannot create " + temp.string());
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (out.fail())
-      throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the disk refused the data");
-  });
+  writeBytesAtomically(path, bytes);
 }
 
 Document readCompressedDocument(const std::filesystem::path& path) {

@@ -1,52 +1,275 @@
+// The atomic writer behind every output: staged temporaries, checked writes, fsync, rename under
+// a folder lock (atomic_output.h).
+
 #include "detail/atomic_file.h"
 
+#include "detail/temporary_registry.h"
+
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <random>
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <string>
 #include <system_error>
 
-namespace octaclay::core::detail {
+namespace octaclay::core {
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temporaryBeside(const fs::path& path) {
-  std::random_device device;
-  const auto tag = std::to_string(::getpid()) + "-" + std::to_string(device() % 1000000u);
-  fs::path temp = path;
-  temp.replace_filename("." + path.stem().string() + ".tmp-" + tag + path.extension().string());
-  return temp;
+std::atomic<unsigned> temporaryCounter{0};
+
+[[noreturn]] void failWrite(const fs::path& target, const std::string& why) {
+  throw Error(ErrorKind::Io, "cannot write " + target.string() + ": " + why);
 }
+
+std::string reason(int error) {
+  return std::generic_category().message(error); // thread-safe, unlike strerror
+}
+
+// Libraries (OpenEXR) name the file they wrote: the user asked for the target, not the hidden
+// temporary.
+std::string namingTarget(std::string message, const fs::path& temporary, const fs::path& target) {
+  const std::string hidden = temporary.string(), shown = target.string();
+  for (std::size_t at = message.find(hidden); at != std::string::npos;
+       at = message.find(hidden, at + shown.size()))
+    message.replace(at, hidden.size(), shown);
+  return message;
+}
+
+fs::path folderOf(const fs::path& target) {
+  return target.parent_path().empty() ? fs::path(".") : target.parent_path();
+}
+
+std::string temporaryPrefix(const fs::path& target) {
+  return "." + target.stem().string() + ".tmp-";
+}
+
+// `.stem.tmp-PID-N.ext` → PID, or 0 when the name is not one of target's temporaries.
+pid_t temporaryOwner(const std::string& name, const fs::path& target) {
+  const std::string prefix = temporaryPrefix(target), ext = target.extension().string();
+  if (name.size() <= prefix.size() + ext.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+    return 0;
+  const char* first = name.data() + prefix.size();
+  const char* last = name.data() + name.size() - ext.size();
+  long pid = 0;
+  unsigned counter = 0;
+  auto [afterPid, pidError] = std::from_chars(first, last, pid);
+  if (pidError != std::errc() || afterPid == last || *afterPid != '-' || pid <= 0) return 0;
+  auto [end, counterError] = std::from_chars(afterPid + 1, last, counter);
+  if (counterError != std::errc() || end != last) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+// A killed run (SIGKILL, power loss) cannot clean up: its temporaries go with the next save.
+void removeStaleTemporaries(const fs::path& target) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folderOf(target), ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temporaryOwner(it->path().filename().string(), target);
+    if (owner == 0 || owner == ::getpid()) continue;
+    if (::kill(owner, 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
+}
+
+void fsyncPath(const fs::path& path, int flags, const fs::path& target) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0) failWrite(target, reason(errno));
+  const int result = ::fsync(fd);
+  const int error = errno;
+  ::close(fd);
+  // Folders on some file systems do not support fsync; the rename is still done.
+  if (result != 0 && error != EINVAL && error != EROFS) failWrite(target, reason(error));
+}
+
+// Holds an exclusive flock on each folder a set commits into (sorted, so two sets never wait
+// on each other in a cycle); released when destroyed.
+class FolderLocks {
+public:
+  explicit FolderLocks(std::vector<fs::path> folders) {
+    std::sort(folders.begin(), folders.end());
+    folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
+    for (const fs::path& folder : folders) {
+      const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+      if (fd < 0) continue; // the renames below report the folder's problem
+      while (::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
+      }
+      fds_.push_back(fd);
+    }
+  }
+  FolderLocks(const FolderLocks&) = delete;
+  FolderLocks& operator=(const FolderLocks&) = delete;
+  ~FolderLocks() {
+    for (const int fd : fds_)
+      ::close(fd);
+  }
+  void syncAll() const {
+    for (const int fd : fds_)
+      ::fsync(fd);
+  }
+
+private:
+  std::vector<int> fds_;
+};
 
 } // namespace
 
-void writeAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
-  const fs::path parent = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+void requireWritableTarget(const fs::path& target) {
+  if (target.empty()) throw Error(ErrorKind::InvalidArgument, "no output file given: name one");
+  const fs::path folder = folderOf(target);
   std::error_code ec;
-  if (!fs::is_directory(parent, ec))
-    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": folder " + parent.string() +
-                                   " does not exist");
-  if (fs::is_directory(path, ec))
-    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": it is a folder");
+  if (!fs::is_directory(folder, ec))
+    failWrite(target, "folder " + folder.string() + " does not exist");
+  const fs::file_status status = fs::status(target, ec);
+  if (ec || status.type() == fs::file_type::not_found || status.type() == fs::file_type::regular)
+    return;
+  if (status.type() == fs::file_type::directory) failWrite(target, "it is a folder");
+  failWrite(target, "it is not a regular file (a device, pipe or socket); it is refused, not "
+                    "replaced: choose a file path");
+}
 
-  const fs::path temp = temporaryBeside(path);
+void writeBytesToFile(const fs::path& path, std::span<const std::uint8_t> bytes,
+                      const fs::path& shown) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) failWrite(shown, reason(errno));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      failWrite(shown, reason(error));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) failWrite(shown, reason(errno));
+}
+
+OutputSet::~OutputSet() {
+  discard();
+}
+
+void OutputSet::discard() noexcept {
+  for (const Staged& s : staged_) {
+    ::unlink(s.temporary.c_str());
+    detail::unregisterTemporary(s.slot);
+  }
+  staged_.clear();
+}
+
+void OutputSet::stage(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+  requireWritableTarget(target);
+  for (const Staged& s : staged_)
+    if (s.target == target) failWrite(target, "the same file is written twice by one command");
+  removeStaleTemporaries(target);
+
+  Staged staged{target, {}, -1};
+  int fd = -1;
+  for (int attempt = 0; fd < 0 && attempt < 100; ++attempt) {
+    staged.temporary = target;
+    staged.temporary.replace_filename(temporaryPrefix(target) + std::to_string(::getpid()) + "-" +
+                                      std::to_string(temporaryCounter++) +
+                                      target.extension().string());
+    // Registered before it exists, so a signal at any moment finds it.
+    staged.slot = detail::registerTemporary(staged.temporary);
+    fd = ::open(staged.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) break;
+    const int error = errno;
+    detail::unregisterTemporary(staged.slot);
+    if (error != EEXIST) failWrite(target, reason(error));
+  }
+  if (fd < 0) failWrite(target, "no free temporary name beside it");
+  ::close(fd);
+  staged_.push_back(staged);
+  targets_.push_back(target);
+  const auto dropLast = [&] {
+    staged_.pop_back();
+    targets_.pop_back();
+    ::unlink(staged.temporary.c_str());
+    detail::unregisterTemporary(staged.slot);
+  };
+
   try {
-    write(temp);
-  } catch (const Error&) {
-    fs::remove(temp, ec);
+    write(staged.temporary);
+    fsyncPath(staged.temporary, O_RDONLY, target);
+    // A replaced file keeps its permissions (set only now: the writer may need to open it).
+    struct stat previous {};
+    if (::stat(target.c_str(), &previous) == 0)
+      ::chmod(staged.temporary.c_str(), previous.st_mode & 0777);
+  } catch (const Error& e) {
+    dropLast();
+    throw Error(e.kind(), namingTarget(e.what(), staged.temporary, target));
+  } catch (const std::bad_alloc&) {
+    dropLast();
     throw;
   } catch (const std::exception& e) {
-    fs::remove(temp, ec);
-    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + e.what());
-  }
-  fs::rename(temp, path, ec);
-  if (ec) {
-    const std::string why = ec.message();
-    fs::remove(temp, ec);
-    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + why);
+    dropLast();
+    failWrite(target, namingTarget(e.what(), staged.temporary, target));
   }
 }
 
-} // namespace octaclay::core::detail
+void OutputSet::stageBytes(const fs::path& target, std::span<const std::uint8_t> bytes) {
+  stage(target, [&](const fs::path& temporary) { writeBytesToFile(temporary, bytes, target); });
+}
+
+void OutputSet::stageText(const fs::path& target, std::string_view text) {
+  stageBytes(target, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+void OutputSet::commit() {
+  std::vector<fs::path> folders;
+  for (const Staged& s : staged_)
+    folders.push_back(fs::absolute(folderOf(s.target)).lexically_normal());
+  const FolderLocks locks(std::move(folders));
+  while (!staged_.empty()) {
+    const Staged& s = staged_.front();
+    if (::rename(s.temporary.c_str(), s.target.c_str()) != 0) {
+      const int error = errno;
+      const fs::path target = s.target;
+      discard();
+      failWrite(target, reason(error));
+    }
+    detail::unregisterTemporary(s.slot);
+    staged_.erase(staged_.begin());
+  }
+  locks.syncAll();
+}
+
+const std::vector<fs::path>& OutputSet::targets() const {
+  return targets_;
+}
+
+void writeFileAtomically(const fs::path& target,
+                         const std::function<void(const fs::path&)>& write) {
+  OutputSet set;
+  set.stage(target, write);
+  set.commit();
+}
+
+void writeBytesAtomically(const fs::path& target, std::span<const std::uint8_t> bytes) {
+  OutputSet set;
+  set.stageBytes(target, bytes);
+  set.commit();
+}
+
+namespace detail {
+
+void writeAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
+  writeFileAtomically(path, write);
+}
+
+} // namespace detail
+} // namespace octaclay::core

@@ -263,7 +263,7 @@ void writeDocument(const Document& document, const fs::path& path) {
     // OutputFile writes its offset table in its destructor and swallows errors there, so the
     // stream is ours and its state is checked after the file is gone.
     std::ofstream stream(temp, std::ios::binary | std::ios::trunc);
-    if (!stream) throw Error(ErrorKind::Io, "cannot create " + temp.string());
+    if (!stream) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": cannot open it");
     {
       Imf::StdOFStream exrStream(stream, temp.c_str());
       Imf::OutputFile file(exrStream, header, exrThreads(header.compression()));

@@ -1,7 +1,6 @@
 #include "octaclay/core/document/image_io.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <opencv2/core.hpp>
@@ -9,7 +8,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <system_error>
+#include <vector>
 
 namespace octaclay::core {
 
@@ -82,15 +83,16 @@ void writePng(const RasterImage& image, const std::filesystem::path& path) {
     cv::cvtColor(rgb, bgr, cv::COLOR_RGBA2BGRA);
   else
     bgr = rgb;
-  detail::writeAtomically(path, [&](const std::filesystem::path& temporary) {
-    bool ok = false;
-    try {
-      ok = cv::imwrite(temporary.string(), bgr);
-    } catch (const cv::Exception&) {
-      ok = false;
-    }
-    if (!ok) throw Error(ErrorKind::Io, path.string() + ": cannot write the PNG");
-  });
+  // Encoded in memory and written by the checked writer: imwrite does not report a failed close.
+  std::vector<std::uint8_t> bytes;
+  bool ok = false;
+  try {
+    ok = cv::imencode(".png", bgr, bytes);
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (!ok) throw Error(ErrorKind::Io, path.string() + ": cannot encode the PNG");
+  writeBytesAtomically(path, bytes);
 }
 
 } // namespace octaclay::core

@@ -5,8 +5,7 @@
 
 #include "export/glb_writer.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
@@ -134,9 +133,9 @@ tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textur
 } // namespace
 
 void writeGlbFile(const GlbMesh& mesh, std::span<const GlbTexture> textures,
-                  const GlbMaterial& material, const fs::path& path) {
+                  const GlbMaterial& material, const fs::path& path, OutputSet& set) {
   const tinygltf::Model model = glbModel(mesh, textures, material);
-  writeAtomically(path, [&](const fs::path& temporary) {
+  set.stage(path, [&](const fs::path& temporary) {
     std::ofstream out(temporary, std::ios::binary);
     if (!out) throw Error(ErrorKind::Io, "cannot open " + path.string() + " for writing");
     tinygltf::TinyGLTF writer;

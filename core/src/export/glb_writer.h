@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+namespace octaclay::core {
+class OutputSet;
+}
+
 namespace octaclay::core::detail {
 
 /// The primitive's attributes, one per vertex, and its triangles.
@@ -41,10 +45,10 @@ struct GlbMaterial {
   int objectSpaceNormalTexture = -1;
 };
 
-/// Writes the .glb atomically: buffer views 4-byte aligned in the order positions, normals,
-/// tangents, texture coordinates, indices (uint32), then the textures. Throws Error(Io) when
-/// it cannot be written.
+/// Stages the .glb into `set` (the caller commits): buffer views 4-byte aligned in the order
+/// positions, normals, tangents, texture coordinates, indices (uint32), then the textures. Throws
+/// Error(Io) when it cannot be written.
 void writeGlbFile(const GlbMesh& mesh, std::span<const GlbTexture> textures,
-                  const GlbMaterial& material, const std::filesystem::path& path);
+                  const GlbMaterial& material, const std::filesystem::path& path, OutputSet& set);
 
 } // namespace octaclay::core::detail

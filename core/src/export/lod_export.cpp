@@ -7,10 +7,12 @@
 #include "export/obj_writer.h"
 #include "lod/normal_map_encoding.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/file_extension.h"
 #include "octaclay/core/lod/lod_vertices.h"
 
+#include <algorithm>
 #include <string>
 
 namespace octaclay::core {
@@ -43,7 +45,7 @@ std::string mtlText(const std::string& mapName, NormalMapSpace space) {
          mapName + "\nmap_Bump " + mapName + "\n";
 }
 
-std::vector<fs::path> writeObj(const LodMesh& lod, const NormalMap& map, const fs::path& path) {
+void stageObj(const LodMesh& lod, const NormalMap& map, const fs::path& path, OutputSet& set) {
   const std::string stem = path.stem().string();
   const fs::path mtlPath = fs::path(path).replace_filename(stem + ".mtl");
   const fs::path mapPath = fs::path(path).replace_filename(stem + "_normal.png");
@@ -65,11 +67,10 @@ std::vector<fs::path> writeObj(const LodMesh& lod, const NormalMap& map, const f
                                  mtlPath.filename().string(), "octaclay_lod"};
   const detail::ObjMap maps[] = {{mapPath, detail::encodeNormalMapPng(map)}};
   detail::writeObjWithMaterial(mesh, header, maps, mtlText(mapPath.filename().string(), map.space),
-                               mtlPath, path);
-  return {path, mtlPath, mapPath};
+                               mtlPath, path, set);
 }
 
-void writeGlb(const LodMesh& lod, const NormalMap& map, const fs::path& path) {
+void stageGlb(const LodMesh& lod, const NormalMap& map, const fs::path& path, OutputSet& set) {
   const LodVertices v = lodVertices(lod);
   const detail::GlbMesh mesh{v.positions, v.normals, v.tangents, v.uvs, v.triangles};
   const detail::GlbTexture textures[] = {
@@ -85,23 +86,37 @@ void writeGlb(const LodMesh& lod, const NormalMap& map, const fs::path& path) {
     material.normalTexture = 0;
   else
     material.objectSpaceNormalTexture = 0;
-  detail::writeGlbFile(mesh, textures, material, path);
+  detail::writeGlbFile(mesh, textures, material, path, set);
 }
 
 } // namespace
 
-std::vector<fs::path> writeLodMesh(const LodMesh& lod, const NormalMap& map, const fs::path& path) {
+std::vector<fs::path> stageLodMesh(const LodMesh& lod, const NormalMap& map, const fs::path& path,
+                                   OutputSet& set) {
   detail::requireNormalMap(map);
   if (lod.mesh.triangles.empty())
     throw Error(ErrorKind::InvalidArgument, "cannot write " + path.string() + ": the LOD is empty");
   const std::string ext = lowerExtension(path);
-  if (ext == ".glb") {
-    writeGlb(lod, map, path);
-    return {path};
-  }
-  if (ext == ".obj") return writeObj(lod, map, path);
-  throw Error(ErrorKind::InvalidArgument, "cannot write the LOD to " + path.string() +
-                                              ": use .obj (with .mtl and map) or .glb");
+  if (ext != ".glb" && ext != ".obj")
+    throw Error(ErrorKind::InvalidArgument, "cannot write the LOD to " + path.string() +
+                                                ": use .obj (with .mtl and map) or .glb");
+  const std::size_t first = set.targets().size();
+  if (ext == ".glb")
+    stageGlb(lod, map, path, set);
+  else
+    stageObj(lod, map, path, set);
+  // OBJ, MTL, map: the reverse of their staging order.
+  std::vector<fs::path> files(set.targets().begin() + static_cast<std::ptrdiff_t>(first),
+                              set.targets().end());
+  std::reverse(files.begin(), files.end());
+  return files;
+}
+
+std::vector<fs::path> writeLodMesh(const LodMesh& lod, const NormalMap& map, const fs::path& path) {
+  OutputSet set;
+  std::vector<fs::path> files = stageLodMesh(lod, map, path, set);
+  set.commit();
+  return files;
 }
 
 } // namespace octaclay::core

@@ -1,7 +1,6 @@
 #include "octaclay/core/export/mesh_io.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -10,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 
 namespace octaclay::core {
 namespace fs = std::filesystem;
@@ -60,7 +60,7 @@ std::optional<MeshFormat> meshFormatFromPath(const fs::path& path) {
   return std::nullopt;
 }
 
-void writeMesh(const TriangleMesh& mesh, const fs::path& path) {
+void stageMesh(const TriangleMesh& mesh, const fs::path& path, OutputSet& set) {
   const auto format = meshFormatFromPath(path);
   if (!format)
     throw Error(ErrorKind::InvalidArgument,
@@ -71,17 +71,27 @@ void writeMesh(const TriangleMesh& mesh, const fs::path& path) {
   OpenMesh::IO::Options options;
   if (*format == MeshFormat::Ply || *format == MeshFormat::Stl)
     options += OpenMesh::IO::Options::Binary;
-  detail::writeAtomically(path, [&](const fs::path& temp) {
-    // OpenMesh picks its writer from the extension, which the temporary keeps (lower-cased).
-    fs::path lower = temp;
-    std::string ext = temp.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    lower.replace_extension(ext);
-    if (!OpenMesh::IO::write_mesh(om, lower.string(), options, kFloatDigits))
+  const std::string ext = "." + std::string(*format == MeshFormat::Ply   ? "ply"
+                                            : *format == MeshFormat::Stl ? "stl"
+                                            : *format == MeshFormat::Obj ? "obj"
+                                                                         : "off");
+  set.stage(path, [&](const fs::path& temp) {
+    // Our stream, not OpenMesh's: OpenMesh reports success when the disk refused the bytes.
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": cannot open it");
+    if (!OpenMesh::IO::write_mesh(om, out, ext, options, kFloatDigits))
       throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the mesh writer failed");
-    if (lower != temp) fs::rename(lower, temp);
+    out.close();
+    if (out.fail())
+      throw Error(ErrorKind::Io, "cannot write " + path.string() +
+                                     ": the disk refused the data (full, or over a size limit)");
   });
+}
+
+void writeMesh(const TriangleMesh& mesh, const fs::path& path) {
+  OutputSet set;
+  stageMesh(mesh, path, set);
+  set.commit();
 }
 
 TriangleMesh readMesh(const fs::path& path) {

@@ -3,8 +3,7 @@
 
 #include "export/obj_writer.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <charconv>
@@ -89,45 +88,21 @@ void writeObjText(const ObjMesh& mesh, const ObjHeader& header, const fs::path& 
   w.finish();
 }
 
-// Writes bytes to path atomically.
-void writeFileBytes(std::span<const unsigned char> bytes, const fs::path& path) {
-  writeAtomically(path, [&](const fs::path& temporary) {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + " (disk full?)");
-  });
-}
-
 } // namespace
 
 void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
                           std::span<const ObjMap> maps, const std::string& mtl,
-                          const fs::path& mtlPath, const fs::path& objPath) {
+                          const fs::path& mtlPath, const fs::path& objPath, OutputSet& set) {
   if ((!mesh.texcoordTriangles.empty() && mesh.texcoordTriangles.size() != mesh.triangles.size()) ||
       mesh.normals.size() != mesh.positions.size())
     throw Error(ErrorKind::InvalidArgument,
                 "cannot write " + objPath.string() +
                     ": the OBJ's triangles or normals disagree in count");
-  std::vector<fs::path> written;
-  try {
-    for (const ObjMap& map : maps) {
-      writeFileBytes(map.bytes, map.path);
-      written.push_back(map.path);
-    }
-    writeFileBytes(std::span(reinterpret_cast<const unsigned char*>(mtl.data()), mtl.size()),
-                   mtlPath);
-    written.push_back(mtlPath);
-    writeAtomically(objPath, [&](const fs::path& temporary) {
-      writeObjText(mesh, header, temporary, objPath);
-    });
-  } catch (...) {
-    std::error_code ec;
-    for (const fs::path& file : written)
-      fs::remove(file, ec);
-    throw;
-  }
+  for (const ObjMap& map : maps)
+    set.stageBytes(map.path, map.bytes);
+  set.stageText(mtlPath, mtl);
+  set.stage(objPath,
+            [&](const fs::path& temporary) { writeObjText(mesh, header, temporary, objPath); });
 }
 
 } // namespace octaclay::core::detail

@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+namespace octaclay::core {
+class OutputSet;
+}
+
 namespace octaclay::core::detail {
 
 /// What the OBJ holds. Positions and normals share one index set (`vn` k belongs to `v` k);
@@ -39,13 +43,13 @@ struct ObjHeader {
   std::string material;
 };
 
-/// Writes the maps, then the MTL text to mtlPath, then the OBJ (`f v/vt/v`, counted from 1,
-/// numbers in their shortest round-trip form): each file atomically, the OBJ last so that a
-/// complete OBJ never names a missing file; on failure the files this call wrote are removed.
-/// Throws Error(Io) when a file cannot be written.
+/// Stages the maps, then the MTL text to mtlPath, then the OBJ (`f v/vt/v`, counted from 1,
+/// numbers in their shortest round-trip form) into `set`; the caller commits the set, so the
+/// previous OBJ, MTL and maps stay whole until every file was written. Throws Error(Io) when a
+/// file cannot be written (the files staged so far are dropped with the set).
 void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
                           std::span<const ObjMap> maps, const std::string& mtl,
                           const std::filesystem::path& mtlPath,
-                          const std::filesystem::path& objPath);
+                          const std::filesystem::path& objPath, OutputSet& set);
 
 } // namespace octaclay::core::detail

@@ -8,6 +8,7 @@
 #include "export/obj_writer.h"
 #include "export/sample_grid.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <array>
@@ -52,7 +53,7 @@ std::vector<fs::path> texturedObjFiles(const fs::path& objPath) {
   return files;
 }
 
-void writeTexturedObj(const Document& doc, int step, const fs::path& objPath) {
+void stageTexturedObj(const Document& doc, int step, const fs::path& objPath, OutputSet& set) {
   const detail::SampleGrid grid = detail::makeGrid(doc, step);
   const std::vector<fs::path> files = texturedObjFiles(objPath);
   if (objPath.filename() == files[1].filename())
@@ -71,10 +72,16 @@ void writeTexturedObj(const Document& doc, int step, const fs::path& objPath) {
                                  {files[3], encodePng(featureMap(doc, 1))},
                                  {files[4], encodePng(featureMap(doc, 2))},
                                  {files[5], encodePng(featureMap(doc, 0))}};
-  detail::writeObjWithMaterial(mesh, header, maps, mtlText(files), files[1], objPath);
+  detail::writeObjWithMaterial(mesh, header, maps, mtlText(files), files[1], objPath, set);
 }
 
-void writeGlb(const Document& doc, int step, const fs::path& glbPath) {
+void writeTexturedObj(const Document& doc, int step, const fs::path& objPath) {
+  OutputSet set;
+  stageTexturedObj(doc, step, objPath, set);
+  set.commit();
+}
+
+void stageGlb(const Document& doc, int step, const fs::path& glbPath, OutputSet& set) {
   const detail::SampleGrid grid = detail::makeGrid(doc, step);
   const std::vector<Vec2f> texcoords = detail::gridTexcoords(grid, false);
   const std::vector<std::array<std::uint32_t, 3>> triangles = detail::gridTriangles(grid.m);
@@ -95,7 +102,13 @@ void writeGlb(const Document& doc, int step, const fs::path& glbPath) {
   material.name = material.meshName = material.nodeName = "octaclay";
   material.baseColorTexture = 0;
   material.metallicRoughnessTexture = 1;
-  detail::writeGlbFile(mesh, textures, material, glbPath);
+  detail::writeGlbFile(mesh, textures, material, glbPath, set);
+}
+
+void writeGlb(const Document& doc, int step, const fs::path& glbPath) {
+  OutputSet set;
+  stageGlb(doc, step, glbPath, set);
+  set.commit();
 }
 
 } // namespace octaclay::core

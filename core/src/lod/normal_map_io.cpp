@@ -1,9 +1,9 @@
 // Normal maps on disk: 8-bit PNG through OpenCV (what every viewer reads) or float32 EXR through
 // OpenEXR (no quantisation, for offline renderers and tests).
 
-#include "detail/atomic_file.h"
 #include "lod/normal_map_encoding.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/file_extension.h"
 #include "octaclay/core/lod/normal_map.h"
@@ -12,6 +12,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -59,15 +60,8 @@ std::vector<unsigned char> encodeNormalMapPng(const NormalMap& map) {
 
 namespace {
 
-void writePngBytes(const std::vector<unsigned char>& png, const std::filesystem::path& temporary,
-                   const std::filesystem::path& shown) {
-  std::ofstream out(temporary, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  out.close();
-  if (!out) throw Error(ErrorKind::Io, "cannot write " + shown.string());
-}
-
-void writeExr(const NormalMap& map, const std::filesystem::path& temporary) {
+void writeExr(const NormalMap& map, const std::filesystem::path& temporary,
+              const std::filesystem::path& shown) {
   const int r = map.resolution;
   Imf::Header header(r, r);
   header.compression() = Imf::ZIP_COMPRESSION;
@@ -79,24 +73,34 @@ void writeExr(const NormalMap& map, const std::filesystem::path& temporary) {
   frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
   frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
   frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
-  Imf::OutputFile file(temporary.c_str(), header);
-  file.setFrameBuffer(frame);
-  file.writePixels(r);
+  // OutputFile writes its offset table in its destructor and swallows errors there, so the
+  // stream is ours and its state is checked after the file is gone.
+  std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
+  {
+    Imf::StdOFStream exrStream(stream, temporary.c_str());
+    Imf::OutputFile file(exrStream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(r);
+  }
+  stream.close();
+  if (stream.fail())
+    throw Error(ErrorKind::Io, "cannot write " + shown.string() +
+                                   ": the disk refused the data (full, or over a size limit)");
 }
 
 } // namespace
 
-void writeNormalMap(const NormalMap& map, const std::filesystem::path& path) {
+void stageNormalMap(const NormalMap& map, const std::filesystem::path& path, OutputSet& set) {
   detail::requireNormalMap(map);
   const std::string ext = lowerExtension(path);
   if (ext == ".png") {
-    const std::vector<unsigned char> png = detail::encodeNormalMapPng(map);
-    detail::writeAtomically(
-        path, [&](const std::filesystem::path& temporary) { writePngBytes(png, temporary, path); });
+    set.stageBytes(path, detail::encodeNormalMapPng(map));
   } else if (ext == ".exr") {
-    detail::writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    set.stage(path, [&](const std::filesystem::path& temporary) {
       try {
-        writeExr(map, temporary);
+        writeExr(map, temporary, path);
+      } catch (const Error&) {
+        throw;
       } catch (const std::exception& e) {
         throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + e.what());
       }
@@ -105,6 +109,12 @@ void writeNormalMap(const NormalMap& map, const std::filesystem::path& path) {
     throw Error(ErrorKind::InvalidArgument, "cannot write a normal map to " + path.string() +
                                                 ": use .png (8-bit) or .exr (float)");
   }
+}
+
+void writeNormalMap(const NormalMap& map, const std::filesystem::path& path) {
+  OutputSet set;
+  stageNormalMap(map, path, set);
+  set.commit();
 }
 
 } // namespace octaclay::core

@@ -1,7 +1,6 @@
 #include "octaclay/core/measure/rd_plot.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <opencv2/core.hpp>
@@ -10,8 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 namespace octaclay::core {
 namespace {
@@ -168,8 +169,8 @@ void drawPanel(cv::Mat canvas, std::span<const RdSeries> series, bool anglePanel
 
 } // namespace
 
-void writeRdPlot(std::span<const RdSeries> series, const std::string& title,
-                 const std::filesystem::path& png) {
+void stageRdPlot(std::span<const RdSeries> series, const std::string& title,
+                 const std::filesystem::path& png, OutputSet& set) {
   const bool drawable = std::any_of(series.begin(), series.end(), [](const RdSeries& s) {
     return !panelPoints(s, false).empty() || !panelPoints(s, true).empty();
   });
@@ -178,10 +179,17 @@ void writeRdPlot(std::span<const RdSeries> series, const std::string& title,
   cv::putText(image, title, {kLeft, 28}, cv::FONT_HERSHEY_SIMPLEX, 0.8, kInk, 2, cv::LINE_AA);
   for (int k = 0; k < 2; ++k)
     drawPanel(image(cv::Rect(k * kPanelWidth, 40, kPanelWidth, kHeight)), series, k == 1);
-  detail::writeAtomically(png, [&](const std::filesystem::path& temporary) {
-    if (!cv::imwrite(temporary.string(), image, {cv::IMWRITE_PNG_COMPRESSION, 9}))
-      throw Error(ErrorKind::Io, png.string() + ": cannot write the plot");
-  });
+  std::vector<std::uint8_t> bytes;
+  if (!cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, 9}))
+    throw Error(ErrorKind::Io, png.string() + ": cannot encode the plot");
+  set.stageBytes(png, bytes);
+}
+
+void writeRdPlot(std::span<const RdSeries> series, const std::string& title,
+                 const std::filesystem::path& png) {
+  OutputSet set;
+  stageRdPlot(series, title, png, set);
+  set.commit();
 }
 
 } // namespace octaclay::core

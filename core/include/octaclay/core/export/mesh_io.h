@@ -17,6 +17,11 @@ std::optional<MeshFormat> meshFormatFromPath(const std::filesystem::path& path);
 /// Throws Error(InvalidArgument) for an unknown extension, Error(Io) when writing fails.
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
 
+class OutputSet;
+
+/// writeMesh's file staged into `set` (atomic_output.h), committed with the caller's others.
+void stageMesh(const TriangleMesh& mesh, const std::filesystem::path& path, OutputSet& set);
+
 /// Reads a triangle mesh through OpenMesh (polygons are triangulated). STL's repeated corners
 /// are merged. Throws Error(Io) when unreadable, Error(InvalidInput) when empty or malformed.
 TriangleMesh readMesh(const std::filesystem::path& path);

@@ -29,9 +29,9 @@ std::vector<std::filesystem::path> texturedObjFiles(const std::filesystem::path&
 /// (x, y), OBJ's v axis pointing up), 2M² faces `f a/a/a b/b/b c/c/c` counter-clockwise seen
 /// from outside, and `mtllib`/`usemtl` naming one material whose MTL (`Kd 1 1 1`, `map_Kd`,
 /// `Ks 1 1 1`, `map_Ks`, `Ns`, `map_refl`, `bump`) references the PNG maps of
-/// texturedObjFiles(objPath), each (N+1)² pixels; an unpainted layer gives a uniform map. Each
-/// file is written atomically; the OBJ is written last, and on failure the files this call
-/// already wrote are removed. Positions are taken from each sample's canonical sample, so
+/// texturedObjFiles(objPath), each (N+1)² pixels; an unpainted layer gives a uniform map. The
+/// files are written as one set (atomic_output.h): on failure the previous OBJ, MTL and maps
+/// all stay as they were. Positions are taken from each sample's canonical sample, so
 /// identified vertices are equal even in an unseamed image.
 /// Throws Error(InvalidArgument) when step is not a power of two with N/step ≥ 2 or a layer's
 /// texel count disagrees with N, Error(Io) when a file cannot be written.
@@ -49,5 +49,13 @@ void writeTexturedObj(const Document& doc, int step, const std::filesystem::path
 /// Throws Error(InvalidArgument) for a bad step, a layer that disagrees with N, or a result
 /// over glTF's 4 GiB binary limit (use a larger step), Error(Io) when it cannot be written.
 void writeGlb(const Document& doc, int step, const std::filesystem::path& glbPath);
+
+class OutputSet;
+
+/// writeTexturedObj's and writeGlb's files staged into `set` (atomic_output.h), committed with
+/// the caller's others.
+void stageTexturedObj(const Document& doc, int step, const std::filesystem::path& objPath,
+                      OutputSet& set);
+void stageGlb(const Document& doc, int step, const std::filesystem::path& glbPath, OutputSet& set);
 
 } // namespace octaclay::core

@@ -45,4 +45,9 @@ NormalMap bakeNormalMap(const GeometryImage& full, const LodMesh& lod, NormalMap
 /// Throws Error(InvalidArgument) for another extension, Error(Io) when it cannot be written.
 void writeNormalMap(const NormalMap& map, const std::filesystem::path& path);
 
+class OutputSet;
+
+/// writeNormalMap's file staged into `set` (atomic_output.h), committed with the caller's others.
+void stageNormalMap(const NormalMap& map, const std::filesystem::path& path, OutputSet& set);
+
 } // namespace octaclay::core

@@ -27,4 +27,10 @@ struct RdSeries {
 void writeRdPlot(std::span<const RdSeries> series, const std::string& title,
                  const std::filesystem::path& png);
 
+class OutputSet;
+
+/// writeRdPlot's file staged into `set` (atomic_output.h), committed with the caller's others.
+void stageRdPlot(std::span<const RdSeries> series, const std::string& title,
+                 const std::filesystem::path& png, OutputSet& set);
+
 } // namespace octaclay::core
