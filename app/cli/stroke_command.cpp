@@ -26,7 +26,8 @@ namespace {
   throw core::Error(core::ErrorKind::InvalidArgument, message);
 }
 
-std::vector<float> numbers(const std::string& text, char separator) {
+// what names the option in messages ("--view", "--param amount").
+std::vector<float> numbers(const std::string& text, char separator, const std::string& what) {
   std::vector<float> values;
   std::stringstream in(text);
   std::string item;
@@ -38,8 +39,8 @@ std::vector<float> numbers(const std::string& text, char separator) {
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used == 0 || used != item.size()) badArgument("'" + item + "' is not a number");
-    if (!std::isfinite(v)) badArgument("'" + item + "' is not a finite number");
+    if (used == 0 || used != item.size()) badArgument(what + ": '" + item + "' is not a number");
+    if (!std::isfinite(v)) badArgument(what + ": '" + item + "' is not a finite number");
     values.push_back(v);
   }
   return values;
@@ -50,7 +51,7 @@ std::vector<std::array<float, 2>> parsePath(const std::string& text) {
   std::stringstream in(text);
   std::string pair;
   while (std::getline(in, pair, ';')) {
-    const std::vector<float> uv = numbers(pair, ',');
+    const std::vector<float> uv = numbers(pair, ',', "--path");
     if (uv.size() != 2) badArgument("--path: '" + pair + "' is not a u,v pair");
     path.push_back({uv[0], uv[1]});
   }
@@ -83,7 +84,7 @@ std::array<float, 4> parseParameter(const gpu::BrushManifest& brush, const std::
     return v;
   }
   case gpu::ParameterType::Color: {
-    const std::vector<float> c = numbers(text, ',');
+    const std::vector<float> c = numbers(text, ',', "--param " + id);
     if (c.size() != 3 && c.size() != 4) badArgument("--param " + id + ": give r,g,b or r,g,b,a");
     for (std::size_t k = 0; k < c.size(); ++k)
       v[k] = c[k];
@@ -94,7 +95,7 @@ std::array<float, 4> parseParameter(const gpu::BrushManifest& brush, const std::
     return v;
   case gpu::ParameterType::Float:
   case gpu::ParameterType::Int:
-    v[0] = numbers(text, ',').at(0);
+    v[0] = numbers(text, ',', "--param " + id).at(0);
     if (v[0] < p->min || v[0] > p->max)
       badArgument("--param " + id + " = " + text + " is outside [" + std::to_string(p->min) + ", " +
                   std::to_string(p->max) + "]");
@@ -212,7 +213,7 @@ Command addStrokeCommand(CLI::App& app) {
         }
 
         if (!opt->view.empty()) {
-          const std::vector<float> eye = numbers(opt->view, ',');
+          const std::vector<float> eye = numbers(opt->view, ',', "--view");
           if (eye.size() != 3) badArgument("--view takes the camera eye as x,y,z");
           settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
         }
