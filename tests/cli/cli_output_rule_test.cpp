@@ -91,6 +91,7 @@ private slots:
   void fifoTargetIsRefused();
   void deviceTargetIsRefused();
   void lodWhoseMeasureFailsLeavesNoFile();
+  void sweepWhosePlotCannotBeWrittenKeepsThePreviousReport();
 
 private:
   QString file(const QString& name) const { return dir_.filePath(name); }
@@ -278,6 +279,32 @@ void CliOutputRuleTest::lodWhoseMeasureFailsLeavesNoFile() {
   QVERIFY2(!r.err.trimmed().isEmpty(), qPrintable(describe(args, r)));
   const QStringList left = QDir(folder).entryList(QDir::Files | QDir::Hidden);
   QVERIFY2(left == QStringList{"zero.exr"}, qPrintable("left behind: " + left.join(", ")));
+}
+
+// compress --sweep writes rd.md, rd.csv and rd.png as one set: when the plot cannot be written
+// (its name is taken by a folder) the previous report stays byte for byte and nothing is added.
+void CliOutputRuleTest::sweepWhosePlotCannotBeWrittenKeepsThePreviousReport() {
+  const QString folder = file("sweep");
+  QVERIFY(QDir().mkpath(folder));
+  const QStringList first{"compress", cube_, "--sweep", "-o", folder};
+  const Result made = runCli(first);
+  QVERIFY2(made.exitCode == kOk, qPrintable(describe(first, made)));
+  QVERIFY(QFile::remove(folder + "/rd.png"));
+  QVERIFY(QDir().mkpath(folder + "/rd.png"));
+  const auto before = snapshot(folder);
+  QCOMPARE(before.size(), std::size_t(2)); // rd.md and rd.csv
+  const QStringList second{"compress", blob_, "--sweep", "-o", folder};
+  const Result r = runCli(second);
+  QVERIFY2(!r.crashed && r.exitCode == kIo, qPrintable(describe(second, r)));
+  QVERIFY2(r.err.contains("rd.png"), qPrintable(describe(second, r)));
+  QVERIFY(snapshot(folder) == before);
+  QVERIFY(temporaries(folder).isEmpty());
+
+  const QString fresh = file("sweep-fresh");
+  QVERIFY(QDir().mkpath(fresh + "/rd.png"));
+  const QStringList third{"compress", blob_, "--sweep", "-o", fresh};
+  QCOMPARE(runCli(third).exitCode, kIo);
+  QCOMPARE(QDir(fresh).entryList(QDir::Files | QDir::Hidden), QStringList());
 }
 
 QTEST_GUILESS_MAIN(CliOutputRuleTest)
