@@ -4,6 +4,7 @@
 // the previous document; a stale temporary of a dead run goes with the next save; a FIFO or a
 // device is refused (exit 4), never replaced; a failing LOD measure leaves no file.
 
+#include "../file_test_support.h"
 #include "cli_support.h"
 
 #include "octaclay/core/document/document.h"
@@ -23,6 +24,8 @@
 #include <unistd.h>
 
 #include <map>
+
+using octaclay::testing::temporaries;
 
 namespace {
 
@@ -66,13 +69,6 @@ std::map<QString, QByteArray> snapshot(const QString& folder) {
     if (f.open(QIODevice::ReadOnly)) files[info.fileName()] = f.readAll();
   }
   return files;
-}
-
-QStringList temporaries(const QString& folder) {
-  QStringList found;
-  for (const QString& name : QDir(folder).entryList(QDir::Files | QDir::Hidden | QDir::System))
-    if (name.contains(".tmp-")) found << name;
-  return found;
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 // coordinates or faces that share no vertices, an .ocz that claims a larger N than it holds
 // (under a memory limit), and JSON output for names that are not UTF-8.
 
+#include "../file_test_support.h"
 #include "cli_support.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -29,6 +30,8 @@
 #include <vector>
 
 using namespace octaclay;
+
+using octaclay::testing::resealCrc;
 
 namespace {
 
@@ -80,14 +83,6 @@ QString describeRaw(const RawResult& r) {
       .arg(r.exitCode)
       .arg(QString::fromUtf8(r.out.substr(0, 2000).c_str()),
            QString::fromUtf8(r.err.substr(0, 2000).c_str()));
-}
-
-void resealCrc(std::vector<std::uint8_t>& bytes) {
-  const std::size_t body = bytes.size() - 4;
-  const auto crc = static_cast<std::uint32_t>(
-      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(body)));
-  for (int k = 0; k < 4; ++k)
-    bytes[body + k] = std::uint8_t(crc >> (8 * k));
 }
 
 void writeFile(const QString& path, const QByteArray& bytes) {

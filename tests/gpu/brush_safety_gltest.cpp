@@ -39,15 +39,6 @@ std::vector<std::vector<float>> snapshot(GpuDocument& document) {
   return layers;
 }
 
-bool sameBits(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    if (a[k].size() != b[k].size() ||
-        std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(float)) != 0)
-      return false;
-  return true;
-}
-
 StrokeSettings strokeOf(const std::string& brush, float strength) {
   StrokeSettings s;
   s.brush = brush;

@@ -6,10 +6,12 @@
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/brush_manifest.h"
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace octaclay::gpu::testing {
 
@@ -44,6 +46,17 @@ inline Dab dabAt(const core::GeometryImage& image, core::Sample s, float radius,
   dab.radius = radius;
   dab.strength = strength;
   return dab;
+}
+
+/// Whether two snapshots of layers (one float vector per layer) hold the same bits.
+inline bool sameBits(const std::vector<std::vector<float>>& a,
+                     const std::vector<std::vector<float>>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (a[k].size() != b[k].size() ||
+        std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(float)) != 0)
+      return false;
+  return true;
 }
 
 } // namespace octaclay::gpu::testing

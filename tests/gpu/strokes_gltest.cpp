@@ -55,15 +55,6 @@ std::vector<std::vector<float>> textureSnapshot(GpuDocument& document) {
   return layers;
 }
 
-bool sameBits(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    if (a[k].size() != b[k].size() ||
-        std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(float)) != 0)
-      return false;
-  return true;
-}
-
 StrokeSettings strokeOf(const std::string& brush, std::vector<std::array<float, 2>> path,
                         float radius, float strength) {
   StrokeSettings s;

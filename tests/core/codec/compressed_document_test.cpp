@@ -2,6 +2,7 @@
 // bound with exact seams, and every way a file can be wrong (magic, version, N, checksum,
 // truncation, unknown codec, missing file).
 
+#include "../../file_test_support.h"
 #include "codec_test_support.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -18,6 +19,8 @@
 
 using namespace octaclay::core;
 using namespace octaclay::core::testing;
+
+using octaclay::testing::resealCrc;
 
 namespace {
 
@@ -44,14 +47,6 @@ std::vector<float> positionsOf(const Document& doc) {
   for (const Vec4f& t : doc.positions.texels())
     xyz.insert(xyz.end(), {t.x, t.y, t.z});
   return xyz;
-}
-
-void resealCrc(std::vector<std::uint8_t>& bytes) {
-  const std::size_t body = bytes.size() - 4;
-  const auto crc = static_cast<std::uint32_t>(
-      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(body)));
-  for (int k = 0; k < 4; ++k)
-    bytes[body + k] = std::uint8_t(crc >> (8 * k));
 }
 
 // clang-format off

@@ -4,6 +4,8 @@
 // header claims a larger N than its streams hold is refused before anything of that size is
 // allocated.
 
+#include "../../file_test_support.h"
+
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/document_checks.h"
@@ -32,6 +34,8 @@
 
 using namespace octaclay::core;
 namespace fs = std::filesystem;
+
+using octaclay::testing::resealCrc;
 
 namespace {
 
@@ -85,14 +89,6 @@ QString errorOf(const std::function<void()>& f, ErrorKind kind, const QString& n
     const QString why_ = errorOf([&] { call; }, kind, needle);                                     \
     QVERIFY2(why_.isEmpty(), qPrintable(why_));                                                    \
   } while (false)
-
-void resealCrc(std::vector<std::uint8_t>& bytes) {
-  const std::size_t body = bytes.size() - 4;
-  const auto crc = static_cast<std::uint32_t>(
-      crc32(crc32(0L, Z_NULL, 0), bytes.data(), static_cast<uInt>(body)));
-  for (int k = 0; k < 4; ++k)
-    bytes[body + k] = std::uint8_t(crc >> (8 * k));
-}
 
 } // namespace
 

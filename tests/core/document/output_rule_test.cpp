@@ -3,6 +3,8 @@
 // non-regular targets are refused, a replaced file keeps its permissions, and errors name the
 // target with the reason.
 
+#include "../../file_test_support.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
@@ -17,6 +19,8 @@
 
 namespace core = octaclay::core;
 
+using octaclay::testing::temporaries;
+
 namespace {
 
 std::string contents(const QString& path) {
@@ -26,13 +30,6 @@ std::string contents(const QString& path) {
 
 void put(const QString& path, const std::string& text) {
   std::ofstream(path.toStdString(), std::ios::binary) << text;
-}
-
-QStringList temporaries(const QString& folder) {
-  QStringList found;
-  for (const QString& name : QDir(folder).entryList(QDir::Files | QDir::Hidden | QDir::System))
-    if (name.contains(".tmp-")) found << name;
-  return found;
 }
 
 } // namespace
