@@ -233,6 +233,16 @@ RawMesh readPly(const fs::path& path, std::string_view text) {
   for (const PlyElement& e : elements)
     if (e.name == "vertex") vertexElement = &e;
   if (!vertexElement) fail(path, "the file has no vertex element");
+  // Every vertex element must give positions, or faces could index vertices that never come.
+  for (const PlyElement& e : elements) {
+    if (e.name != "vertex") continue;
+    bool axes[3] = {false, false, false};
+    for (const PlyProperty& property : e.properties)
+      for (int k = 0; k < 3; ++k)
+        if (!property.isList && property.name == std::string(1, char('x' + k))) axes[k] = true;
+    if (!(axes[0] && axes[1] && axes[2]))
+      fail(path, "the vertex element has no x, y and z properties");
+  }
   const unsigned long long vertexCount = vertexElement->count;
   if (vertexCount >= std::numeric_limits<std::uint32_t>::max())
     fail(path, "more than 4 billion vertices");

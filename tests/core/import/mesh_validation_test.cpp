@@ -649,6 +649,13 @@ void MeshValidationTest::badFiles() {
   QVERIFY(expectFile("huge.ply", hugePly, {"truncated"}).isEmpty());
   QVERIFY(expectFile("noheader.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", {"end_header"})
               .isEmpty());
+  // Found by ply_reader_fuzzer: a vertex element without properties read no positions while its
+  // count still bounded the face indices.
+  QVERIFY(expectFile("bare.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 4\nelement face 1\n"
+                     "property list uchar int vertex_indices\nend_header\n3 0 1 2\n",
+                     {"no x, y and z"})
+              .isEmpty());
   QVERIFY(expectFile("points.ply",
                      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                      "property float z\nend_header\n0 0 0\n",
