@@ -203,6 +203,9 @@ json ManifestReader::parseJson(std::string_view text) const {
     }
     detail = std::move(shown);
     failFile("invalid JSON at byte " + std::to_string(e.byte) + ", " + detail);
+  } catch (const json::out_of_range&) {
+    // nlohmann refuses a number too large for any of its types (error 406) this way.
+    failFile("invalid JSON: a number is too large to read");
   }
 }
 

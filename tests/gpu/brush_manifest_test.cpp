@@ -489,6 +489,10 @@ void BrushManifestTest::syntaxErrorGivesBytePosition() {
                                ": invalid JSON at byte 1, line 1, column 1: syntax error while "
                                "parsing value - unexpected end of input; expected '[', '{', or "
                                "a literal");
+  // Found by manifest_fuzzer: a number beyond every JSON number type escaped as out_of_range.
+  const fs::path huge =
+      writeBrush(root() / "huge-number", "{\"max\": 4" + std::string(400, '4') + "}");
+  QCOMPARE(errorOf(huge), huge.string() + ": invalid JSON: a number is too large to read");
 }
 
 void BrushManifestTest::duplicateKeyIsRefused() {
