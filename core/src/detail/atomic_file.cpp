@@ -1,8 +1,6 @@
 // The atomic writer behind every output: staged temporaries, checked writes, fsync, rename under
 // a folder lock (atomic_output.h).
 
-#include "detail/atomic_file.h"
-
 #include "detail/temporary_registry.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -265,11 +263,4 @@ void writeBytesAtomically(const fs::path& target, std::span<const std::uint8_t> 
   set.commit();
 }
 
-namespace detail {
-
-void writeAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
-  writeFileAtomically(path, write);
-}
-
-} // namespace detail
 } // namespace octaclay::core

@@ -1,7 +1,6 @@
 #include "octaclay/core/document/document_io.h"
 
-#include "detail/atomic_file.h"
-
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
@@ -229,7 +228,7 @@ void writeDocument(const Document& document, const fs::path& path) {
   const int n = document.size();
   requireValidSize(n);
   const int side = n + 1;
-  detail::writeAtomically(path, [&](const fs::path& temp) {
+  writeFileAtomically(path, [&](const fs::path& temp) {
     Imf::Header header(side, side);
     // ZIP level 1: most of ZIP's gain on float positions for a fraction of its time.
     // RLE up to N = 2048: unpainted layers shrink to nothing and saving stays near raw speed
