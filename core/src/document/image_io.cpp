@@ -63,11 +63,11 @@ RasterImage readImage(const std::filesystem::path& path, int channels) {
   return image;
 }
 
-void writePng(const RasterImage& image, const std::filesystem::path& path) {
+std::vector<std::uint8_t> encodePng(const RasterImage& image) {
   if (image.width <= 0 || image.height <= 0 ||
       (image.channels != 1 && image.channels != 3 && image.channels != 4) ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * image.channels)
-    throw Error(ErrorKind::InvalidArgument, "writePng: the image's size and pixels disagree");
+    throw Error(ErrorKind::InvalidArgument, "encodePng: the image's size and pixels disagree");
   cv::Mat rgb(image.height, image.width, CV_8UC(image.channels));
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width * image.channels; ++x)
@@ -83,7 +83,6 @@ void writePng(const RasterImage& image, const std::filesystem::path& path) {
     cv::cvtColor(rgb, bgr, cv::COLOR_RGBA2BGRA);
   else
     bgr = rgb;
-  // Encoded in memory and written by the checked writer: imwrite does not report a failed close.
   std::vector<std::uint8_t> bytes;
   bool ok = false;
   try {
@@ -91,8 +90,13 @@ void writePng(const RasterImage& image, const std::filesystem::path& path) {
   } catch (const cv::Exception&) {
     ok = false;
   }
-  if (!ok) throw Error(ErrorKind::Io, path.string() + ": cannot encode the PNG");
-  writeBytesAtomically(path, bytes);
+  if (!ok) throw Error(ErrorKind::Io, "cannot encode the image as PNG");
+  return bytes;
+}
+
+void writePng(const RasterImage& image, const std::filesystem::path& path) {
+  // Encoded in memory and written by the checked writer: imwrite does not report a failed close.
+  writeBytesAtomically(path, encodePng(image));
 }
 
 } // namespace octaclay::core

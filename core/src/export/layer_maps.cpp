@@ -4,10 +4,6 @@
 
 #include "octaclay/core/error.h"
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include <algorithm>
 #include <cstdint>
 
@@ -53,34 +49,6 @@ RasterImage metallicRoughnessMap(const Document& doc) {
     if (c == 1) return 1.0f - layerValue(doc.feature, t, 1);
     return layerValue(doc.feature, t, 2);
   });
-}
-
-std::vector<unsigned char> encodePng(const RasterImage& image) {
-  cv::Mat raw(image.height, image.width, CV_8UC(image.channels));
-  const std::size_t rowValues =
-      static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.channels);
-  for (int y = 0; y < image.height; ++y) {
-    std::uint8_t* row = raw.ptr<std::uint8_t>(y);
-    const float* in = image.pixels.data() + static_cast<std::size_t>(y) * rowValues;
-    for (std::size_t x = 0; x < rowValues; ++x)
-      row[x] = static_cast<std::uint8_t>(std::clamp(in[x], 0.0f, 1.0f) * 255.0f + 0.5f);
-  }
-  cv::Mat bgr;
-  if (image.channels == 3)
-    cv::cvtColor(raw, bgr, cv::COLOR_RGB2BGR);
-  else if (image.channels == 4)
-    cv::cvtColor(raw, bgr, cv::COLOR_RGBA2BGRA);
-  else
-    bgr = raw;
-  std::vector<unsigned char> bytes;
-  bool ok = false;
-  try {
-    ok = cv::imencode(".png", bgr, bytes);
-  } catch (const cv::Exception&) {
-    ok = false;
-  }
-  if (!ok) throw Error(ErrorKind::Io, "cannot encode a PNG map for the export");
-  return bytes;
 }
 
 } // namespace octaclay::core::detail

@@ -20,8 +20,4 @@ RasterImage featureMap(const Document& doc, int channel);
 /// R is unused by the core material (occlusion would read it), so it is 1.
 RasterImage metallicRoughnessMap(const Document& doc);
 
-/// The map as PNG bytes, each value clamped to [0, 1] and rounded to 1/255 (writePng's
-/// encoding). Throws Error(Io) when it cannot be encoded.
-std::vector<unsigned char> encodePng(const RasterImage& image);
-
 } // namespace octaclay::core::detail

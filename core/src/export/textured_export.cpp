@@ -9,6 +9,7 @@
 #include "export/sample_grid.h"
 
 #include "octaclay/core/document/atomic_output.h"
+#include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
 
 #include <array>
@@ -19,7 +20,6 @@
 namespace octaclay::core {
 namespace fs = std::filesystem;
 using detail::diffuseMap;
-using detail::encodePng;
 using detail::featureMap;
 using detail::metallicRoughnessMap;
 

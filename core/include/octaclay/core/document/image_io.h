@@ -3,6 +3,7 @@
 // Reading and writing the small raster images Octaclay ships and exports (material maps,
 // environment maps, exported textures): PNG, and whatever else OpenCV's codecs read.
 
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct RasterImage {
 /// alpha is 1, 8- and 16-bit files are scaled by their maximum. Throws Error(Io) when the file
 /// cannot be read, Error(InvalidInput) when it is not an image OpenCV decodes.
 RasterImage readImage(const std::filesystem::path& path, int channels);
+
+/// The image as PNG bytes (values clamped to [0, 1], 8 bits per channel). Throws
+/// Error(InvalidArgument) when size and pixels disagree, Error(Io) when encoding fails.
+std::vector<std::uint8_t> encodePng(const RasterImage& image);
 
 /// Writes an 8-bit PNG (1, 3 or 4 channels; values clamped to [0, 1]) atomically. Throws
 /// Error(InvalidArgument) for a bad image, Error(Io) when it cannot be written.
