@@ -35,6 +35,14 @@ std::array<double, 2> octahedralSquarePoint(Vec3f direction);
 /// the plane. Works for any int position (many periods away too); identity inside the grid.
 Sample wrap(int n, Sample s);
 
+/// wrap() and the symmetry of the tiling that takes the grid sample back to s: a translation,
+/// or a half-turn (a 180° rotation, which negates offsets measured at the grid sample).
+struct OrientedSample {
+  Sample sample;
+  bool halfTurn = false;
+};
+OrientedSample wrapOriented(int n, Sample s);
+
 /// The one representative of the samples identified with grid sample s (corners → (0,0); a side
 /// sample → the one in the side's first half). Precondition: s inside the grid.
 Sample canonical(int n, Sample s);

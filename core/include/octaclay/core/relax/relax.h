@@ -1,0 +1,40 @@
+#pragma once
+
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/geometry/texel_rect.h"
+
+#include <functional>
+#include <vector>
+
+namespace octaclay::core {
+
+/// Iteration counts above this are refused as absurd.
+inline constexpr int kMaxRelaxIterations = 10000;
+
+struct RelaxOptions {
+  /// Sweeps over the finest level (coarser levels get more, up to 64 times as many); 0 means 1.
+  int iterations = 0;
+};
+
+/// Called with the fraction done in [0, 1]; returning false cancels the work.
+using RelaxProgress = std::function<bool(float)>;
+
+/// The global even-out (DESIGN.md, "Stretch"): a reparameterization of the surface that moves
+/// every sample in the image's own parameter domain toward where the surface is stretched, so
+/// that grid edges become as even in length as one octahedral grid allows, then resamples every
+/// layer (positions with saliency, diffuse, feature, mask) at the new parameter points from
+/// `document`. Each new position lies on the old piecewise-linear surface; identified samples
+/// stay bit-equal; no cell folds. Throws Error(InvalidArgument) for an iteration count outside
+/// [0, kMaxRelaxIterations], Error(InvalidInput) for a document with non-finite positions,
+/// Error(Cancelled) when progress returned false (document untouched: it is const).
+Document evenOutSamples(const Document& document, const RelaxOptions& options = {},
+                        const RelaxProgress& progress = {});
+
+/// The local relaxation behind "keep detail": the same flow, on the samples of `regions`
+/// (and those identified with them) only, the rest pinned. Rewrites the changed texels of every
+/// layer in place and returns the rectangles it changed (empty when nothing was stretched
+/// enough to move). Throws like evenOutSamples.
+std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
+                                    const RelaxOptions& options = {});
+
+} // namespace octaclay::core

@@ -1,0 +1,30 @@
+#include "relax/grid_point.h"
+
+#include <cmath>
+
+namespace octaclay::core::detail {
+
+GridPoint locateGridPoint(int n, double x, double y) {
+  const double fi = std::floor(x), fj = std::floor(y);
+  const int i = static_cast<int>(fi), j = static_cast<int>(fj);
+  const double u = x - fi, v = y - fj;
+  GridPoint p;
+  auto set = [&](Sample a, Sample b, Sample c, double wa, double wb, double wc) {
+    p.samples = {wrap(n, a), wrap(n, b), wrap(n, c)};
+    p.weights = {static_cast<float>(wa), static_cast<float>(wb), static_cast<float>(wc)};
+  };
+  const Sample a{i, j}, b{i + 1, j}, c{i + 1, j + 1}, d{i, j + 1};
+  if (cellSplit(n, i, j) == CellSplit::AntiDiagonal) {
+    if (u + v <= 1)
+      set(a, b, d, 1 - u - v, u, v);
+    else
+      set(c, d, b, u + v - 1, 1 - u, 1 - v);
+  } else if (u >= v) {
+    set(a, b, c, 1 - u, u - v, v);
+  } else {
+    set(a, c, d, 1 - v, u, v - u);
+  }
+  return p;
+}
+
+} // namespace octaclay::core::detail

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "octaclay/core/geometry/octahedral.h"
+
+#include <array>
+
+namespace octaclay::core::detail {
+
+/// A point of the octahedral plane as a blend of the three grid samples of the triangle it lies
+/// in (the grid's own triangulation, so a blend of positions lies on the piecewise-linear
+/// surface). Samples are wrapped into the grid.
+struct GridPoint {
+  std::array<Sample, 3> samples;
+  std::array<float, 3> weights;
+};
+
+/// (x, y) in sample units of an N grid, anywhere in the tiled plane.
+GridPoint locateGridPoint(int n, double x, double y);
+
+} // namespace octaclay::core::detail

@@ -1,0 +1,370 @@
+#include "relax/offset_field.h"
+
+#include "detail/parallel_rows.h"
+#include "relax/grid_point.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace octaclay::core::detail {
+namespace {
+
+// Each sweep moves a sample part of the way to where the surface lengths to its two
+// neighbours along each grid line would be equal (arc-length equalisation, the two lines'
+// moves averaged): samples flow toward long edges, onto what was pulled. (The plain average of
+// the neighbours' surface positions would pull samples off a thin limb instead.)
+constexpr double kStep = 0.3;     // share of the equalising move taken per sweep (Jacobi)
+constexpr double kMaxMove = 0.3;  // lattice steps per sweep
+constexpr double kMinArea = 1e-4; // of a cell triangle's rest area: below it counts as folded
+constexpr int kCoarsest = 8;      // lattice size the solve starts on
+
+constexpr std::array<Sample, 4> kNeighbours{{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}};
+
+// D(copy) = sign × D(canonical) for identified samples: half-turns negate offsets; the corner
+// (N, N) is a translate of (0, 0).
+float copySign(int n, Sample copy, Sample canonicalSample) {
+  if (copy == canonicalSample) return 1.0f;
+  return copy.i == n && copy.j == n ? 1.0f : -1.0f;
+}
+
+bool isSideMidpoint(int n, Sample s) {
+  const int h = n / 2;
+  return (s.i == h && (s.j == 0 || s.j == n)) || (s.j == h && (s.i == 0 || s.i == n));
+}
+
+// One level of the coarse-to-fine solve: the lattice of samples whose indices are multiples of
+// step (an octahedral grid of size m = n / step over the same surface), with its own copy of
+// their offsets.
+class Level {
+public:
+  Level(const GeometryImage& image, OffsetField& field, int step)
+      : image_(image), field_(field), n_(field.n), step_(step), m_(field.n / step),
+        count_(static_cast<std::size_t>(m_ + 1) * static_cast<std::size_t>(m_ + 1)),
+        positions_(count_), offsets_(count_), free_(count_, 0), near_(count_, 0) {
+    for (int J = 0; J <= m_; ++J)
+      for (int I = 0; I <= m_; ++I) {
+        offsets_[lattice(I, J)] = field_.offset[fine(I, J)];
+        if (!field_.free[fine(I, J)]) continue;
+        free_[lattice(I, J)] = 1;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            near_[lattice(wrap(m_, {I + di, J + dj}))] = 1;
+      }
+    forEachBorderSample([&](Sample s) { // near a free sample on one copy: near on all of them
+      std::array<Sample, 4> copies;
+      const int k = identifiedSamples(m_, s, copies);
+      std::uint8_t any = 0;
+      for (int c = 0; c < k; ++c)
+        any |= near_[lattice(copies[static_cast<std::size_t>(c)])];
+      for (int c = 0; c < k; ++c)
+        near_[lattice(copies[static_cast<std::size_t>(c)])] = any;
+    });
+    for (std::uint8_t f : free_)
+      freeCount_ += f;
+  }
+
+  std::size_t freeCount() const { return freeCount_; }
+  std::size_t size() const { return count_; }
+
+  void sweep() {
+    evaluatePositions();
+    const std::vector<std::array<float, 2>> before = offsets_;
+    parallelRows(
+        m_ + 1,
+        [&](int rowBegin, int rowEnd) {
+          for (int J = rowBegin; J < rowEnd; ++J)
+            for (int I = 0; I <= m_; ++I)
+              if (free_[lattice(I, J)] && canonical(m_, {I, J}) == Sample{I, J})
+                offsets_[lattice(I, J)] = moved(before, I, J);
+        },
+        16);
+    copyToIdentified();
+    repairFolds(before);
+  }
+
+  /// Unfolds whatever the offsets brought from the coarser level fold (none should: the
+  /// prolongation is linear on their triangles) by putting offsets back to zero.
+  void unfoldFromRest() { repairFolds(std::vector<std::array<float, 2>>(count_)); }
+
+  /// Writes the level's offsets back to the field.
+  void store() const {
+    for (int J = 0; J <= m_; ++J)
+      for (int I = 0; I <= m_; ++I)
+        field_.offset[fine(I, J)] = offsets_[lattice(I, J)];
+  }
+
+private:
+  std::size_t lattice(int I, int J) const {
+    return static_cast<std::size_t>(J) * static_cast<std::size_t>(m_ + 1) +
+           static_cast<std::size_t>(I);
+  }
+  std::size_t lattice(Sample s) const { return lattice(s.i, s.j); }
+  std::size_t fine(int I, int J) const { return field_.index(I * step_, J * step_); }
+
+  template <class F> void forEachBorderSample(F&& f) const {
+    for (int t = 0; t <= m_; ++t) {
+      f(Sample{t, 0});
+      f(Sample{t, m_});
+      f(Sample{0, t});
+      f(Sample{m_, t});
+    }
+  }
+
+  void evaluatePositions() {
+    parallelRows(
+        m_ + 1,
+        [&](int rowBegin, int rowEnd) {
+          for (int J = rowBegin; J < rowEnd; ++J)
+            for (int I = 0; I <= m_; ++I) {
+              if (!near_[lattice(I, J)]) continue;
+              const auto& d = offsets_[lattice(I, J)];
+              const GridPoint p =
+                  locateGridPoint(n_, double(I) * step_ + d[0], double(J) * step_ + d[1]);
+              Vec3f x{0, 0, 0};
+              for (std::size_t c = 0; c < 3; ++c)
+                x = x + image_.at(p.samples[c]).xyz() * p.weights[c];
+              positions_[lattice(I, J)] = x;
+            }
+        },
+        16);
+  }
+
+  std::array<float, 2> moved(const std::vector<std::array<float, 2>>& offsets, int I, int J) const {
+    const auto& dc = offsets[lattice(I, J)];
+    const double pcx = double(I) * step_ + dc[0], pcy = double(J) * step_ + dc[1];
+    const Vec3f xc = positions_[lattice(I, J)];
+    std::array<double, 4> xs{}, ys{}, lengths{};
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Sample q{I + kNeighbours[k].i, J + kNeighbours[k].j};
+      const OrientedSample w = wrapOriented(m_, q);
+      const auto& dk = offsets[lattice(w.sample)];
+      const double sign = w.halfTurn ? -1.0 : 1.0; // the neighbour's offset seen from here
+      xs[k] = double(q.i) * step_ + sign * dk[0];
+      ys[k] = double(q.j) * step_ + sign * dk[1];
+      lengths[k] = length(positions_[lattice(w.sample)] - xc);
+    }
+    double mx = 0, my = 0;
+    for (std::size_t a = 0; a < 2; ++a) { // the pairs right/left and up/down
+      const std::size_t b = a + 2;
+      const double la = lengths[a], lb = lengths[b];
+      // Moving a share t of the way to the longer side's neighbour evens the two lengths out
+      // when t = (long - short) / (2 long).
+      const std::size_t to = la > lb ? a : b;
+      const double longer = std::max(la, lb), shorter = std::min(la, lb);
+      if (!(longer > 0)) continue;
+      const double t = (longer - shorter) / (2 * longer);
+      mx += t * (xs[to] - pcx);
+      my += t * (ys[to] - pcy);
+    }
+    mx *= kStep, my *= kStep;
+    const double move = std::hypot(mx, my), limit = kMaxMove * step_;
+    if (!std::isfinite(move)) return dc;
+    if (move > limit) mx *= limit / move, my *= limit / move;
+    return {static_cast<float>(dc[0] + mx), static_cast<float>(dc[1] + my)};
+  }
+
+  void copyToIdentified() {
+    forEachBorderSample([&](Sample s) {
+      std::array<Sample, 4> copies;
+      const int k = identifiedSamples(m_, s, copies);
+      const Sample c = canonical(m_, s);
+      const auto d = offsets_[lattice(c)];
+      for (int i = 0; i < k; ++i) {
+        const Sample copy = copies[static_cast<std::size_t>(i)];
+        const float sign = copySign(m_, copy, c);
+        offsets_[lattice(copy)] = {sign * d[0], sign * d[1]};
+      }
+    });
+  }
+
+  // Folded cell triangles get their moved vertices put back to `fallback` (a fold-free
+  // state) until none is left.
+  void repairFolds(const std::vector<std::array<float, 2>>& fallback) {
+    const double minArea = kMinArea * 0.5 * double(step_) * double(step_);
+    for (;;) {
+      std::vector<std::vector<Sample>> bands(static_cast<std::size_t>(m_));
+      parallelRows(
+          m_,
+          [&](int rowBegin, int rowEnd) {
+            for (int J = rowBegin; J < rowEnd; ++J)
+              for (int I = 0; I < m_; ++I) {
+                if (!near_[lattice(I, J)]) continue;
+                for (const auto& tri : cellTriangles(m_, I, J)) {
+                  std::array<std::array<double, 2>, 3> p;
+                  for (std::size_t v = 0; v < 3; ++v) {
+                    const auto& d = offsets_[lattice(tri[v])];
+                    p[v] = {double(tri[v].i) * step_ + d[0], double(tri[v].j) * step_ + d[1]};
+                  }
+                  const double area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                                             (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
+                  if (area >= minArea) continue;
+                  for (Sample v : tri)
+                    if (offsets_[lattice(v)] != fallback[lattice(v)])
+                      bands[static_cast<std::size_t>(J)].push_back(v);
+                }
+              }
+          },
+          16);
+      bool any = false;
+      for (const auto& band : bands)
+        for (Sample v : band) {
+          any = true;
+          std::array<Sample, 4> copies;
+          const int k = identifiedSamples(m_, v, copies);
+          for (int i = 0; i < k; ++i) {
+            const std::size_t t = lattice(copies[static_cast<std::size_t>(i)]);
+            offsets_[t] = fallback[t];
+          }
+        }
+      if (!any) return;
+    }
+  }
+
+  const GeometryImage& image_;
+  OffsetField& field_;
+  int n_, step_, m_;
+  std::size_t count_;
+  std::vector<Vec3f> positions_;
+  std::vector<std::array<float, 2>> offsets_;
+  std::vector<std::uint8_t> free_, near_;
+  std::size_t freeCount_ = 0;
+};
+
+// Offsets of the samples between those of a lattice `step` apart, linear on the lattice's
+// triangles (the fine grid's triangles lie inside them, so nothing folds).
+void prolong(OffsetField& field, int step) {
+  const int half = step / 2, n = field.n;
+  auto at = [&](int i, int j) { return field.offset[field.index(i, j)]; };
+  for (int j = 0; j <= n; j += half)
+    for (int i = 0; i <= n; i += half) {
+      const bool oddI = i % step != 0, oddJ = j % step != 0;
+      if (!oddI && !oddJ) continue;
+      std::array<float, 2> d{};
+      if (oddI && oddJ) { // on the coarse cell's diagonal: the coarse map stays piecewise linear
+        const bool anti =
+            cellSplit(n / step, (i - half) / step, (j - half) / step) == CellSplit::AntiDiagonal;
+        const auto a = anti ? at(i - half, j + half) : at(i - half, j - half);
+        const auto b = anti ? at(i + half, j - half) : at(i + half, j + half);
+        for (int c = 0; c < 2; ++c)
+          d[c] = 0.5f * (a[c] + b[c]);
+      } else if (oddI) {
+        for (int c = 0; c < 2; ++c)
+          d[c] = 0.5f * (at(i - half, j)[c] + at(i + half, j)[c]);
+      } else {
+        for (int c = 0; c < 2; ++c)
+          d[c] = 0.5f * (at(i, j - half)[c] + at(i, j + half)[c]);
+      }
+      field.offset[field.index(i, j)] = field.free[field.index(i, j)] ? d : std::array<float, 2>{};
+    }
+}
+
+} // namespace
+
+OffsetField::OffsetField(int size)
+    : n(size), offset(static_cast<std::size_t>(size + 1) * static_cast<std::size_t>(size + 1)),
+      free(offset.size(), 0) {}
+
+void OffsetField::freeAll() {
+  std::fill(free.begin(), free.end(), 1);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (isSideMidpoint(n, {i, j})) free[index(i, j)] = 0;
+}
+
+void OffsetField::freeInside(TexelRect rect) {
+  const int x0 = std::max(rect.x + 1, 0), y0 = std::max(rect.y + 1, 0);
+  const int x1 = std::min(rect.x + rect.width - 1, n + 1),
+            y1 = std::min(rect.y + rect.height - 1, n + 1);
+  for (int j = y0; j < y1; ++j)
+    for (int i = x0; i < x1; ++i) {
+      if (isSideMidpoint(n, {i, j})) continue;
+      std::array<Sample, 4> copies;
+      const int k = identifiedSamples(n, {i, j}, copies);
+      for (int c = 0; c < k; ++c)
+        free[index(copies[static_cast<std::size_t>(c)].i, copies[static_cast<std::size_t>(c)].j)] =
+            1;
+    }
+}
+
+bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
+                  const RelaxProgress& progress) {
+  const int n = field.n;
+  std::vector<std::pair<int, int>> plan; // (step, sweeps), coarse to fine
+  for (int m = std::min(n, kCoarsest); m <= n; m *= 2)
+    plan.emplace_back(n / m, fineIterations * std::max(1, 512 / m)); // coarse sweeps are cheap
+  double total = 0, done = 0;
+  for (const auto& [step, sweeps] : plan)
+    total += double(sweeps) * double(n / step + 1) * double(n / step + 1);
+  for (std::size_t l = 0; l < plan.size(); ++l) {
+    const auto [step, sweeps] = plan[l];
+    Level level(image, field, step);
+    if (l > 0) level.unfoldFromRest();
+    if (level.freeCount() > 0)
+      for (int s = 0; s < sweeps; ++s) {
+        level.sweep();
+        done += double(level.size());
+        if (progress && !progress(static_cast<float>(done / total))) return false;
+      }
+    level.store();
+    if (step > 1) prolong(field, step);
+  }
+  return true;
+}
+
+void resampleDocument(const Document& from, const OffsetField& field, Document& to) {
+  const int n = field.n;
+  const GeometryImage& image = from.positions;
+  auto blendLayer = [n](const Layer& source, Layer& target, const GridPoint& p, std::size_t t) {
+    if (source.uniform()) return;
+    const std::size_t ch = static_cast<std::size_t>(source.channels);
+    for (std::size_t c = 0; c < ch; ++c) {
+      float v = 0;
+      for (std::size_t k = 0; k < 3; ++k)
+        v += source.texels[(static_cast<std::size_t>(p.samples[k].j) * std::size_t(n + 1) +
+                            static_cast<std::size_t>(p.samples[k].i)) *
+                               ch +
+                           c] *
+             p.weights[k];
+      target.texels[t * ch + c] = v;
+    }
+  };
+  auto copyTexel = [](const Layer& source, Layer& target, std::size_t from, std::size_t t) {
+    if (source.uniform()) return;
+    const std::size_t ch = static_cast<std::size_t>(source.channels);
+    for (std::size_t c = 0; c < ch; ++c)
+      target.texels[t * ch + c] = source.texels[from * ch + c];
+  };
+  parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const std::size_t t = field.index(i, j);
+        const auto& d = field.offset[t];
+        if (d[0] == 0.0f && d[1] == 0.0f) continue; // not moved: keeps its texels
+        const Sample c = canonical(n, {i, j});
+        if (!(c == Sample{i, j})) continue; // copies take the canonical sample's texels below
+        const GridPoint p = locateGridPoint(n, double(i) + d[0], double(j) + d[1]);
+        Vec4f x{0, 0, 0, 0};
+        for (std::size_t k = 0; k < 3; ++k) {
+          const Vec4f& s = image.at(p.samples[k]);
+          x = Vec4f{x.x + s.x * p.weights[k], x.y + s.y * p.weights[k], x.z + s.z * p.weights[k],
+                    x.w + s.w * p.weights[k]};
+        }
+        to.positions.at(i, j) = x;
+        blendLayer(from.diffuse, to.diffuse, p, t);
+        blendLayer(from.feature, to.feature, p, t);
+        if (from.hasMask) blendLayer(from.mask, to.mask, p, t);
+      }
+  });
+  for (int s = 0; s <= n; ++s) // identified samples: one vertex, bit-equal copies
+    for (Sample b : {Sample{s, 0}, Sample{s, n}, Sample{0, s}, Sample{n, s}}) {
+      const Sample c = canonical(n, b);
+      if (c == b) continue;
+      const std::size_t from = field.index(c.i, c.j), t = field.index(b.i, b.j);
+      to.positions.at(b) = to.positions.at(c);
+      copyTexel(to.diffuse, to.diffuse, from, t);
+      copyTexel(to.feature, to.feature, from, t);
+      if (to.hasMask) copyTexel(to.mask, to.mask, from, t);
+    }
+}
+
+} // namespace octaclay::core::detail

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/relax/relax.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace octaclay::core::detail {
+
+/// How far each sample moves in the image's parameter domain, in sample units: sample (i, j)
+/// will show the old surface at (i, j) + offset. Identified border samples hold offsets that
+/// are images of one another under the tiling's half-turns, so they stay one vertex.
+struct OffsetField {
+  int n = 0;
+  std::vector<std::array<float, 2>> offset; ///< (N+1)², row-major
+  std::vector<std::uint8_t> free;           ///< 1 where the sample may move
+
+  explicit OffsetField(int size);
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
+           static_cast<std::size_t>(i);
+  }
+  /// Frees every sample except the four side midpoints (the tiling's half-turn centres, which
+  /// cannot move without tearing the seam).
+  void freeAll();
+  /// Frees the samples strictly inside rect and the samples identified with them.
+  void freeInside(TexelRect rect);
+};
+
+/// Moves the free samples toward where the surface of `image` is stretched, coarse to fine,
+/// keeping every cell unfolded. Returns false when progress cancelled.
+bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
+                  const RelaxProgress& progress);
+
+/// The document resampled at the field's parameter points: samples that did not move keep
+/// their texels bit for bit; identified samples stay bit-equal.
+void resampleDocument(const Document& from, const OffsetField& field, Document& to);
+
+} // namespace octaclay::core::detail
