@@ -56,8 +56,10 @@ struct BrushInput {
 
 // The grid sample that integer position p stands for in the octahedral tiling of the plane
 // (core/src/octahedral.cpp's wrap()), for p within 4N of the image (further than any brush
-// reaches). Selects instead of `%`: a software rasterizer runs integer division lane by lane.
-ivec2 wrapTexel(ivec2 p) {
+// reaches), and in z whether the tiling reaches it by a half-turn (1) or a translation (0): a
+// vector at p is the vector at the sample, negated when z is 1. Selects instead of `%`: a
+// software rasterizer runs integer division lane by lane.
+ivec3 wrapTexelTurn(ivec2 p) {
   int n = u_size;
   int period = 2 * n;
   int i = p.x < 0 ? p.x + 2 * period : p.x;
@@ -66,14 +68,81 @@ ivec2 wrapTexel(ivec2 p) {
   j = j >= period ? j - period : j;
   i = i >= period ? i - period : i;
   j = j >= period ? j - period : j;
-  if (i > n) { i = period - i; j = n - j; }
-  if (j < 0) { i = n - i; j = -j; }
-  else if (j > n) { i = n - i; j = period - j; }
-  return ivec2(i, j);
+  int turn = 0;
+  if (i > n) { i = period - i; j = n - j; turn = 1; }
+  if (j < 0) { i = n - i; j = -j; turn = 1 - turn; }
+  else if (j > n) { i = n - i; j = period - j; turn = 1 - turn; }
+  return ivec3(i, j, turn);
 }
 
+ivec2 wrapTexel(ivec2 p) { return wrapTexelTurn(p).xy; }
+
+#if defined(BRUSH_REPARAMETERIZE)
+// A reparameterize pass (manifest "pass": "reparameterize"): each sample's offset so far in this
+// dab, in samples, in its own frame of the image. The sample now stands where the layers from
+// before the dab are at texel + offset.
+uniform sampler2D u_offsets;
+
+// The grid triangle of the tiled plane that holds point q (cells split as core's cellSplit: along
+// the anti-diagonal where the cell's quadrant indices have equal parity) as corners c0..c2 and
+// q's barycentric weights: a value read through them lies on the piecewise-linear surface.
+void cellTriangleAt(vec2 q, out ivec2 c0, out ivec2 c1, out ivec2 c2, out vec3 w) {
+  ivec2 a = ivec2(floor(q));
+  vec2 f = q - vec2(a);
+  int shift = findMSB(max(u_size / 2, 1)); // floorDiv by N/2 (a power of two): arithmetic shift
+  bool antiDiagonal = ((a.x >> shift) & 1) == ((a.y >> shift) & 1);
+  if (antiDiagonal) {
+    if (f.x + f.y <= 1.0) {
+      c0 = a; c1 = a + ivec2(1, 0); c2 = a + ivec2(0, 1);
+      w = vec3(1.0 - f.x - f.y, f.x, f.y);
+    } else {
+      c0 = a + ivec2(1, 1); c1 = a + ivec2(1, 0); c2 = a + ivec2(0, 1);
+      w = vec3(f.x + f.y - 1.0, 1.0 - f.y, 1.0 - f.x);
+    }
+  } else if (f.x >= f.y) {
+    c0 = a; c1 = a + ivec2(1, 0); c2 = a + ivec2(1, 1);
+    w = vec3(1.0 - f.x, f.x - f.y, f.y);
+  } else {
+    c0 = a; c1 = a + ivec2(1, 1); c2 = a + ivec2(0, 1);
+    w = vec3(1.0 - f.y, f.x, f.y - f.x);
+  }
+}
+
+// Layer s at point q of the tiled plane, interpolated on the grid's own triangles.
+vec4 planeValue(sampler2D s, vec2 q) {
+  ivec2 c0, c1, c2;
+  vec3 w;
+  cellTriangleAt(q, c0, c1, c2, w);
+  return w.x * texelFetch(s, wrapTexel(c0), 0) + w.y * texelFetch(s, wrapTexel(c1), 0) +
+         w.z * texelFetch(s, wrapTexel(c2), 0);
+}
+
+// The offset of the sample at integer position c of the plane, in the plane's frame.
+vec2 offsetAt(ivec2 c) {
+  ivec3 t = wrapTexelTurn(c);
+  vec2 o = texelFetch(u_offsets, t.xy, 0).xy;
+  return t.z == 1 ? -o : o;
+}
+
+// The offset field at point q of the plane, interpolated on the grid's triangles.
+vec2 planeOffset(vec2 q) {
+  ivec2 c0, c1, c2;
+  vec3 w;
+  cellTriangleAt(q, c0, c1, c2, w);
+  return w.x * offsetAt(c0) + w.y * offsetAt(c1) + w.z * offsetAt(c2);
+}
+
+// The sample's current position: the positions from before the dab at texel + its offset.
+vec4 fetchPositions(ivec2 texel) {
+  vec2 o = offsetAt(texel);
+  return o == vec2(0.0) ? texelFetch(u_positions, wrapTexel(texel), 0)
+                        : planeValue(u_positions, vec2(texel) + o);
+}
+vec4 fetchLayer(ivec2 texel) { return fetchPositions(texel); }
+#else
 vec4 fetchPositions(ivec2 texel) { return texelFetch(u_positions, wrapTexel(texel), 0); }
 vec4 fetchLayer(ivec2 texel) { return texelFetch(u_layer, wrapTexel(texel), 0); }
+#endif
 
 // Central differences through wrap(): a half-turn of the tiling negates both differences, so the
 // cross product is the same on both sides of a seam. At the fold points (side midpoints) the two

@@ -6,6 +6,7 @@
 #include "pass_watchdog.h"
 #include "seam_pass.h"
 #include "texture_copy.h"
+#include "texture_units.h"
 
 #include "octaclay/gpu/gl_error.h"
 
@@ -20,6 +21,7 @@ namespace octaclay::gpu {
 
 using detail::assemble;
 using detail::brushLog;
+using detail::definesBrushOffset;
 using detail::enumValues;
 using detail::writesAllLayers;
 
@@ -55,6 +57,17 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   brush->manifest = manifest;
   brush->body = shaderSource;
   brush->allLayers = writesAllLayers(shaderSource);
+  if (brush->reparameterize()) {
+    // Every layer is resampled into its scratch from the layers before the dab: none in place.
+    if (!definesBrushOffset(shaderSource))
+      throw GlError("brush " + manifest.id + ": " + manifest.shaderPath().string() +
+                    ": a \"reparameterize\" brush defines vec2 brushOffset(BrushInput b) "
+                    "(the step of each sample in the image, in samples)");
+    brush->allLayers = false;
+    program(*brush, core::EditLayer::Positions, false, enumValues(manifest, {}));
+    brushes_[manifest.id] = std::move(brush);
+    return;
+  }
   if (hasTextureBarrier()) {
     // A layer is written in place unless the brush reads it ("reads": other texels of it);
     // the prelude's normals read the positions' neighbours.
@@ -90,7 +103,8 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
 const Program& BrushEngine::program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
                                     const std::vector<int>& enums) {
   const auto key =
-      std::tuple{brush.allLayers ? core::EditLayer::Positions : layer, maskTexture, enums};
+      std::tuple{brush.allLayers || brush.reparameterize() ? core::EditLayer::Positions : layer,
+                 maskTexture, enums};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
   const std::string file = brush.manifest.shaderPath().string();
@@ -183,6 +197,21 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       document.changed(layer, run);
   };
 
+  if (brush.reparameterize()) {
+    // Positions always; a paint layer only when painted: an unpainted one is its fill everywhere,
+    // which resampling keeps (and the mask would stop counting as unpainted).
+    std::vector<core::EditLayer> layers{core::EditLayer::Positions};
+    const core::Document& d = document.document();
+    if (!d.diffuse.uniform()) layers.push_back(core::EditLayer::Diffuse);
+    if (!d.feature.uniform()) layers.push_back(core::EditLayer::Feature);
+    if (!d.mask.uniform()) layers.push_back(core::EditLayer::Mask);
+    reparameterize(document, brush, dab, rects, maskTexture, enums, layers);
+    for (core::EditLayer layer : layers)
+      finishLayer(layer);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return result;
+  }
+
   if (brush.allLayers) {
     // One pass writes every layer: each reads all layers as they were before the dab.
     const Program& pass = program(brush, core::EditLayer::Positions, maskTexture, enums);
@@ -249,6 +278,118 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;
+}
+
+void BrushEngine::resetOffsets(const std::vector<core::TexelRect>& where) {
+  baseTaken_ = {};
+  baseOf_ = nullptr;
+  if (!offsets_[0].id()) return;
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  glEnable(GL_SCISSOR_TEST);
+  for (Texture& t : offsets_) {
+    t.bindAsTarget();
+    for (const core::TexelRect& r : where) {
+      glScissor(r.x, r.y, r.width, r.height);
+      glClearBufferfv(GL_COLOR, 0, zero);
+    }
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void BrushEngine::endStroke() {
+  strokeOpen_ = false;
+  if (baseOf_) resetOffsets({core::TexelRect{0, 0, offsets_[0].width(), offsets_[0].height()}});
+}
+
+void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, const Dab& dab,
+                                 const std::vector<core::TexelRect>& rects, bool maskTexture,
+                                 const std::vector<int>& enums,
+                                 const std::vector<core::EditLayer>& layers) {
+  const int side = document.size() + 1;
+  const core::TexelRect whole{0, 0, side, side};
+  if (baseOf_ && baseOf_ != &document) resetOffsets({whole});
+  if (offsets_[0].width() != side) {
+    for (Texture& t : offsets_)
+      t = Texture(side, side, TextureFormat::Rgba32f);
+    resetOffsets({whole});
+  }
+  // The layers at the stroke's first dab: every dab of it resamples from them.
+  baseOf_ = &document;
+  for (core::EditLayer layer : layers) {
+    const auto k = static_cast<std::size_t>(layer);
+    if (baseTaken_[k]) continue;
+    const Texture& current = document.texture(layer);
+    if (base_[k].width() != side || base_[k].format() != current.format())
+      base_[k] = Texture(side, side, current.format());
+    detail::copyRect(current, base_[k], whole);
+    baseTaken_[k] = true;
+  }
+  const auto bindBase = [&] {
+    detail::kPositionsUnit.bind(base_[0].id());
+    detail::kDiffuseUnit.bind(baseTaken_[1] ? base_[1].id() : 0);
+    detail::kFeatureUnit.bind(baseTaken_[2] ? base_[2].id() : 0);
+    detail::kMaskUnit.bind(baseTaken_[3] ? base_[3].id()
+                                         : document.texture(core::EditLayer::Mask).id());
+    detail::kOffsetsUnit.bind(offsets_[0].id());
+    glActiveTexture(GL_TEXTURE0);
+  };
+  try {
+    // Steps: each reads the field so far (u_offsets) and writes the next into the twin over
+    // rects. Elsewhere both hold the same field (zero outside the stroke's dabs).
+    const Program& step = program(brush, core::EditLayer::Positions, maskTexture, enums);
+    step.use();
+    detail::setUniforms(step, brush.manifest, document, core::EditLayer::Positions, dab);
+    detail::bindLayers(document, core::EditLayer::Positions,
+                       brush.manifest.readsLayer(core::EditLayer::Diffuse),
+                       brush.manifest.readsLayer(core::EditLayer::Feature));
+    bindMaterial(step, brush.manifest, document, dab);
+    detail::kPositionsUnit.bind(base_[0].id()); // current positions: the base at texel + offset
+    for (int k = 0; k < brush.manifest.iterations; ++k) {
+      offsets_[1].bindAsTarget();
+      detail::kOffsetsUnit.bind(offsets_[0].id());
+      glActiveTexture(GL_TEXTURE0);
+      rectPass_.draw(rects, side, side);
+      awaitPass(brush);
+      std::swap(offsets_[0], offsets_[1]);
+    }
+    for (const core::TexelRect& r : rects) // the twin catches up for the stroke's next dab
+      detail::copyRect(offsets_[0], offsets_[1], r);
+    checkGlError("brush " + brush.manifest.id + " offset steps");
+
+    // One resample of every layer from the base layers into their scratches.
+    if (!resampleProgram_.id())
+      resampleProgram_ =
+          Program("gpu/shaders/resample.glsl", rectsVertexShader(), detail::resampleSource());
+    resampleProgram_.use();
+    for (const detail::BrushUnit& unit : detail::kLayerUnits)
+      glUniform1i(resampleProgram_.uniform(unit.sampler), unit.unit);
+    glUniform1i(resampleProgram_.uniform("u_size"), document.size());
+    bindBase();
+    if (!resampleTarget_.id())
+      resampleTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));
+    resampleTarget_.bind();
+    std::array<GLenum, 4> drawBuffers{GL_NONE, GL_NONE, GL_NONE, GL_NONE};
+    for (core::EditLayer layer : layers) {
+      const auto k = static_cast<std::size_t>(layer); // attachment k holds layer k
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
+                             GL_TEXTURE_2D, document.scratch(layer).id(), 0);
+      drawBuffers[k] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k);
+    }
+    glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+    rectPass_.draw(rects, side, side);
+    // Detached, as the brushLayers() target: no document texture stays attached.
+    for (GLenum k = 0; k < 4; ++k)
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, 0, 0);
+    checkGlError("brush " + brush.manifest.id + " resample");
+    awaitPass(brush);
+  } catch (...) {
+    resetOffsets({whole});
+    throw;
+  }
+  detail::kOffsetsUnit.bind(0);
+  glActiveTexture(GL_TEXTURE0);
+  if (!strokeOpen_) resetOffsets(rects); // a dab of its own: the field is zero again
 }
 
 } // namespace octaclay::gpu

@@ -33,10 +33,12 @@ constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
 constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
 constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
 constexpr std::array kNeedNames{"normal"};
+constexpr std::array kPassNames{"layers", "reparameterize"};
 
 constexpr std::array kTopLevelFields{
-    "id",     "name", "version", "api",  "description", "category",     "shader",  "reads",
-    "writes", "mix",  "needs",   "area", "falloff",     "falloffCurve", "spacing", "parameters"};
+    "id",      "name",         "version", "api",        "description", "category",
+    "shader",  "reads",        "writes",  "mix",        "needs",       "area",
+    "falloff", "falloffCurve", "spacing", "parameters", "pass",        "iterations"};
 constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
                                       "min", "max",   "step",    "options"};
 // Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
@@ -85,6 +87,7 @@ private:
     if (const json* mix = root.contains("mix") ? &root["mix"] : nullptr) parseMix(*mix, manifest);
     if (const json* needs = root.contains("needs") ? &root["needs"] : nullptr)
       manifest.needs = parseNeeds(*needs);
+    parsePass(root, manifest);
 
     manifest.area =
         choose<AreaMode>(requiredString(root, "area", "area"), kAreaNames, "area", "area");
@@ -156,6 +159,36 @@ private:
       needs.push_back(need);
     }
     return needs;
+  }
+
+  // "pass" and "iterations" (API 2). After writes and mix: a reparameterize pass moves every
+  // layer's samples, so it writes all four and mixes none.
+  void parsePass(const json& root, BrushManifest& manifest) const {
+    if (auto pass = optionalString(root, "pass", "pass")) {
+      if (manifest.api < 2)
+        fail("pass", "needs \"api\": 2 (pass kinds came with brush API 2), the manifest says " +
+                         std::to_string(manifest.api));
+      manifest.pass = choose<PassKind>(*pass, kPassNames, "pass", "pass");
+    }
+    const bool reparameterize = manifest.pass == PassKind::Reparameterize;
+    if (root.contains("iterations")) {
+      if (!reparameterize) fail("iterations", "only used when \"pass\" is \"reparameterize\"");
+      const int iterations = integer(root["iterations"], "iterations");
+      if (iterations < 1 || iterations > kMaxIterations)
+        fail("iterations", std::to_string(iterations) + " is outside [1, " +
+                               std::to_string(kMaxIterations) + "]");
+      manifest.iterations = iterations;
+    }
+    if (!reparameterize) return;
+    for (std::string_view layer : kLayerNames)
+      if (std::find_if(manifest.writes.begin(), manifest.writes.end(), [&](core::EditLayer l) {
+            return toManifestName(l) == layer;
+          }) == manifest.writes.end())
+        fail("writes", "a \"reparameterize\" pass resamples every layer, so it writes all four: "
+                       "[\"positions\", \"diffuse\", \"feature\", \"mask\"] (\"" +
+                           std::string(layer) + "\" is missing)");
+    if (!manifest.mix.empty())
+      fail("mix", "a \"reparameterize\" pass resamples its layers and mixes none");
   }
 
   void parseMix(const json& value, BrushManifest& manifest) const {
@@ -366,6 +399,9 @@ std::string_view toManifestName(ParameterType type) {
 }
 std::string_view toManifestName(BrushNeed need) {
   return kNeedNames[static_cast<std::size_t>(need)];
+}
+std::string_view toManifestName(PassKind pass) {
+  return kPassNames[static_cast<std::size_t>(pass)];
 }
 
 bool BrushManifest::readsLayer(core::EditLayer layer) const {

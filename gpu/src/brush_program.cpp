@@ -29,6 +29,12 @@ const char* layerDefine(core::EditLayer layer) {
 // about it can name its file and its own line: Mesa prints "0:LINE(COL): …", NVIDIA "0(LINE) : …".
 constexpr int kBodyLine = 100001;
 
+constexpr const char* kLayerDefines =
+    "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
+    "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define LAYER_ALL 4\n";
+const std::string kReparameterizeDefines =
+    std::string("#define BRUSH_REPARAMETERIZE\n#define BRUSH_MAX_STEP ") + kMaxOffsetStep + "\n";
+
 // The brush body without its comments.
 std::string withoutComments(const std::string& body) {
   std::string code;
@@ -93,14 +99,21 @@ bool writesAllLayers(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
+bool definesBrushOffset(const std::string& body) {
+  static const std::regex definition(R"(\bvec2\s+brushOffset\s*\()");
+  return std::regex_search(withoutComments(body), definition);
+}
+
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
                      const std::string& body) {
-  std::string source = "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
-                       "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define LAYER_ALL 4\n";
+  std::string source = kLayerDefines;
   if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
+  // A reparameterize step reads the positions and writes an offset: no layer of its own.
+  const bool reparameterize = manifest.pass == PassKind::Reparameterize;
+  if (reparameterize) source += kReparameterizeDefines;
   source += std::string("#define OCTACLAY_LAYER ") +
-            (allLayers ? "LAYER_ALL" : layerDefine(layer)) + "\n";
+            (allLayers || reparameterize ? "LAYER_ALL" : layerDefine(layer)) + "\n";
   switch (manifest.area) {
   case AreaMode::Uv:
     source += "#define BRUSH_AREA_UV\n";
@@ -153,6 +166,11 @@ std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool 
             std::to_string(2 * kBodyLine) + "\n";
   source += builtInShader("brush_main.glsl");
   return source;
+}
+
+std::string resampleSource() {
+  return kLayerDefines + kReparameterizeDefines + "#define OCTACLAY_LAYER LAYER_ALL\n" +
+         builtInShader("prelude.glsl") + builtInShader("resample.glsl");
 }
 
 } // namespace octaclay::gpu::detail

@@ -26,10 +26,21 @@ std::string brushLog(const std::string& log, const std::string& file);
 /// Whether the brush body defines `void brushLayers(`: it writes all its layers in one pass.
 bool writesAllLayers(const std::string& body);
 
+/// Whether the brush body defines `vec2 brushOffset(`: a reparameterize brush must.
+bool definesBrushOffset(const std::string& body);
+
+/// The longest step, in samples, a reparameterize brush's brushOffset() may take per iteration:
+/// below half the smallest height of a grid triangle (1/√8), so a step field folds no cell.
+inline constexpr const char* kMaxOffsetStep = "0.35";
+
 /// The fragment source of one pass. allLayers: the body defines brushLayers() and the program
 /// writes every layer at once. enumValues: the enum parameters' values, in manifest order.
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
                      const std::string& body);
+
+/// The fragment source of the resampling pass after a reparameterize brush's steps
+/// (resample.glsl with the prelude).
+std::string resampleSource();
 
 } // namespace octaclay::gpu::detail

@@ -21,6 +21,9 @@ struct BrushEngine::LoadedBrush {
   std::string broken;
   // The body defines brushLayers(): one program writes every layer (keyed as positions).
   bool allLayers = false;
+  // "pass": "reparameterize": one program (keyed as positions) steps the offset field, then the
+  // engine resamples every layer into its scratch.
+  bool reparameterize() const { return manifest.pass == PassKind::Reparameterize; }
   // Per layer: its passes write the layer's texture in place instead of a scratch copy. Only
   // where nothing reads other texels of that layer: each texel is then read by the fragment
   // that writes it alone (the texture barrier rules).

@@ -119,10 +119,12 @@ struct StrokeSession::State {
     // Paint layers are read back once at the stroke's end, not after every dab: the stroke
     // itself reads only positions (and undo tiles before their first dab).
     document.deferPaintPulls(true);
+    engine.beginStroke(); // a reparameterize brush resamples once per stroke
   }
   ~State() {
     if (finished) return;
     try {
+      engine.endStroke();
       document.deferPaintPulls(false);
     } catch (...) { // an abandoned stroke: the textures stay right, only the mirror may lag
     }
@@ -147,6 +149,7 @@ struct StrokeSession::State {
   void abandon() {
     finished = abandoned = true;
     undo.restore();
+    engine.endStroke();
     try {
       document.deferPaintPulls(false);
     } catch (...) { // the restored texels are in the mirror and the textures already
@@ -286,6 +289,7 @@ core::Stroke StrokeSession::finish(const std::string& label) {
   }
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
   st.finished = true;
+  st.engine.endStroke();
   st.document.deferPaintPulls(false);
   return st.undo.finish(label);
 }

@@ -25,9 +25,11 @@ inline constexpr BrushUnit kLayerUnit{"u_layer", 1}; // the layer the pass write
 inline constexpr BrushUnit kMaskUnit{"u_mask", 2};
 inline constexpr BrushUnit kFeatureUnit{"u_featureLayer", 3};
 inline constexpr BrushUnit kDiffuseUnit{"u_diffuseLayer", 6};
-/// The document's layers.
-inline constexpr std::array kLayerUnits{kPositionsUnit, kLayerUnit, kMaskUnit, kFeatureUnit,
-                                        kDiffuseUnit};
+/// A reparameterize brush's offset field (the engine's, not the document's).
+inline constexpr BrushUnit kOffsetsUnit{"u_offsets", 4};
+/// The document's layers and the offset field.
+inline constexpr std::array kLayerUnits{kPositionsUnit, kLayerUnit,   kMaskUnit,
+                                        kFeatureUnit,   kDiffuseUnit, kOffsetsUnit};
 /// A material's four maps: both projections' colour and surface (height, specular,
 /// reflectivity).
 inline constexpr std::array kMaterialUnits{

@@ -207,7 +207,7 @@ void BrushManifestTest::templateBrushParses() {
     QFAIL(e.what());
   }
   QCOMPARE(m.id, std::string("template-brush"));
-  QCOMPARE(m.api, kBrushApiVersion);
+  QCOMPARE(m.api, 1); // the template needs nothing of API 2
   QVERIFY((m.writes == std::vector{core::EditLayer::Positions}));
   QCOMPARE(m.area, AreaMode::VolumeNormal);
   const BrushParameter* height = m.parameter("height");
@@ -337,7 +337,7 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("api a string", patched({{"api", "1"}}), R"(api: expected an integer, got "1")");
   row("api fractional", patched({{"api", 1.5}}), "api: expected an integer, got 1.5");
   row("api zero", patched({{"api", 0}}), "api: must be 1 or more, got 0");
-  row("api newer", patched({{"api", 2}}), "api: needs Octaclay brush API 2, this Octaclay has 1");
+  row("api newer", patched({{"api", 3}}), "api: needs Octaclay brush API 3, this Octaclay has 2");
   row("writes a string", patched({{"writes", "positions"}}),
       R"(writes: expected an array of layers, got "positions" (use ["positions"]))");
   row("spacing a string", patched({{"spacing", "wide"}}),
@@ -367,6 +367,29 @@ void BrushManifestTest::badManifestIsRefused_data() {
       R"(needs: expected an array, got "normal" (use ["normal"]))");
   row("need twice", patched({{"needs", QJsonArray{"normal", "normal"}}}),
       R"(needs[1]: "normal" is listed twice)");
+  const QJsonArray all{"positions", "diffuse", "feature", "mask"};
+  row("pass with api 1", patched({{"pass", "reparameterize"}, {"writes", all}}),
+      R"(pass: needs "api": 2 (pass kinds came with brush API 2), the manifest says 1)");
+  row("unknown pass", patched({{"api", 2}, {"pass", "warp"}}),
+      R"(pass: unknown pass "warp" (use layers or reparameterize))");
+  row("reparameterize writing positions only",
+      patched({{"api", 2}, {"pass", "reparameterize"}, {"writes", QJsonArray{"positions"}}}),
+      R"(writes: a "reparameterize" pass resamples every layer, so it writes all four: )"
+      R"(["positions", "diffuse", "feature", "mask"] ("diffuse" is missing))");
+  row("reparameterize mixing",
+      patched({{"api", 2},
+               {"pass", "reparameterize"},
+               {"writes", all},
+               {"mix", QJsonArray{"diffuse"}}}),
+      R"(mix: a "reparameterize" pass resamples its layers and mixes none)");
+  row("iterations without reparameterize", patched({{"api", 2}, {"iterations", 4}}),
+      R"(iterations: only used when "pass" is "reparameterize")");
+  row("iterations zero",
+      patched({{"api", 2}, {"pass", "reparameterize"}, {"writes", all}, {"iterations", 0}}),
+      "iterations: 0 is outside [1, 64]");
+  row("iterations fractional",
+      patched({{"api", 2}, {"pass", "reparameterize"}, {"writes", all}, {"iterations", 2.5}}),
+      "iterations: expected an integer, got 2.5");
   row("empty writes", patched({{"writes", QJsonArray{}}}),
       "writes: a brush must write at least one layer");
   row("unknown area", patched({{"area", "surface"}}),
@@ -514,7 +537,7 @@ void BrushManifestTest::missingShaderNamesFolder() {
 void BrushManifestTest::newerApiWinsOverUnknownFields() {
   // A manifest for a newer Octaclay may use fields this one does not know: say what matters.
   const fs::path file = writeBrush(root() / "future", patched({{"api", 3}, {"stencil", true}}));
-  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 3, this Octaclay has 1");
+  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 3, this Octaclay has 2");
 }
 
 void BrushManifestTest::defaultSearchPathOrder() {

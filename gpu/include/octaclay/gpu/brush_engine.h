@@ -90,13 +90,23 @@ public:
 
   /// One dab: a pass over the tiles the brush can reach (merged into few rectangles, one draw
   /// call), for each layer it writes (one pass for all of them when the body defines
-  /// brushLayers()), then the seaming pass when it reached the border; the mirror is updated
-  /// for those tiles. Throws core::Error(UnknownId) for an unknown brush id, BrushTimeoutError
-  /// when a pass overran the time limit or the brush was marked broken by an earlier one.
+  /// brushLayers(); for a reparameterize brush, its iterations of brushOffset() and one pass
+  /// resampling every painted layer), then the seaming pass when it reached the border; the mirror
+  /// is updated for those tiles. Throws core::Error(UnknownId) for an unknown brush id,
+  /// BrushTimeoutError when a pass overran the time limit or the brush was marked broken by an
+  /// earlier one.
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab);
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
                 std::vector<core::TexelRect> tiles);
+
+  /// Opens and closes a stroke. A reparameterize brush's dabs between the two share one offset
+  /// field and resample from the layers as they were at the stroke's first such dab, so that a
+  /// whole stroke moves the surface and its paint by one interpolation, not one per dab. Without
+  /// an open stroke every dab is a stroke of its own. Other brushes ignore it. runStroke and
+  /// StrokeSession call them; endStroke() may be called when no stroke is open.
+  void beginStroke() { strokeOpen_ = true; }
+  void endStroke();
 
   /// Uploads the catalog's materials (replacing earlier ones); a material parameter's value is
   /// an index into them. Throws GlError.
@@ -140,6 +150,26 @@ private:
   /// brushLayers() passes: the written layers' scratch textures as colour attachments 0 to 2
   /// (positions, diffuse, feature), attached for each dab and detached after it.
   Framebuffer layersTarget_;
+  /// Reparameterize brushes: the offset field (xy, samples) and its ping-pong twin, zero
+  /// everywhere between dabs; the resampling pass (compiled on first use) and its target, every
+  /// layer's scratch as attachments 0 to 3.
+  std::array<Texture, 2> offsets_;
+  /// The layers as they were at the stroke's first reparameterize dab (positions, diffuse,
+  /// feature, mask; a layer only once a dab resamples it), and whose they are.
+  std::array<Texture, 4> base_;
+  std::array<bool, 4> baseTaken_{};
+  const GpuDocument* baseOf_ = nullptr;
+  bool strokeOpen_ = false;
+  /// Forgets the stroke's base layers and zeroes the offset field (where: its texels that may
+  /// be non-zero).
+  void resetOffsets(const std::vector<core::TexelRect>& where);
+  Program resampleProgram_;
+  Framebuffer resampleTarget_;
+  /// A reparameterize dab over rects: iterations steps of the brush's offset field, then one
+  /// resample of every layer in layers into its scratch, and the field is zero again.
+  void reparameterize(GpuDocument& document, LoadedBrush& brush, const Dab& dab,
+                      const std::vector<core::TexelRect>& rects, bool maskTexture,
+                      const std::vector<int>& enums, const std::vector<core::EditLayer>& layers);
 };
 
 /// The border samples that a pass over tiles (of an image `side` samples wide) may change, and

@@ -12,7 +12,10 @@
 namespace octaclay::gpu {
 
 /// The brush API major version this build accepts: a manifest whose "api" is higher is refused.
-inline constexpr int kBrushApiVersion = 1;
+/// API 2 added "pass" (reparameterize brushes) and "iterations".
+inline constexpr int kBrushApiVersion = 2;
+/// The most steps a reparameterize brush may ask for per dab ("iterations").
+inline constexpr int kMaxIterations = 64;
 
 /// Where a dab applies: a disc in texture space ("uv"), a sphere in object space ("volume"), or
 /// that sphere limited to surface facing the same side as the centre's normal ("volume+normal").
@@ -28,6 +31,11 @@ enum class ParameterType { Float, Int, Bool, Color, Enum, Material };
 /// What the engine computes for a brush beyond its layers ("needs"): Normal is each sample's
 /// own surface normal (BrushInput.normal; six position reads a texel).
 enum class BrushNeed { Normal };
+/// What one dab's pass computes ("pass"): Layers, each written layer's new value (brush() or
+/// brushLayers()); Reparameterize, an offset in the image's parameter domain per sample
+/// (brushOffset()), after which the engine resamples every layer at the offset coordinates from
+/// the layers before the dab, so the surface and its paint stay where they are.
+enum class PassKind { Layers, Reparameterize };
 
 /// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
 /// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
@@ -37,6 +45,7 @@ std::string_view toManifestName(Falloff falloff);
 std::string_view toManifestName(Category category);
 std::string_view toManifestName(ParameterType type);
 std::string_view toManifestName(BrushNeed need);
+std::string_view toManifestName(PassKind pass);
 
 /// One user-tunable value of a brush, shown as a widget and passed as uniform u_<id> (with '-'
 /// replaced by '_').
@@ -75,6 +84,10 @@ struct BrushManifest {
   /// colour to mix in and its amount in alpha: the GPU's blender mixes rgb by that amount and
   /// keeps the layer's alpha, so the pass never reads the layer (its argument starts at zero).
   std::vector<core::EditLayer> mix;
+  /// Reparameterize (API 2): writes holds all four layers and mix is empty.
+  PassKind pass = PassKind::Layers;
+  /// Reparameterize only: brushOffset() steps composed per dab, 1 … kMaxIterations.
+  int iterations = 1;
   AreaMode area = AreaMode::Volume;
   Falloff falloff = Falloff::Smooth;
   /// Falloff::Curve only: 2 … 64 weights in [0, 1], sampled evenly from centre to rim.
