@@ -35,5 +35,6 @@ Command addImportCommand(CLI::App& app);
 Command addLodCommand(CLI::App& app);
 Command addCompressCommand(CLI::App& app);
 Command addDecompressCommand(CLI::App& app);
+Command addRelaxCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -44,11 +44,11 @@ int main(int argc, char** argv) {
   CLI::App cli{"octaclay-cli: create, inspect, convert and compare Octaclay documents "
                "(octahedral geometry images stored as .exr)"};
   cli.require_subcommand(1);
-  const app::Command commands[] = {app::addNewCommand(cli),      app::addInfoCommand(cli),
-                                   app::addExportCommand(cli),   app::addCompareCommand(cli),
-                                   app::addStrokeCommand(cli),   app::addBrushesCommand(cli),
-                                   app::addImportCommand(cli),   app::addLodCommand(cli),
-                                   app::addCompressCommand(cli), app::addDecompressCommand(cli)};
+  const app::Command commands[] = {
+      app::addNewCommand(cli),        app::addInfoCommand(cli),   app::addExportCommand(cli),
+      app::addCompareCommand(cli),    app::addStrokeCommand(cli), app::addBrushesCommand(cli),
+      app::addImportCommand(cli),     app::addLodCommand(cli),    app::addCompressCommand(cli),
+      app::addDecompressCommand(cli), app::addRelaxCommand(cli)};
 
   try {
     cli.parse(argc, argv);

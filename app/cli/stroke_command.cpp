@@ -152,7 +152,7 @@ unsigned parseSymmetry(const std::string& text) {
 
 Command addStrokeCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, brush, path, symmetry, view;
+    std::string input, output, brush, path, symmetry, view, keepDetail = "on";
     std::vector<std::string> params;
     float radius = 0.1f, strength = 0.5f, spacing = 0;
     bool json = false;
@@ -177,6 +177,11 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("--view", opt->view,
                   "Camera eye x,y,z: splats project from it through each dab's centre "
                   "(default: along the centre normal)");
+  sub->add_option("--keep-detail", opt->keepDetail,
+                  "on: relax what the stroke stretched so it keeps its share of samples "
+                  "(one step with the stroke); off: leave the samples where the brush put them")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
@@ -225,6 +230,7 @@ Command addStrokeCommand(CLI::App& app) {
         // Every dab applies the whole --strength (the modeller shares it out by spacing).
         SculptSession session(DabStrength::Full);
         session.setBrushes(engine, catalog);
+        session.setKeepDetail(opt->keepDetail == "on");
         session.loadBrush(*brush);
         session.setDocument(std::move(document));
         settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();

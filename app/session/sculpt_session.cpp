@@ -1,6 +1,8 @@
 #include "sculpt_session.h"
 
+#include "octaclay/core/document/edit_steps.h"
 #include "octaclay/core/geometry/tile_bounds.h"
+#include "octaclay/core/relax/relax.h"
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gpu_document.h"
@@ -132,6 +134,7 @@ std::string SculptSession::finishStroke() {
   const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
   core::Stroke record = ending->stroke->finish(label);
   if (dabs == 0 || record.tiles.empty()) return {};
+  record = keepDetailAfter(std::move(record), ending->manifest);
   history_.record(std::move(record));
   return label;
 }
@@ -139,7 +142,60 @@ std::string SculptSession::finishStroke() {
 gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
                                                  gpu::StrokeSettings settings) {
   settings.strength *= dabShare(brush);
-  return gpu::runStroke(*engine_, *document_, brush, settings);
+  gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings);
+  const auto start = std::chrono::steady_clock::now();
+  result.undo = keepDetailAfter(std::move(result.undo), brush);
+  result.engineMs +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+namespace {
+
+// What a stroke changed in the positions, as rectangles grown so that samples can flow in from
+// the surface around them.
+std::vector<core::TexelRect> stretchRegions(const core::Stroke& record, int side) {
+  std::vector<core::TexelRect> changed;
+  for (const core::TileChange& t : record.tiles)
+    if (t.layer == core::EditLayer::Positions) changed.push_back(t.region);
+  std::vector<core::TexelRect> regions;
+  for (core::TexelRect r : core::mergeRects(std::move(changed))) {
+    const int grow = std::max({16, r.width / 2, r.height / 2});
+    const int x0 = std::max(0, r.x - grow), y0 = std::max(0, r.y - grow);
+    const int x1 = std::min(side, r.x + r.width + grow), y1 = std::min(side, r.y + r.height + grow);
+    regions.push_back({x0, y0, x1 - x0, y1 - y0});
+  }
+  return core::mergeRects(std::move(regions));
+}
+
+} // namespace
+
+core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush) {
+  if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
+    return record;
+  const std::vector<core::TexelRect> regions = stretchRegions(record, document_->size() + 1);
+  if (regions.empty()) return record;
+  core::Document relaxed = document_->document();
+  const std::vector<core::TexelRect> changed = core::relaxRegions(relaxed, regions);
+  if (changed.empty()) return record;
+  const core::Stroke relaxation =
+      core::recordDifference(document_->document(), relaxed, record.label, changed);
+  const core::TileApplier apply = gpu::undoApplier(*document_);
+  for (const core::TileChange& t : relaxation.tiles)
+    t.apply(core::TileState::After, apply);
+  return core::combineSteps(record, relaxation, document_->document(), record.label);
+}
+
+std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,
+                                                        const std::string& label) {
+  core::Stroke change = core::recordDifference(document_->document(), after, label);
+  if (change.tiles.empty()) return {};
+  const core::TileApplier apply = gpu::undoApplier(*document_);
+  for (const core::TileChange& t : change.tiles)
+    t.apply(core::TileState::After, apply);
+  std::vector<core::TexelRect> rects = changedRects(change);
+  history_.record(std::move(change));
+  return rects;
 }
 
 const core::Stroke* SculptSession::undo() {

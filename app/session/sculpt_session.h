@@ -97,6 +97,18 @@ public:
   /// with brush as loaded, at this session's dab strength. It is not recorded in history().
   gpu::StrokeResult strokeAlongPath(const gpu::BrushManifest& brush, gpu::StrokeSettings settings);
 
+  /// Keep detail (on by default): after a sculpt stroke moved positions, the region it changed
+  /// (grown so samples can flow in from around it) is relaxed where the stroke stretched it
+  /// (core::relaxRegions), and the stroke and the relaxation are one undo step. Applies to
+  /// finishStroke() and strokeAlongPath().
+  void setKeepDetail(bool on) { keepDetail_ = on; }
+  bool keepDetail() const { return keepDetail_; }
+
+  /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
+  /// labelled label (e.g. the global even-out); returns the texel rectangles it changed (empty:
+  /// nothing differed, nothing recorded). Precondition: a document and no stroke.
+  std::vector<core::TexelRect> applyChange(const core::Document& after, const std::string& label);
+
   core::EditHistory& history() { return history_; }
   const core::EditHistory& history() const { return history_; }
   /// Reverts / reapplies the newest stroke on the GPU and the mirror: the stroke stepped, or
@@ -113,7 +125,11 @@ private:
   /// The share of the strength each dab of brush applies under rule_.
   float dabShare(const gpu::BrushManifest& brush) const;
 
+  /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
+  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush);
+
   DabStrength rule_;
+  bool keepDetail_ = true;
   gpu::BrushEngine* engine_ = nullptr;
   const gpu::BrushCatalog* catalog_ = nullptr;
   BrushVariants variants_;

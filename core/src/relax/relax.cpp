@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace octaclay::core {
 namespace {
@@ -19,20 +20,46 @@ void checkOptions(const RelaxOptions& options) {
                     std::to_string(kMaxRelaxIterations) + "; leave it at 0 to choose from N");
 }
 
-void checkFinitePositions(const GeometryImage& image) {
-  for (int j = 0; j <= image.size(); ++j)
-    for (int i = 0; i <= image.size(); ++i) {
-      const Vec4f& p = image.at(i, j);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw Error(ErrorKind::InvalidInput,
-                    "sample (" + std::to_string(i) + ", " + std::to_string(j) +
-                        ") has a non-finite position; the document is damaged and cannot be "
-                        "relaxed");
-    }
+void checkPositions(const GeometryImage& image) {
+  if (const auto problem = positionsProblem(image))
+    throw Error(ErrorKind::InvalidInput,
+                *problem + "; the document is damaged and cannot be relaxed");
 }
 
 int fineIterations(const RelaxOptions& options) {
   return options.iterations > 0 ? options.iterations : 1;
+}
+
+TexelRect clipped(TexelRect r, int n) {
+  const int x0 = std::max(r.x, 0), y0 = std::max(r.y, 0);
+  const int x1 = std::min(r.x + r.width, n + 1), y1 = std::min(r.y + r.height, n + 1);
+  return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+// Whether some grid edge inside r is longer than kStretchedEdge times the median edge on r's
+// border (the surface around what a stroke changed): only then is there detail to give back.
+constexpr float kStretchedEdge = 2.0f;
+
+bool stretchedInside(const GeometryImage& image, TexelRect r) {
+  if (r.width < 3 || r.height < 3) return false;
+  auto edge = [&](int i, int j, int di, int dj) {
+    return length(image.at(i + di, j + dj).xyz() - image.at(i, j).xyz());
+  };
+  std::vector<float> border;
+  for (int i = r.x; i + 1 < r.x + r.width; ++i) {
+    border.push_back(edge(i, r.y, 1, 0));
+    border.push_back(edge(i, r.y + r.height - 1, 1, 0));
+  }
+  for (int j = r.y; j + 1 < r.y + r.height; ++j) {
+    border.push_back(edge(r.x, j, 0, 1));
+    border.push_back(edge(r.x + r.width - 1, j, 0, 1));
+  }
+  std::nth_element(border.begin(), border.begin() + border.size() / 2, border.end());
+  const float limit = kStretchedEdge * border[border.size() / 2];
+  for (int j = r.y; j + 1 < r.y + r.height; ++j)
+    for (int i = r.x; i + 1 < r.x + r.width; ++i)
+      if (edge(i, j, 1, 0) > limit || edge(i, j, 0, 1) > limit) return true;
+  return false;
 }
 
 } // namespace
@@ -40,7 +67,7 @@ int fineIterations(const RelaxOptions& options) {
 Document evenOutSamples(const Document& document, const RelaxOptions& options,
                         const RelaxProgress& progress) {
   checkOptions(options);
-  checkFinitePositions(document.positions);
+  checkPositions(document.positions);
   detail::OffsetField field(document.size());
   field.freeAll();
   if (!detail::solveOffsets(document.positions, field, fineIterations(options), progress))
@@ -55,11 +82,12 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
                                     const RelaxOptions& options) {
   checkOptions(options);
-  checkFinitePositions(document.positions);
+  checkPositions(document.positions);
   const int n = document.size();
   detail::OffsetField field(n);
   for (const TexelRect& r : regions)
-    field.freeInside(r);
+    if (stretchedInside(document.positions, clipped(r, n))) field.freeInside(clipped(r, n));
+  if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end()) return {};
   detail::solveOffsets(document.positions, field, fineIterations(options), {});
   // The changed texels' bounding rectangle in each quarter of the image keeps seam partners on
   // opposite borders in separate rectangles.

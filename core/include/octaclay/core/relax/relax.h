@@ -30,10 +30,11 @@ using RelaxProgress = std::function<bool(float)>;
 Document evenOutSamples(const Document& document, const RelaxOptions& options = {},
                         const RelaxProgress& progress = {});
 
-/// The local relaxation behind "keep detail": the same flow, on the samples of `regions`
-/// (and those identified with them) only, the rest pinned. Rewrites the changed texels of every
-/// layer in place and returns the rectangles it changed (empty when nothing was stretched
-/// enough to move). Throws like evenOutSamples.
+/// The local relaxation behind "keep detail": the same flow, on the samples inside `regions`
+/// (and those identified with them) only, the rest and each region's outer ring pinned. A
+/// region is left alone unless one of its grid edges is over twice as long as the median edge
+/// on its border (nothing there was stretched). Rewrites the changed texels of every layer in
+/// place and returns the rectangles it changed (empty when none). Throws like evenOutSamples.
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
                                     const RelaxOptions& options = {});
 

@@ -1,0 +1,94 @@
+#include "octaclay/core/document/edit_steps.h"
+
+#include "octaclay/core/error.h"
+
+#include <array>
+#include <cstring>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace octaclay::core {
+namespace {
+
+constexpr std::array<EditLayer, 4> kLayers{EditLayer::Positions, EditLayer::Diffuse,
+                                           EditLayer::Feature, EditLayer::Mask};
+
+// The texels of region in layer, row-major, editLayerChannels(layer) floats each.
+std::vector<float> tileTexels(const Document& doc, EditLayer layer, TexelRect region) {
+  const std::size_t ch = static_cast<std::size_t>(editLayerChannels(layer));
+  std::vector<float> out(static_cast<std::size_t>(region.width) *
+                         static_cast<std::size_t>(region.height) * ch);
+  const std::size_t side = static_cast<std::size_t>(doc.size() + 1);
+  std::size_t o = 0;
+  for (int j = region.y; j < region.y + region.height; ++j)
+    for (int i = region.x; i < region.x + region.width; ++i) {
+      const std::size_t t = static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i);
+      if (layer == EditLayer::Positions) {
+        const Vec4f& p = doc.positions.at(i, j);
+        out[o++] = p.x, out[o++] = p.y, out[o++] = p.z, out[o++] = p.w;
+        continue;
+      }
+      const Layer& l = layer == EditLayer::Diffuse   ? doc.diffuse
+                       : layer == EditLayer::Feature ? doc.feature
+                                                     : doc.mask;
+      for (std::size_t c = 0; c < ch; ++c)
+        out[o++] = l.uniform() ? l.fill[c] : l.texels[t * ch + c];
+    }
+  return out;
+}
+
+bool meets(TexelRect a, const std::vector<TexelRect>& rects) {
+  if (rects.empty()) return true;
+  for (const TexelRect& b : rects)
+    if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height)
+      return true;
+  return false;
+}
+
+} // namespace
+
+Stroke recordDifference(const Document& before, const Document& after, std::string label,
+                        const std::vector<TexelRect>& within) {
+  if (before.size() != after.size())
+    throw Error(ErrorKind::InvalidArgument, "recordDifference: the documents differ in size");
+  const int side = before.size() + 1;
+  StrokeRecorder recorder(side);
+  const int tiles = StrokeRecorder::tilesPerSide(side);
+  for (EditLayer layer : kLayers) {
+    if (layer == EditLayer::Mask && !before.hasMask && !after.hasMask) continue;
+    for (int ty = 0; ty < tiles; ++ty)
+      for (int tx = 0; tx < tiles; ++tx) {
+        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
+        if (!meets(r, within)) continue;
+        const std::vector<float> b = tileTexels(before, layer, r), a = tileTexels(after, layer, r);
+        if (std::memcmp(b.data(), a.data(), b.size() * sizeof(float)) == 0) continue;
+        recorder.addTile(layer, tx, ty, editLayerChannels(layer), b, a);
+      }
+  }
+  return recorder.finish(std::move(label));
+}
+
+Stroke combineSteps(const Stroke& first, const Stroke& second, const Document& current,
+                    std::string label) {
+  const int side = current.size() + 1;
+  // Per (layer, tile): the change in each step, if any.
+  std::map<std::array<int, 3>, std::pair<const TileChange*, const TileChange*>> tiles;
+  for (const TileChange& t : first.tiles)
+    tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].first = &t;
+  for (const TileChange& t : second.tiles)
+    tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].second = &t;
+  StrokeRecorder recorder(side);
+  for (const auto& [key, changes] : tiles) {
+    const EditLayer layer = static_cast<EditLayer>(key[0]);
+    const TexelRect r = StrokeRecorder::tileRegion(side, key[2], key[1]);
+    const std::vector<float> after = tileTexels(current, layer, r);
+    std::vector<float> before = after;
+    if (changes.second) changes.second->patch(TileState::Before, before);
+    if (changes.first) changes.first->patch(TileState::Before, before);
+    recorder.addTile(layer, key[2], key[1], editLayerChannels(layer), before, after);
+  }
+  return recorder.finish(std::move(label));
+}
+
+} // namespace octaclay::core
