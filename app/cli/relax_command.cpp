@@ -5,6 +5,7 @@
 #include "json_output.h"
 
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/measure/surface_distance.h"
