@@ -1,0 +1,278 @@
+// The global even-out and the local relaxation (core/relax): the limb a pulled sphere grows gets
+// its samples back, the surface and the paint stay where they are, seams stay exact.
+#include "shared_data.h"
+
+#include "octaclay/core/document/document_info.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/import/import.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/measure/stretch.h"
+#include "octaclay/core/measure/surface_distance.h"
+#include "octaclay/core/relax/relax.h"
+
+#include <QFileInfo>
+#include <QTest>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+using namespace octaclay::core;
+
+namespace {
+
+// A unit sphere with a thin limb 4.3 long pulled out of the pole that sample (N/2, N/2) sits
+// on (+z): what 15 push dabs at one spot make, few samples spread over a long spike.
+Document limbDocument(int n) {
+  GeometryImage image = makeBaseShape(BaseShape::Sphere, n);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      Vec4f& p = image.at(i, j);
+      const float angle = std::acos(std::clamp(p.z / length(p.xyz()), -1.0f, 1.0f));
+      const float t = 1.0f - angle / 0.3f;
+      if (t <= 0) continue;
+      const float pull = 4.3f * t * t * (3 - 2 * t);
+      p.z += pull;
+      const float pinch = 1.0f - 0.7f * std::min(1.0f, 4 * t);
+      p.x *= pinch, p.y *= pinch;
+    }
+  return makeDocument(std::move(image));
+}
+
+bool inLimb(const Vec3f& p) {
+  return length(p) > 1.5f;
+}
+
+SurfaceDistance moved(const Document& a, const Document& b) {
+  return compareSurfaces(extractMesh(a.positions), extractMesh(b.positions),
+                         {.samplesPerSurface = 200'000});
+}
+
+// Triangles facing the origin: a fold (the limb and the sphere are star-shaped from there).
+int inwardTriangles(const GeometryImage& image) {
+  int inward = 0;
+  const TriangleMesh mesh = extractMesh(image);
+  for (const auto& t : mesh.triangles) {
+    const Vec3f a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    if (dot(cross(b - a, c - a), a + b + c) <= 0) ++inward;
+  }
+  return inward;
+}
+
+void paintStripe(Document& doc) {
+  const int n = doc.size();
+  doc.diffuse.texels.assign(static_cast<std::size_t>(n + 1) * (n + 1) * 4, 1.0f);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float z = doc.positions.at(i, j).z;
+      float* c = &doc.diffuse.texels[(static_cast<std::size_t>(j) * (n + 1) + i) * 4];
+      if (z > 2.0f && z < 3.0f) c[1] = c[2] = 0.0f; // red
+    }
+}
+
+} // namespace
+
+class RelaxTest : public QObject {
+  Q_OBJECT
+private slots:
+  void evensOutTheLimb_data();
+  void evensOutTheLimb();
+  void carriesPaintWithTheSurface();
+  void leavesAnEvenSphereAlmostAlone();
+  void importedMeshesStayPut_data();
+  void importedMeshesStayPut();
+  void cancelThrowsAndReportsProgress();
+  void refusesBadInput();
+  void relaxesOnlyStretchedRegions();
+};
+
+void RelaxTest::evensOutTheLimb_data() {
+  QTest::addColumn<int>("n");
+  QTest::newRow("64") << 64;
+  QTest::newRow("256") << 256;
+}
+
+void RelaxTest::evensOutTheLimb() {
+  QFETCH(int, n);
+  const Document limb = limbDocument(n);
+  const RegionSampling before = regionSampling(limb.positions, inLimb);
+  const StretchSummary stretchBefore = summarizeStretch(limb.positions);
+  QVERIFY2(before.fairShare < 0.2, qPrintable(QString::number(before.fairShare)));
+  QVERIFY(stretchBefore.longestOverMedian > 20);
+  QCOMPARE(inwardTriangles(limb.positions), 0);
+
+  const Document even = evenOutSamples(limb);
+  const RegionSampling after = regionSampling(even.positions, inLimb);
+  const StretchSummary stretchAfter = summarizeStretch(even.positions);
+  qInfo("N %d: limb fair share %.3f -> %.3f, spacing %.2f -> %.2f, longest/median %.1f -> %.1f", n,
+        before.fairShare, after.fairShare, before.spacingRatio, after.spacingRatio,
+        stretchBefore.longestOverMedian, stretchAfter.longestOverMedian);
+  QVERIFY(after.fairShare >= 0.5);
+  QVERIFY(after.spacingRatio <= 1.5);
+  QVERIFY(stretchAfter.longestOverMedian <= 10);
+
+  const SurfaceDistance d = moved(limb, even);
+  qInfo("  moved RMS %.5f %%, Hausdorff %.4f %% of the diagonal", 100 * d.rms, 100 * d.hausdorff);
+  QVERIFY(d.rms <= 1e-4);
+  QVERIFY(d.hausdorff <= 1e-3);
+
+  const DocumentInfo info = describeDocument(even);
+  QCOMPARE(info.seamGap, 0.0f);
+  QVERIFY(info.closed);
+  QVERIFY(info.manifold);
+  QCOMPARE(info.euler, 2LL);
+  QCOMPARE(inwardTriangles(even.positions), 0);
+  QVERIFY(even.feature.uniform()); // unpainted layers stay uniform
+  QVERIFY(even.diffuse.uniform());
+}
+
+void RelaxTest::carriesPaintWithTheSurface() {
+  Document limb = limbDocument(128);
+  paintStripe(limb);
+  const Document even = evenOutSamples(limb);
+  const int n = even.size();
+  int inside = 0, outside = 0;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float z = even.positions.at(i, j).z;
+      const float green = even.diffuse.texels[(static_cast<std::size_t>(j) * (n + 1) + i) * 4 + 1];
+      // Away from the stripe's edges (where a sample blends across it), the colour is the
+      // colour the surface point had.
+      if (z > 2.1f && z < 2.9f) {
+        QVERIFY2(green < 0.02f,
+                 qPrintable(QString("(%1, %2) z %3 green %4").arg(i).arg(j).arg(z).arg(green)));
+        ++inside;
+      } else if (z < 1.9f || z > 3.1f) {
+        QVERIFY2(green > 0.98f,
+                 qPrintable(QString("(%1, %2) z %3 green %4").arg(i).arg(j).arg(z).arg(green)));
+        ++outside;
+      }
+    }
+  // The stripe gained samples with the limb: many more now than before.
+  int insideBefore = 0;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      insideBefore += limb.positions.at(i, j).z > 2.1f && limb.positions.at(i, j).z < 2.9f;
+  qInfo("stripe samples %d -> %d", insideBefore, inside);
+  QVERIFY(inside > 2 * insideBefore);
+  QVERIFY(outside > 0);
+}
+
+void RelaxTest::leavesAnEvenSphereAlmostAlone() {
+  const Document sphere = makeDocument(makeBaseShape(BaseShape::Sphere, 128));
+  const Document even = evenOutSamples(sphere);
+  const StretchSummary before = summarizeStretch(sphere.positions);
+  const StretchSummary after = summarizeStretch(even.positions);
+  QVERIFY(after.longestOverMedian <= before.longestOverMedian + 0.05);
+  const SurfaceDistance d = moved(sphere, even);
+  QVERIFY(d.hausdorff <= 1e-3);
+  QCOMPARE(describeDocument(even).seamGap, 0.0f);
+}
+
+void RelaxTest::importedMeshesStayPut_data() {
+  QTest::addColumn<QString>("file");
+  QTest::newRow("bunny_npm") << "bunny_npm.obj";
+  QTest::newRow("spot") << "spot.obj";
+}
+
+void RelaxTest::importedMeshesStayPut() {
+  QFETCH(QString, file);
+  const QString path = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file;
+  if (!QFileInfo::exists(path)) OCTACLAY_MISSING_SHARED_DATA(file);
+  const ValidatedMesh mesh = loadGenus0Mesh(path.toStdString());
+  const Document imported = importValidatedMesh(mesh, parameterizeOnSphere(mesh.mesh), 64);
+  const Document even = evenOutSamples(imported);
+  const StretchSummary before = summarizeStretch(imported.positions);
+  const StretchSummary after = summarizeStretch(even.positions);
+  const SurfaceDistance d = moved(imported, even);
+  qInfo("%s: longest/median %.1f -> %.1f, moved RMS %.4f %%, Hausdorff %.3f %%", qPrintable(file),
+        before.longestOverMedian, after.longestOverMedian, 100 * d.rms, 100 * d.hausdorff);
+  QVERIFY(after.longestOverMedian <= before.longestOverMedian);
+  QVERIFY(d.rms <= 1e-3);
+  const DocumentInfo info = describeDocument(even);
+  QCOMPARE(info.seamGap, 0.0f);
+  QCOMPARE(info.euler, 2LL);
+}
+
+void RelaxTest::cancelThrowsAndReportsProgress() {
+  const Document limb = limbDocument(64);
+  std::vector<float> seen;
+  try {
+    evenOutSamples(limb, {}, [&](float f) {
+      seen.push_back(f);
+      return seen.size() < 5;
+    });
+    QFAIL("a cancelled even-out returned");
+  } catch (const Error& e) {
+    QCOMPARE(e.kind(), ErrorKind::Cancelled);
+  }
+  QCOMPARE(seen.size(), std::size_t{5});
+  for (std::size_t i = 1; i < seen.size(); ++i)
+    QVERIFY(seen[i] > seen[i - 1]);
+  float last = 0;
+  evenOutSamples(limb, {}, [&](float f) {
+    last = f;
+    return true;
+  });
+  QCOMPARE(last, 1.0f);
+}
+
+void RelaxTest::refusesBadInput() {
+  const Document limb = limbDocument(16);
+  for (int iterations : {-1, kMaxRelaxIterations + 1}) {
+    try {
+      evenOutSamples(limb, {.iterations = iterations});
+      QFAIL("an absurd iteration count was accepted");
+    } catch (const Error& e) {
+      QCOMPARE(e.kind(), ErrorKind::InvalidArgument);
+    }
+  }
+  Document damaged = limb;
+  damaged.positions.at(3, 5).x = std::numeric_limits<float>::quiet_NaN();
+  try {
+    evenOutSamples(damaged);
+    QFAIL("a damaged document was relaxed");
+  } catch (const Error& e) {
+    QCOMPARE(e.kind(), ErrorKind::InvalidInput);
+  }
+  std::vector<TexelRect> all{{0, 0, 17, 17}};
+  QVERIFY_THROWS_EXCEPTION(Error, relaxRegions(damaged, all));
+}
+
+void RelaxTest::relaxesOnlyStretchedRegions() {
+  Document sphere = makeDocument(makeBaseShape(BaseShape::Sphere, 64));
+  const Document untouched = sphere;
+  QVERIFY(relaxRegions(sphere, {{16, 16, 33, 33}}).empty());
+  QVERIFY(sphere.positions.texels().size() == untouched.positions.texels().size());
+  QVERIFY(std::memcmp(sphere.positions.texels().data(), untouched.positions.texels().data(),
+                      sphere.positions.byteSize()) == 0);
+
+  const int n = 128;
+  Document limb = limbDocument(n);
+  const Document before = limb;
+  const TexelRect region{24, 24, 81, 81};
+  const std::vector<TexelRect> changed = relaxRegions(limb, {region});
+  QVERIFY(!changed.empty());
+  for (const TexelRect& r : changed) {
+    QVERIFY(r.x > region.x && r.y > region.y);
+    QVERIFY(r.x + r.width < region.x + region.width && r.y + r.height < region.y + region.height);
+  }
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const bool inside = i > region.x && i < region.x + region.width - 1 && j > region.y &&
+                          j < region.y + region.height - 1;
+      if (!inside) QVERIFY(limb.positions.at(i, j) == before.positions.at(i, j));
+    }
+  const RegionSampling a = regionSampling(before.positions, inLimb);
+  const RegionSampling b = regionSampling(limb.positions, inLimb);
+  qInfo("local relax: limb fair share %.3f -> %.3f", a.fairShare, b.fairShare);
+  QVERIFY(b.fairShare > 3 * a.fairShare);
+  QVERIFY(moved(before, limb).hausdorff <= 1e-3);
+  QCOMPARE(inwardTriangles(limb.positions), 0);
+}
+
+QTEST_GUILESS_MAIN(RelaxTest)
+#include "relax_test.moc"
