@@ -3,7 +3,9 @@
 
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/measure/stretch.h"
 
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -15,8 +17,8 @@ Command addInfoCommand(CLI::App& app) {
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* sub =
-      app.add_subcommand("info", "Describe a document: size, topology, bounding box, layers");
+  CLI::App* sub = app.add_subcommand(
+      "info", "Describe a document: size, topology, bounding box, layers, stretch");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
@@ -34,6 +36,8 @@ Command addInfoCommand(CLI::App& app) {
                   break;
                 }
 
+            const core::StretchSummary stretch = core::summarizeStretch(document.positions);
+
             if (opt->json) {
               std::cout << app::JsonReply{{"document", opt->input},
                                           {"format_version", header.formatVersion},
@@ -48,7 +52,14 @@ Command addInfoCommand(CLI::App& app) {
                                           {"seam_gap", info.seamGap},
                                           {"degenerate_triangles", info.degenerateTriangles},
                                           {"bbox", toJson(info.bbox)},
-                                          {"layers", info.layers}}
+                                          {"layers", info.layers},
+                                          {"stretch",
+                                           {{"longest_over_median", stretch.longestOverMedian},
+                                            {"p99_over_median", stretch.p99OverMedian},
+                                            {"share_over_4x", stretch.shareOver4x},
+                                            {"median_edge", stretch.medianEdge},
+                                            {"longest_edge", stretch.longestEdge},
+                                            {"mean_spacing", stretch.meanSpacing}}}}
                                .dump()
                         << "\n";
               return kExitOk;
@@ -70,7 +81,13 @@ Command addInfoCommand(CLI::App& app) {
                       << "  layers    ";
             for (const auto& l : info.layers)
               std::cout << " " << l;
-            std::cout << "\n";
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "  stretch    longest edge %.1f× median, 99th percentile "
+                          "%.1f×, %.1f %% of samples over 4× median spacing\n",
+                          stretch.longestOverMedian, stretch.p99OverMedian,
+                          100.0 * stretch.shareOver4x);
+            std::cout << "\n" << line;
             return kExitOk;
           }};
 }
