@@ -175,11 +175,9 @@ core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::Brus
     return record;
   const std::vector<core::TexelRect> regions = stretchRegions(record, document_->size() + 1);
   if (regions.empty()) return record;
-  core::Document relaxed = document_->document();
-  const std::vector<core::TexelRect> changed = core::relaxRegions(relaxed, regions);
-  if (changed.empty()) return record;
   const core::Stroke relaxation =
-      core::recordDifference(document_->document(), relaxed, record.label, changed);
+      core::relaxRegionsStep(document_->document(), regions, record.label);
+  if (relaxation.tiles.empty()) return record;
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : relaxation.tiles)
     t.apply(core::TileState::After, apply);

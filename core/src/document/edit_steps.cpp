@@ -1,5 +1,7 @@
 #include "octaclay/core/document/edit_steps.h"
 
+#include "document/tile_texels.h"
+
 #include "octaclay/core/error.h"
 
 #include <array>
@@ -13,30 +15,6 @@ namespace {
 
 constexpr std::array<EditLayer, 4> kLayers{EditLayer::Positions, EditLayer::Diffuse,
                                            EditLayer::Feature, EditLayer::Mask};
-
-// The texels of region in layer, row-major, editLayerChannels(layer) floats each.
-std::vector<float> tileTexels(const Document& doc, EditLayer layer, TexelRect region) {
-  const std::size_t ch = static_cast<std::size_t>(editLayerChannels(layer));
-  std::vector<float> out(static_cast<std::size_t>(region.width) *
-                         static_cast<std::size_t>(region.height) * ch);
-  const std::size_t side = static_cast<std::size_t>(doc.size() + 1);
-  std::size_t o = 0;
-  for (int j = region.y; j < region.y + region.height; ++j)
-    for (int i = region.x; i < region.x + region.width; ++i) {
-      const std::size_t t = static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i);
-      if (layer == EditLayer::Positions) {
-        const Vec4f& p = doc.positions.at(i, j);
-        out[o++] = p.x, out[o++] = p.y, out[o++] = p.z, out[o++] = p.w;
-        continue;
-      }
-      const Layer& l = layer == EditLayer::Diffuse   ? doc.diffuse
-                       : layer == EditLayer::Feature ? doc.feature
-                                                     : doc.mask;
-      for (std::size_t c = 0; c < ch; ++c)
-        out[o++] = l.uniform() ? l.fill[c] : l.texels[t * ch + c];
-    }
-  return out;
-}
 
 bool meets(TexelRect a, const std::vector<TexelRect>& rects) {
   if (rects.empty()) return true;
@@ -61,7 +39,8 @@ Stroke recordDifference(const Document& before, const Document& after, std::stri
       for (int tx = 0; tx < tiles; ++tx) {
         const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
         if (!meets(r, within)) continue;
-        const std::vector<float> b = tileTexels(before, layer, r), a = tileTexels(after, layer, r);
+        const std::vector<float> b = detail::tileTexels(before, layer, r),
+                                 a = detail::tileTexels(after, layer, r);
         if (std::memcmp(b.data(), a.data(), b.size() * sizeof(float)) == 0) continue;
         recorder.addTile(layer, tx, ty, editLayerChannels(layer), b, a);
       }
@@ -82,7 +61,7 @@ Stroke combineSteps(const Stroke& first, const Stroke& second, const Document& c
   for (const auto& [key, changes] : tiles) {
     const EditLayer layer = static_cast<EditLayer>(key[0]);
     const TexelRect r = StrokeRecorder::tileRegion(side, key[2], key[1]);
-    const std::vector<float> after = tileTexels(current, layer, r);
+    const std::vector<float> after = detail::tileTexels(current, layer, r);
     std::vector<float> before = after;
     if (changes.second) changes.second->patch(TileState::Before, before);
     if (changes.first) changes.first->patch(TileState::Before, before);

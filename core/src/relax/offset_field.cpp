@@ -311,6 +311,43 @@ bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterat
   return true;
 }
 
+void resampleTexel(const Document& from, const OffsetField& field, EditLayer layer, int i, int j,
+                   float* out) {
+  const int n = field.n;
+  const std::size_t side = static_cast<std::size_t>(n + 1);
+  auto texel = [&](Sample s, float* value) {
+    const std::size_t t = static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i);
+    if (layer == EditLayer::Positions) {
+      const Vec4f& p = from.positions.at(s);
+      value[0] = p.x, value[1] = p.y, value[2] = p.z, value[3] = p.w;
+      return;
+    }
+    const Layer& l = layer == EditLayer::Diffuse   ? from.diffuse
+                     : layer == EditLayer::Feature ? from.feature
+                                                   : from.mask;
+    const std::size_t ch = static_cast<std::size_t>(l.channels);
+    for (std::size_t c = 0; c < ch; ++c)
+      value[c] = l.uniform() ? l.fill[c] : l.texels[t * ch + c];
+  };
+  const auto& d = field.offset[field.index(i, j)];
+  if (d[0] == 0.0f && d[1] == 0.0f) {
+    texel({i, j}, out);
+    return;
+  }
+  const Sample c = canonical(n, {i, j});
+  const auto& dc = field.offset[field.index(c.i, c.j)];
+  const GridPoint p = locateGridPoint(n, double(c.i) + dc[0], double(c.j) + dc[1]);
+  const std::size_t channels = static_cast<std::size_t>(editLayerChannels(layer));
+  std::array<float, 4> value{};
+  for (std::size_t ch = 0; ch < channels; ++ch)
+    out[ch] = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    texel(p.samples[k], value.data());
+    for (std::size_t ch = 0; ch < channels; ++ch)
+      out[ch] += value[ch] * p.weights[k];
+  }
+}
+
 void resampleDocument(const Document& from, const OffsetField& field, Document& to) {
   const int n = field.n;
   const GeometryImage& image = from.positions;
@@ -328,11 +365,11 @@ void resampleDocument(const Document& from, const OffsetField& field, Document& 
       target.texels[t * ch + c] = v;
     }
   };
-  auto copyTexel = [](const Layer& source, Layer& target, std::size_t from, std::size_t t) {
+  auto copyTexel = [](const Layer& source, Layer& target, std::size_t at, std::size_t t) {
     if (source.uniform()) return;
     const std::size_t ch = static_cast<std::size_t>(source.channels);
     for (std::size_t c = 0; c < ch; ++c)
-      target.texels[t * ch + c] = source.texels[from * ch + c];
+      target.texels[t * ch + c] = source.texels[at * ch + c];
   };
   parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
@@ -359,11 +396,11 @@ void resampleDocument(const Document& from, const OffsetField& field, Document& 
     for (Sample b : {Sample{s, 0}, Sample{s, n}, Sample{0, s}, Sample{n, s}}) {
       const Sample c = canonical(n, b);
       if (c == b) continue;
-      const std::size_t from = field.index(c.i, c.j), t = field.index(b.i, b.j);
+      const std::size_t source = field.index(c.i, c.j), t = field.index(b.i, b.j);
       to.positions.at(b) = to.positions.at(c);
-      copyTexel(to.diffuse, to.diffuse, from, t);
-      copyTexel(to.feature, to.feature, from, t);
-      if (to.hasMask) copyTexel(to.mask, to.mask, from, t);
+      copyTexel(to.diffuse, to.diffuse, source, t);
+      copyTexel(to.feature, to.feature, source, t);
+      if (to.hasMask) copyTexel(to.mask, to.mask, source, t);
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/edit_layer.h"
 #include "octaclay/core/relax/relax.h"
 
 #include <array>
@@ -33,6 +34,12 @@ struct OffsetField {
 /// keeping every cell unfolded. Returns false when progress cancelled.
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
                   const RelaxProgress& progress);
+
+/// Texel (i, j) of layer after resampling at the field's parameter points, editLayerChannels
+/// floats into out: a sample that did not move keeps its value; identified samples get the
+/// same bits (their canonical sample's point).
+void resampleTexel(const Document& from, const OffsetField& field, EditLayer layer, int i, int j,
+                   float* out);
 
 /// The document resampled at the field's parameter points: samples that did not move keep
 /// their texels bit for bit; identified samples stay bit-equal.

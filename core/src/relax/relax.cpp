@@ -1,5 +1,6 @@
 #include "octaclay/core/relax/relax.h"
 
+#include "document/tile_texels.h"
 #include "relax/offset_field.h"
 
 #include "octaclay/core/document/document_checks.h"
@@ -79,34 +80,60 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
   return result;
 }
 
-std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
-                                    const RelaxOptions& options) {
+Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
+                        std::string label, const RelaxOptions& options) {
   checkOptions(options);
   checkPositions(document.positions);
-  const int n = document.size();
+  const int n = document.size(), side = n + 1;
   detail::OffsetField field(n);
   for (const TexelRect& r : regions)
     if (stretchedInside(document.positions, clipped(r, n))) field.freeInside(clipped(r, n));
-  if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end()) return {};
+  StrokeRecorder recorder(side);
+  if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
+    return recorder.finish(std::move(label));
   detail::solveOffsets(document.positions, field, fineIterations(options), {});
-  // The changed texels' bounding rectangle in each quarter of the image keeps seam partners on
-  // opposite borders in separate rectangles.
-  std::vector<TexelRect> changed;
-  const int half = n / 2;
-  for (int qy = 0; qy < 2; ++qy)
-    for (int qx = 0; qx < 2; ++qx) {
-      int x0 = n + 1, y0 = n + 1, x1 = -1, y1 = -1;
-      for (int j = qy * (half + 1); j <= (qy ? n : half); ++j)
-        for (int i = qx * (half + 1); i <= (qx ? n : half); ++i) {
-          const auto& d = field.offset[field.index(i, j)];
-          if (d[0] == 0.0f && d[1] == 0.0f) continue;
-          x0 = std::min(x0, i), y0 = std::min(y0, j), x1 = std::max(x1, i), y1 = std::max(y1, j);
-        }
-      if (x1 >= 0) changed.push_back({x0, y0, x1 - x0 + 1, y1 - y0 + 1});
+  const int tiles = StrokeRecorder::tilesPerSide(side);
+  std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const auto& d = field.offset[field.index(i, j)];
+      if (d[0] != 0.0f || d[1] != 0.0f)
+        moved[static_cast<std::size_t>(j / StrokeRecorder::kTileSize) * tiles +
+              static_cast<std::size_t>(i / StrokeRecorder::kTileSize)] = 1;
     }
-  if (changed.empty()) return changed;
-  const Document before = document; // resampling reads around each moved sample
-  detail::resampleDocument(before, field, document);
+  for (EditLayer layer :
+       {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
+    // A uniform layer resamples to its own fill: nothing changes.
+    if ((layer == EditLayer::Diffuse && document.diffuse.uniform()) ||
+        (layer == EditLayer::Feature && document.feature.uniform()) ||
+        (layer == EditLayer::Mask && (!document.hasMask || document.mask.uniform())))
+      continue;
+    const std::size_t ch = static_cast<std::size_t>(editLayerChannels(layer));
+    for (int ty = 0; ty < tiles; ++ty)
+      for (int tx = 0; tx < tiles; ++tx) {
+        if (!moved[static_cast<std::size_t>(ty) * tiles + static_cast<std::size_t>(tx)]) continue;
+        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
+        const std::vector<float> before = detail::tileTexels(document, layer, r);
+        std::vector<float> after(before.size());
+        std::size_t o = 0;
+        for (int j = r.y; j < r.y + r.height; ++j)
+          for (int i = r.x; i < r.x + r.width; ++i, o += ch)
+            detail::resampleTexel(document, field, layer, i, j, &after[o]);
+        recorder.addTile(layer, tx, ty, static_cast<int>(ch), before, after);
+      }
+  }
+  return recorder.finish(std::move(label));
+}
+
+std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
+                                    const RelaxOptions& options) {
+  const Stroke step = relaxRegionsStep(document, regions, "relax", options);
+  const TileApplier apply = applierFor(document);
+  std::vector<TexelRect> changed;
+  for (const TileChange& t : step.tiles) {
+    t.apply(TileState::After, apply);
+    if (t.layer == EditLayer::Positions) changed.push_back(t.region);
+  }
   return changed;
 }
 

@@ -256,15 +256,15 @@ void RelaxTest::relaxesOnlyStretchedRegions() {
   const TexelRect region{24, 24, 81, 81};
   const std::vector<TexelRect> changed = relaxRegions(limb, {region});
   QVERIFY(!changed.empty());
-  for (const TexelRect& r : changed) {
-    QVERIFY(r.x > region.x && r.y > region.y);
-    QVERIFY(r.x + r.width < region.x + region.width && r.y + r.height < region.y + region.height);
-  }
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool inside = i > region.x && i < region.x + region.width - 1 && j > region.y &&
                           j < region.y + region.height - 1;
       if (!inside) QVERIFY(limb.positions.at(i, j) == before.positions.at(i, j));
+      bool covered = false; // the rectangles returned hold every changed texel
+      for (const TexelRect& r : changed)
+        covered = covered || (i >= r.x && i < r.x + r.width && j >= r.y && j < r.y + r.height);
+      if (!covered) QVERIFY(limb.positions.at(i, j) == before.positions.at(i, j));
     }
   const RegionSampling a = regionSampling(before.positions, inLimb);
   const RegionSampling b = regionSampling(limb.positions, inLimb);

@@ -1,9 +1,11 @@
 #pragma once
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/geometry/texel_rect.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace octaclay::core {
@@ -37,5 +39,11 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options = 
 /// place and returns the rectangles it changed (empty when none). Throws like evenOutSamples.
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
                                     const RelaxOptions& options = {});
+
+/// relaxRegions as an undo step, the document left as it is: the tiles of every layer the
+/// relaxation changes, before and after (empty when nothing moved). Apply its After state to
+/// make the change (what keep-detail does on the GPU).
+Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
+                        std::string label, const RelaxOptions& options = {});
 
 } // namespace octaclay::core
