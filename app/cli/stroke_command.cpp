@@ -167,11 +167,15 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("--radius", opt->radius, "Fraction of the bounding-box diagonal")
       ->check(kFiniteNumber)
       ->capture_default_str();
-  sub->add_option("--strength", opt->strength, "Fraction of the radius; negative pulls")
+  sub->add_option("--strength", opt->strength,
+                  "How far the stroke moves the surface per radius travelled, as a fraction of the "
+                  "radius (a sculpt brush's dab applies strength × spacing; paint and splats "
+                  "apply it whole); negative pulls")
       ->check(kFiniteNumber)
       ->capture_default_str();
   sub->add_option("--spacing", opt->spacing,
-                  "Between dabs, fraction of the radius (default: the brush's)")
+                  "Between dabs, along the surface as the stroke began, as a fraction of the "
+                  "radius, at least 0.01 (default: the brush's, 0.15 for the built-ins)")
       ->check(kFiniteNumber);
   sub->add_option("--symmetry", opt->symmetry, "Mirror planes through the model's centre: x, y, z");
   sub->add_option("--view", opt->view,
@@ -227,8 +231,8 @@ Command addStrokeCommand(CLI::App& app) {
         const gpu::GlContext context = gpu::GlContext::createHeadless();
         gpu::BrushEngine engine;
         loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
-        // Every dab applies the whole --strength (the modeller shares it out by spacing).
-        SculptSession session(DabStrength::Full);
+        // The modeller's rules (gpu/stroke_rules.h): the stroke shares --strength out by spacing.
+        SculptSession session;
         session.setBrushes(engine, catalog);
         session.setKeepDetail(opt->keepDetail == "on");
         session.loadBrush(*brush);

@@ -11,7 +11,17 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
+
 namespace octaclay::app {
+namespace {
+
+// The pick's interpolated (u, v): its triangle test widens edges by a hair, so clamp.
+core::Vec2f pickedUv(const core::PickHit& hit) {
+  return {std::clamp(hit.u, 0.0f, 1.0f), std::clamp(hit.v, 0.0f, 1.0f)};
+}
+
+} // namespace
 
 void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   if (!session_.hasDocument() || !library_ || session_.stroking()) return; // one at a time
@@ -28,7 +38,7 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
     return;
   }
   stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});
-  session_.queueDab(hit->sample, tabletDown_ ? tabletPressure_ : 1.0f);
+  session_.queueDab(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f);
   hover_ = hit;
   update();
 }
@@ -44,7 +54,7 @@ void ViewportWidget::queueStrokePoint(QPointF p) {
   const std::optional<core::PickHit> hit = pickAt(p);
   if (!hit) return; // off the model: the stroke resumes where the pointer comes back
   hover_ = hit;
-  session_.queueDab(hit->sample, tabletDown_ ? tabletPressure_ : 1.0f);
+  session_.queueDab(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f);
 }
 
 void ViewportWidget::endStroke() {

@@ -208,7 +208,7 @@ private:
   SaliencyKeeper saliency_;
   LodDisplay lodDisplay_ = LodDisplay::FullResolution;
   std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
-  SculptSession session_{DabStrength::SpacingShare};
+  SculptSession session_;
   std::optional<core::Document> pending_; // set before GL started (or when it failed)
 
   BrushSettings settings_;

@@ -14,16 +14,15 @@ namespace octaclay::app {
 
 struct SculptSession::ActiveStroke {
   std::string brushId;
-  float unit = 1;     // object units per radius fraction: the diagonal when the stroke began
-  float dabShare = 1; // share of the strength each dab applies
+  float unit = 1; // object units per radius fraction: the diagonal when the stroke began
   gpu::BrushManifest manifest; // the stroke refers to it
   float sign = 1;
   std::unique_ptr<gpu::StrokeSession> stroke;
-  std::vector<std::pair<core::Sample, float>> queue; // sample, pressure
+  std::vector<std::pair<core::Vec2f, float>> queue; // (u, v), pressure
   bool failed = false; // a dab threw: the engine restored the layers, no more dabs
 };
 
-SculptSession::SculptSession(DabStrength rule) : rule_(rule) {}
+SculptSession::SculptSession() = default;
 SculptSession::~SculptSession() = default;
 
 void SculptSession::setBrushes(gpu::BrushEngine& engine, const gpu::BrushCatalog& catalog) {
@@ -62,15 +61,6 @@ void SculptSession::releaseGpu() {
   document_.reset();
 }
 
-float SculptSession::dabShare(const gpu::BrushManifest& brush) const {
-  // A sculpt stroke's strength is how far it moves the surface per radius travelled, whatever
-  // the spacing: each dab applies strength × spacing, as overlapping dabs add up. Paint and
-  // splats blend toward a target, so overlaps converge instead of piling up: full strength.
-  if (rule_ == DabStrength::SpacingShare && brush.category == gpu::Category::Sculpt)
-    return std::clamp(brush.spacing, 0.01f, 1.0f);
-  return 1.0f;
-}
-
 void SculptSession::beginStroke(const std::string& id, const BrushSettings& settings,
                                 core::EditLayer paintTarget, float sign, core::Vec3f eye) {
   auto stroke = std::make_unique<ActiveStroke>();
@@ -79,7 +69,6 @@ void SculptSession::beginStroke(const std::string& id, const BrushSettings& sett
   stroke->sign = sign;
   // Fixed for the stroke: a stroke that grows the model must not grow its own brush.
   stroke->unit = diagonal();
-  stroke->dabShare = dabShare(stroke->manifest);
   gpu::StrokeSettings s;
   s.brush = id;
   s.radius = settings.radius * stroke->unit;
@@ -91,8 +80,8 @@ void SculptSession::beginStroke(const std::string& id, const BrushSettings& sett
   stroke_ = std::move(stroke);
 }
 
-void SculptSession::queueDab(core::Sample s, float pressure) {
-  stroke_->queue.emplace_back(s, pressure);
+void SculptSession::queueDab(core::Vec2f uv, float pressure) {
+  stroke_->queue.emplace_back(uv, pressure);
 }
 
 DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
@@ -104,14 +93,15 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (const auto& [sample, pressure] : stroke_->queue) {
+    for (const auto& [uv, pressure] : stroke_->queue) {
+      // The strength as given: the stroke shares it out among its dabs (dabShare).
       float radius = settings.radius * stroke_->unit;
-      float strength = settings.strength * stroke_->dabShare;
+      float strength = settings.strength;
       if (settings.pressureTarget == PressureTarget::Radius)
         radius *= std::max(pressure, 0.05f);
       else if (settings.pressureTarget == PressureTarget::Strength)
         strength *= pressure;
-      run.made += stroke_->stroke->moveTo(sample, radius, stroke_->sign * strength, 1.0f);
+      run.made += stroke_->stroke->moveToUv(uv, radius, stroke_->sign * strength, 1.0f);
     }
     run.touched = stroke_->stroke->takeTouched();
   } catch (const std::exception& e) {
@@ -140,8 +130,7 @@ std::string SculptSession::finishStroke() {
 }
 
 gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
-                                                 gpu::StrokeSettings settings) {
-  settings.strength *= dabShare(brush);
+                                                 const gpu::StrokeSettings& settings) {
   gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings);
   const auto start = std::chrono::steady_clock::now();
   result.undo = keepDetailAfter(std::move(result.undo), brush);

@@ -23,13 +23,6 @@ class GpuDocument;
 
 namespace octaclay::app {
 
-/// How much of a stroke's strength each dab applies. The modeller and octaclay-cli differ
-/// today; a later issue unifies them.
-enum class DabStrength {
-  Full,        ///< every dab applies the whole strength (octaclay-cli stroke)
-  SpacingShare ///< sculpt brushes apply strength × spacing, paint and splats the whole (modeller)
-};
-
 /// What one run of the queued dabs did.
 struct DabRun {
   int made = 0;                         ///< dabs, mirrored ones included
@@ -43,7 +36,7 @@ struct DabRun {
 /// touches the GPU needs the brush engine's GL context current on the calling thread.
 class SculptSession {
 public:
-  explicit SculptSession(DabStrength rule);
+  SculptSession();
   ~SculptSession();
   SculptSession(const SculptSession&) = delete;
   SculptSession& operator=(const SculptSession&) = delete;
@@ -80,9 +73,10 @@ public:
   void beginStroke(const std::string& id, const BrushSettings& settings,
                    core::EditLayer paintTarget, float sign, core::Vec3f eye);
   bool stroking() const { return stroke_ != nullptr; }
-  /// Queues a dab of the stroke at sample s; pressure in [0, 1].
-  void queueDab(core::Sample s, float pressure);
-  /// Makes the queued dabs with the settings' current radius, strength and pressure target,
+  /// Queues a move of the stroke to image point uv (a pick's interpolated (u, v), each in
+  /// [0, 1]); pressure in [0, 1]. The stroke dabs along the way (gpu::StrokeSession::moveToUv).
+  void queueDab(core::Vec2f uv, float pressure);
+  /// Makes the queued moves with the settings' current radius, strength and pressure target,
   /// then empties the queue. A failing dab (a GL error, the watchdog) ends the run with its
   /// error and the stroke with it: the layers are back as before the stroke, later dabs are
   /// dropped and finishStroke() records nothing.
@@ -94,8 +88,10 @@ public:
   std::string finishStroke();
 
   /// Runs a whole stroke along settings.path (runStroke's contract; radius in object units)
-  /// with brush as loaded, at this session's dab strength. It is not recorded in history().
-  gpu::StrokeResult strokeAlongPath(const gpu::BrushManifest& brush, gpu::StrokeSettings settings);
+  /// with brush as loaded: the same rules as an interactive stroke (gpu/stroke_rules.h). It is
+  /// not recorded in history().
+  gpu::StrokeResult strokeAlongPath(const gpu::BrushManifest& brush,
+                                    const gpu::StrokeSettings& settings);
 
   /// Keep detail (on by default): after a sculpt stroke moved positions, the region it changed
   /// (grown so samples can flow in from around it) is relaxed where the stroke stretched it
@@ -122,13 +118,10 @@ public:
 
 private:
   struct ActiveStroke;
-  /// The share of the strength each dab of brush applies under rule_.
-  float dabShare(const gpu::BrushManifest& brush) const;
 
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
   core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush);
 
-  DabStrength rule_;
   bool keepDetail_ = true;
   gpu::BrushEngine* engine_ = nullptr;
   const gpu::BrushCatalog* catalog_ = nullptr;

@@ -3,14 +3,16 @@
 #include "undo_capture.h"
 
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/normals.h"
+#include "octaclay/gpu/stroke_rules.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 namespace octaclay::gpu {
 namespace {
@@ -55,9 +57,10 @@ void checkSettings(const BrushManifest& brush, const StrokeSettings& settings) {
   checkFinite("the spacing", settings.spacing);
 }
 
-core::Sample sampleAt(int n, std::array<float, 2> uv) {
-  return {static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
-          static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))};
+void checkPoint(core::Vec2f uv) {
+  if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1))
+    badSetting("path point (" + formatValue(uv.x) + ", " + formatValue(uv.y) +
+               ") is outside [0, 1]");
 }
 
 core::Vec3f mirrored(core::Vec3f p, core::Vec3f centre, unsigned axes) {
@@ -65,6 +68,28 @@ core::Vec3f mirrored(core::Vec3f p, core::Vec3f centre, unsigned axes) {
   if (axes & kSymmetryY) p.y = 2 * centre.y - p.y;
   if (axes & kSymmetryZ) p.z = 2 * centre.z - p.z;
   return p;
+}
+
+// The parameters t in (0, 1) at which from + t × delta crosses an integer.
+void addCrossings(double from, double delta, std::vector<double>& ts) {
+  if (delta == 0) return;
+  const double lo = std::min(from, from + delta), hi = std::max(from, from + delta);
+  for (double k = std::ceil(lo); k <= hi; ++k)
+    if (const double t = (k - from) / delta; t > 0 && t < 1) ts.push_back(t);
+}
+
+// The parameters 0 = t0 < t1 < … < 1 that cut the segment a → b (image coordinates, in
+// samples) where it crosses a cell's side or diagonal: the surface is linear between two.
+std::vector<double> linearPieces(std::array<double, 2> a, std::array<double, 2> b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  std::vector<double> ts{0.0, 1.0};
+  addCrossings(a[0], dx, ts);
+  addCrossings(a[1], dy, ts);
+  addCrossings(a[0] + a[1], dx + dy, ts); // anti-diagonals
+  addCrossings(a[0] - a[1], dx - dy, ts); // main diagonals
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  return ts;
 }
 
 } // namespace
@@ -93,19 +118,14 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
 
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings) {
-  if (settings.path.empty())
-    throw core::Error(core::ErrorKind::InvalidArgument, "the stroke's path has no point");
+  if (settings.path.empty()) badSetting("the stroke's path has no point");
   for (const auto& uv : settings.path)
-    if (!(uv[0] >= 0 && uv[0] <= 1 && uv[1] >= 0 && uv[1] <= 1))
-      throw core::Error(core::ErrorKind::InvalidArgument, "path point (" + std::to_string(uv[0]) +
-                                                              ", " + std::to_string(uv[1]) +
-                                                              ") is outside [0, 1]");
-  // One session fed the path points: it walks the samples between them, so a scripted stroke
-  // and an interactive one dab at the same places.
-  const int n = document.size();
+    checkPoint({uv[0], uv[1]});
+  // One session fed the path points: a scripted stroke and an interactive one follow the same
+  // rules and dab at the same places.
   StrokeSession session(engine, document, brush, settings);
   for (const auto& uv : settings.path)
-    session.moveTo(sampleAt(n, uv), settings.radius, settings.strength, settings.pressure);
+    session.moveToUv({uv[0], uv[1]}, settings.radius, settings.strength, settings.pressure);
   StrokeResult result;
   result.dabs = session.dabs();
   result.engineMs = session.engineMs();
@@ -134,10 +154,13 @@ struct StrokeSession::State {
   GpuDocument& document;
   const BrushManifest& brush;
   StrokeSettings settings;
-  core::Vec3f centre; ///< of the bounding box at the stroke's start: symmetry mirrors through it
+  core::Vec3f centre;  ///< of the bounding box at the stroke's start: symmetry mirrors through it
+  double diagonal = 0; ///< of that bounding box
   detail::UndoCapture undo;
-  std::optional<core::Sample> previous; ///< the last sample walked; none before the first move
-  float travelled = 0;                  ///< object-space distance since the last dab
+  float share = 1; ///< of the strength, per dab (dabShare)
+  /// The last point walked, image coordinates in samples; none before the first move.
+  std::optional<std::array<double, 2>> previous;
+  double travelled = 0; ///< along the surface as it began, since the last dab
   int dabs = 0;
   double engineMs = 0;
   std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
@@ -156,21 +179,72 @@ struct StrokeSession::State {
     }
   }
 
-  // One dab at s and its mirror images, capturing the undo tiles each may touch first.
-  void dabAt(core::Sample s, float radius, float strength, float pressure) {
+  // The surface as it was when the stroke began, at image point (x, y) in samples: what the
+  // dabs' spacing is measured on, so that a stroke does not stretch its own spacing.
+  core::Vec3f startPosition(double x, double y) const {
+    const SurfacePoint p = surfacePointAt(document.size(), x, y);
+    core::Vec3f sum;
+    for (int k = 0; k < 3; ++k)
+      sum += undo.positionBefore(p.corners[k]) * p.weights[k];
+    return sum;
+  }
+
+  // Walks the straight segment from the previous point to b (image coordinates, in samples),
+  // dabbing each time the distance since the last dab reaches spacing (object units). The
+  // distance is exact on the start surface's triangles; the remainder carries to the next walk.
+  void walkTo(std::array<double, 2> b, double spacing, float radius, float strength,
+              float pressure) {
+    const std::array<double, 2> a = *previous;
+    previous = b;
+    // A radius far below a sample would make dabs without end: at most 1e4 per diagonal.
+    spacing = std::max(spacing, 1e-4 * diagonal);
+    // The spacing shrank since the last walk (pen pressure on the radius): a dab is due now.
+    travelled = std::min(travelled, spacing);
+    const auto at = [&](double t) {
+      return std::array<double, 2>{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+    };
+    const std::vector<double> ts = linearPieces(a, b);
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const double t0 = ts[k], t1 = ts[k + 1];
+      const auto p0 = at(t0), p1 = at(t1);
+      const double length = core::length(startPosition(p1[0], p1[1]) - startPosition(p0[0], p0[1]));
+      double used = 0; // of this piece, up to the last dab on it
+      while (travelled + (length - used) >= spacing) {
+        used += spacing - travelled;
+        travelled = 0;
+        const double f = length > 0 ? std::clamp(used / length, 0.0, 1.0) : 0.0;
+        dabAt(at(t0 + (t1 - t0) * f), radius, strength, pressure);
+      }
+      travelled += length - used;
+    }
+  }
+
+  // One dab at image point (x, y) in samples and its mirror images, capturing the undo tiles
+  // each may touch first. The centre and its normal are the current surface's there; a mirror
+  // image is centred on the mirrored point with the mirrored normal, so a symmetric model gets
+  // mirror-equal dabs.
+  void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure) {
     const int n = document.size();
-    std::vector<core::Sample> centres{s};
-    const core::Vec3f p = document.document().positions.at(s).xyz();
+    const core::GeometryImage& image = document.document().positions;
+    const SurfacePoint point = surfacePointAt(n, xy[0], xy[1]);
+    const core::Vec3f p = interpolatePosition(image, point);
+    const core::Vec3f normal = interpolateNormal(image, point);
+    const core::Sample texel{std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
+                             std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+    std::vector<Dab> images(1); // the dab, then its mirror images
+    images[0].centre = p;
+    images[0].centreNormal = normal;
+    images[0].centreTexel = texel;
     for (unsigned axes = 1; axes < 8; ++axes)
-      if ((axes & settings.symmetry) == axes)
-        centres.push_back(nearestSample(document, mirrored(p, centre, axes)));
-    for (core::Sample c : centres) {
-      Dab dab;
-      dab.centreTexel = c;
-      dab.centre = document.document().positions.at(c).xyz();
-      dab.centreNormal = core::vertexNormal(document.document().positions, c);
+      if ((axes & settings.symmetry) == axes) {
+        Dab& d = images.emplace_back();
+        d.centre = mirrored(p, centre, axes);
+        d.centreNormal = mirrored(normal, {}, axes);
+        d.centreTexel = nearestSample(document, d.centre);
+      }
+    for (Dab& dab : images) {
       dab.radius = radius;
-      dab.strength = strength;
+      dab.strength = strength * share;
       dab.pressure = pressure;
       dab.parameters = settings.parameters;
       if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
@@ -193,6 +267,28 @@ struct StrokeSession::State {
       ++dabs;
     }
   }
+
+  // Moves the stroke to image point xy (in samples): the first move dabs there, later ones
+  // walk from the previous point.
+  int moveTo(std::array<double, 2> xy, float radius, float strength, float pressure) {
+    if (abandoned) throw std::logic_error("StrokeSession::moveTo after a dab failed");
+    if (finished) throw std::logic_error("StrokeSession::moveTo after finish()");
+    checkFinite("the radius", radius);
+    checkFinite("the strength", strength);
+    checkFinite("the pressure", pressure);
+    const auto start = std::chrono::steady_clock::now();
+    const int before = dabs;
+    if (!previous) {
+      previous = xy;
+      dabAt(xy, radius, strength, pressure);
+    } else {
+      walkTo(xy, static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
+             radius, strength, pressure);
+    }
+    engineMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return dabs - before;
+  }
 };
 
 StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
@@ -202,6 +298,7 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
   checkSettings(brush, settings);
   settings.path.clear();
   state_ = std::make_unique<State>(engine, document, brush, std::move(settings));
+  state_->share = dabShare(brush, state_->settings.spacing);
   core::BoundingBox box;
   const core::TileBounds& bounds = document.bounds();
   for (int t = 0; t < bounds.tilesPerSide() * bounds.tilesPerSide(); ++t) {
@@ -209,51 +306,26 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
     box.extend(bounds.box(t).max);
   }
   state_->centre = (box.min + box.max) * 0.5f;
+  state_->diagonal = std::max(static_cast<double>(core::length(box.max - box.min)), 1e-6);
 }
 
 StrokeSession::~StrokeSession() = default;
 
 int StrokeSession::moveTo(core::Sample s, float radius, float strength, float pressure) {
-  State& st = *state_;
-  if (st.abandoned) throw std::logic_error("StrokeSession::moveTo after a dab failed");
-  if (st.finished) throw std::logic_error("StrokeSession::moveTo after finish()");
-  checkFinite("the radius", radius);
-  checkFinite("the strength", strength);
-  checkFinite("the pressure", pressure);
-  const int n = st.document.size();
+  const int n = state_->document.size();
   if (s.i < 0 || s.i > n || s.j < 0 || s.j > n)
     throw core::Error(core::ErrorKind::InvalidArgument,
                       "sample (" + std::to_string(s.i) + ", " + std::to_string(s.j) +
                           ") is outside the image (0 to " + std::to_string(n) + " each way)");
-  const auto start = std::chrono::steady_clock::now();
-  const int before = st.dabs;
-  if (!st.previous) {
-    st.dabAt(s, radius, strength, pressure);
-    st.previous = s;
-  } else {
-    // Walk the segment one sample at a time, measuring distance on the current surface (which
-    // the dabs along the way keep changing).
-    const float spacing =
-        (st.settings.spacing > 0 ? st.settings.spacing : st.brush.spacing) * std::abs(radius);
-    const core::Sample a = *st.previous, b = s;
-    const int steps = std::max(std::abs(b.i - a.i), std::abs(b.j - a.j));
-    for (int step = 1; step <= steps; ++step) {
-      const float t = static_cast<float>(step) / static_cast<float>(steps);
-      const core::Sample here{
-          a.i + static_cast<int>(std::lround(t * static_cast<float>(b.i - a.i))),
-          a.j + static_cast<int>(std::lround(t * static_cast<float>(b.j - a.j)))};
-      const core::GeometryImage& image = st.document.document().positions;
-      st.travelled += core::length(image.at(here).xyz() - image.at(*st.previous).xyz());
-      st.previous = here;
-      if (st.travelled >= spacing) {
-        st.dabAt(here, radius, strength, pressure);
-        st.travelled = 0;
-      }
-    }
-  }
-  st.engineMs +=
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return st.dabs - before;
+  return state_->moveTo({static_cast<double>(s.i), static_cast<double>(s.j)}, radius, strength,
+                        pressure);
+}
+
+int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float pressure) {
+  checkPoint(uv);
+  const double n = state_->document.size();
+  return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * n}, radius,
+                        strength, pressure);
 }
 
 std::vector<core::TexelRect> StrokeSession::takeTouched() {

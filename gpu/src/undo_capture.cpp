@@ -14,9 +14,22 @@ void UndoCapture::cover(core::TexelRect rect) {
   const int size = core::StrokeRecorder::kTileSize;
   for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
     for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
-      if (seen_.insert(ty * tiles_ + tx).second)
-        for (core::EditLayer layer : layers_)
+      if (const auto [at, added] = seen_.emplace(ty * tiles_ + tx, -1); added)
+        for (core::EditLayer layer : layers_) {
+          if (layer == core::EditLayer::Positions) at->second = static_cast<int>(before_.size());
           before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+        }
+}
+
+core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
+  const int size = core::StrokeRecorder::kTileSize;
+  const auto at = seen_.find((s.j / size) * tiles_ + s.i / size);
+  if (at == seen_.end() || at->second < 0) return document_.document().positions.at(s).xyz();
+  const Tile& t = before_[static_cast<std::size_t>(at->second)];
+  const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, t.x, t.y);
+  const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
+                        static_cast<std::size_t>(GpuDocument::channels(t.layer));
+  return {t.texels[k], t.texels[k + 1], t.texels[k + 2]};
 }
 
 void UndoCapture::restore() {

@@ -7,7 +7,7 @@
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/gpu/gpu_document.h"
 
-#include <set>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +23,10 @@ public:
 
   /// Captures the tiles of rect not captured yet.
   void cover(core::TexelRect rect);
+  /// The position of sample s as it was when the stroke began: from the captured tile when the
+  /// stroke writes positions and has covered s, else from the mirror (which nothing the stroke
+  /// may have changed differs from).
+  core::Vec3f positionBefore(core::Sample s) const;
   /// Writes every captured tile back to the mirror and the texture (the stroke is undone).
   void restore();
   /// The stroke's undo record, from the captured tiles and the mirror as it is now. When a
@@ -44,7 +48,7 @@ private:
   GpuDocument& document_;
   std::vector<core::EditLayer> layers_;
   int side_, tiles_;
-  std::set<int> seen_;
+  std::map<int, int> seen_; ///< tile index → its positions tile in before_, or -1
   std::vector<Tile> before_;
 };
 

@@ -77,7 +77,7 @@ struct Limb {
 
 // The 15 one-dab strokes, the radius taken from the diagonal before each as the CLI does.
 Limb pullLimb(Brushes& b, int n, bool keepDetail) {
-  app::SculptSession session(app::DabStrength::Full);
+  app::SculptSession session;
   session.setBrushes(b.engine, b.catalog);
   session.setKeepDetail(keepDetail);
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
@@ -101,7 +101,7 @@ Limb pullLimb(Brushes& b, int n, bool keepDetail) {
 double pushPerDab(Brushes& b, int n, bool keepDetail) {
   std::vector<double> perDab;
   for (int run = 0; run < 5; ++run) {
-    app::SculptSession session(app::DabStrength::Full);
+    app::SculptSession session;
     session.setBrushes(b.engine, b.catalog);
     session.setKeepDetail(keepDetail);
     session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));

@@ -11,6 +11,7 @@
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/gpu/brush_library.h"
+#include "octaclay/gpu/stroke_rules.h"
 
 #include <QApplication>
 #include <QImage>
@@ -150,20 +151,25 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
   if (!widget.undoStroke()) fail("the warm-up stroke left nothing to undo");
   frame(widget);
 
-  // The timed stroke. Between frames, off the clock, the dabs are counted by replaying what
-  // gpu::StrokeSession::moveTo does with the sample the widget picks (ViewportWidget exposes no
-  // dab count): walk the image samples from the previous one, summing distances on the current
-  // surface, one dab per spacing x radius, the radius a fraction of the current bounding box.
-  const float spacingFraction = widget.library()->catalog().find("push")->spacing;
+  // The timed stroke. Between frames, off the clock, the dabs are counted by replaying the
+  // stroke rules (gpu/stroke_rules.h) with the (u, v) the widget picks (ViewportWidget exposes
+  // no dab count): walk the straight (u, v) segment from the previous point over the surface as
+  // the stroke began (the sphere: the warm-up was undone), one dab per spacing x radius, the
+  // remainder carried, the radius a fraction of the bounding box when the stroke began.
+  const float spacingFraction = gpu::dabSpacing(*widget.library()->catalog().find("push"), 0);
   const auto radius = [&] {
     core::BoundingBox box;
     for (const core::Vec4f& texel : widget.document().positions.texels())
       box.extend(texel.xyz());
     return widget.brushSettings().radius * box.diagonal();
   };
+  const double spacing = double(spacingFraction * radius());
+  const auto startAt = [&](double u, double v) {
+    return gpu::interpolatePosition(start, gpu::surfacePointAt(n, u * n, v * n));
+  };
   std::optional<core::PickHit> hit = widget.pickAt(at(0));
-  core::Sample previous = hit->sample;
-  float travelled = 0;
+  double previousU = hit->u, previousV = hit->v;
+  double travelled = 0;
   int dabs = 1;
   auto t = Clock::now();
   widget.beginStrokeAt(at(0));
@@ -174,23 +180,21 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
     angle += step;
     hit = widget.pickAt(at(angle)); // what continueStrokeTo will pick
     if (hit) {
-      const core::GeometryImage& image = widget.document().positions;
-      const float spacing = spacingFraction * radius();
-      const core::Sample b = hit->sample;
-      const int steps = std::max(std::abs(b.i - previous.i), std::abs(b.j - previous.j));
-      const core::Sample a = previous;
+      // Fine steps: the surface is linear on each triangle, so this is the arc length to far
+      // better than a dab.
+      const double du = hit->u - previousU, dv = hit->v - previousV;
+      const int steps = 1 + int(std::ceil(8.0 * n * std::max(std::abs(du), std::abs(dv))));
+      core::Vec3f last = startAt(previousU, previousV);
       for (int k = 1; k <= steps; ++k) {
-        const float u = static_cast<float>(k) / static_cast<float>(steps);
-        const core::Sample here{
-            a.i + static_cast<int>(std::lround(u * static_cast<float>(b.i - a.i))),
-            a.j + static_cast<int>(std::lround(u * static_cast<float>(b.j - a.j)))};
-        travelled += core::length(image.at(here).xyz() - image.at(previous).xyz());
-        previous = here;
-        if (travelled >= spacing) {
+        const double s = double(k) / steps;
+        const core::Vec3f here = startAt(previousU + s * du, previousV + s * dv);
+        travelled += double(core::length(here - last));
+        last = here;
+        for (; travelled >= spacing; travelled -= spacing)
           ++dabs;
-          travelled = 0;
-        }
       }
+      previousU = hit->u;
+      previousV = hit->v;
     }
     t = Clock::now();
     widget.continueStrokeTo(at(angle));

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_engine.h"
 
 #include <array>
@@ -21,7 +22,7 @@ struct StrokeSettings {
   float radius = 0.1f;                    ///< object units
   float strength = 0.5f;                  ///< fraction of the radius
   float pressure = 1.0f;
-  float spacing = 0.0f; ///< between dabs, fraction of the radius; 0 → the brush's own
+  float spacing = 0.0f; ///< between dabs, fraction of the radius; 0 → the brush's (dabSpacing)
   unsigned symmetry = kSymmetryNone;
   std::map<std::string, std::array<float, 4>> parameters;
   /// A camera's eye (object space): splats project from it through each dab's centre. Unset:
@@ -35,16 +36,18 @@ struct StrokeResult {
   core::Stroke undo;   ///< the tiles the stroke changed, before and after
 };
 
-/// Runs a stroke: dabs are spaced along the path by object-space distance on the current
-/// surface, each centred on the sample under its path point (re-picked after the previous dab),
-/// and repeated at the mirrored surface point for each symmetry plane. All or nothing: on any
-/// throw below after the first dab, the written layers are restored bit for bit from the
-/// stroke's undo capture. Throws core::Error(UnknownId) for an unknown brush,
-/// core::Error(InvalidArgument) for an empty path, a point outside [0, 1], a radius, strength,
-/// pressure, spacing or view that is not finite, or a parameter that is not finite or outside
-/// its [min, max]; core::Error(InvalidInput) when the result holds a non-finite value or a
-/// coordinate beyond ±1e18 ("the brush produced a non-finite value at sample (i, j) …");
-/// BrushTimeoutError when a pass overran the engine's time limit.
+/// Runs a stroke by the rules of stroke_rules.h: dabs at arc length 0, s, 2s, … along the path
+/// (straight in (u, v) between its points, measured on the surface as the stroke began), each
+/// centred on the current surface's point at its (u, v) with the normal there, a sculpt brush's
+/// applying strength × dabShare(); each is repeated at the mirrored point for each symmetry
+/// plane. A one-point path is one dab. All or nothing: on any throw below after the first dab,
+/// the written layers are restored bit for bit from the stroke's undo capture. Throws
+/// core::Error(UnknownId) for an unknown brush, core::Error(InvalidArgument) for an empty path,
+/// a point outside [0, 1], a radius, strength, pressure, spacing or view that is not finite, or
+/// a parameter that is not finite or outside its [min, max]; core::Error(InvalidInput) when the
+/// result holds a non-finite value or a coordinate beyond ±1e18 ("the brush produced a
+/// non-finite value at sample (i, j) …"); BrushTimeoutError when a pass overran the engine's
+/// time limit.
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings);
 
@@ -55,11 +58,11 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
 
 namespace octaclay::gpu {
 
-/// A stroke made interactively: the modeller feeds it the sample under the pointer as the
-/// pointer moves, and it dabs along the way exactly as runStroke() dabs along a path (spacing
-/// by object-space distance on the current surface, symmetry, undo captured over the whole
-/// stroke). Use it on the thread whose GL context is current; brush and document must outlive
-/// it.
+/// A stroke made interactively: the modeller feeds it the point under the pointer as the
+/// pointer moves, and it dabs along the way exactly as runStroke() dabs along a path (one set of
+/// rules, stroke_rules.h: spacing on the surface as the stroke began, the remainder carried from
+/// one move to the next, symmetry, undo captured over the whole stroke). Use it on the thread
+/// whose GL context is current; brush and document must outlive it.
 class StrokeSession {
 public:
   /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush,
@@ -71,14 +74,18 @@ public:
   StrokeSession(const StrokeSession&) = delete;
   StrokeSession& operator=(const StrokeSession&) = delete;
 
-  /// Moves the stroke to sample s, walking the image samples between the previous sample and s
-  /// (as runStroke walks a segment). The first call dabs at s. radius, strength and pressure
-  /// apply to the dabs this call makes (pen pressure varies along a stroke). Returns the number
-  /// of dabs made, mirrored ones included. Throws core::Error(InvalidArgument) for a sample
-  /// outside the image or a radius, strength or pressure that is not finite. When a dab fails
-  /// (GlError, BrushTimeoutError from the watchdog) the layers are restored from the undo
-  /// capture before the error is rethrown; moveTo() must not be called again, and finish()
-  /// returns an empty record (nothing to undo).
+  /// Moves the stroke to image point uv (each in [0, 1]; a pick's interpolated (u, v)), walking
+  /// the straight segment from the previous point. The first call dabs at uv. radius (object
+  /// units), strength (fraction of the radius, per radius travelled for sculpt brushes) and
+  /// pressure apply to the dabs this call makes (pen pressure varies along a stroke). Returns
+  /// the number of dabs made, mirrored ones included. Throws core::Error(InvalidArgument) for a
+  /// point outside [0, 1] or a radius, strength or pressure that is not finite. When a dab
+  /// fails (GlError, BrushTimeoutError from the watchdog) the layers are restored from the undo
+  /// capture before the error is rethrown; no move may follow, and finish() returns an empty
+  /// record (nothing to undo).
+  int moveToUv(core::Vec2f uv, float radius, float strength, float pressure = 1.0f);
+  /// moveToUv at sample s's image point (s / N). Throws core::Error(InvalidArgument) for a
+  /// sample outside the image, and what moveToUv throws.
   int moveTo(core::Sample s, float radius, float strength, float pressure = 1.0f);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
