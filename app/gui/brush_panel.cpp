@@ -138,6 +138,7 @@ BrushSettings BrushPanel::settings() const {
   s.pressureTarget = strokeOptions_->pressureTarget();
   s.stabilizer = strokeOptions_->stabilizer();
   s.symmetry = strokeOptions_->symmetry();
+  s.keepDetail = strokeOptions_->keepDetail();
   return s;
 }
 
@@ -218,6 +219,10 @@ void BrushPanel::setStabilizer(float amount) {
 
 void BrushPanel::setSymmetry(unsigned axes) {
   strokeOptions_->setSymmetry(axes);
+}
+
+void BrushPanel::setKeepDetail(bool on) {
+  strokeOptions_->setKeepDetail(on);
 }
 
 QWidget* BrushPanel::parameterWidget(const QString& id) const {

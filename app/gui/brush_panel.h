@@ -32,8 +32,8 @@ class StrokeOptionsBox;
 /// The Brushes dock panel: the brush list grouped by category, the brushes that failed to load,
 /// and a form for the current brush (radius, strength, falloff, area mode, then one widget per
 /// manifest parameter) above the stroke options shared by all brushes (pressure, stabilizer,
-/// symmetry). Each brush's values are remembered while switching and persisted with the
-/// default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
+/// symmetry, keep detail). Each brush's values are remembered while switching and persisted with
+/// the default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
 /// and parameters/<parameter id>); the stroke options live in group "brushPanel". GUI thread.
 class BrushPanel : public QWidget {
   Q_OBJECT
@@ -83,6 +83,8 @@ public:
   void setStabilizer(float amount);
   /// gpu::SymmetryAxis bits (X = 1, Y = 2, Z = 4); other bits are ignored.
   void setSymmetry(unsigned axes);
+  /// Whether sculpt strokes relax what they stretched.
+  void setKeepDetail(bool on);
 
   /// The widget editing parameter `id` of the current brush (for tests), or nullptr. Float →
   /// QDoubleSpinBox, Int → QSpinBox, Bool → QCheckBox, Color → ColorButton, Enum → QComboBox.

@@ -74,6 +74,15 @@ StrokeOptionsBox::StrokeOptionsBox(QWidget* parent) : QGroupBox(tr("Stroke"), pa
   }
   symmetryRow->addStretch(1);
   layout->addRow(tr("Symmetry"), symmetryRow);
+
+  keepDetailBox_ = new QCheckBox(tr("Keep detail"));
+  keepDetailBox_->setObjectName(QStringLiteral("keepDetail"));
+  keepDetailBox_->setToolTip(tr("When a stroke pulls the surface far, samples move in from around "
+                                "it so the pulled part keeps its detail. Off: samples stay where "
+                                "the brush put them."));
+  keepDetailBox_->setChecked(keepDetail_);
+  connect(keepDetailBox_, &QCheckBox::toggled, this, &StrokeOptionsBox::setKeepDetail);
+  layout->addRow(keepDetailBox_);
 }
 
 void StrokeOptionsBox::setPressureTarget(PressureTarget target) {
@@ -112,6 +121,17 @@ void StrokeOptionsBox::setSymmetry(unsigned axes) {
   emit changed();
 }
 
+void StrokeOptionsBox::setKeepDetail(bool on) {
+  if (on == keepDetail_) return;
+  keepDetail_ = on;
+  {
+    const QSignalBlocker block(keepDetailBox_);
+    keepDetailBox_->setChecked(on);
+  }
+  save();
+  emit changed();
+}
+
 void StrokeOptionsBox::save() const {
   QSettings settings;
   settings.beginGroup(QStringLiteral("brushPanel"));
@@ -119,6 +139,7 @@ void StrokeOptionsBox::save() const {
                     QString::fromLatin1(kPressureNames[static_cast<std::size_t>(pressureTarget_)]));
   settings.setValue(QStringLiteral("stabilizer"), stabilizerPercent_);
   settings.setValue(QStringLiteral("symmetry"), symmetry_);
+  settings.setValue(QStringLiteral("keepDetail"), keepDetail_);
 }
 
 void StrokeOptionsBox::load() {
@@ -133,6 +154,8 @@ void StrokeOptionsBox::load() {
     stabilizerPercent_ = std::clamp(percent, 0, 100);
   if (const uint axes = settings.value(QStringLiteral("symmetry")).toUInt(&ok); ok)
     symmetry_ = axes & (gpu::kSymmetryX | gpu::kSymmetryY | gpu::kSymmetryZ);
+  if (const QVariant keep = settings.value(QStringLiteral("keepDetail")); keep.isValid())
+    keepDetail_ = keep.toBool();
 }
 
 } // namespace octaclay::app

@@ -14,9 +14,9 @@ class QSlider;
 namespace octaclay::app {
 
 /// The stroke options shared by every brush: what pen pressure scales, the stabilizer (lazy
-/// mouse) and the symmetry planes. The box owns the values (widgets only show them), loads them
-/// from the default-constructed QSettings group "brushPanel" (keys pressureTarget, stabilizer,
-/// symmetry) and saves each change there. GUI thread.
+/// mouse), the symmetry planes and keep detail. The box owns the values (widgets only show
+/// them), loads them from the default-constructed QSettings group "brushPanel" (keys
+/// pressureTarget, stabilizer, symmetry, keepDetail) and saves each change there. GUI thread.
 class StrokeOptionsBox : public QGroupBox {
   Q_OBJECT
 public:
@@ -27,6 +27,8 @@ public:
   float stabilizer() const { return static_cast<float>(stabilizerPercent_) / 100.0f; }
   /// gpu::SymmetryAxis bits.
   unsigned symmetry() const { return symmetry_; }
+  /// Whether sculpt strokes relax what they stretched (on by default).
+  bool keepDetail() const { return keepDetail_; }
 
   /// Each setter emits changed when the value changes.
   void setPressureTarget(PressureTarget target);
@@ -34,6 +36,7 @@ public:
   void setStabilizer(float amount);
   /// Bits other than X, Y and Z are ignored.
   void setSymmetry(unsigned axes);
+  void setKeepDetail(bool on);
 
 signals:
   void changed();
@@ -45,11 +48,13 @@ private:
   PressureTarget pressureTarget_ = PressureTarget::Strength;
   int stabilizerPercent_ = 0;
   unsigned symmetry_ = 0;
+  bool keepDetail_ = true;
 
   QComboBox* pressureCombo_ = nullptr;
   QSlider* stabilizerSlider_ = nullptr;
   QLabel* stabilizerLabel_ = nullptr;
   std::array<QCheckBox*, 3> symmetryBoxes_{};
+  QCheckBox* keepDetailBox_ = nullptr;
 };
 
 } // namespace octaclay::app

@@ -449,6 +449,38 @@ private slots:
     QCOMPARE(panel.settings().symmetry, 2u);
   }
 
+  void keepDetailIsOnByDefaultAndPersisted() {
+    {
+      BrushPanel panel;
+      panel.setBrushes(brushes_, {});
+      QVERIFY(panel.settings().keepDetail);
+      auto* box = panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"));
+      QVERIFY(box);
+      QVERIFY(box->isChecked());
+      QVERIFY(box->toolTip().contains(QStringLiteral("keeps its detail")));
+      QVERIFY(
+          box->toolTip().contains(QStringLiteral("Off: samples stay where the brush put them")));
+      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      box->setChecked(false);
+      QCOMPARE(changed.count(), 1);
+      QVERIFY(!panel.settings().keepDetail);
+      panel.setKeepDetail(false); // unchanged: no signal
+      QCOMPARE(changed.count(), 1);
+      QVERIFY(panel.selectBrush(QStringLiteral("smooth"))); // shared by every brush
+      QVERIFY(!panel.settings().keepDetail);
+    }
+    {
+      BrushPanel panel; // a new session reads it back
+      QVERIFY(!panel.settings().keepDetail);
+      QVERIFY(!panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"))->isChecked());
+      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      panel.setKeepDetail(true);
+      QCOMPARE(changed.count(), 1);
+      QVERIFY(panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"))->isChecked());
+    }
+    QVERIFY(BrushPanel().settings().keepDetail);
+  }
+
   void layersKeepAndPersistVisibilityAndTarget() {
     using core::EditLayer;
     {
