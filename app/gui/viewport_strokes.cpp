@@ -31,6 +31,7 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   const float sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
   try {
     CurrentContext current(*this); // a changed area or falloff recompiles the brush
+    session_.setKeepDetail(settings_.keepDetail);
     session_.beginStroke(id, settings_, paintTarget_, sign,
                          toVec(renderer_->GetActiveCamera()->GetPosition()));
   } catch (const std::exception& e) {
@@ -116,6 +117,37 @@ void ViewportWidget::refreshAllNormals() {
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));
   }
+}
+
+bool ViewportWidget::applyChange(const core::Document& after, const std::string& label) {
+  if (!session_.hasDocument() || session_.stroking()) return false;
+  bool recorded = false;
+  {
+    CurrentContext current(*this);
+    drainGlErrors();
+    std::vector<core::TexelRect> changed;
+    try {
+      changed = session_.applyChange(after, label);
+    } catch (const std::exception&) {
+      refreshAllNormals(); // the layers may be partly written
+      update();
+      emit surfaceChanged();
+      throw;
+    }
+    recorded = !changed.empty();
+    if (recorded) {
+      try {
+        refreshNormalsAround(std::move(changed));
+        surfaceEdited();
+        refreshSaliency();
+      } catch (const std::exception& e) { // the step is recorded; only the drawing failed
+        fail(QString::fromUtf8(e.what()));
+      }
+    }
+  }
+  update();
+  if (recorded) emit surfaceChanged();
+  return recorded;
 }
 
 bool ViewportWidget::undoStroke() {

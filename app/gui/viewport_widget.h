@@ -120,6 +120,16 @@ public:
   bool undoStroke();
   bool redoStroke();
   core::EditHistory& history() { return session_.history(); }
+  /// Makes `after` (same size as the document) the document on the GPU and the mirror as one
+  /// step of history() labelled label (SculptSession::applyChange), then refreshes what undo
+  /// refreshes: the normals of the changed texels, the saliency and, through surfaceChanged(),
+  /// the LOD. Returns whether a step was recorded (false: no document, a stroke is being made,
+  /// or nothing differed). GL work on the GUI thread. Throws what the session throws; the
+  /// normals are then redrawn from whatever the layers hold.
+  bool applyChange(const core::Document& after, const std::string& label);
+  /// Whether the session relaxes what sculpt strokes stretch: the brush settings' keepDetail as
+  /// of the last stroke begun (SculptSession::setKeepDetail).
+  bool keepsDetail() const { return session_.keepDetail(); }
 
   void resetCamera();
   /// The surface point under widget position p (logical pixels), if any.
