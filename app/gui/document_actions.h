@@ -65,6 +65,8 @@ public:
   /// Writes the recovery file now if the document changed since. Returns false on failure.
   bool autosaveNow();
   RecoveryStore& recovery() { return recovery_; }
+  /// The one runner every long task of the window shares, so that no two run at once.
+  BackgroundTaskRunner& runner() { return runner_; }
   /// The recovery left by a crashed session (set by findRecovery()).
   const std::optional<RecoveryStore::Pending>& pendingRecovery() const { return pending_; }
   void findRecovery() { pending_ = recovery_.pending(); }

@@ -30,7 +30,7 @@ class LodPanel;
 class ViewportWidget;
 
 /// The modeller's window: the viewport, the Brushes, Layers and Level of detail docks, the
-/// File/Edit/View menus, undo, the status bar, autosave and crash recovery.
+/// File/Edit/Mesh/View menus, undo, the status bar, autosave and crash recovery.
 class MainWindow : public QMainWindow {
   Q_OBJECT
 public:
@@ -84,6 +84,14 @@ public:
   /// OBJ + MTL or GLB with an object-space normal map baked from the full resolution, off the
   /// GUI thread with progress.
   bool exportLod(const QString& path) { return documents_->exportLod(path); }
+  /// Mesh ▸ Even Out Samples: core::evenOutSamples on a copy of the document, off the GUI
+  /// thread behind a progress dialog with Cancel (control: the task's progress and cancel flag,
+  /// new if null; tests pass one already cancelled). On success the result becomes the document
+  /// as one undo step ("Even Out Samples" on the undo stack) and the document is modified; on
+  /// cancel nothing changes and the status bar says so; on an error a message box says why and
+  /// nothing changes. Returns whether a step was made. Refused (false) without a document,
+  /// during a stroke or while another task runs.
+  bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
   /// Regenerates the live LOD in the background (while the dock shows it).
   LodGenerator* lodGenerator() const { return lodGenerator_; }
 
@@ -112,6 +120,8 @@ private:
   void buildDocks();
   void connectParts();
   void updateStatus();
+  /// Enables the Mesh menu's actions when they can run (a document, no stroke, no task).
+  void updateMeshActions();
   void updateTitle();
   void rebuildRecentMenu();
   bool maybeSave();

@@ -1,4 +1,5 @@
-// The main window's menus: File (document actions), Edit (undo, redo, preferences) and View.
+// The main window's menus: File (document actions), Edit (undo, redo, preferences), Mesh
+// (whole-model operations) and View.
 
 #include "brush_panel.h"
 #include "lod_panel.h"
@@ -164,6 +165,18 @@ void MainWindow::buildMenus() {
     else
       autosaveTimer_->stop();
   });
+
+  // Mesh: whole-model operations, after Edit as in Blender.
+  QMenu* mesh = menuBar()->addMenu(tr("&Mesh"));
+  QAction* evenOut = add(mesh, tr("&Even Out Samples…"), "actionEvenOutSamples");
+  const QString evenOutTip = tr("Spread the samples evenly over the surface again, so stretched "
+                                "parts get detail back; the shape and paint stay put");
+  evenOut->setToolTip(evenOutTip);
+  evenOut->setStatusTip(evenOutTip);
+  connect(evenOut, &QAction::triggered, this, [this] { evenOutSamples(); });
+  mesh->setToolTipsVisible(true);
+  connect(mesh, &QMenu::aboutToShow, this, &MainWindow::updateMeshActions);
+  updateMeshActions();
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* dock : findChildren<QDockWidget*>())

@@ -4,8 +4,8 @@
 
 namespace octaclay::app {
 
-StrokeCommand::StrokeCommand(ViewportWidget* viewport, const QString& label)
-    : QUndoCommand(QObject::tr("Stroke (%1)").arg(label)), viewport_(viewport) {}
+StrokeCommand::StrokeCommand(ViewportWidget* viewport, const QString& text)
+    : QUndoCommand(text), viewport_(viewport) {}
 
 void StrokeCommand::undo() {
   if (!viewport_->undoStroke()) setText(text() + QObject::tr(" — dropped from history"));
