@@ -1,0 +1,253 @@
+// Mesh ▸ Even Out Samples and the Keep detail stroke option in the modeller, through the real
+// VTK viewport (xcb under Xvfb, llvmpipe): a sphere with a pulled limb gets its samples spread
+// evenly again as one undo step, a cancelled even-out changes nothing, and the Brushes dock's
+// Keep detail box reaches the sculpting session.
+#include "brush_panel.h"
+#include "main_window.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+using namespace octaclay;
+using app::MainWindow;
+
+namespace {
+
+// A unit sphere with a thin limb 3 long pulled out of the pole that sample (N/2, N/2) sits on
+// (+z): few samples spread over a long spike, as a far push leaves them.
+core::Document limbDocument(int n) {
+  core::GeometryImage image = core::makeBaseShape(core::BaseShape::Sphere, n);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      core::Vec4f& p = image.at(i, j);
+      const float angle = std::acos(std::clamp(p.z / core::length(p.xyz()), -1.0f, 1.0f));
+      const float t = 1.0f - angle / 0.3f;
+      if (t <= 0) continue;
+      p.z += 3.0f * t * t * (3 - 2 * t);
+      const float pinch = 1.0f - 0.7f * std::min(1.0f, 4 * t);
+      p.x *= pinch, p.y *= pinch;
+    }
+  return core::makeDocument(std::move(image));
+}
+
+// The longest grid edge (to the right and down neighbours of the (N+1)² image) over the median.
+double longestOverMedian(const core::GeometryImage& image) {
+  const int side = image.size() + 1;
+  std::vector<double> edges;
+  edges.reserve(std::size_t(2) * side * side);
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const core::Vec3f p = image.at(i, j).xyz();
+      if (i + 1 < side) edges.push_back(core::length(image.at(i + 1, j).xyz() - p));
+      if (j + 1 < side) edges.push_back(core::length(image.at(i, j + 1).xyz() - p));
+    }
+  const double longest = *std::max_element(edges.begin(), edges.end());
+  std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
+  return longest / edges[edges.size() / 2];
+}
+
+// Every texel of every layer, as bytes: "unchanged" means bit for bit.
+std::vector<unsigned char> bitsOf(const core::Document& d) {
+  std::vector<unsigned char> out;
+  const auto append = [&out](const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    out.insert(out.end(), b, b + bytes);
+  };
+  const int side = d.size() + 1;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i)
+      append(&d.positions.at(i, j), sizeof(core::Vec4f));
+  for (const core::Layer* layer : {&d.diffuse, &d.feature, &d.mask}) {
+    append(layer->fill.data(), sizeof(layer->fill));
+    append(layer->texels.data(), layer->texels.size() * sizeof(float));
+  }
+  return out;
+}
+
+class EvenOutRenderTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void init();
+  void cleanup();
+  void evenOutGivesTheLimbSamplesBackAsOneUndoStep();
+  void cancelledEvenOutChangesNothing();
+  void keepDetailBoxReachesTheSessionForTheNextStroke();
+  void failedEvenOutSaysWhyAndChangesNothing();
+
+private:
+  std::unique_ptr<MainWindow> makeWindow();
+  bool openLimb(MainWindow& w);
+
+  QTemporaryDir dir_;
+  std::unique_ptr<MainWindow> window_;
+};
+
+void EvenOutRenderTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName("OctaclayTest");
+  QCoreApplication::setApplicationName("even_out_render_test");
+  qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
+  core::writeDocument(limbDocument(64), dir_.filePath("limb.exr").toStdString());
+}
+
+void EvenOutRenderTest::init() {
+  QSettings().clear();
+}
+
+void EvenOutRenderTest::cleanup() {
+  window_.reset();
+}
+
+std::unique_ptr<MainWindow> EvenOutRenderTest::makeWindow() {
+  MainWindow::Options options;
+  options.recoveryFolder = dir_.filePath("recovery");
+  options.askAboutRecovery = false;
+  options.autosaveSeconds = 0;
+  auto w = std::make_unique<MainWindow>(options);
+  w->resize(1000, 700);
+  w->show();
+  if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
+  if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
+  return w;
+}
+
+bool EvenOutRenderTest::openLimb(MainWindow& w) {
+  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->document().size() == 64;
+}
+
+void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  // Placed after Edit, as in Blender; nothing to even out before a document is open.
+  QStringList menus;
+  for (QAction* a : window_->menuBar()->actions())
+    menus << a->text().remove('&');
+  QCOMPARE(menus.indexOf("Mesh"), menus.indexOf("Edit") + 1);
+  QAction* evenOut = window_->action("actionEvenOutSamples");
+  QVERIFY(evenOut);
+  QVERIFY(evenOut->statusTip().contains("stretched parts get detail back"));
+  QVERIFY(!evenOut->isEnabled());
+
+  QVERIFY(openLimb(*window_));
+  QVERIFY(evenOut->isEnabled());
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  const double ratioBefore = longestOverMedian(window_->viewport()->document().positions);
+  QVERIFY2(ratioBefore > 8, qPrintable(QString::number(ratioBefore)));
+  QVERIFY(!window_->isModified());
+
+  evenOut->trigger(); // runs to the end: the task's event loop waits for it
+  QCOMPARE(window_->undoStack()->count(), 1);
+  QCOMPARE(window_->undoStack()->undoText(), QString("Even Out Samples"));
+  QVERIFY(window_->isModified());
+  QVERIFY(evenOut->isEnabled());
+  const std::vector<unsigned char> after = bitsOf(window_->viewport()->document());
+  const double ratioAfter = longestOverMedian(window_->viewport()->document().positions);
+  qInfo("longest ÷ median grid edge %.1f -> %.1f", ratioBefore, ratioAfter);
+  QVERIFY2(ratioAfter < ratioBefore / 2, qPrintable(QString::number(ratioAfter)));
+  // The window draws the new surface (normals refreshed around what changed, no GL error).
+  QVERIFY(window_->viewport()->error().isEmpty());
+
+  window_->action("actionUndo")->trigger();
+  QVERIFY(bitsOf(window_->viewport()->document()) == before);
+  QVERIFY(!window_->isModified());
+  window_->action("actionRedo")->trigger();
+  QVERIFY(bitsOf(window_->viewport()->document()) == after);
+  QVERIFY(window_->isModified());
+  QCOMPARE(window_->viewport()->history().undoCount(), std::size_t(1));
+}
+
+void EvenOutRenderTest::cancelledEvenOutChangesNothing() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(openLimb(*window_));
+  // Twice: on the document as opened (unmodified, no history), and after one even-out
+  // (modified, one step).
+  for (int round = 0; round < 2; ++round) {
+    const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+    const int steps = window_->undoStack()->count();
+    const std::size_t undoable = window_->viewport()->history().undoCount();
+    const bool modified = window_->isModified();
+    auto control = std::make_shared<app::TaskControl>();
+    control->cancel = true; // as if Cancel were pressed at once
+    QVERIFY(!window_->evenOutSamples(control));
+    QVERIFY(bitsOf(window_->viewport()->document()) == before);
+    QCOMPARE(window_->undoStack()->count(), steps);
+    QCOMPARE(window_->viewport()->history().undoCount(), undoable);
+    QCOMPARE(window_->isModified(), modified);
+    QCOMPARE(window_->statusBar()->currentMessage(), QString("Even out cancelled"));
+    QVERIFY(window_->action("actionEvenOutSamples")->isEnabled());
+    if (round == 0) QVERIFY(window_->evenOutSamples());
+  }
+}
+
+void EvenOutRenderTest::keepDetailBoxReachesTheSessionForTheNextStroke() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  QVERIFY(window_->brushPanel()->selectBrush("push"));
+  window_->brushPanel()->setRadius(0.05f);
+  window_->brushPanel()->setStrength(0.2f);
+  auto* box = window_->brushPanel()->findChild<QCheckBox*>("keepDetail");
+  QVERIFY(box);
+  QVERIFY(box->isChecked());
+  app::ViewportWidget* view = window_->viewport();
+  const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+  for (const bool on : {false, true, false}) {
+    box->setChecked(on);
+    QTest::mousePress(view, Qt::LeftButton, {}, centre.toPoint());
+    QTest::mouseMove(view, (centre + QPointF(20, 0)).toPoint());
+    QCOMPARE(view->keepsDetail(), on); // set as the stroke began
+    QTest::mouseRelease(view, Qt::LeftButton, {}, (centre + QPointF(20, 0)).toPoint());
+    QCOMPARE(view->keepsDetail(), on);
+  }
+  QCOMPARE(window_->undoStack()->count(), 3);
+}
+
+void EvenOutRenderTest::failedEvenOutSaysWhyAndChangesNothing() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  // Files with non-finite positions are refused when read; a document handed to the viewport
+  // directly is not checked, and the even-out refuses it.
+  core::Document broken = limbDocument(64);
+  broken.positions.at(10, 20).x = std::nanf("");
+  QVERIFY(window_->viewport()->setDocument(std::move(broken)));
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  QVERIFY(!window_->evenOutSamples());
+  QVERIFY(bitsOf(window_->viewport()->document()) == before);
+  QCOMPARE(window_->undoStack()->count(), 0);
+  QVERIFY(!window_->isModified());
+  QMessageBox* box = nullptr;
+  QVERIFY(QTest::qWaitFor([&] {
+    for (QMessageBox* b : window_->findChildren<QMessageBox*>())
+      if (b->isVisible()) box = b;
+    return box != nullptr;
+  }));
+  QVERIFY2(box->text().startsWith("Could not even out the samples: "), qPrintable(box->text()));
+  QVERIFY2(box->text().contains("finite"), qPrintable(box->text()));
+  box->close();
+}
+
+} // namespace
+
+QTEST_MAIN(EvenOutRenderTest)
+#include "even_out_render_test.moc"
