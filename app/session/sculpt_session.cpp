@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace octaclay::app {
 
@@ -133,7 +134,9 @@ gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush
                                                  const gpu::StrokeSettings& settings) {
   gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings);
   const auto start = std::chrono::steady_clock::now();
-  result.undo = keepDetailAfter(std::move(result.undo), brush);
+  // The path's points stay on their surface points, so a script that dabs there again (a
+  // limb pulled by repeated clicks) finds the same spot after the relaxation.
+  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.path);
   result.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -159,13 +162,19 @@ std::vector<core::TexelRect> stretchRegions(const core::Stroke& record, int side
 
 } // namespace
 
-core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush) {
+core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
+                                            const std::vector<std::array<float, 2>>& pinnedPath) {
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
   const std::vector<core::TexelRect> regions = stretchRegions(record, document_->size() + 1);
   if (regions.empty()) return record;
+  core::RelaxOptions options;
+  const int n = document_->size();
+  for (const auto& uv : pinnedPath)
+    options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
+                              static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
   const core::Stroke relaxation =
-      core::relaxRegionsStep(document_->document(), regions, record.label);
+      core::relaxRegionsStep(document_->document(), regions, record.label, options);
   if (relaxation.tiles.empty()) return record;
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : relaxation.tiles)

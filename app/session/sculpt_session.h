@@ -120,7 +120,8 @@ private:
   struct ActiveStroke;
 
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
-  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush);
+  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
+                               const std::vector<std::array<float, 2>>& pinnedPath = {});
 
   bool keepDetail_ = true;
   gpu::BrushEngine* engine_ = nullptr;

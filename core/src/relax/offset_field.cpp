@@ -286,6 +286,14 @@ void OffsetField::freeInside(TexelRect rect) {
     }
 }
 
+void OffsetField::pin(Sample s) {
+  if (s.i < 0 || s.j < 0 || s.i > n || s.j > n) return;
+  std::array<Sample, 4> copies;
+  const int k = identifiedSamples(n, s, copies);
+  for (int c = 0; c < k; ++c)
+    free[index(copies[static_cast<std::size_t>(c)].i, copies[static_cast<std::size_t>(c)].j)] = 0;
+}
+
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
                   const RelaxProgress& progress) {
   const int n = field.n;

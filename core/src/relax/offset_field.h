@@ -28,6 +28,8 @@ struct OffsetField {
   void freeAll();
   /// Frees the samples strictly inside rect and the samples identified with them.
   void freeInside(TexelRect rect);
+  /// Pins sample s and the samples identified with it.
+  void pin(Sample s);
 };
 
 /// Moves the free samples toward where the surface of `image` is stretched, coarse to fine,

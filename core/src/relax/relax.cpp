@@ -71,6 +71,8 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
   checkPositions(document.positions);
   detail::OffsetField field(document.size());
   field.freeAll();
+  for (Sample s : options.pinned)
+    field.pin(s);
   if (!detail::solveOffsets(document.positions, field, fineIterations(options), progress))
     throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
   Document result = document; // samples that do not move keep their texels
@@ -88,6 +90,8 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   detail::OffsetField field(n);
   for (const TexelRect& r : regions)
     if (stretchedInside(document.positions, clipped(r, n))) field.freeInside(clipped(r, n));
+  for (Sample s : options.pinned)
+    field.pin(s);
   StrokeRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));

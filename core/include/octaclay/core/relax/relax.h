@@ -2,6 +2,7 @@
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/texel_rect.h"
 
 #include <functional>
@@ -16,6 +17,9 @@ inline constexpr int kMaxRelaxIterations = 10000;
 struct RelaxOptions {
   /// Sweeps over the finest level (coarser levels get more, up to 64 times as many); 0 means 1.
   int iterations = 0;
+  /// Samples that keep their surface point (with those identified with them): the centres a
+  /// scripted stroke addresses by (u, v), so the next stroke there finds the same spot.
+  std::vector<Sample> pinned;
 };
 
 /// Called with the fraction done in [0, 1]; returning false cancels the work.
