@@ -146,18 +146,29 @@ namespace {
 
 // What a stroke changed in the positions, as rectangles grown so that samples can flow in from
 // the surface around them.
-std::vector<core::TexelRect> stretchRegions(const core::Stroke& record, int side) {
+// The bounding rectangle of the texels a tile change holds.
+core::TexelRect changedBounds(const core::TileChange& t) {
+  int x0 = t.region.x + t.region.width, y0 = t.region.y + t.region.height, x1 = -1, y1 = -1;
+  std::size_t at = 0;
+  for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
+    at += t.runs[r];
+    for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
+      const int i = t.region.x + static_cast<int>(at % static_cast<std::size_t>(t.region.width));
+      const int j = t.region.y + static_cast<int>(at / static_cast<std::size_t>(t.region.width));
+      x0 = std::min(x0, i), y0 = std::min(y0, j), x1 = std::max(x1, i), y1 = std::max(y1, j);
+    }
+  }
+  return x1 < 0 ? core::TexelRect{} : core::TexelRect{x0, y0, x1 - x0 + 1, y1 - y0 + 1};
+}
+
+// What a stroke changed in the positions, to the texel (a symmetric dab gives a symmetric region
+// and a symmetric relaxation).
+std::vector<core::TexelRect> stretchRegions(const core::Stroke& record) {
   std::vector<core::TexelRect> changed;
   for (const core::TileChange& t : record.tiles)
-    if (t.layer == core::EditLayer::Positions) changed.push_back(t.region);
-  std::vector<core::TexelRect> regions;
-  for (core::TexelRect r : core::mergeRects(std::move(changed))) {
-    const int grow = std::max({16, r.width / 2, r.height / 2});
-    const int x0 = std::max(0, r.x - grow), y0 = std::max(0, r.y - grow);
-    const int x1 = std::min(side, r.x + r.width + grow), y1 = std::min(side, r.y + r.height + grow);
-    regions.push_back({x0, y0, x1 - x0, y1 - y0});
-  }
-  return core::mergeRects(std::move(regions));
+    if (t.layer == core::EditLayer::Positions)
+      if (const core::TexelRect b = changedBounds(t); b.width > 0) changed.push_back(b);
+  return changed;
 }
 
 } // namespace
@@ -166,7 +177,7 @@ core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::Brus
                                             const std::vector<std::array<float, 2>>& pinnedPath) {
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
-  const std::vector<core::TexelRect> regions = stretchRegions(record, document_->size() + 1);
+  const std::vector<core::TexelRect> regions = stretchRegions(record);
   if (regions.empty()) return record;
   core::RelaxOptions options;
   const int n = document_->size();

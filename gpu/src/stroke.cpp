@@ -182,7 +182,7 @@ struct StrokeSession::State {
   // The surface as it was when the stroke began, at image point (x, y) in samples: what the
   // dabs' spacing is measured on, so that a stroke does not stretch its own spacing.
   core::Vec3f startPosition(double x, double y) const {
-    const SurfacePoint p = surfacePointAt(document.size(), x, y);
+    const core::GridPoint p = surfacePointAt(document.size(), x, y);
     core::Vec3f sum;
     for (int k = 0; k < 3; ++k)
       sum += undo.positionBefore(p.corners[k]) * p.weights[k];
@@ -226,9 +226,10 @@ struct StrokeSession::State {
   void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure) {
     const int n = document.size();
     const core::GeometryImage& image = document.document().positions;
-    const SurfacePoint point = surfacePointAt(n, xy[0], xy[1]);
-    const core::Vec3f p = interpolatePosition(image, point);
-    const core::Vec3f normal = interpolateNormal(image, point);
+    const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
+    const core::Vec3f p = core::interpolatePosition(image, point);
+    const core::Vec3f normal =
+        areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
     const core::Sample texel{std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
                              std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
     std::vector<Dab> images(1); // the dab, then its mirror images

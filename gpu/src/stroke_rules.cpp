@@ -17,34 +17,43 @@ float dabShare(const BrushManifest& brush, float spacing) {
   return std::clamp(dabSpacing(brush, spacing), kMinDabSpacing, 1.0f);
 }
 
-SurfacePoint surfacePointAt(int n, double x, double y) {
-  const int i = std::clamp(static_cast<int>(std::floor(x)), 0, n - 1);
-  const int j = std::clamp(static_cast<int>(std::floor(y)), 0, n - 1);
-  const float fx = static_cast<float>(x - i), fy = static_cast<float>(y - j);
-  const core::Sample a{i, j}, b{i + 1, j}, c{i + 1, j + 1}, d{i, j + 1};
-  // The same split as core::cellTriangles: (a, b, d) + (b, c, d) or (a, b, c) + (a, c, d).
-  if (core::cellSplit(n, i, j) == core::CellSplit::AntiDiagonal) {
-    if (fx + fy <= 1) return {{a, b, d}, {1 - fx - fy, fx, fy}};
-    return {{b, c, d}, {1 - fy, fx + fy - 1, 1 - fx}};
-  }
-  if (fx >= fy) return {{a, b, c}, {1 - fx, fx - fy, fy}};
-  return {{a, c, d}, {1 - fy, fx, fy - fx}};
+core::GridPoint surfacePointAt(int n, double x, double y) {
+  return core::locateGridPoint(n, std::clamp(x, 0.0, double(n)), std::clamp(y, 0.0, double(n)));
 }
 
-core::Vec3f interpolatePosition(const core::GeometryImage& image, const SurfacePoint& p) {
+core::Vec3f interpolateNormal(const core::GeometryImage& image, const core::GridPoint& p) {
   core::Vec3f sum;
-  for (int k = 0; k < 3; ++k)
-    sum += image.at(p.corners[k]).xyz() * p.weights[k];
-  return sum;
-}
-
-core::Vec3f interpolateNormal(const core::GeometryImage& image, const SurfacePoint& p) {
-  core::Vec3f sum;
-  for (int k = 0; k < 3; ++k)
-    sum += core::vertexNormal(image, p.corners[k]) * p.weights[k];
+  for (std::size_t k = 0; k < 3; ++k)
+    sum += core::gridNormal(image, p.corners[k]) * p.weights[k];
   if (core::length(sum) > 1e-6f) return core::normalize(sum);
   const auto nearest = std::max_element(p.weights.begin(), p.weights.end()) - p.weights.begin();
-  return core::vertexNormal(image, p.corners[static_cast<std::size_t>(nearest)]);
+  return core::gridNormal(image, p.corners[static_cast<std::size_t>(nearest)]);
+}
+
+core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
+                       core::Vec3f fallback) {
+  const core::GeometryImage& image = document.document().positions;
+  const core::TileBounds& bounds = document.bounds();
+  const int n = document.size();
+  const float r2 = radius * radius;
+  core::Vec3f sum;
+  int triangles = 0;
+  for (int t : bounds.tilesNearSphere(centre, radius)) {
+    const core::TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
+    for (int j = r.y; j < std::min(r.y + r.height, n); ++j)
+      for (int i = r.x; i < std::min(r.x + r.width, n); ++i)
+        for (const auto& tri : core::cellTriangles(n, i, j)) {
+          const core::Vec3f a = image.at(tri[0]).xyz(), b = image.at(tri[1]).xyz(),
+                            c = image.at(tri[2]).xyz();
+          const core::Vec3f d = (a + b + c) * (1.0f / 3.0f) - centre;
+          if (core::dot(d, d) > r2) continue;
+          sum += core::cross(b - a, c - a);
+          ++triangles;
+        }
+  }
+  // Too few triangles to average (samples far apart on a stretched tip): the point normal.
+  if (triangles < kAreaNormalTriangles || !(core::length(sum) > 1e-20f)) return fallback;
+  return core::normalize(sum);
 }
 
 } // namespace octaclay::gpu

@@ -90,9 +90,15 @@ Limb pullLimb(Brushes& b, int n, bool keepDetail) {
     s.strength = 1.0f;
     s.spacing = 1.0f;
     const auto start = Clock::now();
-    session.strokeAlongPath(*b.push, s);
+    const gpu::StrokeResult r = session.strokeAlongPath(*b.push, s);
     glFinish();
     ms += msSince(start);
+    if (std::getenv("DBG")) {
+      const auto& img = session.document().positions;
+      float L = 0; for (const auto& p : img.texels()) L = std::max(L, core::length(p.xyz()));
+      const auto t = img.at(n / 2, n / 2);
+      std::printf("stroke %d keep %d: dabs %d tiles %zu limb %.3f tip sample (%.3f %.3f %.3f)\n", i, keepDetail, r.dabs, r.undo.tiles.size(), L - 1, t.x, t.y, t.z);
+    }
   }
   return {session.document(), ms / 15};
 }

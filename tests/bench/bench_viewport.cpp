@@ -165,7 +165,7 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
   };
   const double spacing = double(spacingFraction * radius());
   const auto startAt = [&](double u, double v) {
-    return gpu::interpolatePosition(start, gpu::surfacePointAt(n, u * n, v * n));
+    return core::interpolatePosition(start, gpu::surfacePointAt(n, u * n, v * n));
   };
   std::optional<core::PickHit> hit = widget.pickAt(at(0));
   double previousU = hit->u, previousV = hit->v;

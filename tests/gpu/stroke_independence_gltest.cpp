@@ -198,7 +198,7 @@ void StrokeIndependenceTest::dabsFallEverySpacingOfTheStartSurface() {
         const float t = float(s) / 4000.0f;
         const float u = points[k - 1].x + t * (points[k].x - points[k - 1].x);
         const float v = points[k - 1].y + t * (points[k].y - points[k - 1].y);
-        return interpolatePosition(sphere, surfacePointAt(n, double(u) * n, double(v) * n));
+        return core::interpolatePosition(sphere, surfacePointAt(n, double(u) * n, double(v) * n));
       };
       length += double(core::length(at(step + 1) - at(step)));
     }

@@ -13,6 +13,14 @@ Vec3f vertexNormal(const GeometryImage& image, Sample s) {
   return normalize(sum);
 }
 
+Vec3f gridNormal(const GeometryImage& image, Sample s) {
+  const Vec3f du = image.positionWrapped({s.i + 1, s.j}) - image.positionWrapped({s.i - 1, s.j});
+  const Vec3f dv = image.positionWrapped({s.i, s.j + 1}) - image.positionWrapped({s.i, s.j - 1});
+  const Vec3f n = cross(du, dv);
+  const float l = length(n);
+  return l > 1e-20f ? n * (1.0f / l) : vertexNormal(image, s);
+}
+
 std::vector<Vec3f> computeNormals(const GeometryImage& image) {
   const int side = image.side();
   std::vector<Vec3f> normals(image.texelCount());

@@ -1,7 +1,8 @@
 #include "relax/offset_field.h"
 
 #include "detail/parallel_rows.h"
-#include "relax/grid_point.h"
+
+#include "octaclay/core/geometry/grid_point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,7 @@ private:
                   locateGridPoint(n_, double(I) * step_ + d[0], double(J) * step_ + d[1]);
               Vec3f x{0, 0, 0};
               for (std::size_t c = 0; c < 3; ++c)
-                x = x + image_.at(p.samples[c]).xyz() * p.weights[c];
+                x = x + image_.at(p.corners[c]).xyz() * p.weights[c];
               positions_[lattice(I, J)] = x;
             }
         },
@@ -350,7 +351,7 @@ void resampleTexel(const Document& from, const OffsetField& field, EditLayer lay
   for (std::size_t ch = 0; ch < channels; ++ch)
     out[ch] = 0;
   for (std::size_t k = 0; k < 3; ++k) {
-    texel(p.samples[k], value.data());
+    texel(p.corners[k], value.data());
     for (std::size_t ch = 0; ch < channels; ++ch)
       out[ch] += value[ch] * p.weights[k];
   }
@@ -365,8 +366,8 @@ void resampleDocument(const Document& from, const OffsetField& field, Document& 
     for (std::size_t c = 0; c < ch; ++c) {
       float v = 0;
       for (std::size_t k = 0; k < 3; ++k)
-        v += source.texels[(static_cast<std::size_t>(p.samples[k].j) * std::size_t(n + 1) +
-                            static_cast<std::size_t>(p.samples[k].i)) *
+        v += source.texels[(static_cast<std::size_t>(p.corners[k].j) * std::size_t(n + 1) +
+                            static_cast<std::size_t>(p.corners[k].i)) *
                                ch +
                            c] *
              p.weights[k];
@@ -390,7 +391,7 @@ void resampleDocument(const Document& from, const OffsetField& field, Document& 
         const GridPoint p = locateGridPoint(n, double(i) + d[0], double(j) + d[1]);
         Vec4f x{0, 0, 0, 0};
         for (std::size_t k = 0; k < 3; ++k) {
-          const Vec4f& s = image.at(p.samples[k]);
+          const Vec4f& s = image.at(p.corners[k]);
           x = Vec4f{x.x + s.x * p.weights[k], x.y + s.y * p.weights[k], x.z + s.z * p.weights[k],
                     x.w + s.w * p.weights[k]};
         }

@@ -13,7 +13,9 @@
 //   spacing; paint and splats blend toward a target and apply the whole strength.
 
 #include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/grid_point.h"
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gpu_document.h"
 
 #include <array>
 
@@ -31,21 +33,23 @@ float dabSpacing(const BrushManifest& brush, float spacing);
 /// brushes (they blend toward a target, so overlapping dabs converge instead).
 float dabShare(const BrushManifest& brush, float spacing);
 
-/// A point of the image's surface mesh: the grid triangle holding image coordinates (x, y)
-/// (in samples, each in [0, N]) and the barycentric weights of its corners, which sum to 1.
-/// Triangles are core::cellTriangles'; a point on an edge belongs to either side (the
-/// interpolated value is the same).
-struct SurfacePoint {
-  std::array<core::Sample, 3> corners;
-  std::array<float, 3> weights;
-};
-SurfacePoint surfacePointAt(int n, double x, double y);
+/// A point of the image's surface mesh (core::GridPoint) at image coordinates (x, y), in
+/// samples, each clamped to [0, N].
+core::GridPoint surfacePointAt(int n, double x, double y);
 
-/// image's position at p, interpolated linearly over its triangle.
-core::Vec3f interpolatePosition(const core::GeometryImage& image, const SurfacePoint& p);
-
-/// The unit normal at p: the corners' vertex normals (core::vertexNormal) interpolated and
+/// The unit normal at p: the corners' grid normals (core::gridNormal) interpolated and
 /// normalised; the nearest corner's when they cancel out.
-core::Vec3f interpolateNormal(const core::GeometryImage& image, const SurfacePoint& p);
+core::Vec3f interpolateNormal(const core::GeometryImage& image, const core::GridPoint& p);
+
+/// A dab pushes along the surface's mean normal within this fraction of its radius (the
+/// "area normal" of sculpting tools), when at least kAreaNormalTriangles triangles lie there.
+inline constexpr float kAreaNormalRadius = 1.0f;
+inline constexpr int kAreaNormalTriangles = 32;
+
+/// The mean of the area-weighted normals of the triangles whose centroids lie within radius
+/// of centre: the same however the samples are spread there, so a relaxed or an evened-out
+/// surface is pushed the same way; fallback when fewer than kAreaNormalTriangles lie there.
+core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
+                       core::Vec3f fallback);
 
 } // namespace octaclay::gpu

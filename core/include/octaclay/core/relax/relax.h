@@ -36,11 +36,13 @@ using RelaxProgress = std::function<bool(float)>;
 Document evenOutSamples(const Document& document, const RelaxOptions& options = {},
                         const RelaxProgress& progress = {});
 
-/// The local relaxation behind "keep detail": the same flow, on the samples inside `regions`
-/// (and those identified with them) only, the rest and each region's outer ring pinned. A
-/// region is left alone unless one of its grid edges is over twice as long as the median edge
-/// on its border (nothing there was stretched). Rewrites the changed texels of every layer in
-/// place and returns the rectangles it changed (empty when none). Throws like evenOutSamples.
+/// The local relaxation behind "keep detail": the same flow around what changed. A region
+/// (e.g. the texels a stroke moved) counts only when one of its grid edges is stretched (over
+/// twice the surface's median edge); it is then grown until its border is no longer stretched
+/// (the whole pulled part) and by half its size again (the surface samples flow in from), and
+/// overlapping ones are merged. The samples inside move, the rest and each extent's outer ring
+/// stay. Rewrites the changed texels of every layer in place and returns the rectangles it
+/// changed (empty when none). Throws like evenOutSamples.
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
                                     const RelaxOptions& options = {});
 

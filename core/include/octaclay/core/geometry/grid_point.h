@@ -1,20 +1,24 @@
 #pragma once
 
+#include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/octahedral.h"
 
 #include <array>
 
-namespace octaclay::core::detail {
+namespace octaclay::core {
 
 /// A point of the octahedral plane as a blend of the three grid samples of the triangle it lies
 /// in (the grid's own triangulation, so a blend of positions lies on the piecewise-linear
 /// surface). Samples are wrapped into the grid.
 struct GridPoint {
-  std::array<Sample, 3> samples;
+  std::array<Sample, 3> corners;
   std::array<float, 3> weights;
 };
 
 /// (x, y) in sample units of an N grid, anywhere in the tiled plane.
 GridPoint locateGridPoint(int n, double x, double y);
 
-} // namespace octaclay::core::detail
+/// image's position at p, interpolated linearly over its triangle.
+Vec3f interpolatePosition(const GeometryImage& image, const GridPoint& p);
+
+} // namespace octaclay::core

@@ -1,8 +1,8 @@
-#include "relax/grid_point.h"
+#include "octaclay/core/geometry/grid_point.h"
 
 #include <cmath>
 
-namespace octaclay::core::detail {
+namespace octaclay::core {
 
 GridPoint locateGridPoint(int n, double x, double y) {
   const double fi = std::floor(x), fj = std::floor(y);
@@ -10,7 +10,7 @@ GridPoint locateGridPoint(int n, double x, double y) {
   const double u = x - fi, v = y - fj;
   GridPoint p;
   auto set = [&](Sample a, Sample b, Sample c, double wa, double wb, double wc) {
-    p.samples = {wrap(n, a), wrap(n, b), wrap(n, c)};
+    p.corners = {wrap(n, a), wrap(n, b), wrap(n, c)};
     p.weights = {static_cast<float>(wa), static_cast<float>(wb), static_cast<float>(wc)};
   };
   const Sample a{i, j}, b{i + 1, j}, c{i + 1, j + 1}, d{i, j + 1};
@@ -27,4 +27,11 @@ GridPoint locateGridPoint(int n, double x, double y) {
   return p;
 }
 
-} // namespace octaclay::core::detail
+Vec3f interpolatePosition(const GeometryImage& image, const GridPoint& p) {
+  Vec3f sum{0, 0, 0};
+  for (std::size_t k = 0; k < 3; ++k)
+    sum = sum + image.at(p.corners[k]).xyz() * p.weights[k];
+  return sum;
+}
+
+} // namespace octaclay::core
