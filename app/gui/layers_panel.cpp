@@ -132,9 +132,13 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
   preview_ = new QComboBox(this);
   preview_->setObjectName(QStringLiteral("preview"));
   preview_->addItems({tr("Shaded model"), tr("Diffuse colour"), tr("Height detail"), tr("Specular"),
-                      tr("Reflectivity"), tr("Mask"), tr("Saliency")});
-  preview_->setToolTip(tr("Show the shaded model, one layer channel alone, or the saliency the "
-                          "level of detail keeps (a heat map: blue smooth, red salient)"));
+                      tr("Reflectivity"), tr("Mask"), tr("Saliency"), tr("Stretch")});
+  preview_->setToolTip(
+      tr("Show the shaded model, one layer channel alone, the saliency the level of detail "
+         "keeps (a heat map: blue smooth, red salient), or the stretch: how far apart the "
+         "samples lie against the model's mean sample spacing, on a log scale in the same "
+         "colours: blue 2× or less (a fresh sphere lies between 0.6× and 1.7×), green 2.8×, "
+         "red 4× or more, where too few samples are left to keep detail"));
   connect(preview_, &QComboBox::currentIndexChanged, this, [this](int index) {
     if (index >= 0) emit previewChanged(static_cast<Preview>(index)); // rows in Preview's order
   });

@@ -53,10 +53,10 @@ public:
   QString layerStateText(core::EditLayer layer) const;
 
   using Preview = gpu::ModelView::Preview;
-  /// The shaded model, one layer channel alone, or the saliency as a heat map.
+  /// The shaded model, one layer channel alone, or the saliency or stretch as a heat map.
   Preview preview() const;
   void setPreview(Preview preview);
-  /// The preview list's row, in Preview's order (0 the shaded model … 6 saliency).
+  /// The preview list's row, in Preview's order (0 the shaded model … 6 saliency, 7 stretch).
   void setPreview(int row);
 
 signals:

@@ -5,6 +5,8 @@
 // pays for every texture read a shader contains, taken or not, so unpainted layers are
 // uniforms and unused reads are compiled out.
 uniform sampler2D u_positions;   // w: saliency in [0, 1] (PREVIEW 6)
+uniform sampler2D u_stretch;     // R: stretch_map.glsl's figure (PREVIEW 7)
+uniform float u_meanSpacing;     // the surface's mean sample spacing (PREVIEW 7)
 uniform sampler2D u_normals;
 uniform sampler2D u_diffuse;
 uniform sampler2D u_mask;
@@ -22,6 +24,11 @@ uniform vec3 u_brushColour;
 in vec3 v_position;
 in vec2 v_uv;
 out vec4 o_colour;
+
+// The heat maps' one colour scale: blue (0) through cyan, green and yellow to red (1).
+vec3 heatColour(float s) {
+  return clamp(vec3(4.0 * s - 2.0, s < 0.5 ? 4.0 * s : 4.0 - 4.0 * s, 2.0 - 4.0 * s), 0.0, 1.0);
+}
 
 void main() {
   vec3 n = texture(u_normals, v_uv).xyz * 2.0 - 1.0;
@@ -71,9 +78,15 @@ void main() {
   // Heat map: blue (0) through cyan, green and yellow to red (1), shaded lightly so the form
   // still reads.
   float s = clamp(texture(u_positions, v_uv).a, 0.0, 1.0);
-  vec3 heat = clamp(vec3(4.0 * s - 2.0, s < 0.5 ? 4.0 * s : 4.0 - 4.0 * s, 2.0 - 4.0 * s),
-                    0.0, 1.0);
-  colour = heat * (0.55 + 0.45 * lambert);
+  colour = heatColour(s) * (0.55 + 0.45 * lambert);
+#elif PREVIEW == 7
+  // Stretch over the mean spacing on a log scale, the saliency's colours: 2× or less blue (a
+  // fresh sphere spans 0.6×–1.7×: the octahedral map is not conformal), 2.8× green, 4× or
+  // more red (the layers panel's tooltip says so). The map is sampled at the nearest sample:
+  // the figure belongs to a sample, not to the surface between.
+  float stretch = texture(u_stretch, v_uv).r / max(u_meanSpacing, 1e-30);
+  float s = clamp(log2(max(stretch, 1e-6)) - 1.0, 0.0, 1.0);
+  colour = heatColour(s) * (0.55 + 0.45 * lambert);
 #endif
   if (u_showBrush) {
     float d = length(v_position - u_brushCentre);

@@ -4,21 +4,56 @@
 #include "shader_sources.h"
 
 #include "octaclay/core/error.h"
+#include "octaclay/core/measure/stretch.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
 
+#include <array>
 #include <vector>
 
 namespace octaclay::gpu {
 namespace {
 
-std::string normalPassSource() {
-  // The prelude's uniforms and normalAt(), as a positions pass sees them.
+// A pass over the positions: the prelude's uniforms, wrapTexel() and normalAt(), as a
+// positions pass sees them, then the pass's body.
+std::string positionsPassSource(const std::string& body) {
   return "#version 430 core\n#define LAYER_POSITIONS 0\n#define LAYER_DIFFUSE 1\n"
          "#define LAYER_FEATURE 2\n#define LAYER_MASK 3\n#define OCTACLAY_LAYER 0\n" +
-         detail::builtInShader("prelude.glsl") + detail::builtInShader("normal_map.glsl");
+         detail::builtInShader("prelude.glsl") + detail::builtInShader(body);
 }
+
+// A pass run from inside draw() renders elsewhere; the caller's frame (VTK's, which caches this
+// state) needs its framebuffers, viewport and enables back.
+class SavedTarget {
+public:
+  SavedTarget() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_.data());
+    for (std::size_t k = 0; k < kCaps.size(); ++k)
+      enabled_[k] = glIsEnabled(kCaps[k]);
+  }
+  ~SavedTarget() {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    for (std::size_t k = 0; k < kCaps.size(); ++k)
+      enabled_[k] ? glEnable(kCaps[k]) : glDisable(kCaps[k]);
+  }
+  SavedTarget(const SavedTarget&) = delete;
+  SavedTarget& operator=(const SavedTarget&) = delete;
+
+private:
+  static constexpr std::array<GLenum, 4> kCaps{GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST,
+                                               GL_CULL_FACE};
+  GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
+  std::array<GLint, 4> viewport_{};
+  std::array<GLboolean, 4> enabled_{};
+};
+
+// More stale rects than this and the next stretch pass redoes the whole map.
+constexpr std::size_t kMaxStaleStretchRects = 1024;
 
 std::vector<core::TexelRect> regions(std::span<const core::TexelRect> rects) {
   std::vector<core::TexelRect> out;
@@ -35,7 +70,7 @@ void bindTexture(int unit, const Texture& texture) {
 
 // Leaves no program or texture of a draw bound (VTK caches what it believes is bound).
 void unbindAfterDraw() {
-  for (int unit = 5; unit >= 0; --unit) {
+  for (int unit = 6; unit >= 0; --unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, 0);
   }
@@ -45,7 +80,7 @@ void unbindAfterDraw() {
 } // namespace
 
 ModelRenderer::ModelRenderer()
-    : normalProgram_("normal map", rectsVertexShader(), normalPassSource()),
+    : normalProgram_("normal map", rectsVertexShader(), positionsPassSource("normal_map.glsl")),
 
       vertexArray_(VertexArray::create()), indexBuffer_(Buffer::create()),
       chunks_(std::make_unique<detail::ModelChunks>()) {}
@@ -117,6 +152,15 @@ long long ModelRenderer::displayedTriangles() const {
 
 void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects) {
   const int side = document.size() + 1;
+  // The stretch preview's map and mean spacing wait for its next draw (refreshStretch).
+  meanSpacingStale_ = true;
+  if (!stretchAllStale_) {
+    staleStretch_.insert(staleStretch_.end(), rects.begin(), rects.end());
+    if (staleStretch_.size() > kMaxStaleStretchRects) {
+      stretchAllStale_ = true;
+      staleStretch_.clear();
+    }
+  }
   if (normals_.width() != side) {
     normals_ = Texture(side, side, TextureFormat::Rgba8);
     glBindTexture(GL_TEXTURE_2D, normals_.id());
@@ -155,9 +199,57 @@ void ModelRenderer::refreshAllNormals(GpuDocument& document) {
   refreshNormals(document, std::span(&all, 1));
 }
 
+void ModelRenderer::refreshStretch(GpuDocument& document) {
+  const int side = document.size() + 1;
+  if (meanSpacingStale_) {
+    meanSpacing_ = core::meanSpacing(document.document().positions);
+    meanSpacingStale_ = false;
+  }
+  if (stretch_.width() != side) {
+    stretch_ = Texture(side, side, TextureFormat::R32f);
+    glBindTexture(GL_TEXTURE_2D, stretch_.id());
+    // Nearest: the figure belongs to a sample, not to the surface between samples.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    stretchAllStale_ = true;
+  }
+  std::vector<core::TexelRect> rects;
+  if (stretchAllStale_)
+    rects.push_back({0, 0, side, side});
+  else
+    rects = regions(staleStretch_);
+  staleStretch_.clear();
+  stretchAllStale_ = false;
+  if (rects.empty()) return;
+  if (!stretchProgram_.id())
+    stretchProgram_ =
+        Program("stretch map", rectsVertexShader(), positionsPassSource("stretch_map.glsl"));
+  const SavedTarget saved;
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  stretch_.bindAsTarget();
+  glViewport(0, 0, side, side);
+  stretchProgram_.use();
+  bindTexture(0, document.texture(core::EditLayer::Positions));
+  glUniform1i(stretchProgram_.uniform("u_positions"), 0);
+  glUniform1i(stretchProgram_.uniform("u_size"), document.size());
+  rectPass_.draw(rects, side, side);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+  checkGlError("stretch map pass");
+}
+
 const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView& view,
                                           bool lodVertices) {
-  if (normals_.width() != document.size() + 1) refreshAllNormals(document);
+  if (normals_.width() != document.size() + 1) {
+    const SavedTarget saved;
+    refreshAllNormals(document);
+  }
+  const bool stretch = view.preview == ModelView::Preview::Stretch;
+  if (stretch) refreshStretch(document);
   const core::Document& d = document.document();
   const bool diffuseTexture = view.showDiffuse && !d.diffuse.uniform();
   const bool featureTexture = !d.feature.uniform();
@@ -180,6 +272,11 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
   glUniform1i(p.uniform("u_mask"), 3);
   glUniform1i(p.uniform("u_feature"), 4);
   glUniform1i(p.uniform("u_environment"), 5);
+  if (stretch) {
+    bindTexture(6, stretch_);
+    glUniform1i(p.uniform("u_stretch"), 6);
+    glUniform1f(p.uniform("u_meanSpacing"), static_cast<float>(meanSpacing_));
+  }
   const std::array<float, 4> diffuseFill =
       view.showDiffuse ? d.diffuse.fill : std::array<float, 4>{0.8f, 0.78f, 0.74f, 1.0f};
   glUniform3f(p.uniform("u_diffuseFill"), diffuseFill[0], diffuseFill[1], diffuseFill[2]);

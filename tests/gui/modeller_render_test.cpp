@@ -5,8 +5,10 @@
 #include "main_window.h"
 #include "viewport_widget.h"
 
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/measure/stretch.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -19,10 +21,12 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 
 using namespace octaclay;
@@ -74,6 +78,7 @@ private slots:
   void pluginDroppedInAtRunTimeAppearsWithItsForm();
   void strokeWithANonFiniteResultIsUndoneWithAMessage();
   void shineReflectionAndChannelPreviewsFollowTheFeatureLayer();
+  void stretchPreviewIsColdOnASphereAndHotOnAPulledLimb();
   void splatLaysMaterialInOneStroke();
   void otherPressesDuringAStrokeLeaveItWhole();
   void corruptFileFromTheFileMenuKeepsTheDocument();
@@ -388,6 +393,78 @@ void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer(
   const QImage channel = grab();
   QVERIFY(std::abs(lum(channel, centre) - 0.8f * 255) < 8);
   QVERIFY(lum(channel, side) < 2);
+  window_->layersPanel()->setPreview(0);
+}
+
+// The Stretch preview (layers panel row 7) computes the stretch on the GPU from the positions
+// and colours it as the saliency: a fresh sphere (stretch 0.6×–1.7×) is blue wherever the
+// model shows; a thin limb pulled out of it (the CPU limb of stretch_test, here along +x so the
+// camera on +z sees it side on, and across the image's fold at sample (N, N/2)) is red.
+void ModellerRenderTest::stretchPreviewIsColdOnASphereAndHotOnAPulledLimb() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window_->viewport();
+  window_->layersPanel()->setPreview(7);
+  QCOMPARE(window_->layersPanel()->preview(), app::LayersPanel::Preview::Stretch);
+  const auto describe = [](QRgb c) {
+    return QString("(%1, %2, %3)").arg(qRed(c)).arg(qGreen(c)).arg(qBlue(c));
+  };
+  // Model pixels on a lattice, away from the silhouette (where pixels blend in the
+  // background): those whose pick and four neighbours' picks 3 px away hit the model.
+  const auto modelPixels = [&](const std::function<bool(const core::Vec3f&)>& keep, int step) {
+    std::vector<QPoint> out;
+    for (int y = 6; y < view->height() - 6; y += step)
+      for (int x = 6; x < view->width() - 6; x += step) {
+        const auto hit = view->pickAt(QPointF(x, y));
+        bool inside = hit && keep(hit->position);
+        for (const QPoint d : {QPoint(3, 0), QPoint(-3, 0), QPoint(0, 3), QPoint(0, -3)})
+          inside = inside && view->pickAt(QPointF(x + d.x(), y + d.y()));
+        if (inside) out.emplace_back(x, y);
+      }
+    return out;
+  };
+  hideBrushOutline(view);
+  QImage image = view->grabFramebuffer();
+  const std::vector<QPoint> sphere = modelPixels([](const core::Vec3f&) { return true; }, 12);
+  QVERIFY2(sphere.size() > 100, qPrintable(QString::number(sphere.size())));
+  for (const QPoint p : sphere) {
+    const QRgb c = image.pixel(p);
+    QVERIFY2(qRed(c) < 20 && qGreen(c) < 40 && qBlue(c) > 100,
+             qPrintable(QString("(%1, %2): %3").arg(p.x()).arg(p.y()).arg(describe(c))));
+  }
+
+  // The limb: samples within 0.2 rad of +x moved out along x by 4.3 (1 − θ/0.2)².
+  core::Document limb = view->document();
+  for (core::Vec4f& t : limb.positions.texels()) {
+    const double theta = std::acos(std::clamp(double(t.x), -1.0, 1.0));
+    if (theta < 0.2) t.x += float(4.3 * (1.0 - theta / 0.2) * (1.0 - theta / 0.2));
+  }
+  const double cpuMax = [&] {
+    const core::StretchMap map = core::measureStretch(limb.positions);
+    return double(*std::max_element(map.stretch.begin(), map.stretch.end()));
+  }();
+  const QString path = dir_.filePath("limb.exr");
+  core::writeDocument(limb, path.toStdString());
+  QVERIFY(window_->openDocument(path));
+  QCOMPARE(window_->layersPanel()->preview(), app::LayersPanel::Preview::Stretch);
+  hideBrushOutline(view);
+  image = view->grabFramebuffer();
+  const std::vector<QPoint> onLimb =
+      modelPixels([](const core::Vec3f& p) { return p.x > 2.0f; }, 3);
+  QVERIFY2(onLimb.size() > 20, qPrintable(QString::number(onLimb.size())));
+  int hot = 0;
+  for (const QPoint p : onLimb)
+    if (qRed(image.pixel(p)) > qBlue(image.pixel(p)) + 60) ++hot;
+  qInfo("limb: %d of %zu limb pixels hot (CPU stretch up to %.1f)", hot, onLimb.size(), cpuMax);
+  QVERIFY2(hot * 2 > int(onLimb.size()), qPrintable(describe(image.pixel(onLimb.front()))));
+  // The body away from the limb stays cold.
+  const std::vector<QPoint> body =
+      modelPixels([](const core::Vec3f& p) { return p.x < 0.0f && core::length(p) < 1.01f; }, 12);
+  QVERIFY(body.size() > 20);
+  for (const QPoint p : body)
+    QVERIFY2(qBlue(image.pixel(p)) > qRed(image.pixel(p)) + 60,
+             qPrintable(describe(image.pixel(p))));
   window_->layersPanel()->setPreview(0);
 }
 

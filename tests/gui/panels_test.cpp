@@ -531,6 +531,22 @@ private slots:
     QVERIFY(!panel.isPainted(core::EditLayer::Diffuse)); // state is the document's, not persisted
   }
 
+  // The preview list's rows are Preview's values in order; Stretch is the last.
+  void layersPreviewListsEveryPreviewInOrder() {
+    LayersPanel panel;
+    auto* combo = panel.findChild<QComboBox*>(QStringLiteral("preview"));
+    QVERIFY(combo);
+    QCOMPARE(combo->count(), static_cast<int>(LayersPanel::Preview::Stretch) + 1);
+    QCOMPARE(combo->itemText(6), QStringLiteral("Saliency"));
+    QCOMPARE(combo->itemText(7), QStringLiteral("Stretch"));
+    QVERIFY(combo->toolTip().contains(QStringLiteral("stretch")));
+    QSignalSpy changed(&panel, &LayersPanel::previewChanged);
+    panel.setPreview(LayersPanel::Preview::Stretch);
+    QCOMPARE(combo->currentIndex(), 7);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed.front().front().value<LayersPanel::Preview>(), LayersPanel::Preview::Stretch);
+  }
+
   void lodListsLevelsAndCounts() {
     LodPanel panel;
     QSignalSpy level(&panel, &LodPanel::levelChanged);

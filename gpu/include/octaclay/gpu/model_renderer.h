@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace octaclay::gpu {
 namespace detail {
@@ -27,9 +28,20 @@ struct ModelView {
   core::Vec3f brushCentre;
   float brushRadius = 0;                     ///< object units
   std::array<float, 3> brushColour{1, 1, 1}; ///< outline colour
-  /// What the pixels show: the shaded model, one channel alone, or the saliency (the
-  /// positions' alpha) as a heat map.
-  enum class Preview { Shaded, Diffuse, HeightDetail, Specular, Reflectivity, Mask, Saliency };
+  /// What the pixels show: the shaded model, one channel alone, the saliency (the positions'
+  /// alpha) as a heat map, or the stretch (core::StretchMap::stretch, computed on the GPU from
+  /// the positions) as a heat map of the same colours on a log scale: 2× the mean sample
+  /// spacing or less blue (a fresh sphere spans 0.6×–1.7×), 2.8× green, 4× or more red.
+  enum class Preview {
+    Shaded,
+    Diffuse,
+    HeightDetail,
+    Specular,
+    Reflectivity,
+    Mask,
+    Saliency,
+    Stretch
+  };
   Preview preview = Preview::Shaded;
 };
 
@@ -57,15 +69,25 @@ public:
   /// Throws GlError.
   void setEnvironment(const core::RasterImage& image);
 
-  /// Recomputes the normal map over rects of the positions (after dabs or undo).
+  /// Recomputes the normal map over rects of the positions (after dabs or undo). The stretch
+  /// preview's map is refreshed over the same rects at its next draw.
   void refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects);
   /// Recomputes the whole normal map (a new or reloaded document).
   void refreshAllNormals(GpuDocument& document);
 
   /// Draws into the bound framebuffer with the current viewport, depth-tested, skipping chunks
   /// of the level that wholly face away from view.eye. Leaves the program, vertex array and
-  /// texture units 0–3 unbound.
+  /// texture units 0–6 unbound. Preview::Stretch first brings the stretch map up to date
+  /// (the rects refreshNormals() was given since, and the mean spacing from the document's
+  /// mirror: O(N²) on the CPU once after each change), restoring the framebuffer, viewport and
+  /// enables it found.
   void draw(GpuDocument& document, const ModelView& view);
+  /// The stretch preview's map as of the last Preview::Stretch draw (empty before): R32F,
+  /// (N+1)², each texel core::StretchMap::stretch times meanSpacing(), i.e. object units per
+  /// sample step. For tests and tools that read it back.
+  const Texture& stretchMap() const { return stretch_; }
+  /// The mean sample spacing the last Preview::Stretch draw divided by (core::meanSpacing).
+  double meanSpacing() const { return meanSpacing_; }
   /// Triangles the last draw() sent to the rasterizer (after chunk culling).
   long long drawnTriangles() const { return drawnTriangles_; }
 
@@ -85,11 +107,19 @@ private:
                              bool reflection, int preview, bool lodVertices);
   /// Picks draw()'s or drawLod()'s program for view and sets its textures and uniforms.
   const Program& prepareDraw(GpuDocument& document, const ModelView& view, bool lodVertices);
+  /// Runs the stretch pass over the stale rects and re-measures the mean spacing if stale.
+  void refreshStretch(GpuDocument& document);
 
   Program normalProgram_;
   std::map<int, Program> drawPrograms_;
   RectPass rectPass_;
   Texture normals_, environment_;
+  Program stretchProgram_;                    // compiled by the first stretch preview
+  Texture stretch_;                           // R32F, (N+1)²: stretch_map.glsl's figure
+  std::vector<core::TexelRect> staleStretch_; // rects changed since the last stretch pass
+  bool stretchAllStale_ = true;
+  double meanSpacing_ = 0;
+  bool meanSpacingStale_ = true;
   VertexArray vertexArray_;
   Buffer indexBuffer_;
   int n_ = 0, divisor_ = 0;
