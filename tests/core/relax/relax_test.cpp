@@ -258,7 +258,7 @@ void RelaxTest::refusesBadInput() {
 void RelaxTest::relaxesOnlyStretchedRegions() {
   Document sphere = makeDocument(makeBaseShape(BaseShape::Sphere, 64));
   const Document untouched = sphere;
-  QVERIFY(relaxRegions(sphere, {{16, 16, 33, 33}}).empty());
+  QVERIFY(relaxRegions(sphere, {{16, 16, 33, 33}}).empty()); // nothing stretched there
   QVERIFY(sphere.positions.texels().size() == untouched.positions.texels().size());
   QVERIFY(std::memcmp(sphere.positions.texels().data(), untouched.positions.texels().data(),
                       sphere.positions.byteSize()) == 0);
@@ -266,14 +266,12 @@ void RelaxTest::relaxesOnlyStretchedRegions() {
   const int n = 256;
   Document limb = limbDocument(n);
   const Document before = limb;
-  const TexelRect region{48, 48, 161, 161};
-  const std::vector<TexelRect> changed = relaxRegions(limb, {region});
+  // The tip's few samples, as a stroke at the tip changes them: the relaxation grows from there
+  // over the whole pulled part and the surface around it.
+  const std::vector<TexelRect> changed = relaxRegions(limb, {{n / 2 - 2, n / 2 - 2, 5, 5}});
   QVERIFY(!changed.empty());
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
-      const bool inside = i > region.x && i < region.x + region.width - 1 && j > region.y &&
-                          j < region.y + region.height - 1;
-      if (!inside) QVERIFY(limb.positions.at(i, j) == before.positions.at(i, j));
       bool covered = false; // the rectangles returned hold every changed texel
       for (const TexelRect& r : changed)
         covered = covered || (i >= r.x && i < r.x + r.width && j >= r.y && j < r.y + r.height);
