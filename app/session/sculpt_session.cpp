@@ -175,6 +175,7 @@ std::vector<core::TexelRect> stretchRegions(const core::Stroke& record) {
 
 core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
                                             const std::vector<std::array<float, 2>>& pinnedPath) {
+  lastRelaxation_ = {};
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
   const std::vector<core::TexelRect> regions = stretchRegions(record);
@@ -184,13 +185,12 @@ core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::Brus
   for (const auto& uv : pinnedPath)
     options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
                               static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
-  const core::Stroke relaxation =
-      core::relaxRegionsStep(document_->document(), regions, record.label, options);
-  if (relaxation.tiles.empty()) return record;
+  lastRelaxation_ = core::relaxRegionsStep(document_->document(), regions, record.label, options);
+  if (lastRelaxation_.tiles.empty()) return record;
   const core::TileApplier apply = gpu::undoApplier(*document_);
-  for (const core::TileChange& t : relaxation.tiles)
+  for (const core::TileChange& t : lastRelaxation_.tiles)
     t.apply(core::TileState::After, apply);
-  return core::combineSteps(record, relaxation, document_->document(), record.label);
+  return core::combineSteps(record, lastRelaxation_, document_->document(), record.label);
 }
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,

@@ -99,6 +99,9 @@ public:
   /// finishStroke() and strokeAlongPath().
   void setKeepDetail(bool on) { keepDetail_ = on; }
   bool keepDetail() const { return keepDetail_; }
+  /// The relaxation keep-detail made after the last stroke (no tiles when it made none): its
+  /// Before side is the surface as the stroke left it (benchmarks measure how far it moved).
+  const core::Stroke& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
   /// labelled label (e.g. the global even-out); returns the texel rectangles it changed (empty:
@@ -124,6 +127,7 @@ private:
                                const std::vector<std::array<float, 2>>& pinnedPath = {});
 
   bool keepDetail_ = true;
+  core::Stroke lastRelaxation_;
   gpu::BrushEngine* engine_ = nullptr;
   const gpu::BrushCatalog* catalog_ = nullptr;
   BrushVariants variants_;

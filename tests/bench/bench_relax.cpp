@@ -3,7 +3,8 @@
 // N = 256 and 1024, with keep-detail off and on, then the global even-out of the limb made with
 // it off. A table of the limb's (|p| > 1.5) share of samples against its share of area,
 // limb / body mean spacing, longest ÷ median grid edge, limb length, surface distance to the
-// un-relaxed limb and times; beside it push's per-dab cost with keep-detail off and on.
+// un-relaxed limb (keep-detail: the largest of its relaxations against the surface its stroke
+// left) and times; beside it push's per-dab cost with keep-detail off and on.
 // Arguments other than --sizes=a,b are ignored (scripts/bench passes benchmark filters to all).
 #include "sculpt_session.h"
 
@@ -73,6 +74,8 @@ struct Brushes {
 struct Limb {
   core::Document document;
   double msPerStroke = 0;
+  core::SurfaceDistance
+      worstRelaxation; ///< keep-detail's largest step, against the stroke's surface
 };
 
 // The 15 one-dab strokes, the radius taken from the diagonal before each as the CLI does.
@@ -82,6 +85,7 @@ Limb pullLimb(Brushes& b, int n, bool keepDetail) {
   session.setKeepDetail(keepDetail);
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
   double ms = 0;
+  core::SurfaceDistance worst;
   for (int i = 0; i < 15; ++i) {
     gpu::StrokeSettings s;
     s.brush = "push";
@@ -93,8 +97,19 @@ Limb pullLimb(Brushes& b, int n, bool keepDetail) {
     session.strokeAlongPath(*b.push, s);
     glFinish();
     ms += msSince(start);
+    if (session.lastRelaxation().tiles.empty()) continue;
+    // How far the relaxation moved the surface the stroke left.
+    core::Document stroked = session.document();
+    const core::TileApplier apply = core::applierFor(stroked);
+    for (const core::TileChange& t : session.lastRelaxation().tiles)
+      t.apply(core::TileState::Before, apply);
+    const core::SurfaceDistance d = core::compareSurfaces(
+        core::extractMesh(stroked.positions), core::extractMesh(session.document().positions),
+        {.samplesPerSurface = 200'000});
+    worst.rms = std::max(worst.rms, d.rms);
+    worst.hausdorff = std::max(worst.hausdorff, d.hausdorff);
   }
-  return {session.document(), ms / 15};
+  return {session.document(), ms / 15, worst};
 }
 
 // Milliseconds per dab of a push stroke across the sphere (N = n), median of five strokes:
@@ -158,7 +173,7 @@ int main(int argc, char** argv) {
 
     const Limb on = pullLimb(brushes, n, true);
     const Figures onFigures = measure(on.document.positions);
-    row("limb, keep-detail on", n, onFigures, on.msPerStroke, nullptr);
+    row("limb, keep-detail on", n, onFigures, on.msPerStroke, &on.worstRelaxation);
     std::printf("|   keep-detail limb length ÷ off | %d | %.3f |\n", n,
                 onFigures.limbLength / offFigures.limbLength);
 
@@ -169,12 +184,15 @@ int main(int argc, char** argv) {
                                                           core::extractMesh(even.positions));
     row("even-out of the limb", n, measure(even.positions), evenMs, &d);
   }
-  std::printf(
-      "\n| push per dab, stroke across the sphere (radius 0.1, strength 0.5) | N | off ms | "
-      "on ms | on ÷ off |\n|---|---|---|---|---|\n");
-  for (int n : sizes) {
-    const double off = pushPerDab(brushes, n, false), on = pushPerDab(brushes, n, true);
-    std::printf("| | %d | %.3f | %.3f | %.2f |\n", n, off, on, on / off);
-  }
+  std::printf("\n| push per dab, stroke across the sphere | N | keep-detail off ms | on ms | "
+              "on ÷ off |\n|---|---|---|---|---|\n");
+  for (bool pull : {false, true})
+    for (int n : sizes) {
+      const double off = pushPerDab(brushes, n, false, pull);
+      const double on = pushPerDab(brushes, n, true, pull);
+      std::printf("| %s | %d | %.3f | %.3f | %.2f |\n",
+                  pull ? "radius 0.06, strength 4 (pulls a ridge)" : "radius 0.1, strength 0.5", n,
+                  off, on, on / off);
+    }
   return 0;
 }

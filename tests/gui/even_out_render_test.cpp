@@ -4,6 +4,7 @@
 // Keep detail box reaches the sculpting session.
 #include "brush_panel.h"
 #include "main_window.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -119,16 +120,7 @@ void EvenOutRenderTest::cleanup() {
 }
 
 std::unique_ptr<MainWindow> EvenOutRenderTest::makeWindow() {
-  MainWindow::Options options;
-  options.recoveryFolder = dir_.filePath("recovery");
-  options.askAboutRecovery = false;
-  options.autosaveSeconds = 0;
-  auto w = std::make_unique<MainWindow>(options);
-  w->resize(1000, 700);
-  w->show();
-  if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-  if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
-  return w;
+  return app::testing::openTestWindow(dir_.filePath("recovery"));
 }
 
 bool EvenOutRenderTest::openLimb(MainWindow& w) {

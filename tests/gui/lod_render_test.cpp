@@ -6,6 +6,7 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "main_window.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -79,16 +80,7 @@ void LodRenderTest::cleanup() {
 }
 
 std::unique_ptr<MainWindow> LodRenderTest::makeWindow() {
-  MainWindow::Options options;
-  options.recoveryFolder = dir_.filePath("recovery");
-  options.askAboutRecovery = false;
-  options.autosaveSeconds = 0;
-  auto w = std::make_unique<MainWindow>(options);
-  w->resize(1000, 700);
-  w->show();
-  if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-  if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
-  return w;
+  return app::testing::openTestWindow(dir_.filePath("recovery"));
 }
 
 bool LodRenderTest::waitForLod(QSignalSpy& generated, int count) {

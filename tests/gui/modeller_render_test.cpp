@@ -3,6 +3,7 @@
 #include "brush_panel.h"
 #include "layers_panel.h"
 #include "main_window.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -116,15 +117,8 @@ void ModellerRenderTest::cleanup() {
 }
 
 std::unique_ptr<MainWindow> ModellerRenderTest::makeWindow(MainWindow::Options options) {
-  if (options.recoveryFolder.isEmpty()) options.recoveryFolder = dir_.filePath("recovery");
-  options.askAboutRecovery = false;
-  options.autosaveSeconds = 0;
-  auto w = std::make_unique<MainWindow>(options);
-  w->resize(1000, 700);
-  w->show();
-  if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
-  if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
-  w->brushPanel()->selectBrush("push");
+  auto w = app::testing::openTestWindow(dir_.filePath("recovery"), std::move(options));
+  if (w) w->brushPanel()->selectBrush("push");
   return w;
 }
 

@@ -38,8 +38,9 @@ bool isSideMidpoint(int n, Sample s) {
 // their offsets.
 class Level {
 public:
-  Level(const GeometryImage& image, OffsetField& field, int step)
+  Level(const GeometryImage& image, OffsetField& field, int step, double edgeCap)
       : image_(image), field_(field), n_(field.n), step_(step), m_(field.n / step),
+        cap_(edgeCap * step),
         count_(static_cast<std::size_t>(m_ + 1) * static_cast<std::size_t>(m_ + 1)),
         positions_(count_), offsets_(count_), free_(count_, 0), near_(count_, 0) {
     for (int J = 0; J <= m_; ++J)
@@ -62,6 +63,16 @@ public:
     });
     for (std::uint8_t f : free_)
       freeCount_ += f;
+    // The rows of cells that hold a near sample: where sweeps and fold checks look.
+    nearRows_ = {m_, 0};
+    for (int J = 0; J <= m_; ++J)
+      for (int I = 0; I <= m_; ++I)
+        if (near_[lattice(I, J)]) {
+          nearRows_[0] = std::min(nearRows_[0], std::max(J - 1, 0));
+          nearRows_[1] = std::max(nearRows_[1], std::min(J + 1, m_));
+          break;
+        }
+    if (nearRows_[1] < nearRows_[0]) nearRows_ = {0, 0};
   }
 
   std::size_t freeCount() const { return freeCount_; }
@@ -71,9 +82,9 @@ public:
     evaluatePositions();
     const std::vector<std::array<float, 2>> before = offsets_;
     parallelRows(
-        m_ + 1,
+        nearRows_[1] - nearRows_[0] + 1,
         [&](int rowBegin, int rowEnd) {
-          for (int J = rowBegin; J < rowEnd; ++J)
+          for (int J = nearRows_[0] + rowBegin; J < nearRows_[0] + rowEnd; ++J)
             for (int I = 0; I <= m_; ++I)
               if (free_[lattice(I, J)] && canonical(m_, {I, J}) == Sample{I, J})
                 offsets_[lattice(I, J)] = moved(before, I, J);
@@ -113,9 +124,9 @@ private:
 
   void evaluatePositions() {
     parallelRows(
-        m_ + 1,
+        nearRows_[1] - nearRows_[0] + 1,
         [&](int rowBegin, int rowEnd) {
-          for (int J = rowBegin; J < rowEnd; ++J)
+          for (int J = nearRows_[0] + rowBegin; J < nearRows_[0] + rowEnd; ++J)
             for (int I = 0; I <= m_; ++I) {
               if (!near_[lattice(I, J)]) continue;
               const auto& d = offsets_[lattice(I, J)];
@@ -153,7 +164,10 @@ private:
       const std::size_t to = la > lb ? a : b;
       const double longer = std::max(la, lb), shorter = std::min(la, lb);
       if (!(longer > 0)) continue;
-      const double t = (longer - shorter) / (2 * longer);
+      // ... but the shorter edge grows no longer than the cap: the surface the samples come
+      // from keeps its resolution.
+      const double t =
+          std::min((longer - shorter) / (2 * longer), std::max(0.0, (cap_ - shorter) / longer));
       mx += t * (xs[to] - pcx);
       my += t * (ys[to] - pcy);
     }
@@ -179,55 +193,90 @@ private:
   }
 
   // Folded cell triangles get their moved vertices put back to `fallback` (a fold-free
-  // state) until none is left.
+  // state) until none is left: one pass over every cell, then over the cells around what was
+  // put back.
   void repairFolds(const std::vector<std::array<float, 2>>& fallback) {
-    const double minArea = kMinArea * 0.5 * double(step_) * double(step_);
-    for (;;) {
-      std::vector<std::vector<Sample>> bands(static_cast<std::size_t>(m_));
-      parallelRows(
-          m_,
-          [&](int rowBegin, int rowEnd) {
-            for (int J = rowBegin; J < rowEnd; ++J)
-              for (int I = 0; I < m_; ++I) {
-                if (!near_[lattice(I, J)]) continue;
-                for (const auto& tri : cellTriangles(m_, I, J)) {
-                  std::array<std::array<double, 2>, 3> p;
-                  for (std::size_t v = 0; v < 3; ++v) {
-                    const auto& d = offsets_[lattice(tri[v])];
-                    p[v] = {double(tri[v].i) * step_ + d[0], double(tri[v].j) * step_ + d[1]};
-                  }
-                  const double area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
-                                             (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
-                  if (area >= minArea) continue;
-                  for (Sample v : tri)
-                    if (offsets_[lattice(v)] != fallback[lattice(v)])
-                      bands[static_cast<std::size_t>(J)].push_back(v);
-                }
-              }
-          },
-          16);
-      bool any = false;
-      for (const auto& band : bands)
-        for (Sample v : band) {
-          any = true;
-          std::array<Sample, 4> copies;
-          const int k = identifiedSamples(m_, v, copies);
-          for (int i = 0; i < k; ++i) {
-            const std::size_t t = lattice(copies[static_cast<std::size_t>(i)]);
-            offsets_[t] = fallback[t];
-          }
+    std::vector<std::vector<Sample>> bands(static_cast<std::size_t>(m_));
+    parallelRows(
+        nearRows_[1] - nearRows_[0],
+        [&](int rowBegin, int rowEnd) {
+          for (int J = nearRows_[0] + rowBegin; J < nearRows_[0] + rowEnd; ++J)
+            for (int I = 0; I < m_; ++I)
+              if (near_[lattice(I, J)])
+                foldedCorners(I, J, fallback, bands[static_cast<std::size_t>(J)]);
+        },
+        16);
+    std::vector<Sample> offenders;
+    for (const auto& band : bands)
+      offenders.insert(offenders.end(), band.begin(), band.end());
+    std::sort(offenders.begin(), offenders.end(),
+              [this](Sample a, Sample b) { return lattice(a) < lattice(b); });
+    offenders.erase(std::unique(offenders.begin(), offenders.end()), offenders.end());
+    while (!offenders.empty()) {
+      std::vector<Sample> cells;
+      for (Sample v : offenders) {
+        std::array<Sample, 4> copies;
+        const int k = identifiedSamples(m_, v, copies);
+        for (int i = 0; i < k; ++i) {
+          const Sample c = copies[static_cast<std::size_t>(i)];
+          offsets_[lattice(c)] = fallback[lattice(c)];
+          for (int dj = -1; dj <= 0; ++dj)
+            for (int di = -1; di <= 0; ++di)
+              if (c.i + di >= 0 && c.j + dj >= 0 && c.i + di < m_ && c.j + dj < m_)
+                cells.push_back({c.i + di, c.j + dj});
         }
-      if (!any) return;
+      }
+      // A cell or a corner found several times is looked at once (the counts would multiply).
+      auto unique = [this](std::vector<Sample>& v) {
+        std::sort(v.begin(), v.end(),
+                  [this](Sample a, Sample b) { return lattice(a) < lattice(b); });
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+      };
+      unique(cells);
+      offenders.clear();
+      for (Sample c : cells)
+        foldedCorners(c.i, c.j, fallback, offenders);
+      unique(offenders);
+    }
+  }
+
+  // Appends the moved corners of cell (I, J)'s triangles that are folded (or nearly).
+  void foldedCorners(int I, int J, const std::vector<std::array<float, 2>>& fallback,
+                     std::vector<Sample>& out) const {
+    const std::array<Sample, 4> c{{{I, J}, {I + 1, J}, {I + 1, J + 1}, {I, J + 1}}};
+    bool moved = false; // a cell none of whose corners moved is as it was: unfolded
+    for (Sample v : c)
+      moved = moved || offsets_[lattice(v)] != fallback[lattice(v)];
+    if (!moved) return;
+    // cellTriangles' split: along the anti-diagonal where the column and row halves agree.
+    const bool anti = (I >= m_ / 2) == (J >= m_ / 2);
+    const std::array<std::array<Sample, 3>, 2> triangles =
+        anti ? std::array<std::array<Sample, 3>, 2>{{{c[0], c[1], c[3]}, {c[1], c[2], c[3]}}}
+             : std::array<std::array<Sample, 3>, 2>{{{c[0], c[1], c[2]}, {c[0], c[2], c[3]}}};
+    const double minArea = kMinArea * 0.5 * double(step_) * double(step_);
+    for (const auto& tri : triangles) {
+      std::array<std::array<double, 2>, 3> p;
+      for (std::size_t v = 0; v < 3; ++v) {
+        const auto& d = offsets_[lattice(tri[v])];
+        p[v] = {double(tri[v].i) * step_ + d[0], double(tri[v].j) * step_ + d[1]};
+      }
+      const double area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                                 (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
+      if (area >= minArea) continue;
+      for (Sample v : tri)
+        if (offsets_[lattice(v)] != fallback[lattice(v)]) out.push_back(v);
     }
   }
 
   const GeometryImage& image_;
   OffsetField& field_;
   int n_, step_, m_;
+  double cap_; // longest a sweep lets an edge of this lattice grow
   std::size_t count_;
   std::vector<Vec3f> positions_;
   std::vector<std::array<float, 2>> offsets_;
   std::vector<std::uint8_t> free_, near_;
+  std::array<int, 2> nearRows_{0, 0}; // [first, last) row of cells with a near sample
   std::size_t freeCount_ = 0;
 };
 
@@ -296,7 +345,7 @@ void OffsetField::pin(Sample s) {
 }
 
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
-                  const RelaxProgress& progress) {
+                  double edgeCap, const RelaxProgress& progress) {
   const int n = field.n;
   std::vector<std::pair<int, int>> plan; // (step, sweeps), coarse to fine
   for (int m = std::min(n, kCoarsest); m <= n; m *= 2)
@@ -306,7 +355,7 @@ bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterat
     total += double(sweeps) * double(n / step + 1) * double(n / step + 1);
   for (std::size_t l = 0; l < plan.size(); ++l) {
     const auto [step, sweeps] = plan[l];
-    Level level(image, field, step);
+    Level level(image, field, step, edgeCap);
     if (l > 0) level.unfoldFromRest();
     if (level.freeCount() > 0)
       for (int s = 0; s < sweeps; ++s) {

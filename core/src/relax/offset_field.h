@@ -33,9 +33,10 @@ struct OffsetField {
 };
 
 /// Moves the free samples toward where the surface of `image` is stretched, coarse to fine,
-/// keeping every cell unfolded. Returns false when progress cancelled.
+/// keeping every cell unfolded and growing no grid edge beyond edgeCap (object units) by taking
+/// samples away. Returns false when progress cancelled.
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
-                  const RelaxProgress& progress);
+                  double edgeCap, const RelaxProgress& progress);
 
 /// Texel (i, j) of layer after resampling at the field's parameter points, editLayerChannels
 /// floats into out: a sample that did not move keeps its value; identified samples get the

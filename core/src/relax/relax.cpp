@@ -37,8 +37,13 @@ TexelRect clipped(TexelRect r, int n) {
   return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
-// An edge longer than kStretchedEdge times the surface's median edge is stretched.
+// An edge longer than kStretchedEdge times the surface's median edge is stretched. Samples are
+// taken from the surface around it only while its edges stay within a multiple of the median
+// (the even-out's, and keep-detail's, whose reservoir is bounded and pinned at its rim): the
+// surface they leave keeps its resolution.
 constexpr float kStretchedEdge = 2.0f;
+constexpr float kEvenOutDonorEdge = 3.0f;
+constexpr float kKeepDetailDonorEdge = 4.0f;
 
 float edgeLength(const GeometryImage& image, int i, int j, int di, int dj) {
   return length(image.at(i + di, j + dj).xyz() - image.at(i, j).xyz());
@@ -93,7 +98,7 @@ TexelRect relaxedExtent(const GeometryImage& image, TexelRect seed, float limit)
     if (!stretchedBorder(image, r, limit)) break;
     r = grownBy(r, std::max(4, std::max(r.width, r.height) / 8), n);
   }
-  return grownBy(r, std::max({16, r.width / 2, r.height / 2}), n);
+  return grownBy(r, std::max({16, r.width, r.height}), n);
 }
 
 bool meet(TexelRect a, TexelRect b) {
@@ -129,7 +134,8 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
   field.freeAll();
   for (Sample s : options.pinned)
     field.pin(s);
-  if (!detail::solveOffsets(document.positions, field, fineIterations(options), progress))
+  if (!detail::solveOffsets(document.positions, field, fineIterations(options),
+                            kEvenOutDonorEdge * medianEdge(document.positions), progress))
     throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
   Document result = document; // samples that do not move keep their texels
   detail::resampleDocument(document, field, result);
@@ -144,7 +150,8 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   checkPositions(document.positions);
   const int n = document.size(), side = n + 1;
   detail::OffsetField field(n);
-  const float limit = kStretchedEdge * medianEdge(document.positions);
+  const float median = medianEdge(document.positions);
+  const float limit = kStretchedEdge * median;
   std::vector<TexelRect> extents;
   for (const TexelRect& r : regions)
     if (r.width > 0 && r.height > 0 && stretchedInside(document.positions, clipped(r, n), limit))
@@ -156,7 +163,8 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   StrokeRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
-  detail::solveOffsets(document.positions, field, fineIterations(options), {});
+  detail::solveOffsets(document.positions, field, fineIterations(options),
+                       kKeepDetailDonorEdge * median, {});
   const int tiles = StrokeRecorder::tilesPerSide(side);
   std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
   for (int j = 0; j <= n; ++j)

@@ -39,7 +39,7 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options = 
 /// The local relaxation behind "keep detail": the same flow around what changed. A region
 /// (e.g. the texels a stroke moved) counts only when one of its grid edges is stretched (over
 /// twice the surface's median edge); it is then grown until its border is no longer stretched
-/// (the whole pulled part) and by half its size again (the surface samples flow in from), and
+/// (the whole pulled part) and by its size again (the surface samples flow in from), and
 /// overlapping ones are merged. The samples inside move, the rest and each extent's outer ring
 /// stay. Rewrites the changed texels of every layer in place and returns the rectangles it
 /// changed (empty when none). Throws like evenOutSamples.
