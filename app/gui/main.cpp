@@ -1,6 +1,7 @@
 // octaclay: the modeller. `octaclay [doc.exr]` opens a document, or a new sphere (N = 1024).
 #include "main_window.h"
 #include "screenshot_script.h"
+#include "stretch_screenshot.h"
 #include "viewport_widget.h"
 
 #include <QApplication>
@@ -28,9 +29,14 @@ int main(int argc, char** argv) {
   QCommandLineOption size("size", "Size N of a new model (N+1 samples a side).", "N", "1024");
   QCommandLineOption screenshot(
       "screenshot", "Make a few strokes, save the window as an image and quit.", "image.png");
+  QCommandLineOption stretchScreenshot(
+      "stretch-screenshot",
+      "Show the document (a pulled limb) with Preview > Stretch before and after Mesh > Even Out "
+      "Samples, save both side by side as an image and quit.",
+      "image.png");
   QCommandLineOption startupTime("startup-time",
                                  "Print the time from start to the first drawn frame, then quit.");
-  parser.addOptions({shape, size, screenshot, startupTime});
+  parser.addOptions({shape, size, screenshot, stretchScreenshot, startupTime});
   parser.process(app);
 
   const auto baseShape = octaclay::core::parseBaseShape(parser.value(shape).toStdString());
@@ -42,9 +48,15 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  const QStringList args = parser.positionalArguments();
+  if (parser.isSet(stretchScreenshot) && args.isEmpty()) {
+    fprintf(stderr, "octaclay: --stretch-screenshot needs a document (a pulled limb, see "
+                    "scripts/stretch-screenshot)\n");
+    return 2;
+  }
+
   octaclay::app::MainWindow window;
   window.show();
-  const QStringList args = parser.positionalArguments();
   if (args.isEmpty() || !window.openDocument(args.front())) window.newDocument(*baseShape, n, true);
   if (parser.isSet(startupTime)) {
     QObject::connect(
@@ -56,6 +68,12 @@ int main(int argc, char** argv) {
     const QString out = parser.value(screenshot);
     QTimer::singleShot(0, &window, [&window, out] {
       const bool ok = octaclay::app::makeScreenshot(window, out);
+      QCoreApplication::exit(ok ? 0 : 1);
+    });
+  } else if (parser.isSet(stretchScreenshot)) {
+    const QString out = parser.value(stretchScreenshot);
+    QTimer::singleShot(0, &window, [&window, out] {
+      const bool ok = octaclay::app::makeStretchScreenshot(window, out);
       QCoreApplication::exit(ok ? 0 : 1);
     });
   } else {

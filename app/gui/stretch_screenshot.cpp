@@ -1,0 +1,134 @@
+#include "stretch_screenshot.h"
+
+#include "layers_panel.h"
+#include "main_window.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/measure/stretch.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QFont>
+#include <QImage>
+#include <QPainter>
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace octaclay::app {
+namespace {
+
+// Each half of the picture, in pixels: wide, as the limb lies across it.
+constexpr int kHalfWidth = 600, kHalfHeight = 400;
+
+void settle(int ms) {
+  QElapsedTimer t;
+  t.start();
+  while (t.elapsed() < ms)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+}
+
+// Looks at the model from the side (from -y, a little above and in front), the +z limb pointing
+// right, at the distance resetCamera() fits the whole bounding box in.
+void frameFromTheSide(ViewportWidget& view) {
+  view.resetCamera();
+  vtkCamera* camera = view.renderer()->GetActiveCamera();
+  double focal[3];
+  camera->GetFocalPoint(focal);
+  const double distance = camera->GetDistance();
+  const double dir[3] = {0.25, -1.0, 0.3}; // from the focal point to the eye
+  const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  camera->SetPosition(focal[0] + distance * dir[0] / len, focal[1] + distance * dir[1] / len,
+                      focal[2] + distance * dir[2] / len);
+  camera->SetViewUp(-1, 0, 0); // screen right = view direction × up = +z
+  camera->OrthogonalizeViewUp();
+  // resetCamera() fits the bounding sphere in the height; the limb runs across the width.
+  camera->Zoom(1.45);
+  view.update();
+}
+
+// The viewport as drawn now, cropped to the half's aspect around its centre (if the layout did
+// not give it that size) and scaled to the half.
+QImage grabHalf(ViewportWidget& view) {
+  view.update();
+  settle(400);
+  const QImage frame = view.grabFramebuffer();
+  const double aspect = double(kHalfWidth) / kHalfHeight;
+  int w = frame.width(), h = frame.height();
+  if (w > h * aspect)
+    w = int(h * aspect);
+  else
+    h = int(w / aspect);
+  return frame.copy((frame.width() - w) / 2, (frame.height() - h) / 2, w, h)
+      .scaled(kHalfWidth, kHalfHeight, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+}
+
+// caption over the half's top left corner, white on a dark band so it reads on any background.
+void drawCaption(QPainter& painter, int x, const QString& caption) {
+  QFont font = painter.font();
+  font.setPixelSize(22);
+  painter.setFont(font);
+  const QRect band(x, 0, kHalfWidth, 40);
+  painter.fillRect(band, QColor(0, 0, 0, 150));
+  painter.setPen(Qt::white);
+  painter.drawText(band.adjusted(14, 0, -14, 0), Qt::AlignVCenter | Qt::AlignLeft, caption);
+}
+
+double longestOverMedian(const ViewportWidget& view) {
+  return core::summarizeStretch(view.document().positions).longestOverMedian;
+}
+
+} // namespace
+
+bool makeStretchScreenshot(MainWindow& window, const QString& imagePath) {
+  ViewportWidget& view = *window.viewport();
+  QElapsedTimer wait;
+  wait.start();
+  while (!view.glReady() && wait.elapsed() < 10000)
+    settle(50);
+  if (!view.glReady() || !view.hasDocument()) {
+    std::fprintf(stderr, "octaclay: no OpenGL 4.3 context or no document: %s\n",
+                 qPrintable(view.error()));
+    return false;
+  }
+  // Drawn at the half's size, so the camera frames what the picture shows.
+  view.setFixedSize(kHalfWidth, kHalfHeight);
+  settle(300);
+  view.setLevelDivisor(1); // every sample: the few the limb has are what the picture is about
+  window.layersPanel()->setPreview(LayersPanel::Preview::Stretch);
+  frameFromTheSide(view);
+  const double before = longestOverMedian(view);
+  const QImage beforeImage = grabHalf(view);
+
+  if (!window.evenOutSamples()) {
+    std::fprintf(stderr, "octaclay: Even Out Samples made no change: %s\n",
+                 qPrintable(window.lastError()));
+    return false;
+  }
+  const double after = longestOverMedian(view);
+  const QImage afterImage = grabHalf(view);
+
+  QImage out(2 * kHalfWidth, kHalfHeight, QImage::Format_RGB32);
+  QPainter painter(&out);
+  painter.setRenderHint(QPainter::Antialiasing);
+  painter.setRenderHint(QPainter::TextAntialiasing);
+  painter.drawImage(0, 0, beforeImage);
+  painter.drawImage(kHalfWidth, 0, afterImage);
+  painter.fillRect(kHalfWidth - 1, 0, 2, kHalfHeight, Qt::white);
+  drawCaption(painter, 0,
+              QStringLiteral("before: longest edge %1x the median").arg(before, 0, 'f', 0));
+  drawCaption(painter, kHalfWidth,
+              QStringLiteral("after Mesh \u25B8 Even Out Samples: %1x").arg(after, 0, 'f', 0));
+  painter.end();
+  std::printf("longest edge over the median: %.1f before, %.1f after Even Out Samples\n", before,
+              after);
+  if (!out.save(imagePath)) {
+    std::fprintf(stderr, "octaclay: cannot write %s\n", qPrintable(imagePath));
+    return false;
+  }
+  return true;
+}
+
+} // namespace octaclay::app
