@@ -163,6 +163,7 @@ int main(int argc, char** argv) {
       }
     }
   Brushes brushes;
+  std::printf("GL renderer: %s\n\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   std::printf("| scenario | N | limb samples | limb sample share | limb area share | fair share | "
               "limb/body spacing | longest/median edge | limb length | moved RMS / Hausdorff "
               "(of diagonal) | ms |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
