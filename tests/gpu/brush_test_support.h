@@ -5,6 +5,7 @@
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/gpu_document.h"
 
 #include <cstring>
 #include <filesystem>
@@ -46,6 +47,17 @@ inline Dab dabAt(const core::GeometryImage& image, core::Sample s, float radius,
   dab.radius = radius;
   dab.strength = strength;
   return dab;
+}
+
+/// Every layer's texels as the document's mirror holds them (fill values expanded), in
+/// EditLayer order: what sameBits compares.
+inline std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
+  const int side = document.size() + 1;
+  std::vector<std::vector<float>> layers;
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask})
+    layers.push_back(document.mirrorTexels(layer, {0, 0, side, side}));
+  return layers;
 }
 
 /// Whether two snapshots of layers (one float vector per layer) hold the same bits.

@@ -33,17 +33,6 @@ namespace {
 constexpr int kN = 128;
 constexpr float kLimb = 1.5f; // a vertex farther than this from the centre is on the limb
 
-constexpr core::EditLayer kLayers[] = {core::EditLayer::Positions, core::EditLayer::Diffuse,
-                                       core::EditLayer::Feature, core::EditLayer::Mask};
-
-std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
-  const int side = document.size() + 1;
-  std::vector<std::vector<float>> layers;
-  for (core::EditLayer layer : kLayers)
-    layers.push_back(document.mirrorTexels(layer, {0, 0, side, side}));
-  return layers;
-}
-
 // How the image samples the limb: its share of the vertices and the grid's edge lengths.
 struct Sampling {
   double limbShare = 0;   // vertices with |p| > kLimb ÷ all vertices (N² + 2)

@@ -29,15 +29,6 @@ namespace {
 constexpr core::EditLayer kLayers[] = {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                        core::EditLayer::Feature, core::EditLayer::Mask};
 
-// Every layer's texels as the mirror holds them (fill values expanded).
-std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
-  const int side = document.size() + 1;
-  std::vector<std::vector<float>> layers;
-  for (core::EditLayer layer : kLayers)
-    layers.push_back(document.mirrorTexels(layer, {0, 0, side, side}));
-  return layers;
-}
-
 // The same, read back from the GPU textures (feature is RGBA there, RGB in the mirror).
 std::vector<std::vector<float>> textureSnapshot(GpuDocument& document) {
   const int side = document.size() + 1;
