@@ -4,8 +4,8 @@
 #include "cli_support.h"
 
 #include <QDir>
-#include <QJsonArray>
 #include <QFile>
+#include <QJsonArray>
 #include <QTemporaryDir>
 
 class CliRelaxTest : public QObject {
