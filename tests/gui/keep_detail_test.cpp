@@ -1,0 +1,100 @@
+// Keep detail through the sculpting session the modeller uses (app/session): clicks that pull a
+// limb out of a sphere get their stretch relaxed, each click and its relaxation are one undo
+// step, and undo / redo give back every layer bit for bit.
+#include "../gpu/brush_test_support.h"
+#include "sculpt_session.h"
+
+#include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/measure/stretch.h"
+#include "octaclay/gpu/brush_catalog.h"
+#include "octaclay/gpu/brush_engine.h"
+#include "octaclay/gpu/gl_context.h"
+#include "octaclay/gpu/gpu_document.h"
+
+#include <QTest>
+
+#include <optional>
+#include <vector>
+
+using namespace octaclay;
+
+using Snapshot = std::vector<std::vector<float>>;
+using gpu::testing::sameBits;
+using gpu::testing::snapshot;
+
+class KeepDetailTest : public QObject {
+  Q_OBJECT
+private slots:
+  void initTestCase();
+  void clicksKeepTheirDetailAndUndoBitExactly();
+  void offLeavesTheSamplesWhereTheBrushPutThem();
+
+private:
+  // Pulls at the pole (the image centre) with `clicks` one-dab strokes; returns the limb's
+  // longest edge ÷ median edge, and checks every relaxed click's undo and redo.
+  double pull(bool keepDetail, int clicks, int* relaxedClicks);
+
+  std::optional<gpu::GlContext> context_;
+  gpu::BrushCatalog catalog_;
+  std::optional<gpu::BrushEngine> engine_;
+};
+
+void KeepDetailTest::initTestCase() {
+  context_.emplace(gpu::GlContext::createHeadless());
+  engine_.emplace();
+  catalog_.scan(gpu::BrushCatalog::defaultSearchPath(OCTACLAY_SOURCE_BRUSHES));
+  QVERIFY(catalog_.find("push") != nullptr);
+}
+
+double KeepDetailTest::pull(bool keepDetail, int clicks, int* relaxedClicks) {
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(*catalog_.find("push"));
+  session.setKeepDetail(keepDetail);
+  session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
+  app::BrushSettings settings;
+  settings.brushId = "push";
+  settings.radius = 0.06f;
+  settings.strength = 1.0f;
+  settings.pressureTarget = app::PressureTarget::None;
+  *relaxedClicks = 0;
+  for (int i = 0; i < clicks; ++i) {
+    const Snapshot before = snapshot(session.gpuDocument());
+    session.beginStroke("push", settings, core::EditLayer::Diffuse, 1.0f, {0, 0, 10});
+    session.queueDab({0.5f, 0.5f}, 1.0f);
+    const app::DabRun run = session.runQueuedDabs(settings);
+    if (!run.error.empty()) qFatal("dab failed: %s", run.error.c_str());
+    session.finishStroke();
+    if (session.lastRelaxation().tiles.empty()) continue;
+    ++*relaxedClicks;
+    const Snapshot after = snapshot(session.gpuDocument());
+    const std::size_t steps = session.history().undoCount();
+    if (!session.undo()) qFatal("nothing to undo");
+    if (!sameBits(snapshot(session.gpuDocument()), before)) qFatal("undo was not bit-exact");
+    if (!session.redo()) qFatal("nothing to redo");
+    if (!sameBits(snapshot(session.gpuDocument()), after)) qFatal("redo was not bit-exact");
+    if (session.history().undoCount() != steps) qFatal("the click was more than one step");
+  }
+  return core::summarizeStretch(session.document().positions).longestOverMedian;
+}
+
+void KeepDetailTest::clicksKeepTheirDetailAndUndoBitExactly() {
+  int relaxedOn = 0, relaxedOff = 0;
+  const double on = pull(true, 40, &relaxedOn);
+  const double off = pull(false, 40, &relaxedOff);
+  qInfo("40 clicks: longest edge %.1fx the median with keep-detail, %.1fx without; %d clicks "
+        "relaxed",
+        on, off, relaxedOn);
+  QVERIFY(relaxedOn > 0);
+  QCOMPARE(relaxedOff, 0);
+  QVERIFY(on < off / 2);
+}
+
+void KeepDetailTest::offLeavesTheSamplesWhereTheBrushPutThem() {
+  int relaxed = 0;
+  pull(false, 3, &relaxed);
+  QCOMPARE(relaxed, 0);
+}
+
+QTEST_GUILESS_MAIN(KeepDetailTest)
+#include "keep_detail_test.moc"
