@@ -64,9 +64,13 @@ Command addRelaxCommand(CLI::App& app) {
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
         const core::StretchSummary after = core::summarizeStretch(relaxed.positions);
-        const core::SurfaceDistance moved = core::compareSurfaces(
-            core::extractMesh(document.positions), core::extractMesh(relaxed.positions),
-            {.samplesPerSurface = 200'000});
+        // A surface collapsed to a point has nothing to even out and no scale to measure by.
+        const core::TriangleMesh surface = core::extractMesh(document.positions);
+        const core::SurfaceDistance moved =
+            core::boundingBox(surface).diagonal() > 0
+                ? core::compareSurfaces(surface, core::extractMesh(relaxed.positions),
+                                        {.samplesPerSurface = 200'000})
+                : core::SurfaceDistance{};
         std::ostringstream report; // made before the save, which commits last
         if (opt->json) {
           report << app::JsonReply{{"input", opt->input},          {"output", opt->output},
