@@ -43,7 +43,7 @@ TexelRect clipped(TexelRect r, int n) {
 // surface they leave keeps its resolution.
 constexpr float kStretchedEdge = 2.0f;
 constexpr float kEvenOutDonorEdge = 3.0f;
-constexpr float kKeepDetailDonorEdge = 4.0f;
+constexpr float kKeepDetailDonorEdge = 5.0f;
 
 float edgeLength(const GeometryImage& image, int i, int j, int di, int dj) {
   return length(image.at(i + di, j + dj).xyz() - image.at(i, j).xyz());
