@@ -76,6 +76,28 @@ std::array<TriangleFigures, 2> cellFigures(const GeometryImage& image, int i, in
           triangleFigures(difference(c, d), difference(d, a))};
 }
 
+// The surface's area, every cell's triangles measured once (in parallel rows) and handed to
+// perCell(i, j, figures) too.
+template <class PerCell> double surfaceArea(const GeometryImage& image, PerCell&& perCell) {
+  const int n = image.size();
+  std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
+  detail::parallelRows(n, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j) {
+      double sum = 0;
+      for (int i = 0; i < n; ++i) {
+        const auto f = cellFigures(image, i, j);
+        perCell(i, j, f);
+        sum += double(f[0].area) + double(f[1].area);
+      }
+      rowArea[static_cast<std::size_t>(j)] = sum;
+    }
+  });
+  double total = 0;
+  for (double a : rowArea)
+    total += a;
+  return total;
+}
+
 VertexFigures measureVertices(const GeometryImage& image) {
   const int n = image.size();
   VertexFigures out;
@@ -84,21 +106,10 @@ VertexFigures measureVertices(const GeometryImage& image) {
   const std::size_t cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   // Every triangle of the mesh is one triangle of a cell inside the grid: measure each once.
   std::vector<std::array<TriangleFigures, 2>> figures(cells);
-  std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
-  detail::parallelRows(n, [&](int rowBegin, int rowEnd) {
-    for (int j = rowBegin; j < rowEnd; ++j) {
-      double sum = 0;
-      for (int i = 0; i < n; ++i) {
-        const auto f = cellFigures(image, i, j);
-        figures[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
-                static_cast<std::size_t>(i)] = f;
-        sum += double(f[0].area) + double(f[1].area);
-      }
-      rowArea[static_cast<std::size_t>(j)] = sum;
-    }
+  out.totalArea = surfaceArea(image, [&](int i, int j, const std::array<TriangleFigures, 2>& f) {
+    figures[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+            static_cast<std::size_t>(i)] = f;
   });
-  for (double a : rowArea)
-    out.totalArea += a;
 
   // Gather per texel from the (up to) four cells inside the grid around it. Which of a cell's
   // triangles hold a corner: a and c are in both triangles of a main-diagonal cell, b and d in
@@ -182,20 +193,7 @@ double meanSpacing(const GeometryImage& image) {
   if (n < 2) return 0.0;
   // measureVertices' first pass alone, keeping no per-cell figures (a renderer calls this
   // after strokes).
-  std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
-  detail::parallelRows(n, [&](int rowBegin, int rowEnd) {
-    for (int j = rowBegin; j < rowEnd; ++j) {
-      double sum = 0;
-      for (int i = 0; i < n; ++i) {
-        const auto f = cellFigures(image, i, j);
-        sum += double(f[0].area) + double(f[1].area);
-      }
-      rowArea[static_cast<std::size_t>(j)] = sum;
-    }
-  });
-  double total = 0;
-  for (double a : rowArea)
-    total += a;
+  const double total = surfaceArea(image, [](int, int, const std::array<TriangleFigures, 2>&) {});
   return std::sqrt(total / vertexCount(n));
 }
 
