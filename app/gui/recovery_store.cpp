@@ -1,5 +1,6 @@
 #include "recovery_store.h"
 
+#include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 
@@ -8,7 +9,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <signal.h>
 
@@ -35,14 +35,16 @@ bool processAlive(qint64 pid) {
   return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
 }
 
-// QSaveFile writes a temporary beside path and renames it over path on commit, removing the
-// temporary on failure, so a reader never sees half a file.
+// Through the one output writer (core::OutputSet): a reader never sees half a file.
 void writeFileAtomically(const QString& path, const QByteArray& bytes, const char* what) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-    throw core::Error(core::ErrorKind::Io, std::string("cannot write the ") + what + " " +
-                                               path.toStdString() + ": " +
-                                               file.errorString().toStdString());
+  try {
+    core::writeBytesAtomically(toPath(path),
+                               std::span(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
+                                         static_cast<std::size_t>(bytes.size())));
+  } catch (const core::Error& e) {
+    throw core::Error(core::ErrorKind::Io,
+                      std::string("cannot write the ") + what + ": " + e.what());
+  }
 }
 
 void makeFolder(const QString& folder) {

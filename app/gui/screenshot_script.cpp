@@ -1,6 +1,7 @@
 #include "screenshot_script.h"
 
 #include "brush_panel.h"
+#include "image_output.h"
 #include "main_window.h"
 #include "viewport_widget.h"
 
@@ -79,11 +80,7 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   }
   settle(600); // status bar and panels catch up
   const QImage image = window.grab().toImage();
-  if (!image.save(imagePath)) {
-    std::fprintf(stderr, "octaclay: cannot write %s\n", qPrintable(imagePath));
-    return false;
-  }
-  return true;
+  return saveImagePng(image, imagePath);
 }
 
 } // namespace octaclay::app

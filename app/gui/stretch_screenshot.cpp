@@ -1,5 +1,6 @@
 #include "stretch_screenshot.h"
 
+#include "image_output.h"
 #include "layers_panel.h"
 #include "main_window.h"
 #include "viewport_widget.h"
@@ -124,11 +125,7 @@ bool makeStretchScreenshot(MainWindow& window, const QString& imagePath) {
   painter.end();
   std::printf("longest edge over the median: %.1f before, %.1f after Even Out Samples\n", before,
               after);
-  if (!out.save(imagePath)) {
-    std::fprintf(stderr, "octaclay: cannot write %s\n", qPrintable(imagePath));
-    return false;
-  }
-  return true;
+  return saveImagePng(out, imagePath);
 }
 
 } // namespace octaclay::app

@@ -5,6 +5,7 @@
 #include "codec/channel_stats.h"
 #include "codec/codec_list.h"
 #include "codec/grid.h"
+#include "detail/exr_memory_stream.h"
 
 #include "octaclay/core/error.h"
 
@@ -52,23 +53,6 @@ std::uint8_t modeIndex(const CodecParams& params) {
   throw Error(ErrorKind::InvalidArgument,
               "exr: mode '" + params.mode + "' is not one of zip, piz, pxr24, half");
 }
-
-class MemoryOStream : public Imf::OStream {
-public:
-  MemoryOStream() : Imf::OStream("memory") {}
-  void write(const char c[], int n) override {
-    if (position_ + n > bytes_.size()) bytes_.resize(position_ + n);
-    std::memcpy(bytes_.data() + position_, c, static_cast<std::size_t>(n));
-    position_ += static_cast<std::size_t>(n);
-  }
-  uint64_t tellp() override { return position_; }
-  void seekp(uint64_t pos) override { position_ = static_cast<std::size_t>(pos); }
-  std::vector<std::uint8_t>& bytes() { return bytes_; }
-
-private:
-  std::vector<std::uint8_t> bytes_;
-  std::size_t position_ = 0;
-};
 
 class MemoryIStream : public Imf::IStream {
 public:
@@ -121,7 +105,7 @@ std::vector<std::uint8_t> encode(const FloatImage& image, const CodecParams& par
     frame.insert(channelName(c), Imf::Slice(kModes[mode].type, base, element * channels,
                                             element * channels * side));
   }
-  MemoryOStream stream;
+  detail::ExrMemoryStream stream;
   {
     Imf::OutputFile file(stream, header, exrThreads());
     file.setFrameBuffer(frame);

@@ -36,14 +36,6 @@ std::string reason(int error) {
 
 // Libraries (OpenEXR) name the file they wrote: the user asked for the target, not the hidden
 // temporary.
-std::string namingTarget(std::string message, const fs::path& temporary, const fs::path& target) {
-  const std::string hidden = temporary.string(), shown = target.string();
-  for (std::size_t at = message.find(hidden); at != std::string::npos;
-       at = message.find(hidden, at + shown.size()))
-    message.replace(at, hidden.size(), shown);
-  return message;
-}
-
 fs::path folderOf(const fs::path& target) {
   return target.parent_path().empty() ? fs::path(".") : target.parent_path();
 }
@@ -80,16 +72,6 @@ void removeStaleTemporaries(const fs::path& target) {
       fs::remove(it->path(), ignored);
     }
   }
-}
-
-void fsyncPath(const fs::path& path, int flags, const fs::path& target) {
-  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) failWrite(target, reason(errno));
-  const int result = ::fsync(fd);
-  const int error = errno;
-  ::close(fd);
-  // Folders on some file systems do not support fsync; the rename is still done.
-  if (result != 0 && error != EINVAL && error != EROFS) failWrite(target, reason(error));
 }
 
 // Holds an exclusive flock on each folder a set commits into (sorted, so two sets never wait
@@ -138,22 +120,18 @@ void requireWritableTarget(const fs::path& target) {
                     "replaced: choose a file path");
 }
 
-void writeBytesToFile(const fs::path& path, std::span<const std::uint8_t> bytes,
-                      const fs::path& shown) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) failWrite(shown, reason(errno));
+void ByteSink::write(std::span<const std::uint8_t> bytes) {
   std::size_t done = 0;
   while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : ENOSPC;
-      ::close(fd);
-      failWrite(shown, reason(error));
-    }
+    if (n <= 0) failWrite(shown_, reason(n < 0 ? errno : ENOSPC));
     done += static_cast<std::size_t>(n);
   }
-  if (::close(fd) != 0) failWrite(shown, reason(errno));
+}
+
+void ByteSink::write(std::string_view text) {
+  write(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
 OutputSet::~OutputSet() {
@@ -168,7 +146,7 @@ void OutputSet::discard() noexcept {
   staged_.clear();
 }
 
-void OutputSet::stage(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+void OutputSet::stage(const fs::path& target, const std::function<void(ByteSink&)>& write) {
   requireWritableTarget(target);
   for (const Staged& s : staged_)
     if (s.target == target) failWrite(target, "the same file is written twice by one command");
@@ -201,26 +179,37 @@ void OutputSet::stage(const fs::path& target, const std::function<void(const fs:
   };
 
   try {
-    write(staged.temporary);
-    fsyncPath(staged.temporary, O_RDONLY, target);
+    const int out = ::open(staged.temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (out < 0) failWrite(target, reason(errno));
+    try {
+      ByteSink sink(out, target);
+      write(sink);
+    } catch (...) {
+      ::close(out);
+      throw;
+    }
+    const bool synced = ::fsync(out) == 0 || errno == EINVAL || errno == EROFS;
+    const int syncError = errno;
+    if (::close(out) != 0) failWrite(target, reason(errno));
+    if (!synced) failWrite(target, reason(syncError));
     // A replaced file keeps its permissions (set only now: the writer may need to open it).
     struct stat previous {};
     if (::stat(target.c_str(), &previous) == 0)
       ::chmod(staged.temporary.c_str(), previous.st_mode & 0777);
-  } catch (const Error& e) {
+  } catch (const Error&) {
     dropLast();
-    throw Error(e.kind(), namingTarget(e.what(), staged.temporary, target));
+    throw;
   } catch (const std::bad_alloc&) {
     dropLast();
     throw;
   } catch (const std::exception& e) {
     dropLast();
-    failWrite(target, namingTarget(e.what(), staged.temporary, target));
+    failWrite(target, e.what());
   }
 }
 
 void OutputSet::stageBytes(const fs::path& target, std::span<const std::uint8_t> bytes) {
-  stage(target, [&](const fs::path& temporary) { writeBytesToFile(temporary, bytes, target); });
+  stage(target, [&](ByteSink& sink) { sink.write(bytes); });
 }
 
 void OutputSet::stageText(const fs::path& target, std::string_view text) {
@@ -250,8 +239,7 @@ const std::vector<fs::path>& OutputSet::targets() const {
   return targets_;
 }
 
-void writeFileAtomically(const fs::path& target,
-                         const std::function<void(const fs::path&)>& write) {
+void writeFileAtomically(const fs::path& target, const std::function<void(ByteSink&)>& write) {
   OutputSet set;
   set.stage(target, write);
   set.commit();

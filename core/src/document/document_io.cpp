@@ -1,5 +1,7 @@
 #include "octaclay/core/document/document_io.h"
 
+#include "detail/exr_memory_stream.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -228,7 +230,9 @@ void writeDocument(const Document& document, const fs::path& path) {
   const int n = document.size();
   requireValidSize(n);
   const int side = n + 1;
-  writeFileAtomically(path, [&](const fs::path& temp) {
+  // The file is built in memory, then written whole by the one checked writer.
+  std::vector<std::uint8_t> bytes;
+  {
     Imf::Header header(side, side);
     // ZIP level 1: most of ZIP's gain on float positions for a fraction of its time.
     // RLE up to N = 2048: unpainted layers shrink to nothing and saving stays near raw speed
@@ -259,23 +263,15 @@ void writeDocument(const Document& document, const fs::path& path) {
     for (std::size_t k = 0; k < layers.size(); ++k)
       addLayerSlices(frame, window, *layers[k], side, halves[k]);
 
-    // OutputFile writes its offset table in its destructor and swallows errors there, so the
-    // stream is ours and its state is checked after the file is gone.
-    std::ofstream stream(temp, std::ios::binary | std::ios::trunc);
-    if (!stream) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": cannot open it");
+    detail::ExrMemoryStream stream;
     {
-      Imf::StdOFStream exrStream(stream, temp.c_str());
-      Imf::OutputFile file(exrStream, header, exrThreads(header.compression()));
+      Imf::OutputFile file(stream, header, exrThreads(header.compression()));
       file.setFrameBuffer(frame);
       file.writePixels(side);
     }
-    stream.flush();
-    stream.close();
-    if (stream.fail())
-      throw Error(ErrorKind::Io, "cannot write " + path.string() +
-                                     ": the disk refused the last "
-                                     "bytes (full, or over a size limit)");
-  });
+    bytes = std::move(stream.bytes());
+  }
+  writeBytesAtomically(path, bytes);
 }
 
 } // namespace octaclay::core

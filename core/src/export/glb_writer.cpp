@@ -11,7 +11,7 @@
 
 #include <tiny_gltf.h>
 
-#include <fstream>
+#include <sstream>
 
 namespace octaclay::core::detail {
 namespace fs = std::filesystem;
@@ -135,14 +135,12 @@ tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textur
 void writeGlbFile(const GlbMesh& mesh, std::span<const GlbTexture> textures,
                   const GlbMaterial& material, const fs::path& path, OutputSet& set) {
   const tinygltf::Model model = glbModel(mesh, textures, material);
-  set.stage(path, [&](const fs::path& temporary) {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw Error(ErrorKind::Io, "cannot open " + path.string() + " for writing");
-    tinygltf::TinyGLTF writer;
-    const bool ok = writer.WriteGltfSceneToStream(&model, out, false, true);
-    out.close();
-    if (!ok || !out) throw Error(ErrorKind::Io, "cannot write " + path.string());
-  });
+  // tinygltf writes to a stream: a memory one, handed whole to the one checked writer.
+  std::ostringstream out(std::ios::binary);
+  tinygltf::TinyGLTF writer;
+  if (!writer.WriteGltfSceneToStream(&model, out, false, true))
+    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the glTF writer failed");
+  set.stageText(path, out.view());
 }
 
 } // namespace octaclay::core::detail

@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
+#include <sstream>
 
 namespace octaclay::core {
 namespace fs = std::filesystem;
@@ -75,17 +75,12 @@ void stageMesh(const TriangleMesh& mesh, const fs::path& path, OutputSet& set) {
                                             : *format == MeshFormat::Stl ? "stl"
                                             : *format == MeshFormat::Obj ? "obj"
                                                                          : "off");
-  set.stage(path, [&](const fs::path& temp) {
-    // Our stream, not OpenMesh's: OpenMesh reports success when the disk refused the bytes.
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": cannot open it");
-    if (!OpenMesh::IO::write_mesh(om, out, ext, options, kFloatDigits))
-      throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the mesh writer failed");
-    out.close();
-    if (out.fail())
-      throw Error(ErrorKind::Io, "cannot write " + path.string() +
-                                     ": the disk refused the data (full, or over a size limit)");
-  });
+  // OpenMesh writes to a stream: a memory one, handed whole to the one checked writer (OpenMesh
+  // itself reports success when the disk refused the bytes).
+  std::ostringstream out(std::ios::binary);
+  if (!OpenMesh::IO::write_mesh(om, out, ext, options, kFloatDigits))
+    throw Error(ErrorKind::Io, "cannot write " + path.string() + ": the mesh writer failed");
+  set.stageText(path, out.view());
 }
 
 void writeMesh(const TriangleMesh& mesh, const fs::path& path) {

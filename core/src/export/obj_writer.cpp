@@ -1,5 +1,6 @@
 // The exports' OBJ writer: text through to_chars (shortest round-trip form, so positions are
-// exact), flushed in large blocks so that multi-gigabyte OBJs need no second copy in memory.
+// exact), handed to the one checked writer in large blocks so that multi-gigabyte OBJs need no
+// second copy in memory.
 
 #include "export/obj_writer.h"
 
@@ -7,7 +8,6 @@
 #include "octaclay/core/error.h"
 
 #include <charconv>
-#include <fstream>
 #include <string_view>
 #include <system_error>
 
@@ -18,12 +18,7 @@ namespace {
 
 class TextWriter {
 public:
-  // Writes to `path`; errors name `shown` (the file the user asked for, not its temporary).
-  TextWriter(const fs::path& path, const fs::path& shown)
-      : out_(path, std::ios::binary), shown_(shown) {
-    if (!out_) throw Error(ErrorKind::Io, "cannot open " + shown_.string() + " for writing");
-    buffer_.reserve(kBlock + 256);
-  }
+  explicit TextWriter(ByteSink& out) : out_(out) { buffer_.reserve(kBlock + 256); }
   TextWriter& text(std::string_view s) {
     buffer_.append(s);
     return *this;
@@ -44,29 +39,21 @@ public:
     buffer_.push_back('\n');
     if (buffer_.size() >= kBlock) flush();
   }
-  void finish() {
-    flush();
-    out_.close();
-    if (!out_) throw Error(ErrorKind::Io, "cannot write " + shown_.string() + " (disk full?)");
+  void flush() {
+    out_.write(buffer_);
+    buffer_.clear();
   }
 
 private:
   static constexpr std::size_t kBlock = std::size_t{1} << 22;
-  void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-    if (!out_) throw Error(ErrorKind::Io, "cannot write " + shown_.string() + " (disk full?)");
-  }
-  std::ofstream out_;
-  fs::path shown_;
+  ByteSink& out_;
   std::string buffer_;
 };
 
-void writeObjText(const ObjMesh& mesh, const ObjHeader& header, const fs::path& path,
-                  const fs::path& shown) {
+void writeObjText(const ObjMesh& mesh, const ObjHeader& header, ByteSink& out) {
   const auto& uvTriangles =
       mesh.texcoordTriangles.empty() ? mesh.triangles : mesh.texcoordTriangles;
-  TextWriter w(path, shown);
+  TextWriter w(out);
   w.text("# ").text(header.comment).endLine();
   w.text("mtllib ").text(header.materialLibrary).endLine();
   for (const Vec3f& p : mesh.positions)
@@ -85,7 +72,7 @@ void writeObjText(const ObjMesh& mesh, const ObjHeader& header, const fs::path& 
     }
     w.endLine();
   }
-  w.finish();
+  w.flush();
 }
 
 } // namespace
@@ -101,8 +88,7 @@ void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
   for (const ObjMap& map : maps)
     set.stageBytes(map.path, map.bytes);
   set.stageText(mtlPath, mtl);
-  set.stage(objPath,
-            [&](const fs::path& temporary) { writeObjText(mesh, header, temporary, objPath); });
+  set.stage(objPath, [&](ByteSink& out) { writeObjText(mesh, header, out); });
 }
 
 } // namespace octaclay::core::detail

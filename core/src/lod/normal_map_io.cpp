@@ -1,6 +1,7 @@
 // Normal maps on disk: 8-bit PNG through OpenCV (what every viewer reads) or float32 EXR through
 // OpenEXR (no quantisation, for offline renderers and tests).
 
+#include "detail/exr_memory_stream.h"
 #include "lod/normal_map_encoding.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -12,12 +13,10 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
-#include <ImfStdIO.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
 namespace octaclay::core {
@@ -60,8 +59,7 @@ std::vector<unsigned char> encodeNormalMapPng(const NormalMap& map) {
 
 namespace {
 
-void writeExr(const NormalMap& map, const std::filesystem::path& temporary,
-              const std::filesystem::path& shown) {
+std::vector<std::uint8_t> encodeExr(const NormalMap& map) {
   const int r = map.resolution;
   Imf::Header header(r, r);
   header.compression() = Imf::ZIP_COMPRESSION;
@@ -73,19 +71,13 @@ void writeExr(const NormalMap& map, const std::filesystem::path& temporary,
   frame.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
   frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
   frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
-  // OutputFile writes its offset table in its destructor and swallows errors there, so the
-  // stream is ours and its state is checked after the file is gone.
-  std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
+  detail::ExrMemoryStream stream;
   {
-    Imf::StdOFStream exrStream(stream, temporary.c_str());
-    Imf::OutputFile file(exrStream, header);
+    Imf::OutputFile file(stream, header);
     file.setFrameBuffer(frame);
     file.writePixels(r);
   }
-  stream.close();
-  if (stream.fail())
-    throw Error(ErrorKind::Io, "cannot write " + shown.string() +
-                                   ": the disk refused the data (full, or over a size limit)");
+  return std::move(stream.bytes());
 }
 
 } // namespace
@@ -96,15 +88,7 @@ void stageNormalMap(const NormalMap& map, const std::filesystem::path& path, Out
   if (ext == ".png") {
     set.stageBytes(path, detail::encodeNormalMapPng(map));
   } else if (ext == ".exr") {
-    set.stage(path, [&](const std::filesystem::path& temporary) {
-      try {
-        writeExr(map, temporary, path);
-      } catch (const Error&) {
-        throw;
-      } catch (const std::exception& e) {
-        throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + e.what());
-      }
-    });
+    set.stageBytes(path, encodeExr(map));
   } else {
     throw Error(ErrorKind::InvalidArgument, "cannot write a normal map to " + path.string() +
                                                 ": use .png (8-bit) or .exr (float)");

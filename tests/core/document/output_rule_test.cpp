@@ -73,7 +73,7 @@ void OutputRuleTest::aFailedStageKeepsThePreviousSet() {
   try {
     core::OutputSet set;
     set.stageText(file("m.mtl").toStdString(), "new mtl");
-    set.stage(file("m.obj").toStdString(), [](const std::filesystem::path&) {
+    set.stage(file("m.obj").toStdString(), [](core::ByteSink&) {
       throw core::Error(core::ErrorKind::Io, "cannot write m.obj: disk full");
     });
     set.commit();

@@ -3,7 +3,9 @@
 // The one output rule (DESIGN.md, "Rules every output follows"): every file a command or the
 // modeller writes is staged as a temporary beside its target (`.stem.tmp-PID-N.ext`), written
 // with every write and close checked, fsynced, and renamed into place only when every file of
-// its set was staged; a failure leaves the previous files whole and no temporary behind.
+// its set was staged; a failure leaves the previous files whole and no temporary behind. Writers
+// only produce bytes (into a ByteSink, or in memory first: EXR, glTF, OpenMesh formats); no
+// other code opens an output file.
 
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +15,20 @@
 #include <vector>
 
 namespace octaclay::core {
+
+/// Where a staged file's bytes go: the one checked writer. Every write and the close are checked;
+/// a failure throws Error(Io) naming the user's target and the reason (disk full, a size limit).
+class ByteSink {
+public:
+  void write(std::span<const std::uint8_t> bytes);
+  void write(std::string_view text);
+
+private:
+  friend class OutputSet;
+  ByteSink(int fd, const std::filesystem::path& shown) : fd_(fd), shown_(shown) {}
+  int fd_;
+  const std::filesystem::path& shown_;
+};
 
 /// Files written as a set: each stage() writes one temporary now; commit() renames them all into
 /// place, holding an flock on each target folder so that two concurrent sets to the same place
@@ -27,11 +43,10 @@ public:
   ~OutputSet();
 
   /// Checks the target (requireWritableTarget), removes stale temporaries of dead runs beside it,
-  /// creates a fresh temporary and calls write(temporary); write must report a failed write or
-  /// close by throwing. The temporary is then fsynced. On failure the temporary is removed and
+  /// creates a fresh temporary and calls write(sink) to fill it (in one go or in chunks); the
+  /// temporary is then closed, checked and fsynced. On failure the temporary is removed and
   /// Error(Io) names `target` and the reason (write's own core::Error passes through).
-  void stage(const std::filesystem::path& target,
-             const std::function<void(const std::filesystem::path& temporary)>& write);
+  void stage(const std::filesystem::path& target, const std::function<void(ByteSink&)>& write);
   void stageBytes(const std::filesystem::path& target, std::span<const std::uint8_t> bytes);
   void stageText(const std::filesystem::path& target, std::string_view text);
 
@@ -54,17 +69,12 @@ private:
 
 /// A one-file set: stage(target, write), then commit().
 void writeFileAtomically(const std::filesystem::path& target,
-                         const std::function<void(const std::filesystem::path& temporary)>& write);
+                         const std::function<void(ByteSink&)>& write);
 void writeBytesAtomically(const std::filesystem::path& target, std::span<const std::uint8_t> bytes);
 
 /// Throws Error(InvalidArgument) for an empty path, Error(Io) when the target's folder does not
 /// exist, or the target exists and is not a regular file (a folder, device, FIFO or socket: such
 /// a target is refused, never replaced).
 void requireWritableTarget(const std::filesystem::path& target);
-
-/// Writes `bytes` to `path` (created or truncated), checking every write and the close; errors
-/// name `shown` (the user's target, not the temporary) and the reason. For stage()'s callbacks.
-void writeBytesToFile(const std::filesystem::path& path, std::span<const std::uint8_t> bytes,
-                      const std::filesystem::path& shown);
 
 } // namespace octaclay::core
