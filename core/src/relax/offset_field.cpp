@@ -408,58 +408,24 @@ void resampleTexel(const Document& from, const OffsetField& field, EditLayer lay
 
 void resampleDocument(const Document& from, const OffsetField& field, Document& to) {
   const int n = field.n;
-  const GeometryImage& image = from.positions;
-  auto blendLayer = [n](const Layer& source, Layer& target, const GridPoint& p, std::size_t t) {
-    if (source.uniform()) return;
-    const std::size_t ch = static_cast<std::size_t>(source.channels);
-    for (std::size_t c = 0; c < ch; ++c) {
-      float v = 0;
-      for (std::size_t k = 0; k < 3; ++k)
-        v += source.texels[(static_cast<std::size_t>(p.corners[k].j) * std::size_t(n + 1) +
-                            static_cast<std::size_t>(p.corners[k].i)) *
-                               ch +
-                           c] *
-             p.weights[k];
-      target.texels[t * ch + c] = v;
-    }
-  };
-  auto copyTexel = [](const Layer& source, Layer& target, std::size_t at, std::size_t t) {
-    if (source.uniform()) return;
-    const std::size_t ch = static_cast<std::size_t>(source.channels);
-    for (std::size_t c = 0; c < ch; ++c)
-      target.texels[t * ch + c] = source.texels[at * ch + c];
-  };
+  std::vector<std::pair<EditLayer, float*>> layers{
+      {EditLayer::Positions, &to.positions.texels()[0].x}};
+  // A uniform layer resamples to its own fill: it stays uniform.
+  if (!from.diffuse.uniform()) layers.emplace_back(EditLayer::Diffuse, to.diffuse.texels.data());
+  if (!from.feature.uniform()) layers.emplace_back(EditLayer::Feature, to.feature.texels.data());
+  if (from.hasMask && !from.mask.uniform())
+    layers.emplace_back(EditLayer::Mask, to.mask.texels.data());
   parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
       for (int i = 0; i <= n; ++i) {
         const std::size_t t = field.index(i, j);
-        const auto& d = field.offset[t];
-        if (d[0] == 0.0f && d[1] == 0.0f) continue; // not moved: keeps its texels
-        const Sample c = canonical(n, {i, j});
-        if (!(c == Sample{i, j})) continue; // copies take the canonical sample's texels below
-        const GridPoint p = locateGridPoint(n, double(i) + d[0], double(j) + d[1]);
-        Vec4f x{0, 0, 0, 0};
-        for (std::size_t k = 0; k < 3; ++k) {
-          const Vec4f& s = image.at(p.corners[k]);
-          x = Vec4f{x.x + s.x * p.weights[k], x.y + s.y * p.weights[k], x.z + s.z * p.weights[k],
-                    x.w + s.w * p.weights[k]};
+        if (field.offset[t][0] == 0.0f && field.offset[t][1] == 0.0f) continue; // keeps its bits
+        for (const auto& [layer, texels] : layers) {
+          const std::size_t channels = static_cast<std::size_t>(editLayerChannels(layer));
+          resampleTexel(from, field, layer, i, j, texels + t * channels);
         }
-        to.positions.at(i, j) = x;
-        blendLayer(from.diffuse, to.diffuse, p, t);
-        blendLayer(from.feature, to.feature, p, t);
-        if (from.hasMask) blendLayer(from.mask, to.mask, p, t);
       }
   });
-  for (int s = 0; s <= n; ++s) // identified samples: one vertex, bit-equal copies
-    for (Sample b : {Sample{s, 0}, Sample{s, n}, Sample{0, s}, Sample{n, s}}) {
-      const Sample c = canonical(n, b);
-      if (c == b) continue;
-      const std::size_t source = field.index(c.i, c.j), t = field.index(b.i, b.j);
-      to.positions.at(b) = to.positions.at(c);
-      copyTexel(to.diffuse, to.diffuse, source, t);
-      copyTexel(to.feature, to.feature, source, t);
-      if (to.hasMask) copyTexel(to.mask, to.mask, source, t);
-    }
 }
 
 } // namespace octaclay::core::detail

@@ -44,8 +44,9 @@ bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterat
 void resampleTexel(const Document& from, const OffsetField& field, EditLayer layer, int i, int j,
                    float* out);
 
-/// The document resampled at the field's parameter points: samples that did not move keep
-/// their texels bit for bit; identified samples stay bit-equal.
+/// Writes into `to` (a copy of `from`) every layer resampled at the field's parameter points
+/// (resampleTexel for each moved sample): samples that did not move keep their texels bit for
+/// bit; identified samples stay bit-equal.
 void resampleDocument(const Document& from, const OffsetField& field, Document& to);
 
 } // namespace octaclay::core::detail
