@@ -338,7 +338,8 @@ private:
       fail(field + (p.contains("min") ? ".min" : ".max"),
            "min " + formatNumber(min) + " is greater than max " + formatNumber(max));
     const double step = read("step", isInt ? 1.0 : (max > min ? (max - min) / 100.0 : 0.01));
-    if (!(step > 0.0)) fail(field + ".step", "must be greater than 0, got " + formatNumber(step));
+    if (!(static_cast<float>(step) > 0.0f))
+      fail(field + ".step", "must be greater than 0, got " + formatNumber(step));
     const double value = read("default", std::clamp(0.0, min, max));
     if (value < min || value > max)
       fail(field + ".default", formatNumber(value) + " is outside [" + formatNumber(min) + ", " +

@@ -256,6 +256,8 @@ double ManifestReader::number(const json& value, const std::string& field) const
   const double v = value.get<double>();
   if (!std::isfinite(static_cast<float>(v)))
     fail(field, formatNumber(v) + " is too large for a float");
+  if (v != 0.0 && static_cast<float>(v) == 0.0f)
+    fail(field, formatNumber(v) + " is too small for a float (it would be 0)");
   return v;
 }
 

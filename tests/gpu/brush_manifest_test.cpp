@@ -456,6 +456,11 @@ void BrushManifestTest::badManifestIsRefused_data() {
       "parameters[0].default: expected an integer, got 2.5");
   row("zero step", withParameters(R"([{"id": "height", "type": "float", "step": 0}])"),
       "parameters[0].step: must be greater than 0, got 0");
+  row("step a float rounds to 0",
+      withParameters(R"([{"id": "height", "type": "float", "step": 1e-300}])"),
+      "parameters[0].step: 1e-300 is too small for a float (it would be 0)");
+  row("max beyond a float", withParameters(R"([{"id": "height", "type": "float", "max": 1e39}])"),
+      "parameters[0].max: 1e+39 is too large for a float");
   row("bool default a number", withParameters(R"([{"id": "on", "type": "bool", "default": 1}])"),
       "parameters[0].default: expected true or false, got 1");
   row("bool with min", withParameters(R"([{"id": "on", "type": "bool", "min": 0}])"),
