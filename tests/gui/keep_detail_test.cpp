@@ -5,7 +5,9 @@
 #include "sculpt_session.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/stretch.h"
+#include "octaclay/core/measure/surface_distance.h"
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
@@ -28,6 +30,7 @@ private slots:
   void initTestCase();
   void clicksKeepTheirDetailAndUndoBitExactly();
   void offLeavesTheSamplesWhereTheBrushPutThem();
+  void theIssuesLimbStaysWithinTolerance();
 
 private:
   // Pulls at the pole (the image centre) with `clicks` one-dab strokes; returns the limb's
@@ -94,6 +97,51 @@ void KeepDetailTest::offLeavesTheSamplesWhereTheBrushPutThem() {
   int relaxed = 0;
   pull(false, 3, &relaxed);
   QCOMPARE(relaxed, 0);
+}
+
+// Issue 21's scenario: 15 one-dab strokes at N = 256 (radius 0.06 of the diagonal, strength 1,
+// as `octaclay-cli stroke --path "0.5,0.5;0.5,0.5"` makes them). Every relaxation stays within
+// the issue's surface tolerance of what its stroke left, and the limb keeps its detail.
+void KeepDetailTest::theIssuesLimbStaysWithinTolerance() {
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(*catalog_.find("push"));
+  session.setKeepDetail(true);
+  session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 256)));
+  double worstRms = 0, worstHausdorff = 0;
+  int relaxed = 0;
+  for (int i = 0; i < 15; ++i) {
+    gpu::StrokeSettings s;
+    s.brush = "push";
+    s.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
+    s.radius = 0.06f * session.gpuDocument().bounds().diagonal();
+    s.strength = 1.0f;
+    s.spacing = 1.0f;
+    session.strokeAlongPath(*catalog_.find("push"), s);
+    if (session.lastRelaxation().tiles.empty()) continue;
+    ++relaxed;
+    core::Document stroked = session.document();
+    const core::TileApplier apply = core::applierFor(stroked);
+    for (const core::TileChange& t : session.lastRelaxation().tiles)
+      t.apply(core::TileState::Before, apply);
+    const core::SurfaceDistance d = core::compareSurfaces(
+        core::extractMesh(stroked.positions), core::extractMesh(session.document().positions),
+        {.samplesPerSurface = 200'000});
+    worstRms = std::max(worstRms, d.rms);
+    worstHausdorff = std::max(worstHausdorff, d.hausdorff);
+  }
+  const core::RegionSampling limb = core::regionSampling(
+      session.document().positions, [](const core::Vec3f& p) { return core::length(p) > 1.5f; });
+  const double longest = core::summarizeStretch(session.document().positions).longestOverMedian;
+  qInfo("%d of 15 strokes relaxed; worst relaxation RMS %.4f %%, Hausdorff %.3f %% of the "
+        "diagonal; limb fair share %.2f, spacing %.2fx the body's, longest edge %.1fx",
+        relaxed, 100 * worstRms, 100 * worstHausdorff, limb.fairShare, limb.spacingRatio, longest);
+  QVERIFY(relaxed > 0);
+  QVERIFY(worstRms <= 1e-4);
+  QVERIFY(worstHausdorff <= 1e-3);
+  QVERIFY(limb.fairShare >= 0.3);
+  QVERIFY(limb.spacingRatio <= 2.0);
+  QVERIFY(longest <= 16.0);
 }
 
 QTEST_GUILESS_MAIN(KeepDetailTest)

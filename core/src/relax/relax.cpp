@@ -42,6 +42,8 @@ TexelRect clipped(TexelRect r, int n) {
 // (the even-out's, and keep-detail's, whose reservoir is bounded and pinned at its rim): the
 // surface they leave keeps its resolution.
 constexpr float kStretchedEdge = 2.0f;
+constexpr float kCoarseStretchedEdge = 1.5f;
+constexpr float kLongEdge = 0.003f;
 constexpr float kEvenOutDonorEdge = 3.0f;
 constexpr float kKeepDetailDonorEdge = 5.0f;
 
@@ -63,6 +65,27 @@ float medianEdge(const GeometryImage& image) {
   std::nth_element(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2),
                    edges.end());
   return edges[edges.size() / 2];
+}
+
+// The bounding box's diagonal, from every 4th sample.
+float diagonal(const GeometryImage& image) {
+  const int n = image.size();
+  Vec3f lo = image.at(0, 0).xyz(), hi = lo;
+  for (int j = 0; j <= n; j += 4)
+    for (int i = 0; i <= n; i += 4) {
+      const Vec3f p = image.at(i, j).xyz();
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  return length(hi - lo);
+}
+
+// Keep-detail relaxes edges over kStretchedEdge times the median, and at coarse N (long median
+// edges) from kCoarseStretchedEdge times: a long edge's facet cuts across the surface the
+// relaxation resamples, so it is relaxed before it is longer than kLongEdge of the diagonal.
+float stretchedEdgeLimit(const GeometryImage& image, float median) {
+  return std::clamp(kLongEdge * diagonal(image), kCoarseStretchedEdge * median,
+                    kStretchedEdge * median);
 }
 
 bool stretchedInside(const GeometryImage& image, TexelRect r, float limit) {
@@ -151,7 +174,7 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   const int n = document.size(), side = n + 1;
   detail::OffsetField field(n);
   const float median = medianEdge(document.positions);
-  const float limit = kStretchedEdge * median;
+  const float limit = stretchedEdgeLimit(document.positions, median);
   std::vector<TexelRect> extents;
   for (const TexelRect& r : regions)
     if (r.width > 0 && r.height > 0 && stretchedInside(document.positions, clipped(r, n), limit))
