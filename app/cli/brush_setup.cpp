@@ -1,12 +1,14 @@
 #include "brush_setup.h"
 
+#include "data_folders.h"
+
 #include <cstdlib>
 
 namespace octaclay::app {
 
 std::filesystem::path builtInBrushFolder() {
   if (const char* folder = std::getenv("OCTACLAY_BUILTIN_BRUSHES")) return folder;
-  return OCTACLAY_SOURCE_BRUSHES;
+  return builtInBrushes();
 }
 
 gpu::BrushCatalog scanBrushes() {
@@ -17,7 +19,7 @@ gpu::BrushCatalog scanBrushes() {
 
 std::filesystem::path builtInMaterialFolder() {
   if (const char* folder = std::getenv("OCTACLAY_BUILTIN_MATERIALS")) return folder;
-  return OCTACLAY_SOURCE_MATERIALS;
+  return resourceFolder() / "materials";
 }
 
 gpu::MaterialCatalog scanMaterials() {

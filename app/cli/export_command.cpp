@@ -171,8 +171,9 @@ Command addExportCommand(CLI::App& app) {
                                      static_cast<std::size_t>(opt->triangles), opt->output,
                                      opt->normalMap, opt->json);
             }
-            // vertices and triangles describe the surface (welded, as info counts them); the
-            // textured formats store (M+1)^2 samples, seam samples twice with their own texcoords.
+            // vertices and triangles describe the surface (welded, as info counts them); the OBJ
+            // writes each once (its seams split only `vt`), the GLB stores (M+1)^2 samples, seam
+            // samples twice with their own texture coordinates.
             const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
             std::size_t vertices = mm + 2, triangles = 2 * mm, fileVertices = vertices;
             core::OutputSet set;
@@ -182,7 +183,6 @@ Command addExportCommand(CLI::App& app) {
               core::stageTexturedObj(document, n / m, opt->output, set);
               for (const std::filesystem::path& path : core::texturedObjFiles(opt->output))
                 files.push_back(path.string());
-              fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
               break;
             case ExportKind::Glb:
               core::stageGlb(document, n / m, opt->output, set);

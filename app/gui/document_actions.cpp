@@ -241,24 +241,27 @@ bool DocumentActions::exportLod(const QString& path) {
       m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
   if (salient) parts_.viewport->setSaliencyWanted(true);
   const bool computeSaliency = salient && !parts_.viewport->saliencyCurrent();
-  auto snapshot = std::make_shared<core::GeometryImage>(parts_.viewport->document().positions);
+  // The whole document: the LOD carries the paint as File ▸ Export Mesh does.
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
   const core::LodOptions options = parts_.lodPanel->lodOptions();
   auto control = std::make_shared<TaskControl>();
   const QString error = runner_.run(
       tr("Exporting %1…").arg(QFileInfo(path).fileName()),
       [snapshot, options, path, control, computeSaliency] {
-        if (computeSaliency) core::computeSaliency(*snapshot);
-        const core::LodMesh lod = core::generateLod(*snapshot, options);
+        core::GeometryImage& full = snapshot->positions;
+        if (computeSaliency) core::computeSaliency(full);
+        const core::LodMesh lod = core::generateLod(full, options);
         control->fraction = 0.3f;
         if (control->cancel) return; // between steps: nothing written yet
         // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
-        // the LOD's triangles dropped.
-        const int resolution = std::clamp(snapshot->size(), 2, 4096);
+        // the LOD's triangles dropped. Tangent space is what glTF's normalTexture and the OBJ
+        // readers' `norm` / `map_Bump` expect.
+        const int resolution = std::clamp(full.size(), 2, 4096);
         const core::NormalMap map =
-            core::bakeNormalMap(*snapshot, lod, core::NormalMapSpace::Object, resolution);
+            core::bakeNormalMap(full, lod, core::NormalMapSpace::Tangent, resolution);
         control->fraction = 0.8f;
         if (control->cancel) return;
-        core::writeLodMesh(lod, map, toPath(path));
+        core::writeLodMesh(lod, map, *snapshot, toPath(path));
         control->fraction = 1.0f;
       },
       control);

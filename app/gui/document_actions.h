@@ -54,8 +54,9 @@ public:
   bool importMesh(const QString& path, int n);
   /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
   bool exportMesh(const QString& path, int divisor);
-  /// Writes the Level of detail dock's LOD of the current surface (OBJ + MTL or GLB) with an
-  /// object-space normal map baked from the full resolution.
+  /// Writes the Level of detail dock's LOD of the current surface (OBJ + MTL or GLB) with the
+  /// painted layers, as exportMesh writes them, and a tangent-space normal map baked from the
+  /// full resolution (glTF's normalTexture).
   bool exportLod(const QString& path);
 
   QString currentPath() const { return path_; }

@@ -111,8 +111,8 @@ QWidget* LodPanel::buildAutomaticLod() {
   errorLabel_->setWordWrap(true);
   exportButton_ = new QPushButton(tr("Export…"));
   exportButton_->setObjectName(QStringLiteral("exportLod"));
-  exportButton_->setToolTip(tr("Write the LOD as OBJ or GLB with a normal map baked from the full "
-                               "resolution"));
+  exportButton_->setToolTip(tr("Write the LOD as OBJ or GLB with its paint and a normal map baked "
+                               "from the full resolution"));
   connect(exportButton_, &QPushButton::clicked, this, &LodPanel::exportRequested);
 
   auto* form = new QFormLayout;

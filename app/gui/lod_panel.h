@@ -27,7 +27,8 @@ namespace octaclay::app {
 /// average, salient average, salient point), the triangle target, what the viewport shows (the
 /// full resolution, the LOD, or both side by side; the LOD is regenerated live while it is
 /// shown), the LOD's triangles and generation time, its error against the full resolution
-/// (RMS, Hausdorff, PSNR) and Export… (the LOD with a baked normal map). GUI thread.
+/// (RMS, Hausdorff, PSNR) and Export… (the LOD with its paint and a baked normal map). GUI
+/// thread.
 class LodPanel : public QWidget {
   Q_OBJECT
 

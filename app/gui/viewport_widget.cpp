@@ -2,6 +2,7 @@
 
 #include "camera_control.h"
 #include "current_context.h"
+#include "data_folders.h"
 #include "model_prop.h"
 
 #include "octaclay/core/document/image_io.h"
@@ -124,19 +125,17 @@ void ViewportWidget::initializeGL() {
   renderWindow_->OpenGLInitContext();
   try {
     context_ = std::make_unique<gpu::GlContext>(gpu::GlContext::adoptCurrent());
-    library_ = std::make_unique<gpu::BrushLibrary>(
-        gpu::BrushCatalog::defaultSearchPath(OCTACLAY_SOURCE_BRUSHES));
+    library_ =
+        std::make_unique<gpu::BrushLibrary>(gpu::BrushCatalog::defaultSearchPath(builtInBrushes()));
     model_ = std::make_unique<gpu::ModelRenderer>();
     const QString renderer = QString::fromLatin1(
         reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER)));
     saliency_.setOnCpu(renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
                        renderer.contains("SwiftShader"));
-    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(
-        std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "materials"));
+    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(resourceFolder() / "materials"));
     library_->engine().setMaterials(materials_);
     try {
-      model_->setEnvironment(core::readImage(
-          std::filesystem::path(OCTACLAY_SOURCE_RESOURCES) / "environment/studio.png", 3));
+      model_->setEnvironment(core::readImage(resourceFolder() / "environment/studio.png", 3));
     } catch (const core::Error& e) { // reflective paint then shows no reflection, nothing more
       materialErrors_ << QStringLiteral("environment map: %1").arg(e.what());
     }

@@ -1,5 +1,7 @@
 #include "octaclay/core/export/mesh_io.h"
 
+#include "export/obj_writer.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
@@ -67,13 +69,21 @@ void stageMesh(const TriangleMesh& mesh, const fs::path& path, OutputSet& set) {
                 "cannot write " + path.string() +
                     ": unknown mesh format; use .obj, .ply, .stl or .off");
   silenceOpenMesh();
-  const OpenMeshTriMesh om = toOpenMesh(mesh);
+  const OpenMeshTriMesh om = toOpenMesh(mesh); // also refuses non-manifold triangles
+  if (*format == MeshFormat::Obj) {            // the exports' one OBJ writer, streamed
+    detail::stageObj({mesh.positions, {}, {}, mesh.triangles, {}},
+                     {"Octaclay mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
+                          std::to_string(mesh.triangles.size()) + " triangles",
+                      {},
+                      {}},
+                     path, set);
+    return;
+  }
   OpenMesh::IO::Options options;
   if (*format == MeshFormat::Ply || *format == MeshFormat::Stl)
     options += OpenMesh::IO::Options::Binary;
   const std::string ext = "." + std::string(*format == MeshFormat::Ply   ? "ply"
                                             : *format == MeshFormat::Stl ? "stl"
-                                            : *format == MeshFormat::Obj ? "obj"
                                                                          : "off");
   // OpenMesh writes to a stream: a memory one, handed whole to the one checked writer (OpenMesh
   // itself reports success when the disk refused the bytes).

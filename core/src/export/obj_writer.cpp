@@ -1,4 +1,4 @@
-// The exports' OBJ writer: text through to_chars (shortest round-trip form, so positions are
+// The exports' one OBJ writer: text through to_chars (shortest round-trip form, so positions are
 // exact), handed to the one checked writer in large blocks so that multi-gigabyte OBJs need no
 // second copy in memory.
 
@@ -53,38 +53,63 @@ private:
 void writeObjText(const ObjMesh& mesh, const ObjHeader& header, ByteSink& out) {
   const auto& uvTriangles =
       mesh.texcoordTriangles.empty() ? mesh.triangles : mesh.texcoordTriangles;
+  const bool uvs = !mesh.texcoords.empty(), normals = !mesh.normals.empty();
+  const bool material = !header.materialLibrary.empty();
   TextWriter w(out);
   w.text("# ").text(header.comment).endLine();
-  w.text("mtllib ").text(header.materialLibrary).endLine();
+  if (material) w.text("mtllib ").text(header.materialLibrary).endLine();
   for (const Vec3f& p : mesh.positions)
     w.text("v ").number(p.x).text(" ").number(p.y).text(" ").number(p.z).endLine();
   for (const Vec2f& uv : mesh.texcoords)
     w.text("vt ").number(uv.x).text(" ").number(uv.y).endLine();
   for (const Vec3f& n : mesh.normals)
     w.text("vn ").number(n.x).text(" ").number(n.y).text(" ").number(n.z).endLine();
-  w.text("usemtl ").text(header.material).endLine();
+  if (material) w.text("usemtl ").text(header.material).endLine();
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     w.text("f");
     for (std::size_t c = 0; c < 3; ++c) {
       const std::uint64_t v = std::uint64_t{mesh.triangles[t][c]} + 1; // OBJ counts from 1
-      const std::uint64_t vt = std::uint64_t{uvTriangles[t][c]} + 1;
-      w.text(" ").number(v).text("/").number(vt).text("/").number(v);
+      w.text(" ").number(v);
+      if (uvs) w.text("/").number(std::uint64_t{uvTriangles[t][c]} + 1);
+      if (normals) w.text(uvs ? "/" : "//").number(v);
     }
     w.endLine();
   }
   w.flush();
 }
 
+bool indicesBelow(std::span<const std::array<std::uint32_t, 3>> triangles, std::size_t count) {
+  for (const auto& t : triangles)
+    if (t[0] >= count || t[1] >= count || t[2] >= count) return false;
+  return true;
+}
+
+void requireConsistent(const ObjMesh& mesh, const fs::path& objPath) {
+  const bool uvTriangles = !mesh.texcoordTriangles.empty();
+  if ((uvTriangles && mesh.texcoordTriangles.size() != mesh.triangles.size()) ||
+      (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) ||
+      (!uvTriangles && !mesh.texcoords.empty() && mesh.texcoords.size() != mesh.positions.size()))
+    throw Error(ErrorKind::InvalidArgument,
+                "cannot write " + objPath.string() +
+                    ": the OBJ's triangles, normals or texture coordinates disagree in count");
+  if (!indicesBelow(mesh.triangles, mesh.positions.size()) ||
+      (uvTriangles && !indicesBelow(mesh.texcoordTriangles, mesh.texcoords.size())))
+    throw Error(ErrorKind::InvalidArgument, "cannot write " + objPath.string() +
+                                                ": a triangle names a vertex that is not there");
+}
+
 } // namespace
+
+void stageObj(const ObjMesh& mesh, const ObjHeader& header, const fs::path& objPath,
+              OutputSet& set) {
+  requireConsistent(mesh, objPath);
+  set.stage(objPath, [&](ByteSink& out) { writeObjText(mesh, header, out); });
+}
 
 void writeObjWithMaterial(const ObjMesh& mesh, const ObjHeader& header,
                           std::span<const ObjMap> maps, const std::string& mtl,
                           const fs::path& mtlPath, const fs::path& objPath, OutputSet& set) {
-  if ((!mesh.texcoordTriangles.empty() && mesh.texcoordTriangles.size() != mesh.triangles.size()) ||
-      mesh.normals.size() != mesh.positions.size())
-    throw Error(ErrorKind::InvalidArgument,
-                "cannot write " + objPath.string() +
-                    ": the OBJ's triangles or normals disagree in count");
+  requireConsistent(mesh, objPath); // before any file is staged
   for (const ObjMap& map : maps)
     set.stageBytes(map.path, map.bytes);
   set.stageText(mtlPath, mtl);

@@ -1,5 +1,7 @@
-// Textured OBJ and binary glTF export: the unwelded sample grid with texture coordinates at the
-// layer texels' centres, and the layers as PNG maps (DESIGN.md, "The geometry image").
+// Textured OBJ and binary glTF export: the sample grid with texture coordinates at the layer
+// texels' centres, and the layers as PNG maps (DESIGN.md, "The geometry image"). The OBJ writes
+// each surface vertex once and splits only its `vt`; the GLB, whose vertices carry one texture
+// coordinate each, keeps the grid's seam samples as separate vertices.
 
 #include "octaclay/core/export/textured_export.h"
 
@@ -11,6 +13,7 @@
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/vertex_index.h"
 
 #include <array>
 #include <cstdint>
@@ -24,6 +27,34 @@ using detail::featureMap;
 using detail::metallicRoughnessMap;
 
 namespace {
+
+// The grid welded as extractMesh welds it: its vertices in VertexIndex's order, its triangles
+// through VertexIndex (the grid's own triangles then index the texture coordinates).
+struct WeldedGrid {
+  std::vector<Vec3f> positions, normals;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+WeldedGrid weld(const detail::SampleGrid& grid,
+                const std::vector<std::array<std::uint32_t, 3>>& gridTriangles) {
+  const VertexIndex index(grid.n, grid.step);
+  const std::uint32_t side = static_cast<std::uint32_t>(grid.m + 1);
+  const auto welded = [&](std::uint32_t k) {
+    return index.at(static_cast<int>(k % side), static_cast<int>(k / side));
+  };
+  WeldedGrid out;
+  out.positions.resize(index.vertexCount());
+  out.normals.resize(index.vertexCount());
+  // Identified samples carry their canonical sample's position and normal, so any copy serves.
+  for (std::uint32_t k = 0; k < grid.vertexCount(); ++k) {
+    out.positions[welded(k)] = grid.positions[k];
+    out.normals[welded(k)] = grid.normals[k];
+  }
+  out.triangles.reserve(gridTriangles.size());
+  for (const auto& t : gridTriangles)
+    out.triangles.push_back({welded(t[0]), welded(t[1]), welded(t[2])});
+  return out;
+}
 
 std::string mtlText(const std::vector<fs::path>& files) {
   const auto name = [&](std::size_t k) { return files[k].filename().string(); };
@@ -61,10 +92,12 @@ void stageTexturedObj(const Document& doc, int step, const fs::path& objPath, Ou
                 "cannot export to " + objPath.string() + ": its material file has that name");
 
   const std::vector<Vec2f> texcoords = detail::gridTexcoords(grid, true);
-  const std::vector<std::array<std::uint32_t, 3>> triangles = detail::gridTriangles(grid.m);
-  const detail::ObjMesh mesh{grid.positions, grid.normals, texcoords, triangles, {}};
+  const std::vector<std::array<std::uint32_t, 3>> uvTriangles = detail::gridTriangles(grid.m);
+  const WeldedGrid welded = weld(grid, uvTriangles);
+  const detail::ObjMesh mesh{welded.positions, welded.normals, texcoords, welded.triangles,
+                             uvTriangles};
   const detail::ObjHeader header{
-      "Octaclay textured export: (M+1)^2 unwelded samples, M = " +
+      "Octaclay textured export: M^2 + 2 vertices, (M+1)^2 texture coordinates, M = " +
           std::to_string(static_cast<unsigned>(grid.m)) +
           ", maps at (N+1)^2, N = " + std::to_string(static_cast<unsigned>(grid.n)),
       files[1].filename().string(), "octaclay"};

@@ -1,6 +1,6 @@
-// Textured export (core/textured_export.h): the OBJ's unwelded samples, texture coordinates that
-// land on the painted texels of the PNG maps, seam duplicates, the MTL; the .glb read back with
-// tinygltf's loader (octaclay_core links the Debian tinygltf library privately, which puts it
+// Textured export (core/textured_export.h): the OBJ's welded vertices, texture coordinates that
+// land on the painted texels of the PNG maps, seams split only in `vt`, the MTL; the .glb read back
+// with tinygltf's loader (octaclay_core links the Debian tinygltf library privately, which puts it
 // on this test's link line too); and the errors.
 
 #include "octaclay/core/document/document.h"
@@ -85,7 +85,6 @@ Document paintedDocument(int n) {
 }
 
 struct Obj {
-  std::vector<std::array<std::string, 3>> positionText; // exact text: seam duplicates compare
   std::vector<Vec3f> positions, normals;
   std::vector<std::array<float, 2>> texcoords;
   std::vector<std::array<std::array<long, 3>, 3>> faces; // v/vt/vn, 1-based
@@ -103,7 +102,6 @@ Obj readObj(const fs::path& path) {
     if (key == "v") {
       std::array<std::string, 3> text;
       s >> text[0] >> text[1] >> text[2];
-      obj.positionText.push_back(text);
       obj.positions.push_back({std::stof(text[0]), std::stof(text[1]), std::stof(text[2])});
     } else if (key == "vt") {
       std::array<float, 2> t{};
@@ -217,14 +215,17 @@ void TexturedExportTest::objSamplesTexcoordsAndMaps() {
 
   const Obj obj = readObj(path);
   const std::size_t count = std::size_t(m + 1) * std::size_t(m + 1);
-  QCOMPARE(obj.positions.size(), count);
+  const std::size_t vertices = std::size_t(m) * std::size_t(m) + 2;
+  QCOMPARE(obj.positions.size(), vertices); // each position once
   QCOMPARE(obj.texcoords.size(), count);
-  QCOMPARE(obj.normals.size(), count);
+  QCOMPARE(obj.normals.size(), vertices);
   QCOMPARE(obj.faces.size(), 2 * std::size_t(m) * std::size_t(m));
   QCOMPARE(obj.mtllib, files[1].filename().string());
   QVERIFY(!obj.usemtl.empty());
 
-  // Vertex (i, j) is image sample (i·step, j·step); its texcoord is that texel's centre.
+  // Grid vertex (i, j) is image sample (i·step, j·step), welded vertex welded.at(i, j); its
+  // texcoord is that texel's centre.
+  const VertexIndex welded(n, step);
   const RasterImage diffuse = readImage(files[2], 4);
   QCOMPARE(diffuse.width, side);
   QCOMPARE(diffuse.height, side);
@@ -246,11 +247,11 @@ void TexturedExportTest::objSamplesTexcoordsAndMaps() {
                                 .arg(diffuse.at(x, y, c))
                                 .arg(colour[std::size_t(c)])));
       const Vec3f p = doc.positions.at(i * step, j * step).xyz();
-      QVERIFY(length(obj.positions[k] - p) < 1e-6f);
-      QVERIFY(std::abs(length(obj.normals[k]) - 1) < 1e-4f);
+      QVERIFY(length(obj.positions[welded.at(i, j)] - p) < 1e-6f);
+      QVERIFY(std::abs(length(obj.normals[welded.at(i, j)]) - 1) < 1e-4f);
     }
 
-  // Seam duplicates: identified samples have identical positions but their own texcoords.
+  // Seams: identified samples are one vertex with their own texcoords.
   int duplicates = 0;
   for (int j = 0; j <= m; ++j)
     for (int i = 0; i <= m; ++i) {
@@ -261,24 +262,26 @@ void TexturedExportTest::objSamplesTexcoordsAndMaps() {
         const std::size_t a = std::size_t(j) * std::size_t(m + 1) + std::size_t(i);
         const std::size_t b = std::size_t(same[std::size_t(s)].j) * std::size_t(m + 1) +
                               std::size_t(same[std::size_t(s)].i);
-        QCOMPARE(obj.positionText[a], obj.positionText[b]);
+        QCOMPARE(welded.at(i, j), welded.at(same[std::size_t(s)].i, same[std::size_t(s)].j));
         QVERIFY(obj.texcoords[a] != obj.texcoords[b]);
         ++duplicates;
       }
     }
   QVERIFY(duplicates >= 4 * m);
 
-  // Faces: v = vt = vn, and welded through VertexIndex they are extractMesh's triangles, in
-  // order (same split, same orientation).
-  const VertexIndex welded(n, step);
+  // Faces: v = vn are extractMesh's vertices and triangles, in order (same split, same
+  // orientation), and vt is the grid sample of the corner.
   const TriangleMesh mesh = extractMesh(doc.positions, step);
+  QCOMPARE(mesh.positions.size(), vertices);
+  for (std::size_t k = 0; k < vertices; ++k)
+    QCOMPARE(obj.positions[k], mesh.positions[k]);
   for (std::size_t f = 0; f < obj.faces.size(); ++f)
     for (int c = 0; c < 3; ++c) {
       const auto& corner = obj.faces[f][std::size_t(c)];
-      QCOMPARE(corner[1], corner[0]);
       QCOMPARE(corner[2], corner[0]);
-      QVERIFY(corner[0] >= 1 && std::size_t(corner[0]) <= count);
-      const long k = corner[0] - 1;
+      QCOMPARE(std::uint32_t(corner[0] - 1), mesh.triangles[f][std::size_t(c)]);
+      QVERIFY(corner[1] >= 1 && std::size_t(corner[1]) <= count);
+      const long k = corner[1] - 1;
       QCOMPARE(welded.at(int(k % (m + 1)), int(k / (m + 1))), mesh.triangles[f][std::size_t(c)]);
     }
 

@@ -1,7 +1,8 @@
 #pragma once
 
-// The LOD written with its baked normal map: OBJ + MTL + map, or GLB.
+// The LOD written with its baked normal map, and the painted layers: OBJ + MTL + maps, or GLB.
 
+#include "octaclay/core/document/document.h"
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/core/lod/normal_map.h"
 
@@ -28,6 +29,22 @@ std::vector<std::filesystem::path> writeLodMesh(const LodMesh& lod, const Normal
 /// writeLodMesh's files staged into `set`, for a caller that adds files or checks more before
 /// it commits; returns them in writeLodMesh's order.
 std::vector<std::filesystem::path> stageLodMesh(const LodMesh& lod, const NormalMap& map,
+                                                const std::filesystem::path& path, OutputSet& set);
+
+/// writeLodMesh with the painted layers of `paint` (the document the LOD was made from; its
+/// diffuse and feature layers), so the LOD carries what the full-resolution export carries
+/// (textured_export.h): the layers resampled to the normal map's resolution over the same
+/// texture coordinates (texel (x, y) at image position ((x + 0.5) / r, (y + 0.5) / r), bilinear).
+/// The OBJ's MTL adds `map_Kd` (`stem_diffuse.png`, RGBA), `map_Ks` (`stem_specular.png`) and
+/// `map_refl` / `map_Pm` (`stem_reflectivity.png`), returned after the normal map in that
+/// order; the GLB's material adds baseColorTexture (diffuse) and metallicRoughnessTexture (G
+/// roughness = 1 − specular, B metallic = reflectivity; both factors 1). Throws as writeLodMesh,
+/// and Error(InvalidArgument) when a layer's texel count disagrees with paint's N.
+std::vector<std::filesystem::path> writeLodMesh(const LodMesh& lod, const NormalMap& map,
+                                                const Document& paint,
+                                                const std::filesystem::path& path);
+std::vector<std::filesystem::path> stageLodMesh(const LodMesh& lod, const NormalMap& map,
+                                                const Document& paint,
                                                 const std::filesystem::path& path, OutputSet& set);
 
 } // namespace octaclay::core

@@ -13,7 +13,9 @@ enum class MeshFormat { Obj, Ply, Stl, Off };
 /// The format a path's extension names (.obj, .ply, .stl, .off, any case), or nullopt.
 std::optional<MeshFormat> meshFormatFromPath(const std::filesystem::path& path);
 
-/// Writes through OpenMesh (PLY and STL binary), atomically like writeDocument.
+/// Writes OBJ through the exports' OBJ writer (`v` and `f` only), PLY (binary), STL (binary) and
+/// OFF through OpenMesh, atomically like writeDocument. Throws Error(InvalidInput) for
+/// non-manifold triangles.
 /// Throws Error(InvalidArgument) for an unknown extension, Error(Io) when writing fails.
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
 

@@ -3,13 +3,16 @@
 // Exports that carry the painted layers, so other tools show the model as painted: a textured
 // OBJ (with its MTL and PNG maps) and a binary glTF (.glb) with embedded textures.
 //
-// Both write the samples of the image unwelded: vertex (i, j) of the (M+1)² grid (M = N/step)
-// is image sample (i·step, j·step), and its texture coordinate is the centre of texel
-// (i·step, j·step) of the maps, which keep the full (N+1)² resolution of the layers (texel
-// (x, y) = layer sample (x, y), top row first). Samples that the octahedral seams identify
-// are separate vertices with equal positions and normals but different texture coordinates:
-// that is what lets one image texture the closed surface. Triangles follow extractMesh's
-// split and orientation, so the surface is the one extractMesh describes.
+// Both sample the image every `step` samples: grid vertex (i, j) of the (M+1)² grid
+// (M = N/step) is image sample (i·step, j·step), and its texture coordinate is the centre of
+// texel (i·step, j·step) of the maps, which keep the full (N+1)² resolution of the layers
+// (texel (x, y) = layer sample (x, y), top row first). Samples that the octahedral seams
+// identify are one surface vertex with several texture coordinates: that is what lets one image
+// texture the closed surface. The OBJ writes each surface vertex once (M² + 2 `v`, extractMesh's
+// vertices in its order) and splits only its `vt`, so it reads back closed; the GLB, whose
+// vertices carry one texture coordinate each, keeps the seam samples as separate vertices with
+// equal positions and normals. Triangles follow extractMesh's split and orientation, so the
+// surface is the one extractMesh describes.
 
 #include "octaclay/core/document/document.h"
 
@@ -24,15 +27,15 @@ namespace octaclay::core {
 /// that order of the returned vector: OBJ first.
 std::vector<std::filesystem::path> texturedObjFiles(const std::filesystem::path& objPath);
 
-/// Writes the document's surface sampled every `step` samples as a textured OBJ: (M+1)² `v`,
-/// `vt` and `vn` records (M = N/step; vt = ((x+0.5)/(N+1), 1−(y+0.5)/(N+1)) for image sample
-/// (x, y), OBJ's v axis pointing up), 2M² faces `f a/a/a b/b/b c/c/c` counter-clockwise seen
-/// from outside, and `mtllib`/`usemtl` naming one material whose MTL (`Kd 1 1 1`, `map_Kd`,
-/// `Ks 1 1 1`, `map_Ks`, `Ns`, `map_refl`, `bump`) references the PNG maps of
+/// Writes the document's surface sampled every `step` samples as a textured OBJ: M² + 2 `v` and
+/// `vn` records (extractMesh's vertices, in its order), (M+1)² `vt` records, grid vertex
+/// (i, j) at index j·(M+1) + i (vt = ((x+0.5)/(N+1), 1−(y+0.5)/(N+1)) for image sample (x, y),
+/// OBJ's v axis pointing up), 2M² faces `f a/ta/a b/tb/b c/tc/c` (extractMesh's triangles,
+/// counter-clockwise seen from outside), and `mtllib`/`usemtl` naming one material whose MTL (`Kd 1
+/// 1 1`, `map_Kd`, `Ks 1 1 1`, `map_Ks`, `Ns`, `map_refl`, `bump`) references the PNG maps of
 /// texturedObjFiles(objPath), each (N+1)² pixels; an unpainted layer gives a uniform map. The
 /// files are written as one set (atomic_output.h): on failure the previous OBJ, MTL and maps
-/// all stay as they were. Positions are taken from each sample's canonical sample, so
-/// identified vertices are equal even in an unseamed image.
+/// all stay as they were. Positions are taken from each sample's canonical sample.
 /// Throws Error(InvalidArgument) when step is not a power of two with N/step ≥ 2 or a layer's
 /// texel count disagrees with N, Error(Io) when a file cannot be written.
 void writeTexturedObj(const Document& doc, int step, const std::filesystem::path& objPath);
