@@ -3,6 +3,7 @@
 #include "undo_capture.h"
 
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/stroke_rules.h"
 
 #include <algorithm>
@@ -168,6 +169,23 @@ struct StrokeSession::State {
   bool finished = false;
   bool abandoned = false; ///< a dab failed and the stroke was undone
 
+  // The drag (API 3): from the stroke-start surface point under the first path point to the one
+  // under the current point, projected into the view plane (normal dragNormal) when a view is
+  // given, else along the path.
+  core::Vec3f startPoint, dragNormal;
+  core::Vec3f lastDrag, lastDirection; ///< at the previous dab
+  /// Drag strokes: where each dab image's centre now is (the tip the drag pulls). Anchored
+  /// strokes: each image's first dab (its centre, normal and texel, measured on the stroke-start
+  /// surface) and the tiles it reached there, which every later dab runs over again.
+  std::vector<core::Vec3f> tips;
+  std::vector<Dab> anchors;
+  std::vector<std::vector<core::TexelRect>> anchorReach;
+
+  core::Vec3f dragAt(std::array<double, 2> xy) const {
+    core::Vec3f v = startPosition(xy[0], xy[1]) - startPoint;
+    return v - dragNormal * core::dot(v, dragNormal);
+  }
+
   // Puts the layers back as they were before the stroke; the session is over.
   void abandon() {
     finished = abandoned = true;
@@ -226,30 +244,68 @@ struct StrokeSession::State {
   void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure) {
     const int n = document.size();
     const core::GeometryImage& image = document.document().positions;
-    const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
-    const core::Vec3f p = core::interpolatePosition(image, point);
-    const core::Vec3f normal =
-        areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
-    const core::Sample texel{std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
-                             std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+    const bool first = dabs == 0;
+    if (first) {
+      startPoint = startPosition(xy[0], xy[1]);
+      if (settings.viewEye && core::length(startPoint - *settings.viewEye) > 0)
+        dragNormal = core::normalize(startPoint - *settings.viewEye);
+    }
+    const core::Vec3f drag = dragAt(xy);
+    const core::Vec3f delta = drag - lastDrag;
+    if (core::length(delta) > 0) lastDirection = core::normalize(delta);
+    lastDrag = drag;
+
     std::vector<Dab> images(1); // the dab, then its mirror images
-    images[0].centre = p;
-    images[0].centreNormal = normal;
-    images[0].centreTexel = texel;
+    std::vector<unsigned> axesOf{0};
     for (unsigned axes = 1; axes < 8; ++axes)
       if ((axes & settings.symmetry) == axes) {
-        Dab& d = images.emplace_back();
-        d.centre = mirrored(p, centre, axes);
-        d.centreNormal = mirrored(normal, {}, axes);
+        images.emplace_back();
+        axesOf.push_back(axes);
+      }
+    if (brush.stroke == StrokeKind::Anchored && !first) {
+      images = anchors; // where the stroke began, measured on the surface as it was then
+    } else if (brush.stroke == StrokeKind::Drag && !first) {
+      for (std::size_t k = 0; k < images.size(); ++k) {
+        Dab& d = images[k];
+        d.centre = tips[k];
+        d.centreTexel = nearestSample(document, d.centre);
+        d.centreNormal = areaNormal(document, d.centre, kAreaNormalRadius * radius,
+                                    core::vertexNormal(image, d.centreTexel));
+      }
+    } else {
+      const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
+      const core::Vec3f p = core::interpolatePosition(image, point);
+      const core::Vec3f normal =
+          areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
+      images[0].centre = p;
+      images[0].centreNormal = normal;
+      images[0].centreTexel = {std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
+                               std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+      for (std::size_t k = 1; k < images.size(); ++k) {
+        Dab& d = images[k];
+        d.centre = mirrored(p, centre, axesOf[k]);
+        d.centreNormal = mirrored(normal, {}, axesOf[k]);
         d.centreTexel = nearestSample(document, d.centre);
       }
-    for (Dab& dab : images) {
+    }
+    const bool keepAnchors = brush.stroke == StrokeKind::Anchored && first;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      Dab& dab = images[k];
       dab.radius = radius;
       dab.strength = strength * share;
       dab.pressure = pressure;
       dab.parameters = settings.parameters;
+      dab.drag = mirrored(drag, {}, axesOf[k]);
+      dab.strokeDelta = mirrored(delta, {}, axesOf[k]);
+      dab.strokeDirection = mirrored(lastDirection, {}, axesOf[k]);
       if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
-      std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
+      std::vector<core::TexelRect> reach = brush.stroke == StrokeKind::Anchored && !first
+                                               ? anchorReach[k]
+                                               : engine.reach(document, brush.id, dab);
+      if (keepAnchors) {
+        anchors.push_back(dab);
+        anchorReach.push_back(reach);
+      }
       for (const core::TexelRect& r : reach)
         undo.cover(r);
       for (const core::TexelRect& r : seamRuns(reach, n + 1)) // the seaming pass's partners
@@ -265,8 +321,12 @@ struct StrokeSession::State {
         touchedTiles.insert({t.x, t.y, t.width, t.height});
       for (const core::TexelRect& t : done.seams)
         touchedSeams.insert({t.x, t.y, t.width, t.height});
-      ++dabs;
+      if (brush.stroke == StrokeKind::Drag) { // the tip moves as the dab's centre moved
+        if (first) tips.push_back(dab.centre);
+        tips[k] += dab.strokeDelta * (dab.strength * dab.pressure);
+      }
     }
+    dabs += static_cast<int>(images.size());
   }
 
   // Moves the stroke to image point xy (in samples): the first move dabs there, later ones
@@ -279,9 +339,10 @@ struct StrokeSession::State {
     checkFinite("the pressure", pressure);
     const auto start = std::chrono::steady_clock::now();
     const int before = dabs;
-    if (!previous) {
+    if (!previous || brush.stroke == StrokeKind::Anchored) {
+      // An anchored stroke makes one dab where it began, again for each move: no walk.
+      if (!previous || xy != *previous) dabAt(xy, radius, strength, pressure);
       previous = xy;
-      dabAt(xy, radius, strength, pressure);
     } else {
       walkTo(xy, static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
              radius, strength, pressure);
