@@ -173,6 +173,7 @@ struct StrokeSession::State {
   // under the current point, projected into the view plane (normal dragNormal) when a view is
   // given, else along the path.
   core::Vec3f startPoint, dragNormal;
+  core::Vec3f anchorNormal;            ///< the surface normal at the stroke's first dab
   core::Vec3f lastDrag, lastDirection; ///< at the previous dab
   /// Drag strokes: where each dab image's centre now is (the tip the drag pulls). Anchored
   /// strokes: each image's first dab (its centre, normal and texel, measured on the stroke-start
@@ -241,7 +242,8 @@ struct StrokeSession::State {
   // each may touch first. The centre and its normal are the current surface's there; a mirror
   // image is centred on the mirrored point with the mirrored normal, so a symmetric model gets
   // mirror-equal dabs.
-  void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure) {
+  void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure,
+             std::optional<core::Vec3f> cursorDrag = std::nullopt) {
     const int n = document.size();
     const core::GeometryImage& image = document.document().positions;
     const bool first = dabs == 0;
@@ -250,7 +252,7 @@ struct StrokeSession::State {
       if (settings.viewEye && core::length(startPoint - *settings.viewEye) > 0)
         dragNormal = core::normalize(startPoint - *settings.viewEye);
     }
-    const core::Vec3f drag = dragAt(xy);
+    const core::Vec3f drag = cursorDrag ? *cursorDrag : dragAt(xy);
     const core::Vec3f delta = drag - lastDrag;
     if (core::length(delta) > 0) lastDirection = core::normalize(delta);
     lastDrag = drag;
@@ -288,6 +290,7 @@ struct StrokeSession::State {
         d.centreTexel = nearestSample(document, d.centre);
       }
     }
+    if (first) anchorNormal = images[0].centreNormal;
     const bool keepAnchors = brush.stroke == StrokeKind::Anchored && first;
     for (std::size_t k = 0; k < images.size(); ++k) {
       Dab& dab = images[k];
@@ -351,6 +354,53 @@ struct StrokeSession::State {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return dabs - before;
   }
+
+  // A dragging brush's move to the drag that ray gives: where it meets the drag plane (through
+  // the stroke's start, across the view; across the start's normal without a view). An anchored
+  // stroke dabs once with it; a drag stroke walks there from its last drag in steps of the
+  // spacing (object units), carrying the remainder as walkTo does.
+  int dragAlong(core::Vec3f origin, core::Vec3f direction, float radius, float strength,
+                float pressure) {
+    if (abandoned) throw std::logic_error("StrokeSession::dragAlong after a dab failed");
+    if (finished) throw std::logic_error("StrokeSession::dragAlong after finish()");
+    if (!previous)
+      throw std::logic_error("StrokeSession::dragAlong before the stroke's first move");
+    checkFinite("the radius", radius);
+    checkFinite("the strength", strength);
+    checkFinite("the pressure", pressure);
+    for (float v : {origin.x, origin.y, origin.z, direction.x, direction.y, direction.z})
+      checkFinite("the drag's ray", v);
+    const core::Vec3f plane = core::length(dragNormal) > 0 ? dragNormal : anchorNormal;
+    const float facing = core::dot(direction, plane);
+    if (std::abs(facing) < 1e-6f * core::length(direction)) return 0; // along the plane: no point
+    const core::Vec3f point = origin + direction * (core::dot(startPoint - origin, plane) / facing);
+    core::Vec3f target = point - startPoint;
+    target = target - plane * core::dot(target, plane);
+    const auto start = std::chrono::steady_clock::now();
+    const int before = dabs;
+    const std::array<double, 2> xy = *previous;
+    if (brush.stroke == StrokeKind::Anchored) {
+      dabAt(xy, radius, strength, pressure, target);
+    } else {
+      const double spacing =
+          std::max(static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
+                   1e-4 * diagonal);
+      const core::Vec3f from = lastDrag;
+      const double length = core::length(target - from);
+      travelled = std::min(travelled, spacing);
+      double used = 0;
+      while (travelled + (length - used) >= spacing) {
+        used += spacing - travelled;
+        travelled = 0;
+        dabAt(xy, radius, strength, pressure,
+              from + (target - from) * static_cast<float>(length > 0 ? used / length : 0.0));
+      }
+      travelled += length - used;
+    }
+    engineMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return dabs - before;
+  }
 };
 
 StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
@@ -388,6 +438,19 @@ int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float 
   const double n = state_->document.size();
   return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * n}, radius,
                         strength, pressure);
+}
+
+int StrokeSession::dragAlong(core::Vec3f origin, core::Vec3f direction, float radius,
+                             float strength, float pressure) {
+  if (state_->brush.stroke != StrokeKind::Anchored && state_->brush.stroke != StrokeKind::Drag)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "brush " + state_->brush.id + " does not drag (its \"stroke\" is \"" +
+                          std::string(toManifestName(state_->brush.stroke)) + "\")");
+  return state_->dragAlong(origin, direction, radius, strength, pressure);
+}
+
+bool StrokeSession::drags() const {
+  return state_->brush.stroke == StrokeKind::Anchored || state_->brush.stroke == StrokeKind::Drag;
 }
 
 std::vector<core::TexelRect> StrokeSession::takeTouched() {

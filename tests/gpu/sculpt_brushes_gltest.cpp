@@ -11,6 +11,7 @@
 #include "self_intersection.h"
 
 #include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/grid_point.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -73,6 +74,7 @@ private slots:
   void grabDraggedByItsRadiusDoesNotCrossItself_data();
   void grabDraggedByItsRadiusDoesNotCrossItself();
   void snakeHookFollowsAnLShapedPath();
+  void draggingBrushesFollowThePointersRay();
   void pinchDrawsSamplesTogether();
   void creaseLeavesAValleyDeeperThanItsRims();
   void layerHeightIsTheSameAfterOneAndFivePasses();
@@ -228,6 +230,42 @@ void SculptBrushesTest::snakeHookFollowsAnLShapedPath() {
   QCOMPARE(topology.euler, 2LL);
 }
 
+// The modeller's drag: the first move says where the stroke starts, later ones give the pointer's
+// ray, which meets the view plane through the start (here z = 1, seen from above).
+void SculptBrushesTest::draggingBrushesFollowThePointersRay() {
+  const int n = 128;
+  const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
+  const core::Vec3f eye{0.0f, 0.0f, 6.0f};
+  const core::Vec3f pole = sphere.at(n / 2, n / 2).xyz(), end{0.35f, 0.2f, 1.0f};
+  for (const char* brush : {"grab", "snake-hook"}) {
+    GpuDocument document(core::makeDocument(sphere));
+    StrokeSettings settings = strokeOf(brush, {}, 0.3f, 1.0f);
+    settings.viewEye = eye;
+    StrokeSession session(*engine_, document, manifests_.at(brush), settings);
+    QVERIFY(session.drags());
+    session.moveToUv({0.5f, 0.5f}, settings.radius, 1.0f);
+    // Half way, then to the end: each ray from the eye through a point of the plane.
+    const core::Vec3f half = (pole + end) * 0.5f;
+    for (core::Vec3f at : {half, end})
+      session.dragAlong(eye, core::normalize(at - eye), settings.radius, 1.0f);
+    session.finish(brush);
+    const core::Vec3f tip = document.document().positions.at(n / 2, n / 2).xyz();
+    const float miss = core::length(tip - end);
+    qInfo("%s: the pole ends %.4f (%.3f radii) from the pointer's point", brush, miss,
+          miss / settings.radius);
+    // Snake hook's last dab falls up to a spacing (0.1 radii) short of the pointer.
+    QVERIFY2(miss <= (QString(brush) == "grab" ? 0.05f : 0.15f) * settings.radius,
+             qPrintable(QString("%1: %2").arg(brush).arg(miss)));
+    QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+  }
+  GpuDocument document(core::makeDocument(sphere));
+  StrokeSession pinch(*engine_, document, manifests_.at("pinch"), strokeOf("pinch", {}, 0.3f, 1));
+  QVERIFY(!pinch.drags());
+  pinch.moveToUv({0.5f, 0.5f}, 0.3f, 1.0f);
+  QVERIFY_THROWS_EXCEPTION(core::Error, pinch.dragAlong(eye, {0, 0, -1}, 0.3f, 1.0f));
+  pinch.finish("pinch");
+}
+
 void SculptBrushesTest::pinchDrawsSamplesTogether() {
   const int n = 128;
   const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
@@ -261,7 +299,7 @@ void SculptBrushesTest::pinchDrawsSamplesTogether() {
       }
     }
   QVERIFY(edges > 50);
-  qInfo("pinch: mean distance to the centre inside the radius %.4f -> %.4f", before, now);
+  qInfo("pinch: summed distance to the centre inside the radius %.4f -> %.4f", before, now);
   QVERIFY(now < 0.9 * before);
 }
 
