@@ -163,7 +163,10 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
   sub->add_option("--brush", opt->brush, "Brush id (see `octaclay-cli brushes`)")->required();
   sub->add_option("--param", opt->params, "Brush parameter id=value (repeatable)");
-  sub->add_option("--path", opt->path, "u,v[;u,v...] in [0, 1]: one pair is one dab")->required();
+  sub->add_option("--path", opt->path,
+                  "u,v[;u,v...] in [0, 1]: one pair is one dab; for a dragging brush (grab, "
+                  "snake-hook) the first point is where the drag starts and the last where it ends")
+      ->required();
   sub->add_option("--radius", opt->radius, "Fraction of the bounding-box diagonal")
       ->check(kFiniteNumber)
       ->capture_default_str();
@@ -179,8 +182,9 @@ Command addStrokeCommand(CLI::App& app) {
       ->check(kFiniteNumber);
   sub->add_option("--symmetry", opt->symmetry, "Mirror planes through the model's centre: x, y, z");
   sub->add_option("--view", opt->view,
-                  "Camera eye x,y,z: splats project from it through each dab's centre "
-                  "(default: along the centre normal)");
+                  "Camera eye x,y,z: splats project from it through each dab's centre, and a "
+                  "drag (grab, snake-hook) moves in the view plane through its start "
+                  "(default: splats along the centre normal, drags along the path)");
   sub->add_option("--keep-detail", opt->keepDetail,
                   "on: relax what the stroke stretched so it keeps its share of samples "
                   "(one step with the stroke); off: leave the samples where the brush put them")

@@ -29,6 +29,10 @@ uniform sampler2D u_diffuseLayer; // the diffuse layer as it was before this dab
 uniform vec3 u_projectionDir;     // splats: projection frame, object space, unit
 uniform vec3 u_projectionRight;
 uniform vec3 u_projectionUp;
+uniform vec3 u_drag;            // API 3: the drag since the stroke began, object units
+uniform vec3 u_strokeDelta;     // its change since the stroke's previous dab
+uniform vec3 u_strokeDirection; // that change's direction, unit (0 before the stroke moved)
+uniform sampler2D u_strokeStart; // "stroke_start": the positions when the stroke began
 #if defined(BRUSH_MATERIAL)
 // The chosen material's maps (repeat-wrapped; nearest texel, bilinear where magnified) and
 // scales, object units unless noted.
@@ -144,6 +148,24 @@ vec4 fetchPositions(ivec2 texel) { return texelFetch(u_positions, wrapTexel(texe
 vec4 fetchLayer(ivec2 texel) { return texelFetch(u_layer, wrapTexel(texel), 0); }
 #endif
 
+#if defined(BRUSH_STROKE_START)
+// The positions (xyz) and saliency (w) at texel t as they were when the stroke began, wrapped
+// across the seams as fetchPositions.
+vec4 strokeStartAt(ivec2 t) { return texelFetch(u_strokeStart, wrapTexel(t), 0); }
+
+// The stroke-start surface's unit normal at texel t (central differences, as normalAt).
+vec3 strokeStartNormalAt(ivec2 t) {
+  vec3 du = strokeStartAt(t + ivec2(1, 0)).xyz - strokeStartAt(t - ivec2(1, 0)).xyz;
+  vec3 dv = strokeStartAt(t + ivec2(0, 1)).xyz - strokeStartAt(t - ivec2(0, 1)).xyz;
+  vec3 n = cross(du, dv);
+  if (dot(n, n) < 1e-20) {
+    du = strokeStartAt(t + ivec2(1, 0)).xyz - strokeStartAt(t).xyz;
+    n = cross(du, dv);
+  }
+  return dot(n, n) < 1e-30 ? u_centreNormal : normalize(n);
+}
+#endif
+
 // Central differences through wrap(): a half-turn of the tiling negates both differences, so the
 // cross product is the same on both sides of a seam. At the fold points (side midpoints) the two
 // horizontal neighbours coincide; one-sided differences take over there.
@@ -213,7 +235,9 @@ BrushInput brushInputAt(ivec2 t, vec4 value) {
   BrushInput b;
   b.texel = t;
   b.uv = vec2(t) / float(u_size);
-#if OCTACLAY_LAYER == LAYER_POSITIONS || OCTACLAY_LAYER == LAYER_ALL
+#if defined(BRUSH_ANCHORED)
+  b.position = texelFetch(u_strokeStart, t, 0).xyz; // an anchored dab measures the start surface
+#elif OCTACLAY_LAYER == LAYER_POSITIONS || OCTACLAY_LAYER == LAYER_ALL
   b.position = value.xyz; // value is the positions texel
 #else
   b.position = texelFetch(u_positions, t, 0).xyz;

@@ -158,6 +158,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   result.seams = seamRuns(result.tiles, side);
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  if (brush.manifest.needsStrokeStart()) {
+    if (!strokeOpen_) strokeStartOf_ = nullptr; // a dab of its own is a stroke of its own
+    captureStrokeStart(document);
+  }
 
   // The material samplers would override the filtering of whatever VTK binds to those units.
   struct MaterialUnitsRelease {
@@ -175,6 +179,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     detail::bindLayers(document, layer, brush.samples(core::EditLayer::Diffuse),
                        brush.samples(core::EditLayer::Feature));
     bindMaterial(pass, brush.manifest, document, dab);
+    if (brush.manifest.needsStrokeStart()) {
+      detail::kStrokeStartUnit.bind(strokeStart_.id());
+      glActiveTexture(GL_TEXTURE0);
+    }
   };
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
@@ -297,8 +305,19 @@ void BrushEngine::resetOffsets(const std::vector<core::TexelRect>& where) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void BrushEngine::captureStrokeStart(GpuDocument& document) {
+  if (strokeStartOf_ == &document) return;
+  const int side = document.size() + 1;
+  const Texture& positions = document.texture(core::EditLayer::Positions);
+  if (strokeStart_.width() != side || strokeStart_.format() != positions.format())
+    strokeStart_ = Texture(side, side, positions.format());
+  detail::copyRect(positions, strokeStart_, {0, 0, side, side});
+  strokeStartOf_ = &document;
+}
+
 void BrushEngine::endStroke() {
   strokeOpen_ = false;
+  strokeStartOf_ = nullptr;
   if (baseOf_) resetOffsets({core::TexelRect{0, 0, offsets_[0].width(), offsets_[0].height()}});
 }
 
@@ -344,6 +363,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
                        brush.manifest.readsLayer(core::EditLayer::Diffuse),
                        brush.manifest.readsLayer(core::EditLayer::Feature));
     bindMaterial(step, brush.manifest, document, dab);
+    if (brush.manifest.needsStrokeStart()) detail::kStrokeStartUnit.bind(strokeStart_.id());
     detail::kPositionsUnit.bind(base_[0].id()); // current positions: the base at texel + offset
     for (int k = 0; k < brush.manifest.iterations; ++k) {
       offsets_[1].bindAsTarget();

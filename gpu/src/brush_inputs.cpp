@@ -61,6 +61,11 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   glUniform1f(location(program, "u_normalCosine"),
               std::cos(dab.normalAngleDegrees * std::numbers::pi_v<float> / 180.0f));
   glUniform2i(location(program, "u_centreTexel"), dab.centreTexel.i, dab.centreTexel.j);
+  glUniform3f(location(program, "u_drag"), dab.drag.x, dab.drag.y, dab.drag.z);
+  glUniform3f(location(program, "u_strokeDelta"), dab.strokeDelta.x, dab.strokeDelta.y,
+              dab.strokeDelta.z);
+  glUniform3f(location(program, "u_strokeDirection"), dab.strokeDirection.x, dab.strokeDirection.y,
+              dab.strokeDirection.z);
   if (!manifest.falloffCurve.empty()) {
     const GLsizei count =
         static_cast<GLsizei>(std::min<std::size_t>(manifest.falloffCurve.size(), 64));

@@ -32,13 +32,14 @@ constexpr std::array kAreaNames{"uv", "volume", "volume+normal"};
 constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
 constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
 constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
-constexpr std::array kNeedNames{"normal"};
+constexpr std::array kNeedNames{"normal", "stroke_start"};
 constexpr std::array kPassNames{"layers", "reparameterize"};
+constexpr std::array kStrokeNames{"spaced", "target", "drag", "anchored"};
 
 constexpr std::array kTopLevelFields{
-    "id",      "name",         "version", "api",        "description", "category",
-    "shader",  "reads",        "writes",  "mix",        "needs",       "area",
-    "falloff", "falloffCurve", "spacing", "parameters", "pass",        "iterations"};
+    "id",      "name",       "version", "api",        "description", "category", "shader",
+    "reads",   "writes",     "mix",     "needs",      "area",        "falloff",  "falloffCurve",
+    "spacing", "parameters", "pass",    "iterations", "stroke"};
 constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
                                       "min", "max",   "step",    "options"};
 // Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
@@ -86,8 +87,9 @@ private:
     if (manifest.writes.empty()) fail("writes", "a brush must write at least one layer");
     if (const json* mix = root.contains("mix") ? &root["mix"] : nullptr) parseMix(*mix, manifest);
     if (const json* needs = root.contains("needs") ? &root["needs"] : nullptr)
-      manifest.needs = parseNeeds(*needs);
+      manifest.needs = parseNeeds(*needs, manifest.api);
     parsePass(root, manifest);
+    parseStroke(root, manifest);
 
     manifest.area =
         choose<AreaMode>(requiredString(root, "area", "area"), kAreaNames, "area", "area");
@@ -147,7 +149,7 @@ private:
     return layers;
   }
 
-  std::vector<BrushNeed> parseNeeds(const json& value) const {
+  std::vector<BrushNeed> parseNeeds(const json& value, int api) const {
     if (!value.is_array())
       fail("needs", "expected an array, got " + describe(value) + " (use [\"normal\"])");
     std::vector<BrushNeed> needs;
@@ -156,6 +158,10 @@ private:
       const BrushNeed need = choose<BrushNeed>(string(value[k], item), kNeedNames, item, "need");
       if (std::find(needs.begin(), needs.end(), need) != needs.end())
         fail(item, quote(toManifestName(need)) + " is listed twice");
+      if (need == BrushNeed::StrokeStart && api < 3)
+        fail(item,
+             "\"stroke_start\" needs \"api\": 3 (it came with brush API 3), the manifest says " +
+                 std::to_string(api));
       needs.push_back(need);
     }
     return needs;
@@ -189,6 +195,19 @@ private:
                            std::string(layer) + "\" is missing)");
     if (!manifest.mix.empty())
       fail("mix", "a \"reparameterize\" pass resamples its layers and mixes none");
+  }
+
+  // "stroke" (API 3): how the stroke's dabs fall. After "pass": a reparameterize stroke resamples
+  // from its start already and is spaced.
+  void parseStroke(const json& root, BrushManifest& manifest) const {
+    const auto stroke = optionalString(root, "stroke", "stroke");
+    if (!stroke) return;
+    if (manifest.api < 3)
+      fail("stroke", "needs \"api\": 3 (stroke kinds came with brush API 3), the manifest says " +
+                         std::to_string(manifest.api));
+    manifest.stroke = choose<StrokeKind>(*stroke, kStrokeNames, "stroke", "stroke kind");
+    if (manifest.stroke != StrokeKind::Spaced && manifest.pass == PassKind::Reparameterize)
+      fail("stroke", "a \"reparameterize\" pass makes spaced strokes only");
   }
 
   void parseMix(const json& value, BrushManifest& manifest) const {
@@ -404,6 +423,9 @@ std::string_view toManifestName(BrushNeed need) {
 std::string_view toManifestName(PassKind pass) {
   return kPassNames[static_cast<std::size_t>(pass)];
 }
+std::string_view toManifestName(StrokeKind stroke) {
+  return kStrokeNames[static_cast<std::size_t>(stroke)];
+}
 
 bool BrushManifest::readsLayer(core::EditLayer layer) const {
   return std::find(reads.begin(), reads.end(), layer) != reads.end();
@@ -412,6 +434,11 @@ bool BrushManifest::readsLayer(core::EditLayer layer) const {
 bool BrushManifest::needsNormal() const {
   return area == AreaMode::VolumeNormal ||
          std::find(needs.begin(), needs.end(), BrushNeed::Normal) != needs.end();
+}
+
+bool BrushManifest::needsStrokeStart() const {
+  return stroke == StrokeKind::Anchored ||
+         std::find(needs.begin(), needs.end(), BrushNeed::StrokeStart) != needs.end();
 }
 
 const BrushParameter* BrushManifest::parameter(std::string_view parameterId) const {

@@ -140,6 +140,10 @@ std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool 
   }
   // The prelude computes per-sample normals only for brushes that read them.
   if (manifest.needsNormal()) source += "#define BRUSH_NEEDS_NORMAL\n";
+  // API 3: the positions at the stroke's start (u_strokeStart), and an anchored dab measured on
+  // them.
+  if (manifest.needsStrokeStart()) source += "#define BRUSH_STROKE_START\n";
+  if (manifest.stroke == StrokeKind::Anchored) source += "#define BRUSH_ANCHORED\n";
   // Every target is the layer itself: an unweighted texel keeps its value unwritten.
   if (inPlace) source += "#define BRUSH_IN_PLACE\n";
   for (core::EditLayer mixed : manifest.mix)

@@ -3,6 +3,7 @@
 #include "undo_capture.h"
 
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/stroke_rules.h"
 
 #include <algorithm>
@@ -168,6 +169,24 @@ struct StrokeSession::State {
   bool finished = false;
   bool abandoned = false; ///< a dab failed and the stroke was undone
 
+  // The drag (API 3): from the stroke-start surface point under the first path point to the one
+  // under the current point, projected into the view plane (normal dragNormal) when a view is
+  // given, else along the path.
+  core::Vec3f startPoint, dragNormal;
+  core::Vec3f anchorNormal;            ///< the surface normal at the stroke's first dab
+  core::Vec3f lastDrag, lastDirection; ///< at the previous dab
+  /// Drag strokes: where each dab image's centre now is (the tip the drag pulls). Anchored
+  /// strokes: each image's first dab (its centre, normal and texel, measured on the stroke-start
+  /// surface) and the tiles it reached there, which every later dab runs over again.
+  std::vector<core::Vec3f> tips;
+  std::vector<Dab> anchors;
+  std::vector<std::vector<core::TexelRect>> anchorReach;
+
+  core::Vec3f dragAt(std::array<double, 2> xy) const {
+    core::Vec3f v = startPosition(xy[0], xy[1]) - startPoint;
+    return v - dragNormal * core::dot(v, dragNormal);
+  }
+
   // Puts the layers back as they were before the stroke; the session is over.
   void abandon() {
     finished = abandoned = true;
@@ -223,33 +242,73 @@ struct StrokeSession::State {
   // each may touch first. The centre and its normal are the current surface's there; a mirror
   // image is centred on the mirrored point with the mirrored normal, so a symmetric model gets
   // mirror-equal dabs.
-  void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure) {
+  void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure,
+             std::optional<core::Vec3f> cursorDrag = std::nullopt) {
     const int n = document.size();
     const core::GeometryImage& image = document.document().positions;
-    const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
-    const core::Vec3f p = core::interpolatePosition(image, point);
-    const core::Vec3f normal =
-        areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
-    const core::Sample texel{std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
-                             std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+    const bool first = dabs == 0;
+    if (first) {
+      startPoint = startPosition(xy[0], xy[1]);
+      if (settings.viewEye && core::length(startPoint - *settings.viewEye) > 0)
+        dragNormal = core::normalize(startPoint - *settings.viewEye);
+    }
+    const core::Vec3f drag = cursorDrag ? *cursorDrag : dragAt(xy);
+    const core::Vec3f delta = drag - lastDrag;
+    if (core::length(delta) > 0) lastDirection = core::normalize(delta);
+    lastDrag = drag;
+
     std::vector<Dab> images(1); // the dab, then its mirror images
-    images[0].centre = p;
-    images[0].centreNormal = normal;
-    images[0].centreTexel = texel;
+    std::vector<unsigned> axesOf{0};
     for (unsigned axes = 1; axes < 8; ++axes)
       if ((axes & settings.symmetry) == axes) {
-        Dab& d = images.emplace_back();
-        d.centre = mirrored(p, centre, axes);
-        d.centreNormal = mirrored(normal, {}, axes);
+        images.emplace_back();
+        axesOf.push_back(axes);
+      }
+    if (brush.stroke == StrokeKind::Anchored && !first) {
+      images = anchors; // where the stroke began, measured on the surface as it was then
+    } else if (brush.stroke == StrokeKind::Drag && !first) {
+      for (std::size_t k = 0; k < images.size(); ++k) {
+        Dab& d = images[k];
+        d.centre = tips[k];
+        d.centreTexel = nearestSample(document, d.centre);
+        d.centreNormal = areaNormal(document, d.centre, kAreaNormalRadius * radius,
+                                    core::vertexNormal(image, d.centreTexel));
+      }
+    } else {
+      const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
+      const core::Vec3f p = core::interpolatePosition(image, point);
+      const core::Vec3f normal =
+          areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
+      images[0].centre = p;
+      images[0].centreNormal = normal;
+      images[0].centreTexel = {std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
+                               std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+      for (std::size_t k = 1; k < images.size(); ++k) {
+        Dab& d = images[k];
+        d.centre = mirrored(p, centre, axesOf[k]);
+        d.centreNormal = mirrored(normal, {}, axesOf[k]);
         d.centreTexel = nearestSample(document, d.centre);
       }
-    for (Dab& dab : images) {
+    }
+    if (first) anchorNormal = images[0].centreNormal;
+    const bool keepAnchors = brush.stroke == StrokeKind::Anchored && first;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      Dab& dab = images[k];
       dab.radius = radius;
       dab.strength = strength * share;
       dab.pressure = pressure;
       dab.parameters = settings.parameters;
+      dab.drag = mirrored(drag, {}, axesOf[k]);
+      dab.strokeDelta = mirrored(delta, {}, axesOf[k]);
+      dab.strokeDirection = mirrored(lastDirection, {}, axesOf[k]);
       if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
-      std::vector<core::TexelRect> reach = engine.reach(document, brush.id, dab);
+      std::vector<core::TexelRect> reach = brush.stroke == StrokeKind::Anchored && !first
+                                               ? anchorReach[k]
+                                               : engine.reach(document, brush.id, dab);
+      if (keepAnchors) {
+        anchors.push_back(dab);
+        anchorReach.push_back(reach);
+      }
       for (const core::TexelRect& r : reach)
         undo.cover(r);
       for (const core::TexelRect& r : seamRuns(reach, n + 1)) // the seaming pass's partners
@@ -265,8 +324,12 @@ struct StrokeSession::State {
         touchedTiles.insert({t.x, t.y, t.width, t.height});
       for (const core::TexelRect& t : done.seams)
         touchedSeams.insert({t.x, t.y, t.width, t.height});
-      ++dabs;
+      if (brush.stroke == StrokeKind::Drag) { // the tip moves as the dab's centre moved
+        if (first) tips.push_back(dab.centre);
+        tips[k] += dab.strokeDelta * (dab.strength * dab.pressure);
+      }
     }
+    dabs += static_cast<int>(images.size());
   }
 
   // Moves the stroke to image point xy (in samples): the first move dabs there, later ones
@@ -279,12 +342,60 @@ struct StrokeSession::State {
     checkFinite("the pressure", pressure);
     const auto start = std::chrono::steady_clock::now();
     const int before = dabs;
-    if (!previous) {
+    if (!previous || brush.stroke == StrokeKind::Anchored) {
+      // An anchored stroke makes one dab where it began, again for each move: no walk.
+      if (!previous || xy != *previous) dabAt(xy, radius, strength, pressure);
       previous = xy;
-      dabAt(xy, radius, strength, pressure);
     } else {
       walkTo(xy, static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
              radius, strength, pressure);
+    }
+    engineMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return dabs - before;
+  }
+
+  // A dragging brush's move to the drag that ray gives: where it meets the drag plane (through
+  // the stroke's start, across the view; across the start's normal without a view). An anchored
+  // stroke dabs once with it; a drag stroke walks there from its last drag in steps of the
+  // spacing (object units), carrying the remainder as walkTo does.
+  int dragAlong(core::Vec3f origin, core::Vec3f direction, float radius, float strength,
+                float pressure) {
+    if (abandoned) throw std::logic_error("StrokeSession::dragAlong after a dab failed");
+    if (finished) throw std::logic_error("StrokeSession::dragAlong after finish()");
+    if (!previous)
+      throw std::logic_error("StrokeSession::dragAlong before the stroke's first move");
+    checkFinite("the radius", radius);
+    checkFinite("the strength", strength);
+    checkFinite("the pressure", pressure);
+    for (float v : {origin.x, origin.y, origin.z, direction.x, direction.y, direction.z})
+      checkFinite("the drag's ray", v);
+    const core::Vec3f plane = core::length(dragNormal) > 0 ? dragNormal : anchorNormal;
+    const float facing = core::dot(direction, plane);
+    if (std::abs(facing) < 1e-6f * core::length(direction)) return 0; // along the plane: no point
+    const core::Vec3f point = origin + direction * (core::dot(startPoint - origin, plane) / facing);
+    core::Vec3f target = point - startPoint;
+    target = target - plane * core::dot(target, plane);
+    const auto start = std::chrono::steady_clock::now();
+    const int before = dabs;
+    const std::array<double, 2> xy = *previous;
+    if (brush.stroke == StrokeKind::Anchored) {
+      dabAt(xy, radius, strength, pressure, target);
+    } else {
+      const double spacing =
+          std::max(static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
+                   1e-4 * diagonal);
+      const core::Vec3f from = lastDrag;
+      const double length = core::length(target - from);
+      travelled = std::min(travelled, spacing);
+      double used = 0;
+      while (travelled + (length - used) >= spacing) {
+        used += spacing - travelled;
+        travelled = 0;
+        dabAt(xy, radius, strength, pressure,
+              from + (target - from) * static_cast<float>(length > 0 ? used / length : 0.0));
+      }
+      travelled += length - used;
     }
     engineMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -327,6 +438,19 @@ int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float 
   const double n = state_->document.size();
   return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * n}, radius,
                         strength, pressure);
+}
+
+int StrokeSession::dragAlong(core::Vec3f origin, core::Vec3f direction, float radius,
+                             float strength, float pressure) {
+  if (state_->brush.stroke != StrokeKind::Anchored && state_->brush.stroke != StrokeKind::Drag)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "brush " + state_->brush.id + " does not drag (its \"stroke\" is \"" +
+                          std::string(toManifestName(state_->brush.stroke)) + "\")");
+  return state_->dragAlong(origin, direction, radius, strength, pressure);
+}
+
+bool StrokeSession::drags() const {
+  return state_->brush.stroke == StrokeKind::Anchored || state_->brush.stroke == StrokeKind::Drag;
 }
 
 std::vector<core::TexelRect> StrokeSession::takeTouched() {

@@ -13,7 +13,7 @@ float dabSpacing(const BrushManifest& brush, float spacing) {
 }
 
 float dabShare(const BrushManifest& brush, float spacing) {
-  if (brush.category != Category::Sculpt) return 1.0f;
+  if (brush.category != Category::Sculpt || brush.stroke != StrokeKind::Spaced) return 1.0f;
   return std::clamp(dabSpacing(brush, spacing), kMinDabSpacing, 1.0f);
 }
 

@@ -27,9 +27,11 @@ inline constexpr BrushUnit kFeatureUnit{"u_featureLayer", 3};
 inline constexpr BrushUnit kDiffuseUnit{"u_diffuseLayer", 6};
 /// A reparameterize brush's offset field (the engine's, not the document's).
 inline constexpr BrushUnit kOffsetsUnit{"u_offsets", 4};
-/// The document's layers and the offset field.
-inline constexpr std::array kLayerUnits{kPositionsUnit, kLayerUnit,   kMaskUnit,
-                                        kFeatureUnit,   kDiffuseUnit, kOffsetsUnit};
+/// The positions as they were when the stroke began ("needs": ["stroke_start"]).
+inline constexpr BrushUnit kStrokeStartUnit{"u_strokeStart", 5};
+/// The document's layers, the offset field and the stroke-start positions.
+inline constexpr std::array kLayerUnits{kPositionsUnit, kLayerUnit,   kMaskUnit,       kFeatureUnit,
+                                        kDiffuseUnit,   kOffsetsUnit, kStrokeStartUnit};
 /// A material's four maps: both projections' colour and surface (height, specular,
 /// reflectivity).
 inline constexpr std::array kMaterialUnits{

@@ -20,6 +20,7 @@ private slots:
   void sameShapeAtEveryN();
   void sameShapeAtEverySpacing();
   void symmetryDoublesTheDabs();
+  void sculptBrushSetRunsFromTheCommandLine();
   void unknownBrushIsAUsageError();
   void brokenPluginsAreReportedAndSkipped();
   void noEglIsAClearError();
@@ -129,6 +130,24 @@ void CliStrokeTest::symmetryDoublesTheDabs() {
   RUN_JSON(both, "stroke", sphere_, "--brush", "inflate", "--path", "0.3,0.3;0.3,0.4", "--symmetry",
            "x,y", "-o", file("both.exr"), "--json");
   QCOMPARE(both["dabs"].toInt(), 4 * plain["dabs"].toInt());
+}
+
+// Every brush of the sculpt set runs through `stroke`; grab drags from the path's first point
+// to its last (one anchored dab, again at each later point) in the view plane.
+void CliStrokeTest::sculptBrushSetRunsFromTheCommandLine() {
+  for (const char* brush :
+       {"grab", "snake-hook", "pinch", "crease", "layer", "clay-strips", "scrape", "twist"}) {
+    const QString out = file(QString(brush) + ".exr");
+    RUN_JSON(stroke, "stroke", sphere_, "--brush", brush, "--path", "0.5,0.5;0.6,0.5", "--view",
+             "0,0,6", "--radius", "0.1", "--strength", "1", "-o", out, "--json");
+    QVERIFY2(stroke["changed_tiles"].toInt() > 0, brush);
+    if (QString(brush) == "grab") QCOMPARE(stroke["dabs"].toInt(), 2);
+    RUN_JSON(info, "info", out, "--json");
+    QVERIFY2(info["closed"].toBool(), brush);
+    if (QString(brush) == "twist") continue; // turning a sphere about its normal keeps its shape
+    RUN_JSON(compare, "compare", sphere_, out, "--json");
+    QVERIFY2(compare["hausdorff"].toDouble() > 1e-3, brush);
+  }
 }
 
 void CliStrokeTest::unknownBrushIsAUsageError() {

@@ -90,6 +90,7 @@ class BrushManifestTest : public QObject {
 private slots:
   void goodManifestParses();
   void templateBrushParses();
+  void strokeKindsAndStrokeStartParse();
   void builtInBrushesParse();
   void builtInBrushesDeclareWhatTheyRead();
   void readmeMatchesThePreludeAndTheSchema();
@@ -197,6 +198,34 @@ void BrushManifestTest::goodManifestParses() {
   QVERIFY(!m.parameter("missing"));
 }
 
+// API 3: "stroke" and "needs": ["stroke_start"]; an anchored stroke captures the stroke start
+// without asking, and older manifests make spaced strokes.
+void BrushManifestTest::strokeKindsAndStrokeStartParse() {
+  const auto parse = [&](const char* name, const std::string& extra) {
+    return parseBrushManifest(writeBrush(root() / name, R"({"id": "x", "name": "X", "api": 3,
+      "shader": "brush.glsl", "writes": ["positions"], "area": "volume")" +
+                                                            extra + "}"));
+  };
+  try {
+    const BrushManifest anchored = parse("anchored", R"(, "stroke": "anchored")");
+    QCOMPARE(anchored.stroke, StrokeKind::Anchored);
+    QVERIFY(anchored.needsStrokeStart());
+    const BrushManifest layer =
+        parse("layer", R"(, "stroke": "target", "needs": ["stroke_start", "normal"])");
+    QCOMPARE(layer.stroke, StrokeKind::Target);
+    QVERIFY((layer.needs == std::vector{BrushNeed::StrokeStart, BrushNeed::Normal}));
+    QVERIFY(layer.needsStrokeStart());
+    const BrushManifest drag = parse("drag", R"(, "stroke": "drag")");
+    QCOMPARE(drag.stroke, StrokeKind::Drag);
+    QVERIFY(!drag.needsStrokeStart());
+    const BrushManifest plain = parse("plain", "");
+    QCOMPARE(plain.stroke, StrokeKind::Spaced);
+    QVERIFY(!plain.needsStrokeStart());
+  } catch (const BrushLoadError& e) {
+    QFAIL(e.what());
+  }
+}
+
 void BrushManifestTest::templateBrushParses() {
   const fs::path file =
       fs::path(OCTACLAY_SOURCE_DIR) / "plugins" / "examples" / "template-brush" / "manifest.json";
@@ -261,6 +290,11 @@ void BrushManifestTest::builtInBrushesDeclareWhatTheyRead() {
                (m.id + ": \"reads\" and " + std::string(toManifestName(layer))).c_str());
     // Another texel of the written layer (fetchLayer, u_layer): none of the built-ins.
     QVERIFY2(!mentions(code, R"(\b(fetchLayer|u_layer)\b)"), m.id.c_str());
+    // The stroke-start positions exactly where the manifest asks for them.
+    QVERIFY2(
+        mentions(code, R"(\b(strokeStartAt|strokeStartNormalAt|u_strokeStart)\b)") ==
+            (std::find(m.needs.begin(), m.needs.end(), BrushNeed::StrokeStart) != m.needs.end()),
+        (m.id + ": \"needs\": [\"stroke_start\"]").c_str());
     const bool usesNormal = mentions(code, R"(\bb\.normal\b)");
     QVERIFY2(usesNormal ==
                  (std::find(m.needs.begin(), m.needs.end(), BrushNeed::Normal) != m.needs.end()),
@@ -337,7 +371,7 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("api a string", patched({{"api", "1"}}), R"(api: expected an integer, got "1")");
   row("api fractional", patched({{"api", 1.5}}), "api: expected an integer, got 1.5");
   row("api zero", patched({{"api", 0}}), "api: must be 1 or more, got 0");
-  row("api newer", patched({{"api", 3}}), "api: needs Octaclay brush API 3, this Octaclay has 2");
+  row("api newer", patched({{"api", 4}}), "api: needs Octaclay brush API 4, this Octaclay has 3");
   row("writes a string", patched({{"writes", "positions"}}),
       R"(writes: expected an array of layers, got "positions" (use ["positions"]))");
   row("spacing a string", patched({{"spacing", "wide"}}),
@@ -362,7 +396,14 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("mix a string", patched({{"mix", "diffuse"}}),
       R"(mix: expected an array of layers, got "diffuse" (use ["diffuse"]))");
   row("unknown need", patched({{"needs", QJsonArray{"normals"}}}),
-      R"(needs[0]: unknown need "normals" (use normal))");
+      R"(needs[0]: unknown need "normals" (use normal or stroke_start))");
+  row("stroke_start with api 2", patched({{"api", 2}, {"needs", QJsonArray{"stroke_start"}}}),
+      R"(needs[0]: "stroke_start" needs "api": 3 (it came with brush API 3), the manifest says 2)");
+  row("stroke with api 2", patched({{"api", 2}, {"stroke", "anchored"}}),
+      R"(stroke: needs "api": 3 (stroke kinds came with brush API 3), the manifest says 2)");
+  row("unknown stroke", patched({{"api", 3}, {"stroke", "hook"}}),
+      R"(stroke: unknown stroke kind "hook" (use spaced, target, drag or anchored))");
+  row("stroke a number", patched({{"api", 3}, {"stroke", 1}}), "stroke: expected a string, got 1");
   row("needs a string", patched({{"needs", "normal"}}),
       R"(needs: expected an array, got "normal" (use ["normal"]))");
   row("need twice", patched({{"needs", QJsonArray{"normal", "normal"}}}),
@@ -541,8 +582,8 @@ void BrushManifestTest::missingShaderNamesFolder() {
 
 void BrushManifestTest::newerApiWinsOverUnknownFields() {
   // A manifest for a newer Octaclay may use fields this one does not know: say what matters.
-  const fs::path file = writeBrush(root() / "future", patched({{"api", 3}, {"stencil", true}}));
-  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 3, this Octaclay has 2");
+  const fs::path file = writeBrush(root() / "future", patched({{"api", 4}, {"stencil", true}}));
+  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 4, this Octaclay has 3");
 }
 
 void BrushManifestTest::defaultSearchPathOrder() {

@@ -32,6 +32,11 @@ struct Dab {
   /// Splats project their material along this object-space direction (the camera's, through
   /// the centre); unset: along the inward centre normal.
   std::optional<core::Vec3f> viewDirection;
+  /// The stroke (API 3, u_strokeDirection, u_strokeDelta, u_drag): the drag since the stroke
+  /// began (object units; in the view plane, or along the path on the stroke-start surface),
+  /// its change since the stroke's previous dab, and that change's direction (unit; the last
+  /// non-zero one, zero before the stroke moved).
+  core::Vec3f drag, strokeDelta, strokeDirection;
 };
 
 /// What a dab touched.
@@ -105,6 +110,8 @@ public:
   /// whole stroke moves the surface and its paint by one interpolation, not one per dab. Without
   /// an open stroke every dab is a stroke of its own. Other brushes ignore it. runStroke and
   /// StrokeSession call them; endStroke() may be called when no stroke is open.
+  /// A brush that needs "stroke_start" sees the positions as they were at the stroke's first
+  /// such dab (u_strokeStart): captured once per stroke (once per dab without an open stroke).
   void beginStroke() { strokeOpen_ = true; }
   void endStroke();
 
@@ -163,6 +170,12 @@ private:
   /// Forgets the stroke's base layers and zeroes the offset field (where: its texels that may
   /// be non-zero).
   void resetOffsets(const std::vector<core::TexelRect>& where);
+  /// The positions at the stroke's start, for brushes that need "stroke_start"; taken at the
+  /// stroke's first such dab of strokeStartOf_ (null: not taken).
+  Texture strokeStart_;
+  const GpuDocument* strokeStartOf_ = nullptr;
+  /// Copies the document's positions into strokeStart_ unless this stroke already did.
+  void captureStrokeStart(GpuDocument& document);
   Program resampleProgram_;
   Framebuffer resampleTarget_;
   /// A reparameterize dab over rects: iterations steps of the brush's offset field, then one

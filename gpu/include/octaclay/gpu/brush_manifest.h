@@ -12,8 +12,9 @@
 namespace octaclay::gpu {
 
 /// The brush API major version this build accepts: a manifest whose "api" is higher is refused.
-/// API 2 added "pass" (reparameterize brushes) and "iterations".
-inline constexpr int kBrushApiVersion = 2;
+/// API 2 added "pass" (reparameterize brushes) and "iterations"; API 3 "stroke" (anchored and
+/// drag strokes), the need "stroke_start" and the stroke's direction, movement and drag.
+inline constexpr int kBrushApiVersion = 3;
 /// The most steps a reparameterize brush may ask for per dab ("iterations").
 inline constexpr int kMaxIterations = 64;
 
@@ -29,8 +30,16 @@ enum class Category { Sculpt, Paint, Splat };
 /// uniform: the engine binds the chosen material's maps (u_material*, see the prelude).
 enum class ParameterType { Float, Int, Bool, Color, Enum, Material };
 /// What the engine computes for a brush beyond its layers ("needs"): Normal is each sample's
-/// own surface normal (BrushInput.normal; six position reads a texel).
-enum class BrushNeed { Normal };
+/// own surface normal (BrushInput.normal; six position reads a texel); StrokeStart (API 3) the
+/// positions as they were when the stroke began (u_strokeStart, captured once per stroke).
+enum class BrushNeed { Normal, StrokeStart };
+/// How a stroke's dabs fall ("stroke", API 3): Spaced, along the path, each applying strength ×
+/// spacing (they add up); Target, along the path, each applying the whole strength (dabs that
+/// converge on a target); Drag, along the path with the whole strength, each centred where the
+/// previous one left the surface it pulled (the tip follows the drag); Anchored, one dab whose
+/// centre stays where the stroke began, run again from the stroke-start positions as the drag
+/// changes.
+enum class StrokeKind { Spaced, Target, Drag, Anchored };
 /// What one dab's pass computes ("pass"): Layers, each written layer's new value (brush() or
 /// brushLayers()); Reparameterize, an offset in the image's parameter domain per sample
 /// (brushOffset()), after which the engine resamples every layer at the offset coordinates from
@@ -46,6 +55,7 @@ std::string_view toManifestName(Category category);
 std::string_view toManifestName(ParameterType type);
 std::string_view toManifestName(BrushNeed need);
 std::string_view toManifestName(PassKind pass);
+std::string_view toManifestName(StrokeKind stroke);
 
 /// One user-tunable value of a brush, shown as a widget and passed as uniform u_<id> (with '-'
 /// replaced by '_').
@@ -88,6 +98,8 @@ struct BrushManifest {
   PassKind pass = PassKind::Layers;
   /// Reparameterize only: brushOffset() steps composed per dab, 1 … kMaxIterations.
   int iterations = 1;
+  /// How the stroke's dabs fall (API 3); Anchored implies StrokeStart.
+  StrokeKind stroke = StrokeKind::Spaced;
   AreaMode area = AreaMode::Volume;
   Falloff falloff = Falloff::Smooth;
   /// Falloff::Curve only: 2 … 64 weights in [0, 1], sampled evenly from centre to rim.
@@ -103,6 +115,9 @@ struct BrushManifest {
   bool readsLayer(core::EditLayer layer) const;
   /// Whether the passes compute each sample's normal: needs Normal, or area VolumeNormal.
   bool needsNormal() const;
+  /// Whether the engine captures the positions at the stroke's start: needs StrokeStart, or an
+  /// anchored stroke.
+  bool needsStrokeStart() const;
   /// The parameter with this id, or nullptr.
   const BrushParameter* parameter(std::string_view parameterId) const;
   /// folder / shaderFile.

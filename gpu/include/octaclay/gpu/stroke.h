@@ -87,6 +87,17 @@ public:
   /// moveToUv at sample s's image point (s / N). Throws core::Error(InvalidArgument) for a
   /// sample outside the image, and what moveToUv throws.
   int moveTo(core::Sample s, float radius, float strength, float pressure = 1.0f);
+  /// Whether the brush drags ("stroke" "anchored" or "drag"): after the first move (moveToUv,
+  /// where the drag starts) the modeller moves it with dragAlong().
+  bool drags() const;
+  /// A dragging brush's move to the pointer's ray (object space; origin and direction): the drag
+  /// is from the stroke's start to where the ray meets the view plane through it (across the
+  /// start's normal without settings.viewEye). An anchored stroke dabs once with that drag, a
+  /// drag stroke walks to it in steps of the spacing. A ray along the plane makes no dab. Returns
+  /// the dabs made. Throws core::Error(InvalidArgument) for a brush that does not drag or a
+  /// value that is not finite, std::logic_error before the first move.
+  int dragAlong(core::Vec3f origin, core::Vec3f direction, float radius, float strength,
+                float pressure = 1.0f);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
 

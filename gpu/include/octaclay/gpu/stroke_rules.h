@@ -30,7 +30,8 @@ float dabSpacing(const BrushManifest& brush, float spacing);
 
 /// The share of a stroke's strength each dab applies: dabSpacing(brush, spacing) clamped to
 /// [kMinDabSpacing, 1] for sculpt brushes (overlapping dabs add up), 1 for paint and splat
-/// brushes (they blend toward a target, so overlapping dabs converge instead).
+/// brushes (they blend toward a target, so overlapping dabs converge instead) and for brushes
+/// whose "stroke" is not "spaced" (their dabs converge, follow the drag or are anchored).
 float dabShare(const BrushManifest& brush, float spacing);
 
 /// A point of the image's surface mesh (core::GridPoint) at image coordinates (x, y), in
