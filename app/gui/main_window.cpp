@@ -2,6 +2,7 @@
 
 #include "brush_panel.h"
 #include "document_actions.h"
+#include "help_menu.h"
 #include "layers_panel.h"
 #include "lod_follow.h"
 #include "lod_generator.h"
@@ -349,6 +350,7 @@ void MainWindow::startSession() {
   const int seconds = QSettings().value("autosave/seconds", options_.autosaveSeconds).toInt();
   options_.autosaveSeconds = seconds;
   if (seconds > 0) autosaveTimer_->start(seconds * 1000);
+  if (options_.quickStartOnFirstRun) showQuickStartOnFirstRun(*this);
 }
 
 void MainWindow::rebuildRecentMenu() {

@@ -30,15 +30,16 @@ class LodPanel;
 class ViewportWidget;
 
 /// The modeller's window: the viewport, the Brushes, Layers and Level of detail docks, the
-/// File/Edit/Mesh/View menus, undo, the status bar, autosave and crash recovery.
+/// File/Edit/Mesh/View/Help menus, undo, the status bar, autosave and crash recovery.
 class MainWindow : public QMainWindow {
   Q_OBJECT
 public:
   struct Options {
-    QString recoveryFolder;       ///< empty: RecoveryStore::defaultFolder()
-    qint64 sessionPid = 0;        ///< 0: this process (tests simulate other sessions)
-    int autosaveSeconds = 120;    ///< 0 turns autosave off
-    bool askAboutRecovery = true; ///< false: pendingRecovery() is left for the caller
+    QString recoveryFolder;           ///< empty: RecoveryStore::defaultFolder()
+    qint64 sessionPid = 0;            ///< 0: this process (tests simulate other sessions)
+    int autosaveSeconds = 120;        ///< 0 turns autosave off
+    bool askAboutRecovery = true;     ///< false: pendingRecovery() is left for the caller
+    bool quickStartOnFirstRun = true; ///< startSession() shows Help ▸ Quick Start once
   };
   /// What a file chooser is asked for.
   enum class FileRequest { Open, SaveAs, Export, Import, ExportLod, SaveCompressed };
@@ -109,7 +110,8 @@ public:
   /// Loads the pending recovery as the current (modified) document.
   bool recover() { return documents_->recover(); }
   /// Checks for a crashed session's recovery (asking the user when options say so) and starts
-  /// this session's autosave. Call once after show().
+  /// this session's autosave; on a first start, opens Help ▸ Quick Start once (see
+  /// Options::quickStartOnFirstRun). Call once after show().
   void startSession();
 
 protected:

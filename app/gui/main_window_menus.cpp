@@ -2,6 +2,7 @@
 // (whole-model operations) and View.
 
 #include "brush_panel.h"
+#include "help_menu.h"
 #include "lod_panel.h"
 #include "main_window.h"
 #include "save_compressed_dialog.h"
@@ -90,8 +91,8 @@ void MainWindow::buildMenus() {
         const QString path = currentPath().isEmpty() ? choose(FileRequest::SaveAs) : currentPath();
         if (!path.isEmpty()) saveDocument(path);
       });
-  connect(add(file, tr("Save &As…"), "actionSaveAs", QKeySequence::SaveAs), &QAction::triggered,
-          this, [this] {
+  connect(add(file, tr("Save &As…"), "actionSaveAs", QKeySequence(tr("Ctrl+Shift+S"))),
+          &QAction::triggered, this, [this] {
             const QString path = choose(FileRequest::SaveAs);
             if (!path.isEmpty()) saveDocument(path);
           });
@@ -135,9 +136,12 @@ void MainWindow::buildMenus() {
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = undoStack_->createRedoAction(this, tr("&Redo"));
   redo->setObjectName("actionRedo");
-  redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence::Redo});
+  // Both keys everywhere; QKeySequence::Redo is one of them on each platform, and an action
+  // holding the same key twice makes Qt drop it as ambiguous.
+  redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
   edit->addAction(undo);
   edit->addAction(redo);
+  addHistoryAction(*edit, *undoStack_, *this);
   edit->addSeparator();
   connect(add(edit, tr("&Preferences…"), "actionPreferences"), &QAction::triggered, this, [this] {
     QDialog dialog(this);
@@ -184,6 +188,8 @@ void MainWindow::buildMenus() {
   view->addSeparator();
   connect(add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(tr("Home"))),
           &QAction::triggered, viewport_, &ViewportWidget::resetCamera);
+
+  addHelpMenu(*this);
 }
 
 } // namespace octaclay::app

@@ -1,5 +1,5 @@
-// The main window as the render tests open it: no recovery prompt, no autosave, shown at
-// 1000 × 700 with its viewport's GL ready.
+// The main window as the render tests open it: no recovery prompt, no autosave, no Quick
+// Start, shown at 1000 × 700 with its viewport's GL ready.
 #pragma once
 
 #include "main_window.h"
@@ -18,6 +18,7 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
   if (options.recoveryFolder.isEmpty()) options.recoveryFolder = recoveryFolder;
   options.askAboutRecovery = false;
   options.autosaveSeconds = 0;
+  options.quickStartOnFirstRun = false;
   auto w = std::make_unique<MainWindow>(options);
   w->resize(1000, 700);
   w->show();

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QDialog>
+
+class QUndoStack;
+class QUndoView;
+
+namespace octaclay::app {
+
+/// Edit ▸ History: the undo stack as a list (Qt's QUndoView), from "<new model>" to the newest
+/// step; clicking a row undoes or redoes to that step. Non-modal, so the user can sculpt and
+/// watch the list grow.
+class HistoryDialog : public QDialog {
+  Q_OBJECT
+public:
+  HistoryDialog(QUndoStack* stack, QWidget* parent = nullptr);
+  QUndoView* view() const { return view_; }
+
+private:
+  QUndoView* view_ = nullptr;
+};
+
+} // namespace octaclay::app
