@@ -49,6 +49,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
           &MainWindow::updateSaliencyWanted);
   buildMenus();
   connectParts();
+  buildToolBars();
 
   fpsLabel_ = new QLabel(this);
   dabLabel_ = new QLabel(this);

@@ -120,6 +120,8 @@ protected:
 private:
   void buildMenus();
   void buildDocks();
+  /// The brush tool bar, the header above the viewport and F / Shift+F (main_window_toolbars.cpp).
+  void buildToolBars();
   void connectParts();
   void updateStatus();
   /// Enables the Mesh menu's actions when they can run (a document, no stroke, no task).

@@ -132,6 +132,8 @@ public:
   bool keepsDetail() const { return session_.keepDetail(); }
 
   void resetCamera();
+  /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
+  float modelDiagonal() const { return session_.diagonal(); }
   /// The surface point under widget position p (logical pixels), if any.
   std::optional<core::PickHit> pickAt(QPointF p) const;
   /// Where object-space point p appears in the widget (logical pixels).

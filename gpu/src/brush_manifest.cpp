@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -39,7 +40,7 @@ constexpr std::array kStrokeNames{"spaced", "target", "drag", "anchored"};
 constexpr std::array kTopLevelFields{
     "id",      "name",       "version", "api",        "description", "category", "shader",
     "reads",   "writes",     "mix",     "needs",      "area",        "falloff",  "falloffCurve",
-    "spacing", "parameters", "pass",    "iterations", "stroke"};
+    "spacing", "parameters", "pass",    "iterations", "stroke",      "icon"};
 constexpr std::array kParameterFields{"id",  "label", "tooltip", "type",   "default",
                                       "min", "max",   "step",    "options"};
 // Parameter ids whose uniform would collide with one the host declares (gpu/shaders/prelude.glsl
@@ -80,6 +81,10 @@ private:
 
     manifest.shaderFile = requiredString(root, "shader", "shader");
     checkShader(manifest);
+    if (auto icon = optionalString(root, "icon", "icon")) {
+      manifest.iconFile = *icon;
+      checkIcon(manifest);
+    }
 
     if (const json* reads = root.contains("reads") ? &root["reads"] : nullptr)
       manifest.reads = parseLayers(*reads, "reads");
@@ -129,6 +134,40 @@ private:
     if (!fs::exists(status)) fail("shader", name + " not found in " + folder.string());
     if (!fs::is_regular_file(status))
       fail("shader", name + " in " + folder.string() + " is not a regular file");
+  }
+
+  // A relative path to an SVG or PNG inside the brush folder (subfolders allowed); a path or a
+  // link that leads out of the folder is refused, so a brush shows only its own files.
+  void checkIcon(const BrushManifest& manifest) const {
+    const std::string& name = manifest.iconFile;
+    const fs::path relative(name);
+    const auto leaves = [&] {
+      if (name.empty() || relative.is_absolute() || relative.has_root_path() ||
+          name.find('\\') != std::string::npos)
+        return true;
+      for (const fs::path& part : relative)
+        if (part == "..") return true;
+      return false;
+    };
+    if (leaves())
+      fail("icon", quote(name) + " must be a path inside the brush folder (no .. or leading /)");
+    std::string extension = relative.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".svg" && extension != ".png")
+      fail("icon", quote(name) + " must be an .svg or .png file");
+    const fs::path folder = manifest.folder.empty() ? fs::path(".") : manifest.folder;
+    std::error_code ec;
+    const fs::file_status status = fs::status(folder / relative, ec); // a stat: never opens it
+    if (!fs::exists(status)) fail("icon", name + " not found in " + folder.string());
+    if (!fs::is_regular_file(status))
+      fail("icon", name + " in " + folder.string() + " is not a regular file");
+    const fs::path real = fs::weakly_canonical(folder / relative, ec);
+    const fs::path realFolder = fs::weakly_canonical(folder, ec);
+    const auto [end, rest] =
+        std::mismatch(realFolder.begin(), realFolder.end(), real.begin(), real.end());
+    if (ec || end != realFolder.end())
+      fail("icon", name + " leads out of " + folder.string() + " (through a link)");
   }
 
   // example: the layer the message's hint shows.

@@ -3,6 +3,7 @@
 // linear push never makes the surface cross itself, and dabs on seams and corner poles have the
 // same effect as away from them (no kink).
 
+#include "../mesh_self_intersections.h"
 #include "brush_test_support.h"
 #include "self_intersection.h"
 
@@ -21,6 +22,8 @@
 using namespace octaclay;
 using namespace octaclay::gpu;
 using namespace octaclay::gpu::testing;
+using octaclay::testing::changedVertices;
+using octaclay::testing::selfIntersections;
 
 namespace {
 

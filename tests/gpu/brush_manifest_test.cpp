@@ -100,6 +100,7 @@ private slots:
   void syntaxErrorGivesBytePosition();
   void duplicateKeyIsRefused();
   void missingShaderNamesFolder();
+  void iconMustBeAnSvgOrPngInsideTheFolder();
   void newerApiWinsOverUnknownFields();
 
   void defaultSearchPathOrder();
@@ -457,6 +458,15 @@ void BrushManifestTest::badManifestIsRefused_data() {
       "author: unknown field (prefix your own fields with x-)");
   row("shader path", patched({{"shader", "../other/brush.glsl"}}),
       R"(shader: "../other/brush.glsl" must be a file name beside the manifest)");
+  row("icon leaving the folder", patched({{"icon", "../push/icon.svg"}}),
+      R"(icon: "../push/icon.svg" must be a path inside the brush folder (no .. or leading /))");
+  row("icon absolute", patched({{"icon", "/usr/share/icons/a.png"}}),
+      R"(icon: "/usr/share/icons/a.png" must be a path inside the brush folder (no .. or leading /))");
+  row("icon empty", patched({{"icon", ""}}),
+      R"(icon: "" must be a path inside the brush folder (no .. or leading /))");
+  row("icon not an image", patched({{"icon", "brush.glsl"}}),
+      R"(icon: "brush.glsl" must be an .svg or .png file)");
+  row("icon not a string", patched({{"icon", 3}}), "icon: expected a string, got 3");
 
   row("parameters not an array", patched({{"parameters", QJsonObject{}}}),
       "parameters: expected an array, got an object");
@@ -578,6 +588,29 @@ void BrushManifestTest::missingShaderNamesFolder() {
   const fs::path folder = root() / "no-shader";
   const fs::path file = writeBrush(folder, kGoodManifest, false);
   QCOMPARE(errorOf(file), file.string() + ": shader: brush.glsl not found in " + folder.string());
+}
+
+void BrushManifestTest::iconMustBeAnSvgOrPngInsideTheFolder() {
+  const fs::path folder = root() / "with-icon";
+  const fs::path file = writeBrush(folder, patched({{"icon", "art/raise.SVG"}}));
+  QCOMPARE(errorOf(file), file.string() + ": icon: art/raise.SVG not found in " + folder.string());
+  writeFile(folder / "art" / "raise.SVG", "<svg xmlns='http://www.w3.org/2000/svg'/>");
+  QCOMPARE(errorOf(file), std::string("parsed"));
+  const BrushManifest m = parseBrushManifest(file);
+  QCOMPARE(m.iconFile, std::string("art/raise.SVG"));
+  QCOMPARE(m.iconPath(), folder / "art" / "raise.SVG");
+  QVERIFY(parseBrushManifest(writeBrush(root() / "no-icon", kGoodManifest)).iconPath().empty());
+
+  // A folder named like an icon, and a link that leads out of the brush folder.
+  fs::create_directories(folder / "dir.png");
+  writeFile(file, patched({{"icon", "dir.png"}}));
+  QCOMPARE(errorOf(file),
+           file.string() + ": icon: dir.png in " + folder.string() + " is not a regular file");
+  writeFile(root() / "outside.png", "png");
+  fs::create_symlink(root() / "outside.png", folder / "linked.png");
+  writeFile(file, patched({{"icon", "linked.png"}}));
+  QCOMPARE(errorOf(file), file.string() + ": icon: linked.png leads out of " + folder.string() +
+                              " (through a link)");
 }
 
 void BrushManifestTest::newerApiWinsOverUnknownFields() {

@@ -108,6 +108,9 @@ struct BrushManifest {
   float spacing = 0.15f;
   /// In manifest order; ids are unique.
   std::vector<BrushParameter> parameters;
+  /// Optional "icon": an SVG or PNG path relative to folder, inside it; the file existed when
+  /// parsed. Empty: the modeller draws one from the name and category.
+  std::string iconFile;
   /// The folder holding manifest.json and the shader.
   std::filesystem::path folder;
 
@@ -122,6 +125,10 @@ struct BrushManifest {
   const BrushParameter* parameter(std::string_view parameterId) const;
   /// folder / shaderFile.
   std::filesystem::path shaderPath() const { return folder / shaderFile; }
+  /// folder / iconFile, or empty without an icon.
+  std::filesystem::path iconPath() const {
+    return iconFile.empty() ? std::filesystem::path() : folder / iconFile;
+  }
 };
 
 /// A brush that cannot be loaded. what() always starts with the manifest (or shader) file path,
@@ -136,7 +143,8 @@ public:
 /// errors (a typo must not be silently ignored) except those whose name starts with "x-".
 /// Throws BrushLoadError on the first problem: unreadable file, JSON syntax (with the byte
 /// position), a missing or mistyped field, a value out of range, an api newer than
-/// kBrushApiVersion, or a shader file that is not beside the manifest. Only a regular file of at
+/// kBrushApiVersion, a shader file that is not beside the manifest, or an icon that is not an
+/// .svg or .png file inside the brush folder. Only a regular file of at
 /// most 1 MB is read: a FIFO, a device (a link to /dev/zero) or a link loop is refused, naming
 /// the file, without blocking. Checks take time linear in the manifest's size. Any thread.
 BrushManifest parseBrushManifest(const std::filesystem::path& manifestFile);

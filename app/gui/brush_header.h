@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QToolBar>
+
+#include <array>
+
+class QAction;
+class QLabel;
+class QSlider;
+
+namespace octaclay::app {
+
+/// The compact bar above the viewport: the current brush's radius and strength as sliders with
+/// their values, and the symmetry toggles X, Y, Z. It shows values and reports the user's edits;
+/// the Brushes dock owns them (MainWindow keeps the two in step). Object names: headerRadius,
+/// headerStrength (the sliders), headerSymmetryX/Y/Z (checkable actions). GUI thread.
+class BrushHeader : public QToolBar {
+  Q_OBJECT
+public:
+  explicit BrushHeader(QWidget* parent = nullptr);
+
+  /// Shows these values without emitting anything. radius: fraction of the bounding-box
+  /// diagonal; strength in [0, 1]; symmetry: gpu::SymmetryAxis bits.
+  void setValues(float radius, float strength, unsigned symmetry);
+
+  /// The radius slider's scale: position (0 … kRadiusSteps) ↔ radius, logarithmic from
+  /// kMinRadius to kMaxRadius so small brushes get fine steps.
+  static constexpr int kRadiusSteps = 1000;
+  static int radiusToPosition(float radius);
+  static float positionToRadius(int position);
+
+signals:
+  void radiusEdited(float radius);
+  void strengthEdited(float strength);
+  void symmetryEdited(unsigned axes);
+
+private:
+  void showLabels(float radius, float strength);
+
+  QSlider* radius_ = nullptr;
+  QSlider* strength_ = nullptr;
+  QLabel* radiusLabel_ = nullptr;
+  QLabel* strengthLabel_ = nullptr;
+  std::array<QAction*, 3> symmetry_{};
+};
+
+} // namespace octaclay::app

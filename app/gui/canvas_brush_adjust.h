@@ -1,0 +1,67 @@
+#pragma once
+
+#include "octaclay/core/geometry/vec.h"
+
+#include <QObject>
+#include <QPointF>
+#include <QPointer>
+
+class QWidget;
+
+namespace octaclay::app {
+
+class BrushPanel;
+class ViewportWidget;
+
+/// F / Shift+F on the canvas: begin() at the pointer's last place over the viewport, then moving
+/// the pointer sideways changes the current brush's radius (the ring's edge follows the pointer:
+/// one pixel is one pixel of radius at the ring's centre) or its strength (kPixelsPerStrength
+/// pixels for 0 → 100 %), written to the Brushes dock as it goes so the ring and the header show
+/// it live. A left click (at its release) or Enter confirms; Esc, a right click or another
+/// begin() cancels and restores the value it started from. While it runs it watches the whole
+/// application's input and lets no click through to the viewport. GUI thread.
+class CanvasBrushAdjust : public QObject {
+  Q_OBJECT
+public:
+  enum class Mode { None, Radius, Strength };
+  static constexpr double kPixelsPerStrength = 300.0;
+
+  CanvasBrushAdjust(ViewportWidget* viewport, BrushPanel* panel, QObject* parent = nullptr);
+  ~CanvasBrushAdjust() override;
+
+  /// Starts adjusting (cancelling one under way). Refused (false) without a current brush.
+  bool begin(Mode mode);
+  void confirm();
+  void cancel();
+  Mode mode() const { return mode_; }
+  /// Where (viewport pixels) the adjustment began: the pointer's place then.
+  QPointF origin() const { return origin_; }
+  /// The value the adjustment started from.
+  float startValue() const { return start_; }
+  /// Pixels of sideways motion per unit of radius (a fraction of the model's diagonal), as
+  /// measured at begin() at the ring's centre.
+  double pixelsPerRadius() const { return pixelsPerRadius_; }
+
+signals:
+  /// The adjustment ended: confirmed or cancelled.
+  void finished(bool confirmed);
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+  void moveTo(QPointF viewportPos);
+  void end(bool confirm);
+
+  QPointer<ViewportWidget> viewport_;
+  QPointer<BrushPanel> panel_;
+  QWidget* overlay_ = nullptr;
+  Mode mode_ = Mode::None;
+  QPointF lastPos_; // the pointer's last place over the viewport
+  QPointF origin_;  // where the adjustment began
+  float start_ = 0; // the value then
+  double pixelsPerRadius_ = 1;
+  Qt::MouseButton swallowRelease_ = Qt::NoButton;
+};
+
+} // namespace octaclay::app
