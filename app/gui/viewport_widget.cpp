@@ -3,6 +3,7 @@
 #include "camera_control.h"
 #include "current_context.h"
 #include "model_prop.h"
+#include "viewport_overlay.h"
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
@@ -78,6 +79,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   lodRenderer_->AddViewProp(lodProp_);
   lodRenderer_->SetViewport(0.5, 0, 1, 1);
   lodProp_->draw = [this](vtkRenderer* r) { drawModel(r); };
+  overlay_ = new ViewportOverlay(this);
 }
 
 ViewportWidget::~ViewportWidget() {
@@ -265,6 +267,7 @@ void ViewportWidget::setShowDiffuse(bool show) {
 void ViewportWidget::setLodDisplay(LodDisplay display) {
   lodDisplay_ = display;
   applyLodDisplay();
+  overlay_->setLodDisplay(display);
   update();
 }
 
@@ -330,6 +333,7 @@ QRectF ViewportWidget::modelRect() const {
 
 void ViewportWidget::setPreview(gpu::ModelView::Preview preview) {
   preview_ = preview;
+  overlay_->setPreview(preview);
   update();
 }
 
