@@ -4,6 +4,7 @@
 #include "brush_panel.h"
 #include "help_menu.h"
 #include "lod_panel.h"
+#include "looks_menu.h"
 #include "main_window.h"
 #include "save_compressed_dialog.h"
 #include "viewport_widget.h"
@@ -188,6 +189,7 @@ void MainWindow::buildMenus() {
   view->addSeparator();
   connect(add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(tr("Home"))),
           &QAction::triggered, viewport_, &ViewportWidget::resetCamera);
+  addLookActions(view, viewport_);
 
   addHelpMenu(*this);
 }

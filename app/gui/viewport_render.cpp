@@ -27,6 +27,7 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   view.showDiffuse = showDiffuse_;
   view.showMask = showMask_;
   view.preview = preview_;
+  applyLooks(view, r);
   if (hover_ && drag_ != Drag::Orbit && drag_ != Drag::Pan) {
     view.showBrush = true;
     view.brushCentre = hover_->position;

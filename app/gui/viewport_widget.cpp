@@ -4,6 +4,7 @@
 #include "current_context.h"
 #include "data_folders.h"
 #include "model_prop.h"
+#include "viewport_overlay.h"
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
@@ -79,6 +80,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   lodRenderer_->AddViewProp(lodProp_);
   lodRenderer_->SetViewport(0.5, 0, 1, 1);
   lodProp_->draw = [this](vtkRenderer* r) { drawModel(r); };
+  overlay_ = new ViewportOverlay(this);
 }
 
 ViewportWidget::~ViewportWidget() {
@@ -264,6 +266,7 @@ void ViewportWidget::setShowDiffuse(bool show) {
 void ViewportWidget::setLodDisplay(LodDisplay display) {
   lodDisplay_ = display;
   applyLodDisplay();
+  overlay_->setLodDisplay(display);
   update();
 }
 
@@ -329,6 +332,7 @@ QRectF ViewportWidget::modelRect() const {
 
 void ViewportWidget::setPreview(gpu::ModelView::Preview preview) {
   preview_ = preview;
+  overlay_->setPreview(preview);
   update();
 }
 

@@ -5,6 +5,7 @@
 #include "saliency_keeper.h"
 #include "sculpt_session.h"
 #include "stroke_stabilizer.h"
+#include "view_looks.h"
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
@@ -37,6 +38,7 @@ class ModelRenderer;
 namespace octaclay::app {
 
 class ModelProp;
+class ViewportOverlay;
 
 /// Frame and stroke figures for the status bar.
 struct ViewportStats {
@@ -154,6 +156,12 @@ public:
   vtkRenderer* renderer() const;
   vtkGenericOpenGLRenderWindow* renderWindow() const;
 
+  /// The material (lit or a matcap), wireframe overlay and background (viewport_looks.cpp).
+  void setLooks(const ViewLooks& looks);
+  const ViewLooks& looks() const { return looks_; }
+  /// The legend and half labels over the view.
+  ViewportOverlay* overlay() const { return overlay_; }
+
 signals:
   /// A stroke was recorded in history() (push an undo command labelled so).
   void strokeFinished(const QString& label);
@@ -207,6 +215,8 @@ private:
   void applyLodDisplay();
   void updateClipping();
   void fail(const QString& message);
+  /// Fills view's material and wireframe fields, loading the matcap on first use (GL current).
+  void applyLooks(gpu::ModelView& view, vtkRenderer* r);
 
   vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
   vtkNew<vtkRenderer> renderer_;
@@ -244,6 +254,9 @@ private:
   QString error_;
   QElapsedTimer clock_;
   std::deque<qint64> frameTimes_;
+  ViewLooks looks_;
+  QString loadedMatcap_; // the matcap model_ holds, empty before the first
+  ViewportOverlay* overlay_ = nullptr;
 };
 
 } // namespace octaclay::app

@@ -1,8 +1,9 @@
 // Per-pixel shading from the full-resolution normal map, so detail finer than the displayed
 // triangles still shows: headlight diffuse, a highlight scaled by the specular channel and the
-// environment reflected by the reflectivity channel. The host compiles one variant per state
-// (DIFFUSE_TEXTURE, FEATURE_TEXTURE, MASK_TINT, REFLECTION, PREVIEW n): a software rasterizer
-// pays for every texture read a shader contains, taken or not, so unpainted layers are
+// environment reflected by the reflectivity channel, or a matcap (MATCAP), with the triangles'
+// edges over it (WIREFRAME). The host compiles one variant per state (DIFFUSE_TEXTURE,
+// FEATURE_TEXTURE, MASK_TINT, REFLECTION, MATCAP, WIREFRAME, LOD_VERTICES, PREVIEW n): a software
+// rasterizer pays for every texture read a shader contains, taken or not, so unpainted layers are
 // uniforms and unused reads are compiled out.
 uniform sampler2D u_positions;   // w: saliency in [0, 1] (PREVIEW 6)
 uniform sampler2D u_stretch;     // R: stretch_map.glsl's figure (PREVIEW 7)
@@ -20,21 +21,79 @@ uniform bool u_showBrush;
 uniform vec3 u_brushCentre;
 uniform float u_brushRadius;
 uniform vec3 u_brushColour;
+uniform sampler2D u_matcap;      // a lit sphere seen head-on, x right, y up (MATCAP)
+uniform vec3 u_viewRight, u_viewUp;
+uniform int u_side;              // M + 1: the displayed level's vertices a side (WIREFRAME)
+uniform int u_imageSide;         // N + 1
+uniform int u_step;              // the displayed level's sample step
 
 in vec3 v_position;
 in vec2 v_uv;
+#if defined(WIREFRAME) && defined(LOD_VERTICES)
+in vec3 v_corner;
+#elif defined(WIREFRAME)
+in vec2 v_cell;
+#endif
 out vec4 o_colour;
+
+// The masked areas' tint: orange, hatched in screen space, so it never reads as paint.
+const vec3 kMaskTint = vec3(1.0, 0.45, 0.0);
 
 // The heat maps' one colour scale: blue (0) through cyan, green and yellow to red (1).
 vec3 heatColour(float s) {
   return clamp(vec3(4.0 * s - 2.0, s < 0.5 ? 4.0 * s : 4.0 - 4.0 * s, 2.0 - 4.0 * s), 0.0, 1.0);
 }
 
+#if defined(WIREFRAME)
+// How much of an edge covers this pixel: 1 on a triangle edge of the displayed level (the
+// grid's lines and each cell's diagonal, split as model_chunks.cpp splits it) or of the LOD,
+// fading over about a pixel.
+float wireAt() {
+#if defined(LOD_VERTICES)
+  vec3 d = v_corner / max(fwidth(v_corner), vec3(1e-6));
+  float pixels = min(d.x, min(d.y, d.z));
+#else
+  vec2 g = v_cell;
+  float m = float(u_side - 1);
+  vec2 cell = min(floor(g), vec2(m - 1.0));
+  // Lines i = const, j = const, and the diagonal: i + j = const where the cell's split is
+  // anti-diagonal, i - j = const where it is not.
+  bool anti = (cell.x < 0.5 * m) == (cell.y < 0.5 * m);
+  float diagonal = anti ? g.x + g.y : g.x - g.y;
+  vec3 along = vec3(g, diagonal);
+  vec3 d = abs(along - round(along)) / max(fwidth(along), vec3(1e-6));
+  float pixels = min(d.x, min(d.y, d.z));
+#endif
+  return 1.0 - smoothstep(0.5, 1.25, pixels);
+}
+#endif
+
 void main() {
-  vec3 n = texture(u_normals, v_uv).xyz * 2.0 - 1.0;
-  n = dot(n, n) > 1e-12 ? normalize(n) : vec3(0.0, 0.0, 1.0);
   vec3 toEye = normalize(u_eye - v_position);
+  // The triangle's own normal, on the side the eye sees: the fallback where the map's fails.
+  vec3 face = cross(dFdx(v_position), dFdy(v_position));
+  face = dot(face, face) > 1e-30 ? normalize(face) : toEye;
+  if (dot(face, toEye) < 0.0) face = -face;
+  vec3 n = texture(u_normals, v_uv).xyz * 2.0 - 1.0;
+  float mapLength = length(n);
+  n = mapLength > 1e-6 ? n / mapLength : face;
   if (dot(n, toEye) < 0.0 && !gl_FrontFacing) n = -n; // seen from inside
+  // Where the image stretches the map's normal fails three ways, and the triangle's normal
+  // takes over smoothly: the filter blends full-resolution normals that disagree (a short
+  // vector); a normal faces away from both the triangle it shades and the eye; one pixel spans
+  // many texels, so the unfiltered map aliases into speckles (where the displayed triangles are
+  // about a pixel too, their normal loses nothing).
+  float footprint = max(length(dFdx(v_uv)), length(dFdy(v_uv))) * float(u_imageSide);
+#if defined(LOD_VERTICES)
+  float aliasing = 0.0; // the LOD's triangles may be large anywhere: keep the map
+#else
+  float aliasing =
+      smoothstep(2.0, 6.0, footprint) * (1.0 - smoothstep(1.5, 3.0, float(u_step) / footprint));
+#endif
+  // A map normal far from a coarse level's triangle is detail unless it also turns from the eye.
+  float agrees = max(smoothstep(-0.2, 0.25, dot(n, face)), smoothstep(-0.05, 0.1, dot(n, toEye)));
+  float trust = smoothstep(0.35, 0.7, mapLength) * agrees * (1.0 - aliasing);
+  n = normalize(mix(face, n, trust));
 #if defined(DIFFUSE_TEXTURE)
   vec3 albedo = texture(u_diffuse, v_uv).rgb;
 #else
@@ -51,7 +110,11 @@ void main() {
   float mask = u_maskFill;
 #endif
 #if defined(MASK_TINT)
-  albedo = mix(albedo, vec3(0.15, 0.25, 0.9), 0.6 * (1.0 - mask));
+  float hatch = step(4.0, mod(gl_FragCoord.x + gl_FragCoord.y, 8.0));
+  float maskTint = (0.45 + 0.35 * hatch) * (1.0 - mask);
+#if !defined(MATCAP)
+  albedo = mix(albedo, kMaskTint, maskTint);
+#endif
 #endif
   float specularAmount = clamp(feature.g, 0.0, 1.0);
   float reflectivity = clamp(feature.b, 0.0, 1.0);
@@ -63,6 +126,18 @@ void main() {
   vec3 r = reflect(-toEye, n);
   vec2 e = vec2(atan(r.z, r.x) / 6.2831853 + 0.5, acos(clamp(r.y, -1.0, 1.0)) / 3.1415927);
   colour = mix(colour, texture(u_environment, e).rgb, reflectivity);
+#endif
+#if defined(MATCAP)
+  // View-space normal → the matcap's disc; the painted colour multiplies it where the paint
+  // differs from the layer's fill (clay shows the matcap's own colour).
+  vec2 onDisc = vec2(dot(n, u_viewRight), dot(n, u_viewUp));
+  onDisc *= min(1.0, 0.995 / max(length(onDisc), 1e-6));
+  colour = texture(u_matcap, onDisc * 0.5 + 0.5).rgb;
+  float painted = smoothstep(0.02, 0.15, distance(albedo, u_diffuseFill));
+  colour *= mix(vec3(1.0), 1.3 * albedo, painted);
+#if defined(MASK_TINT)
+  colour = mix(colour, kMaskTint, maskTint);
+#endif
 #endif
 #if PREVIEW == 1
   colour = albedo;
@@ -95,5 +170,8 @@ void main() {
     float ring = 1.0 - smoothstep(0.5 * width, width, abs(d - u_brushRadius));
     colour = mix(colour, u_brushColour, ring);
   }
+#if defined(WIREFRAME)
+  colour = mix(colour, vec3(0.08, 0.09, 0.12), 0.75 * wireAt());
+#endif
   o_colour = vec4(colour, 1.0);
 }

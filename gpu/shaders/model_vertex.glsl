@@ -8,6 +8,7 @@ uniform int u_imageSide; // N + 1
 
 out vec3 v_position;
 out vec2 v_uv;
+out vec2 v_cell; // the vertex in displayed cells (the wireframe's grid)
 
 void main() {
   // Float division: exact for these ids (< 2^24) and far cheaper than an integer division
@@ -16,5 +17,6 @@ void main() {
   ivec2 cell = ivec2(gl_VertexID - row * u_side, row) * u_step;
   v_position = texelFetch(u_positions, cell, 0).xyz;
   v_uv = (vec2(cell) + 0.5) / float(u_imageSide);
+  v_cell = vec2(gl_VertexID - row * u_side, row);
   gl_Position = u_objectToClip * vec4(v_position, 1.0);
 }

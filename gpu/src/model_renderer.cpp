@@ -85,23 +85,26 @@ ModelRenderer::ModelRenderer()
       vertexArray_(VertexArray::create()), indexBuffer_(Buffer::create()),
       chunks_(std::make_unique<detail::ModelChunks>()) {}
 
-const Program& ModelRenderer::drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
-                                          bool reflection, int preview, bool lodVertices) {
-  const int key = (diffuseTexture ? 1 : 0) | (featureTexture ? 2 : 0) | (maskTint ? 4 : 0) |
-                  (reflection ? 8 : 0) | (preview << 4) | (lodVertices ? 1 << 8 : 0);
+const Program& ModelRenderer::drawVariant(const Variant& v) {
+  const int key = (v.diffuseTexture ? 1 : 0) | (v.featureTexture ? 2 : 0) | (v.maskTint ? 4 : 0) |
+                  (v.reflection ? 8 : 0) | (v.preview << 4) | (v.lodVertices ? 1 << 8 : 0) |
+                  (v.matcap ? 1 << 9 : 0) | (v.wireframe ? 1 << 10 : 0);
   const auto found = drawPrograms_.find(key);
   if (found != drawPrograms_.end()) return found->second;
   std::string source = "#version 430 core\n";
-  if (diffuseTexture) source += "#define DIFFUSE_TEXTURE\n";
-  if (featureTexture) source += "#define FEATURE_TEXTURE\n";
-  if (maskTint) source += "#define MASK_TINT\n";
-  if (reflection) source += "#define REFLECTION\n";
-  source += "#define PREVIEW " + std::to_string(preview) + "\n";
+  if (v.diffuseTexture) source += "#define DIFFUSE_TEXTURE\n";
+  if (v.featureTexture) source += "#define FEATURE_TEXTURE\n";
+  if (v.maskTint) source += "#define MASK_TINT\n";
+  if (v.reflection) source += "#define REFLECTION\n";
+  if (v.lodVertices) source += "#define LOD_VERTICES\n";
+  if (v.matcap) source += "#define MATCAP\n";
+  if (v.wireframe) source += "#define WIREFRAME\n";
+  source += "#define PREVIEW " + std::to_string(v.preview) + "\n";
   source += detail::builtInShader("model_fragment.glsl");
   return drawPrograms_
       .emplace(key, Program("model",
-                            detail::builtInShader(lodVertices ? "model_lod_vertex.glsl"
-                                                              : "model_vertex.glsl"),
+                            detail::builtInShader(v.lodVertices ? "model_lod_vertex.glsl"
+                                                                : "model_vertex.glsl"),
                             source))
       .first->second;
 }
@@ -144,6 +147,27 @@ void ModelRenderer::setEnvironment(const core::RasterImage& image) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glBindTexture(GL_TEXTURE_2D, 0);
   checkGlError("uploading the environment map");
+}
+
+void ModelRenderer::setMatcap(const core::RasterImage& image) {
+  if ((image.channels != 4 && image.channels != 3) || image.width != image.height ||
+      image.width < 2)
+    throw GlError("a matcap must be a square RGB or RGBA image");
+  std::vector<float> rgba;
+  rgba.reserve(static_cast<std::size_t>(image.width) * image.height * 4);
+  // Flipped: the image's top row is the sphere's top, a texture's first row its bottom.
+  for (int y = image.height - 1; y >= 0; --y)
+    for (int x = 0; x < image.width; ++x)
+      rgba.insert(rgba.end(), {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2), 1.0f});
+  matcap_ = Texture(image.width, image.height, TextureFormat::Rgba8);
+  matcap_.upload({0, 0, image.width, image.height}, rgba);
+  glBindTexture(GL_TEXTURE_2D, matcap_.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  checkGlError("uploading the matcap");
 }
 
 long long ModelRenderer::displayedTriangles() const {
@@ -257,8 +281,11 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
       view.showMask && !d.mask.uniform() && view.preview == ModelView::Preview::Shaded;
   // Reflection only where something may reflect: a painted feature layer or a reflective fill.
   const bool reflection = environment_.id() != 0 && (featureTexture || d.feature.fill[2] > 0);
-  const Program& p = drawVariant(diffuseTexture, featureTexture, maskTint, reflection,
-                                 static_cast<int>(view.preview), lodVertices);
+  const bool matcap =
+      view.matcap && matcap_.id() != 0 && view.preview == ModelView::Preview::Shaded;
+  const Program& p =
+      drawVariant({diffuseTexture, featureTexture, maskTint, reflection && !matcap,
+                   static_cast<int>(view.preview), lodVertices, matcap, view.wireframe});
   p.use();
   bindTexture(0, document.texture(core::EditLayer::Positions));
   bindTexture(1, normals_);
@@ -272,6 +299,12 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
   glUniform1i(p.uniform("u_mask"), 3);
   glUniform1i(p.uniform("u_feature"), 4);
   glUniform1i(p.uniform("u_environment"), 5);
+  if (matcap) {
+    bindTexture(6, matcap_);
+    glUniform1i(p.uniform("u_matcap"), 6);
+    glUniform3f(p.uniform("u_viewRight"), view.viewRight.x, view.viewRight.y, view.viewRight.z);
+    glUniform3f(p.uniform("u_viewUp"), view.viewUp.x, view.viewUp.y, view.viewUp.z);
+  }
   if (stretch) {
     bindTexture(6, stretch_);
     glUniform1i(p.uniform("u_stretch"), 6);

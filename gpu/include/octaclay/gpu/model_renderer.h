@@ -43,6 +43,13 @@ struct ModelView {
     Stretch
   };
   Preview preview = Preview::Shaded;
+  /// The shaded model lit (above) or through a matcap (setMatcap's image, looked up by the
+  /// pixel's view-space normal), the painted colour multiplying it where the diffuse layer
+  /// differs from its fill.
+  bool matcap = false;
+  core::Vec3f viewRight{1, 0, 0}, viewUp{0, 1, 0}; ///< the camera's axes, object space
+  /// The displayed level's triangle edges (or the LOD's) drawn over the pixels.
+  bool wireframe = false;
 };
 
 /// Draws a GpuDocument at a displayed level straight from its textures (thesis 3.5): vertices
@@ -68,6 +75,10 @@ public:
   /// The environment reflected by reflective surfaces: an equirectangular RGB(A) image, +y up.
   /// Throws GlError.
   void setEnvironment(const core::RasterImage& image);
+  /// The matcap ModelView::matcap shows: a square RGB(A) image of a lit sphere seen head-on,
+  /// x right and y up (the top row is the sphere's top). Throws GlError.
+  void setMatcap(const core::RasterImage& image);
+  bool hasMatcap() const { return matcap_.id() != 0; }
 
   /// Recomputes the normal map over rects of the positions (after dabs or undo). The stretch
   /// preview's map is refreshed over the same rects at its next draw.
@@ -103,8 +114,12 @@ public:
 
 private:
   /// The draw program for one state, compiled on first use. Throws GlError.
-  const Program& drawVariant(bool diffuseTexture, bool featureTexture, bool maskTint,
-                             bool reflection, int preview, bool lodVertices);
+  struct Variant {
+    bool diffuseTexture, featureTexture, maskTint, reflection;
+    int preview;
+    bool lodVertices, matcap, wireframe;
+  };
+  const Program& drawVariant(const Variant& v);
   /// Picks draw()'s or drawLod()'s program for view and sets its textures and uniforms.
   const Program& prepareDraw(GpuDocument& document, const ModelView& view, bool lodVertices);
   /// Runs the stretch pass over the stale rects and re-measures the mean spacing if stale.
@@ -113,7 +128,7 @@ private:
   Program normalProgram_;
   std::map<int, Program> drawPrograms_;
   RectPass rectPass_;
-  Texture normals_, environment_;
+  Texture normals_, environment_, matcap_;
   Program stretchProgram_;                    // compiled by the first stretch preview
   Texture stretch_;                           // R32F, (N+1)²: stretch_map.glsl's figure
   std::vector<core::TexelRect> staleStretch_; // rects changed since the last stretch pass

@@ -1,0 +1,400 @@
+// View ▸ Material, Wireframe and Background, the shading normals of an imported model, and the
+// overlays that say what the pixels mean, drawn through the real viewport (xcb under Xvfb,
+// llvmpipe) and read back.
+#include "../core/shared_data.h"
+#include "color_button.h"
+#include "layers_panel.h"
+#include "lod_panel.h"
+#include "main_window.h"
+#include "matcap_generator.h"
+#include "test_window.h"
+#include "viewport_overlay.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/document/image_io.h"
+#include "octaclay/core/geometry/base_shapes.h"
+
+#include <QCheckBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+using namespace octaclay;
+using app::MainWindow;
+
+namespace {
+
+float luminance(QRgb c) {
+  return static_cast<float>(0.299 * qRed(c) + 0.587 * qGreen(c) + 0.114 * qBlue(c));
+}
+
+// The model's pixels: those that differ from the top-left corner (the background).
+std::vector<QPoint> modelPixels(const QImage& image) {
+  std::vector<QPoint> out;
+  const QRgb background = image.pixel(0, 0);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (image.pixel(x, y) != background) out.emplace_back(x, y);
+  return out;
+}
+
+// Mean absolute difference per channel (0–255) over the given pixels.
+double meanDifference(const QImage& a, const QImage& b, const std::vector<QPoint>& pixels) {
+  double sum = 0;
+  for (const QPoint& p : pixels) {
+    const QRgb x = a.pixel(p), y = b.pixel(p);
+    sum += std::abs(qRed(x) - qRed(y)) + std::abs(qGreen(x) - qGreen(y)) +
+           std::abs(qBlue(x) - qBlue(y));
+  }
+  return pixels.empty() ? 0 : sum / (3.0 * double(pixels.size()));
+}
+
+class LooksRenderTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void initTestCase();
+  void init();
+  void cleanup();
+  void committedMatcapsMatchTheGenerator();
+  void eachMatcapChangesThePixelsDifferently();
+  void wireframeOverlayAddsLinePixelsAlongTheLevel();
+  void backgroundChoiceChangesTheCornersAndIsRestored();
+  void importedModelHasNoUnlitSpecklesAtAnyLevel();
+  void maskTintIsNotAPaintColour();
+  void heatMapsShowALegendAndSideBySideIsLabelled();
+
+private:
+  std::unique_ptr<MainWindow> makeWindow();
+  QImage grab();
+
+  QTemporaryDir dir_;
+  std::unique_ptr<MainWindow> window_;
+};
+
+void LooksRenderTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName("OctaclayTest");
+  QCoreApplication::setApplicationName("looks_render_test");
+  qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
+}
+
+void LooksRenderTest::init() {
+  QSettings().clear();
+}
+void LooksRenderTest::cleanup() {
+  window_.reset();
+}
+
+std::unique_ptr<MainWindow> LooksRenderTest::makeWindow() {
+  return app::testing::openTestWindow(dir_.filePath("recovery"));
+}
+
+// The viewport's pixels with no brush outline (a Leave event hides it).
+QImage LooksRenderTest::grab() {
+  QEvent leave(QEvent::Leave);
+  QCoreApplication::sendEvent(window_->viewport(), &leave);
+  return window_->viewport()->grabFramebuffer();
+}
+
+void LooksRenderTest::committedMatcapsMatchTheGenerator() {
+  const std::filesystem::path fresh = dir_.filePath("matcaps").toStdString();
+  tools::writeMatcaps(fresh);
+  QCOMPARE(app::matcapIds().size(), qsizetype(tools::generatedMatcapIds().size()));
+  for (const std::string& id : tools::generatedMatcapIds()) {
+    QVERIFY(app::matcapIds().contains(QString::fromStdString(id)));
+    const core::RasterImage want = core::readImage(fresh / (id + ".png"), 3);
+    const core::RasterImage have =
+        core::readImage(app::matcapPath(QString::fromStdString(id)).toStdString(), 3);
+    QCOMPARE(have.width, 256);
+    QCOMPARE(have.height, 256);
+    float worst = 0;
+    for (std::size_t k = 0; k < want.pixels.size(); ++k)
+      worst = std::max(worst, std::abs(want.pixels[k] - have.pixels[k]));
+    // One 8-bit step: another libm may round pow or sqrt differently in the last bit.
+    QVERIFY2(worst <= 1.01f / 255, (id + ": run make_resources (resources/README.md)").c_str());
+  }
+}
+
+void LooksRenderTest::eachMatcapChangesThePixelsDifferently() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  QCOMPARE(window_->viewport()->looks().material, QString("lit"));
+  QVERIFY(window_->action("actionMaterialLit")->isChecked());
+  const QImage lit = grab();
+  const std::vector<QPoint> model = modelPixels(lit);
+  QVERIFY(model.size() > 50000);
+  std::vector<QImage> looks;
+  for (const char* name : {"Clay", "Redwax", "Chrome", "Skin"}) {
+    QAction* a = window_->action(QStringLiteral("actionMaterial%1").arg(name));
+    QVERIFY2(a, name);
+    a->trigger();
+    QVERIFY(a->isChecked());
+    looks.push_back(grab());
+    const double d = meanDifference(lit, looks.back(), model);
+    QVERIFY2(d > 8, qPrintable(QStringLiteral("%1 vs lit: %2").arg(name).arg(d)));
+    QVERIFY(window_->viewport()->error().isEmpty());
+  }
+  for (std::size_t a = 0; a < looks.size(); ++a)
+    for (std::size_t b = a + 1; b < looks.size(); ++b) {
+      const double d = meanDifference(looks[a], looks[b], model);
+      QVERIFY2(d > 8, qPrintable(QStringLiteral("matcaps %1 and %2: %3").arg(a).arg(b).arg(d)));
+    }
+  // Red wax is red, chrome's lower half mirrors a dark floor under a bright sky.
+  const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
+  const QColor wax = looks[1].pixelColor(centre);
+  QVERIFY2(wax.red() > 2 * wax.green() && wax.red() > 2 * wax.blue(), qPrintable(wax.name()));
+  const int radius = int(window_->viewport()->project({0, 0.9f, 0}).y() - centre.y());
+  const QPoint up = centre - QPoint(0, std::abs(radius) / 2),
+               down = centre + QPoint(0, std::abs(radius) / 2);
+  QVERIFY(luminance(looks[2].pixel(up)) > luminance(looks[2].pixel(down)) + 60);
+  // Saved, and the next window starts with it.
+  QCOMPARE(QSettings().value("view/material").toString(), QString("skin"));
+  window_.reset();
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QCOMPARE(window_->viewport()->looks().material, QString("skin"));
+  QVERIFY(window_->action("actionMaterialSkin")->isChecked());
+  window_->action("actionMaterialLit")->trigger();
+  QCOMPARE(QSettings().value("view/material").toString(), QString("lit"));
+}
+
+void LooksRenderTest::wireframeOverlayAddsLinePixelsAlongTheLevel() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  QVERIFY(window_->lodPanel()->setDivisor(8)); // 16 cells a side: lines far apart
+  const QImage plain = grab();
+  const std::vector<QPoint> model = modelPixels(plain);
+  QAction* wireframe = window_->action("actionWireframe");
+  QVERIFY(wireframe && wireframe->isCheckable());
+  wireframe->trigger();
+  QVERIFY(window_->viewport()->looks().wireframe);
+  QVERIFY(QSettings().value("view/wireframe").toBool());
+  const QImage wired = grab();
+  int darker = 0;
+  for (const QPoint& p : model)
+    darker += luminance(wired.pixel(p)) < luminance(plain.pixel(p)) - 40;
+  // Lines a pixel or two wide every few dozen pixels: some, but far from all.
+  const double share = double(darker) / double(model.size());
+  QVERIFY2(share > 0.03 && share < 0.5, qPrintable(QString::number(share)));
+  // The centre row crosses lines: runs of line pixels separated by runs of surface.
+  const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
+  int runs = 0;
+  bool inLine = false;
+  for (int x = centre.x() - 150; x <= centre.x() + 150; ++x) {
+    const QPoint p(x, centre.y());
+    const bool line = luminance(wired.pixel(p)) < luminance(plain.pixel(p)) - 40;
+    runs += line && !inLine;
+    inLine = line;
+  }
+  QVERIFY2(runs >= 4, qPrintable(QString::number(runs)));
+  // Off again: the very same pixels as before.
+  wireframe->trigger();
+  QVERIFY(!window_->viewport()->looks().wireframe);
+  const QImage off = grab();
+  QCOMPARE(meanDifference(off, plain, model), 0.0);
+}
+
+void LooksRenderTest::backgroundChoiceChangesTheCornersAndIsRestored() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  const QImage before = grab();
+  bool edited = false;
+  QTimer::singleShot(0, [&] {
+    auto* dialog = window_->findChild<QDialog*>("backgroundDialog");
+    if (!dialog) return;
+    dialog->findChild<QCheckBox*>("gradient")->setChecked(true);
+    dialog->findChild<app::ColorButton*>("top")->setColor(QColor(200, 40, 30));
+    dialog->findChild<app::ColorButton*>("bottom")->setColor(QColor(20, 40, 210));
+    edited = true;
+    dialog->accept();
+  });
+  window_->action("actionBackground")->trigger();
+  QVERIFY(edited);
+  const QImage after = grab();
+  const QColor top = after.pixelColor(2, 2), bottom = after.pixelColor(2, after.height() - 3);
+  QVERIFY2(top.red() > 170 && top.blue() < 70, qPrintable(top.name()));
+  QVERIFY2(bottom.blue() > 170 && bottom.red() < 50, qPrintable(bottom.name()));
+  QVERIFY(before.pixel(2, 2) != after.pixel(2, 2));
+  // Cancel puts the previous background back.
+  QTimer::singleShot(0, [&] {
+    auto* dialog = window_->findChild<QDialog*>("backgroundDialog");
+    if (!dialog) return;
+    dialog->findChild<QCheckBox*>("gradient")->setChecked(false);
+    dialog->reject();
+  });
+  window_->action("actionBackground")->trigger();
+  QCOMPARE(grab().pixel(2, 2), after.pixel(2, 2));
+  // Restored at start.
+  window_.reset();
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->viewport()->looks().gradient);
+  QCOMPARE(window_->viewport()->looks().backgroundTop, QColor(200, 40, 30));
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  QCOMPARE(grab().pixel(2, 2), after.pixel(2, 2));
+}
+
+// A closed lat-long ellipsoid with semi-axes (a, b, c), as OBJ text.
+QByteArray ellipsoidObj(float a, float b, float c, int rings, int segments) {
+  QByteArray obj;
+  const auto vertex = [&](float x, float y, float z) {
+    obj += QByteArray("v ") + QByteArray::number(x) + ' ' + QByteArray::number(y) + ' ' +
+           QByteArray::number(z) + '\n';
+  };
+  vertex(0, b, 0);
+  for (int r = 1; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const double theta = M_PI * r / rings, phi = 2 * M_PI * s / segments;
+      vertex(float(a * std::sin(theta) * std::cos(phi)), float(b * std::cos(theta)),
+             float(c * std::sin(theta) * std::sin(phi)));
+    }
+  vertex(0, -b, 0);
+  const auto at = [&](int r, int s) { return 2 + (r - 1) * segments + (s % segments); };
+  const int last = 2 + (rings - 1) * segments;
+  const auto face = [&](int i, int j, int k) {
+    obj += "f " + QByteArray::number(i) + ' ' + QByteArray::number(j) + ' ' +
+           QByteArray::number(k) + '\n';
+  };
+  for (int s = 0; s < segments; ++s) {
+    face(1, at(1, s + 1), at(1, s));
+    face(last, at(rings - 1, s), at(rings - 1, s + 1));
+    for (int r = 1; r + 1 < rings; ++r) {
+      face(at(r, s), at(r, s + 1), at(r + 1, s + 1));
+      face(at(r, s), at(r + 1, s + 1), at(r + 1, s));
+    }
+  }
+  return obj;
+}
+
+// Issue 22: black speckles and stripes where the image stretches. With a headlight a pixel of
+// a smooth surface is lit by its normal's cosine to the eye: none may be darker than the unlit
+// ambient (0.18 × the clay colour), and on a convex model none away from its outline may fall
+// to that ambient at all (every normal there faces the eye).
+void LooksRenderTest::importedModelHasNoUnlitSpecklesAtAnyLevel() {
+  const QString bust = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/max_planck_decimated.obj";
+  if (!QFileInfo::exists(bust)) OCTACLAY_MISSING_SHARED_DATA("max_planck_decimated.obj");
+  // An ellipsoid eight times longer than wide: the octahedral image stretches along it.
+  const QString ellipsoid = dir_.filePath("ellipsoid.obj");
+  {
+    QFile file(ellipsoid);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(ellipsoidObj(1.0f, 0.125f, 0.125f, 24, 48));
+  }
+  window_ = makeWindow();
+  QVERIFY(window_);
+  window_->layersPanel()->setVisible(core::EditLayer::Diffuse, false); // plain clay
+  const float ambient = 0.18f * luminance(qRgb(204, 199, 189));        // clay (0.8, 0.78, 0.74)
+  for (const QString& mesh : {bust, ellipsoid}) {
+    const bool convex = mesh == ellipsoid;
+    QVERIFY(window_->importMesh(mesh, 128));
+    QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
+    for (int divisor : {1, 2, 4, 8}) {
+      QVERIFY(window_->lodPanel()->setDivisor(divisor));
+      const QImage image = grab();
+      const QRgb background = image.pixel(0, 0);
+      const auto onModel = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < image.width() && y < image.height() &&
+               image.pixel(x, y) != background;
+      };
+      int model = 0, unlitInside = 0;
+      float darkest = 255;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+          if (!onModel(x, y)) continue;
+          ++model;
+          const float l = luminance(image.pixel(x, y));
+          darkest = std::min(darkest, l);
+          bool inside = true; // 3 px or more from the outline
+          for (int dy = -3; dy <= 3 && inside; ++dy)
+            for (int dx = -3; dx <= 3 && inside; ++dx)
+              inside = onModel(x + dx, y + dy);
+          unlitInside += inside && l <= ambient + 4;
+        }
+      const QString what =
+          QStringLiteral("%1 at N/%2").arg(QFileInfo(mesh).fileName()).arg(divisor);
+      QVERIFY2(model > 5000, qPrintable(what));
+      QVERIFY2(darkest >= ambient - 1.5f,
+               qPrintable(QStringLiteral("%1: a pixel at %2, the ambient is %3")
+                              .arg(what)
+                              .arg(darkest)
+                              .arg(ambient)));
+      if (convex)
+        QVERIFY2(unlitInside == 0, qPrintable(QStringLiteral("%1: %2 unlit pixels inside %3")
+                                                  .arg(what)
+                                                  .arg(unlitInside)
+                                                  .arg(model)));
+    }
+  }
+}
+
+void LooksRenderTest::maskTintIsNotAPaintColour() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  core::Document d = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64));
+  d.mask.texels.assign(65 * 65, 0.0f); // masked everywhere
+  QVERIFY(window_->viewport()->setDocument(std::move(d)));
+  const QImage image = grab();
+  const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
+  // Orange, hatched: red over blue, and neighbouring diagonals differ.
+  int hatched = 0;
+  for (int k = 0; k < 8; ++k) {
+    const QColor c = image.pixelColor(centre + QPoint(k, 0));
+    QVERIFY2(c.red() > c.blue() + 60, qPrintable(c.name()));
+    hatched += image.pixel(centre + QPoint(k, 0)) != image.pixel(centre + QPoint(k + 1, 0));
+  }
+  QVERIFY(hatched >= 1);
+}
+
+void LooksRenderTest::heatMapsShowALegendAndSideBySideIsLabelled() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  app::ViewportOverlay* overlay = window_->viewport()->overlay();
+  QVERIFY(!overlay->legend()->isVisible());
+  window_->layersPanel()->setPreview(app::LayersPanel::Preview::Saliency);
+  QVERIFY(overlay->legend()->isVisible());
+  // Inside the viewport, and its bar runs from the heat map's blue to its red.
+  QVERIFY(window_->viewport()->rect().contains(overlay->legend()->geometry()));
+  const QImage legend = overlay->legend()->grab().toImage();
+  const int y = 30 * legend.height() / overlay->legend()->height();
+  const QColor low = legend.pixelColor(legend.width() / 20, y),
+               high = legend.pixelColor(legend.width() * 19 / 20, y);
+  QVERIFY2(low.blue() > 200 && low.red() < 60, qPrintable(low.name()));
+  QVERIFY2(high.red() > 200 && high.blue() < 60, qPrintable(high.name()));
+  window_->layersPanel()->setPreview(app::LayersPanel::Preview::Shaded);
+  QVERIFY(!overlay->legend()->isVisible());
+
+  QVERIFY(!overlay->leftLabel()->isVisible());
+  window_->viewport()->setLodDisplay(app::LodDisplay::SideBySide);
+  QVERIFY(overlay->leftLabel()->isVisible() && overlay->rightLabel()->isVisible());
+  QCOMPARE(overlay->leftLabel()->text(), QString("Full resolution"));
+  QCOMPARE(overlay->rightLabel()->text(), QString("Level of detail"));
+  const int half = window_->viewport()->width() / 2;
+  QVERIFY(overlay->leftLabel()->geometry().right() < half);
+  QVERIFY(overlay->rightLabel()->geometry().left() > half);
+  window_->viewport()->setLodDisplay(app::LodDisplay::FullResolution);
+  QVERIFY(!overlay->leftLabel()->isVisible());
+}
+
+} // namespace
+
+QTEST_MAIN(LooksRenderTest)
+#include "looks_render_test.moc"
