@@ -5,7 +5,6 @@
 
 #include "../mesh_self_intersections.h"
 #include "brush_test_support.h"
-#include "self_intersection.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"

@@ -7,8 +7,8 @@
 // raises. Strokes of each over seams and the corner pole keep the surface closed (Euler
 // characteristic 2) and the seams exact, and undo and redo are bit-exact.
 
+#include "../mesh_self_intersections.h"
 #include "brush_test_support.h"
-#include "self_intersection.h"
 
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/error.h"
@@ -29,6 +29,8 @@
 using namespace octaclay;
 using namespace octaclay::gpu;
 using namespace octaclay::gpu::testing;
+using octaclay::testing::changedVertices;
+using octaclay::testing::selfIntersections;
 
 namespace {
 
