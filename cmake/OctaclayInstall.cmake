@@ -8,13 +8,14 @@ set(OCTACLAY_DATA_DESTINATION ${CMAKE_INSTALL_DATADIR}/octaclay)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/plugins/brushes/
         DESTINATION ${OCTACLAY_DATA_DESTINATION}/brushes)
 # materials/, environment/, icons/ …: share/octaclay holds what resources/ holds.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/ DESTINATION ${OCTACLAY_DATA_DESTINATION})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/ DESTINATION ${OCTACLAY_DATA_DESTINATION}
+        PATTERN .gitkeep EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/octaclay.desktop
         DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/octaclay.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/README.md
-        DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME packaging.md)
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/octaclay RENAME packaging.md)
 
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME octaclay)
