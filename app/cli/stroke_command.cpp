@@ -152,7 +152,7 @@ unsigned parseSymmetry(const std::string& text) {
 
 Command addStrokeCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, brush, path, symmetry, view, keepDetail = "on";
+    std::string input, output, brush, path, symmetry, view, drag, keepDetail = "on";
     std::vector<std::string> params;
     float radius = 0.1f, strength = 0.5f, spacing = 0;
     bool json = false;
@@ -185,6 +185,10 @@ Command addStrokeCommand(CLI::App& app) {
                   "Camera eye x,y,z: splats project from it through each dab's centre, and a "
                   "drag (grab, snake-hook) moves in the view plane through its start "
                   "(default: splats along the centre normal, drags along the path)");
+  sub->add_option("--drag", opt->drag,
+                  "x,y,z[;x,y,z...]: for a dragging brush (grab, snake-hook), object-space points "
+                  "the drag moves through after the path, as a pointer off the surface would "
+                  "(projected into the view plane with --view)");
   sub->add_option("--keep-detail", opt->keepDetail,
                   "on: relax what the stroke stretched so it keeps its share of samples "
                   "(one step with the stroke); off: leave the samples where the brush put them")
@@ -223,6 +227,15 @@ Command addStrokeCommand(CLI::App& app) {
           if (eq == std::string::npos) badArgument("--param '" + p + "' is not id=value");
           settings.parameters[p.substr(0, eq)] =
               parseParameter(*brush, p.substr(0, eq), p.substr(eq + 1));
+        }
+
+        if (!opt->drag.empty()) {
+          std::stringstream in(opt->drag);
+          for (std::string point; std::getline(in, point, ';');) {
+            const std::vector<float> xyz = numbers(point, ',', "--drag");
+            if (xyz.size() != 3) badArgument("--drag: '" + point + "' is not an x,y,z point");
+            settings.dragPoints.push_back({xyz[0], xyz[1], xyz[2]});
+          }
         }
 
         if (!opt->view.empty()) {

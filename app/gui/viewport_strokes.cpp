@@ -52,6 +52,16 @@ void ViewportWidget::continueStrokeTo(QPointF p) {
 }
 
 void ViewportWidget::queueStrokePoint(QPointF p) {
+  if (session_.strokeDrags() && width() > 0 && height() > 0) {
+    // A dragging brush follows the pointer's ray, on the model or off it.
+    const QRectF view = modelRect();
+    if (p.x() >= view.width()) p.rx() -= view.width();
+    const core::Ray ray = core::cameraRay(
+        pickCamera(*renderer_->GetActiveCamera()), static_cast<int>(view.width()),
+        static_cast<int>(view.height()), static_cast<float>(p.x()), static_cast<float>(p.y()));
+    session_.queueDrag(ray.origin, ray.direction, tabletDown_ ? tabletPressure_ : 1.0f);
+    return;
+  }
   const std::optional<core::PickHit> hit = pickAt(p);
   if (!hit) return; // off the model: the stroke resumes where the pointer comes back
   hover_ = hit;

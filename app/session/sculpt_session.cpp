@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace octaclay::app {
 
@@ -19,7 +20,12 @@ struct SculptSession::ActiveStroke {
   gpu::BrushManifest manifest; // the stroke refers to it
   float sign = 1;
   std::unique_ptr<gpu::StrokeSession> stroke;
-  std::vector<std::pair<core::Vec2f, float>> queue; // (u, v), pressure
+  struct Move {
+    core::Vec2f uv;
+    float pressure = 1;
+    std::optional<std::array<core::Vec3f, 2>> ray; ///< a drag's pointer ray: origin, direction
+  };
+  std::vector<Move> queue;
   bool failed = false; // a dab threw: the engine restored the layers, no more dabs
 };
 
@@ -82,7 +88,15 @@ void SculptSession::beginStroke(const std::string& id, const BrushSettings& sett
 }
 
 void SculptSession::queueDab(core::Vec2f uv, float pressure) {
-  stroke_->queue.emplace_back(uv, pressure);
+  stroke_->queue.push_back({uv, pressure, std::nullopt});
+}
+
+bool SculptSession::strokeDrags() const {
+  return stroke_ && stroke_->stroke->drags();
+}
+
+void SculptSession::queueDrag(core::Vec3f origin, core::Vec3f direction, float pressure) {
+  stroke_->queue.push_back({{}, pressure, std::array{origin, direction}});
 }
 
 DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
@@ -94,7 +108,7 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (const auto& [uv, pressure] : stroke_->queue) {
+    for (const auto& [uv, pressure, ray] : stroke_->queue) {
       // The strength as given: the stroke shares it out among its dabs (dabShare).
       float radius = settings.radius * stroke_->unit;
       float strength = settings.strength;
@@ -102,7 +116,9 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
         radius *= std::max(pressure, 0.05f);
       else if (settings.pressureTarget == PressureTarget::Strength)
         strength *= pressure;
-      run.made += stroke_->stroke->moveToUv(uv, radius, stroke_->sign * strength, 1.0f);
+      run.made += ray ? stroke_->stroke->dragAlong((*ray)[0], (*ray)[1], radius,
+                                                   stroke_->sign * strength, 1.0f)
+                      : stroke_->stroke->moveToUv(uv, radius, stroke_->sign * strength, 1.0f);
     }
     run.touched = stroke_->stroke->takeTouched();
   } catch (const std::exception& e) {

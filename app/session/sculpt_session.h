@@ -76,6 +76,12 @@ public:
   /// Queues a move of the stroke to image point uv (a pick's interpolated (u, v), each in
   /// [0, 1]); pressure in [0, 1]. The stroke dabs along the way (gpu::StrokeSession::moveToUv).
   void queueDab(core::Vec2f uv, float pressure);
+  /// Whether the stroke's brush drags (grab, snake hook: gpu::StrokeSession::drags()): after
+  /// its first queueDab, the viewport queues the pointer's rays with queueDrag instead.
+  bool strokeDrags() const;
+  /// Queues a dragging brush's move to the pointer's ray (object space, gpu::StrokeSession::
+  /// dragAlong).
+  void queueDrag(core::Vec3f origin, core::Vec3f direction, float pressure);
   /// Makes the queued moves with the settings' current radius, strength and pressure target,
   /// then empties the queue. A failing dab (a GL error, the watchdog) ends the run with its
   /// error and the stroke with it: the layers are back as before the stroke, later dabs are

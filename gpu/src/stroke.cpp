@@ -120,6 +120,12 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings) {
   if (settings.path.empty()) badSetting("the stroke's path has no point");
+  if (!settings.dragPoints.empty() && brush.stroke != StrokeKind::Anchored &&
+      brush.stroke != StrokeKind::Drag)
+    badSetting("brush " + brush.id + " does not drag: it takes no drag points");
+  for (const core::Vec3f& p : settings.dragPoints)
+    for (float v : {p.x, p.y, p.z})
+      checkFinite("a drag point's coordinate", v);
   for (const auto& uv : settings.path)
     checkPoint({uv[0], uv[1]});
   // One session fed the path points: a scripted stroke and an interactive one follow the same
@@ -127,6 +133,8 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
   StrokeSession session(engine, document, brush, settings);
   for (const auto& uv : settings.path)
     session.moveToUv({uv[0], uv[1]}, settings.radius, settings.strength, settings.pressure);
+  for (const core::Vec3f& point : settings.dragPoints)
+    session.dragTo(point, settings.radius, settings.strength, settings.pressure);
   StrokeResult result;
   result.dabs = session.dabs();
   result.engineMs = session.engineMs();
@@ -361,13 +369,7 @@ struct StrokeSession::State {
   // spacing (object units), carrying the remainder as walkTo does.
   int dragAlong(core::Vec3f origin, core::Vec3f direction, float radius, float strength,
                 float pressure) {
-    if (abandoned) throw std::logic_error("StrokeSession::dragAlong after a dab failed");
-    if (finished) throw std::logic_error("StrokeSession::dragAlong after finish()");
-    if (!previous)
-      throw std::logic_error("StrokeSession::dragAlong before the stroke's first move");
-    checkFinite("the radius", radius);
-    checkFinite("the strength", strength);
-    checkFinite("the pressure", pressure);
+    checkDragMove(radius, strength, pressure);
     for (float v : {origin.x, origin.y, origin.z, direction.x, direction.y, direction.z})
       checkFinite("the drag's ray", v);
     const core::Vec3f plane = core::length(dragNormal) > 0 ? dragNormal : anchorNormal;
@@ -375,7 +377,29 @@ struct StrokeSession::State {
     if (std::abs(facing) < 1e-6f * core::length(direction)) return 0; // along the plane: no point
     const core::Vec3f point = origin + direction * (core::dot(startPoint - origin, plane) / facing);
     core::Vec3f target = point - startPoint;
-    target = target - plane * core::dot(target, plane);
+    return dragBy(target - plane * core::dot(target, plane), radius, strength, pressure);
+  }
+
+  // The same to a point in object space: the drag is from the stroke's start to it, projected
+  // into the view plane when the stroke has a view.
+  int dragTo(core::Vec3f point, float radius, float strength, float pressure) {
+    checkDragMove(radius, strength, pressure);
+    for (float v : {point.x, point.y, point.z})
+      checkFinite("the drag's point", v);
+    const core::Vec3f target = point - startPoint;
+    return dragBy(target - dragNormal * core::dot(target, dragNormal), radius, strength, pressure);
+  }
+
+  void checkDragMove(float radius, float strength, float pressure) const {
+    if (abandoned) throw std::logic_error("StrokeSession: a drag after a dab failed");
+    if (finished) throw std::logic_error("StrokeSession: a drag after finish()");
+    if (!previous) throw std::logic_error("StrokeSession: a drag before the stroke's first move");
+    checkFinite("the radius", radius);
+    checkFinite("the strength", strength);
+    checkFinite("the pressure", pressure);
+  }
+
+  int dragBy(core::Vec3f target, float radius, float strength, float pressure) {
     const auto start = std::chrono::steady_clock::now();
     const int before = dabs;
     const std::array<double, 2> xy = *previous;
@@ -442,11 +466,19 @@ int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float 
 
 int StrokeSession::dragAlong(core::Vec3f origin, core::Vec3f direction, float radius,
                              float strength, float pressure) {
-  if (state_->brush.stroke != StrokeKind::Anchored && state_->brush.stroke != StrokeKind::Drag)
+  if (!drags())
     throw core::Error(core::ErrorKind::InvalidArgument,
                       "brush " + state_->brush.id + " does not drag (its \"stroke\" is \"" +
                           std::string(toManifestName(state_->brush.stroke)) + "\")");
   return state_->dragAlong(origin, direction, radius, strength, pressure);
+}
+
+int StrokeSession::dragTo(core::Vec3f point, float radius, float strength, float pressure) {
+  if (!drags())
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "brush " + state_->brush.id + " does not drag (its \"stroke\" is \"" +
+                          std::string(toManifestName(state_->brush.stroke)) + "\")");
+  return state_->dragTo(point, radius, strength, pressure);
 }
 
 bool StrokeSession::drags() const {

@@ -21,6 +21,7 @@ private slots:
   void sameShapeAtEverySpacing();
   void symmetryDoublesTheDabs();
   void sculptBrushSetRunsFromTheCommandLine();
+  void dragPointsPullALimbOut();
   void unknownBrushIsAUsageError();
   void brokenPluginsAreReportedAndSkipped();
   void noEglIsAClearError();
@@ -148,6 +149,25 @@ void CliStrokeTest::sculptBrushSetRunsFromTheCommandLine() {
     RUN_JSON(compare, "compare", sphere_, out, "--json");
     QVERIFY2(compare["hausdorff"].toDouble() > 1e-3, brush);
   }
+}
+
+// --drag: the points a dragging brush's drag moves through off the surface; snake hook draws a
+// limb out of the sphere's pole to them.
+void CliStrokeTest::dragPointsPullALimbOut() {
+  const QString out = file("limb.exr");
+  RUN_JSON(stroke, "stroke", sphere_, "--brush", "snake-hook", "--path", "0.5,0.5", "--drag",
+           "0.1,0,1.4;0.3,0,1.8", "--radius", "0.08", "--strength", "1", "-o", out, "--json");
+  QVERIFY(stroke["dabs"].toInt() > 10);
+  RUN_JSON(info, "info", out, "--json");
+  QVERIFY(info["closed"].toBool());
+  QCOMPARE(info["euler"].toInt(), 2);
+  const double top = info["bbox"].toObject()["max"].toArray()[2].toDouble();
+  QVERIFY2(top > 1.7 && top < 1.81, qPrintable(QString::number(top))); // the pole, pulled to 1.8
+  const Result refused = runCli({"stroke", sphere_, "--brush", "pinch", "--path", "0.5,0.5",
+                                 "--drag", "0,0,2", "-o", file("no.exr")});
+  QCOMPARE(refused.exitCode, kUsage);
+  QVERIFY(refused.err.contains("does not drag"));
+  QVERIFY(!QFileInfo::exists(file("no.exr")));
 }
 
 void CliStrokeTest::unknownBrushIsAUsageError() {

@@ -28,6 +28,9 @@ struct StrokeSettings {
   /// A camera's eye (object space): splats project from it through each dab's centre. Unset:
   /// along each dab's centre normal.
   std::optional<core::Vec3f> viewEye;
+  /// A dragging brush (grab, snake hook): points in object space the drag moves through after
+  /// the path (StrokeSession::dragTo), as a pointer off the surface would.
+  std::vector<core::Vec3f> dragPoints;
 };
 
 struct StrokeResult {
@@ -41,13 +44,14 @@ struct StrokeResult {
 /// centred on the current surface's point at its (u, v) with the normal there, a sculpt brush's
 /// applying strength × dabShare(); each is repeated at the mirrored point for each symmetry
 /// plane. A one-point path is one dab. All or nothing: on any throw below after the first dab,
-/// the written layers are restored bit for bit from the stroke's undo capture. Throws
-/// core::Error(UnknownId) for an unknown brush, core::Error(InvalidArgument) for an empty path,
-/// a point outside [0, 1], a radius, strength, pressure, spacing or view that is not finite, or
-/// a parameter that is not finite or outside its [min, max]; core::Error(InvalidInput) when the
-/// result holds a non-finite value or a coordinate beyond ±1e18 ("the brush produced a
-/// non-finite value at sample (i, j) …"); BrushTimeoutError when a pass overran the engine's
-/// time limit.
+/// the written layers are restored bit for bit from the stroke's undo capture. The drag points
+/// follow the path (StrokeSession::dragTo). Throws core::Error(UnknownId) for an unknown brush,
+/// core::Error(InvalidArgument) for an empty path, drag points for a brush that does not drag or
+/// that are not finite, a point outside [0, 1], a radius, strength, pressure, spacing or view that
+/// is not finite, or a parameter that is not finite or outside its [min, max];
+/// core::Error(InvalidInput) when the result holds a non-finite value or a coordinate beyond ±1e18
+/// ("the brush produced a non-finite value at sample (i, j) …"); BrushTimeoutError when a pass
+/// overran the engine's time limit.
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings);
 
@@ -98,6 +102,9 @@ public:
   /// value that is not finite, std::logic_error before the first move.
   int dragAlong(core::Vec3f origin, core::Vec3f direction, float radius, float strength,
                 float pressure = 1.0f);
+  /// The same to a point in object space: the drag is from the stroke's start to point,
+  /// projected into the view plane when settings.viewEye is set.
+  int dragTo(core::Vec3f point, float radius, float strength, float pressure = 1.0f);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
 
