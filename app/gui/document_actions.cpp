@@ -1,7 +1,9 @@
 #include "document_actions.h"
 
 #include "lod_panel.h"
+#include "replace_document_command.h"
 #include "save_compressed_dialog.h"
+#include "user_messages.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -47,7 +49,7 @@ bool DocumentActions::isModified() const {
 
 void DocumentActions::showError(const QString& message) {
   lastError_ = message;
-  parts_.statusBar->showMessage(message, 15000);
+  showStatusMessage(*parts_.statusBar, message, 15000);
   auto* box = new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok,
                               parts_.window);
   box->setAttribute(Qt::WA_DeleteOnClose);
@@ -93,11 +95,28 @@ bool DocumentActions::importMesh(const QString& path, int n) {
     return false;
   }
   if (!error.isEmpty()) {
-    showError(tr("Could not import %1: %2\nThe current model is unchanged.").arg(path, error));
+    showError(failureMessage(tr("Could not import"), path, error) +
+              tr("\nThe current model is unchanged."));
     return false;
   }
-  adoptDocument(std::move(*made), {});
+  // One undo step: the replaced document (with its own strokes) is held by the step.
+  std::unique_ptr<HeldDocument> previous;
+  if (parts_.viewport->hasDocument()) {
+    parts_.viewport->endStroke();
+    previous = std::make_unique<HeldDocument>(HeldDocument{parts_.viewport->document(),
+                                                           std::move(parts_.viewport->history()),
+                                                           path_, importedFrom_, forceModified_});
+  }
+  if (!adoptDocument(std::move(*made), {}, /*clearUndo=*/!previous)) {
+    if (previous) parts_.viewport->history() = std::move(previous->history);
+    return false;
+  }
+  importedFrom_ = QFileInfo(path).absoluteFilePath();
   forceModified_ = true; // not saved anywhere yet
+  if (previous)
+    parts_.undoStack->push(new ReplaceDocumentCommand(
+        tr("Import %1").arg(QFileInfo(path).fileName()), std::move(previous),
+        [this](HeldDocument& held) { return swapDocument(held); }));
   emit titleChanged();
   lastError_.clear();
   parts_.statusBar->showMessage(tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), *report),
@@ -105,20 +124,45 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   return true;
 }
 
-void DocumentActions::adoptDocument(core::Document document, const QString& path) {
+bool DocumentActions::adoptDocument(core::Document document, const QString& path, bool clearUndo) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
   if (!parts_.viewport->setDocument(std::move(document))) {
     showError(parts_.viewport->error());
-    return;
+    return false;
   }
-  parts_.undoStack->clear();
+  if (clearUndo) parts_.undoStack->clear();
   path_ = path;
+  importedFrom_.clear();
   forceModified_ = false;
   autosavedIndex_ = -1;
   parts_.lodPanel->setDocumentSize(parts_.viewport->document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
+  return true;
+}
+
+bool DocumentActions::swapDocument(HeldDocument& held) {
+  parts_.viewport->endStroke();
+  HeldDocument shown{parts_.viewport->document(), std::move(parts_.viewport->history()), path_,
+                     importedFrom_, forceModified_};
+  emit aboutToAdopt();
+  if (!parts_.viewport->setDocument(std::move(held.document))) {
+    parts_.viewport->history() = std::move(shown.history);
+    showError(parts_.viewport->error());
+    return false;
+  }
+  parts_.viewport->history() = std::move(held.history);
+  path_ = held.path;
+  importedFrom_ = held.importedFrom;
+  forceModified_ = held.forceModified;
+  autosavedIndex_ = -1;
+  held = std::move(shown);
+  parts_.lodPanel->setDocumentSize(parts_.viewport->document().size());
+  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  emit titleChanged();
+  emit adopted();
+  return true;
 }
 
 bool DocumentActions::newDocument(core::BaseShape shape, int n) {
@@ -136,11 +180,18 @@ bool DocumentActions::newDocument(core::BaseShape shape, int n) {
 }
 
 bool DocumentActions::openDocument(const QString& path) {
+  if (isImportableMesh(path)) {
+    showError(tr("%1 is a mesh, not an Octaclay model: use File ▸ Import Mesh… (Ctrl+I) to turn "
+                 "it into one.\nThe current model is unchanged.")
+                  .arg(QFileInfo(path).fileName()));
+    return false;
+  }
   auto read = std::make_shared<core::Document>();
   const QString error = runner_.run(tr("Opening %1…").arg(QFileInfo(path).fileName()),
                                     [read, path] { *read = readModelFile(path); });
   if (!error.isEmpty()) {
-    showError(tr("Could not open %1: %2\nThe current model is unchanged.").arg(path, error));
+    showError(failureMessage(tr("Could not open"), path, error) +
+              tr("\nThe current model is unchanged."));
     return false;
   }
   // A compressed model opens untitled, so Save asks for an .exr instead of overwriting it.
@@ -160,7 +211,7 @@ bool DocumentActions::saveDocument(const QString& path) {
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()),
                   [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
   if (!error.isEmpty()) {
-    showError(tr("Could not save %1: %2").arg(path, error));
+    showError(failureMessage(tr("Could not save"), path, error));
     return false;
   }
   path_ = QFileInfo(path).absoluteFilePath();
@@ -183,7 +234,7 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
         core::writeCompressedDocument(*snapshot, options, toPath(path));
       });
   if (!error.isEmpty()) {
-    showError(tr("Could not save %1: %2").arg(path, error));
+    showError(failureMessage(tr("Could not save"), path, error));
     return false;
   }
   lastError_.clear();
@@ -218,7 +269,7 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
   }
   const QString error = runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
-    showError(tr("Could not export %1: %2").arg(path, error));
+    showError(failureMessage(tr("Could not export"), path, error));
     return false;
   }
   lastError_.clear();
@@ -267,7 +318,7 @@ bool DocumentActions::exportLod(const QString& path) {
       control);
   emit saliencyWishChanged();
   if (!error.isEmpty()) {
-    showError(tr("Could not export %1: %2").arg(path, error));
+    showError(failureMessage(tr("Could not export"), path, error));
     return false;
   }
   if (control->cancel) {

@@ -18,6 +18,7 @@ class QWidget;
 
 namespace octaclay::app {
 
+struct HeldDocument;
 class LodPanel;
 class ViewportWidget;
 
@@ -43,14 +44,16 @@ public:
   /// A new document of this shape and size (made off the GUI thread).
   bool newDocument(core::BaseShape shape, int n);
   /// Reads path (.exr, or .ocz as an untitled model); on failure reports why and keeps the
-  /// current document.
+  /// current document. A mesh (.obj, .ply, .stl, .off) is refused with a pointer to Import Mesh.
   bool openDocument(const QString& path);
   /// Saves atomically off the GUI thread; the document stays editable meanwhile.
   bool saveDocument(const QString& path);
   /// Writes the document compressed (.ocz). The document keeps its path and unsaved state.
   bool saveCompressed(const QString& path, const core::CompressOptions& options);
   /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, with a
-  /// cancellable progress dialog; on failure or cancel the current document stays.
+  /// cancellable progress dialog; on failure or cancel the current document stays. The import
+  /// is one undo step ("Import <name>", a ReplaceDocumentCommand): undo brings the previous
+  /// document back with its own strokes still undoable.
   bool importMesh(const QString& path, int n);
   /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
   bool exportMesh(const QString& path, int divisor);
@@ -60,6 +63,8 @@ public:
   bool exportLod(const QString& path);
 
   QString currentPath() const { return path_; }
+  /// The mesh the current document was imported from (absolute), empty if it was not.
+  QString importedFrom() const { return importedFrom_; }
   bool isModified() const;
   QString lastError() const { return lastError_; }
 
@@ -89,7 +94,11 @@ signals:
 
 private:
   void showError(const QString& message);
-  void adoptDocument(core::Document document, const QString& path);
+  /// Shows document as the current one (clearing the undo stack when clearUndo); false if the
+  /// viewport refused it (reported; the current document stays).
+  bool adoptDocument(core::Document document, const QString& path, bool clearUndo = true);
+  /// Shows held (with its history, path and state) and puts the shown document in its place.
+  bool swapDocument(HeldDocument& held);
   void addRecentFile(const QString& path);
 
   Parts parts_;
@@ -97,6 +106,7 @@ private:
   RecoveryStore recovery_;
   std::optional<RecoveryStore::Pending> pending_;
   QString path_;
+  QString importedFrom_;
   QString lastError_;
   int autosavedIndex_ = -1;    // undo index at the last autosave
   bool forceModified_ = false; // a recovered or imported document differs from any file

@@ -13,6 +13,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <iterator>
+#include <utility>
 
 namespace octaclay::app {
 
@@ -39,9 +41,9 @@ QString groupedNumber(long long value) {
 LodPanel::LodPanel(QWidget* parent) : QWidget(parent) {
   levelCombo_ = new QComboBox;
   levelCombo_->setObjectName(QStringLiteral("level"));
-  levelCombo_->setToolTip(tr("The level of detail the viewport draws while you work: N/k shows "
-                             "every k-th sample of the N×N document. Brushes always edit the "
-                             "full resolution."));
+  levelCombo_->setToolTip(tr("How much detail the viewport draws while you work (less draws "
+                             "faster): N/k shows every k-th sample of the N×N model. Brushes "
+                             "always edit the full detail."));
   levelCombo_->setEnabled(false);
   connect(levelCombo_, &QComboBox::currentIndexChanged, this, [this](int index) {
     if (index < 0) return;
@@ -57,7 +59,7 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent) {
   fullLabel_->setText(tr("Full: —"));
 
   auto* form = new QFormLayout;
-  form->addRow(tr("Display level"), levelCombo_);
+  form->addRow(tr("Display detail"), levelCombo_);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form);
   layout->addWidget(displayedLabel_);
@@ -70,11 +72,26 @@ QWidget* LodPanel::buildAutomaticLod() {
   auto* box = new QGroupBox(tr("Automatic level of detail"));
   methodCombo_ = new QComboBox;
   methodCombo_->setObjectName(QStringLiteral("lodMethod"));
-  for (core::ResampleMethod m :
-       {core::ResampleMethod::Point, core::ResampleMethod::Average,
-        core::ResampleMethod::SalientAverage, core::ResampleMethod::SalientPoint,
-        core::ResampleMethod::Adaptive})
-    methodCombo_->addItem(QString::fromUtf8(core::methodName(m)), static_cast<int>(m));
+  // Words for the methods, no longer than the names were (they set the dock's width); the
+  // technical name and what it does in each item's tooltip.
+  const std::pair<core::ResampleMethod, QString> methods[] = {
+      {core::ResampleMethod::Point, tr("Nearest sample")},
+      {core::ResampleMethod::Average, tr("Smooth")},
+      {core::ResampleMethod::SalientAverage, tr("Soft features")},
+      {core::ResampleMethod::SalientPoint, tr("Sharp features")},
+      {core::ResampleMethod::Adaptive, tr("Adaptive")}};
+  const QString whatEachDoes[] = {
+      tr("the full-resolution sample at its place"), tr("the mean of the samples it stands for"),
+      tr("their saliency-weighted mean"), tr("the most salient of them"),
+      tr("vertices placed where the surface bends, no grid")};
+  for (std::size_t k = 0; k < std::size(methods); ++k) {
+    methodCombo_->addItem(methods[k].second, static_cast<int>(methods[k].first));
+    methodCombo_->setItemData(
+        static_cast<int>(k),
+        QStringLiteral("%1: %2").arg(QString::fromUtf8(core::methodName(methods[k].first)),
+                                     whatEachDoes[k]),
+        Qt::ToolTipRole);
+  }
   methodCombo_->setCurrentIndex(methodCombo_->findData(
       static_cast<int>(core::ResampleMethod::SalientPoint))); // the thesis's best
   methodCombo_->setToolTip(tr("How each LOD sample is picked from the full-resolution samples it "
@@ -106,8 +123,8 @@ QWidget* LodPanel::buildAutomaticLod() {
   lodLabel_->setObjectName(QStringLiteral("lodTriangles"));
   errorLabel_ = new QLabel(tr("Error: —"));
   errorLabel_->setObjectName(QStringLiteral("lodError"));
-  errorLabel_->setToolTip(tr("Two-sided distance between the LOD and the full-resolution surface, "
-                             "as fractions of the bounding-box diagonal"));
+  errorLabel_->setToolTip(tr("How far the LOD lies from the full-detail surface, as a percentage "
+                             "of the model's size (its bounding-box diagonal)"));
   errorLabel_->setWordWrap(true);
   exportButton_ = new QPushButton(tr("Export…"));
   exportButton_->setObjectName(QStringLiteral("exportLod"));
@@ -167,12 +184,18 @@ void LodPanel::setLodResult(long long triangles, double milliseconds) {
 void LodPanel::setLodError(const std::optional<core::SurfaceDistance>& error) {
   if (!error) {
     errorLabel_->setText(tr("Error: —"));
+    errorLabel_->setToolTip(tr("How far the LOD lies from the full-detail surface, as a "
+                               "percentage of the model's size (its bounding-box diagonal)"));
     return;
   }
-  errorLabel_->setText(tr("RMS %1 · Hausdorff %2 · PSNR %3 dB")
-                           .arg(error->rms, 0, 'g', 3)
-                           .arg(error->hausdorff, 0, 'g', 3)
-                           .arg(error->psnr, 0, 'f', 1));
+  errorLabel_->setText(tr("Error (% of size): %1 % average, %2 % at most")
+                           .arg(100 * error->rms, 0, 'g', 3)
+                           .arg(100 * error->hausdorff, 0, 'g', 3));
+  errorLabel_->setToolTip(tr("RMS %1 · Hausdorff %2 · PSNR %3 dB (two-sided distance to the "
+                             "full-detail surface, as fractions of the bounding-box diagonal)")
+                              .arg(error->rms, 0, 'g', 3)
+                              .arg(error->hausdorff, 0, 'g', 3)
+                              .arg(error->psnr, 0, 'f', 1));
 }
 
 QString LodPanel::lodText() const {
@@ -185,6 +208,9 @@ QString LodPanel::errorText() const {
 
 void LodPanel::setDocumentSize(int n) {
   documentSize_ = std::max(n, 0);
+  // The figures were the previous document's.
+  setLodError(std::nullopt);
+  lodLabel_->setText(tr("LOD: —"));
   int divisor = divisor_;
   if (!userChose_ || !isLevel(divisor)) {
     // The largest level ≤ kDefaultDisplaySize, else the smallest level there is. A choice that
@@ -228,8 +254,18 @@ bool LodPanel::isLevel(int divisor) const {
 void LodPanel::fillLevels() {
   const QSignalBlocker block(levelCombo_);
   levelCombo_->clear();
-  for (int d = 1; d <= kMaxDivisor && documentSize_ / d >= kMinLevelSize; d *= 2)
-    levelCombo_->addItem(QStringLiteral("N/%1 (%2)").arg(d).arg(documentSize_ / d), d);
+  const QString words[] = {tr("Full"), tr("High"),     tr("Medium"),
+                           tr("Low"),  tr("Very low"), tr("Lowest")};
+  int k = 0;
+  for (int d = 1; d <= kMaxDivisor && documentSize_ / d >= kMinLevelSize; d *= 2, ++k) {
+    levelCombo_->addItem(tr("%1 (%2)").arg(words[k]).arg(documentSize_ / d), d);
+    const QString tip = d == 1 ? tr("N/1: every sample of the %1 × %1 model").arg(documentSize_)
+                               : tr("N/%1: one sample in %1 each way, %2 × %2 of the %3 × %3 model")
+                                     .arg(d)
+                                     .arg(documentSize_ / d)
+                                     .arg(documentSize_);
+    levelCombo_->setItemData(k, tip, Qt::ToolTipRole);
+  }
   levelCombo_->setEnabled(levelCombo_->count() > 0);
 }
 

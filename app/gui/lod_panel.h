@@ -18,17 +18,18 @@ class QSpinBox;
 namespace octaclay::app {
 
 /// The Level-of-detail dock panel: which level of the document's N×N geometry image the
-/// viewport draws (N/1, N/2, … N/32, levels of at least 2 samples a side, shown as
-/// "N/8 (128)"), and the triangle counts of the displayed and of the full mesh. The divisor is
-/// what the user chose; until they choose, it follows each document to the largest level of
-/// at most 256 (the default display level).
+/// viewport draws (N/1, N/2, … N/32, levels of at least 2 samples a side, shown in words as
+/// "Display detail: Low (128)", "N/8" in the item's tooltip), and the triangle counts of the
+/// displayed and of the full mesh. The divisor is what the user chose; until they choose, it
+/// follows each document to the largest level of at most 256 (the default display level).
 ///
 /// Below, the automatic level of detail (thesis chapter 4): the resampling method (point,
 /// average, salient average, salient point), the triangle target, what the viewport shows (the
 /// full resolution, the LOD, or both side by side; the LOD is regenerated live while it is
 /// shown), the LOD's triangles and generation time, its error against the full resolution
-/// (RMS, Hausdorff, PSNR) and Export… (the LOD with its paint and a baked normal map). GUI
-/// thread.
+/// (as a percentage of the model's size; RMS, Hausdorff and PSNR in the tooltip) and Export…
+/// (the LOD with its paint and a baked normal map). The methods are named in words ("Sharp
+/// features"), their technical names in the items' tooltips. GUI thread.
 class LodPanel : public QWidget {
   Q_OBJECT
 
@@ -43,7 +44,8 @@ public:
 
   explicit LodPanel(QWidget* parent = nullptr);
 
-  /// Lists the levels of an n×n document (n ≥ 2; below that the list is empty). Keeps the
+  /// A new document: clears the LOD's figures (lodText(), errorText()) and lists the levels of
+  /// an n×n document (n ≥ 2; below that the list is empty). Keeps the
   /// divisor the user chose (combo box or setDivisor) while it is still a level of n, else
   /// picks the largest level ≤ kDefaultDisplaySize (or the smallest level when none is).
   /// Emits levelChanged when the divisor changes.
@@ -86,8 +88,9 @@ public:
 
   /// Shows "LOD: 20,000 triangles in 12.3 ms" for the newest LOD.
   void setLodResult(long long triangles, double milliseconds);
-  /// Shows "RMS 0.00123 · Hausdorff 0.0101 · PSNR 58.2 dB" (fractions of the bounding-box
-  /// diagonal), or "Error: —" when there is no measurement.
+  /// Shows "Error (% of size): 0.123 % average, 1.01 % at most" (RMS and Hausdorff distance
+  /// over the bounding-box diagonal; those and the PSNR in the tooltip), or "Error: —" when
+  /// there is no measurement.
   void setLodError(const std::optional<core::SurfaceDistance>& error);
   QString lodText() const;
   QString errorText() const;

@@ -2,12 +2,14 @@
 
 #include "brush_panel.h"
 #include "document_actions.h"
+#include "file_suggestion.h"
 #include "help_menu.h"
 #include "layers_panel.h"
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "stroke_command.h"
+#include "user_messages.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/relax/relax.h"
@@ -22,6 +24,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
 #include <QUndoStack>
@@ -66,7 +69,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   auto* brushPoll = new QTimer(this);
   connect(brushPoll, &QTimer::timeout, this, [this] {
     for (const QString& failure : viewport_->reloadBrushes())
-      statusBar()->showMessage(failure, 8000);
+      showStatusMessage(*statusBar(), failure, 8000);
   });
   brushPoll->start(1000);
 
@@ -109,7 +112,7 @@ void MainWindow::connectParts() {
   connect(undoStack_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
   connect(viewport_, &ViewportWidget::brushesChanged, this, &MainWindow::refreshBrushes);
   connect(viewport_, &ViewportWidget::errorOccurred, this,
-          [this](const QString& message) { statusBar()->showMessage(message, 10000); });
+          [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
   connect(brushPanel_, &BrushPanel::settingsChanged, this,
           [this] { viewport_->setBrushSettings(brushPanel_->settings()); });
@@ -296,9 +299,29 @@ void MainWindow::updateTitle() {
   setWindowModified(isModified());
 }
 
+QString MainWindow::suggestedPath(FileRequest request) const {
+  const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  const QString path = currentPath(), imported = documents_->importedFrom();
+  switch (request) {
+  case FileRequest::Open:
+  case FileRequest::Import:
+    return suggestedOpenFolder(path, imported, documents);
+  case FileRequest::SaveAs:
+    return suggestedSavePath(path, imported, QStringLiteral("exr"), documents);
+  case FileRequest::SaveCompressed:
+    return suggestedSavePath(path, imported, QStringLiteral("ocz"), documents);
+  case FileRequest::Export:
+    return suggestedSavePath(path, imported, QStringLiteral("glb"), documents);
+  case FileRequest::ExportLod:
+    return suggestedSavePath(path, imported, QStringLiteral("glb"), documents,
+                             QStringLiteral("_lod"));
+  }
+  return documents;
+}
+
 QString MainWindow::choose(FileRequest request) {
   if (chooser_) return chooser_(request);
-  const QString dir = QFileInfo(currentPath()).absolutePath();
+  const QString dir = suggestedPath(request);
   switch (request) {
   case FileRequest::Open:
     return QFileDialog::getOpenFileName(this, tr("Open model"), dir,
@@ -314,10 +337,10 @@ QString MainWindow::choose(FileRequest request) {
                                         tr("Meshes (*.obj *.ply *.stl *.off)"));
   case FileRequest::Export:
     return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
-                                        tr("Meshes (*.obj *.glb *.ply *.stl *.off)"));
+                                        tr("Meshes (*.glb *.obj *.ply *.stl *.off)"));
   case FileRequest::ExportLod:
     return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
-                                        tr("Meshes with a normal map (*.obj *.glb)"));
+                                        tr("Meshes with a normal map (*.glb *.obj)"));
   }
   return {};
 }

@@ -55,6 +55,10 @@ public:
   QUndoStack* undoStack() const { return undoStack_; }
   QAction* action(const QString& objectName) const;
 
+  /// Where the file dialog for request opens: for a save or export, a name beside the document
+  /// (its folder and base name, or the imported mesh's, with the right extension); for open and
+  /// import, the document's folder (file_suggestion.h).
+  QString suggestedPath(FileRequest request) const;
   /// Replaces the file dialogs (tests, scripts): returns the chosen path or empty to cancel.
   void setFileChooser(std::function<QString(FileRequest)> chooser) {
     chooser_ = std::move(chooser);

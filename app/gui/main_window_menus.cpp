@@ -2,6 +2,7 @@
 // (whole-model operations) and View.
 
 #include "brush_panel.h"
+#include "detail_levels.h"
 #include "help_menu.h"
 #include "lod_panel.h"
 #include "looks_menu.h"
@@ -16,6 +17,7 @@
 #include <QFormLayout>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QSettings>
 #include <QSpinBox>
@@ -51,11 +53,14 @@ void MainWindow::buildMenus() {
             for (const char* s : {"sphere", "cube", "cylinder", "blob"})
               shape->addItem(tr(s), QString(s));
             auto* size = new QComboBox(&dialog);
-            for (int n : {64, 128, 256, 512, 1024, 2048, 4096})
-              size->addItem(QString::number(n), n);
-            size->setCurrentText("1024");
+            size->setObjectName("detailCombo");
+            for (int n : {64, 128, 256, 512, 1024, 2048, 4096}) {
+              size->addItem(detailLabel(n), n);
+              size->setItemData(size->count() - 1, detailTooltip(n), Qt::ToolTipRole);
+            }
+            size->setCurrentIndex(size->findData(1024));
             form->addRow(tr("Shape"), shape);
-            form->addRow(tr("Size N"), size);
+            form->addRow(tr("Detail"), size);
             auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
             form->addRow(buttons);
             connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
@@ -78,11 +83,14 @@ void MainWindow::buildMenus() {
             int n = 512;
             if (!chooser_) { // interactive: ask the image size
               bool ok = false;
-              const QString size =
-                  QInputDialog::getItem(this, tr("Import mesh"), tr("Geometry image size N"),
-                                        {"128", "256", "512", "1024", "2048"}, 2, false, &ok);
+              const QList<int> sizes{128, 256, 512, 1024, 2048};
+              QStringList labels;
+              for (int s : sizes)
+                labels << detailLabel(s);
+              const QString size = QInputDialog::getItem(this, tr("Import mesh"), tr("Detail"),
+                                                         labels, 2, false, &ok);
               if (!ok) return;
-              n = size.toInt();
+              n = sizes.value(static_cast<int>(labels.indexOf(size)), 512);
             }
             importMesh(path, n);
           });
@@ -107,26 +115,27 @@ void MainWindow::buildMenus() {
             const QString path = choose(FileRequest::SaveCompressed);
             if (!path.isEmpty()) saveCompressed(path, dialog.options());
           });
-  connect(
-      add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
-      &QAction::triggered, this, [this] {
-        const QString path = choose(FileRequest::Export);
-        if (path.isEmpty() || !viewport_->hasDocument()) return;
-        int divisor = lodPanel_->divisor();
-        if (!chooser_) { // interactive: ask which level, offering the displayed one
-          const int n = viewport_->document().size();
-          QStringList levels;
-          for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
-            levels << tr("N/%1 (%2, %3 triangles)").arg(d).arg(n / d).arg(2LL * (n / d) * (n / d));
-          bool ok = false;
-          const QString level =
-              QInputDialog::getItem(this, tr("Export mesh"), tr("Level of detail"), levels,
-                                    static_cast<int>(std::log2(divisor)), false, &ok);
-          if (!ok) return;
-          divisor = 1 << levels.indexOf(level);
-        }
-        exportMesh(path, divisor);
-      });
+  connect(add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
+          &QAction::triggered, this, [this] {
+            const QString path = choose(FileRequest::Export);
+            if (path.isEmpty() || !viewport_->hasDocument()) return;
+            int divisor = lodPanel_->divisor();
+            if (!chooser_) { // interactive: ask which level, offering the displayed one
+              const int n = viewport_->document().size();
+              QStringList levels;
+              for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
+                levels << (d == 1 ? tr("Full detail (%2 triangles)")
+                                  : tr("1/%1 of the detail (%2 triangles)").arg(d))
+                              .arg(QLocale().toString(2LL * (n / d) * (n / d)));
+              bool ok = false;
+              const QString level =
+                  QInputDialog::getItem(this, tr("Export mesh"), tr("Detail"), levels,
+                                        static_cast<int>(std::log2(divisor)), false, &ok);
+              if (!ok) return;
+              divisor = 1 << levels.indexOf(level);
+            }
+            exportMesh(path, divisor);
+          });
   file->addSeparator();
   connect(add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit), &QAction::triggered, this,
           &QWidget::close);

@@ -10,8 +10,10 @@
 #include <QDialogButtonBox>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSlider>
 #include <QTimer>
 #include <QtConcurrent>
 
@@ -90,8 +92,12 @@ SaveCompressedDialog::SaveCompressedDialog(std::shared_ptr<const core::Document>
   codec_->setObjectName("codecCombo");
   for (const core::Codec& c : core::codecs())
     codec_->addItem(QString::fromUtf8(c.info.id.data(), static_cast<int>(c.info.id.size())));
-  quality_ = new QComboBox(this);
-  quality_->setObjectName("qualityCombo");
+  quality_ = new QSlider(Qt::Horizontal, this);
+  quality_->setObjectName("qualitySlider");
+  quality_->setPageStep(1);
+  quality_->setTickPosition(QSlider::TicksBelow);
+  qualityValue_ = new QLabel(this);
+  qualityValue_->setObjectName("qualityValue");
   mode_ = new QComboBox(this);
   mode_->setObjectName("modeCombo");
   for (const char* m : {"zip", "piz", "pxr24", "half"})
@@ -103,11 +109,16 @@ SaveCompressedDialog::SaveCompressedDialog(std::shared_ptr<const core::Document>
   error_ = new QLabel(this);
   error_->setObjectName("errorLabel");
   form->addRow(tr("Codec"), codec_);
-  form->addRow(tr("Quality"), quality_);
+  auto* qualityRow = new QHBoxLayout;
+  qualityRow->addWidget(new QLabel(tr("Smaller file"), this));
+  qualityRow->addWidget(quality_, 1);
+  qualityRow->addWidget(new QLabel(tr("More exact"), this));
+  form->addRow(tr("Detail kept"), qualityRow);
+  form->addRow(QString(), qualityValue_);
   form->addRow(tr("EXR mode"), mode_);
   form->addRow(qualityHelp_);
   form->addRow(tr("Size"), size_);
-  form->addRow(tr("Error"), error_);
+  form->addRow(tr("Error (% of size)"), error_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Save | QDialogButtonBox::Cancel, this);
   form->addRow(buttons);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -122,7 +133,10 @@ SaveCompressedDialog::SaveCompressedDialog(std::shared_ptr<const core::Document>
     fillQualities();
     schedulePreview();
   });
-  connect(quality_, &QComboBox::currentIndexChanged, this, &SaveCompressedDialog::schedulePreview);
+  connect(quality_, &QSlider::valueChanged, this, [this] {
+    showQualityValue();
+    schedulePreview();
+  });
   connect(mode_, &QComboBox::currentIndexChanged, this, &SaveCompressedDialog::schedulePreview);
   const int wavelet = codec_->findText("wavelet");
   codec_->setCurrentIndex(wavelet >= 0 ? wavelet : 0);
@@ -137,7 +151,9 @@ SaveCompressedDialog::~SaveCompressedDialog() {
 core::CompressOptions SaveCompressedDialog::options() const {
   core::CompressOptions o;
   o.codec = codec_->currentText().toStdString();
-  o.params.quality = quality_->isEnabled() ? quality_->currentData().toDouble() : -1;
+  o.params.quality = quality_->isEnabled() && !qualities_.empty()
+                         ? qualities_[static_cast<std::size_t>(quality_->value())]
+                         : -1;
   if (o.codec == "exr") o.params.mode = mode_->currentText().toStdString();
   return o;
 }
@@ -150,9 +166,9 @@ bool SaveCompressedDialog::setCodec(const QString& id) {
 }
 
 bool SaveCompressedDialog::setQuality(double quality) {
-  const int k = quality_->findData(quality);
-  if (k < 0 || !quality_->isEnabled()) return false;
-  quality_->setCurrentIndex(k);
+  const auto it = std::find(qualities_.begin(), qualities_.end(), quality);
+  if (it == qualities_.end() || !quality_->isEnabled()) return false;
+  quality_->setValue(static_cast<int>(it - qualities_.begin()));
   return true;
 }
 
@@ -166,16 +182,30 @@ bool SaveCompressedDialog::setMode(const QString& mode) {
 void SaveCompressedDialog::fillQualities() {
   const core::Codec* codec = core::findCodec(codec_->currentText().toStdString());
   const QSignalBlocker block(quality_);
-  quality_->clear();
+  qualities_.clear();
   if (codec == nullptr) return;
-  for (double q : qualitiesFor(*codec, doc_->size()))
-    quality_->addItem(QString::number(q, 'g', 6), q);
-  const int k = quality_->findData(codec->info.defaultQuality);
-  quality_->setCurrentIndex(k >= 0 ? k : 0);
-  quality_->setEnabled(quality_->count() > 0);
+  qualities_ = qualitiesFor(*codec, doc_->size());
+  const auto k = std::find(qualities_.begin(), qualities_.end(), codec->info.defaultQuality);
+  quality_->setRange(0, std::max(static_cast<int>(qualities_.size()) - 1, 0));
+  quality_->setValue(k != qualities_.end() ? static_cast<int>(k - qualities_.begin()) : 0);
+  quality_->setEnabled(!qualities_.empty());
   mode_->setEnabled(codec->info.id == "exr");
-  qualityHelp_->setText(
+  // What the value means is for those who want it: the tooltip.
+  qualityHelp_->setText(codec->info.lossy ? QString() : tr("This codec keeps the model exactly."));
+  quality_->setToolTip(
       QString::fromUtf8(codec->info.quality.data(), static_cast<int>(codec->info.quality.size())));
+  showQualityValue();
+}
+
+void SaveCompressedDialog::showQualityValue() {
+  if (!quality_->isEnabled() || qualities_.empty()) {
+    qualityValue_->clear();
+    return;
+  }
+  const int k = quality_->value();
+  qualityValue_->setText(tr("step %1 of %2").arg(k + 1).arg(qualities_.size()));
+  qualityValue_->setToolTip(
+      tr("The codec's quality value: %1").arg(qualities_[static_cast<std::size_t>(k)], 0, 'g', 6));
 }
 
 void SaveCompressedDialog::schedulePreview() {
@@ -220,13 +250,17 @@ void SaveCompressedDialog::showPreview() {
   const CompressionPreview& p = *preview_;
   size_->setText(
       tr("%1 (%2 bits per vertex)").arg(formatBytes(p.bytes)).arg(p.bitsPerVertex, 0, 'f', 2));
-  if (p.exact)
+  if (p.exact) {
     error_->setText(tr("none: positions restored exactly"));
-  else
-    error_->setText(tr("PSNR %1 dB, max error %2 (%3 % of the diagonal)")
-                        .arg(p.psnr, 0, 'f', 1)
-                        .arg(p.maxError, 0, 'g', 3)
+    error_->setToolTip({});
+  } else {
+    error_->setText(tr("at most %1 % of the model's size")
                         .arg(100 * p.maxError / std::max(p.diagonal, 1e-30), 0, 'g', 3));
+    error_->setToolTip(tr("PSNR %1 dB; largest displacement %2 (model units); size is the "
+                          "bounding-box diagonal")
+                           .arg(p.psnr, 0, 'f', 1)
+                           .arg(p.maxError, 0, 'g', 3));
+  }
   emit previewUpdated();
 }
 

@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QLabel;
+class QSlider;
 class QTimer;
 
 namespace octaclay::app {
@@ -34,8 +35,10 @@ CompressionPreview previewCompression(const core::Document& doc,
 /// A model file by extension: .ocz through the compressed container, else an Octaclay EXR.
 core::Document readModelFile(const QString& path);
 
-/// File › Save Compressed…: codec, quality (or EXR mode) and a live preview of the size and
-/// error, computed in the background whenever the choice changes, before anything is written.
+/// File › Save Compressed…: codec, a slider from "Smaller file" to "More exact" over the codec's
+/// qualities (the technical value in its tooltip), or the EXR mode, and a live preview of the
+/// size and error (as a percentage of the model's size; PSNR in the tooltip), computed in the
+/// background whenever the choice changes, before anything is written.
 class SaveCompressedDialog : public QDialog {
   Q_OBJECT
 public:
@@ -43,7 +46,8 @@ public:
   ~SaveCompressedDialog() override;
 
   core::CompressOptions options() const;
-  /// Selects a codec (by id) and a quality or mode offered for it; false when not offered.
+  /// Selects a codec (by id) and a quality (the codec's own value, e.g. 1e-5 for wavelet) or
+  /// mode offered for it; false when not offered.
   bool setCodec(const QString& id);
   bool setQuality(double quality);
   bool setMode(const QString& mode);
@@ -58,13 +62,16 @@ signals:
 
 private:
   void fillQualities();
+  void showQualityValue();
   void schedulePreview();
   void startPreview();
   void showPreview();
 
   std::shared_ptr<const core::Document> doc_;
   QComboBox* codec_ = nullptr;
-  QComboBox* quality_ = nullptr;
+  QSlider* quality_ = nullptr;    // index into qualities_, coarse (small file) to fine
+  std::vector<double> qualities_; // the codec's, coarse to fine; empty: no quality
+  QLabel* qualityValue_ = nullptr;
   QComboBox* mode_ = nullptr;
   QLabel* qualityHelp_ = nullptr;
   QLabel* size_ = nullptr;

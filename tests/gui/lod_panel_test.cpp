@@ -36,11 +36,17 @@ private slots:
     QCOMPARE(options.size, 0); // chosen from the target
     auto* methods = panel.findChild<QComboBox*>(QStringLiteral("lodMethod"));
     QVERIFY(methods);
-    QStringList names;
-    for (int k = 0; k < methods->count(); ++k)
+    QStringList names, technical;
+    for (int k = 0; k < methods->count(); ++k) {
       names << methods->itemText(k);
-    QCOMPARE(names,
+      technical << methods->itemData(k, Qt::ToolTipRole).toString().section(':', 0, 0);
+    }
+    // Words for a newcomer; the technical names in the tooltips.
+    QCOMPARE(names, (QStringList{"Nearest sample", "Smooth", "Soft features", "Sharp features",
+                                 "Adaptive"}));
+    QCOMPARE(technical,
              (QStringList{"point", "average", "salient-average", "salient-point", "adaptive"}));
+    QCOMPARE(methods->currentText(), QStringLiteral("Sharp features"));
     QCOMPARE(panel.lodText(), QStringLiteral("LOD: —"));
     QCOMPARE(panel.errorText(), QStringLiteral("Error: —"));
   }
@@ -61,7 +67,7 @@ private slots:
     QCOMPARE(panel.targetTriangles(), LodPanel::kMinTargetTriangles);
     panel.setMethod(core::ResampleMethod::SalientAverage);
     QCOMPARE(panel.findChild<QComboBox*>(QStringLiteral("lodMethod"))->currentText(),
-             QStringLiteral("salient-average"));
+             QStringLiteral("Soft features"));
     panel.findChild<QComboBox*>(QStringLiteral("lodDisplay"))->setCurrentIndex(2);
     QCOMPARE(display.count(), 1);
     QCOMPARE(display.front().front().value<LodPanel::Display>(), LodPanel::Display::SideBySide);
@@ -84,7 +90,10 @@ private slots:
     d.hausdorff = 0.0101;
     d.psnr = 20 * std::log10(1 / d.rms);
     panel.setLodError(d);
-    QCOMPARE(panel.errorText(), QStringLiteral("RMS 0.00123 · Hausdorff 0.0101 · PSNR 58.2 dB"));
+    QCOMPARE(panel.errorText(),
+             QStringLiteral("Error (% of size): 0.123 % average, 1.01 % at most"));
+    const QString tip = panel.findChild<QLabel*>(QStringLiteral("lodError"))->toolTip();
+    QVERIFY2(tip.startsWith("RMS 0.00123 · Hausdorff 0.0101 · PSNR 58.2 dB"), qPrintable(tip));
     panel.setLodError(std::nullopt);
     QCOMPARE(panel.errorText(), QStringLiteral("Error: —"));
     QLocale::setDefault(previous);

@@ -665,7 +665,7 @@ void ModellerRenderTest::importTurnsAMeshIntoAModelOrSaysWhyNot() {
   stroke(*window_, "push", 0.05f, 0.5f,
          {window_->viewport()->width() / 2.0, window_->viewport()->height() / 2.0},
          {window_->viewport()->width() / 2.0 + 20, window_->viewport()->height() / 2.0});
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QCOMPARE(window_->undoStack()->count(), 2); // the import, then the stroke
 }
 
 void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {

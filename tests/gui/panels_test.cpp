@@ -556,11 +556,14 @@ private slots:
     QStringList texts;
     for (int k = 0; k < combo->count(); ++k)
       texts.append(combo->itemText(k));
-    QCOMPARE(texts, (QStringList{"N/1 (1024)", "N/2 (512)", "N/4 (256)", "N/8 (128)", "N/16 (64)",
-                                 "N/32 (32)"}));
+    QCOMPARE(texts, (QStringList{"Full (1024)", "High (512)", "Medium (256)", "Low (128)",
+                                 "Very low (64)", "Lowest (32)"}));
+    // The technical level in each item's tooltip.
+    QCOMPARE(combo->itemData(2, Qt::ToolTipRole).toString(),
+             QStringLiteral("N/4: one sample in 4 each way, 256 × 256 of the 1024 × 1024 model"));
     QCOMPARE(panel.divisor(), 4);
     QCOMPARE(panel.displayedSize(), 256);
-    QCOMPARE(combo->currentText(), QStringLiteral("N/4 (256)"));
+    QCOMPARE(combo->currentText(), QStringLiteral("Medium (256)"));
     QCOMPARE(level.count(), 1);
     QCOMPARE(level.front().front().toInt(), 4);
 
@@ -575,7 +578,7 @@ private slots:
     // Small documents offer only levels of at least 2 samples and default to full size.
     panel.setDocumentSize(8);
     QCOMPARE(combo->count(), 3);
-    QCOMPARE(combo->itemText(2), QStringLiteral("N/4 (2)"));
+    QCOMPARE(combo->itemText(2), QStringLiteral("Medium (2)"));
     QCOMPARE(panel.divisor(), 1);
     QCOMPARE(level.count(), 2);
 

@@ -15,6 +15,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -31,6 +32,7 @@ private slots:
   void offersEveryCodec();
   void previewMatchesDirectMeasurement();
   void finerQualityCostsBytesAndGainsPsnr();
+  void sliderRunsFromSmallFileToExact();
   void losslessPreviewIsExact();
   void roundTripThroughFile();
 
@@ -99,7 +101,13 @@ void SaveCompressedTest::previewMatchesDirectMeasurement() {
   const QString size = dialog.findChild<QLabel*>("sizeLabel")->text();
   const QString error = dialog.findChild<QLabel*>("errorLabel")->text();
   QVERIFY2(size.contains(QString::number(shown.bitsPerVertex, 'f', 2)), qPrintable(size));
-  QVERIFY2(error.contains(QString::number(shown.psnr, 'f', 1)), qPrintable(error));
+  // In words a newcomer reads (% of the model's size), the PSNR in the tooltip.
+  const double percent = 100 * shown.maxError / shown.diagonal;
+  QVERIFY2(error.contains(QString::number(percent, 'g', 3) + " % of the model's size"),
+           qPrintable(error));
+  QVERIFY(!error.contains("PSNR"));
+  const QString tip = dialog.findChild<QLabel*>("errorLabel")->toolTip();
+  QVERIFY2(tip.contains(QString::number(shown.psnr, 'f', 1)), qPrintable(tip));
 }
 
 void SaveCompressedTest::finerQualityCostsBytesAndGainsPsnr() {
@@ -116,6 +124,32 @@ void SaveCompressedTest::finerQualityCostsBytesAndGainsPsnr() {
            qPrintable(QString("%1 %2").arg(fine.bytes).arg(coarse.bytes)));
   QVERIFY(fine.psnr > coarse.psnr);
   QVERIFY(fine.maxError < coarse.maxError);
+}
+
+void SaveCompressedTest::sliderRunsFromSmallFileToExact() {
+  SaveCompressedDialog dialog(doc_);
+  QVERIFY(dialog.setCodec("wavelet"));
+  auto* slider = dialog.findChild<QSlider*>("qualitySlider");
+  QVERIFY(slider);
+  QVERIFY(slider->isEnabled());
+  // No raw numbers in view: the slider's ends say what they give, the value is in tooltips.
+  QVERIFY(slider->toolTip().contains("error bound"));
+  slider->setValue(slider->minimum());
+  QCOMPARE(dialog.options().params.quality, 1e-3); // the coarsest: the smallest file
+  const QString value = dialog.findChild<QLabel*>("qualityValue")->toolTip();
+  QVERIFY2(value.contains("0.001"), qPrintable(value));
+  QVERIFY(waitForPreview(dialog));
+  const CompressionPreview small = *dialog.preview();
+  slider->setValue(slider->maximum());
+  QCOMPARE(dialog.options().params.quality, 1e-6); // the finest
+  QVERIFY(waitForPreview(dialog));
+  const CompressionPreview exact = *dialog.preview();
+  QVERIFY2(exact.bytes > small.bytes,
+           qPrintable(QString("%1 %2").arg(exact.bytes).arg(small.bytes)));
+  QVERIFY(exact.maxError < small.maxError);
+  // A lossless codec has nothing to choose.
+  QVERIFY(dialog.setCodec("lossless"));
+  QVERIFY(!slider->isEnabled());
 }
 
 void SaveCompressedTest::losslessPreviewIsExact() {
