@@ -94,6 +94,7 @@ const BrushValues* BrushValueStore::find(const QString& id) const {
 
 BrushValues BrushValueStore::defaults(const gpu::BrushManifest& brush) const {
   BrushValues v;
+  if (brush.category == gpu::Category::Sculpt) v.strength = kDefaultSculptStrength;
   v.falloff = brush.falloff;
   v.area = brush.area;
   for (const gpu::BrushParameter& p : brush.parameters) {

@@ -14,6 +14,10 @@ namespace octaclay::app {
 
 /// Radius limits, as a fraction of the model's bounding-box diagonal.
 inline constexpr float kMinRadius = 0.001f, kMaxRadius = 1.0f;
+/// A sculpt brush's strength until the user sets one: a first stroke, one pass, moves the surface
+/// about a quarter of the radius, like a thumb on clay (0.5 dug trenches and raised horns
+/// when a newcomer went back and forth).
+inline constexpr float kDefaultSculptStrength = 0.25f;
 
 /// value clamped to [lo, hi]; fallback if it is not finite.
 float clampFinite(float value, float lo, float hi, float fallback);
@@ -21,7 +25,7 @@ float clampFinite(float value, float lo, float hi, float fallback);
 /// What the user set for one brush; survives switching brushes.
 struct BrushValues {
   float radius = 0.05f;
-  float strength = 0.5f;
+  float strength = 0.5f; ///< paint and splats; sculpt brushes start at kDefaultSculptStrength
   gpu::Falloff falloff = gpu::Falloff::Smooth;
   gpu::AreaMode area = gpu::AreaMode::Volume;
   std::map<std::string, std::array<float, 4>> parameters; ///< manifest parameter id → value

@@ -1,7 +1,7 @@
 // Numeric effects of the built-in brushes beyond push: inflate moves along each sample's normal,
 // smooth lowers curvature variance, flatten approaches the brush plane, negative strength pulls,
-// linear push never makes the surface cross itself, and dabs on seams and corner poles have the
-// same effect as away from them (no kink).
+// linear push and pull never make the surface cross itself, and dabs on seams and corner poles
+// have the same effect as away from them (no kink).
 
 #include "../mesh_self_intersections.h"
 #include "brush_test_support.h"
@@ -198,15 +198,28 @@ void BrushEffectsTest::negativeStrengthPulls() {
 void BrushEffectsTest::linearPushNeverCrossesTheSurface_data() {
   QTest::addColumn<int>("shape");
   QTest::addColumn<float>("radius");
-  QTest::newRow("blob r=0.3") << int(core::BaseShape::Blob) << 0.3f;
-  QTest::newRow("blob r=0.9") << int(core::BaseShape::Blob) << 0.9f;
-  QTest::newRow("cube r=0.5") << int(core::BaseShape::Cube) << 0.5f;
-  QTest::newRow("cylinder r=0.4") << int(core::BaseShape::Cylinder) << 0.4f;
+  QTest::addColumn<float>("strength");
+  // Pull (Ctrl) is tested as push is. At exactly -1 a dab reaching through the body makes it touch
+  // itself: the sample under the centre moves R inward, and a sample of the far side D below it
+  // moves R - D, to the same point; any pull weaker than that keeps the two apart. The modeller's
+  // strongest pull dab is 100 % x the spacing, -0.15.
+  for (const float strength : {1.0f, -0.99f, -0.15f}) {
+    const QByteArray way = strength > 0 ? "push" : "pull " + QByteArray::number(strength);
+    QTest::addRow("%s blob r=0.3", way.constData())
+        << int(core::BaseShape::Blob) << 0.3f << strength;
+    QTest::addRow("%s blob r=0.9", way.constData())
+        << int(core::BaseShape::Blob) << 0.9f << strength;
+    QTest::addRow("%s cube r=0.5", way.constData())
+        << int(core::BaseShape::Cube) << 0.5f << strength;
+    QTest::addRow("%s cylinder r=0.4", way.constData())
+        << int(core::BaseShape::Cylinder) << 0.4f << strength;
+  }
 }
 
 void BrushEffectsTest::linearPushNeverCrossesTheSurface() {
   QFETCH(int, shape);
   QFETCH(float, radius);
+  QFETCH(float, strength);
   const int n = 64;
   const core::GeometryImage start = core::makeBaseShape(core::BaseShape(shape), n);
   const core::TriangleMesh original = core::extractMesh(start);
@@ -216,7 +229,7 @@ void BrushEffectsTest::linearPushNeverCrossesTheSurface() {
   for (core::Sample s : {core::Sample{0, n / 4}, core::Sample{0, 0}, core::Sample{n / 2, n / 2},
                          core::Sample{n / 4, n / 4}, core::Sample{n, n / 2}}) {
     const core::GeometryImage before = document.document().positions;
-    engine_->dab(document, "push-linear", dabAt(before, s, radius, 1.0f));
+    engine_->dab(document, "push-linear", dabAt(before, s, radius, strength));
     const core::TriangleMesh a = core::extractMesh(before);
     const core::TriangleMesh b = core::extractMesh(document.document().positions);
     QCOMPARE(selfIntersections(b, changedVertices(a, b)), 0);

@@ -175,11 +175,13 @@ void BrushToolBarRenderTest::freshWindowIsOneClickAndOneDragFromAChangedSurface(
   drag(view, centre - QPoint(60, 0), centre + QPoint(60, 0));
   QCOMPARE(window_->undoStack()->count(), 1);
 
-  // The surface swelled where the drag went, visibly but like clay: the largest move is a good
-  // part of the default radius, not beyond it.
+  // The surface swelled where the drag went, visibly but like clay: the largest move is a tenth
+  // to a half of the default radius (a horn or a trench would be more).
   const float radius = window_->brushPanel()->radius() * view->modelDiagonal();
   const float moved = largestMove(before, positionsOf(*window_));
-  QVERIFY2(moved > 0.2f * radius && moved < radius,
+  qInfo("first stroke: largest move %.4f, %.2f of the radius", double(moved),
+        double(moved / radius));
+  QVERIFY2(moved > 0.1f * radius && moved < 0.5f * radius,
            qPrintable(QString("moved %1, radius %2").arg(moved).arg(radius)));
 }
 
@@ -328,9 +330,9 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   QCOMPARE(after[0], eye[0]);
   QCOMPARE(after[1], eye[1]);
   QCOMPARE(after[2], eye[2]);
-  // Far right clamps at 100 %; Enter keeps it.
+  // Far to the right clamps at 100 %; Enter keeps it.
   QTest::keyClick(view, Qt::Key_F, Qt::ShiftModifier);
-  QTest::mouseMove(view, QPoint(view->width() - 2, centre.y()));
+  QTest::mouseMove(view, adjust->origin().toPoint() + QPoint(320, 0)); // 107 % more
   QTest::keyClick(view, Qt::Key_Return);
   QCOMPARE(panel->strength(), 1.0f);
 }

@@ -324,7 +324,7 @@ private slots:
           ->setColor(QColor::fromRgbF(0.1f, 0.9f, 0.3f, 1.0f));
       panel.setStrength(0.8f);
       QVERIFY(panel.selectBrush(QStringLiteral("push")));
-      QCOMPARE(panel.strength(), 0.5f); // push keeps its own
+      QCOMPARE(panel.strength(), kDefaultSculptStrength); // push keeps its own
       panel.setRadius(0.2f);
       QVERIFY(panel.selectBrush(QStringLiteral("paint")));
       QCOMPARE(panel.strength(), 0.8f);
@@ -346,7 +346,7 @@ private slots:
     QVERIFY(nearlyEqual(parameterOf(panel, "color"), {0.1f, 0.9f, 0.3f, 1.0f}));
     QVERIFY(panel.selectBrush(QStringLiteral("smooth")));
     QCOMPARE(panel.radius(), 0.05f);
-    QCOMPARE(panel.strength(), 0.5f);
+    QCOMPARE(panel.strength(), kDefaultSculptStrength);
   }
 
   void errorsAreShownInFull() {
