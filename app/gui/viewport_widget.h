@@ -1,6 +1,8 @@
 #pragma once
 
 #include "brush_settings.h"
+#include "camera_control.h"
+#include "camera_views.h"
 #include "lod_display.h"
 #include "saliency_keeper.h"
 #include "sculpt_session.h"
@@ -131,7 +133,22 @@ public:
   /// of the last stroke begun (SculptSession::setKeepDetail).
   bool keepsDetail() const { return session_.keepDetail(); }
 
+  /// The front view, framing the model (a new document is shown so).
   void resetCamera();
+  /// Frames the model from the current direction (Home): its bounding sphere fills the view.
+  void frameModel();
+  /// Turns the camera to a standard view about the focal point, keeping the zoom.
+  void setView(ViewDirection direction);
+  void setOrthographic(bool orthographic);
+  bool orthographic() const;
+  void setOrbitMode(OrbitMode mode) { orbitMode_ = mode; }
+  OrbitMode orbitMode() const { return orbitMode_; }
+  /// The view drawn offscreen at size (device pixels, up to maxImageSide() a side) without the
+  /// brush outline; with background false the background is transparent (alpha 0) and the model
+  /// opaque. Null when GL is not ready or the size is out of range. GL work on the GUI thread.
+  QImage renderImage(QSize size, bool background);
+  /// The largest side renderImage() draws (the GL framebuffer limit, 8192 at most).
+  int maxImageSide();
   /// The surface point under widget position p (logical pixels), if any.
   std::optional<core::PickHit> pickAt(QPointF p) const;
   /// Where object-space point p appears in the widget (logical pixels).
@@ -204,6 +221,8 @@ private:
   QRectF modelRect() const;
   void applyLodDisplay();
   void updateClipping();
+  /// The model's bounds from the document's tile boxes, for framing and clipping.
+  void updateBounds();
   void fail(const QString& message);
 
   vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
@@ -232,6 +251,7 @@ private:
   StrokeStabilizer stabilizer_;
   std::optional<core::PickHit> hover_;
   Drag drag_ = Drag::None;
+  OrbitMode orbitMode_ = OrbitMode::Turntable;
   Qt::MouseButton dragButton_ = Qt::NoButton; ///< the button whose release ends drag_
   QPointF lastPos_;
   float tabletPressure_ = 1.0f;
