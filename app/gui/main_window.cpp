@@ -8,8 +8,10 @@
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
+#include "save_image_dialog.h"
 #include "stroke_command.h"
 #include "user_messages.h"
+#include "viewport_focus.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/relax/relax.h"
@@ -53,6 +55,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   buildMenus();
   connectParts();
   buildToolBars();
+  qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
 
   fpsLabel_ = new QLabel(this);
   dabLabel_ = new QLabel(this);
@@ -276,7 +279,9 @@ void MainWindow::updateMeshActions() {
 void MainWindow::updateStatus() {
   const ViewportStats s = viewport_->stats();
   const QLocale locale;
-  fpsLabel_->setText(tr("%1 frames/s").arg(s.framesPerSecond, 0, 'f', 0));
+  // Idle, no frames were drawn: no figure rather than "0 frames/s".
+  fpsLabel_->setText(s.framesPerSecond > 0 ? tr("%1 frames/s").arg(s.framesPerSecond, 0, 'f', 0)
+                                           : QString());
   dabLabel_->setText(tr("dab %1 ms").arg(s.lastDabMs, 0, 'f', 2));
   sizeLabel_->setText(tr("N = %1").arg(s.n));
   trianglesLabel_->setText(
@@ -341,6 +346,9 @@ QString MainWindow::choose(FileRequest request) {
   case FileRequest::ExportLod:
     return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
                                         tr("Meshes with a normal map (*.glb *.obj)"));
+  case FileRequest::SaveImage:
+    return QFileDialog::getSaveFileName(this, tr("Save image"), suggestedImagePath(currentPath()),
+                                        tr("PNG images (*.png)"));
   }
   return {};
 }

@@ -42,7 +42,7 @@ public:
     bool quickStartOnFirstRun = true; ///< startSession() shows Help ▸ Quick Start once
   };
   /// What a file chooser is asked for.
-  enum class FileRequest { Open, SaveAs, Export, Import, ExportLod, SaveCompressed };
+  enum class FileRequest { Open, SaveAs, Export, Import, ExportLod, SaveCompressed, SaveImage };
 
   explicit MainWindow(Options options);
   MainWindow() : MainWindow(Options{}) {}
@@ -97,6 +97,9 @@ public:
   /// nothing changes. Returns whether a step was made. Refused (false) without a document,
   /// during a stroke or while another task runs.
   bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
+  /// Draws the viewport offscreen at size (device pixels) with or without its background
+  /// (transparent) and writes it to path as PNG; the status bar says what happened.
+  bool saveImage(const QString& path, QSize size, bool background);
   /// Regenerates the live LOD in the background (while the dock shows it).
   LodGenerator* lodGenerator() const { return lodGenerator_; }
 
@@ -134,6 +137,8 @@ private:
   void rebuildRecentMenu();
   bool maybeSave();
   QString choose(FileRequest request);
+  /// File ▸ Save Image: asks size and background (unless a file chooser is set), then where.
+  void askAndSaveImage();
   void refreshBrushes();
   void connectLod();
   /// Saliency is computed while the heat map or a salient LOD method needs it.

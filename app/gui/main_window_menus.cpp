@@ -8,6 +8,7 @@
 #include "looks_menu.h"
 #include "main_window.h"
 #include "save_compressed_dialog.h"
+#include "view_actions.h"
 #include "viewport_widget.h"
 
 #include <QComboBox>
@@ -136,6 +137,8 @@ void MainWindow::buildMenus() {
             }
             exportMesh(path, divisor);
           });
+  connect(add(file, tr("Save &Image…"), "actionSaveImage"), &QAction::triggered, this,
+          &MainWindow::askAndSaveImage);
   file->addSeparator();
   connect(add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit), &QAction::triggered, this,
           &QWidget::close);
@@ -196,8 +199,9 @@ void MainWindow::buildMenus() {
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     view->addAction(dock->toggleViewAction());
   view->addSeparator();
-  connect(add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(tr("Home"))),
-          &QAction::triggered, viewport_, &ViewportWidget::resetCamera);
+  connect(add(view, tr("&Frame Model"), "actionFrameModel", QKeySequence(tr("Home"))),
+          &QAction::triggered, viewport_, &ViewportWidget::frameModel);
+  addViewActions(view, viewport_);
   addLookActions(view, viewport_);
 
   addHelpMenu(*this);

@@ -11,6 +11,7 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace octaclay::app {
@@ -49,7 +50,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     continueStrokeTo(p);
     break;
   case Drag::Orbit:
-    orbitCamera(*camera, delta);
+    orbitCamera(*camera, delta, orbitMode_);
     update();
     break;
   case Drag::Pan:
@@ -77,7 +78,22 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
   const double steps = event->angleDelta().y() / 120.0;
-  renderer_->GetActiveCamera()->Dolly(std::pow(1.15, steps));
+  // About the point under the cursor: the surface there, else the focal plane's point.
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  core::Vec3f anchor;
+  if (const auto hit = pickAt(event->position())) {
+    anchor = hit->position;
+  } else {
+    const QRectF view = modelRect();
+    QPointF p = event->position();
+    if (p.x() >= view.width()) p.rx() -= view.width();
+    const core::Ray ray = viewRay(*camera, view.size(), p);
+    const core::Vec3f forward =
+        core::normalize(toVec(camera->GetFocalPoint()) - toVec(camera->GetPosition()));
+    const float along = std::max(core::dot(ray.direction, forward), 1e-3f);
+    anchor = ray.origin + ray.direction * (static_cast<float>(camera->GetDistance()) / along);
+  }
+  zoomCameraAt(*camera, anchor, std::pow(1.15, steps));
   update();
   event->accept();
 }

@@ -46,7 +46,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   format.setStencilBufferSize(0);
   format.setSwapInterval(0); // frames/s are measured, not capped by vsync
   setFormat(format);
-  setFocusPolicy(Qt::StrongFocus);
+  setFocusPolicy(Qt::WheelFocus); // a click or a wheel turn takes the keys back from a dock
   setMouseTracking(true);
   setMinimumSize(320, 240);
   clock_.start();
@@ -228,21 +228,49 @@ const core::Document& ViewportWidget::document() const {
   return session_.document();
 }
 
-void ViewportWidget::resetCamera() {
-  if (session_.hasDocument()) {
-    core::BoundingBox box;
-    const core::TileBounds& b = session_.gpuDocument().bounds();
-    for (int t = 0; t < b.tilesPerSide() * b.tilesPerSide(); ++t) {
-      box.extend(b.box(t).min);
-      box.extend(b.box(t).max);
-    }
-    prop_->bounds = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
+void ViewportWidget::updateBounds() {
+  if (!session_.hasDocument()) return;
+  core::BoundingBox box;
+  const core::TileBounds& b = session_.gpuDocument().bounds();
+  for (int t = 0; t < b.tilesPerSide() * b.tilesPerSide(); ++t) {
+    box.extend(b.box(t).min);
+    box.extend(b.box(t).max);
   }
+  prop_->bounds = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
+}
+
+void ViewportWidget::resetCamera() {
   vtkCamera* camera = renderer_->GetActiveCamera();
-  camera->SetViewUp(0, 1, 0);
-  camera->SetPosition(0, 0, 1);
   camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(0, 0, 1);
+  setViewDirection(*camera, ViewDirection::Front);
+  frameModel();
+}
+
+void ViewportWidget::frameModel() {
+  updateBounds();
   renderer_->ResetCamera(prop_->bounds.data());
+  update();
+}
+
+void ViewportWidget::setView(ViewDirection direction) {
+  setViewDirection(*renderer_->GetActiveCamera(), direction);
+  update();
+}
+
+bool ViewportWidget::orthographic() const {
+  return renderer_->GetActiveCamera()->GetParallelProjection();
+}
+
+void ViewportWidget::setOrthographic(bool orthographic) {
+  const std::array<double, 6>& b = prop_->bounds;
+  const double diagonal = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  const core::Vec3f centre{static_cast<float>(b[0] + b[1]) / 2, static_cast<float>(b[2] + b[3]) / 2,
+                           static_cast<float>(b[4] + b[5]) / 2};
+  // Far enough back that the whole model lies in front of the eye.
+  const double reach = core::length(toVec(camera->GetFocalPoint()) - centre) + diagonal;
+  setParallelProjection(*camera, orthographic, reach);
   update();
 }
 
@@ -410,9 +438,7 @@ std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   // left does.
   const QRectF view = modelRect();
   if (p.x() >= view.width()) p.rx() -= view.width();
-  const core::Ray ray = core::cameraRay(
-      pickCamera(*renderer_->GetActiveCamera()), static_cast<int>(view.width()),
-      static_cast<int>(view.height()), static_cast<float>(p.x()), static_cast<float>(p.y()));
+  const core::Ray ray = viewRay(*renderer_->GetActiveCamera(), view.size(), p);
   const gpu::GpuDocument& document = session_.gpuDocument();
   return core::pickRay(document.document().positions, document.bounds(), ray);
 }

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "brush_settings.h"
+#include "camera_control.h"
+#include "camera_views.h"
 #include "lod_display.h"
 #include "saliency_keeper.h"
 #include "sculpt_session.h"
@@ -133,9 +135,24 @@ public:
   /// of the last stroke begun (SculptSession::setKeepDetail).
   bool keepsDetail() const { return session_.keepDetail(); }
 
+  /// The front view, framing the model (a new document is shown so).
   void resetCamera();
   /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
   float modelDiagonal() const { return session_.diagonal(); }
+  /// Frames the model from the current direction (Home): its bounding sphere fills the view.
+  void frameModel();
+  /// Turns the camera to a standard view about the focal point, keeping the zoom.
+  void setView(ViewDirection direction);
+  void setOrthographic(bool orthographic);
+  bool orthographic() const;
+  void setOrbitMode(OrbitMode mode) { orbitMode_ = mode; }
+  OrbitMode orbitMode() const { return orbitMode_; }
+  /// The view drawn offscreen at size (device pixels, up to maxImageSide() a side) without the
+  /// brush outline; with background false the background is transparent (alpha 0) and the model
+  /// opaque. Null when GL is not ready or the size is out of range. GL work on the GUI thread.
+  QImage renderImage(QSize size, bool background);
+  /// The largest side renderImage() draws (the GL framebuffer limit, 8192 at most).
+  int maxImageSide();
   /// The surface point under widget position p (logical pixels), if any.
   std::optional<core::PickHit> pickAt(QPointF p) const;
   /// Where object-space point p appears in the widget (logical pixels).
@@ -214,6 +231,8 @@ private:
   QRectF modelRect() const;
   void applyLodDisplay();
   void updateClipping();
+  /// The model's bounds from the document's tile boxes, for framing and clipping.
+  void updateBounds();
   void fail(const QString& message);
   /// Fills view's material and wireframe fields, loading the matcap on first use (GL current).
   void applyLooks(gpu::ModelView& view, vtkRenderer* r);
@@ -244,6 +263,7 @@ private:
   StrokeStabilizer stabilizer_;
   std::optional<core::PickHit> hover_;
   Drag drag_ = Drag::None;
+  OrbitMode orbitMode_ = OrbitMode::Turntable;
   Qt::MouseButton dragButton_ = Qt::NoButton; ///< the button whose release ends drag_
   QPointF lastPos_;
   float tabletPressure_ = 1.0f;
