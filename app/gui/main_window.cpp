@@ -320,6 +320,9 @@ QString MainWindow::suggestedPath(FileRequest request) const {
   case FileRequest::ExportLod:
     return suggestedSavePath(path, imported, QStringLiteral("glb"), documents,
                              QStringLiteral("_lod"));
+  case FileRequest::SaveImage:
+    return suggestedSavePath(path, {}, QStringLiteral("png"),
+                             QStandardPaths::writableLocation(QStandardPaths::PicturesLocation));
   }
   return documents;
 }
@@ -347,8 +350,7 @@ QString MainWindow::choose(FileRequest request) {
     return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
                                         tr("Meshes with a normal map (*.glb *.obj)"));
   case FileRequest::SaveImage:
-    return QFileDialog::getSaveFileName(this, tr("Save image"), suggestedImagePath(currentPath()),
-                                        tr("PNG images (*.png)"));
+    return QFileDialog::getSaveFileName(this, tr("Save image"), dir, tr("PNG images (*.png)"));
   }
   return {};
 }

@@ -2,26 +2,13 @@
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
-#include <QDir>
-#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QRadioButton>
 #include <QSpinBox>
-#include <QStandardPaths>
 
 namespace octaclay::app {
-
-QString suggestedImagePath(const QString& documentPath) {
-  if (documentPath.isEmpty()) {
-    QString folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
-    if (folder.isEmpty()) folder = QDir::homePath();
-    return QDir(folder).filePath(QStringLiteral("untitled.png"));
-  }
-  const QFileInfo info(documentPath);
-  return info.absoluteDir().filePath(info.completeBaseName() + QStringLiteral(".png"));
-}
 
 SaveImageDialog::SaveImageDialog(QSize viewSize, int maxSide, QWidget* parent)
     : QDialog(parent), viewSize_(viewSize) {

@@ -16,10 +16,6 @@ struct ImageRequest {
   bool background = true; ///< false: transparent background (alpha 0)
 };
 
-/// Where Save Image suggests writing: beside the document, named after it (model.exr →
-/// model.png); an untitled model's picture goes to the Pictures folder as untitled.png.
-QString suggestedImagePath(const QString& documentPath);
-
 /// Asks the picture's size (the viewport's, or one typed in up to maxSide a side) and whether
 /// it keeps the background.
 class SaveImageDialog : public QDialog {

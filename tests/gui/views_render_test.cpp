@@ -3,6 +3,7 @@
 // orthographic toggle, turntable and trackball orbits, the wheel zooming about the cursor, Save
 // Image's PNG, Esc handing the keys back from a spin box, and the idle frame rate.
 #include "brush_panel.h"
+#include "file_suggestion.h"
 #include "main_window.h"
 #include "save_image_dialog.h"
 #include "test_window.h"
@@ -384,8 +385,9 @@ void ViewsRenderTest::wheelZoomsAboutThePointUnderTheCursor() {
 }
 
 void ViewsRenderTest::saveImageWritesAPngOfTheRequestedSize() {
-  QCOMPARE(app::suggestedImagePath("/models/clay/head.exr"), QString("/models/clay/head.png"));
-  QVERIFY(app::suggestedImagePath({}).endsWith("/untitled.png"));
+  QCOMPARE(app::suggestedSavePath("/models/clay/head.exr", {}, "png", "/pictures"),
+           QString("/models/clay/head.png"));
+  QCOMPARE(app::suggestedSavePath({}, {}, "png", "/pictures"), QString("/pictures/untitled.png"));
 
   window_ = openSphere();
   QVERIFY(window_);
