@@ -5,7 +5,8 @@
 // read of the stroke-start positions a texel (a normal of the stroke-start surface would take
 // four more, twice the cost of a push dab).
 vec4 brush(vec4 value, BrushInput b) {
-  vec3 up = value.xyz - strokeStartAt(b.texel).xyz;
+  // b.texel lies in the image: no wrap needed (strokeStartAt's costs a software rasterizer).
+  vec3 up = value.xyz - texelFetch(u_strokeStart, b.texel, 0).xyz;
   float h = length(up);
   float target = b.weight * u_height * u_radius; // negative: a lowered layer
   vec3 direction = h > 1e-6 * u_radius ? up / h : u_centreNormal * sign(target);
