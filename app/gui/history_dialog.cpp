@@ -10,7 +10,7 @@ HistoryDialog::HistoryDialog(QUndoStack* stack, QWidget* parent) : QDialog(paren
   setWindowTitle(tr("History"));
   view_ = new QUndoView(stack, this);
   view_->setObjectName(QStringLiteral("historyView"));
-  view_->setEmptyLabel(tr("<model as opened>"));
+  view_->setEmptyLabel(tr("Model as opened or made"));
   view_->setToolTip(tr("Click a step to go back (or forward) to it"));
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(view_);

@@ -7,8 +7,8 @@ class QUndoView;
 
 namespace octaclay::app {
 
-/// Edit ▸ History: the undo stack as a list (Qt's QUndoView), from "<new model>" to the newest
-/// step; clicking a row undoes or redoes to that step. Non-modal, so the user can sculpt and
+/// Edit ▸ History: the undo stack as a list (Qt's QUndoView), from "Model as opened or made" to the
+/// newest step; clicking a row undoes or redoes to that step. Non-modal, so the user can sculpt and
 /// watch the list grow.
 class HistoryDialog : public QDialog {
   Q_OBJECT
