@@ -12,9 +12,12 @@
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/geometry/base_shapes.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QLabel>
+#include <QRadioButton>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -133,6 +136,7 @@ private slots:
   void turntableKeepsUpUpAndTrackballIsRememberedAndRolls();
   void wheelZoomsAboutThePointUnderTheCursor();
   void saveImageWritesAPngOfTheRequestedSize();
+  void saveImageDialogAsksSizeAndBackground();
   void escapeInASpinBoxHandsTheKeysBackWithoutAStroke();
   void idleStatusBarShowsNoZeroFrameRate();
   void importedModelIsShownFromTheFront();
@@ -438,6 +442,26 @@ void ViewsRenderTest::saveImageWritesAPngOfTheRequestedSize() {
   QVERIFY(!window_->saveImage(dir_.filePath("huge.png"), QSize(100000, 10), true));
   QVERIFY(!QFile::exists(dir_.filePath("huge.png")));
   QVERIFY(window_->statusBar()->currentMessage().contains("at most"));
+}
+
+void ViewsRenderTest::saveImageDialogAsksSizeAndBackground() {
+  app::SaveImageDialog dialog(QSize(800, 600), 4096);
+  app::ImageRequest r = dialog.request(); // by default the view's size with its background
+  QCOMPARE(r.size, QSize(800, 600));
+  QVERIFY(r.background);
+  const auto buttons = dialog.findChildren<QRadioButton*>();
+  const auto boxes = dialog.findChildren<QSpinBox*>();
+  QCOMPARE(buttons.size(), 2);
+  QCOMPARE(boxes.size(), 2);
+  QVERIFY(!boxes[0]->isEnabled());
+  buttons[1]->click(); // Custom
+  QVERIFY(boxes[0]->isEnabled() && boxes[1]->isEnabled());
+  boxes[0]->setValue(3000);
+  boxes[1]->setValue(9000); // clamped to the largest side
+  dialog.findChild<QCheckBox*>()->setChecked(true);
+  r = dialog.request();
+  QCOMPARE(r.size, QSize(3000, 4096));
+  QVERIFY(!r.background);
 }
 
 void ViewsRenderTest::escapeInASpinBoxHandsTheKeysBackWithoutAStroke() {
