@@ -73,6 +73,8 @@ CanvasBrushAdjust::~CanvasBrushAdjust() {
 
 bool CanvasBrushAdjust::begin(Mode mode) {
   if (!viewport_ || !panel_ || mode == Mode::None || !panel_->currentBrush()) return false;
+  // Not in the middle of a stroke or an orbit: their release would never reach the viewport.
+  if (viewport_->stroking() || QGuiApplication::mouseButtons() != Qt::NoButton) return false;
   if (mode_ != Mode::None) end(false);
   mode_ = mode;
   const QRectF view = viewport_->rect();

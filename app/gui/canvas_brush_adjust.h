@@ -29,7 +29,8 @@ public:
   CanvasBrushAdjust(ViewportWidget* viewport, BrushPanel* panel, QObject* parent = nullptr);
   ~CanvasBrushAdjust() override;
 
-  /// Starts adjusting (cancelling one under way). Refused (false) without a current brush.
+  /// Starts adjusting (cancelling one under way). Refused (false) without a current brush or
+  /// while a mouse button is held (a stroke, an orbit).
   bool begin(Mode mode);
   void confirm();
   void cancel();

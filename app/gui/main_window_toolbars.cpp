@@ -16,7 +16,9 @@ namespace octaclay::app {
 
 void MainWindow::buildToolBars() {
   auto* brushes = new BrushToolBar(this, this);
-  addToolBar(Qt::LeftToolBarArea, brushes); // a tool shelf, as in Blender
+  // A row of icons, and under it the header, right above the viewport.
+  addToolBar(Qt::TopToolBarArea, brushes);
+  addToolBarBreak(Qt::TopToolBarArea);
   auto* header = new BrushHeader(this);
   addToolBar(Qt::TopToolBarArea, header);
 

@@ -294,6 +294,16 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   // The next press sculpts again.
   drag(view, centre, centre + QPoint(30, 0));
   QCOMPARE(window_->undoStack()->count(), 1);
+  // F during a stroke does nothing: the stroke goes on and ends as usual.
+  pointAt(view, centre);
+  QTest::mousePress(view, Qt::LeftButton, {}, centre);
+  QTest::mouseMove(view, centre + QPoint(10, 0));
+  QTest::keyClick(view, Qt::Key_F);
+  QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
+  QTest::mouseMove(view, centre + QPoint(20, 0));
+  QTest::mouseRelease(view, Qt::LeftButton, {}, centre + QPoint(20, 0));
+  QCOMPARE(window_->undoStack()->count(), 2);
+  QCOMPARE(panel->radius(), r2);
 }
 
 void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt() {
@@ -368,7 +378,9 @@ void BrushToolBarRenderTest::headerFollowsTheDockAndStaysWhenDocksClose() {
     dock->close();
   QVERIFY(header->isVisible());
   QVERIFY(!header->toggleViewAction()->isVisible());
-  QVERIFY(header->y() < window_->viewport()->mapTo(window_.get(), QPoint(0, 0)).y());
+  auto* bar = window_->findChild<BrushToolBar*>(QStringLiteral("BrushToolBar"));
+  const int viewTop = window_->viewport()->mapTo(window_.get(), QPoint(0, 0)).y();
+  QVERIFY(bar->y() < header->y() && header->y() < viewTop); // icons, header, viewport
 }
 
 void BrushToolBarRenderTest::defaultStrengthPullLeavesNoCrossingTriangle() {
