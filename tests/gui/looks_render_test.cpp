@@ -13,6 +13,7 @@
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/octahedral.h"
 
 #include <QCheckBox>
 #include <QDialog>
@@ -74,6 +75,7 @@ private slots:
   void wireframeOverlayAddsLinePixelsAlongTheLevel();
   void backgroundChoiceChangesTheCornersAndIsRestored();
   void importedModelHasNoUnlitSpecklesAtAnyLevel();
+  void crumpledSamplesShadeAsTheSmoothSurface();
   void maskTintIsNotAPaintColour();
   void heatMapsShowALegendAndSideBySideIsLabelled();
 
@@ -342,6 +344,55 @@ void LooksRenderTest::importedModelHasNoUnlitSpecklesAtAnyLevel() {
                                                   .arg(unlitInside)
                                                   .arg(model)));
     }
+  }
+}
+
+// The sphere sampled with its odd rows and columns scrambled along the surface: every sample
+// lies on the sphere and the even ones are where they belong, so from N/2 on the displayed
+// triangles are the smooth sphere's, but neighbouring full-resolution cells fold against each
+// other, as where an imported image stretches. No pixel away from the outline may fall to the
+// unlit ambient.
+void LooksRenderTest::crumpledSamplesShadeAsTheSmoothSurface() {
+  constexpr int n = 128;
+  core::GeometryImage image(n);
+  std::uint32_t state = 12345;
+  const auto jitter = [&] {
+    state = state * 1664525u + 1013904223u;
+    return int(state >> 30) - 1; // -1, 0, 1, 2
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      int si = i, sj = j;
+      const bool interior = i > 2 && j > 2 && i < n - 2 && j < n - 2;
+      if (interior && (i % 2 || j % 2)) {
+        si += jitter();
+        sj += jitter();
+      }
+      const core::Vec3f d = core::octahedralDirection(n, si, sj);
+      image.at(i, j) = {d.x, d.y, d.z, 0};
+    }
+  window_ = makeWindow();
+  QVERIFY(window_);
+  window_->layersPanel()->setVisible(core::EditLayer::Diffuse, false);
+  QVERIFY(window_->viewport()->setDocument(core::makeDocument(std::move(image))));
+  const float ambient = 0.18f * luminance(qRgb(204, 199, 189));
+  for (int divisor : {2, 4}) {
+    QVERIFY(window_->lodPanel()->setDivisor(divisor));
+    const QImage shot = grab();
+    const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
+    const int radius = int(std::abs(window_->viewport()->project({0, 1, 0}).y() - centre.y()));
+    int unlit = 0, inside = 0;
+    for (int y = centre.y() - radius; y <= centre.y() + radius; ++y)
+      for (int x = centre.x() - radius; x <= centre.x() + radius; ++x) {
+        if (std::hypot(x - centre.x(), y - centre.y()) > 0.9 * radius) continue;
+        ++inside;
+        unlit += luminance(shot.pixel(x, y)) <= ambient + 4;
+      }
+    QVERIFY(inside > 10000);
+    QVERIFY2(
+        unlit == 0,
+        qPrintable(
+            QStringLiteral("N/%1: %2 unlit of %3 pixels").arg(divisor).arg(unlit).arg(inside)));
   }
 }
 
