@@ -1,7 +1,11 @@
 #include "view_looks.h"
 
+#include "data_folders.h"
+
 #include <QCoreApplication>
 #include <QSettings>
+
+#include <filesystem>
 
 namespace octaclay::app {
 
@@ -19,7 +23,8 @@ QString matcapTitle(const QString& id) {
 }
 
 QString matcapPath(const QString& id) {
-  return QStringLiteral(OCTACLAY_SOURCE_RESOURCES "/matcaps/%1.png").arg(id);
+  const std::filesystem::path file = resourceFolder() / "matcaps" / (id.toStdString() + ".png");
+  return QString::fromStdString(file.string());
 }
 
 ViewLooks ViewLooks::fromSettings() {
