@@ -63,6 +63,30 @@ GLYPHS = {
     "splat": f'<rect {W} x="6" y="8" width="36" height="32" rx="2"/>'
              f'<path stroke="#fff" stroke-width="2.5" fill="none" '
              f'd="M6 19 H42 M6 29 H42 M20 8 V19 M30 19 V29 M16 29 V40 M34 29 V40"/>',
+    # A hand-drawn grip: a region dragged sideways (a bump and an arrow along the surface).
+    "grab": f'<path {W} d="M5 36 H12 C17 36 18 20 26 20 C33 20 33 36 38 36 H43"/>'
+            f'<path {W} d="M14 12 H34 M29 7 L34 12 L29 17"/>',
+    # A limb drawn out along a curved path.
+    "snake-hook": f'<path {W} d="M5 40 H14 C16 40 17 33 19 28 C22 20 30 14 40 10"/>'
+                  f'<path {W} d="M34 8 L40 10 L38 16"/>',
+    # Two arrows meeting at a centre line.
+    "pinch": f'<path {W} d="M5 24 H18 M13 19 L18 24 L13 29 M43 24 H30 M35 19 L30 24 L35 29"/>'
+             f'<path stroke="#fff" stroke-width="2" d="M24 8 V40"/>',
+    # A sharp valley cut into a surface.
+    "crease": f'<path {W} d="M5 18 H15 L24 38 L33 18 H43"/>',
+    # A raised plateau of even height over the surface.
+    "layer": f'<path {W} d="M5 36 H12 L16 22 H32 L36 36 H43"/>'
+             f'<path stroke="#fff" stroke-width="2" stroke-dasharray="3 3" d="M16 36 H32"/>',
+    # Square strips of clay laid side by side.
+    "clay-strips": f'<path {W} d="M5 38 H43"/><rect {W} x="9" y="26" width="10" height="8"/>'
+                   f'<rect {W} x="19" y="18" width="10" height="16"/>'
+                   f'<rect {W} x="29" y="26" width="10" height="8"/>',
+    # A bump scraped flat by a blade.
+    "scrape": f'<path {W} d="M5 36 H13 L17 26 H31 L35 36 H43"/>'
+              f'<path {W} d="M14 20 L34 20 M30 14 L38 20 L30 26"/>',
+    # A circular arrow around a centre.
+    "twist": f'<path {W} d="M36 16 A14 14 0 1 0 38 28"/>'
+             f'<path {W} d="M31 15 L37 16 L38 10"/><circle {FILL} cx="24" cy="24" r="3"/>',
 }
 
 CATEGORIES = {
@@ -70,6 +94,8 @@ CATEGORIES = {
     "relax": "sculpt", "sphere-add": "sculpt", "sphere-subtract": "sculpt",
     "paint": "paint", "paint-specular": "paint", "paint-reflectivity": "paint", "mask": "paint",
     "splat": "splat",
+    "grab": "sculpt", "snake-hook": "sculpt", "pinch": "sculpt", "crease": "sculpt",
+    "layer": "sculpt", "clay-strips": "sculpt", "scrape": "sculpt", "twist": "sculpt",
 }
 
 

@@ -222,8 +222,10 @@ void BrushToolBarRenderTest::brushShortcutsPickBrushesAndClashWithNothing() {
   app::ViewportWidget* view = window_->viewport();
   view->setFocus();
   const std::map<int, QString> keys{
-      {Qt::Key_S, "smooth"}, {Qt::Key_I, "inflate"}, {Qt::Key_T, "flatten"}, {Qt::Key_R, "relax"},
-      {Qt::Key_P, "paint"},  {Qt::Key_M, "mask"},    {Qt::Key_X, "push"}};
+      {Qt::Key_S, "smooth"},      {Qt::Key_I, "inflate"}, {Qt::Key_T, "flatten"},
+      {Qt::Key_R, "relax"},       {Qt::Key_P, "paint"},   {Qt::Key_M, "mask"},
+      {Qt::Key_X, "push"},        {Qt::Key_G, "grab"},    {Qt::Key_K, "snake-hook"},
+      {Qt::Key_C, "clay-strips"}, {Qt::Key_L, "layer"}};
   QVERIFY(activate(*window_));
   for (const auto& [key, id] : keys) {
     QTest::keyClick(view, Qt::Key(key));
