@@ -33,6 +33,6 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 # The libraries the binaries link, as Debian 12 names them (dpkg-shlibdeps); Qt's platform
 # plugins and Mesa's GL drivers are loaded at run time, so they are named here.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libgl1-mesa-dri, libegl-mesa0")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6svg6, libgl1-mesa-dri, libegl-mesa0")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "hicolor-icon-theme")
 include(CPack)
