@@ -3,6 +3,7 @@
 #include "brush_panel.h"
 #include "image_output.h"
 #include "main_window.h"
+#include "view_looks.h"
 #include "viewport_widget.h"
 
 #include <QCoreApplication>
@@ -78,6 +79,11 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
     std::fprintf(stderr, "octaclay: a screenshot stroke failed: %s\n", qPrintable(view.error()));
     return false;
   }
+  // The README shows a matcap: clay, on a gradient (set for this picture, not saved).
+  ViewLooks looks = view.looks();
+  looks.material = QStringLiteral("clay");
+  looks.gradient = true;
+  view.setLooks(looks);
   settle(600); // status bar and panels catch up
   const QImage image = window.grab().toImage();
   return saveImagePng(image, imagePath);
