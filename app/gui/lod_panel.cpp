@@ -73,14 +73,19 @@ QWidget* LodPanel::buildAutomaticLod() {
   for (core::ResampleMethod m :
        {core::ResampleMethod::Point, core::ResampleMethod::Average,
         core::ResampleMethod::SalientAverage, core::ResampleMethod::SalientPoint,
-        core::ResampleMethod::Adaptive})
+        core::ResampleMethod::Adaptive, core::ResampleMethod::Collapse, core::ResampleMethod::Auto})
     methodCombo_->addItem(QString::fromUtf8(core::methodName(m)), static_cast<int>(m));
-  methodCombo_->setCurrentIndex(methodCombo_->findData(
-      static_cast<int>(core::ResampleMethod::SalientPoint))); // the thesis's best
+  // Never worse than meshoptimizer (issue 24): the export picks adaptive or the collapse per
+  // image, the live LOD stays with salient-point.
+  methodCombo_->setCurrentIndex(
+      methodCombo_->findData(static_cast<int>(core::ResampleMethod::Auto)));
   methodCombo_->setToolTip(tr("How each LOD sample is picked from the full-resolution samples it "
                               "stands for: the one at its place, their mean, their "
                               "saliency-weighted mean, or the most salient one; adaptive "
-                              "places its vertices where the surface bends, no grid"));
+                              "places its vertices where the surface bends, no grid; collapse "
+                              "simplifies the full-resolution mesh; auto exports with adaptive "
+                              "or collapse, whichever suits the image, and shows salient-point "
+                              "live"));
   connect(methodCombo_, &QComboBox::currentIndexChanged, this,
           [this] { emit lodOptionsChanged(); });
 
@@ -157,6 +162,18 @@ core::LodOptions LodPanel::lodOptions() const {
   options.targetTriangles = static_cast<std::size_t>(targetTriangles());
   // size 0: the smallest M whose 2M² triangles reach the target, collapsed down to it.
   return options;
+}
+
+core::LodOptions LodPanel::liveLodOptions() const {
+  core::LodOptions options = lodOptions();
+  options.autoMayCollapse = false;
+  return options;
+}
+
+bool LodPanel::liveLodReadsSaliency() const {
+  const core::ResampleMethod m = method();
+  return m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage ||
+         m == core::ResampleMethod::Auto; // live auto is salient-point
 }
 
 void LodPanel::setLodResult(long long triangles, double milliseconds) {

@@ -26,21 +26,26 @@ class LodPanelTest : public QObject {
 private slots:
   void defaultsAreTheLiveTarget() {
     LodPanel panel;
-    QCOMPARE(panel.method(), core::ResampleMethod::SalientPoint);
+    QCOMPARE(panel.method(), core::ResampleMethod::Auto);
     QCOMPARE(panel.targetTriangles(), 20000);
     QCOMPARE(panel.display(), LodPanel::Display::FullResolution);
     QVERIFY(!panel.lodShown());
     const core::LodOptions options = panel.lodOptions();
-    QCOMPARE(options.method, core::ResampleMethod::SalientPoint);
+    QCOMPARE(options.method, core::ResampleMethod::Auto);
+    QVERIFY(options.autoMayCollapse); // the export: adaptive or the collapse, per image
     QCOMPARE(options.targetTriangles, std::size_t{20000});
     QCOMPARE(options.size, 0); // chosen from the target
+    // The live LOD: auto keeps to salient-point, which reads the saliency.
+    QVERIFY(!panel.liveLodOptions().autoMayCollapse);
+    QCOMPARE(panel.liveLodOptions().targetTriangles, std::size_t{20000});
+    QVERIFY(panel.liveLodReadsSaliency());
     auto* methods = panel.findChild<QComboBox*>(QStringLiteral("lodMethod"));
     QVERIFY(methods);
     QStringList names;
     for (int k = 0; k < methods->count(); ++k)
       names << methods->itemText(k);
-    QCOMPARE(names,
-             (QStringList{"point", "average", "salient-average", "salient-point", "adaptive"}));
+    QCOMPARE(names, (QStringList{"point", "average", "salient-average", "salient-point", "adaptive",
+                                 "collapse", "auto"}));
     QCOMPARE(panel.lodText(), QStringLiteral("LOD: —"));
     QCOMPARE(panel.errorText(), QStringLiteral("Error: —"));
   }
