@@ -51,7 +51,7 @@ bool saliencyIsEmpty(const core::GeometryImage& image) {
 
 Command addLodCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, method = "salient-point", normalMap, space;
+    std::string input, output, method = "auto", normalMap, space;
     long long size = 0, triangles = 0, mapSize = 0, oversample = 1;
     double maxError = 0, maxAspect = 10;
     std::size_t samples = 200'000;
@@ -67,8 +67,11 @@ Command addLodCommand(CLI::App& app) {
                   "--triangles (then the smallest M whose 2M^2 triangles reach T)");
   sub->add_option("--method", opt->method,
                   "How each LOD sample is chosen: salient-point (the thesis's best), "
-                  "salient-average, point or average; or adaptive: full-resolution samples "
-                  "where the surface bends, no grid (--size then only sets 2M^2 triangles)")
+                  "salient-average, point or average; adaptive: full-resolution samples "
+                  "where the surface bends, no grid (--size then only sets 2M^2 triangles); "
+                  "collapse: the whole full-resolution mesh collapsed down to T; auto: "
+                  "adaptive where the image samples the surface evenly, collapse where it "
+                  "stretches (reported as method_used)")
       ->capture_default_str();
   sub->add_option("--triangles", opt->triangles,
                   "Collapse vertices down to T triangles (more than 4)");
@@ -115,8 +118,8 @@ Command addLodCommand(CLI::App& app) {
             if (!method)
               throw Error(ErrorKind::InvalidArgument,
                           "unknown --method '" + opt->method +
-                              "': use salient-point, salient-average, point, average or "
-                              "adaptive");
+                              "': use auto, salient-point, salient-average, point, "
+                              "average, adaptive or collapse");
             // glTF viewers read only tangent-space maps, so a .glb gets one unless told.
             if (opt->space.empty()) opt->space = ext == ".glb" ? "tangent" : "object";
             const std::optional<core::NormalMapSpace> space = core::parseNormalMapSpace(opt->space);
@@ -170,10 +173,23 @@ Command addLodCommand(CLI::App& app) {
                               " must be smaller than the document's N = " + std::to_string(n) +
                               " (an LOD has fewer samples than the full image)");
 
+            core::LodOptions options;
+            options.size = hasSize ? static_cast<int>(opt->size) : 0;
+            options.targetTriangles = static_cast<std::size_t>(opt->triangles);
+            options.maxError = opt->maxError;
+            options.oversample = static_cast<int>(opt->oversample);
+            options.maxAspectRatio = static_cast<float>(opt->maxAspect);
+            // auto's choice is made here (a stretch summary of a 64 grid: well under a
+            // millisecond) so that only a salient choice pays for the saliency.
+            const auto chooseStart = std::chrono::steady_clock::now();
+            options.method = *method == core::ResampleMethod::Auto
+                                 ? core::chooseLodMethod(full, options)
+                                 : *method;
+            const double chooseMs = millisecondsSince(chooseStart);
             // The salient methods read saliency from alpha; a document that never had it
             // computed (all zero) gets the CPU reference pass.
-            const bool salient = *method == core::ResampleMethod::SalientPoint ||
-                                 *method == core::ResampleMethod::SalientAverage;
+            const bool salient = options.method == core::ResampleMethod::SalientPoint ||
+                                 options.method == core::ResampleMethod::SalientAverage;
             double saliencyMs = 0;
             const bool computeSaliency = salient && saliencyIsEmpty(full);
             if (computeSaliency) {
@@ -182,16 +198,9 @@ Command addLodCommand(CLI::App& app) {
               saliencyMs = millisecondsSince(start);
             }
 
-            core::LodOptions options;
-            options.size = hasSize ? static_cast<int>(opt->size) : 0;
-            options.method = *method;
-            options.targetTriangles = static_cast<std::size_t>(opt->triangles);
-            options.maxError = opt->maxError;
-            options.oversample = static_cast<int>(opt->oversample);
-            options.maxAspectRatio = static_cast<float>(opt->maxAspect);
             const auto lodStart = std::chrono::steady_clock::now();
             const core::LodMesh lod = core::generateLod(full, options);
-            const double lodMs = millisecondsSince(lodStart);
+            const double lodMs = chooseMs + millisecondsSince(lodStart);
 
             const int mapSize = sub->count("--map-size") > 0 ? static_cast<int>(opt->mapSize) : n;
             const auto bakeStart = std::chrono::steady_clock::now();
@@ -226,6 +235,7 @@ Command addLodCommand(CLI::App& app) {
                                        {"document_size", n},
                                        {"size", lod.resampledSize},
                                        {"method", core::methodName(*method)},
+                                       {"method_used", core::methodName(lod.methodUsed)},
                                        {"oversample", opt->oversample},
                                        {"triangles", lod.mesh.triangles.size()},
                                        {"vertices", lod.mesh.positions.size()},
@@ -249,11 +259,16 @@ Command addLodCommand(CLI::App& app) {
             } else {
               report << "wrote " << opt->output << ": " << lod.mesh.triangles.size()
                      << " triangles, " << lod.mesh.positions.size() << " vertices ("
-                     << (*method == core::ResampleMethod::Adaptive
+                     << (lod.methodUsed == core::ResampleMethod::Adaptive ||
+                                 lod.methodUsed == core::ResampleMethod::Collapse
                              ? "samples of N = " + std::to_string(n)
                              : "M = " + std::to_string(lod.resampledSize) +
                                    " of N = " + std::to_string(n))
-                     << ", " << core::methodName(*method) << ") in " << lodMs << " ms\n"
+                     << ", "
+                     << (*method == core::ResampleMethod::Auto
+                             ? "auto: " + std::string(core::methodName(lod.methodUsed))
+                             : std::string(core::methodName(*method)))
+                     << ") in " << lodMs << " ms\n"
                      << "  against full resolution: RMS " << distance.rms * 100 << " %, Hausdorff "
                      << distance.hausdorff * 100 << " % of the diagonal, PSNR " << distance.psnr
                      << " dB\n"

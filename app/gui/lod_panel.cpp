@@ -79,11 +79,17 @@ QWidget* LodPanel::buildAutomaticLod() {
       {core::ResampleMethod::Average, tr("Smooth")},
       {core::ResampleMethod::SalientAverage, tr("Soft features")},
       {core::ResampleMethod::SalientPoint, tr("Sharp features")},
-      {core::ResampleMethod::Adaptive, tr("Adaptive")}};
+      {core::ResampleMethod::Adaptive, tr("Adaptive")},
+      {core::ResampleMethod::Collapse, tr("Collapse")},
+      {core::ResampleMethod::Auto, tr("Best")}};
   const QString whatEachDoes[] = {
-      tr("the full-resolution sample at its place"), tr("the mean of the samples it stands for"),
-      tr("their saliency-weighted mean"), tr("the most salient of them"),
-      tr("vertices placed where the surface bends, no grid")};
+      tr("the full-resolution sample at its place"),
+      tr("the mean of the samples it stands for"),
+      tr("their saliency-weighted mean"),
+      tr("the most salient of them"),
+      tr("vertices placed where the surface bends, no grid"),
+      tr("edges collapsed on the full-resolution mesh"),
+      tr("adaptive or collapse, whichever suits the model (the live view uses salient-point)")};
   for (std::size_t k = 0; k < std::size(methods); ++k) {
     methodCombo_->addItem(methods[k].second, static_cast<int>(methods[k].first));
     methodCombo_->setItemData(
@@ -92,12 +98,17 @@ QWidget* LodPanel::buildAutomaticLod() {
                                      whatEachDoes[k]),
         Qt::ToolTipRole);
   }
-  methodCombo_->setCurrentIndex(methodCombo_->findData(
-      static_cast<int>(core::ResampleMethod::SalientPoint))); // the thesis's best
+  // Never worse than meshoptimizer (issue 24): the export picks adaptive or the collapse per
+  // image, the live LOD stays with salient-point.
+  methodCombo_->setCurrentIndex(
+      methodCombo_->findData(static_cast<int>(core::ResampleMethod::Auto)));
   methodCombo_->setToolTip(tr("How each LOD sample is picked from the full-resolution samples it "
                               "stands for: the one at its place, their mean, their "
                               "saliency-weighted mean, or the most salient one; adaptive "
-                              "places its vertices where the surface bends, no grid"));
+                              "places its vertices where the surface bends, no grid; collapse "
+                              "simplifies the full-resolution mesh; auto exports with adaptive "
+                              "or collapse, whichever suits the image, and shows salient-point "
+                              "live"));
   connect(methodCombo_, &QComboBox::currentIndexChanged, this,
           [this] { emit lodOptionsChanged(); });
 
@@ -174,6 +185,18 @@ core::LodOptions LodPanel::lodOptions() const {
   options.targetTriangles = static_cast<std::size_t>(targetTriangles());
   // size 0: the smallest M whose 2M² triangles reach the target, collapsed down to it.
   return options;
+}
+
+core::LodOptions LodPanel::liveLodOptions() const {
+  core::LodOptions options = lodOptions();
+  options.autoMayCollapse = false;
+  return options;
+}
+
+bool LodPanel::liveLodReadsSaliency() const {
+  const core::ResampleMethod m = method();
+  return m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage ||
+         m == core::ResampleMethod::Auto; // live auto is salient-point
 }
 
 void LodPanel::setLodResult(long long triangles, double milliseconds) {

@@ -24,7 +24,8 @@ namespace octaclay::app {
 /// follows each document to the largest level of at most 256 (the default display level).
 ///
 /// Below, the automatic level of detail (thesis chapter 4): the resampling method (point,
-/// average, salient average, salient point), the triangle target, what the viewport shows (the
+/// average, salient average, salient point, adaptive, collapse, auto: the default), the
+/// triangle target, what the viewport shows (the
 /// full resolution, the LOD, or both side by side; the LOD is regenerated live while it is
 /// shown), the LOD's triangles and generation time, its error against the full resolution
 /// (as a percentage of the model's size; RMS, Hausdorff and PSNR in the tooltip) and Export…
@@ -85,6 +86,10 @@ public:
   void setTargetTriangles(int triangles);
   /// generateLod's options for the method and target (size chosen from the target).
   core::LodOptions lodOptions() const;
+  /// The same for the live LOD: auto keeps to salient-point (LodOptions::autoMayCollapse).
+  core::LodOptions liveLodOptions() const;
+  /// Whether the live LOD of the chosen method reads the saliency.
+  bool liveLodReadsSaliency() const;
 
   /// Shows "LOD: 20,000 triangles in 12.3 ms" for the newest LOD.
   void setLodResult(long long triangles, double milliseconds);

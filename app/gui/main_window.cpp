@@ -140,7 +140,7 @@ void MainWindow::connectParts() {
 
 void MainWindow::connectLod() {
   lodGenerator_ = new LodGenerator([this] { return viewport_->positionsSnapshot(); }, this);
-  lodGenerator_->setOptions(lodPanel_->lodOptions());
+  lodGenerator_->setOptions(lodPanel_->liveLodOptions());
   const auto regenerate = [this] {
     if (lodPanel_->lodShown()) lodGenerator_->request();
   };
@@ -153,7 +153,7 @@ void MainWindow::connectLod() {
     regenerate();
   });
   connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
-    lodGenerator_->setOptions(lodPanel_->lodOptions());
+    lodGenerator_->setOptions(lodPanel_->liveLodOptions());
     updateSaliencyWanted();
     regenerate();
   });
@@ -186,9 +186,7 @@ void MainWindow::connectLod() {
 }
 
 void MainWindow::updateSaliencyWanted() {
-  const core::ResampleMethod m = lodPanel_->method();
-  const bool salientLod = lodPanel_->lodShown() && (m == core::ResampleMethod::SalientPoint ||
-                                                    m == core::ResampleMethod::SalientAverage);
+  const bool salientLod = lodPanel_->lodShown() && lodPanel_->liveLodReadsSaliency();
   viewport_->setSaliencyWanted(layersPanel_->preview() == LayersPanel::Preview::Saliency ||
                                salientLod);
 }

@@ -70,10 +70,11 @@ void CliLodTest::initTestCase() {
 
 void CliLodTest::objWithMapAndFigures() {
   const QString obj = file("lod.obj");
-  RUN_JSON(lod, "lod", document_, "--size", "16", "-o", obj, "--json");
+  RUN_JSON(lod, "lod", document_, "--size", "16", "--method", "salient-point", "-o", obj, "--json");
   QCOMPARE(lod["size"].toInt(), 16);
   QCOMPARE(lod["document_size"].toInt(), 64);
   QCOMPARE(lod["method"].toString(), QString("salient-point"));
+  QCOMPARE(lod["method_used"].toString(), QString("salient-point"));
   QCOMPARE(lod["triangles"].toDouble(), 2.0 * 16 * 16);
   QCOMPARE(lod["vertices"].toDouble(), 16.0 * 16 + 2);
   QVERIFY(lod["file_vertices"].toDouble() > lod["vertices"].toDouble()); // seams split
@@ -107,8 +108,9 @@ void CliLodTest::objWithMapAndFigures() {
 
 void CliLodTest::glbWithTriangleTargetAndTangentMap() {
   const QString glb = file("lod.glb"), map = file("tangent.exr");
-  RUN_JSON(lod, "lod", document_, "--size", "32", "--triangles", "300", "--normal-space", "tangent",
-           "--normal-map", map, "--map-size", "128", "-o", glb, "--json");
+  RUN_JSON(lod, "lod", document_, "--size", "32", "--method", "salient-point", "--triangles", "300",
+           "--normal-space", "tangent", "--normal-map", map, "--map-size", "128", "-o", glb,
+           "--json");
   QCOMPARE(lod["size"].toInt(), 32);
   QVERIFY2(std::abs(lod["triangles"].toDouble() - 300) <= 3, // the target within 1 %
            qPrintable(QString::number(lod["triangles"].toDouble())));
@@ -147,6 +149,8 @@ void CliLodTest::everyMethod_data() {
   QTest::newRow("salient-average") << "salient-average" << true;
   QTest::newRow("salient-point") << "salient-point" << true;
   QTest::newRow("adaptive") << "adaptive" << false; // --size 8: the 8-grid's 128 triangles
+  QTest::newRow("collapse") << "collapse" << false; // the same count, from all 2N² triangles
+  QTest::newRow("auto") << "auto" << false;         // adaptive or collapse: neither reads it
 }
 
 void CliLodTest::everyMethod() {
@@ -155,14 +159,17 @@ void CliLodTest::everyMethod() {
   RUN_JSON(lod, "lod", document_, "--size", "8", "--method", method, "-o", file(method + ".glb"),
            "--json");
   QCOMPARE(lod["method"].toString(), method);
+  if (method != "auto") QCOMPARE(lod["method_used"].toString(), method);
   QCOMPARE(lod["triangles"].toDouble(), 2.0 * 8 * 8);
+  QCOMPARE(lod["vertices"].toDouble(), 8.0 * 8 + 2); // closed, genus 0
   QCOMPARE(lod["saliency_computed"].toBool(), needsSaliency);
   QVERIFY(lod["psnr"].toDouble() > 20);
   QVERIFY(QFileInfo(file(method + ".glb")).size() > 0);
 }
 
 void CliLodTest::triangleTargetAlonePicksTheSize() {
-  RUN_JSON(lod, "lod", document_, "--triangles", "200", "-o", file("target.glb"), "--json");
+  RUN_JSON(lod, "lod", document_, "--method", "salient-point", "--triangles", "200", "-o",
+           file("target.glb"), "--json");
   QCOMPARE(lod["size"].toInt(), 16); // the smallest M with 2M² ≥ 200
   QVERIFY(std::abs(lod["triangles"].toDouble() - 200) <= 2);
   QCOMPARE(lod["normal_space"].toString(), QString("tangent")); // what glTF viewers read

@@ -26,14 +26,19 @@ class LodPanelTest : public QObject {
 private slots:
   void defaultsAreTheLiveTarget() {
     LodPanel panel;
-    QCOMPARE(panel.method(), core::ResampleMethod::SalientPoint);
+    QCOMPARE(panel.method(), core::ResampleMethod::Auto);
     QCOMPARE(panel.targetTriangles(), 20000);
     QCOMPARE(panel.display(), LodPanel::Display::FullResolution);
     QVERIFY(!panel.lodShown());
     const core::LodOptions options = panel.lodOptions();
-    QCOMPARE(options.method, core::ResampleMethod::SalientPoint);
+    QCOMPARE(options.method, core::ResampleMethod::Auto);
+    QVERIFY(options.autoMayCollapse); // the export: adaptive or the collapse, per image
     QCOMPARE(options.targetTriangles, std::size_t{20000});
     QCOMPARE(options.size, 0); // chosen from the target
+    // The live LOD: auto keeps to salient-point, which reads the saliency.
+    QVERIFY(!panel.liveLodOptions().autoMayCollapse);
+    QCOMPARE(panel.liveLodOptions().targetTriangles, std::size_t{20000});
+    QVERIFY(panel.liveLodReadsSaliency());
     auto* methods = panel.findChild<QComboBox*>(QStringLiteral("lodMethod"));
     QVERIFY(methods);
     QStringList names, technical;
@@ -43,10 +48,10 @@ private slots:
     }
     // Words for a newcomer; the technical names in the tooltips.
     QCOMPARE(names, (QStringList{"Nearest sample", "Smooth", "Soft features", "Sharp features",
-                                 "Adaptive"}));
-    QCOMPARE(technical,
-             (QStringList{"point", "average", "salient-average", "salient-point", "adaptive"}));
-    QCOMPARE(methods->currentText(), QStringLiteral("Sharp features"));
+                                 "Adaptive", "Collapse", "Best"}));
+    QCOMPARE(technical, (QStringList{"point", "average", "salient-average", "salient-point",
+                                     "adaptive", "collapse", "auto"}));
+    QCOMPARE(methods->currentText(), QStringLiteral("Best"));
     QCOMPARE(panel.lodText(), QStringLiteral("LOD: —"));
     QCOMPARE(panel.errorText(), QStringLiteral("Error: —"));
   }

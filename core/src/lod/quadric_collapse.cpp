@@ -1,9 +1,12 @@
 #include "lod/quadric_collapse.h"
 
+#include "detail/parallel_rows.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace octaclay::core::detail {
@@ -34,10 +37,7 @@ double errorAt(const Quadric& a, const Quadric& b, Vec3f p) {
   return std::max(0.0, a.error(p.x, p.y, p.z) + b.error(p.x, p.y, p.z));
 }
 
-struct Candidate {
-  float error;
-  std::uint32_t triangle, corner;
-};
+constexpr int kDroppedMantissaBits = 25;
 
 class Collapser {
 public:
@@ -48,6 +48,9 @@ public:
     normals_.resize(t);
     inputAspect_.resize(t);
     deleted_.assign(t, 0);
+    origin_.resize(t);
+    for (std::size_t k = 0; k < t; ++k)
+      origin_[k] = static_cast<std::uint32_t>(k);
     stamp_.assign(v, 0);
     stamp2_.assign(v, 0);
     // Planes weighted by area / mean area: the order is that of area-weighted quadrics, the
@@ -93,25 +96,33 @@ public:
     std::vector<float> errors;
     std::size_t boost = 1; // widens the threshold after a pass that found nothing legal
     for (int pass = 0; pass < 100 && alive > target && alive > 4; ++pass) {
+      compact();
       rebuildRefs();
-      // Error of each corner's outgoing edge (corner k → k+1) collapsed the cheaper legal way.
+      // Error of each corner's outgoing edge (corner k → k+1) collapsed the cheaper legal way,
+      // on every hardware thread (each triangle's entries are its own).
       edgeError_.assign(triangles_.size() * 3, std::numeric_limits<float>::infinity());
       edgeTo_.assign(triangles_.size() * 3, 0);
+      const int bands = static_cast<int>((triangles_.size() + 4095) / 4096);
+      parallelRows(
+          bands,
+          [&](int bandBegin, int bandEnd) {
+            const std::size_t end = std::min(triangles_.size(), std::size_t(bandEnd) * 4096);
+            for (std::size_t t = std::size_t(bandBegin) * 4096; t < end; ++t) {
+              for (int k = 0; k < 3; ++k) {
+                const std::uint32_t a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
+                if (a > b) continue; // each edge once, from the triangle that has it as a < b
+                std::uint32_t from = 0, to = 0;
+                const double best = cheapestDirection(a, b, from, to);
+                if (maxQuadricError_ > 0 && best > maxQuadricError_) continue;
+                edgeError_[3 * t + k] = float(best);
+                edgeTo_[3 * t + k] = to == b;
+              }
+            }
+          },
+          4);
       errors.clear();
-      for (std::size_t t = 0; t < triangles_.size(); ++t) {
-        if (deleted_[t]) continue;
-        for (int k = 0; k < 3; ++k) {
-          const std::uint32_t a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
-          if (a > b) continue; // each edge once, from the triangle that has it as a < b
-          std::uint32_t from = 0, to = 0;
-          const double best = cheapestDirection(a, b, from, to);
-          const std::uint8_t into = to == b;
-          if (maxQuadricError_ > 0 && best > maxQuadricError_) continue;
-          edgeError_[3 * t + k] = float(best);
-          edgeTo_[3 * t + k] = into;
-          if (std::isfinite(best)) errors.push_back(float(best));
-        }
-      }
+      for (const float e : edgeError_)
+        if (std::isfinite(e)) errors.push_back(e);
       if (errors.empty()) break;
       // Candidates: the cheapest 3× as many edges as collapses are still wanted (about half
       // are blocked by collapses next to them), taken cheapest first.
@@ -120,22 +131,27 @@ public:
           std::min(errors.size() - 1, 3 * std::max<std::size_t>(wanted, 1) * boost - 1);
       std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(k), errors.end());
       const float threshold = errors[k];
+      // Cheapest first by error rounded to a quarter octave (the float's exponent and two
+      // mantissa bits), in mesh order within each step: nearly the same order, but neighbouring
+      // collapses come together, which keeps the mesh in cache (2x faster on 2N² triangles).
       candidates_.clear();
-      for (std::size_t t = 0; t < triangles_.size(); ++t)
-        for (std::uint32_t c = 0; c < 3; ++c)
-          if (edgeError_[3 * t + c] <= threshold)
-            candidates_.push_back({edgeError_[3 * t + c], static_cast<std::uint32_t>(t), c});
-      std::sort(candidates_.begin(), candidates_.end(),
-                [](const Candidate& a, const Candidate& b) { return a.error < b.error; });
+      for (std::size_t e = 0; e < edgeError_.size(); ++e)
+        if (edgeError_[e] <= threshold) {
+          std::uint32_t bits = 0;
+          std::memcpy(&bits, &edgeError_[e], sizeof bits);
+          candidates_.push_back(std::uint64_t(bits >> kDroppedMantissaBits) << 32 | e);
+        }
+      std::sort(candidates_.begin(), candidates_.end());
 
       std::size_t collapsedThisPass = 0;
-      for (const Candidate& candidate : candidates_) {
+      for (const std::uint64_t candidate : candidates_) {
         if (alive <= target || alive <= 4) break;
-        const std::size_t t = candidate.triangle;
+        const auto edge = static_cast<std::uint32_t>(candidate);
+        const std::size_t t = edge / 3;
         if (deleted_[t]) continue;
         // Earlier collapses of this pass may have changed the edge or its quadrics: recompute.
-        const std::uint32_t a = triangles_[t][candidate.corner];
-        const std::uint32_t b = triangles_[t][(candidate.corner + 1) % 3];
+        const std::uint32_t a = triangles_[t][edge % 3];
+        const std::uint32_t b = triangles_[t][(edge % 3 + 1) % 3];
         std::uint32_t from = 0, to = 0;
         if (!(cheapestDirection(a, b, from, to) <= threshold)) continue;
         if (vertexCount_ <= 4 || !legal(from, to)) continue;
@@ -173,6 +189,25 @@ private:
 
   bool allowed(std::uint32_t from, std::uint32_t to) const {
     return !options_.allowCollapse || options_.allowCollapse(from, to);
+  }
+
+  // Drops deleted triangles (keeping each survivor's input index), so that later passes
+  // scan only what is left.
+  void compact() {
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+      if (deleted_[t]) continue;
+      triangles_[kept] = triangles_[t];
+      normals_[kept] = normals_[t];
+      inputAspect_[kept] = inputAspect_[t];
+      origin_[kept] = origin_[t];
+      ++kept;
+    }
+    triangles_.resize(kept);
+    normals_.resize(kept);
+    inputAspect_.resize(kept);
+    origin_.resize(kept);
+    deleted_.assign(kept, 0);
   }
 
   void rebuildRefs() {
@@ -307,7 +342,7 @@ private:
       if (deleted_[t]) continue;
       const auto& tri = triangles_[t];
       out.mesh.triangles.push_back({index[tri[0]], index[tri[1]], index[tri[2]]});
-      out.inputTriangle.push_back(static_cast<std::uint32_t>(t));
+      out.inputTriangle.push_back(origin_[t]);
     }
     return out;
   }
@@ -319,11 +354,12 @@ private:
   std::vector<Vec3f> normals_;      // of the input triangles
   std::vector<double> inputAspect_; // aspectRatio of the input triangles
   std::vector<std::uint8_t> deleted_;
+  std::vector<std::uint32_t> origin_; // input index of each triangle (compact() moves them)
   std::vector<std::uint32_t> stamp_, stamp2_;
   std::uint32_t stampValue_ = 0;
   std::vector<std::uint32_t> start_, count_, refs_;
   std::vector<float> edgeError_;
-  std::vector<Candidate> candidates_;
+  std::vector<std::uint64_t> candidates_; // (rounded error, 3 × triangle + corner)
   std::vector<std::uint8_t> edgeTo_;
   double minCos_ = 0.5, maxQuadricError_ = 0;
   std::size_t vertexCount_ = 0;

@@ -91,7 +91,7 @@ struct Accumulator {
 } // namespace
 
 void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2f, 3>>& cornerUv,
-                    TriangleMesh& lod, int stride, int iterations) {
+                    TriangleMesh& lod, int stride, int iterations, float maxTurnDegrees) {
   // Rasterized in two halves of the triangles on two threads when there is enough work. The
   // lists keep their memory from call to call up to kKeptBytes (the live LOD refits again and
   // again): fresh pages cost about as much as the rasterizing.
@@ -117,6 +117,18 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
   // The steps move vertices by a fraction of the sample spacing: their normals barely turn, so
   // the first step's serve them all.
   const std::vector<Vec3f> normals = vertexNormals(lod);
+  // Vertices on a sharp crease (a triangle around them turned more than maxTurnDegrees from
+  // their averaged normal) stay where they are.
+  std::vector<std::uint8_t> pinned(vertexCount, 0);
+  if (maxTurnDegrees > 0) {
+    const float minCos = std::cos(maxTurnDegrees * float(M_PI) / 180.0f);
+    for (const auto& t : lod.triangles) {
+      const Vec3f p = lod.positions[t[0]];
+      const Vec3f n = normalize(cross(lod.positions[t[1]] - p, lod.positions[t[2]] - p));
+      for (const std::uint32_t v : t)
+        if (dot(n, normals[v]) < minCos) pinned[v] = 1;
+    }
+  }
   for (int iteration = 0; iteration < iterations; ++iteration) {
     for (auto& a : acc) {
       a.along.assign(vertexCount, 0);
@@ -147,7 +159,7 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
     }
     for (std::size_t v = 0; v < vertexCount; ++v) {
       const float mass = acc[0].mass[v] + acc[1].mass[v];
-      if (mass <= 0) continue;
+      if (mass <= 0 || pinned[v]) continue;
       lod.positions[v] += normals[v] * ((acc[0].along[v] + acc[1].along[v]) / mass);
     }
   }

@@ -139,7 +139,9 @@ ResampledImage resampleWithSources(const GeometryImage& image, int m, ResampleMe
               c = averageFootprint(image, centre, half, salient);
               break;
             case ResampleMethod::SalientPoint:
-            case ResampleMethod::Adaptive: // never here: generateLod and resampleImage divert it
+            case ResampleMethod::Adaptive: // never here: generateLod and resampleImage divert them
+            case ResampleMethod::Collapse:
+            case ResampleMethod::Auto:
               c = salientFootprint(image, m, lod, centre, step);
               break;
             }

@@ -9,6 +9,7 @@
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/lod/vertex_collapse.h"
+#include "octaclay/core/measure/stretch.h"
 
 #include <array>
 #include <cstddef>
@@ -40,9 +41,16 @@ enum class ResampleMethod {
   /// triangle a sample splits) falls below a threshold set by the triangle target or maxError.
   /// Flat parts get few large triangles, ridges and folds many small ones.
   Adaptive,
+  /// No resampling: the welded full-resolution mesh (2N² triangles) collapsed down to the
+  /// target (without one: to the size's 2M² triangles) with the grid's seam rules and no
+  /// aspect bound, then refit except at sharp creases. What a stretched image needs: the
+  /// collapse, not the image, decides where the vertices go (docs/lod.md).
+  Collapse,
+  /// Picks one of the above per image (chooseLodMethod); LodMesh::methodUsed says which.
+  Auto,
 };
 
-/// "point", "average", "salient-average", "salient-point".
+/// "point", "average", "salient-average", "salient-point", "adaptive", "collapse", "auto".
 std::string_view methodName(ResampleMethod method);
 std::optional<ResampleMethod> parseResampleMethod(std::string_view name);
 
@@ -77,6 +85,10 @@ struct LodOptions {
   /// The live LOD needs the fast engine (vertex_collapse.h); the Decimater gives the strict
   /// error order at a much higher cost.
   CollapseEngine collapseEngine = CollapseEngine::Fast;
+  /// Auto chooses per image. The live LOD turns it off: auto then keeps to salient-point, whose
+  /// regeneration fits a frame (bench_lod's live line); a collapse of all 2N² triangles does
+  /// not.
+  bool autoMayCollapse = true;
 };
 
 struct LodMesh {
@@ -90,7 +102,9 @@ struct LodMesh {
   /// (average methods). Every triangle's corners are counter-clockwise in the image and the
   /// triangles tile the unit square once (collapses that would fold them are refused).
   std::vector<std::array<Vec2f, 3>> cornerUv;
-  int resampledSize = 0; ///< M that was used; N for the adaptive method (no grid)
+  int resampledSize = 0; ///< M that was used; N for the adaptive and collapse methods (no grid)
+  /// The method that made it: options.method, or what Auto chose.
+  ResampleMethod methodUsed = ResampleMethod::SalientPoint;
 };
 
 /// The LOD: resample to M (resampleImage), extract the welded mesh (2M² triangles), collapse
@@ -104,6 +118,22 @@ struct LodMesh {
 /// power of two or maxNormalTurnDegrees is outside (0, 180]. Needs the image's saliency in
 /// alpha for the salient methods (computeSaliency in saliency.h, or the GPU pass).
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
+
+/// Auto's choice for this image and these options (cheap: a stretch summary over a coarse
+/// sub-grid of the image, O(N²/256) past N = 128): the image-based adaptive method where the
+/// image samples the surface evenly (imageStretches false), the full-resolution collapse where
+/// it stretches (docs/lod.md gives the benchmark behind the thresholds). With
+/// options.autoMayCollapse false (the live LOD): salient-point, whatever the image.
+ResampleMethod chooseLodMethod(const GeometryImage& image, const LodOptions& options);
+/// The stretch summary chooseLodMethod judges by: summarizeStretch of the image point-sampled
+/// to a 64 grid (the image itself below N = 4).
+StretchSummary coarseStretch(const GeometryImage& image);
+/// Auto's threshold: the image samples the surface evenly when its coarse p99 edge is at most
+/// this many medians and its longest at most that many (sculpted N = 1024 sphere: 1.55 and
+/// 2.02; max_planck_decimated: 1.60 and 1.83, 3-4 dB better collapsed). igea (1.46 and 1.64)
+/// still gets adaptive and loses 2 dB at 1-5 %: stretch alone does not tell it (docs/lod.md).
+inline constexpr double kEvenP99OverMedian = 1.58, kEvenLongestOverMedian = 2.15;
+bool imageStretches(const StretchSummary& summary);
 
 /// The resampled, seamed (M+1)² image alone (step 1 of generateLod).
 GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method);
