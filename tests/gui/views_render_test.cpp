@@ -488,6 +488,11 @@ void ViewsRenderTest::escapeInASpinBoxHandsTheKeysBackWithoutAStroke() {
   QVERIFY(QTest::qWaitFor([&] { return radius->hasFocus(); }));
   QTest::mouseClick(view, Qt::RightButton, {}, QPoint(view->width() / 2, view->height() / 2));
   QVERIFY(view->hasFocus());
+  // A left click on the model while the box has the keys takes them back without a stroke.
+  radius->setFocus();
+  QVERIFY(QTest::qWaitFor([&] { return radius->hasFocus(); }));
+  QTest::mouseClick(view, Qt::LeftButton, {}, QPoint(view->width() / 2, view->height() / 2));
+  QVERIFY(view->hasFocus());
   // Nothing was stroked.
   QCOMPARE(window_->undoStack()->count(), 0);
   QCOMPARE(view->stats().dabs, 0LL);
