@@ -34,24 +34,10 @@
 
 using namespace octaclay;
 using app::MainWindow;
+using app::testing::bitEqual;
+using app::testing::positionsOf;
 
 namespace {
-
-std::vector<float> positionsOf(const MainWindow& w) {
-  const core::GeometryImage& image = w.viewport()->document().positions;
-  std::vector<float> out;
-  const int side = image.size() + 1;
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i) {
-      const auto p = image.at(i, j);
-      out.insert(out.end(), {p.x, p.y, p.z, p.w});
-    }
-  return out;
-}
-
-bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
 
 // Qt's warnings while a test runs ("Ambiguous shortcut overload" among them).
 QStringList* g_warnings = nullptr;

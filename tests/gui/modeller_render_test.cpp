@@ -32,28 +32,13 @@
 
 using namespace octaclay;
 using app::MainWindow;
+using app::testing::bitEqual;
+using app::testing::positionsOf;
 
 namespace {
 
 // A PID no process has (checked by the recovery store's own tests): a "crashed" session.
 constexpr qint64 kDeadPid = 0x7ffffff0;
-
-std::vector<float> positionsOf(const MainWindow& w) {
-  const core::GeometryImage& image = w.viewport()->document().positions;
-  std::vector<float> out;
-  const int side = image.size() + 1;
-  out.reserve(std::size_t(side) * side * 4);
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i) {
-      const auto p = image.at(i, j);
-      out.insert(out.end(), {p.x, p.y, p.z, p.w});
-    }
-  return out;
-}
-
-bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
 
 // The brush outline follows the cursor; a Leave event hides it, so images show only the model.
 void hideBrushOutline(QWidget* view) {

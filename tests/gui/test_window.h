@@ -7,7 +7,9 @@
 
 #include <QTest>
 
+#include <cstring>
 #include <memory>
+#include <vector>
 
 namespace octaclay::app::testing {
 
@@ -25,6 +27,24 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
   if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
   if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
   return w;
+}
+
+/// The window's positions layer, every texel's four floats row-major: for bit-exact checks.
+inline std::vector<float> positionsOf(const MainWindow& w) {
+  const core::GeometryImage& image = w.viewport()->document().positions;
+  std::vector<float> out;
+  const int side = image.size() + 1;
+  out.reserve(std::size_t(side) * side * 4);
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const auto p = image.at(i, j);
+      out.insert(out.end(), {p.x, p.y, p.z, p.w});
+    }
+  return out;
+}
+
+inline bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 } // namespace octaclay::app::testing
