@@ -46,18 +46,10 @@ QImage ViewportWidget::renderImage(QSize size, bool background) {
     lodRenderer_->SetBackgroundAlpha(alpha);
     renderWindow_->SetSize(w, h);
 
-    vtkOpenGLState* state = renderWindow_->GetState();
-    state->Reset(); // as paintGL: the engine and Qt changed GL state behind VTK's cache
-    state->Push();
-    state->vtkglDepthFunc(GL_LEQUAL);
-    updateClipping();
-    if (lodDisplay_ == LodDisplay::SideBySide)
-      lodRenderer_->ResetCameraClippingRange(prop_->bounds.data());
-    renderWindow_->Render();
-    state->Pop();
+    renderVtkFrame();
     // front = 1: the display framebuffer, the one paintGL shows.
     renderWindow_->GetRGBACharPixelData(0, 0, w - 1, h - 1, 1, pixels);
-    state->Reset();
+    renderWindow_->GetState()->Reset();
 
     renderer_->SetBackgroundAlpha(1.0);
     lodRenderer_->SetBackgroundAlpha(1.0);

@@ -59,6 +59,18 @@ void ViewportWidget::drawModel(vtkRenderer* r) {
   state->ResetGLActiveTexture();
 }
 
+void ViewportWidget::renderVtkFrame() {
+  vtkOpenGLState* state = renderWindow_->GetState();
+  state->Reset(); // the engine and Qt changed GL state behind VTK's cache
+  state->Push();
+  state->vtkglDepthFunc(GL_LEQUAL);
+  updateClipping();
+  if (lodDisplay_ == LodDisplay::SideBySide)
+    lodRenderer_->ResetCameraClippingRange(prop_->bounds.data());
+  renderWindow_->Render();
+  state->Pop();
+}
+
 void ViewportWidget::paintGL() {
   if (uploading_) return; // a document is half uploaded: keep the last frame
   const qint64 now = clock_.elapsed();
@@ -82,15 +94,7 @@ void ViewportWidget::paintGL() {
     pendingLod_.reset();
   }
 
-  vtkOpenGLState* state = renderWindow_->GetState();
-  state->Reset(); // the engine and Qt changed GL state behind VTK's cache
-  state->Push();
-  state->vtkglDepthFunc(GL_LEQUAL);
-  updateClipping();
-  if (lodDisplay_ == LodDisplay::SideBySide)
-    lodRenderer_->ResetCameraClippingRange(prop_->bounds.data());
-  renderWindow_->Render();
-  state->Pop();
+  renderVtkFrame();
 
   const QSize size = this->size() * devicePixelRatioF();
   gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
@@ -99,7 +103,7 @@ void ViewportWidget::paintGL() {
   gl->glDisable(GL_SCISSOR_TEST);
   renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size.width(), size.height(), 0, 0, size.width(),
                                         size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  state->Reset();
+  renderWindow_->GetState()->Reset();
   if (dabbed || session_.stroking()) emit statsChanged();
   if (dabbed) emit surfaceChanged();
   if (session_.hasDocument()) emit framePainted();

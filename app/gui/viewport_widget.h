@@ -231,6 +231,8 @@ private:
   QRectF modelRect() const;
   void applyLodDisplay();
   void updateClipping();
+  /// VTK's frame (both renderers) into its framebuffers, GL state cache reset around it.
+  void renderVtkFrame();
   /// The model's bounds from the document's tile boxes, for framing and clipping.
   void updateBounds();
   void fail(const QString& message);

@@ -2,6 +2,8 @@
 
 #include "export/layer_maps.h"
 
+#include "export/sample_grid.h"
+
 #include "octaclay/core/error.h"
 
 #include <algorithm>
@@ -31,16 +33,6 @@ template <class Value> RasterImage makeMap(int n, int channels, Value&& value) {
       map.pixels[t * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)] =
           value(t, c);
   return map;
-}
-
-void requireLayer(const Layer& layer, int n) {
-  const std::size_t side = static_cast<std::size_t>(n) + 1;
-  if (!layer.uniform() &&
-      layer.texels.size() != side * side * static_cast<std::size_t>(layer.channels))
-    throw Error(ErrorKind::InvalidArgument,
-                "cannot export: the " + layer.name + " layer holds " +
-                    std::to_string(layer.texels.size()) + " values, not (N+1)² × " +
-                    std::to_string(layer.channels) + " for N = " + std::to_string(n));
 }
 
 // A map at resolution² texels over image coordinates: value(sample index, channel) blended

@@ -13,8 +13,6 @@
 
 namespace octaclay::core::detail {
 
-namespace {
-
 void requireLayer(const Layer& layer, int n) {
   const std::size_t side = static_cast<std::size_t>(n) + 1;
   if (!layer.uniform() &&
@@ -24,6 +22,8 @@ void requireLayer(const Layer& layer, int n) {
                     std::to_string(layer.texels.size()) + " values, not (N+1)² × " +
                     std::to_string(layer.channels) + " for N = " + std::to_string(n));
 }
+
+namespace {
 
 // Calls triangle(a, b, c) for the 2M² triangles, counter-clockwise seen from outside, split as
 // extractMesh splits them (the anti-diagonal where (i < M/2) == (j < M/2)).

@@ -30,6 +30,9 @@ struct SampleGrid {
 /// power of two with N/step ≥ 2 or a layer's texel count disagrees with N.
 SampleGrid makeGrid(const Document& doc, int step);
 
+/// Throws Error(InvalidArgument) unless layer is uniform or holds (N+1)² texels of its channels.
+void requireLayer(const Layer& layer, int n);
+
 /// The vertices' texture coordinates, in glTF's convention (v down) or OBJ's (vUp).
 std::vector<Vec2f> gridTexcoords(const SampleGrid& grid, bool vUp);
 
