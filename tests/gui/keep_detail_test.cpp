@@ -6,6 +6,7 @@
 
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/measure/surface_distance.h"
 #include "octaclay/gpu/brush_catalog.h"
@@ -15,7 +16,10 @@
 
 #include <QTest>
 
+#include <array>
+#include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 using namespace octaclay;
@@ -31,11 +35,16 @@ private slots:
   void clicksKeepTheirDetailAndUndoBitExactly();
   void offLeavesTheSamplesWhereTheBrushPutThem();
   void theIssuesLimbStaysWithinTolerance();
+  void aSnakeHookLegGainsOnEitherHalf_data();
+  void aSnakeHookLegGainsOnEitherHalf();
 
 private:
   // Pulls at the pole (the image centre) with `clicks` one-dab strokes; returns the limb's
   // longest edge ÷ median edge, and checks every relaxed click's undo and redo.
   double pull(bool keepDetail, int clicks, int* relaxedClicks);
+  // bench_creature's back left leg, one snake-hook stroke pulled from direction `start`; the leg's
+  // (the surface beyond 1.15) fair share of samples and the longest edge ÷ median.
+  std::pair<double, double> hookLeg(bool keepDetail, core::Vec3f start);
 
   std::optional<gpu::GlContext> context_;
   gpu::BrushCatalog catalog_;
@@ -142,6 +151,52 @@ void KeepDetailTest::theIssuesLimbStaysWithinTolerance() {
   QVERIFY(limb.fairShare >= 0.3);
   QVERIFY(limb.spacingRatio <= 2.0);
   QVERIFY(longest <= 16.0);
+}
+
+std::pair<double, double> KeepDetailTest::hookLeg(bool keepDetail, core::Vec3f start) {
+  constexpr int n = 256;
+  const gpu::BrushManifest& hook = *catalog_.find("snake-hook");
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(hook);
+  session.setKeepDetail(keepDetail);
+  session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
+  const std::array<double, 2> st = core::octahedralSquarePoint(start);
+  gpu::StrokeSettings s;
+  s.brush = hook.id;
+  s.path = {{float(std::round(st[0] * n) / n), float(std::round(st[1] * n) / n)}};
+  const float dz = start.z < 0 ? -1.0f : 1.0f;
+  s.dragPoints = {start + core::Vec3f{-0.05f, -0.05f, 0.45f * dz},
+                  start + core::Vec3f{-0.08f, -0.08f, 0.9f * dz}};
+  s.radius = 0.2f;
+  s.strength = 1.0f;
+  session.strokeAlongPath(hook, s);
+  const core::RegionSampling leg = core::regionSampling(
+      session.document().positions, [](const core::Vec3f& p) { return core::length(p) > 1.15f; });
+  return {leg.fairShare, core::summarizeStretch(session.document().positions).longestOverMedian};
+}
+
+void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf_data() {
+  QTest::addColumn<float>("z");
+  QTest::newRow("-z half (the image's corner triangles)") << -1.0f;
+  QTest::newRow("+z half (the image's middle)") << 1.0f;
+}
+
+// bench_creature's leg, alone: 0.088 of its fair share without keep-detail. The relaxation
+// pins the stroke's start sample, which lies between the coarse levels' samples; it once let
+// those levels move the samples around it freely, and refining them tore the cells at the pin,
+// so the fold repair put half the leg's samples back: from the -z half it ended with 0.079 and
+// its longest edge 54x the median (from 27x).
+void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf() {
+  QFETCH(float, z);
+  const core::Vec3f start = core::normalize(core::Vec3f{-0.45f, -0.45f, 0.77f * z});
+  const auto [offShare, offLongest] = hookLeg(false, start);
+  const auto [onShare, onLongest] = hookLeg(true, start);
+  qInfo("snake-hook leg: fair share %.3f -> %.3f, longest edge %.1fx -> %.1fx the median", offShare,
+        onShare, offLongest, onLongest);
+  QVERIFY(offShare < 0.1);
+  QVERIFY(onShare >= 0.5);
+  QVERIFY(onLongest < offLongest / 2);
 }
 
 QTEST_GUILESS_MAIN(KeepDetailTest)

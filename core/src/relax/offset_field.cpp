@@ -63,6 +63,8 @@ public:
     });
     for (std::uint8_t f : free_)
       freeCount_ += f;
+    for (Sample p : field_.pins)
+      addPin(p);
     // The rows of cells that hold a near sample: where sweeps and fold checks look.
     nearRows_ = {m_, 0};
     for (int J = 0; J <= m_; ++J)
@@ -91,7 +93,11 @@ public:
         },
         16);
     copyToIdentified();
+    holdPins();
     repairFolds(before);
+    // Folds put back part of a pin's triangle: the rest of it goes back too.
+    while (revertBrokenPins(before))
+      repairFolds(before);
   }
 
   /// Unfolds whatever the offsets brought from the coarser level fold (none should: the
@@ -112,6 +118,92 @@ private:
   }
   std::size_t lattice(Sample s) const { return lattice(s.i, s.j); }
   std::size_t fine(int I, int J) const { return field_.index(I * step_, J * step_); }
+
+  // A pin between this lattice's samples (on a coarse level) holds the offset interpolated at
+  // it over its lattice triangle at zero: were the corners to move freely, refining would leave
+  // the pinned sample behind them, and the cells around it would fold.
+  struct Pin {
+    std::array<std::size_t, 3> corners;
+    std::array<double, 3> weights;
+    std::array<bool, 3> movable;
+    // The corner's canonical sample and the sign its offset is copied with (border samples
+    // move with their copies).
+    std::array<std::size_t, 3> canonicals;
+    std::array<float, 3> signs;
+  };
+
+  void addPin(Sample p) {
+    if (p.i % step_ == 0 && p.j % step_ == 0) return; // a lattice sample: not free here
+    const int I = std::min(p.i / step_, m_ - 1), J = std::min(p.j / step_, m_ - 1);
+    const double fx = double(p.i) / step_ - I, fy = double(p.j) / step_ - J;
+    const std::array<Sample, 4> c{{{I, J}, {I + 1, J}, {I + 1, J + 1}, {I, J + 1}}};
+    std::array<Sample, 3> tri;
+    std::array<double, 3> w;
+    if ((I >= m_ / 2) == (J >= m_ / 2)) { // the anti-diagonal split, as foldedCorners
+      if (fx + fy <= 1)
+        tri = {c[0], c[1], c[3]}, w = {1 - fx - fy, fx, fy};
+      else
+        tri = {c[1], c[2], c[3]}, w = {1 - fy, fx + fy - 1, 1 - fx};
+    } else {
+      if (fx >= fy)
+        tri = {c[0], c[1], c[2]}, w = {1 - fx, fx - fy, fy};
+      else
+        tri = {c[0], c[2], c[3]}, w = {1 - fy, fx, fy - fx};
+    }
+    Pin pin{};
+    bool any = false;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Sample v = tri[k], canon = canonical(m_, v);
+      pin.corners[k] = lattice(v);
+      pin.weights[k] = w[k];
+      pin.movable[k] = free_[lattice(v)] != 0;
+      pin.canonicals[k] = lattice(canon);
+      pin.signs[k] = copySign(m_, v, canon);
+      any = any || (pin.movable[k] && w[k] > 0);
+    }
+    if (any) pins_.push_back(pin);
+  }
+
+  std::array<double, 2> pinOffset(const Pin& pin) const {
+    std::array<double, 2> r{};
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t c = 0; c < 2; ++c)
+        r[c] += pin.weights[k] * offsets_[pin.corners[k]][c];
+    return r;
+  }
+
+  // The smallest change of the movable corners that brings each pin's offset to zero.
+  void holdPins() {
+    for (const Pin& pin : pins_) {
+      const std::array<double, 2> r = pinOffset(pin);
+      double ww = 0;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (pin.movable[k]) ww += pin.weights[k] * pin.weights[k];
+      if (!(ww > 0)) continue;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (pin.movable[k])
+          for (std::size_t c = 0; c < 2; ++c)
+            offsets_[pin.canonicals[k]][c] -=
+                pin.signs[k] * static_cast<float>(pin.weights[k] * r[c] / ww);
+      copyToIdentified(); // before the next pin reads a border corner
+    }
+  }
+
+  // Puts back to `before` the corners of each pin that no longer holds; true if any changed.
+  bool revertBrokenPins(const std::vector<std::array<float, 2>>& before) {
+    bool changed = false;
+    for (const Pin& pin : pins_) {
+      const std::array<double, 2> r = pinOffset(pin);
+      if (std::hypot(r[0], r[1]) <= 1e-3 * step_) continue;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (offsets_[pin.canonicals[k]] != before[pin.canonicals[k]]) {
+          offsets_[pin.canonicals[k]] = before[pin.canonicals[k]];
+          changed = true;
+        }
+      copyToIdentified();
+    }
+    return changed;
+  }
 
   template <class F> void forEachBorderSample(F&& f) const {
     for (int t = 0; t <= m_; ++t) {
@@ -276,6 +368,7 @@ private:
   std::vector<Vec3f> positions_;
   std::vector<std::array<float, 2>> offsets_;
   std::vector<std::uint8_t> free_, near_;
+  std::vector<Pin> pins_;
   std::array<int, 2> nearRows_{0, 0}; // [first, last) row of cells with a near sample
   std::size_t freeCount_ = 0;
 };
@@ -342,6 +435,7 @@ void OffsetField::pin(Sample s) {
   const int k = identifiedSamples(n, s, copies);
   for (int c = 0; c < k; ++c)
     free[index(copies[static_cast<std::size_t>(c)].i, copies[static_cast<std::size_t>(c)].j)] = 0;
+  pins.push_back(s);
 }
 
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,

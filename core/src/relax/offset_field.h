@@ -17,6 +17,7 @@ struct OffsetField {
   int n = 0;
   std::vector<std::array<float, 2>> offset; ///< (N+1)², row-major
   std::vector<std::uint8_t> free;           ///< 1 where the sample may move
+  std::vector<Sample> pins;                 ///< the samples pin() was given
 
   explicit OffsetField(int size);
   std::size_t index(int i, int j) const {
@@ -28,7 +29,8 @@ struct OffsetField {
   void freeAll();
   /// Frees the samples strictly inside rect and the samples identified with them.
   void freeInside(TexelRect rect);
-  /// Pins sample s and the samples identified with it.
+  /// Pins sample s and the samples identified with it; the coarse levels of solveOffsets keep
+  /// the offset interpolated at s zero too, so that the pin tears nothing when they are refined.
   void pin(Sample s);
 };
 
