@@ -18,6 +18,10 @@ constexpr double kStep = 0.3;     // share of the equalising move taken per swee
 constexpr double kMaxMove = 0.3;  // lattice steps per sweep
 constexpr double kMinArea = 1e-4; // of a cell triangle's rest area: below it counts as folded
 constexpr int kCoarsest = 8;      // lattice size the solve starts on
+// A coarse lattice's edge is measured along the surface, in kArcParts pieces, on the levels
+// whose step is at least N / kArcLevels.
+constexpr int kArcParts = 4;
+constexpr int kArcLevels = 32;
 
 constexpr std::array<Sample, 4> kNeighbours{{{1, 0}, {0, 1}, {-1, 0}, {0, -1}}};
 
@@ -33,12 +37,63 @@ bool isSideMidpoint(int n, Sample s) {
   return (s.i == h && (s.j == 0 || s.j == n)) || (s.j == h && (s.i == 0 || s.i == n));
 }
 
+// The held samples of a field (not free, and neither a pin nor a side midpoint: the rim of what
+// may move), counted over boxes of the tiled plane.
+class HeldSamples {
+public:
+  explicit HeldSamples(const OffsetField& field)
+      : n_(field.n), side_(static_cast<std::size_t>(field.n) + 2), held_(field.free.size()),
+        sums_(side_ * side_, 0) {
+    for (int j = 0; j <= n_; ++j)
+      for (int i = 0; i <= n_; ++i)
+        held_[field.index(i, j)] = !field.free[field.index(i, j)] && !isSideMidpoint(n_, {i, j});
+    for (Sample p : field.pins) {
+      std::array<Sample, 4> copies;
+      const int k = identifiedSamples(n_, p, copies);
+      for (int c = 0; c < k; ++c)
+        held_[field.index(copies[static_cast<std::size_t>(c)].i,
+                          copies[static_cast<std::size_t>(c)].j)] = 0;
+    }
+    for (int j = 0; j <= n_; ++j)
+      for (int i = 0; i <= n_; ++i)
+        sums_[at(i + 1, j + 1)] =
+            held_[index(i, j)] + sums_[at(i, j + 1)] + sums_[at(i + 1, j)] - sums_[at(i, j)];
+  }
+
+  /// Whether a held sample lies in [i0, i1] × [j0, j1] (positions of the tiled plane).
+  bool any(int i0, int j0, int i1, int j1) const {
+    if (i0 >= 0 && j0 >= 0 && i1 <= n_ && j1 <= n_)
+      return sums_[at(i1 + 1, j1 + 1)] - sums_[at(i0, j1 + 1)] - sums_[at(i1 + 1, j0)] +
+                 sums_[at(i0, j0)] >
+             0;
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        if (const Sample w = wrap(n_, {i, j}); held_[index(w.i, w.j)]) return true;
+    return false;
+  }
+
+private:
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(n_ + 1) +
+           static_cast<std::size_t>(i);
+  }
+  std::size_t at(int i, int j) const {
+    return static_cast<std::size_t>(j) * side_ + static_cast<std::size_t>(i);
+  }
+
+  int n_;
+  std::size_t side_;
+  std::vector<std::uint8_t> held_;
+  std::vector<std::uint32_t> sums_; // summed-area table of held_, one row and column of zeros first
+};
+
 // One level of the coarse-to-fine solve: the lattice of samples whose indices are multiples of
 // step (an octahedral grid of size m = n / step over the same surface), with its own copy of
 // their offsets.
 class Level {
 public:
-  Level(const GeometryImage& image, OffsetField& field, int step, double edgeCap)
+  Level(const GeometryImage& image, OffsetField& field, const HeldSamples& held, int step,
+        double edgeCap)
       : image_(image), field_(field), n_(field.n), step_(step), m_(field.n / step),
         cap_(edgeCap * step),
         count_(static_cast<std::size_t>(m_ + 1) * static_cast<std::size_t>(m_ + 1)),
@@ -47,6 +102,11 @@ public:
       for (int I = 0; I <= m_; ++I) {
         offsets_[lattice(I, J)] = field_.offset[fine(I, J)];
         if (!field_.free[fine(I, J)]) continue;
+        // A lattice sample whose cells reach a held sample stays: refining would tear the
+        // held sample away from the moved samples around it, and the cells there would fold.
+        if (step_ > 1 && held.any(I * step_ - step_ + 1, J * step_ - step_ + 1,
+                                  I * step_ + step_ - 1, J * step_ + step_ - 1))
+          continue;
         free_[lattice(I, J)] = 1;
         for (int dj = -1; dj <= 1; ++dj)
           for (int di = -1; di <= 1; ++di)
@@ -233,6 +293,24 @@ private:
         16);
   }
 
+  // The surface length between two of this lattice's points (a, b in the tiled plane, at
+  // surface points xa, xb) along the parameter segment between them: a coarse lattice's chord
+  // would step over whatever was pulled out between its samples.
+  double arcLength(double ax, double ay, double bx, double by, Vec3f xa, Vec3f xb) const {
+    const int parts = step_ >= std::max(2, n_ / kArcLevels) ? std::min(step_, kArcParts) : 1;
+    if (parts <= 1) return length(xb - xa);
+    double sum = 0;
+    Vec3f prev = xa;
+    for (int p = 1; p < parts; ++p) {
+      const double t = double(p) / parts;
+      const Vec3f x =
+          interpolatePosition(image_, locateGridPoint(n_, ax + t * (bx - ax), ay + t * (by - ay)));
+      sum += length(x - prev);
+      prev = x;
+    }
+    return sum + length(xb - prev);
+  }
+
   std::array<float, 2> moved(const std::vector<std::array<float, 2>>& offsets, int I, int J) const {
     const auto& dc = offsets[lattice(I, J)];
     const double pcx = double(I) * step_ + dc[0], pcy = double(J) * step_ + dc[1];
@@ -245,7 +323,7 @@ private:
       const double sign = w.halfTurn ? -1.0 : 1.0; // the neighbour's offset seen from here
       xs[k] = double(q.i) * step_ + sign * dk[0];
       ys[k] = double(q.j) * step_ + sign * dk[1];
-      lengths[k] = length(positions_[lattice(w.sample)] - xc);
+      lengths[k] = arcLength(pcx, pcy, xs[k], ys[k], xc, positions_[lattice(w.sample)]);
     }
     double mx = 0, my = 0;
     for (std::size_t a = 0; a < 2; ++a) { // the pairs right/left and up/down
@@ -415,14 +493,12 @@ void OffsetField::freeAll() {
 }
 
 void OffsetField::freeInside(TexelRect rect) {
-  const int x0 = std::max(rect.x + 1, 0), y0 = std::max(rect.y + 1, 0);
-  const int x1 = std::min(rect.x + rect.width - 1, n + 1),
-            y1 = std::min(rect.y + rect.height - 1, n + 1);
-  for (int j = y0; j < y1; ++j)
-    for (int i = x0; i < x1; ++i) {
-      if (isSideMidpoint(n, {i, j})) continue;
+  for (int j = rect.y + 1; j < rect.y + rect.height - 1; ++j)
+    for (int i = rect.x + 1; i < rect.x + rect.width - 1; ++i) {
+      const Sample s = wrap(n, {i, j});
+      if (isSideMidpoint(n, s)) continue;
       std::array<Sample, 4> copies;
-      const int k = identifiedSamples(n, {i, j}, copies);
+      const int k = identifiedSamples(n, s, copies);
       for (int c = 0; c < k; ++c)
         free[index(copies[static_cast<std::size_t>(c)].i, copies[static_cast<std::size_t>(c)].j)] =
             1;
@@ -444,12 +520,13 @@ bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterat
   std::vector<std::pair<int, int>> plan; // (step, sweeps), coarse to fine
   for (int m = std::min(n, kCoarsest); m <= n; m *= 2)
     plan.emplace_back(n / m, fineIterations * std::max(1, 512 / m)); // coarse sweeps are cheap
+  const HeldSamples held(field);
   double total = 0, done = 0;
   for (const auto& [step, sweeps] : plan)
     total += double(sweeps) * double(n / step + 1) * double(n / step + 1);
   for (std::size_t l = 0; l < plan.size(); ++l) {
     const auto [step, sweeps] = plan[l];
-    Level level(image, field, step, edgeCap);
+    Level level(image, field, held, step, edgeCap);
     if (l > 0) level.unfoldFromRest();
     if (level.freeCount() > 0)
       for (int s = 0; s < sweeps; ++s) {

@@ -27,7 +27,8 @@ struct OffsetField {
   /// Frees every sample except the four side midpoints (the tiling's half-turn centres, which
   /// cannot move without tearing the seam).
   void freeAll();
-  /// Frees the samples strictly inside rect and the samples identified with them.
+  /// Frees the samples strictly inside rect (which may reach out of the image: its samples
+  /// there are those of the tiling, wrapped into it) and the samples identified with them.
   void freeInside(TexelRect rect);
   /// Pins sample s and the samples identified with it; the coarse levels of solveOffsets keep
   /// the offset interpolated at s zero too, so that the pin tears nothing when they are refined.

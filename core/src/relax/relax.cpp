@@ -113,7 +113,9 @@ TexelRect grownBy(TexelRect r, int by, int n) {
 
 // What to relax around a changed rectangle: grown until its border is no longer stretched
 // (the whole pulled part), then by half its size, so that samples can flow in from the
-// unstretched surface around it.
+// unstretched surface around it. The last growth may leave the image: the surface goes on
+// across the seam (OffsetField::freeInside wraps it), and a rim on the image's border would
+// hold the samples there while the other side of the seam moves.
 TexelRect relaxedExtent(const GeometryImage& image, TexelRect seed, float limit) {
   const int n = image.size();
   TexelRect r = clipped(seed, n);
@@ -121,7 +123,11 @@ TexelRect relaxedExtent(const GeometryImage& image, TexelRect seed, float limit)
     if (!stretchedBorder(image, r, limit)) break;
     r = grownBy(r, std::max(4, std::max(r.width, r.height) / 8), n);
   }
-  return grownBy(r, std::max({16, r.width, r.height}), n);
+  const int by = std::max({16, r.width, r.height});
+  TexelRect e{r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by};
+  if (e.width > n) e.x = -1, e.width = n + 3; // all of the side: every sample, border included
+  if (e.height > n) e.y = -1, e.height = n + 3;
+  return e;
 }
 
 bool meet(TexelRect a, TexelRect b) {
