@@ -1,5 +1,6 @@
 // octaclay: the modeller. `octaclay [doc.exr]` opens a document, or a new sphere (N = 1024).
 #include "main_window.h"
+#include "model_screenshot.h"
 #include "screenshot_script.h"
 #include "stretch_screenshot.h"
 #include "viewport_widget.h"
@@ -36,7 +37,12 @@ int main(int argc, char** argv) {
       "image.png");
   QCommandLineOption startupTime("startup-time",
                                  "Print the time from start to the first drawn frame, then quit.");
-  parser.addOptions({shape, size, screenshot, stretchScreenshot, startupTime});
+  QCommandLineOption modelScreenshot(
+      "model-screenshot",
+      "Show the document in the clay matcap from the front right with the snake-hook brush "
+      "chosen, save the window as an image and quit.",
+      "image.png");
+  parser.addOptions({shape, size, screenshot, stretchScreenshot, startupTime, modelScreenshot});
   parser.process(app);
 
   const auto baseShape = octaclay::core::parseBaseShape(parser.value(shape).toStdString());
@@ -49,6 +55,11 @@ int main(int argc, char** argv) {
   }
 
   const QStringList args = parser.positionalArguments();
+  if (parser.isSet(modelScreenshot) && args.isEmpty()) {
+    fprintf(stderr, "octaclay: --model-screenshot needs a document (see "
+                    "scripts/creature-screenshot)\n");
+    return 2;
+  }
   if (parser.isSet(stretchScreenshot) && args.isEmpty()) {
     fprintf(stderr, "octaclay: --stretch-screenshot needs a document (a pulled limb, see "
                     "scripts/stretch-screenshot)\n");
@@ -74,6 +85,12 @@ int main(int argc, char** argv) {
     const QString out = parser.value(stretchScreenshot);
     QTimer::singleShot(0, &window, [&window, out] {
       const bool ok = octaclay::app::makeStretchScreenshot(window, out);
+      QCoreApplication::exit(ok ? 0 : 1);
+    });
+  } else if (parser.isSet(modelScreenshot)) {
+    const QString out = parser.value(modelScreenshot);
+    QTimer::singleShot(0, &window, [&window, out] {
+      const bool ok = octaclay::app::makeModelScreenshot(window, "snake-hook", out);
       QCoreApplication::exit(ok ? 0 : 1);
     });
   } else {
