@@ -62,6 +62,7 @@ public:
 
   /// Whether a held sample lies in [i0, i1] × [j0, j1] (positions of the tiled plane).
   bool any(int i0, int j0, int i1, int j1) const {
+    if (sums_.back() == 0) return false; // nothing held (the even-out)
     if (i0 >= 0 && j0 >= 0 && i1 <= n_ && j1 <= n_)
       return sums_[at(i1 + 1, j1 + 1)] - sums_[at(i0, j1 + 1)] - sums_[at(i1 + 1, j0)] +
                  sums_[at(i0, j0)] >
@@ -93,8 +94,11 @@ private:
 class Level {
 public:
   Level(const GeometryImage& image, OffsetField& field, const HeldSamples& held, int step,
-        double edgeCap)
+        double edgeCap, bool coarseArcs)
       : image_(image), field_(field), n_(field.n), step_(step), m_(field.n / step),
+        arcParts_(coarseArcs && step >= std::max(2, field.n / kArcLevels)
+                      ? std::min(step, kArcParts)
+                      : 1),
         cap_(edgeCap * step),
         count_(static_cast<std::size_t>(m_ + 1) * static_cast<std::size_t>(m_ + 1)),
         positions_(count_), offsets_(count_), free_(count_, 0), near_(count_, 0) {
@@ -297,7 +301,7 @@ private:
   // surface points xa, xb) along the parameter segment between them: a coarse lattice's chord
   // would step over whatever was pulled out between its samples.
   double arcLength(double ax, double ay, double bx, double by, Vec3f xa, Vec3f xb) const {
-    const int parts = step_ >= std::max(2, n_ / kArcLevels) ? std::min(step_, kArcParts) : 1;
+    const int parts = arcParts_;
     if (parts <= 1) return length(xb - xa);
     double sum = 0;
     Vec3f prev = xa;
@@ -441,7 +445,8 @@ private:
   const GeometryImage& image_;
   OffsetField& field_;
   int n_, step_, m_;
-  double cap_; // longest a sweep lets an edge of this lattice grow
+  int arcParts_; // pieces an edge is measured in (1: the chord)
+  double cap_;   // longest a sweep lets an edge of this lattice grow
   std::size_t count_;
   std::vector<Vec3f> positions_;
   std::vector<std::array<float, 2>> offsets_;
@@ -515,7 +520,7 @@ void OffsetField::pin(Sample s) {
 }
 
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
-                  double edgeCap, const RelaxProgress& progress) {
+                  double edgeCap, bool coarseArcs, const RelaxProgress& progress) {
   const int n = field.n;
   std::vector<std::pair<int, int>> plan; // (step, sweeps), coarse to fine
   for (int m = std::min(n, kCoarsest); m <= n; m *= 2)
@@ -526,7 +531,7 @@ bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterat
     total += double(sweeps) * double(n / step + 1) * double(n / step + 1);
   for (std::size_t l = 0; l < plan.size(); ++l) {
     const auto [step, sweeps] = plan[l];
-    Level level(image, field, held, step, edgeCap);
+    Level level(image, field, held, step, edgeCap, coarseArcs);
     if (l > 0) level.unfoldFromRest();
     if (level.freeCount() > 0)
       for (int s = 0; s < sweeps; ++s) {

@@ -37,9 +37,12 @@ struct OffsetField {
 
 /// Moves the free samples toward where the surface of `image` is stretched, coarse to fine,
 /// keeping every cell unfolded and growing no grid edge beyond edgeCap (object units) by taking
-/// samples away. Returns false when progress cancelled.
+/// samples away. coarseArcs: the coarse lattices (step ≥ N/32) measure their edges along the
+/// surface, not as chords that step over a limb pulled out between their samples (what a
+/// local relaxation needs to find a thin limb; the even-out does as well without, at 2/3 the
+/// time). Returns false when progress cancelled.
 bool solveOffsets(const GeometryImage& image, OffsetField& field, int fineIterations,
-                  double edgeCap, const RelaxProgress& progress);
+                  double edgeCap, bool coarseArcs, const RelaxProgress& progress);
 
 /// Texel (i, j) of layer after resampling at the field's parameter points, editLayerChannels
 /// floats into out: a sample that did not move keeps its value; identified samples get the

@@ -164,7 +164,7 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
   for (Sample s : options.pinned)
     field.pin(s);
   if (!detail::solveOffsets(document.positions, field, fineIterations(options),
-                            kEvenOutDonorEdge * medianEdge(document.positions), progress))
+                            kEvenOutDonorEdge * medianEdge(document.positions), false, progress))
     throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
   Document result = document; // samples that do not move keep their texels
   detail::resampleDocument(document, field, result);
@@ -193,7 +193,7 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
   detail::solveOffsets(document.positions, field, fineIterations(options),
-                       kKeepDetailDonorEdge * median, {});
+                       kKeepDetailDonorEdge * median, true, {});
   const int tiles = StrokeRecorder::tilesPerSide(side);
   std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
   for (int j = 0; j <= n; ++j)
