@@ -15,6 +15,7 @@
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
+#include "octaclay/core/lod/facing.h"
 #include "octaclay/core/lod/normal_map.h"
 #include "octaclay/core/lod/saliency.h"
 
@@ -60,9 +61,10 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   auto control = std::make_shared<TaskControl>();
   auto made = std::make_shared<core::Document>();
   auto report = std::make_shared<QString>();
+  auto facing = std::make_shared<core::Vec3f>();
   const QString error = runner_.run(
       tr("Importing %1…").arg(QFileInfo(path).fileName()),
-      [made, report, control, path, n] {
+      [made, report, facing, control, path, n] {
         const core::ValidatedMesh mesh = core::loadGenus0Mesh(toPath(path));
         const core::SphericalMap map = core::parameterizeOnSphere(mesh.mesh, [control](float f) {
           control->fraction = 0.9f * f;
@@ -74,6 +76,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
                                 " flipped triangles): this mesh is not supported yet");
         core::ImportedDiffuse diffuse;
         *made = core::importValidatedMesh(mesh, map, n, &diffuse);
+        *facing = core::guessFacing(made->positions);
         control->fraction = 1.0f;
         QString colour = QObject::tr("no colour");
         if (diffuse.source == core::DiffuseSource::VertexColours)
@@ -111,6 +114,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
     if (previous) parts_.viewport->history() = std::move(previous->history);
     return false;
   }
+  parts_.viewport->frameFrom(*facing);
   importedFrom_ = QFileInfo(path).absoluteFilePath();
   forceModified_ = true; // not saved anywhere yet
   if (previous)
@@ -187,8 +191,12 @@ bool DocumentActions::openDocument(const QString& path) {
     return false;
   }
   auto read = std::make_shared<core::Document>();
-  const QString error = runner_.run(tr("Opening %1…").arg(QFileInfo(path).fileName()),
-                                    [read, path] { *read = readModelFile(path); });
+  auto facing = std::make_shared<core::Vec3f>();
+  const QString error =
+      runner_.run(tr("Opening %1…").arg(QFileInfo(path).fileName()), [read, facing, path] {
+        *read = readModelFile(path);
+        *facing = core::guessFacing(read->positions);
+      });
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not open"), path, error) +
               tr("\nThe current model is unchanged."));
@@ -196,7 +204,8 @@ bool DocumentActions::openDocument(const QString& path) {
   }
   // A compressed model opens untitled, so Save asks for an .exr instead of overwriting it.
   const bool compressed = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0;
-  adoptDocument(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath());
+  if (adoptDocument(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath()))
+    parts_.viewport->frameFrom(*facing);
   addRecentFile(QFileInfo(path).absoluteFilePath());
   lastError_.clear();
   return true;

@@ -247,6 +247,14 @@ void ViewportWidget::resetCamera() {
   frameModel();
 }
 
+void ViewportWidget::frameFrom(core::Vec3f towardEye) {
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(towardEye.x, towardEye.y, towardEye.z);
+  camera->SetViewUp(0, 1, 0);
+  frameModel();
+}
+
 void ViewportWidget::frameModel() {
   updateBounds();
   renderer_->ResetCamera(prop_->bounds.data());

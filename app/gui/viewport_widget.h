@@ -141,6 +141,9 @@ public:
   float modelDiagonal() const { return session_.diagonal(); }
   /// Frames the model from the current direction (Home): its bounding sphere fills the view.
   void frameModel();
+  /// Frames the model seen from towardEye (horizontal, unit) with +y up: an imported or opened
+  /// model's first view, from the side core::guessFacing() takes for its front.
+  void frameFrom(core::Vec3f towardEye);
   /// Turns the camera to a standard view about the focal point, keeping the zoom.
   void setView(ViewDirection direction);
   void setOrthographic(bool orthographic);

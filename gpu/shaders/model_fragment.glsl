@@ -93,7 +93,22 @@ void main() {
   // A map normal far from a coarse level's triangle is detail unless it also turns from the eye.
   float agrees = max(smoothstep(-0.2, 0.25, dot(n, face)), smoothstep(-0.05, 0.1, dot(n, toEye)));
   float trust = smoothstep(0.35, 0.7, mapLength) * agrees * (1.0 - aliasing);
+  vec3 mapNormal = n;
   n = normalize(mix(face, n, trust));
+  // A visible surface faces the eye, so where one estimate turns from it though the other faces
+  // it (the map's normal of a fold a coarse triangle cuts across, a crumpled cell's triangle seen
+  // edge-on) the darker is wrong: it shaded as black speckles and stripes. The normal is tilted
+  // towards the eye, keeping its bearing, until it faces it half as much as the better estimate.
+  float best = max(dot(face, toEye), dot(mapNormal, toEye));
+  // Where both turn from the eye at one pixel (noise where a pixel spans many texels), the
+  // pixel's 2×2 quad, over which derivatives are taken, says how the surface around it faces.
+  vec2 side = 1.0 - 2.0 * mod(floor(gl_FragCoord.xy), 2.0); // +1 on the quad's first pixel
+  float quadBest = best + 0.5 * (side.x * dFdx(best) + side.y * dFdy(best));
+  float floorCosine = 0.5 * max(best, quadBest);
+  float facing = dot(n, toEye);
+  vec3 across = n - facing * toEye;
+  if (facing < floorCosine && dot(across, across) > 1e-12)
+    n = normalize(across) * sqrt(1.0 - floorCosine * floorCosine) + floorCosine * toEye;
 #if defined(DIFFUSE_TEXTURE)
   vec3 albedo = texture(u_diffuse, v_uv).rgb;
 #else

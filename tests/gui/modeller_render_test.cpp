@@ -426,6 +426,7 @@ void ModellerRenderTest::stretchPreviewIsColdOnASphereAndHotOnAPulledLimb() {
   const QString path = dir_.filePath("limb.exr");
   core::writeDocument(limb, path.toStdString());
   QVERIFY(window_->openDocument(path));
+  view->resetCamera(); // the limb from the side (opening shows it end-on, as the model's "front")
   QCOMPARE(window_->layersPanel()->preview(), app::LayersPanel::Preview::Stretch);
   hideBrushOutline(view);
   image = view->grabFramebuffer();

@@ -2,6 +2,7 @@
 // standard views read back in pixels on a sphere painted by axis, Home framing, the
 // orthographic toggle, turntable and trackball orbits, the wheel zooming about the cursor, Save
 // Image's PNG, Esc handing the keys back from a spin box, and the idle frame rate.
+#include "../core/shared_data.h"
 #include "brush_panel.h"
 #include "file_suggestion.h"
 #include "main_window.h"
@@ -14,6 +15,7 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QImage>
 #include <QLabel>
 #include <QRadioButton>
@@ -64,6 +66,53 @@ Vec3 viewUp(vtkCamera* c) {
 /// The screen's horizontal in the model.
 Vec3 screenRight(vtkCamera* c) {
   return normalized(cross(directionOfProjection(c), viewUp(c)));
+}
+
+// A closed lat-long sphere (y up) with a nose and two eyes on its +z side, as OBJ text.
+QByteArray headObj(int rings, int segments) {
+  QByteArray obj;
+  const auto radius = [](double x, double y, double z) {
+    const auto bump = [&](double cx, double cy, double width, double height) {
+      const double a =
+          std::acos(std::clamp(x * cx + y * cy + z * std::sqrt(1 - cx * cx - cy * cy), -1.0, 1.0)) /
+          width;
+      return height * std::exp(-a * a);
+    };
+    return 1 + bump(0, 0, 0.12, 0.25) + bump(-0.3, 0.3, 0.1, -0.08) + bump(0.3, 0.3, 0.1, -0.08);
+  };
+  obj += "v 0 1 0\n";
+  for (int r = 1; r < rings; ++r)
+    for (int k = 0; k < segments; ++k) {
+      const double theta = M_PI * r / rings, phi = 2 * M_PI * k / segments;
+      const double x = std::sin(theta) * std::sin(phi), y = std::cos(theta),
+                   z = std::sin(theta) * std::cos(phi), l = radius(x, y, z);
+      obj += QByteArray("v ") + QByteArray::number(x * l) + ' ' + QByteArray::number(y * l) + ' ' +
+             QByteArray::number(z * l) + '\n';
+    }
+  obj += "v 0 -1 0\n";
+  const auto at = [&](int r, int k) { return 2 + (r - 1) * segments + (k % segments); };
+  const int last = 2 + (rings - 1) * segments;
+  for (int k = 0; k < segments; ++k) {
+    obj += QStringLiteral("f 1 %1 %2\n").arg(at(1, k)).arg(at(1, k + 1)).toUtf8();
+    obj += QStringLiteral("f %1 %2 %3\n")
+               .arg(last)
+               .arg(at(rings - 1, k + 1))
+               .arg(at(rings - 1, k))
+               .toUtf8();
+    for (int r = 1; r + 1 < rings; ++r) {
+      obj += QStringLiteral("f %1 %2 %3\n")
+                 .arg(at(r, k))
+                 .arg(at(r + 1, k))
+                 .arg(at(r + 1, k + 1))
+                 .toUtf8();
+      obj += QStringLiteral("f %1 %2 %3\n")
+                 .arg(at(r, k))
+                 .arg(at(r + 1, k + 1))
+                 .arg(at(r, k + 1))
+                 .toUtf8();
+    }
+  }
+  return obj;
 }
 
 // A unit sphere painted by its caps: red where x is the largest coordinate and over 0.65, green
@@ -520,26 +569,43 @@ void ViewsRenderTest::idleStatusBarShowsNoZeroFrameRate() {
   QVERIFY2(frameLabels().isEmpty(), qPrintable(frameLabels().join(", ")));
 }
 
+// An imported model is first seen from the side it faces (core::guessFacing), framed, +y up,
+// whatever view came before (the back): spot and Max Planck face -z in their files; a head whose
+// face looks along +z stays on +z.
 void ViewsRenderTest::importedModelIsShownFromTheFront() {
+  const QString folder = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/";
+  const QString spot = folder + "spot.obj", planck = folder + "max_planck_decimated.obj";
+  if (!QFile::exists(spot)) OCTACLAY_MISSING_SHARED_DATA("spot.obj");
+  if (!QFile::exists(planck)) OCTACLAY_MISSING_SHARED_DATA("max_planck_decimated.obj");
+  const QString head = dir_.filePath("head.obj");
+  {
+    QFile file(head);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(headObj(48, 96));
+  }
   window_ = openSphere();
   QVERIFY(window_);
   vtkCamera* camera = cameraOf(*window_);
-  orbitDrag(window_->viewport(), kLoop);
-  QTest::keyClick(window_->viewport(), Qt::Key_1, Qt::KeypadModifier | Qt::ControlModifier);
-  QVERIFY(distance(directionOfProjection(camera), {0, 0, 1}) < 1e-6); // looking at the back
-  const QString mesh = QString(OCTACLAY_SHARED_DATA) + "/meshes/genus0/spot.obj";
-  if (!QFile::exists(mesh)) QSKIP("no shared meshes");
-  window_->setFileChooser([&](MainWindow::FileRequest r) {
-    return r == MainWindow::FileRequest::Import ? mesh : QString();
-  });
-  window_->action("actionImport")->trigger();
-  QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
-  // The new model is seen from the front (+z towards the viewer, +y up), framed.
-  QVERIFY(distance(directionOfProjection(camera), {0, 0, -1}) < 1e-6);
-  QVERIFY(distance(viewUp(camera), {0, 1, 0}) < 1e-6);
-  const QImage image = grab(*window_);
-  QVERIFY(colourClass(image.pixel(image.width() / 2, image.height() / 2), image.pixel(2, 2)) !=
-          '-');
+  for (const auto& [mesh, towardEye] :
+       {std::pair{spot, Vec3{0, 0, -1}}, {planck, Vec3{0, 0, -1}}, {head, Vec3{0, 0, 1}}}) {
+    window_->viewport()->setView(app::ViewDirection::Back);
+    QVERIFY(distance(directionOfProjection(camera), {0, 0, 1}) < 1e-6);
+    if (mesh == spot) { // through the menu, as a user imports
+      window_->setFileChooser([&](MainWindow::FileRequest r) {
+        return r == MainWindow::FileRequest::Import ? mesh : QString();
+      });
+      window_->action("actionImport")->trigger();
+    } else { // File ▸ Import would first ask to save the import before
+      QVERIFY(window_->importMesh(mesh, 128));
+    }
+    QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
+    const Vec3 looking{-towardEye[0], -towardEye[1], -towardEye[2]};
+    QVERIFY2(distance(directionOfProjection(camera), looking) < 1e-6, qPrintable(mesh));
+    QVERIFY(distance(viewUp(camera), {0, 1, 0}) < 1e-6);
+    const QImage image = grab(*window_);
+    QVERIFY(colourClass(image.pixel(image.width() / 2, image.height() / 2), image.pixel(2, 2)) !=
+            '-');
+  }
 }
 
 QTEST_MAIN(ViewsRenderTest)
