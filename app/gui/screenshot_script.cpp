@@ -3,11 +3,10 @@
 #include "brush_panel.h"
 #include "image_output.h"
 #include "main_window.h"
+#include "screenshot_support.h"
 #include "view_looks.h"
 #include "viewport_widget.h"
 
-#include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QImage>
 #include <QtMath>
 
@@ -15,13 +14,6 @@
 
 namespace octaclay::app {
 namespace {
-
-void settle(int ms) {
-  QElapsedTimer t;
-  t.start();
-  while (t.elapsed() < ms)
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-}
 
 // A stroke along a screen-space curve through the viewport centre.
 bool stroke(ViewportWidget& view, const QString& brush, float radius, float strength,
@@ -46,14 +38,7 @@ bool stroke(ViewportWidget& view, const QString& brush, float radius, float stre
 
 bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   ViewportWidget& view = *window.viewport();
-  QElapsedTimer wait;
-  wait.start();
-  while (!view.glReady() && wait.elapsed() < 10000)
-    settle(50);
-  if (!view.glReady()) {
-    std::fprintf(stderr, "octaclay: no OpenGL 4.3 context: %s\n", qPrintable(view.error()));
-    return false;
-  }
+  if (!waitForViewport(view)) return false;
   const QPointF c(view.width() / 2.0, view.height() / 2.0);
   const double r = std::min(view.width(), view.height()) * 0.28;
   bool ok = true;
@@ -84,7 +69,7 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   looks.material = QStringLiteral("clay");
   looks.gradient = true;
   view.setLooks(looks);
-  settle(600); // status bar and panels catch up
+  settleEvents(600); // status bar and panels catch up
   const QImage image = window.grab().toImage();
   return saveImagePng(image, imagePath);
 }

@@ -3,19 +3,15 @@
 #include "image_output.h"
 #include "layers_panel.h"
 #include "main_window.h"
+#include "screenshot_support.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/measure/stretch.h"
 
-#include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QFont>
 #include <QImage>
 #include <QPainter>
-#include <vtkCamera.h>
-#include <vtkRenderer.h>
 
-#include <cmath>
 #include <cstdio>
 
 namespace octaclay::app {
@@ -24,37 +20,11 @@ namespace {
 // Each half of the picture, in pixels: wide, as the limb lies across it.
 constexpr int kHalfWidth = 600, kHalfHeight = 400;
 
-void settle(int ms) {
-  QElapsedTimer t;
-  t.start();
-  while (t.elapsed() < ms)
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-}
-
-// Looks at the model from the side (from -y, a little above and in front), the +z limb pointing
-// right, at the distance resetCamera() fits the whole bounding box in.
-void frameFromTheSide(ViewportWidget& view) {
-  view.resetCamera();
-  vtkCamera* camera = view.renderer()->GetActiveCamera();
-  double focal[3];
-  camera->GetFocalPoint(focal);
-  const double distance = camera->GetDistance();
-  const double dir[3] = {0.25, -1.0, 0.3}; // from the focal point to the eye
-  const double len = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-  camera->SetPosition(focal[0] + distance * dir[0] / len, focal[1] + distance * dir[1] / len,
-                      focal[2] + distance * dir[2] / len);
-  camera->SetViewUp(-1, 0, 0); // screen right = view direction × up = +z
-  camera->OrthogonalizeViewUp();
-  // resetCamera() fits the bounding sphere in the height; the limb runs across the width.
-  camera->Zoom(1.45);
-  view.update();
-}
-
 // The viewport as drawn now, cropped to the half's aspect around its centre (if the layout did
 // not give it that size) and scaled to the half.
 QImage grabHalf(ViewportWidget& view) {
   view.update();
-  settle(400);
+  settleEvents(400);
   const QImage frame = view.grabFramebuffer();
   const double aspect = double(kHalfWidth) / kHalfHeight;
   int w = frame.width(), h = frame.height();
@@ -85,21 +55,16 @@ double longestOverMedian(const ViewportWidget& view) {
 
 bool makeStretchScreenshot(MainWindow& window, const QString& imagePath) {
   ViewportWidget& view = *window.viewport();
-  QElapsedTimer wait;
-  wait.start();
-  while (!view.glReady() && wait.elapsed() < 10000)
-    settle(50);
-  if (!view.glReady() || !view.hasDocument()) {
-    std::fprintf(stderr, "octaclay: no OpenGL 4.3 context or no document: %s\n",
-                 qPrintable(view.error()));
-    return false;
-  }
+  if (!waitForViewport(view)) return false;
   // Drawn at the half's size, so the camera frames what the picture shows.
   view.setFixedSize(kHalfWidth, kHalfHeight);
-  settle(300);
+  settleEvents(300);
   view.setLevelDivisor(1); // every sample: the few the limb has are what the picture is about
   window.layersPanel()->setPreview(LayersPanel::Preview::Stretch);
-  frameFromTheSide(view);
+  // From the side (-y, a little above and in front), the +z limb pointing right (screen right =
+  // view direction x up); zoomed as resetCamera() fits the bounding sphere in the height and the
+  // limb runs across the width.
+  frameAlong(view, {0.25f, -1.0f, 0.3f}, {-1, 0, 0}, 1.45);
   const double before = longestOverMedian(view);
   const QImage beforeImage = grabHalf(view);
 
