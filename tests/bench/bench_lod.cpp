@@ -324,11 +324,11 @@ int run(const Options& options) {
       computeSaliency(image); // the GPU pass's job in the modeller: timed here for the record only
     const double saliencyMs = millisecondsSince(saliencyStart);
     const StretchSummary stretch = coarseStretch(image);
-    std::printf("| %s | %d | stretch | coarse longest/median %.2f, p99/median %.2f, over 4x %.4f: "
-                "auto picks %s | CPU saliency %.0f ms |\n",
+    std::printf("| %s | %d | stretch | coarse longest/median %.2f, p99/median %.2f, over 4x %.4f, "
+                "roughness %.2f: auto picks %s | CPU saliency %.0f ms |\n",
                 input.name.c_str(), input.n, stretch.longestOverMedian, stretch.p99OverMedian,
-                stretch.shareOver4x, std::string(methodName(chooseLodMethod(image, {}))).c_str(),
-                saliencyMs);
+                stretch.shareOver4x, imageRoughness(image),
+                std::string(methodName(chooseLodMethod(image, {}))).c_str(), saliencyMs);
     std::fflush(stdout);
     const TriangleMesh full = extractMesh(image);
     const std::size_t fullTriangles = full.triangles.size();
