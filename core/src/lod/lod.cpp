@@ -165,7 +165,7 @@ std::array<Vec2f, 3> cornerCoordinates(const std::array<std::uint32_t, 3>& tri,
 // keeps corners on one side. Cones stay. Interior vertices move freely.
 void collapseLod(LodMesh& lod, int m, const std::vector<Sample>& sampleOf,
                  const std::vector<VertexCopies>& copies, const LodOptions& options,
-                 bool normalTurnPerCollapse = false) {
+                 bool normalTurnPerCollapse = false, std::vector<float> vertexWeights = {}) {
   std::vector<SeamClass> classes(sampleOf.size());
   std::uint32_t corner = 0;
   std::array<std::uint32_t, 6> midpoint{};
@@ -183,6 +183,7 @@ void collapseLod(LodMesh& lod, int m, const std::vector<Sample>& sampleOf,
   collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
   collapseOptions.maxAspectRatio = options.maxAspectRatio;
   collapseOptions.normalTurnPerCollapse = normalTurnPerCollapse;
+  collapseOptions.vertexWeights = std::move(vertexWeights);
   collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
     const SeamClass c = classes[from];
     if (c == SeamClass::Interior) return true;
@@ -246,6 +247,19 @@ LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
   return lod;
 }
 
+// Per vertex (at sample sampleOf[v]), 1 + weight × its saliency; none when weight is 0 or the
+// image carries no saliency.
+std::vector<float> saliencyWeights(const GeometryImage& image, const std::vector<Sample>& sampleOf,
+                                   float weight) {
+  if (weight == 0 || std::all_of(image.texels().begin(), image.texels().end(),
+                                 [](const Vec4f& t) { return t.w == 0; }))
+    return {};
+  std::vector<float> weights(sampleOf.size());
+  for (std::size_t v = 0; v < sampleOf.size(); ++v)
+    weights[v] = 1 + weight * image.at(sampleOf[v].i, sampleOf[v].j).w;
+  return weights;
+}
+
 // The collapse method: the welded full-resolution mesh collapsed with the grid's seam rules,
 // then refit away from creases.
 LodMesh fullResolutionCollapse(const GeometryImage& image, const LodOptions& options) {
@@ -278,7 +292,8 @@ LodMesh fullResolutionCollapse(const GeometryImage& image, const LodOptions& opt
     unbounded.maxAspectRatio = 0;
     unbounded.maxNormalTurnDegrees = kCollapseNormalTurnDegrees;
     unbounded.targetTriangles = target;
-    collapseLod(lod, n, sampleOf, copies, unbounded, true);
+    collapseLod(lod, n, sampleOf, copies, unbounded, true,
+                saliencyWeights(image, sampleOf, options.collapseSaliencyWeight));
   } else {
     lod.cornerUv.resize(lod.mesh.triangles.size());
     for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)

@@ -80,8 +80,13 @@ public:
         inputAspect_[k] = aspectRatio(positions_[tri[0]], positions_[tri[1]], positions_[tri[2]]);
       if (twiceArea <= 0) continue;
       const double d = -double(dot(u, p0));
+      const double weight = options.vertexWeights.empty()
+                                ? 1.0
+                                : (double(options.vertexWeights[tri[0]]) +
+                                   options.vertexWeights[tri[1]] + options.vertexWeights[tri[2]]) /
+                                      3;
       Quadric q;
-      q.addPlane(u.x, u.y, u.z, d, 0.5 * twiceArea * areaScale);
+      q.addPlane(u.x, u.y, u.z, d, 0.5 * twiceArea * areaScale * weight);
       for (const std::uint32_t c : tri)
         quadrics_[c] += q;
     }

@@ -68,6 +68,7 @@ private slots:
   void roughnessTellsNoiseFromSmoothBends();
   void collapseKeepsUpWithMeshoptOnAStretchedNoisyImage_data();
   void collapseKeepsUpWithMeshoptOnAStretchedNoisyImage();
+  void saliencyWeightKeepsDetailWhereSalient();
 };
 
 void LodAutoTest::roughnessTellsNoiseFromSmoothBends() {
@@ -110,6 +111,38 @@ void LodAutoTest::collapseKeepsUpWithMeshoptOnAStretchedNoisyImage() {
   qInfo("%zu triangles: %.2f dB, meshopt_simplify %.2f dB", count, ours, meshopt);
   QVERIFY2(ours >= meshopt - 0.3,
            qPrintable(QString("%1 dB, meshopt_simplify %2 dB").arg(ours).arg(meshopt)));
+}
+
+// Saliency 1 on the half x > 0 of a bumpy sphere, 0 elsewhere: the default weight puts more
+// of the collapse's vertices there than no weight does, and none without saliency in alpha.
+void LodAutoTest::saliencyWeightKeepsDetailWhereSalient() {
+  GeometryImage image = testing::bumpySphere(128);
+  LodOptions options;
+  options.method = ResampleMethod::Collapse;
+  options.targetTriangles = 1000;
+  const auto salientShare = [&](const LodMesh& lod) {
+    int salient = 0;
+    for (const auto& corners : lod.cornerUv)
+      for (const Vec2f uv : corners)
+        salient +=
+            octahedralDirection(128, int(std::lround(uv.x * 128)), int(std::lround(uv.y * 128))).x >
+            0;
+    return double(salient) / (3.0 * double(lod.cornerUv.size()));
+  };
+  const double withoutSaliency = salientShare(generateLod(image, options));
+  for (int j = 0; j <= 128; ++j)
+    for (int i = 0; i <= 128; ++i)
+      image.at(i, j).w = octahedralDirection(128, i, j).x > 0 ? 1.0f : 0.0f;
+  const LodMesh weighted = generateLod(image, options);
+  options.collapseSaliencyWeight = 0;
+  const double unweighted = salientShare(generateLod(image, options));
+  const double share = salientShare(weighted);
+  qInfo("corners on the salient half: %.3f weighted, %.3f unweighted, %.3f without saliency", share,
+        unweighted, withoutSaliency);
+  QCOMPARE(unweighted, withoutSaliency);
+  QVERIFY(share > unweighted + 0.05);
+  testing::checkClosedGenus0(weighted.mesh);
+  testing::checkCornerUv(weighted);
 }
 
 QTEST_APPLESS_MAIN(LodAutoTest)

@@ -89,6 +89,11 @@ struct LodOptions {
   /// regeneration fits a frame (bench_lod's live line); a collapse of all 2N² triangles does
   /// not.
   bool autoMayCollapse = true;
+  /// The collapse method (and auto when it collapses) weighs each full-resolution triangle's
+  /// quadric by 1 + this × the mean saliency of its corners where the image carries saliency in
+  /// alpha (the modeller's GPU pass keeps it; nothing computes it for this): collapses cost
+  /// more where the surface is salient, so detail stays there. 0 = unweighted.
+  float collapseSaliencyWeight = 1;
 };
 
 struct LodMesh {
