@@ -84,6 +84,10 @@ void checkOptions(const GeometryImage& image, const LodOptions& options) {
                 "maximum aspect ratio " + std::to_string(options.maxAspectRatio) +
                     " is below 2 (an equilateral triangle's is 1.15, a half square's 2); use 0 "
                     "(no bound) or 2 or more");
+  if (!(options.collapseSaliencyWeight >= 0))
+    throw Error(ErrorKind::InvalidArgument, "saliency weight " +
+                                                std::to_string(options.collapseSaliencyWeight) +
+                                                " is negative; use 0 (unweighted) or more");
   if (!(options.maxNormalTurnDegrees > 0 && options.maxNormalTurnDegrees <= 180))
     throw Error(ErrorKind::InvalidArgument, "maximum normal turn " +
                                                 std::to_string(options.maxNormalTurnDegrees) +

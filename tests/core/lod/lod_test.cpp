@@ -242,6 +242,10 @@ void LodTest::badArgumentsNameTheirValue() {
   options.maxError = 0;
   options.oversample = 3;
   expectError(options, "3");
+  options.oversample = 1;
+  options.collapseSaliencyWeight = -2;
+  expectError(options, "-2");
+  options.collapseSaliencyWeight = 1;
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 48, ResampleMethod::Point));
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 64, ResampleMethod::Point));
 }

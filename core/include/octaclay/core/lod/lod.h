@@ -120,8 +120,9 @@ struct LodMesh {
 /// images; uses two threads for the large loops.
 /// Throws Error(InvalidArgument) with a message naming the bad value when M ≥ N, M is not a
 /// power of two or M < 2, when targetTriangles is 1 … 4, maxError < 0, oversample is not a
-/// power of two or maxNormalTurnDegrees is outside (0, 180]. Needs the image's saliency in
-/// alpha for the salient methods (computeSaliency in saliency.h, or the GPU pass).
+/// power of two, maxNormalTurnDegrees is outside (0, 180] or collapseSaliencyWeight < 0. Needs the
+/// image's saliency in alpha for the salient methods (computeSaliency in saliency.h, or the GPU
+/// pass).
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
 
 /// Auto's choice for this image and these options (cheap: a stretch summary over a coarse
