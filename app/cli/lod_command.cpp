@@ -69,9 +69,10 @@ Command addLodCommand(CLI::App& app) {
                   "How each LOD sample is chosen: salient-point (the thesis's best), "
                   "salient-average, point or average; adaptive: full-resolution samples "
                   "where the surface bends, no grid (--size then only sets 2M^2 triangles); "
-                  "collapse: the whole full-resolution mesh collapsed down to T; auto: "
-                  "adaptive where the image samples the surface evenly, collapse where it "
-                  "stretches (reported as method_used)")
+                  "collapse: the whole full-resolution mesh collapsed down to T (weighted by "
+                  "the document's saliency when it has one); auto: adaptive where the image "
+                  "samples a smooth surface evenly, collapse where it stretches or the surface "
+                  "is rough (reported as method_used)")
       ->capture_default_str();
   sub->add_option("--triangles", opt->triangles,
                   "Collapse vertices down to T triangles (more than 4)");
@@ -179,8 +180,9 @@ Command addLodCommand(CLI::App& app) {
             options.maxError = opt->maxError;
             options.oversample = static_cast<int>(opt->oversample);
             options.maxAspectRatio = static_cast<float>(opt->maxAspect);
-            // auto's choice is made here (a stretch summary of a 64 grid: well under a
-            // millisecond) so that only a salient choice pays for the saliency.
+            // auto's choice is made here (a stretch summary of a 64 grid and a roughness of
+            // a sparse one: about a millisecond) so that only a salient choice pays for the
+            // saliency.
             const auto chooseStart = std::chrono::steady_clock::now();
             options.method = *method == core::ResampleMethod::Auto
                                  ? core::chooseLodMethod(full, options)

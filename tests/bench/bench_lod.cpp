@@ -258,6 +258,34 @@ Timed ours(const GeometryImage& image, const LodOptions& options, int runs) {
   return {std::move(best.result), best.ms, best.cpuMs};
 }
 
+// Mean saliency at the corners of a LOD (each corner's image sample).
+double meanCornerSaliency(const GeometryImage& image, const LodMesh& lod) {
+  const int n = image.size();
+  double sum = 0;
+  for (const auto& corners : lod.cornerUv)
+    for (const Vec2f uv : corners)
+      sum += image.at(int(std::lround(uv.x * float(n))), int(std::lround(uv.y * float(n)))).w;
+  return lod.cornerUv.empty() ? 0 : sum / (3.0 * double(lod.cornerUv.size()));
+}
+
+// The collapse's saliency weighting (LodOptions::collapseSaliencyWeight) against none: where
+// the vertices go (mean saliency at the corners) and what it costs in PSNR.
+template <class Input>
+void saliencyWeightLine(const GeometryImage& image, const TriangleMesh& full, LodOptions options,
+                        double fraction, const Input& input,
+                        const SurfaceDistanceOptions& distance) {
+  options.method = ResampleMethod::Collapse;
+  const LodMesh weighted = generateLod(image, options);
+  options.collapseSaliencyWeight = 0;
+  const LodMesh plain = generateLod(image, options);
+  std::printf("| %s | %d | %g %% | collapse saliency weight | mean saliency at the corners %.3f "
+              "(unweighted %.3f), PSNR %.2f dB (unweighted %.2f dB) |\n",
+              input.name.c_str(), input.n, 100 * fraction, meanCornerSaliency(image, weighted),
+              meanCornerSaliency(image, plain), compareSurfaces(full, weighted.mesh, distance).psnr,
+              compareSurfaces(full, plain.mesh, distance).psnr);
+  std::fflush(stdout);
+}
+
 struct Verdict {
   std::string mesh, variant;
   double fraction = 0, decibels = 0, speedup = 0, cpuSpeedup = 0;
@@ -324,11 +352,11 @@ int run(const Options& options) {
       computeSaliency(image); // the GPU pass's job in the modeller: timed here for the record only
     const double saliencyMs = millisecondsSince(saliencyStart);
     const StretchSummary stretch = coarseStretch(image);
-    std::printf("| %s | %d | stretch | coarse longest/median %.2f, p99/median %.2f, over 4x %.4f: "
-                "auto picks %s | CPU saliency %.0f ms |\n",
+    std::printf("| %s | %d | stretch | coarse longest/median %.2f, p99/median %.2f, over 4x %.4f, "
+                "roughness %.2f: auto picks %s | CPU saliency %.0f ms |\n",
                 input.name.c_str(), input.n, stretch.longestOverMedian, stretch.p99OverMedian,
-                stretch.shareOver4x, std::string(methodName(chooseLodMethod(image, {}))).c_str(),
-                saliencyMs);
+                stretch.shareOver4x, imageRoughness(image),
+                std::string(methodName(chooseLodMethod(image, {}))).c_str(), saliencyMs);
     std::fflush(stdout);
     const TriangleMesh full = extractMesh(image);
     const std::size_t fullTriangles = full.triangles.size();
@@ -408,6 +436,8 @@ int run(const Options& options) {
         row("salient-point, Decimater engine", d, compareSurfaces(full, d.mesh, distance));
       }
       row("meshopt_simplify", opt, optDistance);
+      if (autoChoice == ResampleMethod::Collapse && !options.noSaliency)
+        saliencyWeightLine(image, full, lodOptions, fraction, input, distance);
       if (options.openmesh && !options.autoOnly) {
         const Timed om = openmeshDecimater(full, triangles);
         row("OpenMesh Decimater", om, compareSurfaces(full, om.mesh, distance));

@@ -60,7 +60,8 @@ private:
 // Binary module guarding each collapse v0 → v1, one pass over v0's surviving triangles:
 //  - normals: a triangle whose normal would turn more than maxNormalTurnDegrees away from its
 //    input triangle's normal (or whose area would vanish) is refused; measured against the input
-//    rather than the previous step, so turns cannot add up over many collapses;
+//    rather than the previous step, so turns cannot add up over many collapses (with
+//    normalTurnPerCollapse: against the triangle before this collapse);
 //  - shape: a triangle whose aspect ratio (longest edge / its height) would exceed
 //    maxAspectRatio, or maxAspectGrowth × its input triangle's, is refused unless it was
 //    already that thin;
@@ -104,7 +105,13 @@ public:
       const OpenMesh::Vec3d cross = (p[1] - p[0]) % (p[2] - p[0]);
       const double twiceArea = cross.norm();
       if (!(twiceArea > 0)) return Base::ILLEGAL_COLLAPSE;
-      if ((cross | inputNormals_[f.idx()]) < minCos_ * twiceArea) return Base::ILLEGAL_COLLAPSE;
+      OpenMesh::Vec3d reference = inputNormals_[f.idx()];
+      if (options_->normalTurnPerCollapse) {
+        std::array<OpenMesh::Vec3d, 3> q = p;
+        q[moved] = ci.p0;
+        reference = ((q[1] - q[0]) % (q[2] - q[0])).normalize_cond();
+      }
+      if ((cross | reference) < minCos_ * twiceArea) return Base::ILLEGAL_COLLAPSE;
       if (maxAspect > 0) {
         const double longest =
             std::max({(p[1] - p[0]).sqrnorm(), (p[2] - p[1]).sqrnorm(), (p[0] - p[2]).sqrnorm()});

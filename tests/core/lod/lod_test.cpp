@@ -3,6 +3,7 @@
 // a one-sample ridge that point sampling loses; the adaptive method meets its target and beats
 // the grid where the surface has flat faces and sharp edges; bad arguments name their value.
 
+#include "lod_checks.h"
 #include "lod_test_support.h"
 #include "shared_data.h"
 
@@ -22,6 +23,8 @@
 #include <string>
 
 using namespace octaclay::core;
+using testing::checkClosedGenus0;
+using testing::checkCornerUv;
 
 Q_DECLARE_METATYPE(octaclay::core::ResampleMethod)
 
@@ -29,35 +32,6 @@ namespace {
 
 constexpr std::array kMethods = {ResampleMethod::Point, ResampleMethod::Average,
                                  ResampleMethod::SalientAverage, ResampleMethod::SalientPoint};
-
-void checkClosedGenus0(const TriangleMesh& mesh) {
-  const MeshTopology t = analyzeTopology(mesh);
-  QVERIFY(t.closed());
-  QVERIFY(t.manifold());
-  QCOMPARE(t.euler, 2LL);
-  QCOMPARE(t.unusedVertices, std::size_t(0));
-  QVERIFY(signedVolume(mesh) > 0);
-}
-
-// No triangle spans a seam in the image: every triangle's corner coordinates are
-// counter-clockwise in the image (as the mesh is outward) and lie in [0, 1]², and together they
-// cover the image square once (total area 1). A triangle spanning a seam would be inverted or
-// cover the square a second time.
-void checkCornerUv(const LodMesh& lod) {
-  QCOMPARE(lod.cornerUv.size(), lod.mesh.triangles.size());
-  double total = 0;
-  int inverted = 0;
-  for (const auto& c : lod.cornerUv) {
-    for (int k = 0; k < 3; ++k)
-      QVERIFY(c[k].x >= 0 && c[k].x <= 1 && c[k].y >= 0 && c[k].y <= 1);
-    const double area = 0.5 * ((double(c[1].x) - c[0].x) * (double(c[2].y) - c[0].y) -
-                               (double(c[2].x) - c[0].x) * (double(c[1].y) - c[0].y));
-    total += area;
-    inverted += area < -1e-9;
-  }
-  QVERIFY2(inverted == 0, qPrintable(QString("%1 inverted corner triangles").arg(inverted)));
-  QVERIFY2(std::abs(total - 1) < 1e-4, qPrintable(QString("corner area %1").arg(total)));
-}
 
 GeometryImage importShared(const char* file, int n) {
   const std::string path = std::string(OCTACLAY_SHARED_DATA) + "/meshes/genus0/" + file;
@@ -268,6 +242,10 @@ void LodTest::badArgumentsNameTheirValue() {
   options.maxError = 0;
   options.oversample = 3;
   expectError(options, "3");
+  options.oversample = 1;
+  options.collapseSaliencyWeight = -2;
+  expectError(options, "-2");
+  options.collapseSaliencyWeight = 1;
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 48, ResampleMethod::Point));
   QVERIFY_THROWS_EXCEPTION(Error, resampleImage(image, 64, ResampleMethod::Point));
 }

@@ -89,6 +89,11 @@ struct LodOptions {
   /// regeneration fits a frame (bench_lod's live line); a collapse of all 2N² triangles does
   /// not.
   bool autoMayCollapse = true;
+  /// The collapse method (and auto when it collapses) weighs each full-resolution triangle's
+  /// quadric by 1 + this × the mean saliency of its corners where the image carries saliency in
+  /// alpha (the modeller's GPU pass keeps it; nothing computes it for this): collapses cost
+  /// more where the surface is salient, so detail stays there. 0 = unweighted.
+  float collapseSaliencyWeight = 1;
 };
 
 struct LodMesh {
@@ -115,14 +120,16 @@ struct LodMesh {
 /// images; uses two threads for the large loops.
 /// Throws Error(InvalidArgument) with a message naming the bad value when M ≥ N, M is not a
 /// power of two or M < 2, when targetTriangles is 1 … 4, maxError < 0, oversample is not a
-/// power of two or maxNormalTurnDegrees is outside (0, 180]. Needs the image's saliency in
-/// alpha for the salient methods (computeSaliency in saliency.h, or the GPU pass).
+/// power of two, maxNormalTurnDegrees is outside (0, 180] or collapseSaliencyWeight < 0. Needs the
+/// image's saliency in alpha for the salient methods (computeSaliency in saliency.h, or the GPU
+/// pass).
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
 
 /// Auto's choice for this image and these options (cheap: a stretch summary over a coarse
-/// sub-grid of the image, O(N²/256) past N = 128): the image-based adaptive method where the
-/// image samples the surface evenly (imageStretches false), the full-resolution collapse where
-/// it stretches (docs/lod.md gives the benchmark behind the thresholds). With
+/// sub-grid of the image and a roughness over a sparse one, O(N²/256) past N = 128): the
+/// image-based adaptive method where the image samples a smooth surface evenly
+/// (imageStretches false, imageRoughness at most kSmoothRoughness), the full-resolution
+/// collapse elsewhere (docs/lod.md gives the benchmark behind the thresholds). With
 /// options.autoMayCollapse false (the live LOD): salient-point, whatever the image.
 ResampleMethod chooseLodMethod(const GeometryImage& image, const LodOptions& options);
 /// The stretch summary chooseLodMethod judges by: summarizeStretch of the image point-sampled
@@ -131,9 +138,19 @@ StretchSummary coarseStretch(const GeometryImage& image);
 /// Auto's threshold: the image samples the surface evenly when its coarse p99 edge is at most
 /// this many medians and its longest at most that many (sculpted N = 1024 sphere: 1.55 and
 /// 2.02; max_planck_decimated: 1.60 and 1.83, 3-4 dB better collapsed). igea (1.46 and 1.64)
-/// still gets adaptive and loses 2 dB at 1-5 %: stretch alone does not tell it (docs/lod.md).
+/// passes it but is a scan, rough sample to sample: kSmoothRoughness tells it.
 inline constexpr double kEvenP99OverMedian = 1.58, kEvenLongestOverMedian = 2.15;
 bool imageStretches(const StretchSummary& summary);
+/// How much rougher the surface is sample to sample than at 8 samples' spacing: the median
+/// bend (|a + c − 2b| / |c − a| over three samples in a row) at spacing 1, times 8, over the
+/// median at spacing 8, on a sparse set of image positions (about 128² at most). About 1 on a
+/// smooth surface (the bend grows with the spacing), up to 8 where noise or fine detail
+/// dominates (a scan).
+double imageRoughness(const GeometryImage& image);
+/// Auto's roughness threshold: the sculpted N = 1024 sphere has 0.99 (adaptive: 2.8-4 dB above
+/// meshopt_simplify at 1-25 % for a 20th of its time), igea 1.86 (adaptive 1.9 dB below it at
+/// 1 %, the collapse 1.6 dB above; bench_lod).
+inline constexpr double kSmoothRoughness = 1.4;
 
 /// The resampled, seamed (M+1)² image alone (step 1 of generateLod).
 GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method);
