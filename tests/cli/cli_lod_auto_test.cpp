@@ -4,6 +4,7 @@
 // full-resolution mesh and triangle count; either way a closed mesh of Euler characteristic 2,
 // and --json says which method was used.
 
+#include "../meshopt_reference.h"
 #include "cli_support.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -12,7 +13,6 @@
 
 #include <QFile>
 #include <QTemporaryDir>
-#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <array>
@@ -60,28 +60,7 @@ double meshoptPsnr(const QString& document, std::size_t triangles, std::size_t s
   using namespace octaclay::core;
   const TriangleMesh full =
       extractMesh(readDocument(document.toStdString(), {.layers = false}).positions);
-  std::vector<unsigned> indices;
-  for (const auto& t : full.triangles)
-    indices.insert(indices.end(), t.begin(), t.end());
-  std::vector<unsigned> out(indices.size());
-  out.resize(meshopt_simplify(out.data(), indices.data(), indices.size(), &full.positions[0].x,
-                              full.positions.size(), sizeof(Vec3f), 3 * triangles, 1.0f, 0,
-                              nullptr));
-  // The triangles over the vertices they use (the distance samples vertices too).
-  std::vector<std::uint32_t> remap(full.positions.size(), UINT32_MAX);
-  TriangleMesh compact;
-  for (std::size_t k = 0; k + 2 < out.size(); k += 3) {
-    std::array<std::uint32_t, 3> t{};
-    for (int c = 0; c < 3; ++c) {
-      std::uint32_t& r = remap[out[k + c]];
-      if (r == UINT32_MAX) {
-        r = static_cast<std::uint32_t>(compact.positions.size());
-        compact.positions.push_back(full.positions[out[k + c]]);
-      }
-      t[c] = r;
-    }
-    compact.triangles.push_back(t);
-  }
+  const TriangleMesh compact = octaclay::testing::meshoptSimplified(full, triangles);
   return compareSurfaces(full, compact, {.samplesPerSurface = samples}).psnr;
 }
 

@@ -6,6 +6,7 @@
 // collapse stopped at 430 triangles for 328 here, as it stopped at 7044 for 5242 on the scorpion,
 // 18.9 dB below meshopt_simplify.
 
+#include "../../meshopt_reference.h"
 #include "lod_checks.h"
 #include "lod_test_support.h"
 
@@ -15,7 +16,6 @@
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <QtTest>
-#include <meshoptimizer.h>
 
 #include <cmath>
 #include <cstdint>
@@ -46,17 +46,9 @@ GeometryImage noisyEllipsoid(int n, float stretch, float noise) {
 }
 
 double meshoptPsnr(const TriangleMesh& full, std::size_t triangles) {
-  std::vector<unsigned> indices;
-  for (const auto& t : full.triangles)
-    indices.insert(indices.end(), t.begin(), t.end());
-  std::vector<unsigned> out(indices.size());
-  out.resize(meshopt_simplify(out.data(), indices.data(), indices.size(), &full.positions[0].x,
-                              full.positions.size(), sizeof(Vec3f), 3 * triangles, 1.0f, 0,
-                              nullptr));
-  TriangleMesh simplified{full.positions, {}};
-  for (std::size_t k = 0; k + 2 < out.size(); k += 3)
-    simplified.triangles.push_back({out[k], out[k + 1], out[k + 2]});
-  return compareSurfaces(full, simplified, {.samplesPerSurface = 20000}).psnr;
+  return compareSurfaces(full, octaclay::testing::meshoptSimplified(full, triangles),
+                         {.samplesPerSurface = 20000})
+      .psnr;
 }
 
 } // namespace
