@@ -18,8 +18,6 @@
 namespace octaclay::core {
 namespace {
 
-// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB (bench_lod).
-constexpr int kRefitIterations = 2;
 // The collapse method's refit leaves crease vertices (a triangle turned over 45° from their
 // normal) alone: on the fandisk at 1 % of 2N², 71 dB with them moved, 84 dB with them kept;
 // the armadillo keeps most of its refit gain (60.7 dB unrefit, 62.6 dB; bench_lod).
@@ -28,6 +26,13 @@ constexpr float kCollapseRefitCreaseDegrees = 45;
 // (no fold) rather than 60° against the input triangle: the scorpion at 1 % of 2N² stopped at
 // 7044 triangles, 18.9 dB below meshopt_simplify, and reaches 5242, 0.2 dB above it (bench_lod).
 constexpr float kCollapseNormalTurnDegrees = 90;
+
+// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB. Where a triangle
+// covers under 4 samples (over 25 % of 2N²) the second adds under 0.05 dB for a quarter of the
+// LOD's time (the sculpted sphere at 25 %; bench_lod).
+int refitIterations(int n, std::size_t triangles) {
+  return 2.0 * double(n) * n < 4.0 * double(triangles) ? 1 : 2;
+}
 
 // The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
 // mean over each triangle, a few samples estimate it well).
@@ -247,7 +252,7 @@ LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
   }
   if (options.refitToSurface)
     detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           kRefitIterations);
+                           refitIterations(n, lod.mesh.triangles.size()));
   return lod;
 }
 
@@ -305,7 +310,8 @@ LodMesh fullResolutionCollapse(const GeometryImage& image, const LodOptions& opt
   }
   if (options.refitToSurface)
     detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           kRefitIterations, kCollapseRefitCreaseDegrees);
+                           refitIterations(n, lod.mesh.triangles.size()),
+                           kCollapseRefitCreaseDegrees);
   return lod;
 }
 
@@ -390,7 +396,7 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
   }
   if (options.refitToSurface)
     detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           kRefitIterations);
+                           refitIterations(n, lod.mesh.triangles.size()));
   return lod;
 }
 
