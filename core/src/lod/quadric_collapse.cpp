@@ -91,6 +91,7 @@ public:
         quadrics_[c] += q;
     }
     minCos_ = std::cos(double(options.maxNormalTurnDegrees) * M_PI / 180.0);
+    if (std::abs(minCos_) < 1e-12) minCos_ = 0; // 90°: cos gives 6e-17, the turn test's sign
     vertexCount_ = 0;
     std::vector<std::uint8_t> used(v, 0);
     for (const auto& tri : triangles_)
@@ -290,18 +291,32 @@ private:
         p[k] = tri[k] == from ? p1 : positions_[tri[k]];
       }
       const Vec3f n = cross(p[1] - p[0], p[2] - p[0]);
-      const double twiceArea = length(n);
-      Vec3f reference = normals_[t];
+      const double twiceAreaSquared = double(dot(n, n));
+      if (!(twiceAreaSquared > 0)) {
+        ok = false;
+        return;
+      }
+      // The turn's cosine against minCos_, without square roots where minCos_ is 0 (the
+      // collapse method's 90°): this test runs for every triangle around every candidate.
+      bool turnsTooFar = false;
       if (options_.normalTurnPerCollapse) {
         std::array<Vec3f, 3> q = p;
         q[m] = positions_[from];
-        reference = normalize(cross(q[1] - q[0], q[2] - q[0]));
+        const Vec3f before = cross(q[1] - q[0], q[2] - q[0]);
+        const double cosineTimesAreas = double(dot(n, before));
+        turnsTooFar = minCos_ == 0
+                          ? cosineTimesAreas < 0
+                          : cosineTimesAreas <
+                                minCos_ * std::sqrt(twiceAreaSquared * double(dot(before, before)));
+      } else {
+        turnsTooFar = double(dot(n, normals_[t])) < minCos_ * std::sqrt(twiceAreaSquared);
       }
-      if (!(twiceArea > 0) || double(dot(n, reference)) < minCos_ * twiceArea) {
+      if (turnsTooFar) {
         ok = false;
         return;
       }
       if (maxAspect > 0) {
+        const double twiceArea = std::sqrt(twiceAreaSquared);
         const auto longest = [](const std::array<Vec3f, 3>& q) {
           return std::max({dot(q[1] - q[0], q[1] - q[0]), dot(q[2] - q[1], q[2] - q[1]),
                            dot(q[0] - q[2], q[0] - q[2])});
