@@ -1,5 +1,6 @@
 #include "octaclay/core/lod/facing.h"
 
+#include "octaclay/core/lod/lod.h"
 #include "octaclay/core/lod/saliency.h"
 
 #include <algorithm>
@@ -12,22 +13,12 @@ namespace {
 constexpr int kGuessSize = 128;
 constexpr double kMinPull = 0.08; // of the horizontal spread
 
-// Every step-th sample: the image's level of N / step, itself a geometry image.
-GeometryImage subsampled(const GeometryImage& image) {
-  const int step = std::max(1, image.size() / kGuessSize);
-  GeometryImage out(image.size() / step);
-  for (int j = 0; j < out.side(); ++j)
-    for (int i = 0; i < out.side(); ++i) {
-      const Vec4f p = image.at(i * step, j * step);
-      out.at(i, j) = {p.x, p.y, p.z, 0};
-    }
-  return out;
-}
-
 } // namespace
 
 Vec3f guessFacing(const GeometryImage& image) {
-  GeometryImage level = subsampled(image);
+  // The image's level of kGuessSize (every step-th sample), as the point LOD takes it.
+  GeometryImage level =
+      image.size() > kGuessSize ? resampleImage(image, kGuessSize, ResampleMethod::Point) : image;
   computeSaliency(level);
   const int n = level.size();
   // Area-weighted and saliency-weighted sums of x and z (each vertex once, but for the seams'
