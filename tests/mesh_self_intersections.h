@@ -112,4 +112,12 @@ inline std::vector<bool> changedVertices(const core::TriangleMesh& before,
   return changed;
 }
 
+// Crossings of the surface after an edit where it changed, both images extracted whole.
+inline int selfIntersectionsAfter(const core::GeometryImage& before,
+                                  const core::GeometryImage& after) {
+  const core::TriangleMesh a = core::extractMesh(before);
+  const core::TriangleMesh b = core::extractMesh(after);
+  return selfIntersections(b, changedVertices(a, b));
+}
+
 } // namespace octaclay::testing
