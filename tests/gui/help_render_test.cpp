@@ -65,7 +65,6 @@ private slots:
 private:
   std::unique_ptr<MainWindow> makeWindow();
   /// A push stroke across the middle of the viewport, as the mouse makes it.
-  void stroke(MainWindow& w, int dy);
   /// Shows w active, so its shortcuts receive key events.
   static bool activate(MainWindow& w);
 
@@ -98,18 +97,6 @@ std::unique_ptr<MainWindow> HelpRenderTest::makeWindow() {
   auto w = app::testing::openTestWindow(dir_.filePath("recovery"));
   if (w) w->brushPanel()->selectBrush("push");
   return w;
-}
-
-void HelpRenderTest::stroke(MainWindow& w, int dy) {
-  w.brushPanel()->setRadius(0.05f);
-  w.brushPanel()->setStrength(0.3f);
-  QWidget* view = w.viewport();
-  const QPoint from(view->width() / 2 - 30, view->height() / 2 + dy);
-  const QPoint to(view->width() / 2 + 30, view->height() / 2 + dy);
-  QTest::mousePress(view, Qt::LeftButton, {}, from);
-  for (int k = 1; k <= 10; ++k)
-    QTest::mouseMove(view, from + (to - from) * k / 10);
-  QTest::mouseRelease(view, Qt::LeftButton, {}, to);
 }
 
 bool HelpRenderTest::activate(MainWindow& w) {
@@ -186,7 +173,7 @@ void HelpRenderTest::redoKeysRedoAndSaveAsKeyAsks() {
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
   QVERIFY(activate(*window_));
   const std::vector<float> before = positionsOf(*window_);
-  stroke(*window_, 0);
+  app::testing::pushStrokeAcross(*window_, 0);
   QCOMPARE(window_->undoStack()->count(), 1);
   const std::vector<float> after = positionsOf(*window_);
   QVERIFY(!bitEqual(before, after));
@@ -257,7 +244,7 @@ void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
   std::vector<std::vector<float>> states{positionsOf(*window_)};
   for (int dy : {-30, 0, 30}) {
-    stroke(*window_, dy);
+    app::testing::pushStrokeAcross(*window_, dy);
     states.push_back(positionsOf(*window_));
   }
   QCOMPARE(window_->undoStack()->count(), 3);
@@ -287,7 +274,7 @@ void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {
   QCOMPARE(window_->undoStack()->index(), 3);
   QVERIFY(bitEqual(positionsOf(*window_), states[3]));
   // A new stroke appears as a row while the list is open.
-  stroke(*window_, 60);
+  app::testing::pushStrokeAcross(*window_, 60);
   QCOMPARE(view->model()->rowCount(), 5);
 }
 

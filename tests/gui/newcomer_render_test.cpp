@@ -92,7 +92,6 @@ private slots:
 
 private:
   std::unique_ptr<MainWindow> makeWindow();
-  void stroke(MainWindow& w, int dy);
 
   QTemporaryDir dir_;
   QString egg_;
@@ -125,25 +124,12 @@ std::unique_ptr<MainWindow> NewcomerRenderTest::makeWindow() {
   return w;
 }
 
-void NewcomerRenderTest::stroke(MainWindow& w, int dy) {
-  QVERIFY(w.brushPanel()->selectBrush("push"));
-  w.brushPanel()->setRadius(0.05f);
-  w.brushPanel()->setStrength(0.3f);
-  QWidget* view = w.viewport();
-  const QPoint from(view->width() / 2 - 30, view->height() / 2 + dy);
-  const QPoint to(view->width() / 2 + 30, view->height() / 2 + dy);
-  QTest::mousePress(view, Qt::LeftButton, {}, from);
-  for (int k = 1; k <= 10; ++k)
-    QTest::mouseMove(view, from + (to - from) * k / 10);
-  QTest::mouseRelease(view, Qt::LeftButton, {}, to);
-}
-
 void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
   const std::vector<float> sphere = positionsOf(*window_);
-  stroke(*window_, 0);
+  app::testing::pushStrokeAcross(*window_, 0);
   const std::vector<float> stroked = positionsOf(*window_);
   QVERIFY(!bitEqual(sphere, stroked));
   QVERIFY(window_->saveDocument(dir_.filePath("ball.exr")));
@@ -156,7 +142,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   QVERIFY(window_->currentPath().isEmpty());
   QVERIFY(window_->isModified());
   const std::vector<float> imported = positionsOf(*window_);
-  stroke(*window_, 0);
+  app::testing::pushStrokeAcross(*window_, 0);
   const std::vector<float> importedStroked = positionsOf(*window_);
   QVERIFY(!bitEqual(imported, importedStroked));
   QCOMPARE(window_->undoStack()->count(), 3);

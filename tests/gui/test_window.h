@@ -2,6 +2,7 @@
 // Start, shown at 1000 × 700 with its viewport's GL ready.
 #pragma once
 
+#include "brush_panel.h"
 #include "main_window.h"
 #include "viewport_widget.h"
 
@@ -45,6 +46,21 @@ inline std::vector<float> positionsOf(const MainWindow& w) {
 
 inline bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+/// A push stroke (radius 5 %, strength 30 %) dragged 60 px left to right across the viewport's
+/// centre, dy pixels below it, in 10 mouse moves.
+inline void pushStrokeAcross(MainWindow& w, int dy) {
+  w.brushPanel()->selectBrush("push");
+  w.brushPanel()->setRadius(0.05f);
+  w.brushPanel()->setStrength(0.3f);
+  QWidget* view = w.viewport();
+  const QPoint from(view->width() / 2 - 30, view->height() / 2 + dy);
+  const QPoint to(view->width() / 2 + 30, view->height() / 2 + dy);
+  QTest::mousePress(view, Qt::LeftButton, {}, from);
+  for (int k = 1; k <= 10; ++k)
+    QTest::mouseMove(view, from + (to - from) * k / 10);
+  QTest::mouseRelease(view, Qt::LeftButton, {}, to);
 }
 
 } // namespace octaclay::app::testing
