@@ -1,5 +1,6 @@
-// The viewport's frames: VTK renders into its own framebuffer, the model drawn by the GPU
-// renderer inside VTK's pass, then blitted into the widget's framebuffer.
+// The viewport's frames. The model alone on a plain background is drawn straight into the
+// widget's framebuffer; anything more (side by side, a gradient, another prop) is rendered by VTK
+// into its own framebuffer, the model drawn inside VTK's pass, then blitted into the widget's.
 
 #include "camera_control.h"
 #include "model_prop.h"
@@ -14,6 +15,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 
 namespace octaclay::app {
@@ -71,6 +73,29 @@ void ViewportWidget::renderVtkFrame() {
   state->Pop();
 }
 
+bool ViewportWidget::drawsDirectly() const {
+  return lodDisplay_ != LodDisplay::SideBySide && !looks_.gradient &&
+         renderer_->GetViewProps()->GetNumberOfItems() == 1;
+}
+
+void ViewportWidget::renderDirectFrame(QSize size) {
+  QOpenGLExtraFunctions* gl = context()->extraFunctions();
+  renderWindow_->GetState()->Reset(); // drawModel sets state through VTK's cache
+  gl->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+  gl->glViewport(0, 0, size.width(), size.height());
+  gl->glDisable(GL_SCISSOR_TEST);
+  const QColor& background = looks_.backgroundTop;
+  gl->glClearColor(float(background.redF()), float(background.greenF()), float(background.blueF()),
+                   1.0f);
+  gl->glDepthMask(GL_TRUE);
+  gl->glClearDepthf(1.0f);
+  gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl->glDepthFunc(GL_LEQUAL);
+  if (!prop_->GetVisibility()) return;
+  updateClipping();
+  drawModel(renderer_.Get());
+}
+
 void ViewportWidget::paintGL() {
   if (uploading_) return; // a document is half uploaded: keep the last frame
   const qint64 now = clock_.elapsed();
@@ -94,15 +119,18 @@ void ViewportWidget::paintGL() {
     pendingLod_.reset();
   }
 
-  renderVtkFrame();
-
   const QSize size = this->size() * devicePixelRatioF();
-  gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-  const GLenum buffer = GL_COLOR_ATTACHMENT0;
-  gl->glDrawBuffers(1, &buffer);
-  gl->glDisable(GL_SCISSOR_TEST);
-  renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size.width(), size.height(), 0, 0, size.width(),
-                                        size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (drawsDirectly()) {
+    renderDirectFrame(size);
+  } else {
+    renderVtkFrame();
+    gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+    const GLenum buffer = GL_COLOR_ATTACHMENT0;
+    gl->glDrawBuffers(1, &buffer);
+    gl->glDisable(GL_SCISSOR_TEST);
+    renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size.width(), size.height(), 0, 0, size.width(),
+                                          size.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
   renderWindow_->GetState()->Reset();
   if (dabbed || session_.stroking()) emit statsChanged();
   if (dabbed) emit surfaceChanged();

@@ -41,8 +41,8 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
   QSurfaceFormat format = QSurfaceFormat::defaultFormat();
   format.setVersion(4, 3); // the brush engine's compute-free passes need 4.3 core (SSBOs)
   format.setProfile(QSurfaceFormat::CoreProfile);
-  // VTK renders into its own framebuffer with depth; the widget's only receives the colour blit.
-  format.setDepthBufferSize(0);
+  // Depth for the frames drawn straight into the widget's framebuffer (the others are VTK's blit).
+  format.setDepthBufferSize(24);
   format.setStencilBufferSize(0);
   format.setSwapInterval(0); // frames/s are measured, not capped by vsync
   setFormat(format);

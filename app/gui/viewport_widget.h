@@ -172,6 +172,10 @@ public:
   /// Why GL or a brush failed, empty if nothing did.
   QString error() const { return error_; }
   bool glReady() const { return model_ != nullptr; }
+  /// Whether frames are the model alone on a plain background, drawn straight into the widget's
+  /// framebuffer; otherwise (side by side, a gradient, another prop in renderer()) VTK renders
+  /// them into its own and they are copied over.
+  bool drawsDirectly() const;
 
   vtkRenderer* renderer() const;
   vtkGenericOpenGLRenderWindow* renderWindow() const;
@@ -236,6 +240,7 @@ private:
   void updateClipping();
   /// VTK's frame (both renderers) into its framebuffers, GL state cache reset around it.
   void renderVtkFrame();
+  void renderDirectFrame(QSize size);
   /// The model's bounds from the document's tile boxes, for framing and clipping.
   void updateBounds();
   void fail(const QString& message);

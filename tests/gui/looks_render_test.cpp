@@ -74,6 +74,7 @@ private slots:
   void eachMatcapChangesThePixelsDifferently();
   void wireframeOverlayAddsLinePixelsAlongTheLevel();
   void backgroundChoiceChangesTheCornersAndIsRestored();
+  void directFrameMatchesTheFrameVtkRenders();
   void importedModelHasNoUnlitSpecklesAtAnyLevel();
   void crumpledSamplesShadeAsTheSmoothSurface();
   void maskTintIsNotAPaintColour();
@@ -252,6 +253,46 @@ void LooksRenderTest::backgroundChoiceChangesTheCornersAndIsRestored() {
   QCOMPARE(window_->viewport()->looks().backgroundTop, QColor(200, 40, 30));
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
   QCOMPARE(grab().pixel(2, 2), after.pixel(2, 2));
+}
+
+// The model alone on a plain background skips VTK's framebuffer; the same view through VTK (a
+// "gradient" of one colour) must give the same pixels.
+void LooksRenderTest::directFrameMatchesTheFrameVtkRenders() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* viewport = window_->viewport();
+  app::ViewLooks looks = viewport->looks();
+  looks.material = "clay";
+  looks.backgroundTop = QColor(60, 90, 40);
+  viewport->setLooks(looks);
+  QVERIFY(viewport->drawsDirectly());
+  const QImage direct = grab();
+  const std::vector<QPoint> model = modelPixels(direct);
+  QVERIFY2(model.size() > 20000, qPrintable(QString::number(model.size())));
+  QCOMPARE(direct.pixelColor(2, 2), QColor(60, 90, 40));
+
+  looks.gradient = true;
+  looks.backgroundBottom = looks.backgroundTop;
+  viewport->setLooks(looks);
+  QVERIFY(!viewport->drawsDirectly());
+  const QImage throughVtk = grab();
+  QCOMPARE(throughVtk.size(), direct.size());
+  int worst = 0;
+  for (int y = 0; y < direct.height(); ++y)
+    for (int x = 0; x < direct.width(); ++x) {
+      const QRgb a = direct.pixel(x, y), b = throughVtk.pixel(x, y);
+      worst = std::max({worst, std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                        std::abs(qBlue(a) - qBlue(b))});
+    }
+  QVERIFY2(worst <= 1, qPrintable(QString::number(worst)));
+
+  // Side by side is always VTK's (two renderers).
+  looks.gradient = false;
+  viewport->setLooks(looks);
+  QVERIFY(viewport->drawsDirectly());
+  viewport->setLodDisplay(app::LodDisplay::SideBySide);
+  QVERIFY(!viewport->drawsDirectly());
 }
 
 // A closed lat-long ellipsoid with semi-axes (a, b, c), as OBJ text.
