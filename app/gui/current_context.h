@@ -1,11 +1,12 @@
 #pragma once
 
+#include "viewport_widget.h"
+
 #include <QOpenGLContext>
-#include <QOpenGLWidget>
 
 namespace octaclay::app {
 
-/// Makes a QOpenGLWidget's context current for the scope of the guard and done again when the
+/// Makes a ViewportWidget's context current for the scope of the guard and done again when the
 /// guard goes, so an early return or an exception cannot leave the pair half done.
 class CurrentContext {
 public:
@@ -13,7 +14,7 @@ public:
   /// was not current already (a call made from inside paintGL keeps it so).
   enum class Mode { Always, IfNotCurrent };
 
-  explicit CurrentContext(QOpenGLWidget& widget, Mode mode = Mode::Always)
+  explicit CurrentContext(ViewportWidget& widget, Mode mode = Mode::Always)
       : widget_(widget),
         owned_(mode == Mode::Always || QOpenGLContext::currentContext() != widget.context()) {
     if (owned_) widget_.makeCurrent();
@@ -25,7 +26,7 @@ public:
   CurrentContext& operator=(const CurrentContext&) = delete;
 
 private:
-  QOpenGLWidget& widget_;
+  ViewportWidget& widget_;
   bool owned_;
 };
 

@@ -26,7 +26,7 @@ bool makeModelScreenshot(MainWindow& window, const QString& brushId, const QStri
   // From the front right and a little above (up +y, front +z).
   frameAlong(view, {1.0f, 0.35f, 0.75f}, {0, 1, 0}, 1.15);
   settleEvents(600); // status bar and panels catch up
-  return saveImagePng(window.grab().toImage(), imagePath);
+  return saveImagePng(grabWithViewport(window, view), imagePath);
 }
 
 } // namespace octaclay::app

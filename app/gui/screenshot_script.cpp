@@ -70,7 +70,7 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   looks.gradient = true;
   view.setLooks(looks);
   settleEvents(600); // status bar and panels catch up
-  const QImage image = window.grab().toImage();
+  const QImage image = grabWithViewport(window, view);
   return saveImagePng(image, imagePath);
 }
 

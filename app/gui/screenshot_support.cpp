@@ -4,6 +4,9 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QPainter>
+#include <QPixmap>
+#include <QWidget>
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
@@ -16,6 +19,18 @@ void settleEvents(int ms) {
   t.start();
   while (t.elapsed() < ms)
     QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+}
+
+QImage grabWithViewport(QWidget& window, ViewportWidget& view) {
+  QPixmap picture = window.grab();
+  QPainter painter(&picture);
+  const QPoint origin = view.mapTo(&window, QPoint(0, 0));
+  painter.drawImage(QRect(origin, view.size()), view.grabFramebuffer());
+  for (QWidget* child : view.findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+    if (child->isVisible() && !child->inherits("QWindowContainer")) // the labels
+      child->render(&painter, origin + child->pos());
+  painter.end();
+  return picture.toImage();
 }
 
 bool waitForViewport(ViewportWidget& view) {

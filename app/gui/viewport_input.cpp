@@ -117,7 +117,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event) {
     shift ? emit strengthStepRequested(1.1f) : emit radiusStepRequested(1.1f);
     break;
   default:
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
     return;
   }
   update();
@@ -126,7 +126,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event) {
 void ViewportWidget::leaveEvent(QEvent* event) {
   hover_.reset();
   update();
-  QOpenGLWidget::leaveEvent(event);
+  QWidget::leaveEvent(event);
 }
 
 } // namespace octaclay::app

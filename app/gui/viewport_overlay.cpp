@@ -39,6 +39,7 @@ public:
 protected:
   void paintEvent(QPaintEvent*) override {
     QPainter p(this);
+    p.fillRect(rect(), QColor(20, 22, 26));
     p.setRenderHint(QPainter::Antialiasing);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(20, 22, 26, 200));
@@ -62,8 +63,7 @@ QLabel* halfLabel(const QString& text, const QString& name, QWidget* parent) {
   auto* label = new QLabel(text, parent);
   label->setObjectName(name);
   label->setAttribute(Qt::WA_TransparentForMouseEvents);
-  label->setStyleSheet("QLabel { color: white; background: rgba(20, 22, 26, 190); "
-                       "border-radius: 4px; padding: 3px 8px; }");
+  label->setStyleSheet("QLabel { color: white; background: rgb(20, 22, 26); padding: 3px 8px; }");
   label->adjustSize();
   label->hide();
   return label;
@@ -76,6 +76,12 @@ ViewportOverlay::ViewportOverlay(QWidget* viewport)
       left_(halfLabel(tr("Full resolution"), "fullResolutionLabel", viewport)),
       right_(halfLabel(tr("Level of detail"), "levelOfDetailLabel", viewport)) {
   legend_->hide();
+  // The viewport's frames go to a native window (ViewportSurface): only native windows show
+  // over it, and without blending, so the legend's corners are filled.
+  for (QWidget* widget : {legend_, static_cast<QWidget*>(left_), static_cast<QWidget*>(right_)}) {
+    widget->setAttribute(Qt::WA_DontCreateNativeAncestors);
+    widget->setAttribute(Qt::WA_NativeWindow);
+  }
   viewport->installEventFilter(this);
   place();
 }

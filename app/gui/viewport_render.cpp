@@ -1,6 +1,6 @@
-// The viewport's frames. The model alone on a plain background is drawn straight into the
-// widget's framebuffer; anything more (side by side, a gradient, another prop) is rendered by VTK
-// into its own framebuffer, the model drawn inside VTK's pass, then blitted into the widget's.
+// The viewport's frames. The model alone on a plain background is drawn straight into the GL
+// window's framebuffer; anything more (side by side, a gradient, another prop) is rendered by
+// VTK into its own framebuffer, the model drawn inside VTK's pass, then blitted into the window's.
 
 #include "camera_control.h"
 #include "model_prop.h"
@@ -125,7 +125,7 @@ void ViewportWidget::paintGL() {
   } else {
     renderVtkFrame();
     gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-    const GLenum buffer = GL_COLOR_ATTACHMENT0;
+    const GLenum buffer = defaultFramebufferObject() == 0 ? GL_BACK : GL_COLOR_ATTACHMENT0;
     gl->glDrawBuffers(1, &buffer);
     gl->glDisable(GL_SCISSOR_TEST);
     renderWindow_->BlitDisplayFramebuffer(0, 0, 0, size.width(), size.height(), 0, 0, size.width(),

@@ -5,6 +5,7 @@
 #include "data_folders.h"
 #include "model_prop.h"
 #include "viewport_overlay.h"
+#include "viewport_surface.h"
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
@@ -37,15 +38,22 @@
 
 namespace octaclay::app {
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent) {
   QSurfaceFormat format = QSurfaceFormat::defaultFormat();
   format.setVersion(4, 3); // the brush engine's compute-free passes need 4.3 core (SSBOs)
   format.setProfile(QSurfaceFormat::CoreProfile);
-  // Depth for the frames drawn straight into the widget's framebuffer (the others are VTK's blit).
+  // Depth for the frames drawn straight into the window's framebuffer (the others are VTK's blit).
   format.setDepthBufferSize(24);
   format.setStencilBufferSize(0);
   format.setSwapInterval(0); // frames/s are measured, not capped by vsync
-  setFormat(format);
+  surface_ = new ViewportSurface(*this);
+  surface_->setFormat(format);
+  // No layout: the widget's size hint stays a plain widget's, so the main window sizes the view
+  // as it did a QOpenGLWidget.
+  container_ = QWidget::createWindowContainer(surface_, this);
+  container_->setFocusPolicy(Qt::NoFocus);
+  container_->setMouseTracking(true);
+  connect(surface_, &QOpenGLWindow::frameSwapped, this, &ViewportWidget::frameSwapped);
   setFocusPolicy(Qt::WheelFocus); // a click or a wheel turn takes the keys back from a dock
   setMouseTracking(true);
   setMinimumSize(320, 240);
@@ -100,6 +108,40 @@ void ViewportWidget::onRenderWindowEvent(vtkObject*, unsigned long event, void* 
     *static_cast<bool*>(callData) = current;
   else if (event == vtkCommand::WindowMakeCurrentEvent && !current)
     makeCurrent();
+}
+
+void ViewportWidget::resizeEvent(QResizeEvent* event) {
+  container_->setGeometry(rect());
+  QWidget::resizeEvent(event);
+}
+
+void ViewportWidget::update() {
+  if (surface_) surface_->update();
+}
+
+QOpenGLContext* ViewportWidget::context() const {
+  return surface_->context();
+}
+
+void ViewportWidget::makeCurrent() {
+  surface_->makeCurrent();
+}
+
+void ViewportWidget::doneCurrent() {
+  surface_->doneCurrent();
+}
+
+GLuint ViewportWidget::defaultFramebufferObject() const {
+  return surface_->defaultFramebufferObject();
+}
+
+QImage ViewportWidget::grabFramebuffer() {
+  if (!surface_->isValid()) return {};
+  makeCurrent();
+  paintGL(); // into the back buffer, read before any swap shows it
+  QImage image = surface_->grabFramebuffer();
+  doneCurrent();
+  return image;
 }
 
 vtkRenderer* ViewportWidget::renderer() const {

@@ -19,7 +19,9 @@
 #include "octaclay/gpu/model_renderer.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
+#include <QImage>
+#include <QOpenGLContext>
+#include <QWidget>
 #include <vtkNew.h>
 
 #include <cstdint>
@@ -41,6 +43,7 @@ namespace octaclay::app {
 
 class ModelProp;
 class ViewportOverlay;
+class ViewportSurface;
 
 /// Frame and stroke figures for the status bar.
 struct ViewportStats {
@@ -51,17 +54,29 @@ struct ViewportStats {
   long long displayedTriangles = 0, fullTriangles = 0; ///< displayed: the LOD's when shown alone
 };
 
-/// The 3D view: a Qt6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (VTK's Qt module is
-/// built for Qt5), whose GL context also runs the brush engine, so the full-resolution image
-/// never crosses to the CPU per frame. Owns the edited document (GPU textures plus the engine's
-/// CPU mirror), its brush library and its stroke history, sculpted through a SculptSession.
-/// Left-drag sculpts (Ctrl inverts, Shift smooths), right- or middle-drag orbits, Shift+middle or
-/// Ctrl+right pans, the wheel zooms; a left-drag that starts off the model orbits too.
-class ViewportWidget : public QOpenGLWidget {
+/// The 3D view: a native GL window (ViewportSurface) hosting a vtkGenericOpenGLRenderWindow (VTK's
+/// Qt module is built for Qt5), whose GL context also runs the brush engine, so the full-resolution
+/// image never crosses to the CPU per frame. Owns the edited document (GPU textures plus the
+/// engine's CPU mirror), its brush library and its stroke history, sculpted through a
+/// SculptSession. Left-drag sculpts (Ctrl inverts, Shift smooths), right- or middle-drag orbits,
+/// Shift+middle or Ctrl+right pans, the wheel zooms; a left-drag that starts off the model orbits
+/// too.
+class ViewportWidget : public QWidget {
   Q_OBJECT
 public:
   explicit ViewportWidget(QWidget* parent = nullptr);
   ~ViewportWidget() override;
+
+  /// Asks for a frame (hides QWidget::update: the frames are the native window's).
+  void update();
+  /// The GL context (null before GL started) and making it current, as a QOpenGLWidget's.
+  QOpenGLContext* context() const;
+  void makeCurrent();
+  void doneCurrent();
+  /// The framebuffer frames are drawn into (the window's own: 0).
+  GLuint defaultFramebufferObject() const;
+  /// Draws a frame and returns its pixels without showing it.
+  QImage grabFramebuffer();
 
   /// Replaces the document and clears the stroke history (uploaded now if GL is ready, else at
   /// GL start). Returns false with error() set if the upload failed; the previous document
@@ -172,9 +187,9 @@ public:
   /// Why GL or a brush failed, empty if nothing did.
   QString error() const { return error_; }
   bool glReady() const { return model_ != nullptr; }
-  /// Whether frames are the model alone on a plain background, drawn straight into the widget's
-  /// framebuffer; otherwise (side by side, a gradient, another prop in renderer()) VTK renders
-  /// them into its own and they are copied over.
+  /// Whether frames are the model alone on a plain background, drawn straight into the GL
+  /// window's framebuffer; otherwise (side by side, a gradient, another prop in renderer()) VTK
+  /// renders them into its own and they are copied over.
   bool drawsDirectly() const;
 
   vtkRenderer* renderer() const;
@@ -200,10 +215,14 @@ signals:
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document).
   void surfaceChanged();
 
+  /// A frame reached the screen.
+  void frameSwapped();
+
 protected:
-  void initializeGL() override;
-  void resizeGL(int width, int height) override;
-  void paintGL() override;
+  friend class ViewportSurface;
+  void initializeGL();
+  void resizeGL(int width, int height);
+  void paintGL();
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
@@ -211,6 +230,7 @@ protected:
   void tabletEvent(QTabletEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void leaveEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
 private:
   enum class Drag { None, Sculpt, Orbit, Pan };
@@ -247,6 +267,8 @@ private:
   /// Fills view's material and wireframe fields, loading the matcap on first use (GL current).
   void applyLooks(gpu::ModelView& view, vtkRenderer* r);
 
+  ViewportSurface* surface_ = nullptr; // owned by its container, a child of this widget
+  QWidget* container_ = nullptr;
   vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
   vtkNew<vtkRenderer> renderer_;
   vtkNew<ModelProp> prop_;

@@ -102,7 +102,10 @@ void main() {
   float best = max(dot(face, toEye), dot(mapNormal, toEye));
   // Where both turn from the eye at one pixel (noise where a pixel spans many texels), the
   // pixel's 2×2 quad, over which derivatives are taken, says how the surface around it faces.
-  vec2 side = 1.0 - 2.0 * mod(floor(gl_FragCoord.xy), 2.0); // +1 on the quad's first pixel
+  // +1 on the quad's first pixel, whichever way the target's rows run (a window's may run
+  // top down, so its quads need not start on even rows).
+  vec2 parity = mod(floor(gl_FragCoord.xy), 2.0);
+  vec2 side = (1.0 - 2.0 * parity) * vec2(dFdx(parity.x), dFdy(parity.y));
   float quadBest = best + 0.5 * (side.x * dFdx(best) + side.y * dFdy(best));
   float floorCosine = 0.5 * max(best, quadBest);
   float facing = dot(n, toEye);

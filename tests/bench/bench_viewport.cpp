@@ -67,7 +67,7 @@ double since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-int swaps = 0; // QOpenGLWidget::frameSwapped() count: every frame must reach the window
+int swaps = 0; // ViewportWidget::frameSwapped() count: every frame must reach the window
 
 // One frame: Qt paints the widget (paintGL runs the queued dabs, then VTK renders, then Qt
 // composes the window), then glFinish so the frame's GL work is done when the clock is read.
@@ -315,7 +315,7 @@ int main(int argc, char** argv) {
   const auto total = Clock::now();
 
   app::ViewportWidget widget;
-  QObject::connect(&widget, &QOpenGLWidget::frameSwapped, [] { ++swaps; });
+  QObject::connect(&widget, &app::ViewportWidget::frameSwapped, [] { ++swaps; });
   widget.resize(kWidth, kHeight);
   widget.show();
   for (const auto t = Clock::now(); !widget.glReady() && since(t) < 20;)

