@@ -89,6 +89,8 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
   splitter->addWidget(formScroll_);
   splitter->setStretchFactor(0, 1);
   splitter->setStretchFactor(1, 2);
+  // A third for the list, two for the form, whatever sizes the first layout pass saw.
+  splitter->setSizes({1000, 2000});
   splitter->setChildrenCollapsible(false);
 
   // Stroke options: the same for every brush.
