@@ -98,6 +98,7 @@ void ViewportWidget::renderDirectFrame(QSize size) {
 
 void ViewportWidget::paintGL() {
   if (uploading_) return; // a document is half uploaded: keep the last frame
+  if (!context()->isValid() || QOpenGLContext::currentContext() != context()) return; // no GL
   const qint64 now = clock_.elapsed();
   frameTimes_.push_back(now);
   while (!frameTimes_.empty() && now - frameTimes_.front() > 2000)

@@ -165,6 +165,11 @@ void ViewportWidget::fail(const QString& message) {
 
 void ViewportWidget::initializeGL() {
   glStarted_ = true;
+  // A QOpenGLWindow calls this even when it could make no context (a display without OpenGL 4.3).
+  if (!context() || !context()->isValid() || QOpenGLContext::currentContext() != context()) {
+    fail(tr("OpenGL 4.3 core is needed for sculpting: the display gave no OpenGL 4.3 context"));
+    return;
+  }
   renderWindow_->SetReadyForRendering(true);
   renderWindow_->OpenGLInitContext();
   try {
