@@ -78,7 +78,7 @@ ViewportOverlay::ViewportOverlay(QWidget* viewport)
   legend_->hide();
   // The viewport's frames go to a native window (ViewportSurface): only native windows show
   // over it, and without blending, so the legend's corners are filled.
-  for (QWidget* widget : {legend_, static_cast<QWidget*>(left_), static_cast<QWidget*>(right_)}) {
+  for (QWidget* widget : widgets()) {
     widget->setAttribute(Qt::WA_DontCreateNativeAncestors);
     widget->setAttribute(Qt::WA_NativeWindow);
   }
@@ -109,12 +109,16 @@ bool ViewportOverlay::eventFilter(QObject* watched, QEvent* event) {
   return QObject::eventFilter(watched, event);
 }
 
+std::array<QWidget*, 3> ViewportOverlay::widgets() const {
+  return {legend_, left_, right_};
+}
+
 void ViewportOverlay::place() {
   const int w = viewport_->width(), h = viewport_->height();
   legend_->move(w - legend_->width() - kMargin, h - legend_->height() - kMargin);
   left_->move(kMargin, kMargin);
   right_->move(w / 2 + kMargin, kMargin);
-  for (QWidget* widget : {legend_, static_cast<QWidget*>(left_), static_cast<QWidget*>(right_)})
+  for (QWidget* widget : widgets())
     widget->raise();
 }
 

@@ -7,6 +7,8 @@
 #include <QObject>
 #include <QPointer>
 
+#include <array>
+
 class QLabel;
 class QWidget;
 
@@ -36,6 +38,7 @@ protected:
 
 private:
   void place();
+  std::array<QWidget*, 3> widgets() const;
 
   QWidget* viewport_;
   QWidget* legend_;

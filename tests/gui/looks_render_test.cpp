@@ -279,19 +279,12 @@ void LooksRenderTest::directFrameMatchesTheFrameVtkRenders() {
   QVERIFY(!viewport->drawsDirectly());
   const QImage throughVtk = grab();
   QCOMPARE(throughVtk.size(), direct.size());
-  int differing = 0, worst = 0;
-  for (int y = 0; y < direct.height(); ++y)
-    for (int x = 0; x < direct.width(); ++x) {
-      const QRgb a = direct.pixel(x, y), b = throughVtk.pixel(x, y);
-      const int difference = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                                       std::abs(qBlue(a) - qBlue(b))});
-      differing += difference > 1;
-      worst = std::max(worst, difference);
-    }
+  const app::testing::PixelDifference d = app::testing::comparePixels(direct, throughVtk);
   // Equal but where the shader's 2×2 derivative quads pair other pixels in VTK's framebuffer than
   // in the window's top-down rows: a few pixels at most, a little.
-  QVERIFY2(differing * 200 <= int(model.size()) && worst <= 40,
-           qPrintable(QString("%1 of %2, worst %3").arg(differing).arg(model.size()).arg(worst)));
+  QVERIFY2(
+      d.differing * 200 <= int(model.size()) && d.worst <= 40,
+      qPrintable(QString("%1 of %2, worst %3").arg(d.differing).arg(model.size()).arg(d.worst)));
 
   // Side by side is always VTK's (two renderers).
   looks.gradient = false;

@@ -6,8 +6,11 @@
 #include "main_window.h"
 #include "viewport_widget.h"
 
+#include <QImage>
 #include <QTest>
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <vector>
@@ -32,6 +35,25 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
 }
 
 /// The window's positions layer, every texel's four floats row-major: for bit-exact checks.
+/// Two pictures of one view compared on every step-th pixel of each step-th row: how many were
+/// compared, how many differ by more than one 8-bit step in a channel, and the largest difference.
+struct PixelDifference {
+  int compared = 0, differing = 0, worst = 0;
+};
+inline PixelDifference comparePixels(const QImage& a, const QImage& b, int step = 1) {
+  PixelDifference d;
+  for (int y = 0; y < std::min(a.height(), b.height()); y += step)
+    for (int x = 0; x < std::min(a.width(), b.width()); x += step) {
+      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+      const int most = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                                 std::abs(qBlue(p) - qBlue(q))});
+      ++d.compared;
+      d.differing += most > 1;
+      d.worst = std::max(d.worst, most);
+    }
+  return d;
+}
+
 inline std::vector<float> positionsOf(const MainWindow& w) {
   const core::GeometryImage& image = w.viewport()->document().positions;
   std::vector<float> out;

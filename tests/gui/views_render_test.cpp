@@ -483,18 +483,9 @@ void ViewsRenderTest::saveImageWritesAPngOfTheRequestedSize() {
   QCOMPARE(image.size(), view->size() * view->devicePixelRatioF());
   // The same picture, but that the 2×2 quads the shader takes derivatives over pair other pixels
   // in the screen's top-down rows than offscreen: a few pixels at folds differ a little.
-  int sampled = 0, differing = 0, worst = 0;
-  for (int y = 0; y < image.height(); y += 7)
-    for (int x = 0; x < image.width(); x += 7) {
-      const QRgb a = image.pixel(x, y), b = shown.pixel(x, y);
-      const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                              std::abs(qBlue(a) - qBlue(b))});
-      ++sampled;
-      differing += d > 1;
-      worst = std::max(worst, d);
-    }
-  QVERIFY2(differing * 200 <= sampled && worst <= 40,
-           qPrintable(QString("%1 of %2, worst %3").arg(differing).arg(sampled).arg(worst)));
+  const app::testing::PixelDifference d = app::testing::comparePixels(image, shown, 7);
+  QVERIFY2(d.differing * 200 <= d.compared && d.worst <= 40,
+           qPrintable(QString("%1 of %2, worst %3").arg(d.differing).arg(d.compared).arg(d.worst)));
 
   // Out of range: refused with a message, nothing written.
   QVERIFY(!window_->saveImage(dir_.filePath("huge.png"), QSize(100000, 10), true));
