@@ -69,7 +69,7 @@ void UndoCapture::checkFinite(const Tile& t, const std::vector<float>& after) {
     throw core::Error(core::ErrorKind::InvalidInput,
                       std::isfinite(v)
                           ? "the brush moved sample " + sample +
-                                " beyond the ±1e18 a coordinate may have; the "
+                                " beyond the ±1e15 a coordinate may have; the "
                                 "stroke was undone"
                           : "the brush produced a non-finite value at sample " + sample +
                                 " of the " + layer + " layer; the stroke was undone");

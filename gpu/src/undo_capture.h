@@ -4,6 +4,7 @@
 // time a dab may touch it. It also makes a stroke all-or-nothing: a failed dab or a result that
 // is not finite puts the captured tiles back, bit for bit.
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/gpu/gpu_document.h"
 
@@ -13,9 +14,8 @@
 
 namespace octaclay::gpu::detail {
 
-/// The largest |coordinate| a stroke may leave in the positions: far below float's limit, so
-/// the bounding box's diagonal (and every distance between samples) stays finite.
-inline constexpr float kMaxCoordinate = 1e18f;
+/// The largest |coordinate| a stroke may leave in the positions: the one every reader accepts.
+using core::kMaxCoordinate;
 
 class UndoCapture {
 public:

@@ -1,6 +1,6 @@
 // octaclay-cli stroke never saves what it cannot read again, and plugins cannot hang it
 // (issue 20): NaN or infinity in --strength or --param is a usage error (exit 2), a brush whose
-// result is not finite or beyond ±1e18 is refused (exit 3), a pass that overruns the watchdog
+// result is not finite or beyond ±1e15 is refused (exit 3), a pass that overruns the watchdog
 // is exit 5 with the shader's name; in every case a stroke written in place leaves the document
 // byte for byte as it was. A manifest that is a named pipe, a link to /dev/zero or a link loop
 // is listed as broken while the other brushes work, without blocking.
@@ -92,7 +92,7 @@ void CliBrushSafetyTest::nonFiniteArgumentsAreUsageErrors() {
 }
 
 void CliBrushSafetyTest::nonFiniteResultsAreRefused() {
-  expectRefused(kInvalidInput, "beyond the ±1e18", {"--brush", "push", "--strength", "1e30"});
+  expectRefused(kInvalidInput, "beyond the ±1e15", {"--brush", "push", "--strength", "1e30"});
   const QString plugins = writePlugin(
       "nan-brush", "vec4 brush(vec4 value, BrushInput b) {\n"
                    "  return b.weight > 0.0 ? vec4(uintBitsToFloat(0x7fc00000u)) : value;\n"

@@ -1,5 +1,5 @@
 // A stroke is all or nothing (issue 20): a brush that writes NaN or infinity into any layer, or
-// moves a sample beyond ±1e18, is refused when the stroke ends and the layers are restored bit
+// moves a sample beyond ±1e15, is refused when the stroke ends and the layers are restored bit
 // for bit; NaN and infinity in the stroke's settings are refused before any dab; a pass that
 // overruns the watchdog's limit marks its brush broken, restores the layers and throws
 // BrushTimeoutError.
@@ -159,7 +159,7 @@ void BrushSafetyTest::hugeResultsAreUndone() {
   // A finite strength whose result is still far beyond what a document may hold.
   const auto [kind, message] = refused(manifests_.at("push"), strokeOf("push", 1e30f));
   QVERIFY2(kind == core::ErrorKind::InvalidInput, message.c_str());
-  QVERIFY2(message.find("beyond the ±1e18") != std::string::npos, message.c_str());
+  QVERIFY2(message.find("beyond the ±1e15") != std::string::npos, message.c_str());
 }
 
 void BrushSafetyTest::nonFiniteSettingsAreRefused_data() {

@@ -214,6 +214,8 @@ Document decompressDocument(std::span<const std::uint8_t> bytes) {
         if (const auto problem = positionsProblem(doc.positions)) in.fail(*problem);
       } else {
         layers[k]->texels = std::move(image.texels);
+        if (const auto problem = layerValuesProblem(*layers[k], static_cast<int>(n)))
+          in.fail(*problem);
       }
     }
   } catch (const std::bad_alloc&) {

@@ -1,5 +1,7 @@
 #include "octaclay/core/document/document_checks.h"
 
+#include "octaclay/core/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,10 +23,63 @@ std::optional<std::string> positionsProblem(const GeometryImage& positions) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", static_cast<double>(largest));
     return std::string("a coordinate of magnitude ") + text +
-           " is too large: the bounding-box diagonal overflows (coordinates must stay below "
-           "1e18; scale the model down)";
+           " is too large: coordinates beyond 1e15 are refused (scale the model down)";
   }
   return std::nullopt;
+}
+
+std::optional<std::string> sizeProblem(const GeometryImage& positions) {
+  const int side = positions.size() + 1;
+  BoundingBox box;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i)
+      box.extend(positions.at(i, j).xyz());
+  return sizeProblem(box);
+}
+
+std::optional<std::string> sizeProblem(const BoundingBox& box) {
+  if (box.empty()) return "the model has no samples";
+  const Vec3f low = box.min, high = box.max;
+  const double dx = double(high.x) - low.x, dy = double(high.y) - low.y,
+               dz = double(high.z) - low.z;
+  const double diagonal = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double largest =
+      std::max({std::abs(double(low.x)), std::abs(double(low.y)), std::abs(double(low.z)),
+                std::abs(double(high.x)), std::abs(double(high.y)), std::abs(double(high.z))});
+  if (!(diagonal > 0))
+    return "the model has no size: every sample lies at one point (a collapsed model); there is "
+           "nothing to measure or shape";
+  char text[64];
+  if (diagonal < kMinDiagonal) {
+    std::snprintf(text, sizeof text, "%.3g", diagonal);
+    return std::string("the model is ") + text +
+           " across, below the 1e-12 a model must measure (scale it up)";
+  }
+  if (diagonal < 1e-6 * largest) {
+    std::snprintf(text, sizeof text, "%.3g across at coordinates of %.3g", diagonal, largest);
+    return std::string("the model is collapsed: ") + text +
+           ", below float precision there (move it towards the origin or scale it up)";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> layerValuesProblem(const Layer& layer, int size) {
+  const std::size_t channels = static_cast<std::size_t>(layer.channels);
+  for (std::size_t c = 0; c < channels; ++c)
+    if (layer.uniform() && !std::isfinite(layer.fill[c]))
+      return "layer " + layer.name + " holds a value that is not a finite number";
+  for (std::size_t k = 0; k < layer.texels.size(); ++k)
+    if (!std::isfinite(layer.texels[k])) {
+      const std::size_t texel = k / channels, side = static_cast<std::size_t>(size) + 1;
+      return "layer " + layer.name + " holds a value that is not a finite number at sample (" +
+             std::to_string(texel % side) + ", " + std::to_string(texel / side) + ")";
+    }
+  return std::nullopt;
+}
+
+void requireUsableSize(const GeometryImage& positions, const std::string& what) {
+  if (const auto problem = sizeProblem(positions))
+    throw Error(ErrorKind::InvalidInput, what + ": " + *problem);
 }
 
 std::optional<std::string> layerChannelsProblem(const std::vector<std::string>& channels) {

@@ -211,6 +211,8 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
     file.readPixels(window.min.y, window.max.y);
 
     if (const auto problem = positionsProblem(document.positions)) refuse(path, *problem);
+    for (const Layer* layer : {&document.diffuse, &document.feature, &document.mask})
+      if (const auto problem = layerValuesProblem(*layer, header.size)) refuse(path, *problem);
 
     for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
       collapseUniformLayer(*layer);

@@ -86,8 +86,8 @@ ValidatedMesh validate(TriangleMesh mesh, Attributes attributes, const Validatio
              "damaged; re-export it");
     if (used[v] && std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
       refuse("vertex " + std::to_string(v + 1) +
-             " has a coordinate too large for a document (beyond 1e18, where the bounding "
-             "box overflows) — scale the model down before importing it");
+             " has a coordinate too large for a document (coordinates beyond 1e15 are "
+             "refused) — scale the model down before importing it");
   }
 
   if (weld) {

@@ -101,7 +101,7 @@ private slots:
   void positionsProblemNamesTheCause() {
     GeometryImage image = makeBaseShape(BaseShape::Sphere, 8);
     QVERIFY(!positionsProblem(image));
-    image.at(1, 2).z = 1e18f; // at the bound: still fine
+    image.at(1, 2).z = 1e15f; // at the bound: still fine
     QVERIFY(!positionsProblem(image));
     image.at(1, 2).z = -3e19f;
     const auto huge = positionsProblem(image);
@@ -109,6 +109,38 @@ private slots:
     image.at(1, 2).z = std::numeric_limits<float>::infinity();
     const auto inf = positionsProblem(image);
     QVERIFY(inf && inf->find("(1, 2)") != std::string::npos);
+  }
+
+  void sizeProblemNamesDegenerateModels() {
+    GeometryImage image = makeBaseShape(BaseShape::Sphere, 8);
+    QVERIFY(!sizeProblem(image));
+    const auto scaled = [&](float scale, Vec3f offset) {
+      GeometryImage copy = image;
+      for (Vec4f& t : copy.texels())
+        t = {t.x * scale + offset.x, t.y * scale + offset.y, t.z * scale + offset.z, t.w};
+      return copy;
+    };
+    QVERIFY(!sizeProblem(scaled(1e-11f, {})));      // small, yet measurable
+    QVERIFY(!sizeProblem(scaled(1e13f, {})));       // large, within the coordinate range
+    QVERIFY(!sizeProblem(scaled(1, {1e5f, 0, 0}))); // off the origin, well resolved
+    const auto point = sizeProblem(scaled(0, {2, 3, 4}));
+    QVERIFY(point && point->find("no size") != std::string::npos);
+    const auto tiny = sizeProblem(scaled(1e-20f, {}));
+    QVERIFY(tiny && tiny->find("below the 1e-12") != std::string::npos);
+    const auto collapsed = sizeProblem(scaled(1e-9f, {1e6f, 0, 0}));
+    QVERIFY(collapsed && collapsed->find("collapsed") != std::string::npos);
+    QVERIFY(sizeProblem(BoundingBox{}).has_value()); // no samples at all
+  }
+
+  void layerValuesProblemNamesTheSample() {
+    Layer mask{"mask", 1, {1, 0, 0, 0}, {}};
+    QVERIFY(!layerValuesProblem(mask, 8));
+    mask.texels.assign(9 * 9, 1.0f);
+    QVERIFY(!layerValuesProblem(mask, 8));
+    mask.texels[9 * 2 + 3] = std::numeric_limits<float>::quiet_NaN();
+    const auto nan = layerValuesProblem(mask, 8);
+    QVERIFY(nan && nan->find("mask") != std::string::npos &&
+            nan->find("(3, 2)") != std::string::npos);
   }
 
   void layerChannelsProblemNamesTheLayer() {
@@ -124,7 +156,7 @@ private slots:
     writeExr(p, 3e19f);
     for (bool layers : {true, false})
       EXPECT_ERROR(readDocument(p, {layers}), ErrorKind::InvalidInput, "too large");
-    writeExr(p, 9e17f); // large but the diagonal stays finite
+    writeExr(p, 9e14f); // large, within the 1e15 every reader accepts
     QCOMPARE(readDocument(p, {false}).size(), 16);
   }
 

@@ -1,11 +1,11 @@
 #pragma once
 
 // The one output rule (DESIGN.md, "Rules every output follows"): every file a command or the
-// modeller writes is staged as a temporary beside its target (`.stem.tmp-PID-N.ext`), written
-// with every write and close checked, fsynced, and renamed into place only when every file of
-// its set was staged; a failure leaves the previous files whole and no temporary behind. Writers
-// only produce bytes (into a ByteSink, or in memory first: EXR, glTF, OpenMesh formats); no
-// other code opens an output file.
+// modeller writes is staged as a temporary beside its target (`.stem.tmp-PID-N.ext`, the stem cut
+// to 64 bytes), written with every write and close checked, fsynced, and renamed into place only
+// when every file of its set was staged; a failure leaves the previous files whole and no temporary
+// behind. Writers only produce bytes (into a ByteSink, or in memory first: EXR, glTF, OpenMesh
+// formats); no other code opens an output file.
 
 #include <cstdint>
 #include <filesystem>
@@ -33,8 +33,9 @@ private:
 /// Files written as a set: each stage() writes one temporary now; commit() renames them all into
 /// place, holding an flock on each target folder so that two concurrent sets to the same place
 /// never mix (the later commit wins whole). Dropping an uncommitted set removes its temporaries.
-/// Temporaries are also removed on SIGINT and SIGTERM (the process then dies of the signal as
-/// before); SIGXFSZ is ignored so a file-size limit fails the write (EFBIG) instead of killing.
+/// Temporaries are also removed on SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM
+/// and SIGPIPE (the process then dies of the signal as before); SIGXFSZ is ignored so a file-size
+/// limit fails the write (EFBIG) instead of killing.
 class OutputSet {
 public:
   OutputSet() = default;
