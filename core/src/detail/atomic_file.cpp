@@ -40,8 +40,12 @@ fs::path folderOf(const fs::path& target) {
   return target.parent_path().empty() ? fs::path(".") : target.parent_path();
 }
 
+// The hidden name keeps at most this many bytes of the target's stem, so that any legal target
+// name (up to 255 bytes) has a temporary of a legal length beside it.
+constexpr std::size_t kTemporaryStemBytes = 64;
+
 std::string temporaryPrefix(const fs::path& target) {
-  return "." + target.stem().string() + ".tmp-";
+  return "." + target.stem().string().substr(0, kTemporaryStemBytes) + ".tmp-";
 }
 
 // `.stem.tmp-PID-N.ext` → PID, or 0 when the name is not one of target's temporaries.

@@ -30,7 +30,8 @@ void removeTemporariesAndDie(int signal) {
 }
 
 void installHandlers() {
-  for (const int signal : {SIGINT, SIGTERM}) {
+  // Every signal whose default action ends the process, a user or a tool may send during a save.
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE}) {
     struct sigaction previous {};
     if (::sigaction(signal, nullptr, &previous) != 0 || previous.sa_handler != SIG_DFL) continue;
     struct sigaction action {};

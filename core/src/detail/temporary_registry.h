@@ -1,7 +1,8 @@
 #pragma once
 
-// The temporaries alive in this process, for a signal handler that removes them: SIGINT and
-// SIGTERM unlink every registered temporary, then die of the signal as before; SIGXFSZ is
+// The temporaries alive in this process, for a signal handler that removes them: SIGINT,
+// SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM and SIGPIPE unlink every registered
+// temporary, then die of the signal as before; SIGXFSZ is
 // ignored, so a write over the file-size limit fails with EFBIG and the writer cleans up.
 
 #include <filesystem>
