@@ -165,7 +165,7 @@ double AabbTree::triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const 
   return distanceSquared(p, closestPointOnTriangle(p, Vec3d(t.a), Vec3d(t.b), Vec3d(t.c)));
 }
 
-AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint) const {
+AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLeaves) const {
   Hit best;
   if (nodes_.empty()) return best;
   if (hint < triangles_.size()) best = {triangleDistanceSquared(p, hint), hint};
@@ -191,6 +191,7 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint) const {
   std::size_t pending = 0;
   if (boxDistanceSquared(nodes_[0]) < best.distanceSquared) stack[pending++] = {0, 0.0};
 
+  std::uint32_t leaves = 0;
   while (pending > 0) {
     const Pending top = stack[--pending];
     if (!(top.distanceSquared < best.distanceSquared)) continue;
@@ -201,6 +202,11 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint) const {
         for (std::uint32_t t = node.index; t < node.index + node.count; ++t) {
           const double d = triangleDistanceSquared(p, t);
           if (d < best.distanceSquared) best = {d, t};
+        }
+        if (++leaves >= maxLeaves) {
+          best.bounded = pending > 0;
+          best.leaves = leaves;
+          return best;
         }
         break;
       }
@@ -216,6 +222,7 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint) const {
       current = nearChild;
     }
   }
+  best.leaves = leaves;
   return best;
 }
 

@@ -52,6 +52,9 @@ public:
   struct Hit {
     double distanceSquared = std::numeric_limits<double>::infinity();
     std::uint32_t triangle = noTriangle;
+    /// The search stopped at its leaf budget: distanceSquared is an upper bound, not exact.
+    bool bounded = false;
+    std::uint32_t leaves = 0; ///< leaves visited: the query's work
   };
 
   /// Builds the tree over all of mesh's triangles in O(T log T). Precondition: every index is
@@ -62,8 +65,11 @@ public:
   /// The closest point of the mesh to p, by branch and bound (nearer child first, subtrees
   /// pruned by squared box distance). `hint`, an index into triangles() or noTriangle, seeds
   /// the bound: pass the previous query's triangle when queries are spatially coherent.
-  /// An empty tree returns a Hit with infinite distance.
-  Hit closest(Vec3d p, std::uint32_t hint = noTriangle) const;
+  /// An empty tree returns a Hit with infinite distance. maxLeaves bounds the work: after that
+  /// many leaves the best so far is returned with `bounded` set (on a self-intersecting tangle
+  /// every box overlaps every query and an exact search visits the whole tree).
+  Hit closest(Vec3d p, std::uint32_t hint = noTriangle,
+              std::uint32_t maxLeaves = std::numeric_limits<std::uint32_t>::max()) const;
 
   /// The triangles in leaf order (consecutive triangles are close in space).
   std::span<const Triangle> triangles() const { return triangles_; }

@@ -134,15 +134,18 @@ Side prepare(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
 struct Chunk {
   const AabbTree* target;
   std::span<const Vec3d> points;
+  std::uint32_t leavesPerQuery;
   double sumSquared = 0;
   double maxSquared = 0;
+  std::size_t bounded = 0;
 };
 
 void measure(Chunk& chunk) {
   std::uint32_t hint = AabbTree::noTriangle;
   for (const Vec3d& p : chunk.points) {
-    const AabbTree::Hit hit = chunk.target->closest(p, hint);
+    const AabbTree::Hit hit = chunk.target->closest(p, hint, chunk.leavesPerQuery);
     hint = hit.triangle;
+    chunk.bounded += hit.bounded;
     chunk.sumSquared += hit.distanceSquared;
     chunk.maxSquared = std::max(chunk.maxSquared, hit.distanceSquared);
   }
@@ -168,15 +171,40 @@ SurfaceDistance compareSurfaces(const TriangleMesh& a, const TriangleMesh& b,
   const Side sideA = prepare(a, options.samplesPerSurface, options.seed);
   const Side sideB = futureB.get();
 
+  const std::uint32_t leaves = std::max<std::uint32_t>(1, options.leavesPerQuery);
+  // The pilot: about 2048 queries spread over both directions say what the whole would cost.
+  const std::size_t queries = sideA.points.size() + sideB.points.size();
+  const std::size_t pilotStep = std::max<std::size_t>(1, queries / 2048);
+  double pilotLeaves = 0;
+  std::size_t pilotQueries = 0;
+  for (const auto& [from, to] : {std::pair{&sideA, &sideB}, std::pair{&sideB, &sideA}})
+    for (std::size_t k = 0; k < from->points.size(); k += pilotStep, ++pilotQueries)
+      pilotLeaves += to->tree.closest(from->points[k], AabbTree::noTriangle, leaves).leaves;
+  const double estimate =
+      pilotQueries ? pilotLeaves / static_cast<double>(pilotQueries) * static_cast<double>(queries)
+                   : 0;
+  const double budget = std::max<double>(1, static_cast<double>(options.leafBudget));
+  result.stride = estimate > budget ? static_cast<std::size_t>(std::ceil(estimate / budget)) : 1;
+
+  // Every stride-th point of each side (all of them when the budget allows).
+  std::vector<Vec3d> pickedA, pickedB;
+  const auto picked = [&result](const std::vector<Vec3d>& all, std::vector<Vec3d>& keep) {
+    if (result.stride == 1) return std::span<const Vec3d>(all);
+    for (std::size_t k = 0; k < all.size(); k += result.stride)
+      keep.push_back(all[k]);
+    return std::span<const Vec3d>(keep);
+  };
+  const std::span<const Vec3d> fromA = picked(sideA.points, pickedA);
+  const std::span<const Vec3d> fromB = picked(sideB.points, pickedB);
+
   std::vector<Chunk> chunks;
-  const auto addChunks = [&chunks](const Side& from, const Side& to) {
-    const std::span<const Vec3d> points = from.points;
+  const auto addChunks = [&chunks, leaves](std::span<const Vec3d> points, const Side& to) {
     for (std::size_t begin = 0; begin < points.size(); begin += chunkSize)
       chunks.push_back(
-          {&to.tree, points.subspan(begin, std::min(chunkSize, points.size() - begin))});
+          {&to.tree, points.subspan(begin, std::min(chunkSize, points.size() - begin)), leaves});
   };
-  addChunks(sideA, sideB);
-  addChunks(sideB, sideA);
+  addChunks(fromA, sideB);
+  addChunks(fromB, sideA);
 
   std::atomic<std::size_t> next{0};
   const auto work = [&chunks, &next] {
@@ -197,8 +225,9 @@ SurfaceDistance compareSurfaces(const TriangleMesh& a, const TriangleMesh& b,
   for (const Chunk& chunk : chunks) {
     sumSquared += chunk.sumSquared;
     maxSquared = std::max(maxSquared, chunk.maxSquared);
+    result.boundedQueries += chunk.bounded;
   }
-  result.samples = sideA.points.size() + sideB.points.size();
+  result.samples = fromA.size() + fromB.size();
   result.rms = std::sqrt(sumSquared / static_cast<double>(result.samples)) / result.diagonal;
   result.hausdorff = std::sqrt(maxSquared) / result.diagonal;
   result.psnr =

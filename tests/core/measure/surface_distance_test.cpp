@@ -58,6 +58,7 @@ private slots:
   void seedStability();
   void emptyMeshThrows();
   void badIndexThrows();
+  void aTangleIsBoundedFromAbove();
 };
 
 void SurfaceDistanceTest::closestPointRegions_data() {
@@ -211,6 +212,27 @@ void SurfaceDistanceTest::badIndexThrows() {
   } catch (const Error& e) {
     QCOMPARE(e.kind(), ErrorKind::InvalidInput);
   }
+}
+
+// A self-intersecting tangle (vertices of a sphere moved to random points) makes every box
+// overlap every query: with a small work bound the queries stop early, say so, and report
+// distances that are never below the exact ones; on smooth surfaces the bound never bites.
+void SurfaceDistanceTest::aTangleIsBoundedFromAbove() {
+  TriangleMesh tangle = sphere(4, 1);
+  std::mt19937 random(5);
+  std::normal_distribution<float> normal;
+  for (Vec3f& p : tangle.positions)
+    p = {normal(random), normal(random), normal(random)};
+  const TriangleMesh smooth = sphere(4, 1.01f);
+  const SurfaceDistance exact =
+      compareSurfaces(tangle, smooth, {.samplesPerSurface = 5000, .leavesPerQuery = 1u << 30});
+  const SurfaceDistance bounded =
+      compareSurfaces(tangle, smooth, {.samplesPerSurface = 5000, .leavesPerQuery = 4});
+  QCOMPARE(exact.boundedQueries, std::size_t(0));
+  QVERIFY(bounded.boundedQueries > 0);
+  QVERIFY(bounded.rms >= exact.rms && bounded.hausdorff >= exact.hausdorff);
+  const SurfaceDistance calm = compareSurfaces(sphere(5, 1), smooth, {.samplesPerSurface = 20'000});
+  QCOMPARE(calm.boundedQueries, std::size_t(0));
 }
 
 QTEST_APPLESS_MAIN(SurfaceDistanceTest)
