@@ -5,6 +5,7 @@
 #include "codec/wavelet_quantizer.h"
 #include "codec/wavelet_step_search.h"
 #include "codec/wavelet_transform.h"
+#include "detail/unit_scale.h"
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/geometry_image.h"
@@ -271,10 +272,9 @@ FloatImage decodeStream(std::span<const std::uint8_t> stream, int n, int channel
   return image;
 }
 
-} // namespace
-
-std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
-  requireEncodable(image, bound);
+// Encodes image (at about unit scale); the stream's centres, steps and DC terms are written
+// times 2^back, which scales every decoded value by exactly 2^back.
+std::vector<std::uint8_t> encodeAtUnitScale(const FloatImage& image, double bound, int back) {
   const int n = image.n;
   double diagonal = positionDiagonal(image);
   if (!(diagonal > 0)) diagonal = 1; // a single point: bound the error absolutely
@@ -305,9 +305,9 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
   out.u32(static_cast<std::uint32_t>(n));
   out.u8(static_cast<std::uint8_t>(image.channels));
   for (const ChannelCoding& cc : coding) {
-    out.f32(cc.centre);
-    out.f32(cc.step);
-    out.f32(cc.dc);
+    out.f32(std::ldexp(cc.centre, back));
+    out.f32(std::ldexp(cc.step, back));
+    out.f32(std::ldexp(cc.dc, back));
   }
   detail::setVectorMagnitudes(planes);
   std::array<detail::BandModels, detail::kOrientations> models;
@@ -318,6 +318,21 @@ std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
     out.bytes.insert(out.bytes.end(), bytes.begin(), bytes.end());
   }
   return std::move(out.bytes);
+}
+
+} // namespace
+
+std::vector<std::uint8_t> encodeWavelet(const FloatImage& image, double bound) {
+  requireEncodable(image, bound);
+  // In the model's own units (detail/unit_scale.h): the step search squares errors in float,
+  // which a model 1e-12 or 1e13 across would underflow or overflow. Scaling by a power of two
+  // is exact, and so is the decoded image's scaling back.
+  const int e = image.channels >= 3 ? detail::unitScaleExponent(positionDiagonal(image)) : 0;
+  if (e == 0) return encodeAtUnitScale(image, bound, 0);
+  FloatImage scaled = image;
+  for (float& v : scaled.texels)
+    v = std::ldexp(v, e);
+  return encodeAtUnitScale(scaled, bound, -e);
 }
 
 FloatImage decodeWavelet(std::span<const std::uint8_t> stream, int n, int channels) {

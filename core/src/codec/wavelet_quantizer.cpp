@@ -65,6 +65,14 @@ Frame frameAt(const std::vector<std::vector<float>>& planes, int n, int d, int i
   // Divides rather than core::normalize's multiply by 1/length: the stream's golden bytes depend
   // on the rounding.
   const auto unit = [](Vec3f& v) {
+    // A model far from unit size (a cross product of edges 1e13 long) would square past float:
+    // a power of two brings it near 1 first, which leaves v / |v| bit for bit as it was.
+    const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (std::isfinite(largest) && largest > 0 && (largest > 1e15f || largest < 1e-15f)) {
+      int exponent = 0;
+      std::frexp(largest, &exponent);
+      v = {std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent), std::ldexp(v.z, -exponent)};
+    }
     const float l = length(v);
     if (!(l > 0) || !std::isfinite(l)) return false;
     v = {v.x / l, v.y / l, v.z / l};

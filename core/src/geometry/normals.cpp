@@ -16,9 +16,9 @@ Vec3f vertexNormal(const GeometryImage& image, Sample s) {
 Vec3f gridNormal(const GeometryImage& image, Sample s) {
   const Vec3f du = image.positionWrapped({s.i + 1, s.j}) - image.positionWrapped({s.i - 1, s.j});
   const Vec3f dv = image.positionWrapped({s.i, s.j + 1}) - image.positionWrapped({s.i, s.j - 1});
-  const Vec3f n = cross(du, dv);
-  const float l = length(n);
-  return l > 1e-20f ? n * (1.0f / l) : vertexNormal(image, s);
+  // normalize works at every scale; a grid normal of no length falls back to the triangles'.
+  const Vec3f n = normalize(cross(du, dv));
+  return dot(n, n) > 0.5f ? n : vertexNormal(image, s);
 }
 
 std::vector<Vec3f> computeNormals(const GeometryImage& image) {

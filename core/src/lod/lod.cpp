@@ -2,6 +2,7 @@
 // corner the image coordinates of its vertex's copy on the triangle's side of the seams.
 #include "octaclay/core/lod/lod.h"
 
+#include "detail/unit_scale.h"
 #include "lod/adaptive.h"
 #include "lod/quadric_collapse.h"
 #include "lod/refit.h"
@@ -358,6 +359,12 @@ GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod me
 }
 
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
+  if (const int e = detail::unitScaleExponent(image); e != 0) {
+    checkOptions(image, options);
+    LodMesh lod = generateLod(detail::scaledPositions(image, e), options);
+    detail::scaleMesh(lod.mesh, -e);
+    return lod;
+  }
   checkOptions(image, options);
   const int n = image.size();
   if (options.method == ResampleMethod::Auto) {

@@ -1,6 +1,8 @@
 // chooseLodMethod (lod.h): the image methods where the image samples a smooth surface evenly,
 // the full-resolution collapse where it stretches (judged from a coarse copy of the image) or
 // where the surface is rough sample to sample (judged from a sparse set of samples).
+#include "detail/unit_scale.h"
+
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/core/measure/stretch.h"
 
@@ -30,6 +32,8 @@ bool imageStretches(const StretchSummary& s) {
 
 ResampleMethod chooseLodMethod(const GeometryImage& image, const LodOptions& options) {
   if (!options.autoMayCollapse) return ResampleMethod::SalientPoint;
+  if (const int e = detail::unitScaleExponent(image); e != 0)
+    return chooseLodMethod(detail::scaledPositions(image, e), options);
   return imageStretches(coarseStretch(image)) || imageRoughness(image) > kSmoothRoughness
              ? ResampleMethod::Collapse
              : ResampleMethod::Adaptive;

@@ -3,6 +3,7 @@
 #include "octaclay/core/lod/saliency.h"
 
 #include "detail/parallel_rows.h"
+#include "detail/unit_scale.h"
 
 #include "octaclay/core/geometry/normals.h"
 
@@ -88,6 +89,13 @@ std::vector<float> blur(int n, const std::vector<float>& field, float sigma) {
 } // namespace
 
 void computeSaliency(GeometryImage& image, const SaliencyOptions& options) {
+  if (const int e = detail::unitScaleExponent(image); e != 0) { // in the model's own units
+    GeometryImage scaled = detail::scaledPositions(image, e);
+    computeSaliency(scaled, options);
+    for (std::size_t k = 0; k < image.texels().size(); ++k)
+      image.texels()[k].w = scaled.texels()[k].w;
+    return;
+  }
   const int n = image.size();
   std::vector<float> scales = options.scales;
   if (scales.empty())

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace octaclay::core {
@@ -31,10 +32,17 @@ inline Vec3f cross(Vec3f a, Vec3f b) {
 inline float length(Vec3f a) {
   return std::sqrt(dot(a, a));
 }
-/// Unit vector along a; the zero vector stays zero.
+/// Unit vector along a, at any scale float holds; the zero vector (or one that is not finite)
+/// gives the zero vector.
 inline Vec3f normalize(Vec3f a) {
-  const float l = length(a);
-  return l > 0 ? a * (1.0f / l) : Vec3f{};
+  const float squared = dot(a, a);
+  if (squared > 1e-30f && squared < 1e30f) return a * (1.0f / std::sqrt(squared));
+  // Far from unit length the square underflows or overflows (a cross product of two edges of
+  // a model 1e-12 or 1e13 across): scale by the largest component first.
+  const float largest = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+  if (!(largest > 0) || !std::isfinite(largest)) return {};
+  const Vec3f b = a * (1.0f / largest);
+  return b * (1.0f / length(b));
 }
 
 /// A texel of the position image: xyz position, w saliency (DESIGN.md).
