@@ -147,8 +147,9 @@ std::string SculptSession::finishStroke() {
 }
 
 gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
-                                                 const gpu::StrokeSettings& settings) {
-  gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings);
+                                                 const gpu::StrokeSettings& settings,
+                                                 const std::function<void(int, int)>& progress) {
+  gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings, progress);
   const auto start = std::chrono::steady_clock::now();
   // The path's points stay on their surface points, so a script that dabs there again (a
   // limb pulled by repeated clicks) finds the same spot after the relaxation.

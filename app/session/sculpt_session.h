@@ -95,9 +95,10 @@ public:
 
   /// Runs a whole stroke along settings.path (runStroke's contract; radius in object units)
   /// with brush as loaded: the same rules as an interactive stroke (gpu/stroke_rules.h). It is
-  /// not recorded in history().
+  /// not recorded in history(). progress, when set, is told (dabs made, dabs expected).
   gpu::StrokeResult strokeAlongPath(const gpu::BrushManifest& brush,
-                                    const gpu::StrokeSettings& settings);
+                                    const gpu::StrokeSettings& settings,
+                                    const std::function<void(int, int)>& progress = {});
 
   /// Keep detail (on by default): after a sculpt stroke moved positions, the region it changed
   /// (grown so samples can flow in from around it) is relaxed where the stroke stretched it

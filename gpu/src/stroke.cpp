@@ -2,13 +2,17 @@
 
 #include "undo_capture.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/gpu/stroke_rules.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -93,6 +97,12 @@ std::vector<double> linearPieces(std::array<double, 2> a, std::array<double, 2> 
   return ts;
 }
 
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
 } // namespace
 
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
@@ -118,7 +128,8 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
 }
 
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
-                       const StrokeSettings& settings) {
+                       const StrokeSettings& settings,
+                       const std::function<void(int, int)>& progress) {
   if (settings.path.empty()) badSetting("the stroke's path has no point");
   if (!settings.dragPoints.empty() && brush.stroke != StrokeKind::Anchored &&
       brush.stroke != StrokeKind::Drag)
@@ -131,6 +142,8 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
   // One session fed the path points: a scripted stroke and an interactive one follow the same
   // rules and dab at the same places.
   StrokeSession session(engine, document, brush, settings);
+  const int expected = session.expectDabs(settings.path, settings.dragPoints, settings.radius);
+  if (progress) session.observeDabs([&progress, expected](int done) { progress(done, expected); });
   for (const auto& uv : settings.path)
     session.moveToUv({uv[0], uv[1]}, settings.radius, settings.strength, settings.pressure);
   for (const core::Vec3f& point : settings.dragPoints)
@@ -174,6 +187,7 @@ struct StrokeSession::State {
   double engineMs = 0;
   std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
   std::set<std::array<int, 4>> touchedSeams; ///< border runs seamed since the last takeTouched()
+  std::function<void(int)> onDab;            ///< told the dab count after each dab, if set
   bool finished = false;
   bool abandoned = false; ///< a dab failed and the stroke was undone
 
@@ -222,7 +236,6 @@ struct StrokeSession::State {
   void walkTo(std::array<double, 2> b, double spacing, float radius, float strength,
               float pressure) {
     const std::array<double, 2> a = *previous;
-    previous = b;
     // A radius far below a sample would make dabs without end: at most 1e4 per diagonal.
     spacing = std::max(spacing, 1e-4 * diagonal);
     // The spacing shrank since the last walk (pen pressure on the radius): a dab is due now.
@@ -231,10 +244,18 @@ struct StrokeSession::State {
       return std::array<double, 2>{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
     };
     const std::vector<double> ts = linearPieces(a, b);
+    std::vector<double> lengths(ts.size() - 1);
+    double total = 0;
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const auto p0 = at(ts[k]), p1 = at(ts[k + 1]);
+      lengths[k] = core::length(startPosition(p1[0], p1[1]) - startPosition(p0[0], p0[1]));
+      total += lengths[k];
+    }
+    requireDabBudget(total + travelled, spacing);
+    previous = b;
     for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
       const double t0 = ts[k], t1 = ts[k + 1];
-      const auto p0 = at(t0), p1 = at(t1);
-      const double length = core::length(startPosition(p1[0], p1[1]) - startPosition(p0[0], p0[1]));
+      const double length = lengths[k];
       double used = 0; // of this piece, up to the last dab on it
       while (travelled + (length - used) >= spacing) {
         used += spacing - travelled;
@@ -244,6 +265,46 @@ struct StrokeSession::State {
       }
       travelled += length - used;
     }
+  }
+
+  // The length of the straight walk a → b (image coordinates, in samples) on the surface as
+  // the stroke began.
+  double walkLength(std::array<double, 2> a, std::array<double, 2> b) const {
+    const std::vector<double> ts = linearPieces(a, b);
+    double total = 0;
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const double t0 = ts[k], t1 = ts[k + 1];
+      total += core::length(startPosition(a[0] + t1 * (b[0] - a[0]), a[1] + t1 * (b[1] - a[1])) -
+                            startPosition(a[0] + t0 * (b[0] - a[0]), a[1] + t0 * (b[1] - a[1])));
+    }
+    return total;
+  }
+
+  // Refuses, before any dab of this move, a walk of `length` (object units) at `spacing` that
+  // would take the stroke past kMaxStrokeDabs: a drag to infinity or a radius far below a
+  // sample would otherwise dab without end.
+  void requireDabBudget(double length, double spacing) const {
+    const double images = std::pow(2.0, std::popcount(settings.symmetry & 7u));
+    const double expected = dabs + images * std::floor(length / spacing);
+    if (expected <= kMaxStrokeDabs) return;
+    badSetting("the stroke would make about " + shortNumber(expected) + " dabs (a path " +
+               shortNumber(length / diagonal) + " diagonals long at a spacing of " +
+               shortNumber(spacing / diagonal) + " diagonals); a stroke makes at most " +
+               std::to_string(kMaxStrokeDabs) +
+               ": use a larger spacing or radius, or a shorter path");
+  }
+
+  // Refuses a drag target farther than kMaxDragDiagonals from the model's centre.
+  void requireDragReach(core::Vec3f point) const {
+    // In double: a point at 1e30 squares past float's range.
+    const double dx = double(point.x) - centre.x, dy = double(point.y) - centre.y,
+                 dz = double(point.z) - centre.z;
+    const double away = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (away <= kMaxDragDiagonals * diagonal) return;
+    badSetting("a drag point lies " + shortNumber(away / diagonal) +
+               " diagonals from the model's centre; a drag reaches at most " +
+               shortNumber(kMaxDragDiagonals) + " diagonals (the model is " +
+               shortNumber(diagonal) + " across): drag within reach");
   }
 
   // One dab at image point (x, y) in samples and its mirror images, capturing the undo tiles
@@ -338,6 +399,7 @@ struct StrokeSession::State {
       }
     }
     dabs += static_cast<int>(images.size());
+    if (onDab) onDab(dabs);
   }
 
   // Moves the stroke to image point xy (in samples): the first move dabs there, later ones
@@ -376,6 +438,7 @@ struct StrokeSession::State {
     const float facing = core::dot(direction, plane);
     if (std::abs(facing) < 1e-6f * core::length(direction)) return 0; // along the plane: no point
     const core::Vec3f point = origin + direction * (core::dot(startPoint - origin, plane) / facing);
+    requireDragReach(point);
     core::Vec3f target = point - startPoint;
     return dragBy(target - plane * core::dot(target, plane), radius, strength, pressure);
   }
@@ -386,6 +449,7 @@ struct StrokeSession::State {
     checkDragMove(radius, strength, pressure);
     for (float v : {point.x, point.y, point.z})
       checkFinite("the drag's point", v);
+    requireDragReach(point);
     const core::Vec3f target = point - startPoint;
     return dragBy(target - dragNormal * core::dot(target, dragNormal), radius, strength, pressure);
   }
@@ -412,6 +476,7 @@ struct StrokeSession::State {
       const core::Vec3f from = lastDrag;
       const double length = core::length(target - from);
       travelled = std::min(travelled, spacing);
+      requireDabBudget(length + travelled, spacing);
       double used = 0;
       while (travelled + (length - used) >= spacing) {
         used += spacing - travelled;
@@ -441,8 +506,10 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
     box.extend(bounds.box(t).min);
     box.extend(bounds.box(t).max);
   }
+  if (const auto problem = core::sizeProblem(box))
+    throw core::Error(core::ErrorKind::InvalidInput, "cannot sculpt this document: " + *problem);
   state_->centre = (box.min + box.max) * 0.5f;
-  state_->diagonal = std::max(static_cast<double>(core::length(box.max - box.min)), 1e-6);
+  state_->diagonal = static_cast<double>(core::length(box.max - box.min));
 }
 
 StrokeSession::~StrokeSession() = default;
@@ -479,6 +546,44 @@ int StrokeSession::dragTo(core::Vec3f point, float radius, float strength, float
                       "brush " + state_->brush.id + " does not drag (its \"stroke\" is \"" +
                           std::string(toManifestName(state_->brush.stroke)) + "\")");
   return state_->dragTo(point, radius, strength, pressure);
+}
+
+int StrokeSession::expectDabs(const std::vector<std::array<float, 2>>& path,
+                              const std::vector<core::Vec3f>& dragPoints, float radius) const {
+  State& st = *state_;
+  for (const auto& uv : path)
+    checkPoint({uv[0], uv[1]});
+  checkFinite("the radius", radius);
+  for (const core::Vec3f& p : dragPoints)
+    st.requireDragReach(p);
+  const double spacing =
+      std::max(static_cast<double>(dabSpacing(st.brush, st.settings.spacing)) * std::abs(radius),
+               1e-4 * st.diagonal);
+  const double n = st.document.size();
+  const auto xy = [n](const std::array<float, 2>& uv) {
+    return std::array<double, 2>{uv[0] * n, uv[1] * n};
+  };
+  double length = 0;
+  if (st.brush.stroke != StrokeKind::Anchored)
+    for (std::size_t k = 1; k < path.size(); ++k)
+      length += st.walkLength(xy(path[k - 1]), xy(path[k]));
+  if (!path.empty() && !dragPoints.empty()) {
+    core::Vec3f from = st.startPosition(xy(path.front())[0], xy(path.front())[1]);
+    for (const core::Vec3f& p : dragPoints) {
+      // An anchored stroke dabs once per drag move; a drag stroke walks to each point.
+      length += st.brush.stroke == StrokeKind::Anchored ? spacing : core::length(p - from);
+      from = p;
+    }
+  }
+  const int first =
+      path.empty() ? 0 : static_cast<int>(std::pow(2.0, std::popcount(st.settings.symmetry & 7u)));
+  st.requireDabBudget(length, spacing);
+  const double images = std::pow(2.0, std::popcount(st.settings.symmetry & 7u));
+  return first + static_cast<int>(images * std::floor(length / spacing));
+}
+
+void StrokeSession::observeDabs(std::function<void(int)> observer) {
+  state_->onDab = std::move(observer);
 }
 
 bool StrokeSession::drags() const {

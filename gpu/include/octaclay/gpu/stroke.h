@@ -5,6 +5,7 @@
 #include "octaclay/gpu/brush_engine.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,15 @@ namespace octaclay::gpu {
 
 /// Mirror planes through the model's centre (bounding-box centre at the stroke's start).
 enum SymmetryAxis : unsigned { kSymmetryNone = 0, kSymmetryX = 1, kSymmetryY = 2, kSymmetryZ = 4 };
+
+/// The most dabs one stroke may make (mirrored ones included): a stroke that would make more is
+/// refused before its walk (core::Error(InvalidArgument)), so no path, drag or spacing makes a
+/// stroke without end.
+inline constexpr int kMaxStrokeDabs = 100'000;
+
+/// How far a drag may reach, in diagonals of the model's bounding box: a drag point farther
+/// from the model's centre is refused (core::Error(InvalidArgument)).
+inline constexpr double kMaxDragDiagonals = 100;
 
 /// A stroke: a path over the image and the brush settings shared by all its dabs.
 struct StrokeSettings {
@@ -49,11 +59,16 @@ struct StrokeResult {
 /// core::Error(InvalidArgument) for an empty path, drag points for a brush that does not drag or
 /// that are not finite, a point outside [0, 1], a radius, strength, pressure, spacing or view that
 /// is not finite, or a parameter that is not finite or outside its [min, max];
-/// core::Error(InvalidInput) when the result holds a non-finite value or a coordinate beyond ±1e18
+/// a drag point farther than kMaxDragDiagonals from the model, or a stroke that would make more
+/// than kMaxStrokeDabs dabs; core::Error(InvalidInput) for a model with no usable size
+/// (core::sizeProblem) and when the result holds a non-finite value or a coordinate beyond ±1e15
 /// ("the brush produced a non-finite value at sample (i, j) …"); BrushTimeoutError when a pass
 /// overran the engine's time limit.
+/// progress, when set, is told (dabs made, dabs expected) after each dab; the expected count
+/// (StrokeSession::expectDabs) is checked against kMaxStrokeDabs before the first dab.
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
-                       const StrokeSettings& settings);
+                       const StrokeSettings& settings,
+                       const std::function<void(int, int)>& progress = {});
 
 /// The sample whose position is nearest to p (searching only tiles near p).
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
@@ -71,7 +86,10 @@ class StrokeSession {
 public:
   /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush,
   /// core::Error(InvalidArgument) for a parameter, spacing or view that is not finite or a
-  /// parameter outside its [min, max].
+  /// parameter outside its [min, max], core::Error(InvalidInput) for a model with no usable
+  /// size (core::sizeProblem: a point, or smaller than float can resolve). Every move below
+  /// throws core::Error(InvalidArgument) before dabbing when the stroke would pass
+  /// kMaxStrokeDabs, or a drag would reach past kMaxDragDiagonals.
   StrokeSession(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                 StrokeSettings settings);
   ~StrokeSession();
@@ -105,13 +123,21 @@ public:
   /// The same to a point in object space: the drag is from the stroke's start to point,
   /// projected into the view plane when settings.viewEye is set.
   int dragTo(core::Vec3f point, float radius, float strength, float pressure = 1.0f);
+  /// About how many dabs moving along path (each pair in [0, 1]) and then dragging through
+  /// dragPoints at this radius will make, before any of it is done. Throws
+  /// core::Error(InvalidArgument) when that passes kMaxStrokeDabs or a drag point lies beyond
+  /// kMaxDragDiagonals, so a scripted stroke is refused before its first dab.
+  int expectDabs(const std::vector<std::array<float, 2>>& path,
+                 const std::vector<core::Vec3f>& dragPoints, float radius) const;
+  /// observer is told the stroke's dab count after each dab (a progress display).
+  void observeDabs(std::function<void(int)> observer);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
 
   int dabs() const;
   double engineMs() const;
   /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
-  /// layer now holds a non-finite value or a position beyond ±1e18, the layers are restored
+  /// layer now holds a non-finite value or a position beyond ±1e15, the layers are restored
   /// bit for bit and core::Error(InvalidInput) names the sample instead.
   core::Stroke finish(const std::string& label);
 
