@@ -1,7 +1,9 @@
 #include "commands.h"
 #include "json_output.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/surface_distance.h"
@@ -43,16 +45,20 @@ Command addCompareCommand(CLI::App& app) {
 
   return {sub, [opt]() {
             const core::TriangleMesh a = loadSurface(opt->a);
+            // Distances are fractions of a's size: a has to have one.
+            if (const auto problem = core::sizeProblem(core::boundingBox(a)))
+              throw core::Error(core::ErrorKind::InvalidInput, opt->a + ": " + *problem);
             const core::TriangleMesh b = loadSurface(opt->b);
-            const core::SurfaceDistance d =
-                core::compareSurfaces(a, b, {.samplesPerSurface = opt->samples});
+            const core::SurfaceDistanceOptions options{.samplesPerSurface = opt->samples};
+            const core::SurfaceDistance d = core::compareSurfaces(a, b, options);
             if (opt->json) {
               nlohmann::json out{{"a", opt->a},
                                  {"b", opt->b},
                                  {"rms", d.rms},
                                  {"hausdorff", d.hausdorff},
                                  {"diagonal", d.diagonal},
-                                 {"samples", d.samples}};
+                                 {"samples", d.samples},
+                                 {"report", surfaceReportJson(&d, options)}};
               // JSON has no infinity: identical surfaces report psnr null.
               out["psnr"] =
                   std::isfinite(d.psnr) ? nlohmann::json(d.psnr) : nlohmann::json(nullptr);
@@ -64,6 +70,10 @@ Command addCompareCommand(CLI::App& app) {
                         << d.hausdorff * d.diagonal << ")\n"
                         << "PSNR       " << d.psnr << " dB\n"
                         << "samples    " << d.samples << "\n";
+              if (d.boundedQueries > 0)
+                std::cout << "note       " << d.boundedQueries
+                          << " queries stopped at their work bound (a tangled surface): the "
+                             "figures are upper bounds\n";
             }
             return kExitOk;
           }};

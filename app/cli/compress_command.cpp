@@ -5,10 +5,13 @@
 #include "commands.h"
 #include "finite_arguments.h"
 #include "json_output.h"
+#include "output_rules.h"
+#include "progress_line.h"
 #include "rd_measure.h"
 
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/atomic_output.h"
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/file_extension.h"
@@ -71,7 +74,7 @@ nlohmann::json finiteOrNull(double v) {
 struct CompressOptionsCli {
   std::string input, output, codec, mode;
   double quality = -1; // < 0: the codec's default
-  bool json = false, sweep = false;
+  bool json = false, sweep = false, noReport = false;
   std::size_t samples = 0;
 };
 
@@ -149,8 +152,13 @@ int runCompress(const CompressOptionsCli& opt) {
                                                             std::string(codec.info.id) + ": " +
                                                             std::string(codec.info.quality) + ")");
   requireExtension(opt.output, ".ocz", "the compressed document");
+  requireNotInput(opt.output, opt.input);
 
+  ProgressLine progress("compress", !opt.json);
+  progress.stage("reading");
   const core::Document doc = core::readDocument(opt.input);
+  core::requireUsableSize(doc.positions, opt.input);
+  progress.stage("encoding");
   core::CompressOptions options;
   options.codec = opt.codec;
   options.params.quality = opt.quality;
@@ -174,6 +182,7 @@ int runCompress(const CompressOptionsCli& opt) {
                           ": " + why);
   }
   const double encodeMs = millisecondsSince(start);
+  progress.stage("decoding");
   start = Clock::now();
   const core::Document decoded = core::decompressDocument(bytes);
   const double decodeMs = millisecondsSince(start);
@@ -194,7 +203,10 @@ int runCompress(const CompressOptionsCli& opt) {
                      {"exact", exact}};
   if (codec.info.lossy) out["quality"] = quality;
   if (!opt.mode.empty()) out["mode"] = opt.mode;
-  if (!exact) {
+  if (!exact && opt.noReport) {
+    out["report"] = nullptr;
+  } else if (!exact) {
+    progress.stage("measuring");
     const Distortion d =
         measureDistortion(makeRdReference(doc.positions), decoded.positions, opt.samples);
     out["psnr"] = finiteOrNull(d.psnr);
@@ -202,6 +214,13 @@ int runCompress(const CompressOptionsCli& opt) {
     out["hausdorff"] = d.hausdorff;
     out["normal_angle_deg"] = d.normalAngleDeg;
     out["max_seam_gap"] = d.maxSeamGap;
+    out["report"] = {{"method", "sampled"},
+                     {"samples", d.samples},
+                     {"stride", d.stride},
+                     {"leaves_per_query", core::SurfaceDistanceOptions{}.leavesPerQuery},
+                     {"leaf_budget", core::SurfaceDistanceOptions{}.leafBudget},
+                     {"bounded_queries", d.boundedQueries},
+                     {"exact", d.boundedQueries == 0}};
   }
   // Measured and reported before the file is committed: a failure leaves the previous one.
   std::ostringstream report;
@@ -216,6 +235,8 @@ int runCompress(const CompressOptionsCli& opt) {
          << decodeMs << " ms\n";
   if (exact)
     report << "positions exact\n";
+  else if (opt.noReport)
+    report << "lossy; no error report (--no-report)\n";
   else
     report << "PSNR " << out["psnr"].dump() << " dB, RMS " << out["rms"].get<double>()
            << ", Hausdorff " << out["hausdorff"].get<double>() << " of the diagonal\n"
@@ -248,6 +269,8 @@ Command addCompressCommand(CLI::App& app) {
   sub->add_option("--samples", opt->samples,
                   "Random points per surface for the error, besides the vertices")
       ->capture_default_str();
+  sub->add_flag("--no-report", opt->noReport,
+                "Skip the error figures of a lossy codec (PSNR, RMS, Hausdorff, normals)");
   sub->add_flag("--json", opt->json, "Print one JSON object");
   return {sub, [opt]() { return runCompress(*opt); }};
 }
@@ -265,6 +288,7 @@ Command addDecompressCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
   return {sub, [opt]() {
             requireExtension(opt->output, ".exr", "the document");
+            requireNotInput(opt->output, opt->input);
             const std::vector<std::uint8_t> bytes = readBytes(opt->input);
             const auto start = Clock::now();
             const core::Document doc = [&] {

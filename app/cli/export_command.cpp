@@ -1,7 +1,9 @@
 #include "commands.h"
 #include "json_output.h"
+#include "output_rules.h"
 
 #include "octaclay/core/document/atomic_output.h"
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/lod_export.h"
@@ -152,9 +154,18 @@ Command addExportCommand(CLI::App& app) {
                                     " is too small: a closed mesh has at least 4 triangles; ask "
                                     "for more than 4");
             requireNormalMapPath(opt->normalMap);
+            if (!opt->normalMap.empty())
+              requireNotInput(opt->normalMap, opt->input, "--normal-map");
+            requireNotInput(opt->output, opt->input);
             core::Document document =
                 core::readDocument(opt->input, {.layers = kind != ExportKind::Plain && !collapse});
             const int n = document.size();
+            if (collapse && n < 4)
+              throw core::Error(core::ErrorKind::InvalidArgument,
+                                "--triangles needs a document of N = 4 or more: this one is N = " +
+                                    std::to_string(n) + " (" + std::to_string(2 * n * n) +
+                                    " triangles); export it without --triangles");
+            if (collapse) core::requireUsableSize(document.positions, opt->input);
             const int m = sub->count("--lod") > 0 ? opt->lod : n;
             if (m < 2 || m > n || (m & (m - 1)) != 0)
               throw core::Error(

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace octaclay::app {
@@ -20,6 +21,9 @@ inline const CLI::Validator kFiniteNumber(
         const double v = std::stod(text, &used);
         if (used == text.size() && !std::isfinite(v))
           return "'" + text + "' is not a finite number";
+        // Options are floats: 1e39 would become infinity and be reported as 'inf'.
+        if (used == text.size() && std::abs(v) > std::numeric_limits<float>::max())
+          return "'" + text + "' is beyond the range of a float (±3.4e38)";
       } catch (const std::exception&) {
         // Not a number at all: CLI11's own conversion reports it.
       }

@@ -1,5 +1,7 @@
 #include "commands.h"
 #include "json_output.h"
+#include "output_rules.h"
+#include "progress_line.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
@@ -21,26 +23,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
-
-// A progress line on stderr once the work has taken a second, rewritten in place.
-class ProgressLine {
-public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
-  ~ProgressLine() {
-    if (shown_) std::cerr << "\n";
-  }
-  void report(const char* stage, float fraction) {
-    if (!enabled_ || millisecondsSince(start_) < 1000) return;
-    shown_ = true;
-    std::cerr << "\rimport: " << stage << " " << static_cast<int>(fraction * 100) << " %   "
-              << std::flush;
-  }
-
-private:
-  bool enabled_;
-  bool shown_ = false;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 // "vertex colours", "texture <path>" or "none": what the diffuse layer was made from.
 std::string describe(const core::ImportedDiffuse& diffuse) {
@@ -76,12 +58,16 @@ Command addImportCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
-  sub->add_flag("--quiet", opt->quiet, "No progress line on stderr");
+  sub->add_flag("--quiet", opt->quiet,
+                "No progress line on stderr (shown only on a terminal, never with --json)");
 
   return {sub, [opt]() {
+            requireOutputExtension(opt->output, {".exr"}, "the document");
+            requireNotInput(opt->output, opt->input);
             core::requireValidSize(opt->size);
             const auto start = std::chrono::steady_clock::now();
-            ProgressLine progress(!opt->quiet);
+            ProgressLine progress("import", !opt->quiet && !opt->json);
+            progress.stage("reading the mesh");
             core::ValidationOptions validation;
             validation.fillHoles = opt->fillHoles;
             validation.maxHoleEdges = opt->maxHoleEdges;
@@ -100,13 +86,13 @@ Command addImportCommand(CLI::App& app) {
                                 opt->input + ": the spherical map folds over itself (" +
                                     std::to_string(map.flipped) +
                                     " flipped triangles); this mesh is not supported yet");
-            progress.report("resampling", 0.0f);
+            progress.stage("resampling");
             const auto sampleStart = std::chrono::steady_clock::now();
             core::ImportedDiffuse diffuse;
             const core::Document document =
                 core::importValidatedMesh(validated, map, opt->size, &diffuse);
             const double sampleMs = millisecondsSince(sampleStart);
-            progress.report("measuring", 0.0f);
+            progress.stage("measuring");
             core::SurfaceDistanceOptions distanceOptions;
             distanceOptions.samplesPerSurface = 200'000;
             const core::ImportQuality quality =
@@ -158,6 +144,7 @@ Command addImportCommand(CLI::App& app) {
               for (const std::string& note : diffuse.notes)
                 report << "  note       " << note << "\n";
             }
+            progress.stage("writing");
             core::writeDocument(document, opt->output);
             std::cout << report.str();
             return kExitOk;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry/triangle_mesh.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,22 @@ inline nlohmann::json toJson(core::Vec3f v) {
 
 inline nlohmann::json toJson(const core::BoundingBox& box) {
   return {{"min", toJson(box.min)}, {"max", toJson(box.max)}, {"diagonal", box.diagonal()}};
+}
+
+/// How a command measured the surface distance it reports (issue 34): sampled closest points
+/// with a work bound per query and in all (every stride-th sample when a pilot says the whole
+/// would pass it), so a report never costs more than the work; null when the user asked for
+/// none (--no-report).
+inline nlohmann::json surfaceReportJson(const core::SurfaceDistance* distance,
+                                        const core::SurfaceDistanceOptions& options) {
+  if (distance == nullptr) return nullptr;
+  return {{"method", "sampled"},
+          {"samples", distance->samples},
+          {"leaves_per_query", options.leavesPerQuery},
+          {"leaf_budget", options.leafBudget},
+          {"stride", distance->stride},
+          {"bounded_queries", distance->boundedQueries},
+          {"exact", distance->boundedQueries == 0}};
 }
 
 /// What commands print with --json: nlohmann::json whose dump() never throws (see jsonText).

@@ -4,8 +4,10 @@
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_error.h"
 
+#include <cctype>
 #include <iostream>
 #include <new>
+#include <string>
 
 using namespace octaclay;
 
@@ -38,6 +40,36 @@ bool sizedByArgument(const CLI::App& subcommand) {
   return subcommand.get_name() == "new" || subcommand.get_name() == "import";
 }
 
+// A token that is a value, not an option, though it starts with '-': a negative number or a
+// list of them ("-0.5", "-1,0,0", "-.3").
+bool looksLikeValue(const std::string& token) {
+  return token.size() >= 2 &&
+         (std::isdigit(static_cast<unsigned char>(token[1])) != 0 || token[1] == '.');
+}
+
+// CLI11 reports a missing argument before an unknown option ("document is required" for
+// `relax --frobnicate`): name the option the user typed instead. Returns the first token after
+// the subcommand that looks like an option and is none of its options, or "".
+std::string unknownOption(CLI::App& cli, int argc, char** argv) {
+  if (argc < 2) return {};
+  CLI::App* sub = nullptr;
+  try {
+    sub = cli.get_subcommand(argv[1]);
+  } catch (const CLI::Error&) {
+    return {};
+  }
+  for (int k = 2; k < argc; ++k) {
+    const std::string token = argv[k];
+    if (token == "--") break;
+    if (token.size() < 2 || token[0] != '-' || looksLikeValue(token)) continue;
+    const std::string name =
+        token[1] == '-' ? token.substr(0, token.find('=')) : token.substr(0, 2);
+    if (name == "--help" || name == "-h") continue;
+    if (sub->get_option_no_throw(name) == nullptr) return name;
+  }
+  return {};
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -50,11 +82,38 @@ int main(int argc, char** argv) {
       app::addImportCommand(cli),     app::addLodCommand(cli),    app::addCompressCommand(cli),
       app::addDecompressCommand(cli), app::addRelaxCommand(cli)};
 
+  cli.set_version_flag("--version", std::string("octaclay-cli ") + OCTACLAY_VERSION);
+  if (argc >= 2 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : cli.get_subcommands([](CLI::App*) { return true; })) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "octaclay-cli: error: no subcommand '" << argv[1]
+                << "' (the subcommands: " << names << ")\n";
+      return app::kExitUsage;
+    }
+  }
+  if (const std::string unknown = unknownOption(cli, argc, argv); !unknown.empty()) {
+    std::cerr << "octaclay-cli: error: " << argv[1] << " has no option " << unknown
+              << " (see octaclay-cli " << argv[1] << " --help)\n";
+    return app::kExitUsage;
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = cli.exit(e);
-    return code == 0 ? app::kExitOk : app::kExitUsage;
+    if (e.get_exit_code() == 0) return cli.exit(e); // --help, --version
+    // One line: what was wrong, and where to read what is right.
+    std::string where;
+    try {
+      if (argc >= 2) where = " " + cli.get_subcommand(argv[1])->get_name();
+    } catch (const CLI::Error&) { // not a subcommand: the general help
+    }
+    std::cerr << "octaclay-cli: error: " << e.what() << " (see octaclay-cli" << where
+              << " --help)\n";
+    return app::kExitUsage;
   }
 
   const CLI::App* chosen = nullptr;

@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+#include "output_rules.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
@@ -29,6 +30,7 @@ Command addNewCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt]() {
+            requireOutputExtension(opt->output, {".exr"}, "the document");
             const auto shape = core::parseBaseShape(opt->shape);
             if (!shape)
               throw core::Error(core::ErrorKind::InvalidArgument,

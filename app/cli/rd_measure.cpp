@@ -77,6 +77,9 @@ Distortion measureDistortion(const RdReference& reference, const core::GeometryI
   d.psnr = distance.psnr;
   d.rms = distance.rms;
   d.hausdorff = distance.hausdorff;
+  d.boundedQueries = distance.boundedQueries;
+  d.samples = distance.samples;
+  d.stride = distance.stride;
   d.maxSeamGap = core::maxSeamGap(decoded);
   const std::vector<core::Vec3f> normals = core::computeNormals(decoded);
   const int n = decoded.size();

@@ -29,11 +29,14 @@ std::vector<core::Vec3f> areaWeightedNormals(const core::TriangleMesh& mesh);
 
 /// How far a decoded surface is from the reference.
 struct Distortion {
-  double psnr = 0;           ///< dB, 20 log10(1/rms); +inf when equal
-  double rms = 0;            ///< fraction of the bounding-box diagonal
-  double hausdorff = 0;      ///< fraction of the bounding-box diagonal
-  double normalAngleDeg = 0; ///< mean angle between corresponding vertex normals
-  double maxSeamGap = 0;     ///< object units; 0 = no cracks
+  double psnr = 0;                ///< dB, 20 log10(1/rms); +inf when equal
+  double rms = 0;                 ///< fraction of the bounding-box diagonal
+  double hausdorff = 0;           ///< fraction of the bounding-box diagonal
+  double normalAngleDeg = 0;      ///< mean angle between corresponding vertex normals
+  double maxSeamGap = 0;          ///< object units; 0 = no cracks
+  std::size_t boundedQueries = 0; ///< closest-point queries stopped at their work bound
+  std::size_t samples = 0;        ///< points measured
+  std::size_t stride = 1;         ///< every stride-th sample measured
 };
 /// samples: random points per surface besides the vertices (compareSurfaces).
 Distortion measureDistortion(const RdReference& reference, const core::GeometryImage& decoded,

@@ -2,8 +2,11 @@
 #include "commands.h"
 #include "finite_arguments.h"
 #include "json_output.h"
+#include "output_rules.h"
+#include "progress_line.h"
 #include "sculpt_session.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_engine.h"
@@ -15,9 +18,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace octaclay::app {
 namespace {
@@ -36,6 +41,11 @@ std::vector<float> numbers(const std::string& text, char separator, const std::s
     float v = 0;
     try {
       v = std::stof(item, &used);
+    } catch (const std::out_of_range&) {
+      if (std::isfinite(std::strtod(item.c_str(), nullptr)))
+        badArgument(what + ": '" + item +
+                    "' is outside what a float holds (magnitudes up to 3.4e38)");
+      used = 0;
     } catch (const std::exception&) {
       used = 0;
     }
@@ -178,7 +188,7 @@ Command addStrokeCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--spacing", opt->spacing,
                   "Between dabs, along the surface as the stroke began, as a fraction of the "
-                  "radius, at least 0.01 (default: the brush's, 0.15 for the built-ins)")
+                  "radius, 0.01 to 100 (default: the brush's, 0.15 for the built-ins)")
       ->check(kFiniteNumber);
   sub->add_option("--symmetry", opt->symmetry, "Mirror planes through the model's centre: x, y, z");
   sub->add_option("--view", opt->view,
@@ -198,9 +208,15 @@ Command addStrokeCommand(CLI::App& app) {
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {
-      sub, [opt]() {
+      sub, [opt, sub]() {
+        requireOutputExtension(opt->output, {".exr"}, "the document");
         requireFinite(opt->strength, "--strength");
         requireFinite(opt->spacing, "--spacing");
+        // Given, the spacing is the user's: never silently the default or a clamp.
+        if (sub->count("--spacing") > 0 && !(opt->spacing >= 0.01f && opt->spacing <= 100))
+          badArgument("--spacing " + sub->get_option("--spacing")->as<std::string>() +
+                      " is outside 0.01 to 100 (a fraction of the radius between dabs; leave it "
+                      "out for the brush's own)");
         if (!(opt->radius > 0 && opt->radius <= 1))
           badArgument("--radius must be in (0, 1] (a fraction of the bounding-box diagonal)");
         const std::vector<std::array<float, 2>> path = parsePath(opt->path);
@@ -244,7 +260,10 @@ Command addStrokeCommand(CLI::App& app) {
           settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
         }
 
+        ProgressLine progress("stroke", !opt->json);
+        progress.stage("reading");
         core::Document document = core::readDocument(opt->input);
+        core::requireUsableSize(document.positions, "cannot sculpt " + opt->input);
         const gpu::GlContext context = gpu::GlContext::createHeadless();
         gpu::BrushEngine engine;
         loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
@@ -255,7 +274,11 @@ Command addStrokeCommand(CLI::App& app) {
         session.loadBrush(*brush);
         session.setDocument(std::move(document));
         settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();
-        const gpu::StrokeResult result = session.strokeAlongPath(*brush, settings);
+        progress.stage("stroking");
+        const gpu::StrokeResult result =
+            session.strokeAlongPath(*brush, settings, [&progress](int done, int expected) {
+              progress.count("dabs", done, expected);
+            });
         const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
         std::ostringstream report; // made before the save, which commits last
         if (opt->json)
@@ -271,6 +294,7 @@ Command addStrokeCommand(CLI::App& app) {
         else
           report << "stroke " << brush->id << ": " << result.dabs << " dabs in " << result.engineMs
                  << " ms (" << perDab << " ms per dab), wrote " << opt->output << "\n";
+        progress.stage("writing");
         core::writeDocument(session.document(), opt->output);
         std::cout << report.str();
         return kExitOk;

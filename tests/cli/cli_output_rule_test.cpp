@@ -233,16 +233,17 @@ void CliOutputRuleTest::staleTemporaryOfADeadRunIsRemoved() {
 }
 
 void CliOutputRuleTest::fifoTargetIsRefused() {
-  const QString fifo = file("pipe.off");
+  const QString fifo = file("pipe.off"), documentFifo = file("pipe.exr");
   QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+  QVERIFY(::mkfifo(documentFifo.toUtf8().constData(), 0644) == 0);
   for (const QStringList& args :
        {QStringList{"export", cube_, "-o", fifo},
-        QStringList{"new", "--shape", "cube", "--size", "16", "-o", file("pipe.off")}}) {
+        QStringList{"new", "--shape", "cube", "--size", "16", "-o", documentFifo}}) {
     const Result r = runCli(args);
     QVERIFY2(!r.crashed && r.exitCode == kIo, qPrintable(describe(args, r)));
     QVERIFY2(r.err.contains("not a regular file"), qPrintable(describe(args, r)));
     struct stat st {};
-    QVERIFY(::lstat(fifo.toUtf8().constData(), &st) == 0 && S_ISFIFO(st.st_mode));
+    QVERIFY(::lstat(args.last().toUtf8().constData(), &st) == 0 && S_ISFIFO(st.st_mode));
   }
   QVERIFY(temporaries(dir_.path()).isEmpty());
 }
