@@ -8,15 +8,19 @@
 
 #include "octaclay/core/geometry/base_shapes.h"
 
+#include <QAction>
+#include <QApplication>
 #include <QGuiApplication>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <X11/XKBlib.h>
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
 #include <X11/keysym.h>
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <cmath>
 #include <memory>
 
 using namespace octaclay;
@@ -45,9 +49,22 @@ public:
     XTestFakeButtonEvent(display_, button, down, CurrentTime);
     settle();
   }
+  /// The key the symbol is on, at whatever level: XK_KP_1 is the keypad's 1/End key, which
+  /// gives KP_End with NumLock off.
   void key(KeySym symbol, bool down) {
     XTestFakeKeyEvent(display_, XKeysymToKeycode(display_, symbol), down, CurrentTime);
     settle();
+  }
+  bool numLock() {
+    XkbStateRec state;
+    XkbGetState(display_, XkbUseCoreKbd, &state);
+    return state.locked_mods & XkbKeysymToModifiers(display_, XK_Num_Lock);
+  }
+  /// Presses NumLock until it is on (or off), as a user would.
+  bool setNumLock(bool on) {
+    for (int tries = 0; tries < 2 && numLock() != on; ++tries)
+      press({XK_Num_Lock});
+    return numLock() == on;
   }
   void press(std::initializer_list<KeySym> chord) {
     for (KeySym k : chord)
@@ -64,6 +81,14 @@ private:
   Display* display_;
 };
 
+/// Makes w the active window as a click on its title would: with no window manager under Xvfb
+/// nothing else gives a new window the X input focus.
+bool activate(QWidget& w) {
+  w.activateWindow();
+  w.raise();
+  return QTest::qWaitForWindowActive(&w);
+}
+
 } // namespace
 
 class RealInputRenderTest : public QObject {
@@ -72,6 +97,7 @@ class RealInputRenderTest : public QObject {
 private slots:
   void initTestCase();
   void strokeUndoRedoShortcutAndWheelThroughTheGlWindow();
+  void keypadViewsTurnTheCameraWithNumLockOnAndOff();
 
 private:
   QTemporaryDir dir_;
@@ -122,6 +148,104 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   input.button(4, true);
   input.button(4, false);
   QVERIFY(QTest::qWaitFor([&] { return camera->GetDistance() < distance * 0.95; }, 3000));
+}
+
+namespace {
+
+core::Vec3f towardEyeOf(vtkCamera& camera) {
+  const double *p = camera.GetPosition(), *f = camera.GetFocalPoint();
+  return core::normalize(core::Vec3f{float(p[0] - f[0]), float(p[1] - f[1]), float(p[2] - f[2])});
+}
+
+core::Vec3f upOf(vtkCamera& camera) {
+  const double* u = camera.GetViewUp();
+  return core::normalize(core::Vec3f{float(u[0]), float(u[1]), float(u[2])});
+}
+
+bool near(core::Vec3f a, core::Vec3f b) {
+  return core::length(a - b) < 1e-3f;
+}
+
+QString text(core::Vec3f v) {
+  return QString("(%1, %2, %3)").arg(v.x, 0, 'f', 3).arg(v.y, 0, 'f', 3).arg(v.z, 0, 'f', 3);
+}
+
+} // namespace
+
+void RealInputRenderTest::keypadViewsTurnTheCameraWithNumLockOnAndOff() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(activate(*window));
+  // A newcomer's first key reaches the model: the viewport has the keys from the start.
+  QVERIFY2(QTest::qWaitFor([&] { return QApplication::focusWidget() == view; }, 3000),
+           QApplication::focusWidget() ? QApplication::focusWidget()->metaObject()->className()
+                                       : "no focus");
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+  auto* ortho = window->findChild<QAction*>(QStringLiteral("actionOrthographic"));
+  QVERIFY(ortho);
+  input.moveTo(view->mapToGlobal(QPoint(view->width() / 2, view->height() / 2)));
+
+  struct Case {
+    KeySym key;
+    bool ctrl;
+    core::Vec3f towardEye, up;
+  };
+  const Case cases[] = {
+      {XK_KP_1, false, {0, 0, 1}, {0, 1, 0}},  {XK_KP_1, true, {0, 0, -1}, {0, 1, 0}},
+      {XK_KP_3, false, {1, 0, 0}, {0, 1, 0}},  {XK_KP_3, true, {-1, 0, 0}, {0, 1, 0}},
+      {XK_KP_7, false, {0, 1, 0}, {0, 0, -1}}, {XK_KP_7, true, {0, -1, 0}, {0, 0, 1}},
+  };
+  for (const bool numLock : {true, false}) {
+    QVERIFY2(input.setNumLock(numLock), numLock ? "NumLock stays off" : "NumLock stays on");
+    for (const Case& c : cases) {
+      // From an oblique view at some distance: the key turns the camera and keeps the zoom.
+      const double* f = camera->GetFocalPoint();
+      const double d = 3.7;
+      camera->SetPosition(f[0] + d * 0.48, f[1] + d * 0.6, f[2] + d * 0.64);
+      camera->SetViewUp(0, 1, 0);
+      camera->OrthogonalizeViewUp();
+      view->update();
+      const QString what = QString("%1keypad %2, NumLock %3")
+                               .arg(c.ctrl ? "Ctrl+" : "")
+                               .arg(XKeysymToString(c.key))
+                               .arg(numLock ? "on" : "off");
+      if (c.ctrl)
+        input.press({XK_Control_L, c.key});
+      else
+        input.press({c.key});
+      QVERIFY2(QTest::qWaitFor([&] { return near(towardEyeOf(*camera), c.towardEye); }, 2000),
+               qPrintable(what + ": camera toward " + text(towardEyeOf(*camera))));
+      QVERIFY2(near(upOf(*camera), c.up), qPrintable(what + ": up " + text(upOf(*camera))));
+      QVERIFY2(std::abs(camera->GetDistance() - d) < 1e-6,
+               qPrintable(what + QString(": distance %1").arg(camera->GetDistance())));
+    }
+    // Keypad 5 switches the projection and the menu's check mark, both ways.
+    const bool parallel = camera->GetParallelProjection();
+    input.press({XK_KP_5});
+    QVERIFY2(
+        QTest::qWaitFor([&] { return bool(camera->GetParallelProjection()) != parallel; }, 2000),
+        numLock ? "keypad 5, NumLock on" : "keypad 5, NumLock off");
+    QCOMPARE(ortho->isChecked(), !parallel);
+    input.press({XK_KP_5});
+    QVERIFY(
+        QTest::qWaitFor([&] { return bool(camera->GetParallelProjection()) == parallel; }, 2000));
+    QCOMPARE(ortho->isChecked(), parallel);
+  }
+
+  // The main keyboard's Home still frames the model from where the camera looks.
+  app::setViewDirection(*camera, app::ViewDirection::Right);
+  camera->Dolly(0.1); // ten times as far
+  const double far = camera->GetDistance();
+  input.press({XK_Home});
+  QVERIFY2(QTest::qWaitFor([&] { return camera->GetDistance() < far * 0.5; }, 2000),
+           qPrintable(QString("distance %1 after Home").arg(camera->GetDistance())));
+  QVERIFY(near(towardEyeOf(*camera), {1, 0, 0}));
+  input.setNumLock(true);
 }
 
 QTEST_MAIN(RealInputRenderTest)
