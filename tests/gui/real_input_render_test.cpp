@@ -2,6 +2,7 @@
 // not events sent to the widget: its frames are a native GL window's, so the mouse, the keyboard
 // focus and the shortcuts must still reach the widgets through it.
 #include "brush_panel.h"
+#include "canvas_brush_adjust.h"
 #include "main_window.h"
 #include "test_window.h"
 #include "viewport_widget.h"
@@ -10,13 +11,16 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QFontMetricsF>
 #include <QGuiApplication>
+#include <QScreen>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <X11/XKBlib.h>
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
 #include <X11/keysym.h>
+#undef None // X11's macro, which would hide CanvasBrushAdjust::Mode::None
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
@@ -98,6 +102,7 @@ private slots:
   void initTestCase();
   void strokeUndoRedoShortcutAndWheelThroughTheGlWindow();
   void keypadViewsTurnTheCameraWithNumLockOnAndOff();
+  void fAndShiftFAdjustOverTheModelOnScreen();
 
 private:
   QTemporaryDir dir_;
@@ -246,6 +251,119 @@ void RealInputRenderTest::keypadViewsTurnTheCameraWithNumLockOnAndOff() {
            qPrintable(QString("distance %1 after Home").arg(camera->GetDistance())));
   QVERIFY(near(towardEyeOf(*camera), {1, 0, 0}));
   input.setNumLock(true);
+}
+
+namespace {
+
+/// The viewport as the X server shows it (the root window's pixels, whatever draws them).
+QImage onScreen(QWidget* view) {
+  const QPoint at = view->mapToGlobal(QPoint(0, 0));
+  return QGuiApplication::primaryScreen()
+      ->grabWindow(0, at.x(), at.y(), view->width(), view->height())
+      .toImage()
+      .convertToFormat(QImage::Format_RGB32);
+}
+
+int most(QRgb a, QRgb b) {
+  return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                   std::abs(qBlue(a) - qBlue(b))});
+}
+
+} // namespace
+
+void RealInputRenderTest::fAndShiftFAdjustOverTheModelOnScreen() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(window->brushPanel()->selectBrush("push"));
+  QVERIFY(activate(*window));
+  auto* adjust = window->findChild<app::CanvasBrushAdjust*>(QStringLiteral("canvasBrushAdjust"));
+  QVERIFY(adjust);
+  const QColor background = view->looks().backgroundTop;
+  // The pointer on the model a little off its centre; the picture then, ring included.
+  const QPoint origin = view->project({0, 0, 0}).toPoint() - QPoint(40, 30);
+  input.moveTo(view->mapToGlobal(origin));
+  QTest::qWait(300);
+  const QImage before = onScreen(view);
+  int model = 0;
+  for (int y = 0; y < before.height(); ++y)
+    for (int x = 0; x < before.width(); ++x)
+      model += most(before.pixel(x, y), background.rgb()) > 12;
+  QVERIFY2(model > before.width() * before.height() / 10,
+           qPrintable(QString("%1 model pixels before").arg(model)));
+
+  for (const bool strength : {false, true}) {
+    const QString what = strength ? "Shift+F" : "F";
+    if (strength)
+      input.press({XK_Shift_L, XK_f});
+    else
+      input.press({XK_f});
+    const auto mode =
+        strength ? app::CanvasBrushAdjust::Mode::Strength : app::CanvasBrushAdjust::Mode::Radius;
+    QVERIFY2(QTest::qWaitFor([&] { return adjust->mode() == mode; }, 2000), qPrintable(what));
+    QCOMPARE(adjust->origin(), QPointF(origin));
+    const double ring0 = adjust->marks().ringPixels;
+    input.moveTo(view->mapToGlobal(origin + QPoint(25, 4)));
+    QVERIFY(QTest::qWaitFor([&] { return adjust->marks().ringPixels != ring0 || strength; }, 2000));
+    const app::CanvasBrushAdjust::Marks marks = adjust->marks();
+    const QFontMetricsF metrics(QGuiApplication::font());
+    const QRectF box(marks.centre + QPointF(14, 14),
+                     QSizeF(metrics.horizontalAdvance(marks.text) + 12, metrics.height() + 6));
+    const double ring = std::max(ring0, marks.ringPixels) + 8;
+
+    // On the screen: the model's pixels away from the ring and the value's box are as before,
+    // and the box is there, dark with white text.
+    int kept = 0, modelAway = 0, inBox = 0, darker = 0, white = 0;
+    QImage during;
+    (void)QTest::qWaitFor( // the checks below say what was not as waited for
+        [&] {
+          during = onScreen(view);
+          kept = modelAway = inBox = darker = white = 0;
+          for (int y = 0; y < during.height(); ++y)
+            for (int x = 0; x < during.width(); ++x) {
+              const QPointF p(x + 0.5, y + 0.5);
+              const QRgb was = before.pixel(x, y), now = during.pixel(x, y);
+              if (box.adjusted(2, 2, -2, -2).contains(p)) {
+                ++inBox;
+                darker += qGray(now) < qGray(was) - 20;
+                white += qGray(now) > 200;
+                continue;
+              }
+              if (std::hypot(p.x() - origin.x(), p.y() - origin.y()) < ring) continue;
+              if (most(was, background.rgb()) <= 12) continue;
+              ++modelAway;
+              kept += most(was, now) <= 2;
+            }
+          return kept > modelAway * 0.98 && darker > inBox / 2 && white > 10;
+        },
+        3000);
+    QVERIFY2(modelAway > model / 2, qPrintable(QString("%1 of %2").arg(modelAway).arg(model)));
+    QVERIFY2(kept > modelAway * 0.98,
+             qPrintable(
+                 QString("%1: %2 of %3 model pixels in sight").arg(what).arg(kept).arg(modelAway)));
+    QVERIFY2(darker > inBox / 2 && white > 10,
+             qPrintable(QString("%1: value box %2 px, %3 darker, %4 white")
+                            .arg(what)
+                            .arg(inBox)
+                            .arg(darker)
+                            .arg(white)));
+    if (strength) {
+      // The strength's disc inside the ring, brighter than the model was.
+      const QPoint inside = origin + QPoint(0, -int(marks.ringPixels * marks.strength / 2));
+      QVERIFY(qGray(during.pixel(inside)) > qGray(before.pixel(inside)));
+    }
+    input.press({XK_Escape});
+    QVERIFY(QTest::qWaitFor([&] { return adjust->mode() == app::CanvasBrushAdjust::Mode::None; },
+                            2000));
+    input.moveTo(view->mapToGlobal(origin));
+  }
+  // Afterwards the marks are gone: the picture is the one before.
+  QVERIFY(QTest::qWaitFor(
+      [&] { return app::testing::comparePixels(before, onScreen(view)).differing < 50; }, 3000));
 }
 
 QTEST_MAIN(RealInputRenderTest)
