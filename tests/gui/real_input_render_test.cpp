@@ -14,6 +14,7 @@
 #include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QScreen>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <X11/XKBlib.h>
@@ -103,6 +104,7 @@ private slots:
   void strokeUndoRedoShortcutAndWheelThroughTheGlWindow();
   void keypadViewsTurnTheCameraWithNumLockOnAndOff();
   void fAndShiftFAdjustOverTheModelOnScreen();
+  void snakeHookAtItsDefaultPullsAlongTheDrag();
 
 private:
   QTemporaryDir dir_;
@@ -364,6 +366,49 @@ void RealInputRenderTest::fAndShiftFAdjustOverTheModelOnScreen() {
   // Afterwards the marks are gone: the picture is the one before.
   QVERIFY(QTest::qWaitFor(
       [&] { return app::testing::comparePixels(before, onScreen(view)).differing < 50; }, 3000));
+}
+
+void RealInputRenderTest::snakeHookAtItsDefaultPullsAlongTheDrag() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  QSettings().clear(); // no strength remembered from an earlier session
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  app::BrushPanel* panel = window->brushPanel();
+  const QPoint centre = view->project({0, 0, 0}).toPoint();
+  input.moveTo(view->mapToGlobal(centre));
+  QVERIFY(activate(*window));
+  input.press({XK_k});
+  QVERIFY(QTest::qWaitFor([&] { return panel->currentBrushId() == QString("snake-hook"); }, 2000));
+  QCOMPARE(panel->strength(), 1.0f);
+
+  // A 200 px drag from the front of the sphere pulls a hook most of that far.
+  const auto hit = view->pickAt(centre);
+  QVERIFY(hit);
+  const std::vector<float> before = app::testing::positionsOf(*window);
+  const QPoint from = centre;
+  input.moveTo(view->mapToGlobal(from));
+  input.button(1, true);
+  for (int k = 1; k <= 20; ++k)
+    input.moveTo(view->mapToGlobal(from + QPoint(10 * k, 0)));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 5000));
+  const std::vector<float> after = app::testing::positionsOf(*window);
+  float pulled = 0;
+  for (std::size_t k = 0; k + 3 < after.size(); k += 4)
+    pulled = std::max(pulled,
+                      core::length(core::Vec3f{after[k] - before[k], after[k + 1] - before[k + 1],
+                                               after[k + 2] - before[k + 2]}));
+  // Object units to pixels at the front of the sphere, sideways.
+  const core::Vec3f front = hit->position;
+  const float unit = 0.1f;
+  const QPointF a = view->project(front), b = view->project(front + core::Vec3f{unit, 0, 0});
+  const double pixels = pulled * std::hypot(b.x() - a.x(), b.y() - a.y()) / unit;
+  qInfo("a 200 px drag pulled the surface %.0f px", pixels);
+  QVERIFY2(pixels > 120, qPrintable(QString("a 200 px drag pulled %1 px").arg(pixels)));
 }
 
 QTEST_MAIN(RealInputRenderTest)
