@@ -15,6 +15,8 @@
 #include <QGuiApplication>
 #include <QScreen>
 #include <QSettings>
+#include <QSlider>
+#include <QStyle>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <X11/XKBlib.h>
@@ -105,6 +107,7 @@ private slots:
   void keypadViewsTurnTheCameraWithNumLockOnAndOff();
   void fAndShiftFAdjustOverTheModelOnScreen();
   void snakeHookAtItsDefaultPullsAlongTheDrag();
+  void bracketWorksRightAfterDraggingTheStrengthSlider();
 
 private:
   QTemporaryDir dir_;
@@ -409,6 +412,51 @@ void RealInputRenderTest::snakeHookAtItsDefaultPullsAlongTheDrag() {
   const double pixels = pulled * std::hypot(b.x() - a.x(), b.y() - a.y()) / unit;
   qInfo("a 200 px drag pulled the surface %.0f px", pixels);
   QVERIFY2(pixels > 120, qPrintable(QString("a 200 px drag pulled %1 px").arg(pixels)));
+}
+
+void RealInputRenderTest::bracketWorksRightAfterDraggingTheStrengthSlider() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
+  QVERIFY(activate(*window));
+  app::BrushPanel* panel = window->brushPanel();
+  QVERIFY(panel->selectBrush("push"));
+  auto* slider = window->findChild<QSlider*>(QStringLiteral("headerStrength"));
+  QVERIFY(slider && slider->isVisible());
+  const float strength = panel->strength();
+
+  // Press on the slider's handle and drag it 40 px to the right, as a hand on the mouse does.
+  const int handle = slider->style()->pixelMetric(QStyle::PM_SliderLength, nullptr, slider);
+  const double at =
+      double(slider->value() - slider->minimum()) / double(slider->maximum() - slider->minimum());
+  const QPoint grip(handle / 2 + int(at * (slider->width() - handle)), slider->height() / 2);
+  const QPoint start = slider->mapToGlobal(grip);
+  input.moveTo(start);
+  input.button(1, true);
+  for (int k = 1; k <= 8; ++k)
+    input.moveTo(start + QPoint(5 * k, 0));
+  input.button(1, false);
+  QVERIFY2(QTest::qWaitFor([&] { return panel->strength() > strength + 0.05f; }, 2000),
+           qPrintable(QString("strength %1 -> %2").arg(strength).arg(panel->strength())));
+
+  // ] at once (no Esc, no click on the model) grows the radius by a tenth.
+  const float radius = panel->radius();
+  input.press({XK_bracketright});
+  QVERIFY2(QTest::qWaitFor([&] { return std::abs(panel->radius() - radius * 1.1f) < 1e-5f; }, 2000),
+           qPrintable(QString("radius %1 -> %2 (focus: %3)")
+                          .arg(radius)
+                          .arg(panel->radius())
+                          .arg(QApplication::focusWidget()
+                                   ? QApplication::focusWidget()->metaObject()->className()
+                                   : "none")));
+  QCOMPARE(QApplication::focusWidget(), window->viewport());
+  // Shift+[ steps the strength the slider set.
+  const float set = panel->strength();
+  input.press({XK_Shift_L, XK_bracketleft});
+  QVERIFY(QTest::qWaitFor([&] { return std::abs(panel->strength() - set / 1.1f) < 1e-3f; }, 2000));
 }
 
 QTEST_MAIN(RealInputRenderTest)
