@@ -3,6 +3,7 @@
 // focus and the shortcuts must still reach the widgets through it.
 #include "brush_panel.h"
 #include "canvas_brush_adjust.h"
+#include "history_dialog.h"
 #include "main_window.h"
 #include "test_window.h"
 #include "viewport_widget.h"
@@ -16,8 +17,11 @@
 #include <QScreen>
 #include <QSettings>
 #include <QSlider>
+#include <QStatusBar>
 #include <QStyle>
 #include <QTemporaryDir>
+#include <QUndoStack>
+#include <QUndoView>
 #include <QtTest>
 #include <X11/XKBlib.h>
 #include <X11/Xlib.h>
@@ -108,6 +112,7 @@ private slots:
   void fAndShiftFAdjustOverTheModelOnScreen();
   void snakeHookAtItsDefaultPullsAlongTheDrag();
   void bracketWorksRightAfterDraggingTheStrengthSlider();
+  void undoSaysWhenItsBudgetDropsSteps();
 
 private:
   QTemporaryDir dir_;
@@ -457,6 +462,71 @@ void RealInputRenderTest::bracketWorksRightAfterDraggingTheStrengthSlider() {
   const float set = panel->strength();
   input.press({XK_Shift_L, XK_bracketleft});
   QVERIFY(QTest::qWaitFor([&] { return std::abs(panel->strength() - set / 1.1f) < 1e-3f; }, 2000));
+}
+
+void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
+  QVERIFY(activate(*window));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(window->brushPanel()->selectBrush("push"));
+  window->brushPanel()->setRadius(0.1f);
+  const QPoint centre = view->mapToGlobal(view->project({0, 0, 0}).toPoint());
+  int strokes = 0;
+  const auto stroke = [&] {
+    const QPoint from = centre + QPoint(-40, 25 * (strokes % 3 - 1));
+    input.moveTo(from);
+    input.button(1, true);
+    for (int k = 1; k <= 8; ++k)
+      input.moveTo(from + QPoint(10 * k, 0));
+    input.button(1, false);
+    ++strokes;
+    return QTest::qWaitFor([&] { return window->undoStack()->count() == strokes; }, 5000);
+  };
+  QVERIFY(stroke());
+  QUndoStack* stack = window->undoStack();
+  // A budget of about two such strokes.
+  const std::size_t one = view->history().bytes();
+  QVERIFY(one > 0);
+  stack->undo();
+  QVERIFY(!view->canUndo());
+  view->history() = core::EditHistory(one * 5 / 2);
+  stack->clear();
+  strokes = 0;
+
+  QAction* historyAction = window->findChild<QAction*>(QStringLiteral("actionHistory"));
+  QVERIFY(historyAction);
+  historyAction->trigger();
+  auto* history = window->findChild<app::HistoryDialog*>();
+  QVERIFY(history);
+  history->move(window->frameGeometry().right() + 10, 0); // beside the model, not over it
+  const auto firstRow = [&] { return history->view()->model()->index(0, 0).data().toString(); };
+  QVERIFY(stroke());
+  QCOMPARE(firstRow(), QString("Model as opened or made"));
+  QVERIFY(activate(*window));
+  while (strokes < 6 && std::size_t(stack->count()) == view->history().undoCount())
+    QVERIFY(stroke());
+  QVERIFY2(std::size_t(stack->count()) > view->history().undoCount(),
+           "six strokes fit a budget of two and a half");
+  // The status bar says so, the dropped step says so, the first row no longer promises the
+  // model as it was made.
+  QVERIFY2(window->statusBar()->toolTip().startsWith("Undo now keeps only the newest"),
+           qPrintable(window->statusBar()->currentMessage()));
+  QVERIFY(stack->text(0).endsWith(" — dropped from history"));
+  QVERIFY(!stack->text(stack->count() - 1).contains("dropped"));
+  QCOMPARE(firstRow(), QString("Oldest kept step"));
+  // Undoing everything stops at the oldest kept step, and the redo comes back.
+  const std::vector<float> newest = app::testing::positionsOf(*window);
+  while (stack->canUndo())
+    stack->undo();
+  QVERIFY(!view->canUndo());
+  while (stack->canRedo())
+    stack->redo();
+  QVERIFY(app::testing::bitEqual(app::testing::positionsOf(*window), newest));
 }
 
 QTEST_MAIN(RealInputRenderTest)
