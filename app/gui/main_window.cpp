@@ -315,8 +315,11 @@ void MainWindow::updateStatus() {
 }
 
 void MainWindow::updateTitle() {
-  const QString name =
-      currentPath().isEmpty() ? tr("Untitled") : QFileInfo(currentPath()).fileName();
+  // An imported model not saved yet goes by its mesh's name.
+  const QString path = currentPath(), imported = documents_->importedFrom();
+  const QString name = !path.isEmpty()       ? QFileInfo(path).fileName()
+                       : !imported.isEmpty() ? QFileInfo(imported).completeBaseName()
+                                             : tr("Untitled");
   setWindowTitle(QStringLiteral("%1[*] — Octaclay").arg(name));
   setWindowModified(isModified());
 }
