@@ -107,6 +107,7 @@ class RealInputRenderTest : public QObject {
 
 private slots:
   void initTestCase();
+  void cleanup();
   void strokeUndoRedoShortcutAndWheelThroughTheGlWindow();
   void keypadViewsTurnTheCameraWithNumLockOnAndOff();
   void fAndShiftFAdjustOverTheModelOnScreen();
@@ -125,6 +126,15 @@ void RealInputRenderTest::initTestCase() {
   QCoreApplication::setApplicationName("real_input_render_test");
   qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
   QSettings().clear();
+}
+
+// The real pointer parked in the screen's far corner, off every window the next test opens:
+// a window appearing under it would get its motion.
+void RealInputRenderTest::cleanup() {
+  FakeInput input;
+  if (!input.ready()) return;
+  const QRect screen = QGuiApplication::primaryScreen()->geometry();
+  input.moveTo(screen.bottomRight());
 }
 
 void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
@@ -215,6 +225,7 @@ void RealInputRenderTest::keypadViewsTurnTheCameraWithNumLockOnAndOff() {
       {XK_KP_3, false, {1, 0, 0}, {0, 1, 0}},  {XK_KP_3, true, {-1, 0, 0}, {0, 1, 0}},
       {XK_KP_7, false, {0, 1, 0}, {0, 0, -1}}, {XK_KP_7, true, {0, -1, 0}, {0, 0, 1}},
   };
+  const bool numLockWas = input.numLock();
   for (const bool numLock : {true, false}) {
     QVERIFY2(input.setNumLock(numLock), numLock ? "NumLock stays off" : "NumLock stays on");
     for (const Case& c : cases) {
@@ -260,7 +271,7 @@ void RealInputRenderTest::keypadViewsTurnTheCameraWithNumLockOnAndOff() {
   QVERIFY2(QTest::qWaitFor([&] { return camera->GetDistance() < far * 0.5; }, 2000),
            qPrintable(QString("distance %1 after Home").arg(camera->GetDistance())));
   QVERIFY(near(towardEyeOf(*camera), {1, 0, 0}));
-  input.setNumLock(true);
+  input.setNumLock(numLockWas); // the display as it was, for the tests after this one
 }
 
 namespace {
