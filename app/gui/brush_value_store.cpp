@@ -94,7 +94,11 @@ const BrushValues* BrushValueStore::find(const QString& id) const {
 
 BrushValues BrushValueStore::defaults(const gpu::BrushManifest& brush) const {
   BrushValues v;
-  if (brush.category == gpu::Category::Sculpt) v.strength = kDefaultSculptStrength;
+  if (brush.category == gpu::Category::Sculpt) {
+    const bool drags =
+        brush.stroke == gpu::StrokeKind::Drag || brush.stroke == gpu::StrokeKind::Anchored;
+    v.strength = drags ? kDefaultDragStrength : kDefaultSculptStrength;
+  }
   v.falloff = brush.falloff;
   v.area = brush.area;
   for (const gpu::BrushParameter& p : brush.parameters) {

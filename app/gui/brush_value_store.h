@@ -18,6 +18,11 @@ inline constexpr float kMinRadius = 0.001f, kMaxRadius = 1.0f;
 /// about a quarter of the radius, like a thumb on clay (0.5 dug trenches and raised horns
 /// when a newcomer went back and forth).
 inline constexpr float kDefaultSculptStrength = 0.25f;
+/// A dragging brush's strength (Grab, Snake Hook: anchored and drag strokes) until the user sets
+/// one: the surface follows the pointer all the way. At a quarter Snake Hook's 200 px drag
+/// pulled a 30 px hook; these brushes apply their strength once per stroke or per dab with no
+/// build-up, so less is a lag behind the pointer, not a gentler touch.
+inline constexpr float kDefaultDragStrength = 1.0f;
 
 /// value clamped to [lo, hi]; fallback if it is not finite.
 float clampFinite(float value, float lo, float hi, float fallback);
@@ -25,7 +30,8 @@ float clampFinite(float value, float lo, float hi, float fallback);
 /// What the user set for one brush; survives switching brushes.
 struct BrushValues {
   float radius = 0.05f;
-  float strength = 0.5f; ///< paint and splats; sculpt brushes start at kDefaultSculptStrength
+  float strength = 0.5f; ///< paint and splats; sculpt brushes start at kDefaultSculptStrength,
+                         ///< dragging ones at kDefaultDragStrength
   gpu::Falloff falloff = gpu::Falloff::Smooth;
   gpu::AreaMode area = gpu::AreaMode::Volume;
   std::map<std::string, std::array<float, 4>> parameters; ///< manifest parameter id → value

@@ -8,7 +8,6 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QWidget>
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
@@ -18,51 +17,35 @@ namespace octaclay::app {
 namespace {
 
 // What the adjustment shows over the viewport: the value, and a ring (with the strength as a
-// filled disc inside it) where the surface's own ring cannot show it.
-class AdjustOverlay : public QWidget {
-public:
-  explicit AdjustOverlay(QWidget* parent) : QWidget(parent) {
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setObjectName(QStringLiteral("canvasAdjustOverlay"));
-    hide();
-  }
-  QPointF centre;
-  double ringPixels = 0;
-  double strength = -1; // < 0: no disc
-  bool drawRing = false;
-  QString text;
-
-protected:
-  void paintEvent(QPaintEvent*) override {
-    QPainter p(this);
-    p.setRenderHint(QPainter::Antialiasing);
-    if (drawRing && ringPixels > 0) {
-      p.setPen(QPen(QColor(255, 255, 255, 220), 1.5));
-      p.setBrush(Qt::NoBrush);
-      p.drawEllipse(centre, ringPixels, ringPixels);
-      if (strength >= 0) {
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(255, 255, 255, 90));
-        const double r = ringPixels * strength;
-        p.drawEllipse(centre, r, r);
-      }
+// filled disc inside it) where the surface's own ring cannot show it. Painted into the GL
+// window's frame over the model, so the model stays in sight around them.
+void paintMarks(QPainter& p, const CanvasBrushAdjust::Marks& marks) {
+  p.setRenderHint(QPainter::Antialiasing);
+  if (marks.drawRing && marks.ringPixels > 0) {
+    p.setPen(QPen(QColor(255, 255, 255, 220), 1.5));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(marks.centre, marks.ringPixels, marks.ringPixels);
+    if (marks.strength >= 0) {
+      p.setPen(Qt::NoPen);
+      p.setBrush(QColor(255, 255, 255, 90));
+      const double r = marks.ringPixels * marks.strength;
+      p.drawEllipse(marks.centre, r, r);
     }
-    const QRectF box =
-        QRectF(centre + QPointF(14, 14),
-               QSizeF(fontMetrics().horizontalAdvance(text) + 12, fontMetrics().height() + 6));
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0, 0, 0, 150));
-    p.drawRoundedRect(box, 4, 4);
-    p.setPen(Qt::white);
-    p.drawText(box, Qt::AlignCenter, text);
   }
-};
+  const QFontMetricsF metrics(p.font());
+  const QRectF box(marks.centre + QPointF(14, 14),
+                   QSizeF(metrics.horizontalAdvance(marks.text) + 12, metrics.height() + 6));
+  p.setPen(Qt::NoPen);
+  p.setBrush(QColor(0, 0, 0, 150));
+  p.drawRoundedRect(box, 4, 4);
+  p.setPen(Qt::white);
+  p.drawText(box, Qt::AlignCenter, marks.text);
+}
 
 } // namespace
 
 CanvasBrushAdjust::CanvasBrushAdjust(ViewportWidget* viewport, BrushPanel* panel, QObject* parent)
     : QObject(parent), viewport_(viewport), panel_(panel) {
-  overlay_ = new AdjustOverlay(viewport);
   viewport->installEventFilter(this);
   lastPos_ = QPointF(-1, -1); // not seen yet
 }
@@ -100,12 +83,10 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   if (!std::isfinite(pixelsPerRadius_) || pixelsPerRadius_ < 1e-3)
     pixelsPerRadius_ = std::max(1, viewport_->height());
 
-  auto* overlay = static_cast<AdjustOverlay*>(overlay_);
-  overlay->setGeometry(viewport_->rect());
-  overlay->centre = origin_;
-  overlay->drawRing = mode == Mode::Strength || !hit;
-  overlay->show();
-  overlay->raise();
+  marks_ = Marks{};
+  marks_.centre = origin_;
+  marks_.drawRing = mode == Mode::Strength || !hit;
+  viewport_->setFramePainter([this](QPainter& p) { paintMarks(p, marks_); });
   qApp->installEventFilter(this);
   moveTo(origin_);
   return true;
@@ -122,18 +103,17 @@ void CanvasBrushAdjust::cancel() {
 void CanvasBrushAdjust::moveTo(QPointF p) {
   if (!panel_ || mode_ == Mode::None) return;
   const double dx = p.x() - origin_.x();
-  auto* overlay = static_cast<AdjustOverlay*>(overlay_);
   if (mode_ == Mode::Radius) {
     panel_->setRadius(static_cast<float>(start_ + dx / pixelsPerRadius_));
-    overlay->strength = -1;
-    overlay->text = tr("Radius %1 %").arg(double(panel_->radius()) * 100.0, 0, 'f', 1);
+    marks_.strength = -1;
+    marks_.text = tr("Radius %1 %").arg(double(panel_->radius()) * 100.0, 0, 'f', 1);
   } else {
     panel_->setStrength(static_cast<float>(start_ + dx / kPixelsPerStrength));
-    overlay->strength = panel_->strength();
-    overlay->text = tr("Strength %1 %").arg(std::lround(panel_->strength() * 100.0f));
+    marks_.strength = panel_->strength();
+    marks_.text = tr("Strength %1 %").arg(std::lround(panel_->strength() * 100.0f));
   }
-  overlay->ringPixels = double(panel_->radius()) * pixelsPerRadius_;
-  overlay->update();
+  marks_.ringPixels = double(panel_->radius()) * pixelsPerRadius_;
+  if (viewport_) viewport_->update();
 }
 
 void CanvasBrushAdjust::end(bool confirmed) {
@@ -143,9 +123,11 @@ void CanvasBrushAdjust::end(bool confirmed) {
     if (mode == Mode::Radius) panel_->setRadius(start_);
     if (mode == Mode::Strength) panel_->setStrength(start_);
   }
-  overlay_->hide();
   if (swallowRelease_ == Qt::NoButton) qApp->removeEventFilter(this);
-  if (viewport_) viewport_->update();
+  if (viewport_) {
+    viewport_->setFramePainter({});
+    viewport_->update();
+  }
   emit finished(confirmed);
 }
 

@@ -5,8 +5,7 @@
 #include <QObject>
 #include <QPointF>
 #include <QPointer>
-
-class QWidget;
+#include <QString>
 
 namespace octaclay::app {
 
@@ -39,6 +38,18 @@ public:
   QPointF origin() const { return origin_; }
   /// The value the adjustment started from.
   float startValue() const { return start_; }
+  /// What the adjustment paints over the viewport's frames (logical pixels): its value in a
+  /// box beside centre, and a ring of ringPixels (with a disc of strength × ringPixels inside,
+  /// strength ≥ 0) where the surface's own ring cannot show the radius.
+  struct Marks {
+    QPointF centre;
+    double ringPixels = 0;
+    double strength = -1; ///< < 0: no disc
+    bool drawRing = false;
+    QString text;
+  };
+  /// The marks shown now (meaningful while mode() is not None).
+  const Marks& marks() const { return marks_; }
   /// Pixels of sideways motion per unit of radius (a fraction of the model's diagonal), as
   /// measured at begin() at the ring's centre.
   double pixelsPerRadius() const { return pixelsPerRadius_; }
@@ -56,7 +67,7 @@ private:
 
   QPointer<ViewportWidget> viewport_;
   QPointer<BrushPanel> panel_;
-  QWidget* overlay_ = nullptr;
+  Marks marks_;
   Mode mode_ = Mode::None;
   QPointF lastPos_; // the pointer's last place over the viewport
   QPointF origin_;  // where the adjustment began

@@ -111,6 +111,25 @@ void MainWindow::connectParts() {
   connect(viewport_, &ViewportWidget::strokeFinished, this, [this](const QString& label) {
     undoStack_->push(new StrokeCommand(viewport_, tr("Stroke (%1)").arg(label)));
   });
+  // Steps the history's budget dropped: marked on the stack (Edit ▸ History then names its
+  // first row truthfully); the first time, the status bar says so.
+  connect(undoStack_, &QUndoStack::indexChanged, this, [this] {
+    const int marked = markDroppedSteps(*undoStack_, viewport_->history());
+    if (marked == 0) return;
+    int dropped = 0;
+    for (int k = 0; k < undoStack_->count(); ++k)
+      if (const auto* step = dynamic_cast<const StrokeCommand*>(undoStack_->command(k)))
+        dropped += step->dropped();
+    if (dropped == marked) {
+      const core::EditHistory& h = viewport_->history();
+      showStatusMessage(*statusBar(),
+                        tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
+                           "its %2 MiB")
+                            .arg(h.undoCount())
+                            .arg(double(h.budget()) / double(1 << 20), 0, 'f', 0),
+                        15000);
+    }
+  });
   connect(undoStack_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
   connect(undoStack_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
   connect(viewport_, &ViewportWidget::brushesChanged, this, &MainWindow::refreshBrushes);
@@ -296,8 +315,11 @@ void MainWindow::updateStatus() {
 }
 
 void MainWindow::updateTitle() {
-  const QString name =
-      currentPath().isEmpty() ? tr("Untitled") : QFileInfo(currentPath()).fileName();
+  // An imported model not saved yet goes by its mesh's name.
+  const QString path = currentPath(), imported = documents_->importedFrom();
+  const QString name = !path.isEmpty()       ? QFileInfo(path).fileName()
+                       : !imported.isEmpty() ? QFileInfo(imported).completeBaseName()
+                                             : tr("Untitled");
   setWindowTitle(QStringLiteral("%1[*] — Octaclay").arg(name));
   setWindowModified(isModified());
 }

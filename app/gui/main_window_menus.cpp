@@ -8,6 +8,7 @@
 #include "looks_menu.h"
 #include "main_window.h"
 #include "save_compressed_dialog.h"
+#include "shortcut_sheet.h"
 #include "view_actions.h"
 #include "viewport_widget.h"
 
@@ -146,9 +147,11 @@ void MainWindow::buildMenus() {
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = undoStack_->createUndoAction(this, tr("&Undo"));
   undo->setObjectName("actionUndo");
+  undo->setProperty(kSheetTextProperty, tr("Undo")); // its text names the step
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = undoStack_->createRedoAction(this, tr("&Redo"));
   redo->setObjectName("actionRedo");
+  redo->setProperty(kSheetTextProperty, tr("Redo"));
   // Both keys everywhere; QKeySequence::Redo is one of them on each platform, and an action
   // holding the same key twice makes Qt drop it as ambiguous.
   redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
@@ -185,7 +188,7 @@ void MainWindow::buildMenus() {
 
   // Mesh: whole-model operations, after Edit as in Blender.
   QMenu* mesh = menuBar()->addMenu(tr("&Mesh"));
-  QAction* evenOut = add(mesh, tr("&Even Out Samples…"), "actionEvenOutSamples");
+  QAction* evenOut = add(mesh, tr("&Even Out Samples"), "actionEvenOutSamples");
   const QString evenOutTip = tr("Spread the samples evenly over the surface again, so stretched "
                                 "parts get detail back; the shape and paint stay put");
   evenOut->setToolTip(evenOutTip);

@@ -13,6 +13,7 @@
 #include <QRegularExpression>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QVariant>
 
 #include <functional>
 
@@ -41,7 +42,9 @@ QList<ShortcutEntry> collectShortcuts(const QWidget& window) {
   const auto add = [&](QAction* a, const QString& where) {
     if (a->isSeparator() || a->shortcuts().isEmpty() || seen.contains(a)) return;
     seen << a;
-    entries.push_back({a, where, plainText(a->text()), a->shortcuts()});
+    const QVariant sheetText = a->property(kSheetTextProperty);
+    entries.push_back({a, where, sheetText.isValid() ? sheetText.toString() : plainText(a->text()),
+                       a->shortcuts()});
   };
   // Menus first, in the menu bar's order, so the sheet reads like the menus.
   std::function<void(QMenu*, const QString&)> walk = [&](QMenu* menu, const QString& path) {
@@ -81,8 +84,14 @@ ShortcutSheet::ShortcutSheet(const QWidget& window, QWidget* parent) : QDialog(p
     addRow(e.keysText(), e.text, e.where);
   for (const Gesture& g : viewportGestures())
     addRow(g.input, g.action, tr("Viewport"));
-  table_->resizeColumnsToContents();
-  table_->horizontalHeader()->setStretchLastSection(true);
+  // The descriptions take the room the keys and places leave, the long ones (F, Shift+F)
+  // wrapped in it rather than running off the sheet's edge.
+  table_->setWordWrap(true);
+  QHeaderView* columns = table_->horizontalHeader();
+  columns->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  columns->setSectionResizeMode(1, QHeaderView::Stretch);
+  columns->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
 
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);

@@ -3,10 +3,70 @@
 #include "viewport_widget.h"
 
 #include <QActionGroup>
+#include <QKeyEvent>
 #include <QMenu>
 #include <QSettings>
 
+#include <array>
+
 namespace octaclay::app {
+namespace {
+
+// The numeric keypad's view keys, taken from the viewport's own key events. A QAction bound to
+// KeypadModifier | Key_1 never fires from a real keyboard through Qt 6.4's xcb key mapping (a
+// synthesized QTest::keyClick bypasses that mapping, so only real input shows it). With NumLock
+// off the keys arrive as End, PgDn, Home and Clear, still with KeypadModifier: that modifier
+// tells keypad 7 (Top) from Home (Frame Model), which the shortcut map would otherwise match
+// without it. Each key triggers its menu action, so the Orthographic check mark follows.
+class KeypadViews : public QObject {
+public:
+  KeypadViews(QWidget* viewport, std::array<QAction*, 7> actions)
+      : QObject(viewport), actions_(actions) {
+    viewport->installEventFilter(this);
+  }
+
+protected:
+  bool eventFilter(QObject*, QEvent* event) override {
+    if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+      return false;
+    auto* key = static_cast<QKeyEvent*>(event);
+    QAction* action = actionFor(*key);
+    if (!action) return false;
+    // Accepting the override keeps the window's shortcuts (Home) from taking the key.
+    event->accept();
+    if (event->type() == QEvent::KeyPress && action->isEnabled()) action->trigger();
+    return true;
+  }
+
+private:
+  /// Front, Back, Right, Left, Top, Bottom, Orthographic.
+  QAction* actionFor(const QKeyEvent& key) const {
+    const Qt::KeyboardModifiers mods = key.modifiers();
+    if (!(mods & Qt::KeypadModifier) || (mods & ~(Qt::KeypadModifier | Qt::ControlModifier)))
+      return nullptr;
+    const int ctrl = (mods & Qt::ControlModifier) ? 1 : 0;
+    switch (key.key()) {
+    case Qt::Key_1:
+    case Qt::Key_End:
+      return actions_[0 + ctrl];
+    case Qt::Key_3:
+    case Qt::Key_PageDown:
+      return actions_[2 + ctrl];
+    case Qt::Key_7:
+    case Qt::Key_Home:
+      return actions_[4 + ctrl];
+    case Qt::Key_5:
+    case Qt::Key_Clear:
+      return ctrl ? nullptr : actions_[6];
+    default:
+      return nullptr;
+    }
+  }
+
+  std::array<QAction*, 7> actions_;
+};
+
+} // namespace
 
 void addViewActions(QMenu* view, ViewportWidget* viewport) {
   struct Standard {
@@ -26,8 +86,11 @@ void addViewActions(QMenu* view, ViewportWidget* viewport) {
       {QT_TR_NOOP("Bott&om"), "actionViewBottom", ViewDirection::Bottom, ctrlPad | Qt::Key_7},
   };
   QMenu* views = view->addMenu(QMenu::tr("&Views"));
+  std::array<QAction*, 7> keypad{};
+  int k = 0;
   for (const Standard& s : standards) {
     QAction* a = views->addAction(QMenu::tr(s.text));
+    keypad[k++] = a;
     a->setObjectName(QString::fromLatin1(s.name));
     a->setShortcut(QKeySequence(s.key));
     QObject::connect(a, &QAction::triggered, viewport,
@@ -40,6 +103,8 @@ void addViewActions(QMenu* view, ViewportWidget* viewport) {
   ortho->setShortcut(QKeySequence(Qt::KeypadModifier | Qt::Key_5));
   ortho->setToolTip(QMenu::tr("Parallel projection (no perspective), for checking proportions"));
   QObject::connect(ortho, &QAction::toggled, viewport, &ViewportWidget::setOrthographic);
+  keypad[6] = ortho;
+  new KeypadViews(viewport, keypad);
 
   QMenu* orbit = view->addMenu(QMenu::tr("Or&bit"));
   auto* group = new QActionGroup(orbit);

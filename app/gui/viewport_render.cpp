@@ -11,6 +11,7 @@
 #include <QGuiApplication>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QPainter>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderCache.h>
@@ -136,6 +137,21 @@ void ViewportWidget::paintGL() {
   if (dabbed || session_.stroking()) emit statsChanged();
   if (dabbed) emit surfaceChanged();
   if (session_.hasDocument()) emit framePainted();
+}
+
+void ViewportWidget::setFramePainter(std::function<void(QPainter&)> paint) {
+  framePainter_ = std::move(paint);
+  update();
+}
+
+void ViewportWidget::paintMarks(QPaintDevice& device) {
+  if (!framePainter_ || !model_ || uploading_) return;
+  {
+    // Qt's GL paint engine sets and resets its own state; VTK's cache of it is stale after.
+    QPainter painter(&device);
+    framePainter_(painter);
+  }
+  renderWindow_->GetState()->Reset();
 }
 
 } // namespace octaclay::app

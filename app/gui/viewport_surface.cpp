@@ -21,6 +21,7 @@ void ViewportSurface::resizeGL(int width, int height) {
 
 void ViewportSurface::paintGL() {
   owner_.paintGL();
+  owner_.paintMarks(*this);
 }
 
 } // namespace octaclay::app

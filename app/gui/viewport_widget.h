@@ -26,9 +26,11 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 
+class QPainter;
 class vtkGenericOpenGLRenderWindow;
 class vtkObject;
 class vtkRenderer;
@@ -198,6 +200,11 @@ public:
   /// The material (lit or a matcap), wireframe overlay and background (viewport_looks.cpp).
   void setLooks(const ViewLooks& looks);
   const ViewLooks& looks() const { return looks_; }
+  /// 2D marks painted over every frame the GL window shows, after the model (logical pixels;
+  /// the F / Shift+F ring and value): a widget over the GL window would hide the model, since a
+  /// native window shows nothing through it. Not in renderImage() or grabFramebuffer(). Empty:
+  /// none. Asks for a frame.
+  void setFramePainter(std::function<void(QPainter&)> paint);
   /// The legend and half labels over the view.
   ViewportOverlay* overlay() const { return overlay_; }
 
@@ -223,6 +230,8 @@ protected:
   void initializeGL();
   void resizeGL(int width, int height);
   void paintGL();
+  /// The frame painter's marks over the frame just drawn (ViewportSurface::paintGL).
+  void paintMarks(QPaintDevice& device);
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
@@ -309,6 +318,7 @@ private:
   ViewLooks looks_;
   QString loadedMatcap_; // the matcap model_ holds, empty before the first
   ViewportOverlay* overlay_ = nullptr;
+  std::function<void(QPainter&)> framePainter_;
 };
 
 } // namespace octaclay::app

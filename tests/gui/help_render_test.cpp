@@ -19,8 +19,10 @@
 #include <QAction>
 #include <QImage>
 #include <QPointer>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStyle>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
@@ -58,6 +60,7 @@ private slots:
   void cleanup();
   void shortcutSheetListsEveryActionWithAShortcut();
   void redoKeysRedoAndSaveAsKeyAsks();
+  void shortcutSheetRowsShowWholeAndUndoByItsName();
   void firstStartShowsTheQuickStartOnce();
   void historyListsTheStepsAndAClickGoesBack();
   void aboutNamesEveryLibraryAndItsLicence();
@@ -236,6 +239,54 @@ void HelpRenderTest::firstStartShowsTheQuickStartOnce() {
   // Help ▸ Quick Start (F1) still opens it on demand.
   second.action("actionQuickStart")->trigger();
   QVERIFY(second.findChild<app::QuickStartDialog*>());
+}
+
+void HelpRenderTest::shortcutSheetRowsShowWholeAndUndoByItsName() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
+  app::testing::pushStrokeAcross(*window_, 0);
+  QVERIFY(QTest::qWaitFor([&] { return window_->undoStack()->count() == 1; }, 3000));
+  QVERIFY(window_->action("actionUndo")->text().contains("push")); // its live text
+  window_->action("actionShortcuts")->trigger();
+  auto* sheet = window_->findChild<app::ShortcutSheet*>();
+  QVERIFY(sheet);
+  QVERIFY(QTest::qWaitForWindowExposed(sheet));
+  // Narrower than it opens (a smaller screen, a larger font): the rows still show whole.
+  sheet->resize(540, sheet->height());
+  QTest::qWait(50);
+  const QTableWidget* table = sheet->table();
+  // Nothing runs off the right edge, and each cell's words fit its cell, wrapped.
+  QCOMPARE(table->horizontalScrollBar()->maximum(), 0);
+  const QFontMetrics metrics = table->fontMetrics();
+  // A cell's text is drawn inside this margin on either side (QCommonStyle's item views).
+  const int margin =
+      2 * (table->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, table) + 1);
+  bool sawF = false;
+  for (int r = 0; r < table->rowCount(); ++r) {
+    sawF = sawF || table->item(r, 0)->text() == "F";
+    for (int c = 0; c < 3; ++c) {
+      const QTableWidgetItem* item = table->item(r, c);
+      const QRect cell = table->visualItemRect(item);
+      const QRect needed = metrics.boundingRect(QRect(0, 0, cell.width() - margin, 10000),
+                                                Qt::TextWordWrap, item->text());
+      QVERIFY2(needed.width() <= cell.width() - margin && needed.height() <= cell.height(),
+               qPrintable(QString("row %1 \"%2\": %3×%4 px in a %5×%6 cell")
+                              .arg(r)
+                              .arg(item->text())
+                              .arg(needed.width())
+                              .arg(needed.height())
+                              .arg(cell.width())
+                              .arg(cell.height())));
+    }
+  }
+  QVERIFY(sawF);
+  // Undo by what it does, not the step it would undo now.
+  QVERIFY(table->findItems("Undo Stroke (push)", Qt::MatchExactly).isEmpty());
+  const QList<QTableWidgetItem*> undo = table->findItems("Undo", Qt::MatchExactly);
+  QCOMPARE(undo.size(), 1);
+  QCOMPARE(table->item(undo.front()->row(), 0)->text(),
+           QKeySequence(QKeySequence::Undo).toString(QKeySequence::NativeText));
 }
 
 void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {

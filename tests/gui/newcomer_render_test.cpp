@@ -141,6 +141,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   QCOMPARE(window_->undoStack()->text(1), QStringLiteral("Import egg.obj"));
   QVERIFY(window_->currentPath().isEmpty());
   QVERIFY(window_->isModified());
+  QCOMPARE(window_->windowTitle(), QStringLiteral("egg[*] — Octaclay")); // the mesh's name
   const std::vector<float> imported = positionsOf(*window_);
   app::testing::pushStrokeAcross(*window_, 0);
   const std::vector<float> importedStroked = positionsOf(*window_);
@@ -157,6 +158,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   QVERIFY(bitEqual(positionsOf(*window_), stroked));
   QCOMPARE(window_->currentPath(), QFileInfo(dir_.filePath("ball.exr")).absoluteFilePath());
   QVERIFY(!window_->isModified()); // as saved
+  QCOMPARE(window_->windowTitle(), QStringLiteral("ball.exr[*] — Octaclay"));
   QCOMPARE(window_->lodPanel()->documentSize(), 128);
   undo->trigger();
   QVERIFY(bitEqual(positionsOf(*window_), sphere));
@@ -168,6 +170,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   QVERIFY(bitEqual(positionsOf(*window_), imported));
   QVERIFY(window_->currentPath().isEmpty());
   QVERIFY(window_->isModified());
+  QCOMPARE(window_->windowTitle(), QStringLiteral("egg[*] — Octaclay"));
   redo->trigger();
   QVERIFY(bitEqual(positionsOf(*window_), importedStroked));
   QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));

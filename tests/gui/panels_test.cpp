@@ -349,6 +349,19 @@ private slots:
     QCOMPARE(panel.strength(), kDefaultSculptStrength);
   }
 
+  void draggingBrushesStartAtFullStrength() {
+    QSettings().clear();
+    BrushPanel panel;
+    panel.setBrushes(brushes_, {});
+    for (const char* id : {"snake-hook", "grab"}) {
+      QVERIFY(panel.selectBrush(QString::fromLatin1(id)));
+      QCOMPARE(panel.strength(), 1.0f);
+      QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->value(), 100.0);
+    }
+    QVERIFY(panel.selectBrush(QStringLiteral("crease")));
+    QCOMPARE(panel.strength(), kDefaultSculptStrength);
+  }
+
   void errorsAreShownInFull() {
     const std::string longError =
         "/home/someone/.local/share/octaclay/brushes/very-long-folder-name/manifest.json: "

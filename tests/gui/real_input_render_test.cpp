@@ -2,21 +2,36 @@
 // not events sent to the widget: its frames are a native GL window's, so the mouse, the keyboard
 // focus and the shortcuts must still reach the widgets through it.
 #include "brush_panel.h"
+#include "canvas_brush_adjust.h"
+#include "history_dialog.h"
 #include "main_window.h"
 #include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
 
+#include <QAction>
+#include <QApplication>
+#include <QFontMetricsF>
 #include <QGuiApplication>
+#include <QScreen>
+#include <QSettings>
+#include <QSlider>
+#include <QStatusBar>
+#include <QStyle>
 #include <QTemporaryDir>
+#include <QUndoStack>
+#include <QUndoView>
 #include <QtTest>
+#include <X11/XKBlib.h>
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
 #include <X11/keysym.h>
+#undef None // X11's macro, which would hide CanvasBrushAdjust::Mode::None
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <cmath>
 #include <memory>
 
 using namespace octaclay;
@@ -45,9 +60,22 @@ public:
     XTestFakeButtonEvent(display_, button, down, CurrentTime);
     settle();
   }
+  /// The key the symbol is on, at whatever level: XK_KP_1 is the keypad's 1/End key, which
+  /// gives KP_End with NumLock off.
   void key(KeySym symbol, bool down) {
     XTestFakeKeyEvent(display_, XKeysymToKeycode(display_, symbol), down, CurrentTime);
     settle();
+  }
+  bool numLock() {
+    XkbStateRec state;
+    XkbGetState(display_, XkbUseCoreKbd, &state);
+    return state.locked_mods & XkbKeysymToModifiers(display_, XK_Num_Lock);
+  }
+  /// Presses NumLock until it is on (or off), as a user would.
+  bool setNumLock(bool on) {
+    for (int tries = 0; tries < 2 && numLock() != on; ++tries)
+      press({XK_Num_Lock});
+    return numLock() == on;
   }
   void press(std::initializer_list<KeySym> chord) {
     for (KeySym k : chord)
@@ -64,6 +92,14 @@ private:
   Display* display_;
 };
 
+/// Makes w the active window as a click on its title would: with no window manager under Xvfb
+/// nothing else gives a new window the X input focus.
+bool activate(QWidget& w) {
+  w.activateWindow();
+  w.raise();
+  return QTest::qWaitForWindowActive(&w);
+}
+
 } // namespace
 
 class RealInputRenderTest : public QObject {
@@ -71,7 +107,13 @@ class RealInputRenderTest : public QObject {
 
 private slots:
   void initTestCase();
+  void cleanup();
   void strokeUndoRedoShortcutAndWheelThroughTheGlWindow();
+  void keypadViewsTurnTheCameraWithNumLockOnAndOff();
+  void fAndShiftFAdjustOverTheModelOnScreen();
+  void snakeHookAtItsDefaultPullsAlongTheDrag();
+  void bracketWorksRightAfterDraggingTheStrengthSlider();
+  void undoSaysWhenItsBudgetDropsSteps();
 
 private:
   QTemporaryDir dir_;
@@ -84,6 +126,15 @@ void RealInputRenderTest::initTestCase() {
   QCoreApplication::setApplicationName("real_input_render_test");
   qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
   QSettings().clear();
+}
+
+// The real pointer parked in the screen's far corner, off every window the next test opens:
+// a window appearing under it would get its motion.
+void RealInputRenderTest::cleanup() {
+  FakeInput input;
+  if (!input.ready()) return;
+  const QRect screen = QGuiApplication::primaryScreen()->geometry();
+  input.moveTo(screen.bottomRight());
 }
 
 void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
@@ -122,6 +173,371 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   input.button(4, true);
   input.button(4, false);
   QVERIFY(QTest::qWaitFor([&] { return camera->GetDistance() < distance * 0.95; }, 3000));
+}
+
+namespace {
+
+core::Vec3f towardEyeOf(vtkCamera& camera) {
+  const double *p = camera.GetPosition(), *f = camera.GetFocalPoint();
+  return core::normalize(core::Vec3f{float(p[0] - f[0]), float(p[1] - f[1]), float(p[2] - f[2])});
+}
+
+core::Vec3f upOf(vtkCamera& camera) {
+  const double* u = camera.GetViewUp();
+  return core::normalize(core::Vec3f{float(u[0]), float(u[1]), float(u[2])});
+}
+
+bool near(core::Vec3f a, core::Vec3f b) {
+  return core::length(a - b) < 1e-3f;
+}
+
+QString text(core::Vec3f v) {
+  return QString("(%1, %2, %3)").arg(v.x, 0, 'f', 3).arg(v.y, 0, 'f', 3).arg(v.z, 0, 'f', 3);
+}
+
+} // namespace
+
+void RealInputRenderTest::keypadViewsTurnTheCameraWithNumLockOnAndOff() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(activate(*window));
+  // A newcomer's first key reaches the model: the viewport has the keys from the start.
+  QVERIFY2(QTest::qWaitFor([&] { return QApplication::focusWidget() == view; }, 3000),
+           QApplication::focusWidget() ? QApplication::focusWidget()->metaObject()->className()
+                                       : "no focus");
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+  auto* ortho = window->findChild<QAction*>(QStringLiteral("actionOrthographic"));
+  QVERIFY(ortho);
+  input.moveTo(view->mapToGlobal(QPoint(view->width() / 2, view->height() / 2)));
+
+  struct Case {
+    KeySym key;
+    bool ctrl;
+    core::Vec3f towardEye, up;
+  };
+  const Case cases[] = {
+      {XK_KP_1, false, {0, 0, 1}, {0, 1, 0}},  {XK_KP_1, true, {0, 0, -1}, {0, 1, 0}},
+      {XK_KP_3, false, {1, 0, 0}, {0, 1, 0}},  {XK_KP_3, true, {-1, 0, 0}, {0, 1, 0}},
+      {XK_KP_7, false, {0, 1, 0}, {0, 0, -1}}, {XK_KP_7, true, {0, -1, 0}, {0, 0, 1}},
+  };
+  const bool numLockWas = input.numLock();
+  for (const bool numLock : {true, false}) {
+    QVERIFY2(input.setNumLock(numLock), numLock ? "NumLock stays off" : "NumLock stays on");
+    for (const Case& c : cases) {
+      // From an oblique view at some distance: the key turns the camera and keeps the zoom.
+      const double* f = camera->GetFocalPoint();
+      const double d = 3.7;
+      camera->SetPosition(f[0] + d * 0.48, f[1] + d * 0.6, f[2] + d * 0.64);
+      camera->SetViewUp(0, 1, 0);
+      camera->OrthogonalizeViewUp();
+      view->update();
+      const QString what = QString("%1keypad %2, NumLock %3")
+                               .arg(c.ctrl ? "Ctrl+" : "")
+                               .arg(XKeysymToString(c.key))
+                               .arg(numLock ? "on" : "off");
+      if (c.ctrl)
+        input.press({XK_Control_L, c.key});
+      else
+        input.press({c.key});
+      QVERIFY2(QTest::qWaitFor([&] { return near(towardEyeOf(*camera), c.towardEye); }, 2000),
+               qPrintable(what + ": camera toward " + text(towardEyeOf(*camera))));
+      QVERIFY2(near(upOf(*camera), c.up), qPrintable(what + ": up " + text(upOf(*camera))));
+      QVERIFY2(std::abs(camera->GetDistance() - d) < 1e-6,
+               qPrintable(what + QString(": distance %1").arg(camera->GetDistance())));
+    }
+    // Keypad 5 switches the projection and the menu's check mark, both ways.
+    const bool parallel = camera->GetParallelProjection();
+    input.press({XK_KP_5});
+    QVERIFY2(
+        QTest::qWaitFor([&] { return bool(camera->GetParallelProjection()) != parallel; }, 2000),
+        numLock ? "keypad 5, NumLock on" : "keypad 5, NumLock off");
+    QCOMPARE(ortho->isChecked(), !parallel);
+    input.press({XK_KP_5});
+    QVERIFY(
+        QTest::qWaitFor([&] { return bool(camera->GetParallelProjection()) == parallel; }, 2000));
+    QCOMPARE(ortho->isChecked(), parallel);
+  }
+
+  // The main keyboard's Home still frames the model from where the camera looks.
+  app::setViewDirection(*camera, app::ViewDirection::Right);
+  camera->Dolly(0.1); // ten times as far
+  const double far = camera->GetDistance();
+  input.press({XK_Home});
+  QVERIFY2(QTest::qWaitFor([&] { return camera->GetDistance() < far * 0.5; }, 2000),
+           qPrintable(QString("distance %1 after Home").arg(camera->GetDistance())));
+  QVERIFY(near(towardEyeOf(*camera), {1, 0, 0}));
+  input.setNumLock(numLockWas); // the display as it was, for the tests after this one
+}
+
+namespace {
+
+/// The viewport as the X server shows it (the root window's pixels, whatever draws them).
+QImage onScreen(QWidget* view) {
+  const QPoint at = view->mapToGlobal(QPoint(0, 0));
+  return QGuiApplication::primaryScreen()
+      ->grabWindow(0, at.x(), at.y(), view->width(), view->height())
+      .toImage()
+      .convertToFormat(QImage::Format_RGB32);
+}
+
+int most(QRgb a, QRgb b) {
+  return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                   std::abs(qBlue(a) - qBlue(b))});
+}
+
+} // namespace
+
+void RealInputRenderTest::fAndShiftFAdjustOverTheModelOnScreen() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(window->brushPanel()->selectBrush("push"));
+  QVERIFY(activate(*window));
+  auto* adjust = window->findChild<app::CanvasBrushAdjust*>(QStringLiteral("canvasBrushAdjust"));
+  QVERIFY(adjust);
+  const QColor background = view->looks().backgroundTop;
+  // The pointer on the model a little off its centre; the picture then, ring included.
+  const QPoint origin = view->project({0, 0, 0}).toPoint() - QPoint(40, 30);
+  input.moveTo(view->mapToGlobal(origin));
+  QTest::qWait(300);
+  const QImage before = onScreen(view);
+  int model = 0;
+  for (int y = 0; y < before.height(); ++y)
+    for (int x = 0; x < before.width(); ++x)
+      model += most(before.pixel(x, y), background.rgb()) > 12;
+  QVERIFY2(model > before.width() * before.height() / 10,
+           qPrintable(QString("%1 model pixels before").arg(model)));
+
+  for (const bool strength : {false, true}) {
+    const QString what = strength ? "Shift+F" : "F";
+    if (strength)
+      input.press({XK_Shift_L, XK_f});
+    else
+      input.press({XK_f});
+    const auto mode =
+        strength ? app::CanvasBrushAdjust::Mode::Strength : app::CanvasBrushAdjust::Mode::Radius;
+    QVERIFY2(QTest::qWaitFor([&] { return adjust->mode() == mode; }, 2000), qPrintable(what));
+    QCOMPARE(adjust->origin(), QPointF(origin));
+    const double ring0 = adjust->marks().ringPixels;
+    input.moveTo(view->mapToGlobal(origin + QPoint(25, 4)));
+    QVERIFY(QTest::qWaitFor([&] { return adjust->marks().ringPixels != ring0 || strength; }, 2000));
+    const app::CanvasBrushAdjust::Marks marks = adjust->marks();
+    const QFontMetricsF metrics(QGuiApplication::font());
+    const QRectF box(marks.centre + QPointF(14, 14),
+                     QSizeF(metrics.horizontalAdvance(marks.text) + 12, metrics.height() + 6));
+    const double ring = std::max(ring0, marks.ringPixels) + 8;
+
+    // On the screen: the model's pixels away from the ring and the value's box are as before,
+    // and the box is there, dark with white text.
+    int kept = 0, modelAway = 0, inBox = 0, darker = 0, white = 0;
+    QImage during;
+    (void)QTest::qWaitFor( // the checks below say what was not as waited for
+        [&] {
+          during = onScreen(view);
+          kept = modelAway = inBox = darker = white = 0;
+          for (int y = 0; y < during.height(); ++y)
+            for (int x = 0; x < during.width(); ++x) {
+              const QPointF p(x + 0.5, y + 0.5);
+              const QRgb was = before.pixel(x, y), now = during.pixel(x, y);
+              if (box.adjusted(2, 2, -2, -2).contains(p)) {
+                ++inBox;
+                darker += qGray(now) < qGray(was) - 20;
+                white += qGray(now) > 200;
+                continue;
+              }
+              if (std::hypot(p.x() - origin.x(), p.y() - origin.y()) < ring) continue;
+              if (most(was, background.rgb()) <= 12) continue;
+              ++modelAway;
+              kept += most(was, now) <= 2;
+            }
+          return kept > modelAway * 0.98 && darker > inBox / 2 && white > 10;
+        },
+        3000);
+    QVERIFY2(modelAway > model / 2, qPrintable(QString("%1 of %2").arg(modelAway).arg(model)));
+    QVERIFY2(kept > modelAway * 0.98,
+             qPrintable(
+                 QString("%1: %2 of %3 model pixels in sight").arg(what).arg(kept).arg(modelAway)));
+    QVERIFY2(darker > inBox / 2 && white > 10,
+             qPrintable(QString("%1: value box %2 px, %3 darker, %4 white")
+                            .arg(what)
+                            .arg(inBox)
+                            .arg(darker)
+                            .arg(white)));
+    if (strength) {
+      // The strength's disc inside the ring, brighter than the model was.
+      const QPoint inside = origin + QPoint(0, -int(marks.ringPixels * marks.strength / 2));
+      QVERIFY(qGray(during.pixel(inside)) > qGray(before.pixel(inside)));
+    }
+    input.press({XK_Escape});
+    QVERIFY(QTest::qWaitFor([&] { return adjust->mode() == app::CanvasBrushAdjust::Mode::None; },
+                            2000));
+    input.moveTo(view->mapToGlobal(origin));
+  }
+  // Afterwards the marks are gone: the picture is the one before.
+  QVERIFY(QTest::qWaitFor(
+      [&] { return app::testing::comparePixels(before, onScreen(view)).differing < 50; }, 3000));
+}
+
+void RealInputRenderTest::snakeHookAtItsDefaultPullsAlongTheDrag() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  QSettings().clear(); // no strength remembered from an earlier session
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  app::BrushPanel* panel = window->brushPanel();
+  const QPoint centre = view->project({0, 0, 0}).toPoint();
+  input.moveTo(view->mapToGlobal(centre));
+  QVERIFY(activate(*window));
+  input.press({XK_k});
+  QVERIFY(QTest::qWaitFor([&] { return panel->currentBrushId() == QString("snake-hook"); }, 2000));
+  QCOMPARE(panel->strength(), 1.0f);
+
+  // A 200 px drag from the front of the sphere pulls a hook most of that far.
+  const auto hit = view->pickAt(centre);
+  QVERIFY(hit);
+  const std::vector<float> before = app::testing::positionsOf(*window);
+  const QPoint from = centre;
+  input.moveTo(view->mapToGlobal(from));
+  input.button(1, true);
+  for (int k = 1; k <= 20; ++k)
+    input.moveTo(view->mapToGlobal(from + QPoint(10 * k, 0)));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 5000));
+  const std::vector<float> after = app::testing::positionsOf(*window);
+  float pulled = 0;
+  for (std::size_t k = 0; k + 3 < after.size(); k += 4)
+    pulled = std::max(pulled,
+                      core::length(core::Vec3f{after[k] - before[k], after[k + 1] - before[k + 1],
+                                               after[k + 2] - before[k + 2]}));
+  // Object units to pixels at the front of the sphere, sideways.
+  const core::Vec3f front = hit->position;
+  const float unit = 0.1f;
+  const QPointF a = view->project(front), b = view->project(front + core::Vec3f{unit, 0, 0});
+  const double pixels = pulled * std::hypot(b.x() - a.x(), b.y() - a.y()) / unit;
+  qInfo("a 200 px drag pulled the surface %.0f px", pixels);
+  QVERIFY2(pixels > 120, qPrintable(QString("a 200 px drag pulled %1 px").arg(pixels)));
+}
+
+void RealInputRenderTest::bracketWorksRightAfterDraggingTheStrengthSlider() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
+  QVERIFY(activate(*window));
+  app::BrushPanel* panel = window->brushPanel();
+  QVERIFY(panel->selectBrush("push"));
+  auto* slider = window->findChild<QSlider*>(QStringLiteral("headerStrength"));
+  QVERIFY(slider && slider->isVisible());
+  const float strength = panel->strength();
+
+  // Press on the slider's handle and drag it 40 px to the right, as a hand on the mouse does.
+  const int handle = slider->style()->pixelMetric(QStyle::PM_SliderLength, nullptr, slider);
+  const double at =
+      double(slider->value() - slider->minimum()) / double(slider->maximum() - slider->minimum());
+  const QPoint grip(handle / 2 + int(at * (slider->width() - handle)), slider->height() / 2);
+  const QPoint start = slider->mapToGlobal(grip);
+  input.moveTo(start);
+  input.button(1, true);
+  for (int k = 1; k <= 8; ++k)
+    input.moveTo(start + QPoint(5 * k, 0));
+  input.button(1, false);
+  QVERIFY2(QTest::qWaitFor([&] { return panel->strength() > strength + 0.05f; }, 2000),
+           qPrintable(QString("strength %1 -> %2").arg(strength).arg(panel->strength())));
+
+  // ] at once (no Esc, no click on the model) grows the radius by a tenth.
+  const float radius = panel->radius();
+  input.press({XK_bracketright});
+  QVERIFY2(QTest::qWaitFor([&] { return std::abs(panel->radius() - radius * 1.1f) < 1e-5f; }, 2000),
+           qPrintable(QString("radius %1 -> %2 (focus: %3)")
+                          .arg(radius)
+                          .arg(panel->radius())
+                          .arg(QApplication::focusWidget()
+                                   ? QApplication::focusWidget()->metaObject()->className()
+                                   : "none")));
+  QCOMPARE(QApplication::focusWidget(), window->viewport());
+  // Shift+[ steps the strength the slider set.
+  const float set = panel->strength();
+  input.press({XK_Shift_L, XK_bracketleft});
+  QVERIFY(QTest::qWaitFor([&] { return std::abs(panel->strength() - set / 1.1f) < 1e-3f; }, 2000));
+}
+
+void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
+  QVERIFY(activate(*window));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(window->brushPanel()->selectBrush("push"));
+  window->brushPanel()->setRadius(0.1f);
+  const QPoint centre = view->mapToGlobal(view->project({0, 0, 0}).toPoint());
+  int strokes = 0;
+  const auto stroke = [&] {
+    const QPoint from = centre + QPoint(-40, 25 * (strokes % 3 - 1));
+    input.moveTo(from);
+    input.button(1, true);
+    for (int k = 1; k <= 8; ++k)
+      input.moveTo(from + QPoint(10 * k, 0));
+    input.button(1, false);
+    ++strokes;
+    return QTest::qWaitFor([&] { return window->undoStack()->count() == strokes; }, 5000);
+  };
+  QVERIFY(stroke());
+  QUndoStack* stack = window->undoStack();
+  // A budget of about two such strokes.
+  const std::size_t one = view->history().bytes();
+  QVERIFY(one > 0);
+  stack->undo();
+  QVERIFY(!view->canUndo());
+  view->history() = core::EditHistory(one * 5 / 2);
+  stack->clear();
+  strokes = 0;
+
+  QAction* historyAction = window->findChild<QAction*>(QStringLiteral("actionHistory"));
+  QVERIFY(historyAction);
+  historyAction->trigger();
+  auto* history = window->findChild<app::HistoryDialog*>();
+  QVERIFY(history);
+  history->move(window->frameGeometry().right() + 10, 0); // beside the model, not over it
+  const auto firstRow = [&] { return history->view()->model()->index(0, 0).data().toString(); };
+  QVERIFY(stroke());
+  QCOMPARE(firstRow(), QString("Model as opened or made"));
+  QVERIFY(activate(*window));
+  while (strokes < 6 && std::size_t(stack->count()) == view->history().undoCount())
+    QVERIFY(stroke());
+  QVERIFY2(std::size_t(stack->count()) > view->history().undoCount(),
+           "six strokes fit a budget of two and a half");
+  // The status bar says so, the dropped step says so, the first row no longer promises the
+  // model as it was made.
+  QVERIFY2(window->statusBar()->toolTip().startsWith("Undo now keeps only the newest"),
+           qPrintable(window->statusBar()->currentMessage()));
+  QVERIFY(stack->text(0).endsWith(" — dropped from history"));
+  QVERIFY(!stack->text(stack->count() - 1).contains("dropped"));
+  QCOMPARE(firstRow(), QString("Oldest kept step"));
+  // Undoing everything stops at the oldest kept step, and the redo comes back.
+  const std::vector<float> newest = app::testing::positionsOf(*window);
+  while (stack->canUndo())
+    stack->undo();
+  QVERIFY(!view->canUndo());
+  while (stack->canRedo())
+    stack->redo();
+  QVERIFY(app::testing::bitEqual(app::testing::positionsOf(*window), newest));
 }
 
 QTEST_MAIN(RealInputRenderTest)
