@@ -32,10 +32,11 @@ void requireNamedOutput(const CLI::App& subcommand) {
     throw core::Error(core::ErrorKind::InvalidArgument, "-o names no file: give an output path");
 }
 
-// Only `new` and `import` allocate what --size asks for; anywhere else memory runs out on what
-// an input file declares.
+// Only `new`, `import`, `resize` and `remesh` allocate what --size asks for; anywhere else
+// memory runs out on what an input file declares.
 bool sizedByArgument(const CLI::App& subcommand) {
-  return subcommand.get_name() == "new" || subcommand.get_name() == "import";
+  return subcommand.get_name() == "new" || subcommand.get_name() == "import" ||
+         subcommand.get_name() == "resize" || subcommand.get_name() == "remesh";
 }
 
 } // namespace
@@ -48,7 +49,8 @@ int main(int argc, char** argv) {
       app::addNewCommand(cli),        app::addInfoCommand(cli),   app::addExportCommand(cli),
       app::addCompareCommand(cli),    app::addStrokeCommand(cli), app::addBrushesCommand(cli),
       app::addImportCommand(cli),     app::addLodCommand(cli),    app::addCompressCommand(cli),
-      app::addDecompressCommand(cli), app::addRelaxCommand(cli)};
+      app::addDecompressCommand(cli), app::addRelaxCommand(cli),  app::addResizeCommand(cli),
+      app::addRemeshCommand(cli)};
 
   try {
     cli.parse(argc, argv);
