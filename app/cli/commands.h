@@ -36,5 +36,7 @@ Command addLodCommand(CLI::App& app);
 Command addCompressCommand(CLI::App& app);
 Command addDecompressCommand(CLI::App& app);
 Command addRelaxCommand(CLI::App& app);
+Command addResizeCommand(CLI::App& app);
+Command addRemeshCommand(CLI::App& app);
 
 } // namespace octaclay::app

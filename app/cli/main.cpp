@@ -34,10 +34,11 @@ void requireNamedOutput(const CLI::App& subcommand) {
     throw core::Error(core::ErrorKind::InvalidArgument, "-o names no file: give an output path");
 }
 
-// Only `new` and `import` allocate what --size asks for; anywhere else memory runs out on what
-// an input file declares.
+// Only `new`, `import`, `resize` and `remesh` allocate what --size asks for; anywhere else
+// memory runs out on what an input file declares.
 bool sizedByArgument(const CLI::App& subcommand) {
-  return subcommand.get_name() == "new" || subcommand.get_name() == "import";
+  return subcommand.get_name() == "new" || subcommand.get_name() == "import" ||
+         subcommand.get_name() == "resize" || subcommand.get_name() == "remesh";
 }
 
 // A token that is a value, not an option, though it starts with '-': a negative number or a
@@ -80,7 +81,8 @@ int main(int argc, char** argv) {
       app::addNewCommand(cli),        app::addInfoCommand(cli),   app::addExportCommand(cli),
       app::addCompareCommand(cli),    app::addStrokeCommand(cli), app::addBrushesCommand(cli),
       app::addImportCommand(cli),     app::addLodCommand(cli),    app::addCompressCommand(cli),
-      app::addDecompressCommand(cli), app::addRelaxCommand(cli)};
+      app::addDecompressCommand(cli), app::addRelaxCommand(cli),  app::addResizeCommand(cli),
+      app::addRemeshCommand(cli)};
 
   cli.set_version_flag("--version", std::string("octaclay-cli ") + OCTACLAY_VERSION);
   if (argc >= 2 && argv[1][0] != '-') {

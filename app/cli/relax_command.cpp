@@ -6,11 +6,10 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/stretch.h"
-#include "octaclay/core/measure/surface_distance.h"
 #include "octaclay/core/relax/relax.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -40,7 +39,11 @@ Command addRelaxCommand(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "relax", "Even out the samples over the surface (where it was pulled far, samples come "
-               "back); the surface and every painted layer stay where they are");
+               "back); the surface and every painted layer stay where they are. The result is "
+               "checked: when the surface would move more than 0.01 % (RMS) or 0.1 % "
+               "(Hausdorff) of the diagonal, or the stretch would get worse, a smaller step is "
+               "tried, else the document is written unchanged and the reason said (exit 0; "
+               "--json: \"changed\": false, \"reason\")");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_option("--iterations", opt->iterations,
@@ -48,53 +51,69 @@ Command addRelaxCommand(CLI::App& app) {
                       std::to_string(core::kMaxRelaxIterations) + "; default 1)");
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
-  return {
-      sub, [opt]() {
-        core::RelaxOptions options;
-        options.iterations = opt->iterations;
-        if (opt->iterations < 1 || opt->iterations > core::kMaxRelaxIterations)
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "--iterations " + std::to_string(opt->iterations) +
-                                " is outside 1 to " + std::to_string(core::kMaxRelaxIterations));
-        const core::Document document = core::readDocument(opt->input);
-        const core::StretchSummary before = core::summarizeStretch(document.positions);
-        const auto start = std::chrono::steady_clock::now();
-        const core::Document relaxed = core::evenOutSamples(document, options);
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        const core::StretchSummary after = core::summarizeStretch(relaxed.positions);
-        // A surface collapsed to a point has nothing to even out and no scale to measure by.
-        const core::TriangleMesh surface = core::extractMesh(document.positions);
-        const core::SurfaceDistance moved =
-            core::boundingBox(surface).diagonal() > 0
-                ? core::compareSurfaces(surface, core::extractMesh(relaxed.positions),
-                                        {.samplesPerSurface = 200'000})
-                : core::SurfaceDistance{};
-        std::ostringstream report; // made before the save, which commits last
-        if (opt->json) {
-          report << app::JsonReply{{"input", opt->input},          {"output", opt->output},
-                                   {"size", document.size()},      {"before", stretchJson(before)},
-                                   {"after", stretchJson(after)},  {"rms", moved.rms},
-                                   {"hausdorff", moved.hausdorff}, {"ms", ms}}
-                        .dump()
-                 << "\n";
-        } else {
-          report << std::setprecision(3) << "relaxed " << opt->input << " into " << opt->output
-                 << " in " << ms << " ms\n"
-                 << "  longest edge  " << before.longestOverMedian << "x -> "
-                 << after.longestOverMedian << "x the median\n"
-                 << "  99th pct edge " << before.p99OverMedian << "x -> " << after.p99OverMedian
-                 << "x the median\n"
-                 << "  over 4x       " << 100 * before.shareOver4x << " % -> "
-                 << 100 * after.shareOver4x << " % of samples\n"
-                 << "  surface moved RMS " << 100 * moved.rms << " %, Hausdorff "
-                 << 100 * moved.hausdorff << " % of the diagonal\n";
-        }
-        core::writeDocument(relaxed, opt->output);
-        std::cout << report.str();
-        return kExitOk;
-      }};
+  return {sub, [opt]() {
+            core::RelaxOptions options;
+            options.iterations = opt->iterations;
+            if (opt->iterations < 1 || opt->iterations > core::kMaxRelaxIterations)
+              throw core::Error(core::ErrorKind::InvalidArgument,
+                                "--iterations " + std::to_string(opt->iterations) +
+                                    " is outside 1 to " +
+                                    std::to_string(core::kMaxRelaxIterations));
+            const core::Document document = core::readDocument(opt->input);
+            const auto start = std::chrono::steady_clock::now();
+            // The even-out checks its own result (core::evenOut): a step that would move the
+            // surface beyond its tolerance or leave the stretch worse is backed off or not taken.
+            const core::EvenOutResult result = core::evenOut(document, options);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            const core::Document& relaxed = result.document;
+            const double vertices = double(std::max<std::size_t>(result.vertices, 1));
+            std::ostringstream report; // made before the save, which commits last
+            if (opt->json) {
+              report << app::JsonReply{{"input", opt->input},
+                                       {"output", opt->output},
+                                       {"size", document.size()},
+                                       {"changed", result.changed},
+                                       {"reason", result.reason},
+                                       {"step", result.step},
+                                       {"tries", result.tries},
+                                       {"before", stretchJson(result.before)},
+                                       {"after", stretchJson(result.after)},
+                                       {"stretched_share_before",
+                                        double(result.stretchedBefore) / vertices},
+                                       {"stretched_share_after",
+                                        double(result.stretchedAfter) / vertices},
+                                       {"rms", result.changed ? result.moved.rms : 0.0},
+                                       {"hausdorff", result.changed ? result.moved.hausdorff : 0.0},
+                                       {"tried_rms", result.moved.rms},
+                                       {"tried_hausdorff", result.moved.hausdorff},
+                                       {"ms", ms}}
+                            .dump()
+                     << "\n";
+            } else if (!result.changed) {
+              report << "left " << opt->input << " unchanged (written to " << opt->output
+                     << "): " << result.reason << "\n";
+            } else {
+              const core::StretchSummary& before = result.before;
+              const core::StretchSummary& after = result.after;
+              report << std::setprecision(3) << "relaxed " << opt->input << " into " << opt->output
+                     << " in " << ms << " ms";
+              if (result.step < 1) report << " (" << result.step << " of the full step)";
+              report << "\n"
+                     << "  longest edge  " << before.longestOverMedian << "x -> "
+                     << after.longestOverMedian << "x the median\n"
+                     << "  99th pct edge " << before.p99OverMedian << "x -> " << after.p99OverMedian
+                     << "x the median\n"
+                     << "  over 4x       " << 100 * before.shareOver4x << " % -> "
+                     << 100 * after.shareOver4x << " % of samples\n"
+                     << "  surface moved RMS " << 100 * result.moved.rms << " %, Hausdorff "
+                     << 100 * result.moved.hausdorff << " % of the diagonal\n";
+            }
+            core::writeDocument(relaxed, opt->output);
+            std::cout << report.str();
+            return kExitOk;
+          }};
 }
 
 } // namespace octaclay::app

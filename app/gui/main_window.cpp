@@ -232,7 +232,7 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
   if (!control) control = std::make_shared<TaskControl>();
   // The copy is taken here, on the GUI thread; the worker never touches the viewport.
   auto source = std::make_shared<const core::Document>(viewport_->document());
-  auto result = std::make_shared<core::Document>();
+  auto result = std::make_shared<core::EvenOutResult>();
   // What tells that the model changed while the task ran (input reaches the viewport in the
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
@@ -245,7 +245,9 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
   QString error = runner.run(
       tr("Evening out the samples…"),
       [source, result, control] {
-        *result = core::evenOutSamples(*source, {}, [control](float f) {
+        // core::evenOut checks its own result: the document comes back unchanged, with the
+        // reason, rather than moved beyond its tolerance or more stretched.
+        *result = core::evenOut(*source, {}, {}, [control](float f) {
           control->fraction = f;
           return !control->cancel.load();
         });
@@ -260,10 +262,16 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
     statusBar()->showMessage(tr("The model changed while evening out; nothing was applied"), 8000);
     return false;
   }
+  if (error.isEmpty() && !result->changed) {
+    statusBar()->showMessage(
+        tr("Even Out left the model unchanged: %1").arg(QString::fromStdString(result->reason)),
+        15000);
+    return false;
+  }
   bool recorded = false;
   if (error.isEmpty()) {
     try {
-      recorded = viewport_->applyChange(*result, "Even Out Samples");
+      recorded = viewport_->applyChange(result->document, "Even Out Samples");
     } catch (const std::exception& e) {
       error = QString::fromUtf8(e.what());
     }

@@ -89,10 +89,12 @@ public:
   /// OBJ + MTL or GLB with an object-space normal map baked from the full resolution, off the
   /// GUI thread with progress.
   bool exportLod(const QString& path) { return documents_->exportLod(path); }
-  /// Mesh ▸ Even Out Samples: core::evenOutSamples on a copy of the document, off the GUI
+  /// Mesh ▸ Even Out Samples: core::evenOut on a copy of the document, off the GUI
   /// thread behind a progress dialog with Cancel (control: the task's progress and cancel flag,
   /// new if null; tests pass one already cancelled). On success the result becomes the document
-  /// as one undo step ("Even Out Samples" on the undo stack) and the document is modified; on
+  /// as one undo step ("Even Out Samples" on the undo stack) and the document is modified; when
+  /// the even-out's own check leaves the model unchanged, the status bar says why and no step is
+  /// pushed; on
   /// cancel nothing changes and the status bar says so; on an error a message box says why and
   /// nothing changes. Returns whether a step was made. Refused (false) without a document,
   /// during a stroke or while another task runs.

@@ -49,18 +49,29 @@ void CliRelaxTest::relaxEvensOutTheLimb() {
   qInfo("relax: longest/median %.1f -> %.1f, moved RMS %.5f, Hausdorff %.4f, %.0f ms", before,
         after, reply["rms"].toDouble(), reply["hausdorff"].toDouble(), reply["ms"].toDouble());
   QVERIFY(before > 20);
-  QVERIFY(after < before / 4);
-  QVERIFY(reply["rms"].toDouble() < 1e-3);
   QVERIFY(reply["ms"].toDouble() > 0);
   QVERIFY(QFileInfo::exists(path("even.exr")));
   RUN_JSON(info, "info", path("even.exr"), "--json");
   QCOMPARE(info["euler"].toInt(), 2);
   QVERIFY(info["closed"].toBool());
   QCOMPARE(info["stretch"].toObject()["longest_over_median"].toDouble(), after);
-
   const QStringList human{"relax", path("limb.exr"), "-o", path("even2.exr")};
   const Result r = runCli(human);
   QVERIFY2(r.exitCode == kOk, qPrintable(describe(human, r)));
+  // Issue 30: the even-out checks its result. At N = 64 this limb's even-out would move the
+  // surface by 0.017 % of the diagonal (RMS), over the 0.01 % it allows, at every step it
+  // tries: the document is written unchanged and the reason said.
+  if (!reply["changed"].toBool()) {
+    qInfo("unchanged: %s", qPrintable(reply["reason"].toString()));
+    QVERIFY(!reply["reason"].toString().isEmpty());
+    QCOMPARE(after, before);
+    QCOMPARE(reply["rms"].toDouble(), 0.0);
+    QVERIFY(r.out.contains("unchanged"));
+    return;
+  }
+  QVERIFY(after < before);
+  QVERIFY(reply["rms"].toDouble() <= 1e-4);
+  QVERIFY(reply["hausdorff"].toDouble() <= 1e-3);
   QVERIFY(r.out.contains("longest edge"));
 }
 

@@ -5,9 +5,12 @@
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/grid_point.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -153,10 +156,9 @@ std::vector<TexelRect> mergedExtents(std::vector<TexelRect> rects) {
   return rects;
 }
 
-} // namespace
-
-Document evenOutSamples(const Document& document, const RelaxOptions& options,
-                        const RelaxProgress& progress) {
+// The even-out's offsets (the whole model free), solved on document's positions.
+detail::OffsetField solveEvenOut(const Document& document, const RelaxOptions& options,
+                                 const RelaxProgress& progress) {
   checkOptions(options);
   checkPositions(document.positions);
   detail::OffsetField field(document.size());
@@ -166,11 +168,146 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
   if (!detail::solveOffsets(document.positions, field, fineIterations(options),
                             kEvenOutDonorEdge * medianEdge(document.positions), false, progress))
     throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+  return field;
+}
+
+// Per sample: 1 when one of its grid edges (through the wrap) is over `limit` long.
+std::vector<std::uint8_t> stretchedSamples(const GeometryImage& image, double limit) {
+  const int n = image.size();
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const Vec3f p = image.at(i, j).xyz();
+      bool stretched = false;
+      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
+        stretched = stretched || length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit;
+      out[static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
+          static_cast<std::size_t>(i)] = stretched;
+    }
+  return out;
+}
+
+// How many vertices show the stretched part once field (scaled by step) is applied: a vertex
+// counts when the grid sample nearest its parameter point is stretched.
+std::size_t stretchedShown(const detail::OffsetField& field, double step,
+                           const std::vector<std::uint8_t>& stretched) {
+  const int n = field.n;
+  std::size_t count = 0;
+  forEachCanonicalRun(n, [&](int j, int iBegin, int iEnd) {
+    for (int i = iBegin; i < iEnd; ++i) {
+      const auto& d = field.offset[field.index(i, j)];
+      Sample s{i, j};
+      if (d[0] != 0.0f || d[1] != 0.0f) {
+        const GridPoint p =
+            locateGridPoint(n, double(i) + step * double(d[0]), double(j) + step * double(d[1]));
+        const auto k = std::max_element(p.weights.begin(), p.weights.end()) - p.weights.begin();
+        s = p.corners[static_cast<std::size_t>(k)];
+      }
+      count += stretched[field.index(s.i, s.j)];
+    }
+  });
+  return count;
+}
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
+  return text;
+}
+
+std::string times(double ratio) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3gx", ratio);
+  return text;
+}
+
+} // namespace
+
+Document evenOutSamples(const Document& document, const RelaxOptions& options,
+                        const RelaxProgress& progress) {
+  const detail::OffsetField field = solveEvenOut(document, options, progress);
   Document result = document; // samples that do not move keep their texels
   detail::resampleDocument(document, field, result);
   if (progress && !progress(1.0f))
     throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
   return result;
+}
+
+EvenOutResult evenOut(const Document& document, const RelaxOptions& options,
+                      const EvenOutCheckOptions& check, const RelaxProgress& progress) {
+  const auto cancelled = [] {
+    return Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+  };
+  // The solve is most of the work at one try; each try's measure is about as much again.
+  const float solveShare = 0.5f;
+  const detail::OffsetField field = solveEvenOut(
+      document, options, [&](float f) { return !progress || progress(solveShare * f); });
+  EvenOutResult out;
+  out.before = summarizeStretch(document.positions);
+  out.after = out.before;
+  const int n = document.size();
+  out.vertices = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) + 2;
+  const std::vector<std::uint8_t> stretched =
+      stretchedSamples(document.positions, kStretchedEdge * out.before.medianEdge);
+  out.stretchedBefore = stretchedShown(field, 0.0, stretched);
+  out.stretchedAfter = out.stretchedBefore;
+  const TriangleMesh surface = extractMesh(document.positions);
+  const bool hasScale = boundingBox(surface).diagonal() > 0;
+  std::string firstReason;
+  for (std::size_t t = 0; t < check.steps.size(); ++t) {
+    const double step = check.steps[t];
+    if (!(step > 0 && step <= 1))
+      throw Error(ErrorKind::InvalidArgument, "an even-out step must be in (0, 1]");
+    detail::OffsetField scaled = field;
+    for (auto& d : scaled.offset)
+      d = {static_cast<float>(step * double(d[0])), static_cast<float>(step * double(d[1]))};
+    Document result = document;
+    detail::resampleDocument(document, scaled, result);
+    ++out.tries;
+    const StretchSummary after = summarizeStretch(result.positions);
+    const std::size_t shown = stretchedShown(field, step, stretched);
+    std::string reason;
+    if (after.longestOverMedian > out.before.longestOverMedian * (1 + 1e-6))
+      reason = "the longest edge would grow from " + times(out.before.longestOverMedian) + " to " +
+               times(after.longestOverMedian) + " the median";
+    else if (shown < out.stretchedBefore)
+      reason = "the stretched part would lose samples (" + std::to_string(out.stretchedBefore) +
+               " -> " + std::to_string(shown) + ")";
+    else if (after.longestOverMedian > 0.99 * out.before.longestOverMedian &&
+             double(shown) < 1.01 * double(out.stretchedBefore) + 0.5)
+      reason = "the samples are already as even as it can make them (longest edge " +
+               times(out.before.longestOverMedian) + " the median)";
+    SurfaceDistance moved;
+    if (reason.empty() && hasScale) {
+      moved = compareSurfaces(surface, extractMesh(result.positions),
+                              {.samplesPerSurface = check.samplesPerSurface});
+      out.moved = moved;
+      if (moved.rms > check.rmsTolerance)
+        reason = "the surface would move by " + percent(moved.rms) +
+                 " of the diagonal (RMS; at most " + percent(check.rmsTolerance) + ")";
+      else if (moved.hausdorff > check.hausdorffTolerance)
+        reason = "the surface would move by " + percent(moved.hausdorff) +
+                 " of the diagonal (Hausdorff; at most " + percent(check.hausdorffTolerance) + ")";
+    }
+    if (progress &&
+        !progress(solveShare + (1 - solveShare) * float(t + 1) / float(check.steps.size())))
+      throw cancelled();
+    if (reason.empty()) {
+      out.document = std::move(result);
+      out.changed = true;
+      out.step = step;
+      out.after = after;
+      out.stretchedAfter = shown;
+      if (progress && !progress(1.0f)) throw cancelled();
+      return out;
+    }
+    if (firstReason.empty()) firstReason = reason;
+  }
+  out.document = document;
+  out.reason = firstReason;
+  if (check.steps.size() > 1) out.reason += ", and no smaller step did better";
+  if (progress && !progress(1.0f)) throw cancelled();
+  return out;
 }
 
 Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,

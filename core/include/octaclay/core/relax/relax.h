@@ -4,6 +4,8 @@
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/texel_rect.h"
+#include "octaclay/core/measure/stretch.h"
+#include "octaclay/core/measure/surface_distance.h"
 
 #include <functional>
 #include <string>
@@ -35,6 +37,42 @@ using RelaxProgress = std::function<bool(float)>;
 /// Error(Cancelled) when progress returned false (document untouched: it is const).
 Document evenOutSamples(const Document& document, const RelaxOptions& options = {},
                         const RelaxProgress& progress = {});
+
+/// How far evenOut may move the surface and how it measures that.
+struct EvenOutCheckOptions {
+  double rmsTolerance = 1e-4;       ///< surface RMS move, fraction of the bounding-box diagonal
+  double hausdorffTolerance = 1e-3; ///< surface Hausdorff move, fraction of the diagonal
+  /// The steps tried, as fractions of the solved move, largest first (each resampled from the
+  /// original, never from a previous try).
+  std::vector<double> steps{1.0, 0.5, 0.25, 0.125};
+  /// Random points per surface of the surface-distance measure (besides the vertices).
+  std::size_t samplesPerSurface = 100'000;
+};
+
+/// What evenOut did and measured. The stretched part: the samples with an incident grid edge
+/// over twice the median (before the even-out); after it, a sample counts when its parameter
+/// point is nearest such a sample, i.e. when it shows the stretched part of the old surface.
+struct EvenOutResult {
+  Document document; ///< the evened-out document, or the input unchanged
+  bool changed = false;
+  std::string reason;           ///< why the document was left unchanged (empty when changed)
+  double step = 0;              ///< the fraction of the solved move kept (0 when unchanged)
+  int tries = 0;                ///< steps measured
+  StretchSummary before, after; ///< after: of the document returned
+  std::size_t stretchedBefore = 0, stretchedAfter = 0; ///< samples on the stretched part
+  std::size_t vertices = 0;                            ///< N² + 2
+  /// How far the surface moved: of the kept step, or of the last step tried when unchanged.
+  SurfaceDistance moved;
+};
+
+/// Mesh ▸ Even Out Samples and `octaclay-cli relax`: evenOutSamples that checks its own result.
+/// A step is kept only when the surface moves within the tolerances, the longest edge ÷ median
+/// does not grow, the stretched part does not lose samples and one of the two improves (by
+/// 1 %); otherwise the next, smaller step (the solved offsets scaled down) is tried, and when
+/// none passes the document comes back unchanged with the reason. Throws as evenOutSamples
+/// (Error(Cancelled) when progress returned false, at any point).
+EvenOutResult evenOut(const Document& document, const RelaxOptions& options = {},
+                      const EvenOutCheckOptions& check = {}, const RelaxProgress& progress = {});
 
 /// The local relaxation behind "keep detail": the same flow around what changed. A region
 /// (e.g. the texels a stroke moved) counts only when one of its grid edges is stretched (over

@@ -1,0 +1,318 @@
+#include "octaclay/core/import/remesh.h"
+
+#include "detail/aabb_tree.h"
+#include "detail/parallel_rows.h"
+
+#include "octaclay/core/document/document_checks.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/vertex_index.h"
+#include "octaclay/core/import/mesh_validation.h"
+#include "octaclay/core/import/octahedral_resampling.h"
+#include "octaclay/core/import/spherical_parameterization.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace octaclay::core {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A layer's channels at texel t (its fill while uniform).
+void layerValue(const Layer& layer, std::size_t t, float* out) {
+  const std::size_t ch = static_cast<std::size_t>(layer.channels);
+  for (std::size_t c = 0; c < ch; ++c)
+    out[c] = layer.uniform() ? layer.fill[c] : layer.texels[t * ch + c];
+}
+
+// CIE L*a*b* of an sRGB colour in [0, 1] (D65).
+std::array<double, 3> lab(const float* rgb) {
+  std::array<double, 3> lin{};
+  for (int c = 0; c < 3; ++c) {
+    const double v = std::clamp(double(rgb[c]), 0.0, 1.0);
+    lin[static_cast<std::size_t>(c)] =
+        v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  }
+  const double x = (0.4124 * lin[0] + 0.3576 * lin[1] + 0.1805 * lin[2]) / 0.95047;
+  const double y = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2];
+  const double z = (0.0193 * lin[0] + 0.1192 * lin[1] + 0.9505 * lin[2]) / 1.08883;
+  const auto f = [](double t) {
+    return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16) / 116;
+  };
+  return {116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))};
+}
+
+double deltaE(const float* a, const float* b) {
+  const auto p = lab(a), q = lab(b);
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                   (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+// Barycentric weights of p (a point of triangle abc) in it.
+std::array<double, 3> barycentric(detail::Vec3d p, detail::Vec3d a, detail::Vec3d b,
+                                  detail::Vec3d c) {
+  const detail::Vec3d e0 = b - a, e1 = c - a, d = p - a;
+  const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1);
+  const double d20 = dot(d, e0), d21 = dot(d, e1);
+  const double det = d00 * d11 - d01 * d01;
+  if (!(det > 0)) return {1, 0, 0};
+  const double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
+  return {1 - v - w, v, w};
+}
+
+// How well the new document keeps the old one's painted layers: each old sample's value
+// against the new surface's value at the point nearest the old sample, weighted by its area.
+void measureCarried(const Document& from, const Document& to, RemeshResult& out) {
+  struct Entry {
+    const Layer* before;
+    const Layer* after;
+    CarriedLayer* result;
+    bool colour;
+  };
+  std::vector<Entry> layers;
+  if (!from.diffuse.uniform()) layers.push_back({&from.diffuse, &to.diffuse, &out.diffuse, true});
+  if (!from.feature.uniform()) layers.push_back({&from.feature, &to.feature, &out.feature, false});
+  if (from.hasMask && !from.mask.uniform())
+    layers.push_back({&from.mask, &to.mask, &out.mask, false});
+  if (layers.empty()) return;
+  const TriangleMesh mesh = extractMesh(to.positions);
+  const detail::AabbTree tree(mesh);
+  const VertexIndex newIndex(to.size());
+  const std::vector<Sample> newSamples = newIndex.canonicalSamples();
+  const VertexIndex oldIndex(from.size());
+  const std::vector<Sample> oldSamples = oldIndex.canonicalSamples();
+  const StretchMap spacing = measureStretch(from.positions);
+  const std::size_t oldSide = static_cast<std::size_t>(from.size() + 1);
+  const std::size_t newSide = static_cast<std::size_t>(to.size() + 1);
+  struct Sums {
+    double area = 0, error = 0, within = 0, max = 0, painted = 0, paintedWithin = 0;
+  };
+  std::vector<Sums> sums(layers.size());
+  const int count = static_cast<int>(oldSamples.size());
+  std::mutex lock;
+  detail::parallelRows(count, [&](int begin, int end) {
+    std::vector<Sums> local(layers.size());
+    std::uint32_t hint = detail::AabbTree::noTriangle;
+    std::array<float, 4> was{}, now{}, corner{};
+    for (int v = begin; v < end; ++v) {
+      const Sample s = oldSamples[static_cast<std::size_t>(v)];
+      const std::size_t t = static_cast<std::size_t>(s.j) * oldSide + static_cast<std::size_t>(s.i);
+      const double area = double(spacing.spacing[t]) * double(spacing.spacing[t]);
+      if (!(area > 0)) continue;
+      const detail::Vec3d p(from.positions.at(s).xyz());
+      const detail::AabbTree::Hit hit = tree.closest(p, hint);
+      if (hit.triangle == detail::AabbTree::noTriangle) continue;
+      hint = hit.triangle;
+      const auto& tri = tree.triangles()[hit.triangle];
+      const detail::Vec3d a(tri.a), b(tri.b), c(tri.c);
+      const auto w = barycentric(detail::closestPointOnTriangle(p, a, b, c), a, b, c);
+      const auto& corners = mesh.triangles[tree.triangleIds()[hit.triangle]];
+      for (std::size_t l = 0; l < layers.size(); ++l) {
+        const Layer& before = *layers[l].before;
+        const Layer& after = *layers[l].after;
+        const std::size_t ch = static_cast<std::size_t>(before.channels);
+        layerValue(before, t, was.data());
+        now.fill(0);
+        for (std::size_t k = 0; k < 3; ++k) {
+          const Sample q = newSamples[corners[k]];
+          layerValue(after, static_cast<std::size_t>(q.j) * newSide + static_cast<std::size_t>(q.i),
+                     corner.data());
+          for (std::size_t cc = 0; cc < ch; ++cc)
+            now[cc] += static_cast<float>(w[k]) * corner[cc];
+        }
+        double e = 0;
+        if (layers[l].colour)
+          e = deltaE(was.data(), now.data());
+        else
+          for (std::size_t cc = 0; cc < ch; ++cc)
+            e = std::max(e, double(std::abs(was[cc] - now[cc])));
+        Sums& sum = local[l];
+        sum.area += area;
+        sum.error += area * e;
+        sum.within += e <= (layers[l].colour ? 5.0 : 0.02) ? area : 0;
+        sum.max = std::max(sum.max, e);
+        bool painted = false;
+        for (std::size_t cc = 0; cc < ch; ++cc)
+          painted = painted || std::abs(was[cc] - before.fill[cc]) > 1e-3f;
+        if (painted) {
+          sum.painted += area;
+          sum.paintedWithin += e <= (layers[l].colour ? 5.0 : 0.02) ? area : 0;
+        }
+      }
+    }
+    const std::lock_guard<std::mutex> guard(lock);
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+      sums[l].area += local[l].area;
+      sums[l].error += local[l].error;
+      sums[l].within += local[l].within;
+      sums[l].max = std::max(sums[l].max, local[l].max);
+      sums[l].painted += local[l].painted;
+      sums[l].paintedWithin += local[l].paintedWithin;
+    }
+  });
+  for (std::size_t l = 0; l < layers.size(); ++l) {
+    CarriedLayer& r = *layers[l].result;
+    r.painted = true;
+    r.meanError = sums[l].area > 0 ? sums[l].error / sums[l].area : 0;
+    r.shareWithin = sums[l].area > 0 ? sums[l].within / sums[l].area : 1;
+    r.maxError = sums[l].max;
+    r.paintedShareWithin = sums[l].painted > 0 ? sums[l].paintedWithin / sums[l].painted : 1;
+    r.paintedArea = sums[l].area > 0 ? sums[l].painted / sums[l].area : 0;
+  }
+}
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
+  return text;
+}
+
+} // namespace
+
+RemeshResult remeshDocument(const Document& document, const RemeshOptions& options,
+                            const std::function<bool(float)>& progress) {
+  const int n = document.size();
+  const int m = options.size == 0 ? n : options.size;
+  if (!isValidSize(m))
+    throw Error(ErrorKind::InvalidArgument,
+                "size " + std::to_string(m) + " is not a power of two from " +
+                    std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
+  if (const auto problem = positionsProblem(document.positions))
+    throw Error(ErrorKind::InvalidInput,
+                *problem + "; the document is damaged and cannot be remeshed");
+  const auto cancelled = [] { return Error(ErrorKind::Cancelled, "remeshing was cancelled"); };
+  const auto report = [&](float f) {
+    if (progress && !progress(f)) throw cancelled();
+  };
+  RemeshResult out;
+  out.before = summarizeStretch(document.positions);
+  report(0);
+
+  // The surface as a mesh, one vertex per canonical sample (VertexIndex's numbering).
+  auto start = Clock::now();
+  const TriangleMesh surface = extractMesh(document.positions);
+  ValidatedMesh validated;
+  try {
+    validated = validateGenus0Mesh(surface);
+  } catch (const Error& e) {
+    out.document = document;
+    out.reason = std::string("the surface cannot be parameterized: ") + e.what();
+    return out;
+  }
+  // Validation only turns faces here (the grid's mesh has no unused vertex and no repeated
+  // corner): the vertices keep their numbers.
+  if (validated.mesh.positions.size() != surface.positions.size())
+    throw Error(ErrorKind::InvalidInput, "the surface's mesh lost vertices in validation");
+  SphericalMap map;
+  try {
+    map = parameterizeOnSphere(validated.mesh,
+                               [&](float f) { return !progress || progress(0.8f * f); });
+  } catch (const Error& e) {
+    if (e.kind() == ErrorKind::Cancelled) throw cancelled();
+    out.document = document;
+    out.reason = std::string("the surface cannot be parameterized: ") + e.what();
+    return out;
+  }
+  out.parameterizeMs = msSince(start);
+  out.flipped = map.flipped;
+  report(0.8f);
+
+  // Every layer at each new sample's point on the old surface.
+  start = Clock::now();
+  const std::vector<SampleLocation> where = locateOctahedralSamples(validated.mesh, map, m);
+  const std::vector<Sample> oldSamples = VertexIndex(n).canonicalSamples();
+  const std::size_t oldSide = static_cast<std::size_t>(n + 1);
+  const std::size_t side = static_cast<std::size_t>(m + 1);
+  Document result = document;
+  result.positions = GeometryImage(m);
+  struct Carried {
+    const Layer* from;
+    Layer* to;
+  };
+  std::vector<Carried> layers;
+  for (Layer* l : {&result.diffuse, &result.feature, &result.mask}) {
+    const Layer& from = l == &result.diffuse   ? document.diffuse
+                        : l == &result.feature ? document.feature
+                                               : document.mask;
+    if (from.uniform()) continue;
+    l->texels.assign(side * side * static_cast<std::size_t>(from.channels), 0.0f);
+    layers.push_back({&from, l});
+  }
+  const auto oldTexel = [&](std::uint32_t vertex) {
+    const Sample s = oldSamples[vertex];
+    return static_cast<std::size_t>(s.j) * oldSide + static_cast<std::size_t>(s.i);
+  };
+  detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+    std::array<float, 4> value{};
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i <= m; ++i) {
+        const Sample c = canonical(m, {i, j});
+        const std::size_t t = static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i);
+        const SampleLocation& at =
+            where[static_cast<std::size_t>(c.j) * side + static_cast<std::size_t>(c.i)];
+        const auto& tri = validated.mesh.triangles[at.triangle];
+        Vec4f p{0, 0, 0, 0};
+        for (std::size_t k = 0; k < 3; ++k) {
+          const Vec4f& q = document.positions.texels()[oldTexel(tri[k])];
+          const float w = at.weights[k];
+          p = {p.x + w * q.x, p.y + w * q.y, p.z + w * q.z, p.w + w * q.w};
+        }
+        result.positions.at(i, j) = p;
+        for (const Carried& l : layers) {
+          const std::size_t ch = static_cast<std::size_t>(l.from->channels);
+          float* o = &l.to->texels[t * ch];
+          std::fill_n(o, ch, 0.0f);
+          for (std::size_t k = 0; k < 3; ++k) {
+            layerValue(*l.from, oldTexel(tri[k]), value.data());
+            for (std::size_t cc = 0; cc < ch; ++cc)
+              o[cc] += at.weights[k] * value[cc];
+          }
+        }
+      }
+  });
+  out.resampleMs = msSince(start);
+  report(0.85f);
+
+  start = Clock::now();
+  out.after = summarizeStretch(result.positions);
+  if (boundingBox(surface).diagonal() > 0)
+    out.moved = compareSurfaces(surface, extractMesh(result.positions),
+                                {.samplesPerSurface = options.samplesPerSurface});
+  report(0.95f);
+  measureCarried(document, result, out);
+  out.measureMs = msSince(start);
+  report(1);
+
+  const double scale = m < n ? double(n / m) * double(n / m) : 1.0;
+  if (map.flipped > 0)
+    out.reason = "the surface's spherical map folds " + std::to_string(map.flipped) + " triangles";
+  else if (out.moved.rms > scale * options.rmsTolerance)
+    out.reason = "the surface would move by " + percent(out.moved.rms) +
+                 " of the diagonal (RMS; at most " + percent(scale * options.rmsTolerance) + ")";
+  else if (out.moved.hausdorff > scale * options.hausdorffTolerance)
+    out.reason = "the surface would move by " + percent(out.moved.hausdorff) +
+                 " of the diagonal (Hausdorff; at most " +
+                 percent(scale * options.hausdorffTolerance) + ")";
+  if (!out.reason.empty()) {
+    out.document = document;
+    return out;
+  }
+  out.document = std::move(result);
+  out.changed = true;
+  return out;
+}
+
+} // namespace octaclay::core
