@@ -4,8 +4,10 @@
 
 #include "commands.h"
 #include "json_output.h"
+#include "progress_line.h"
 #include "resample_arguments.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/import/remesh.h"
 #include "octaclay/core/measure/stretch.h"
@@ -66,9 +68,17 @@ Command addRemeshCommand(CLI::App& app) {
   return {sub, [opt, size]() {
             if (size->count() > 0) requireDocumentSize(opt->size);
             requireNewDocumentOutput(opt->input, opt->output);
+            ProgressLine progress("remesh", !opt->json);
+            progress.stage("reading");
             const core::Document document = core::readDocument(opt->input);
+            core::requireUsableSize(document.positions, opt->input);
             const auto start = std::chrono::steady_clock::now();
-            const core::RemeshResult r = core::remeshDocument(document, {.size = opt->size});
+            const core::RemeshResult r =
+                core::remeshDocument(document, {.size = opt->size}, [&progress](float f) {
+                  progress.report("remeshing", f);
+                  return true;
+                });
+            progress.stage("writing");
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();

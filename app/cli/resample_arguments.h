@@ -3,13 +3,12 @@
 // The arguments `resize` and `remesh` share, checked before the input is read: a new size, an
 // .exr output that is not the input.
 
+#include "output_rules.h"
+
 #include "octaclay/core/error.h"
-#include "octaclay/core/file_extension.h"
 #include "octaclay/core/geometry/octahedral.h"
 
-#include <filesystem>
 #include <string>
-#include <system_error>
 
 namespace octaclay::app {
 
@@ -21,24 +20,11 @@ inline void requireDocumentSize(int size) {
                           std::to_string(core::kMinSize) + " to " + std::to_string(core::kMaxSize));
 }
 
-/// Throws Error(InvalidArgument) unless output ends in .exr and names another file than input.
+/// Throws Error(InvalidArgument) unless output ends in .exr and names another file than input
+/// (the input is kept, so a bad result can be compared and thrown away).
 inline void requireNewDocumentOutput(const std::string& input, const std::string& output) {
-  if (core::lowerExtension(output) != ".exr")
-    throw core::Error(core::ErrorKind::InvalidArgument,
-                      "-o " + output + ": an Octaclay document is written as .exr");
-  namespace fs = std::filesystem;
-  std::error_code inputError, outputError, linkError;
-  const fs::path a = fs::weakly_canonical(input, inputError);
-  const fs::path b = fs::weakly_canonical(output, outputError);
-  bool same = !inputError && !outputError
-                  ? a == b
-                  : fs::path(input).lexically_normal() == fs::path(output).lexically_normal();
-  if (!same) same = fs::equivalent(input, output, linkError) && !linkError; // a hard link
-  if (same)
-    throw core::Error(core::ErrorKind::InvalidArgument,
-                      "-o " + output +
-                          " is the input: write the result to another file (the input is kept "
-                          "so a bad result can be compared and thrown away)");
+  requireOutputExtension(output, {".exr"}, "the document");
+  requireNotInput(output, input);
 }
 
 } // namespace octaclay::app

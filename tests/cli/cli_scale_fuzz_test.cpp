@@ -84,6 +84,9 @@ const QList<Run>& runs() {
        "dabs",
        0},
       {"compare", {"compare", "{document}", "{document}", "--json"}, "", "rms", 0},
+      {"relax", {"relax", "{document}", "-o", "{out}", "--json"}, "r.exr", "tries", 0},
+      {"resize", {"resize", "{document}", "--size", "64", "-o", "{out}", "--json"}, "z.exr", "", 0},
+      {"remesh", {"remesh", "{document}", "-o", "{out}", "--json"}, "m.exr", "", 0},
   };
   return list;
 }
