@@ -100,6 +100,11 @@ Command addRelaxCommand(CLI::App& app) {
                                        {"hausdorff", result.changed ? result.moved.hausdorff : 0.0},
                                        {"tried_rms", result.moved.rms},
                                        {"tried_hausdorff", result.moved.hausdorff},
+                                       {"report",
+                                        surfaceReportJson(
+                                            &result.moved,
+                                            {.samplesPerSurface =
+                                                 core::EvenOutCheckOptions{}.samplesPerSurface})},
                                        {"ms", ms}}
                             .dump()
                      << "\n";

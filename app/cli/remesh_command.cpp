@@ -85,6 +85,10 @@ Command addRemeshCommand(CLI::App& app) {
                                   {"after", toJson(r.after)},
                                   {"rms", r.moved.rms},
                                   {"hausdorff", r.moved.hausdorff},
+                                  {"report",
+                                   surfaceReportJson(
+                                       &r.moved, {.samplesPerSurface =
+                                                      core::RemeshOptions{}.samplesPerSurface})},
                                   {"diffuse", carriedJson(r.diffuse)},
                                   {"feature", carriedJson(r.feature)},
                                   {"mask", carriedJson(r.mask)},
