@@ -22,6 +22,9 @@ class ByteSink {
 public:
   void write(std::span<const std::uint8_t> bytes);
   void write(std::string_view text);
+  /// Writes bytes at a byte offset from the file's start (pwrite: the position write() appends at
+  /// does not move), for formats that fill in a table at the front once the body is written.
+  void writeAt(std::uint64_t offset, std::span<const std::uint8_t> bytes);
 
 private:
   friend class OutputSet;
