@@ -290,7 +290,14 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field)
     before[k] = image.texels()[k].xyz();
   const TriangleMesh old = movedCellsMesh(n, before, field);
   if (old.triangles.empty()) return 0;
-  const double total = meshArea(extractMesh(image));
+  double total = 0; // the whole surface's area, straight from the grid (no mesh built)
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        const Vec3f a = image.at(tri[0]).xyz();
+        total +=
+            0.5 * double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
+      }
   const double share = total > 0 ? std::min(1.0, meshArea(old) / total) : 1.0;
   const detail::OffsetField solved = field;
   for (const double step : {1.0, 0.5, 0.25, 0.125}) {
