@@ -70,7 +70,7 @@ double uniform(std::mt19937_64& random) {
 /// area-weighted uniform points. Both are in the tree's leaf order, so consecutive queries are
 /// close together and the previous answer is a tight starting bound for the next.
 std::vector<Vec3d> samplePoints(const TriangleMesh& mesh, const AabbTree& tree, std::size_t count,
-                                std::uint64_t seed) {
+                                std::uint64_t seed, std::size_t maxVertices) {
   std::vector<Vec3d> points;
   std::vector<bool> seen(mesh.positions.size(), false);
   for (const std::uint32_t id : tree.triangleIds())
@@ -79,6 +79,14 @@ std::vector<Vec3d> samplePoints(const TriangleMesh& mesh, const AabbTree& tree, 
         seen[v] = true;
         points.emplace_back(mesh.positions[v]);
       }
+  if (points.size() > maxVertices) { // every k-th, spread over the surface (leaf order)
+    const std::size_t stride =
+        (points.size() + maxVertices - 1) / std::max<std::size_t>(1, maxVertices);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < points.size(); k += stride)
+      points[kept++] = points[k];
+    points.resize(kept);
+  }
 
   const std::span<const AabbTree::Triangle> triangles = tree.triangles();
   std::vector<double> cumulativeArea(triangles.size());
@@ -125,9 +133,10 @@ struct Side {
   std::vector<Vec3d> points;
 };
 
-Side prepare(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
+Side prepare(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
+             std::size_t maxVertices) {
   Side side{AabbTree(mesh), {}};
-  side.points = samplePoints(mesh, side.tree, count, seed);
+  side.points = samplePoints(mesh, side.tree, count, seed, maxVertices);
   return side;
 }
 
@@ -167,8 +176,8 @@ SurfaceDistance compareSurfaces(const TriangleMesh& a, const TriangleMesh& b,
   // The two sides are independent until the queries: build them side by side. Each has its
   // own random stream so the samples do not depend on that order.
   auto futureB = std::async(std::launch::async, prepare, std::cref(b), options.samplesPerSurface,
-                            options.seed ^ 0x9e3779b97f4a7c15ULL);
-  const Side sideA = prepare(a, options.samplesPerSurface, options.seed);
+                            options.seed ^ 0x9e3779b97f4a7c15ULL, options.maxVertices);
+  const Side sideA = prepare(a, options.samplesPerSurface, options.seed, options.maxVertices);
   const Side sideB = futureB.get();
 
   const std::uint32_t leaves = std::max<std::uint32_t>(1, options.leavesPerQuery);

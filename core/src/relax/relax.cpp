@@ -306,7 +306,7 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field)
                          static_cast<float>(step * double(solved.offset[k][1]))};
     const SurfaceDistance d =
         compareSurfaces(old, movedCellsMesh(n, resampledPositions(document, field), field),
-                        {.samplesPerSurface = 20'000});
+                        {.samplesPerSurface = 20'000, .maxVertices = 20'000});
     const double hausdorff = d.hausdorff * d.diagonal, rms = d.rms * d.diagonal * std::sqrt(share);
     if (hausdorff <= kKeepDetailHausdorff * diag && rms <= kKeepDetailRms * diag) return step;
   }

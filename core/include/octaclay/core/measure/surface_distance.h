@@ -3,12 +3,16 @@
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <cstdint>
+#include <limits>
 
 namespace octaclay::core {
 
 struct SurfaceDistanceOptions {
   /// Points sampled on each surface (besides its vertices), area-weighted.
   std::size_t samplesPerSurface = 1'000'000;
+  /// At most this many of each surface's vertices are measured (every k-th, spread over it):
+  /// a check over a large region need not query all of them.
+  std::size_t maxVertices = std::numeric_limits<std::size_t>::max();
   std::uint64_t seed = 1;
   /// Work bound per closest-point query, in tree leaves (4 triangles each): a smooth surface
   /// needs a few; a self-intersecting tangle would need the whole tree for every query.
