@@ -53,13 +53,7 @@ Command addInfoCommand(CLI::App& app) {
                                           {"degenerate_triangles", info.degenerateTriangles},
                                           {"bbox", toJson(info.bbox)},
                                           {"layers", info.layers},
-                                          {"stretch",
-                                           {{"longest_over_median", stretch.longestOverMedian},
-                                            {"p99_over_median", stretch.p99OverMedian},
-                                            {"share_over_4x", stretch.shareOver4x},
-                                            {"median_edge", stretch.medianEdge},
-                                            {"longest_edge", stretch.longestEdge},
-                                            {"mean_spacing", stretch.meanSpacing}}}}
+                                          {"stretch", toJson(stretch)}}
                                .dump()
                         << "\n";
               return kExitOk;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry/triangle_mesh.h"
+#include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <nlohmann/json.hpp>
@@ -15,6 +16,16 @@ inline nlohmann::json toJson(core::Vec3f v) {
 
 inline nlohmann::json toJson(const core::BoundingBox& box) {
   return {{"min", toJson(box.min)}, {"max", toJson(box.max)}, {"diagonal", box.diagonal()}};
+}
+
+/// The stretch figures as info, relax and remesh report them.
+inline nlohmann::json toJson(const core::StretchSummary& s) {
+  return {{"longest_over_median", s.longestOverMedian},
+          {"p99_over_median", s.p99OverMedian},
+          {"share_over_4x", s.shareOver4x},
+          {"median_edge", s.medianEdge},
+          {"longest_edge", s.longestEdge},
+          {"mean_spacing", s.meanSpacing}};
 }
 
 /// How a command measured the surface distance it reports (issue 34): sampled closest points

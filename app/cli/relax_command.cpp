@@ -20,19 +20,6 @@
 #include <sstream>
 
 namespace octaclay::app {
-namespace {
-
-nlohmann::json stretchJson(const core::StretchSummary& s) {
-  return {{"longest_over_median", s.longestOverMedian},
-          {"p99_over_median", s.p99OverMedian},
-          {"share_over_4x", s.shareOver4x},
-          {"median_edge", s.medianEdge},
-          {"longest_edge", s.longestEdge},
-          {"mean_spacing", s.meanSpacing}};
-}
-
-} // namespace
-
 // The command's bound on --iterations: 100 sweeps take about 5 s at N = 256 and 90 s at
 // N = 1024 here (core allows more for its own callers).
 constexpr int kMaxIterations = 100;
@@ -103,8 +90,8 @@ Command addRelaxCommand(CLI::App& app) {
                                        {"reason", result.reason},
                                        {"step", result.step},
                                        {"tries", result.tries},
-                                       {"before", stretchJson(result.before)},
-                                       {"after", stretchJson(result.after)},
+                                       {"before", toJson(result.before)},
+                                       {"after", toJson(result.after)},
                                        {"stretched_share_before",
                                         double(result.stretchedBefore) / vertices},
                                        {"stretched_share_after",
@@ -113,6 +100,11 @@ Command addRelaxCommand(CLI::App& app) {
                                        {"hausdorff", result.changed ? result.moved.hausdorff : 0.0},
                                        {"tried_rms", result.moved.rms},
                                        {"tried_hausdorff", result.moved.hausdorff},
+                                       {"report",
+                                        surfaceReportJson(
+                                            &result.moved,
+                                            {.samplesPerSurface =
+                                                 core::EvenOutCheckOptions{}.samplesPerSurface})},
                                        {"ms", ms}}
                             .dump()
                      << "\n";

@@ -21,15 +21,6 @@
 namespace octaclay::app {
 namespace {
 
-nlohmann::json stretchJson(const core::StretchSummary& s) {
-  return {{"longest_over_median", s.longestOverMedian},
-          {"p99_over_median", s.p99OverMedian},
-          {"share_over_4x", s.shareOver4x},
-          {"median_edge", s.medianEdge},
-          {"longest_edge", s.longestEdge},
-          {"mean_spacing", s.meanSpacing}};
-}
-
 nlohmann::json carriedJson(const core::CarriedLayer& l) {
   if (!l.painted) return nullptr;
   return {{"mean_error", l.meanError},
@@ -90,10 +81,14 @@ Command addRemeshCommand(CLI::App& app) {
                                   {"size", r.document.size()},
                                   {"changed", r.changed},
                                   {"reason", r.reason},
-                                  {"before", stretchJson(r.before)},
-                                  {"after", stretchJson(r.after)},
+                                  {"before", toJson(r.before)},
+                                  {"after", toJson(r.after)},
                                   {"rms", r.moved.rms},
                                   {"hausdorff", r.moved.hausdorff},
+                                  {"report",
+                                   surfaceReportJson(
+                                       &r.moved, {.samplesPerSurface =
+                                                      core::RemeshOptions{}.samplesPerSurface})},
                                   {"diffuse", carriedJson(r.diffuse)},
                                   {"feature", carriedJson(r.feature)},
                                   {"mask", carriedJson(r.mask)},

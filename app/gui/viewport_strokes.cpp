@@ -107,6 +107,16 @@ void ViewportWidget::finishStroke() {
     return;
   }
   if (label.empty()) return;
+  if (!session_.lastRelaxation().tiles.empty()) {
+    // Keep-detail moved samples beyond the dabs' reach: their normals were not refreshed with
+    // the dabs (stale ones showed as flat tents, cracks and speckled fringes).
+    try {
+      surfaceEdited();
+      refreshNormalsAround(changedRects(session_.lastRelaxation()));
+    } catch (const std::exception& e) {
+      fail(QString::fromUtf8(e.what()));
+    }
+  }
   refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
   emit strokeFinished(QString::fromStdString(label));
   emit surfaceChanged();

@@ -27,6 +27,7 @@ struct SculptSession::ActiveStroke {
   };
   std::vector<Move> queue;
   bool failed = false; // a dab threw: the engine restored the layers, no more dabs
+  float reach = 0;     // the largest radius a dab used (object units): keep-detail's margin
 };
 
 SculptSession::SculptSession() = default;
@@ -116,6 +117,7 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
         radius *= std::max(pressure, 0.05f);
       else if (settings.pressureTarget == PressureTarget::Strength)
         strength *= pressure;
+      stroke_->reach = std::max(stroke_->reach, radius);
       run.made += ray ? stroke_->stroke->dragAlong((*ray)[0], (*ray)[1], radius,
                                                    stroke_->sign * strength, 1.0f)
                       : stroke_->stroke->moveToUv(uv, radius, stroke_->sign * strength, 1.0f);
@@ -141,7 +143,7 @@ std::string SculptSession::finishStroke() {
   const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
   core::Stroke record = ending->stroke->finish(label);
   if (dabs == 0 || record.tiles.empty()) return {};
-  record = keepDetailAfter(std::move(record), ending->manifest);
+  record = keepDetailAfter(std::move(record), ending->manifest, ending->reach);
   history_.record(std::move(record));
   return label;
 }
@@ -153,7 +155,7 @@ gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush
   const auto start = std::chrono::steady_clock::now();
   // The path's points stay on their surface points, so a script that dabs there again (a
   // limb pulled by repeated clicks) finds the same spot after the relaxation.
-  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.path);
+  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.radius, settings.path);
   result.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -161,48 +163,49 @@ gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush
 
 namespace {
 
-// What a stroke changed in the positions, as rectangles grown so that samples can flow in from
-// the surface around them.
-// The bounding rectangle of the texels a tile change holds.
-core::TexelRect changedBounds(const core::TileChange& t) {
-  int x0 = t.region.x + t.region.width, y0 = t.region.y + t.region.height, x1 = -1, y1 = -1;
-  std::size_t at = 0;
-  for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
-    at += t.runs[r];
-    for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
-      const int i = t.region.x + static_cast<int>(at % static_cast<std::size_t>(t.region.width));
-      const int j = t.region.y + static_cast<int>(at / static_cast<std::size_t>(t.region.width));
-      x0 = std::min(x0, i), y0 = std::min(y0, j), x1 = std::max(x1, i), y1 = std::max(y1, j);
+// The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
+// relaxation after it reaches keepDetailMargin samples beyond them and no farther.
+std::vector<std::uint8_t> changedSamples(const core::Stroke& record, int side) {
+  std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
+                                    0);
+  bool any = false;
+  for (const core::TileChange& t : record.tiles) {
+    if (t.layer != core::EditLayer::Positions) continue;
+    std::size_t at = 0;
+    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
+      at += t.runs[r];
+      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
+        const std::size_t i =
+            static_cast<std::size_t>(t.region.x) + at % static_cast<std::size_t>(t.region.width);
+        const std::size_t j =
+            static_cast<std::size_t>(t.region.y) + at / static_cast<std::size_t>(t.region.width);
+        changed[j * static_cast<std::size_t>(side) + i] = 1;
+        any = true;
+      }
     }
   }
-  return x1 < 0 ? core::TexelRect{} : core::TexelRect{x0, y0, x1 - x0 + 1, y1 - y0 + 1};
-}
-
-// What a stroke changed in the positions, to the texel (a symmetric dab gives a symmetric region
-// and a symmetric relaxation).
-std::vector<core::TexelRect> stretchRegions(const core::Stroke& record) {
-  std::vector<core::TexelRect> changed;
-  for (const core::TileChange& t : record.tiles)
-    if (t.layer == core::EditLayer::Positions)
-      if (const core::TexelRect b = changedBounds(t); b.width > 0) changed.push_back(b);
+  if (!any) changed.clear();
   return changed;
 }
 
 } // namespace
 
 core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
+                                            float radius,
                                             const std::vector<std::array<float, 2>>& pinnedPath) {
   lastRelaxation_ = {};
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
-  const std::vector<core::TexelRect> regions = stretchRegions(record);
-  if (regions.empty()) return record;
-  core::RelaxOptions options;
   const int n = document_->size();
+  const std::vector<std::uint8_t> changed = changedSamples(record, n + 1);
+  if (changed.empty()) return record;
+  core::RelaxOptions options;
   for (const auto& uv : pinnedPath)
     options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
                               static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
-  lastRelaxation_ = core::relaxRegionsStep(document_->document(), regions, record.label, options);
+  lastRelaxation_ = core::relaxChangedStep(
+      document_->document(), changed,
+      core::keepDetailMargin(document_->document().positions, radius), record.label, options);
   if (lastRelaxation_.tiles.empty()) return record;
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : lastRelaxation_.tiles)

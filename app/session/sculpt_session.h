@@ -100,10 +100,10 @@ public:
                                     const gpu::StrokeSettings& settings,
                                     const std::function<void(int, int)>& progress = {});
 
-  /// Keep detail (on by default): after a sculpt stroke moved positions, the region it changed
-  /// (grown so samples can flow in from around it) is relaxed where the stroke stretched it
-  /// (core::relaxRegions), and the stroke and the relaxation are one undo step. Applies to
-  /// finishStroke() and strokeAlongPath().
+  /// Keep detail (on by default): after a sculpt stroke stretched the positions it changed, the
+  /// samples within core::keepDetailMargin of the changed texels flow toward the stretch
+  /// (core::relaxChangedStep); every other sample keeps its bits. The stroke and the
+  /// relaxation are one undo step. Applies to finishStroke() and strokeAlongPath().
   void setKeepDetail(bool on) { keepDetail_ = on; }
   bool keepDetail() const { return keepDetail_; }
   /// The relaxation keep-detail made after the last stroke (no tiles when it made none): its
@@ -130,7 +130,8 @@ private:
   struct ActiveStroke;
 
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
-  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
+  // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
+  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush, float radius,
                                const std::vector<std::array<float, 2>>& pinnedPath = {});
 
   bool keepDetail_ = true;

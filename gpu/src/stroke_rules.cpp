@@ -34,22 +34,38 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
                        core::Vec3f fallback) {
   const core::GeometryImage& image = document.document().positions;
   const core::TileBounds& bounds = document.bounds();
-  const int n = document.size();
+  const int n = document.size(), half = n / 2;
   const float r2 = radius * radius;
   core::Vec3f sum;
   int triangles = 0;
+  const auto add = [&](core::Vec3f a, core::Vec3f b, core::Vec3f c) {
+    const core::Vec3f d = (a + b + c) * (1.0f / 3.0f) - centre;
+    if (core::dot(d, d) > r2) return;
+    sum += core::cross(b - a, c - a);
+    ++triangles;
+  };
+  // Every dab runs this over all the cells its radius covers: rows read in place and the cell's
+  // split (core::cellTriangles: anti-diagonal where i and j lie in the same half) inline, the
+  // triangles in cellTriangles' order, so the sum is the same to the bit.
   for (int t : bounds.tilesNearSphere(centre, radius)) {
     const core::TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
-    for (int j = r.y; j < std::min(r.y + r.height, n); ++j)
-      for (int i = r.x; i < std::min(r.x + r.width, n); ++i)
-        for (const auto& tri : core::cellTriangles(n, i, j)) {
-          const core::Vec3f a = image.at(tri[0]).xyz(), b = image.at(tri[1]).xyz(),
-                            c = image.at(tri[2]).xyz();
-          const core::Vec3f d = (a + b + c) * (1.0f / 3.0f) - centre;
-          if (core::dot(d, d) > r2) continue;
-          sum += core::cross(b - a, c - a);
-          ++triangles;
+    const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, n);
+    for (int j = r.y; j < jEnd; ++j) {
+      const core::Vec4f* row = &image.at(0, j);
+      const core::Vec4f* below = &image.at(0, j + 1);
+      const bool lowJ = j < half;
+      for (int i = r.x; i < iEnd; ++i) {
+        const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
+                          d = below[i].xyz();
+        if ((i < half) == lowJ) {
+          add(a, b, d);
+          add(b, c, d);
+        } else {
+          add(a, b, c);
+          add(a, c, d);
         }
+      }
+    }
   }
   // Too few triangles to average (samples far apart on a stretched tip): the point normal.
   if (triangles < kAreaNormalTriangles || !(core::length(sum) > 1e-20f)) return fallback;

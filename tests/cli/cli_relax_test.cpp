@@ -19,7 +19,7 @@ private slots:
 private:
   QString path(const QString& name) const { return dir_.filePath(name); }
   // The limb at N = 64: 15 one-dab strokes at the pole, each at full strength.
-  void pullLimb(const QString& file, const QString& keepDetail);
+  void pullLimb(const QString& file, const QString& keepDetail, int size = 64);
   QTemporaryDir dir_;
 };
 
@@ -27,8 +27,8 @@ void CliRelaxTest::initTestCase() {
   QVERIFY(dir_.isValid());
 }
 
-void CliRelaxTest::pullLimb(const QString& file, const QString& keepDetail) {
-  const QStringList create{"new", "--shape", "sphere", "--size", "64", "-o", file};
+void CliRelaxTest::pullLimb(const QString& file, const QString& keepDetail, int size) {
+  const QStringList create{"new", "--shape", "sphere", "--size", QString::number(size), "-o", file};
   const Result made = runCli(create);
   QVERIFY2(made.exitCode == kOk, qPrintable(describe(create, made)));
   for (int i = 0; i < 15; ++i) {
@@ -75,9 +75,12 @@ void CliRelaxTest::relaxEvensOutTheLimb() {
   QVERIFY(r.out.contains("longest edge"));
 }
 
+// At N = 256: keep-detail keeps each click's relaxation within 0.1 % of the diagonal
+// (Hausdorff), which at N = 64 lets through little of it (longest edge 38x the median on, 48x
+// off) and at N = 256 most (5.0x on, 129x off).
 void CliRelaxTest::keepDetailKeepsTheLimbsSamples() {
-  pullLimb(path("off.exr"), "off");
-  pullLimb(path("on.exr"), "on");
+  pullLimb(path("off.exr"), "off", 256);
+  pullLimb(path("on.exr"), "on", 256);
   RUN_JSON(off, "info", path("off.exr"), "--json");
   RUN_JSON(on, "info", path("on.exr"), "--json");
   const double offRatio = off["stretch"].toObject()["longest_over_median"].toDouble();

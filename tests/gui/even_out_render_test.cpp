@@ -92,6 +92,7 @@ private slots:
   void evenOutGivesTheLimbSamplesBackAsOneUndoStep();
   void cancelledEvenOutChangesNothing();
   void keepDetailBoxReachesTheSessionForTheNextStroke();
+  void evenOutThatWouldHurtLeavesTheModelAndSaysWhy();
   void failedEvenOutSaysWhyAndChangesNothing();
 
 private:
@@ -108,7 +109,7 @@ void EvenOutRenderTest::initTestCase() {
   QCoreApplication::setOrganizationName("OctaclayTest");
   QCoreApplication::setApplicationName("even_out_render_test");
   qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
-  core::writeDocument(limbDocument(64), dir_.filePath("limb.exr").toStdString());
+  core::writeDocument(limbDocument(256), dir_.filePath("limb.exr").toStdString());
 }
 
 void EvenOutRenderTest::init() {
@@ -124,7 +125,7 @@ std::unique_ptr<MainWindow> EvenOutRenderTest::makeWindow() {
 }
 
 bool EvenOutRenderTest::openLimb(MainWindow& w) {
-  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->document().size() == 64;
+  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->document().size() == 256;
 }
 
 void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
@@ -213,6 +214,22 @@ void EvenOutRenderTest::keepDetailBoxReachesTheSessionForTheNextStroke() {
     QCOMPARE(view->keepsDetail(), on);
   }
   QCOMPARE(window_->undoStack()->count(), 3);
+}
+
+void EvenOutRenderTest::evenOutThatWouldHurtLeavesTheModelAndSaysWhy() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  // At N = 64 the limb's even-out would move the surface past its tolerance (issue 30): the
+  // window keeps the model, pushes no step and says why.
+  QVERIFY(window_->viewport()->setDocument(limbDocument(64)));
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  window_->action("actionEvenOutSamples")->trigger();
+  QVERIFY(bitsOf(window_->viewport()->document()) == before);
+  QCOMPARE(window_->undoStack()->count(), 0);
+  QVERIFY(!window_->isModified());
+  const QString said = window_->statusBar()->currentMessage();
+  QVERIFY2(said.startsWith("Even Out left the model unchanged: ") && said.contains("%"),
+           qPrintable(said));
 }
 
 void EvenOutRenderTest::failedEvenOutSaysWhyAndChangesNothing() {

@@ -7,15 +7,22 @@
 
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/measure/surface_distance.h"
+#include "octaclay/core/relax/relax.h"
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gpu_document.h"
+#include "octaclay/gpu/model_renderer.h"
 
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -36,6 +43,8 @@ private slots:
   void aSnakeHookLegGainsOnEitherHalf_data();
   void aSnakeHookLegGainsOnEitherHalf();
   void theAnimalKeepsItsShareInEveryPart();
+  void aCreaseOnOneLegLeavesTheRestAlone_data();
+  void aCreaseOnOneLegLeavesTheRestAlone();
 
 private:
   // Pulls at the pole (the image centre) with `clicks` one-dab strokes; returns the limb's
@@ -174,7 +183,11 @@ void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf_data() {
 }
 
 // bench_creature's back right leg alone, one snake-hook stroke at N = 256: 0.08 of its fair share
-// without keep-detail. Its relaxation once took samples off it (-z: 0.080, longest edge 30x the
+// without keep-detail. Issue 30 bounds keep-detail by the relaxation's tolerance (0.1 % of the
+// diagonal, Hausdorff): the full move over the leg's coarse facets cuts them by 0.135 %, 1/4 of
+// it by 0.111 %, so 1/8 is kept (fair share 0.081 -> 0.097; before issue 30, with no bound,
+// 0.69). It never loses samples and its longest edge gets no longer. Its relaxation once took
+// samples off it (-z: 0.080, longest edge 30x the
 // median; +z: 0.073, 40x): the coarse levels moved the samples around the pinned start sample,
 // which lies between theirs, refining tore the cells at the pin and the fold repair put half the
 // offsets back to zero. On the -z half the relaxed rectangle also stopped at the image's border.
@@ -185,13 +198,15 @@ void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf() {
   qInfo("snake-hook leg: fair share %.3f -> %.3f, longest edge %.1fx -> %.1fx the median", offShare,
         onShare, offLongest, onLongest);
   QVERIFY(offShare < 0.1);
-  QVERIFY(onShare >= 0.5);
-  QVERIFY(onLongest < offLongest / 2);
+  QVERIFY(onShare > offShare);
+  QVERIFY(onLongest < offLongest);
 }
 
 // Issue 23's target: the animal of bench_creature (four legs from the ball's lower half, two of
 // them from its -z half, and a neck, each one snake-hook stroke at N = 256): with keep-detail no
-// part holds less than 0.3 of its fair share of samples (each 0.09-0.14 without).
+// part holds less than 0.3 of its fair share of samples (each 0.09-0.14 without). Issue 30's
+// tolerance (the relaxation moves the surface by at most 0.1 % of the diagonal) keeps a fraction
+// of each stroke's move: every part holds at least what it holds without keep-detail.
 void KeepDetailTest::theAnimalKeepsItsShareInEveryPart() {
   const gpu::BrushManifest& hook = *catalog_.find("snake-hook");
   app::SculptSession session;
@@ -206,10 +221,238 @@ void KeepDetailTest::theAnimalKeepsItsShareInEveryPart() {
     session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
   const std::vector<core::RegionSampling> sampling =
       testing::creatureSampling(session.document().positions, parts);
+  // Without keep-detail: bench_creature's figures (0.088 each leg, 0.143 the neck).
   for (std::size_t k = 0; k < parts.size(); ++k) {
     qInfo("%s: fair share %.3f", parts[k].name, sampling[k].fairShare);
-    QVERIFY2(sampling[k].fairShare >= 0.3, parts[k].name);
+    QVERIFY2(sampling[k].fairShare >= (k < 4 ? 0.088 : 0.143), parts[k].name);
   }
+}
+
+namespace {
+
+// The samples within `margin` (Chebyshev, on the tiled plane: across the seams) of a marked one,
+// every copy of a border sample with it: the region core::relaxChangedStep may move.
+std::vector<std::uint8_t> grown(int n, const std::vector<std::uint8_t>& marked, int margin) {
+  const auto index = [n](core::Sample s) {
+    return static_cast<std::size_t>(s.j) * static_cast<std::size_t>(n + 1) +
+           static_cast<std::size_t>(s.i);
+  };
+  std::vector<std::uint8_t> in(marked.size(), 0);
+  std::vector<core::Sample> front;
+  const auto reach = [&](core::Sample s, std::vector<core::Sample>& next) {
+    std::array<core::Sample, 4> copies;
+    const int k = core::identifiedSamples(n, core::wrap(n, s), copies);
+    for (int c = 0; c < k; ++c)
+      if (const core::Sample q = copies[std::size_t(c)]; !in[index(q)]) {
+        in[index(q)] = 1;
+        next.push_back(q);
+      }
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (marked[index({i, j})]) reach({i, j}, front);
+  for (int d = 0; d < margin; ++d) {
+    std::vector<core::Sample> next;
+    for (const core::Sample s : front)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          reach({s.i + di, s.j + dj}, next);
+    front = std::move(next);
+  }
+  return in;
+}
+
+// The largest angle (degrees) between a sample's normal and its four grid neighbours' (through
+// the wrap), over the marked samples.
+std::vector<double> neighbourAngles(const core::GeometryImage& image,
+                                    const std::vector<std::uint8_t>& marked) {
+  const int n = image.size();
+  const std::vector<core::Vec3f> normals = core::computeNormals(image);
+  std::vector<double> out;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const std::size_t k = std::size_t(j) * std::size_t(n + 1) + std::size_t(i);
+      if (!marked[k]) continue;
+      double worst = 0;
+      for (const core::Sample d : {core::Sample{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const core::Sample q = core::wrap(n, {i + d.i, j + d.j});
+        const double c = std::clamp(
+            double(core::dot(normals[k],
+                             normals[std::size_t(q.j) * std::size_t(n + 1) + std::size_t(q.i)])),
+            -1.0, 1.0);
+        worst = std::max(worst, std::acos(c) * 180 / M_PI);
+      }
+      out.push_back(worst);
+    }
+  return out;
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  const auto at = v.begin() + std::ptrdiff_t(p * double(v.size() - 1));
+  std::nth_element(v.begin(), at, v.end());
+  return *at;
+}
+
+} // namespace
+
+void KeepDetailTest::aCreaseOnOneLegLeavesTheRestAlone_data() {
+  QTest::addColumn<int>("leg");
+  // creatureParts' order: back right, front right, back left, front left, neck.
+  QTest::newRow("front left leg (+z half, off the image's centre)") << 3;
+  QTest::newRow("back right leg (-z half: the image's corner triangles, across seams)") << 0;
+}
+
+// Issue 30: the animal of bench_creature at N = 256 (keep-detail on), then a crease stroke down
+// one leg with keep-detail on. The relaxation after it moves samples only within
+// core::keepDetailMargin of the texels the crease changed: every other sample of the image
+// keeps its bits (so the other legs do, and the body beyond the margin), their normals too, and
+// the relaxed surface stays within the issue's tolerance of what the crease left. The shading
+// stays smooth where samples moved: the normal map refreshed where the viewport refreshes it is
+// the one a full refresh computes, and no neighbouring normals there turn sharper than the
+// crease left them (by more than a stated margin).
+void KeepDetailTest::aCreaseOnOneLegLeavesTheRestAlone() {
+  QFETCH(int, leg);
+  const gpu::BrushManifest& hook = *catalog_.find("snake-hook");
+  const gpu::BrushManifest& crease = *catalog_.find("crease");
+  const int n = 256;
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(hook);
+  session.setKeepDetail(true);
+  const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, n);
+  session.setDocument(core::makeDocument(ball));
+  const std::vector<testing::CreaturePart> parts =
+      testing::creatureParts(testing::CreatureLayout::Animal);
+  for (const testing::CreaturePart& part : parts)
+    session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
+  const core::Document made = session.document();
+
+  // Down the leg's outer side, from near its tip to near the ball: the leg's samples nearest to
+  // points beside its axis.
+  const testing::CreaturePart& part = parts[std::size_t(leg)];
+  const core::Vec3f tip = part.drag[1], side{part.start.x, 0, 0};
+  gpu::StrokeSettings s;
+  s.brush = crease.id;
+  for (const float t : {0.85f, 0.7f, 0.55f, 0.4f, 0.25f}) {
+    const core::Vec3f beside = part.start + (tip - part.start) * t + side * 0.5f;
+    float best = 1e30f;
+    std::array<float, 2> uv{};
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const core::Vec3f p = made.positions.at(i, j).xyz();
+        if (testing::creaturePartOf(parts, p) != leg) continue;
+        if (const float d = core::length(p - beside); d < best)
+          best = d, uv = {float(i) / float(n), float(j) / float(n)};
+      }
+    s.path.push_back(uv);
+  }
+  s.radius = 0.06f;
+  // A ridge (the crease's negative strength, Ctrl with the brush). A valley at 0.2-1.0 cuts
+  // across the leg's coarse facets by 0.11-0.37 % of the diagonal (Hausdorff) even at 1/8 of the
+  // move, so keep-detail leaves it unrelaxed and there would be nothing to check here.
+  s.strength = -0.5f;
+
+  // The crease alone (keep-detail off), from the same document: what the stroke changed.
+  app::SculptSession plain;
+  plain.setBrushes(*engine_, catalog_);
+  plain.loadBrush(crease);
+  plain.setKeepDetail(false);
+  plain.setDocument(made);
+  plain.strokeAlongPath(crease, s);
+  const core::Document creased = plain.document();
+
+  session.loadBrush(crease);
+  session.strokeAlongPath(crease, s);
+  QVERIFY2(!session.lastRelaxation().tiles.empty(), "the crease was not relaxed: nothing tested");
+  const core::Document relaxed = session.document();
+
+  const std::size_t count = made.positions.texels().size();
+  std::vector<std::uint8_t> changed(count, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    changed[k] = !(creased.positions.texels()[k] == made.positions.texels()[k]);
+  const int margin = core::keepDetailMargin(creased.positions, s.radius);
+  const std::vector<std::uint8_t> region = grown(n, changed, margin);
+  const std::vector<std::uint8_t> normalRegion = grown(n, changed, margin + 1);
+  const float diagonal = core::boundingBox(core::extractMesh(made.positions)).diagonal();
+  const std::vector<core::Vec3f> normalsMade = core::computeNormals(made.positions);
+  const std::vector<core::Vec3f> normalsRelaxed = core::computeNormals(relaxed.positions);
+  std::size_t changedCount = 0, regionCount = 0, relaxedCount = 0, outside = 0, otherLegs = 0,
+              bodyInRegion = 0, normalsOutside = 0, coloursOutside = 0;
+  double farthest = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const core::Vec3f was = made.positions.texels()[k].xyz();
+    const bool same = relaxed.positions.texels()[k] == made.positions.texels()[k];
+    changedCount += changed[k];
+    regionCount += region[k];
+    relaxedCount += !(relaxed.positions.texels()[k] == creased.positions.texels()[k]);
+    const int owner = testing::creaturePartOf(parts, was);
+    if (!same && owner >= 0 && owner < 4 && owner != leg) ++otherLegs;
+    if (!same && owner == -1 && region[k]) ++bodyInRegion;
+    if (!region[k]) {
+      outside += !same;
+      farthest =
+          std::max(farthest, double(core::length(relaxed.positions.texels()[k].xyz() - was)));
+      if (!made.diffuse.uniform() || !relaxed.diffuse.uniform())
+        for (std::size_t c = 0; c < 4; ++c)
+          coloursOutside += made.diffuse.texels[4 * k + c] != relaxed.diffuse.texels[4 * k + c];
+    }
+    if (!normalRegion[k] && !(normalsMade[k] == normalsRelaxed[k])) ++normalsOutside;
+  }
+  const core::SurfaceDistance d =
+      core::compareSurfaces(core::extractMesh(creased.positions),
+                            core::extractMesh(relaxed.positions), {.samplesPerSurface = 200'000});
+  qInfo("%s: the crease changed %zu samples; margin %d samples, region %zu; the relaxation moved "
+        "%zu; changed outside the region: %zu (farthest %.2g of the diagonal), normals %zu, "
+        "colours %zu; other legs' samples changed: %zu; body samples inside the region changed: "
+        "%zu; relaxation RMS %.4f %%, Hausdorff %.3f %% of the diagonal",
+        parts[std::size_t(leg)].name, changedCount, margin, regionCount, relaxedCount, outside,
+        farthest / diagonal, normalsOutside, coloursOutside, otherLegs, bodyInRegion, 100 * d.rms,
+        100 * d.hausdorff);
+  QVERIFY(changedCount > 0);
+  QVERIFY(relaxedCount > 0);
+  QCOMPARE(outside, std::size_t(0));
+  QVERIFY(farthest <= 1e-6 * diagonal);
+  QCOMPARE(normalsOutside, std::size_t(0));
+  QCOMPARE(coloursOutside, std::size_t(0));
+  QCOMPARE(otherLegs, std::size_t(0));
+  QVERIFY(d.rms <= 1e-4);
+  QVERIFY(d.hausdorff <= 1e-3);
+
+  // Smooth shading where samples moved: the angles between neighbouring normals over the relaxed
+  // samples (and one ring around them) are no larger than the crease left them there: the 99th
+  // percentile within kSharperP99 degrees, the largest (on the ridge's line, about 100 degrees)
+  // within kSharperMax (measured: p99 49 -> 48, largest 100 -> 106).
+  constexpr double kSharperP99 = 2.0, kSharperMax = 10.0;
+  std::vector<std::uint8_t> moved(count, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    moved[k] = !(relaxed.positions.texels()[k] == creased.positions.texels()[k]);
+  const std::vector<std::uint8_t> around = grown(n, moved, 1);
+  const std::vector<double> before = neighbourAngles(creased.positions, around);
+  const std::vector<double> after = neighbourAngles(relaxed.positions, around);
+  const double worstBefore = *std::max_element(before.begin(), before.end());
+  const double worstAfter = *std::max_element(after.begin(), after.end());
+  qInfo("  neighbouring normals over the %zu relaxed samples and their ring: p99 %.1f -> %.1f, "
+        "largest %.1f -> %.1f degrees",
+        before.size(), percentile(before, 0.99), percentile(after, 0.99), worstBefore, worstAfter);
+  QVERIFY(worstAfter <= worstBefore + kSharperMax);
+  QVERIFY(percentile(after, 0.99) <= percentile(before, 0.99) + kSharperP99);
+
+  // The normal map the viewport keeps: refreshed over what the dabs touched and what the
+  // relaxation changed (ViewportWidget::finishStroke), it is the map a full refresh computes.
+  gpu::ModelRenderer renderer;
+  renderer.refreshAllNormals(plain.gpuDocument()); // the map as the crease's dabs left it
+  renderer.refreshNormals(
+      session.gpuDocument(),
+      app::normalRectsAround(app::changedRects(session.lastRelaxation()), n + 1));
+  const std::vector<float> incremental = renderer.normalMap().read({0, 0, n + 1, n + 1});
+  renderer.refreshAllNormals(session.gpuDocument());
+  const std::vector<float> fresh = renderer.normalMap().read({0, 0, n + 1, n + 1});
+  std::size_t stale = 0;
+  for (std::size_t k = 0; k < fresh.size(); ++k)
+    stale += incremental[k] != fresh[k];
+  qInfo("  normal map texels that differ from a full refresh: %zu", stale / 4);
+  QCOMPARE(stale, std::size_t(0));
 }
 
 QTEST_GUILESS_MAIN(KeepDetailTest)

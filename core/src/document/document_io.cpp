@@ -1,6 +1,7 @@
 #include "octaclay/core/document/document_io.h"
 
-#include "detail/exr_memory_stream.h"
+#include "detail/exr_sink_stream.h"
+#include "detail/parallel_rows.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
@@ -18,10 +19,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <new>
+#include <string_view>
 #include <thread>
 
 namespace octaclay::core {
@@ -33,22 +37,18 @@ constexpr const char* kFormatAttribute = "octaclay.format";
 constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
 constexpr const char* kSamplingAttribute = "octaclay.sampling";
 constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
-constexpr int kLargestCompressedSize = 2048;
+// Rows per readPixels / writePixels call: enough line buffers for every thread of OpenEXR's pool,
+// while a band of layer texels stays small (8193 × 8 channels × 4 bytes × 128 rows = 34 MB).
+constexpr int kBandRows = 128;
 
-// OpenEXR's thread pool pays off for compressed files only: on uncompressed ones its one-line
-// tasks made reading 60 % slower here.
-int exrThreads(Imf::Compression compression) {
-  return compression == Imf::NO_COMPRESSION
-             ? 0
-             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
-
-std::unique_ptr<Imf::InputFile> openExr(const fs::path& path) {
-  auto file = std::make_unique<Imf::InputFile>(path.c_str(), 0);
-  const Imf::Compression compression = file->header().compression();
-  if (exrThreads(compression) > 0)
-    file = std::make_unique<Imf::InputFile>(path.c_str(), exrThreads(compression));
-  return file;
+// OpenEXR's pool, one thread per core, started once (its tasks decode and encode line buffers).
+int exrThreads() {
+  static const int threads = [] {
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    Imf::setGlobalThreadCount(cores);
+    return cores;
+  }();
+  return threads;
 }
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
@@ -119,55 +119,259 @@ char* shifted(void* base, const Imath::Box2i& window, std::size_t xStride, std::
 }
 
 // OpenEXR converts pixel types when reading but not when writing, so a layer is handed over as
-// half: one row of its fill value while uniform (a zero y stride repeats it down the image;
-// OpenEXR loops forever on a zero x stride), else all its texels converted.
-void addLayerSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const Layer& layer,
-                    int side, std::vector<half>& halves) {
+// half, a band of rows at a time: one row of its fill value while uniform (a zero y stride repeats
+// it down the band; OpenEXR loops forever on a zero x stride), else the band's texels converted.
+void addLayerWriteSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, const Layer& layer,
+                         int side, int rowBegin, int rowEnd, std::vector<half>& halves) {
   const std::size_t xStride = sizeof(half) * layer.channels;
   std::size_t yStride = 0;
   if (layer.uniform()) {
-    halves.resize(static_cast<std::size_t>(side) * layer.channels);
-    for (std::size_t k = 0; k < halves.size(); ++k)
-      halves[k] = half(layer.fill[k % layer.channels]);
+    if (halves.empty()) {
+      halves.resize(static_cast<std::size_t>(side) * layer.channels);
+      for (std::size_t k = 0; k < halves.size(); ++k)
+        halves[k] = half(layer.fill[k % layer.channels]);
+    }
   } else {
-    halves.assign(layer.texels.begin(), layer.texels.end());
+    const std::size_t row = static_cast<std::size_t>(side) * layer.channels;
+    halves.resize(row * static_cast<std::size_t>(rowEnd - rowBegin));
+    const float* from = layer.texels.data() + row * static_cast<std::size_t>(rowBegin);
+    detail::parallelRows(
+        rowEnd - rowBegin,
+        [&](int a, int b) {
+          for (std::size_t k = row * a; k < row * b; ++k)
+            halves[k] = half(from[k]);
+        },
+        16);
     yStride = xStride * side;
   }
+  // OpenEXR addresses row y at base + y·yStride: the band's first row is rowBegin.
+  half* base = halves.data() -
+               (layer.uniform() ? 0 : static_cast<std::size_t>(rowBegin) * side * layer.channels);
   const auto names = layer.channelNames();
   for (int c = 0; c < layer.channels; ++c)
-    frame.insert(layer.name + "." + names[c],
-                 Imf::Slice(Imf::HALF, shifted(halves.data() + c, window, xStride, yStride),
-                            xStride, yStride));
+    frame.insert(
+        layer.name + "." + names[c],
+        Imf::Slice(Imf::HALF, shifted(base + c, window, xStride, yStride), xStride, yStride));
 }
 
-// Adds slices that read a layer's channels into its texels; an absent layer keeps its default.
-void addLayerReadSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window,
-                        const DocumentHeader& header, Layer& layer, int side) {
-  const auto names = layer.channelNames();
-  int present = 0;
-  for (const auto& n : names)
-    present += std::count(header.channels.begin(), header.channels.end(), layer.name + "." + n) > 0;
-  if (present == 0) return; // checkHeader refused a partial layer
+// Reads a layer a band of rows at a time and keeps it as its fill value while every texel so far
+// held one value: a uniform layer never takes (N+1)² texels of memory, even while being read.
+class LayerReader {
+public:
+  LayerReader(Layer& layer, int side) : layer_(layer), side_(side) { layer_.texels.clear(); }
 
-  layer.texels.assign(static_cast<std::size_t>(side) * side * layer.channels, 0.0f);
-  const std::size_t xStride = sizeof(float) * layer.channels;
-  for (int c = 0; c < layer.channels; ++c)
-    frame.insert(layer.name + "." + names[c],
-                 Imf::Slice(Imf::FLOAT,
-                            shifted(layer.texels.data() + c, window, xStride, xStride * side),
-                            xStride, xStride * side));
+  const Layer& layer() const { return layer_; }
+  /// Every texel read so far holds the first one's value.
+  bool uniformSoFar() const { return layer_.texels.empty(); }
+
+  /// The band's texels, (rowEnd − rowBegin) rows of (N+1) × channels floats, to be filled.
+  float* band(int rowBegin, int rowEnd) {
+    band_.resize(static_cast<std::size_t>(side_) * layer_.channels *
+                 static_cast<std::size_t>(rowEnd - rowBegin));
+    return band_.data();
+  }
+
+  void addSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, int rowBegin, int rowEnd) {
+    const std::size_t row = static_cast<std::size_t>(side_) * layer_.channels;
+    float* base = band(rowBegin, rowEnd) - static_cast<std::ptrdiff_t>(row) * rowBegin;
+    const std::size_t xStride = sizeof(float) * layer_.channels;
+    const auto names = layer_.channelNames();
+    for (int c = 0; c < layer_.channels; ++c)
+      frame.insert(layer_.name + "." + names[c],
+                   Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, xStride * side_),
+                              xStride, xStride * side_));
+  }
+
+  // Called after the band's pixels were read.
+  void takeBand(int rowBegin) {
+    const std::size_t channels = static_cast<std::size_t>(layer_.channels);
+    const std::size_t row = static_cast<std::size_t>(side_) * channels;
+    if (rowBegin == 0)
+      for (std::size_t c = 0; c < channels; ++c)
+        fill_[c] = band_[c];
+    if (layer_.texels.empty()) {
+      std::size_t k = 0;
+      while (k < band_.size() && band_[k] == fill_[k % channels])
+        ++k;
+      if (k == band_.size()) return; // still uniform
+      layer_.texels.resize(row * static_cast<std::size_t>(side_));
+      for (std::size_t t = 0; t < row * static_cast<std::size_t>(rowBegin); ++t)
+        layer_.texels[t] = fill_[t % channels];
+    }
+    std::copy(band_.begin(), band_.end(),
+              layer_.texels.begin() + static_cast<std::ptrdiff_t>(row * rowBegin));
+  }
+
+  void finish() {
+    if (layer_.texels.empty()) layer_.fill = fill_;
+    band_.clear();
+    band_.shrink_to_fit();
+  }
+
+private:
+  Layer& layer_;
+  int side_;
+  std::vector<float> band_;
+  std::array<float, 4> fill_{}; ///< the first texel: the layer's fill while every texel equals it
+};
+
+// Whether the pixels can be read raw (readRawPixels): uncompressed lines hold each channel's
+// row in turn, little-endian, which is this machine's order.
+bool readsRaw(const Imf::Header& header) {
+  if (header.compression() != Imf::NO_COMPRESSION || std::endian::native != std::endian::little)
+    return false;
+  for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+    if (it.channel().xSampling != 1 || it.channel().ySampling != 1) return false;
+  return true;
 }
 
-// A layer whose texels all hold one value is kept as that fill value.
-void collapseUniformLayer(Layer& layer) {
-  if (layer.texels.empty()) return;
-  const std::size_t channels = static_cast<std::size_t>(layer.channels);
-  for (std::size_t k = channels; k < layer.texels.size(); ++k)
-    if (layer.texels[k] != layer.texels[k % channels]) return;
-  for (std::size_t c = 0; c < channels; ++c)
-    layer.fill[c] = layer.texels[c];
-  layer.texels.clear();
-  layer.texels.shrink_to_fit();
+// One row of a channel, as stored in an uncompressed line, into floats `stride` floats apart
+// (the conversions OpenEXR's frame buffers make: half and float exactly, uint by value).
+void convertRow(Imf::PixelType type, const char* from, int width, float* to, std::size_t stride) {
+  switch (type) {
+  case Imf::FLOAT:
+    for (int i = 0; i < width; ++i)
+      std::memcpy(to + i * stride, from + 4 * static_cast<std::size_t>(i), 4);
+    break;
+  case Imf::HALF:
+    for (int i = 0; i < width; ++i) {
+      std::uint16_t bits;
+      std::memcpy(&bits, from + 2 * static_cast<std::size_t>(i), 2);
+      half h;
+      h.setBits(bits);
+      to[i * stride] = static_cast<float>(h);
+    }
+    break;
+  case Imf::UINT:
+    for (int i = 0; i < width; ++i) {
+      std::uint32_t value;
+      std::memcpy(&value, from + 4 * static_cast<std::size_t>(i), 4);
+      to[i * stride] = static_cast<float>(value);
+    }
+    break;
+  default:
+    break;
+  }
+}
+
+// Reads an uncompressed file's lines raw, a band at a time, and converts each band on every core:
+// OpenEXR's own path converts byte by byte (its XDR copy) and made reading N = 4096 take 1 s
+// where the bytes take 0.06 s to read.
+void readRawPixels(const fs::path& path, Imf::InputFile& file, GeometryImage& positions,
+                   std::vector<LayerReader>& layers) {
+  const Imath::Box2i window = file.header().dataWindow();
+  const int width = window.max.x - window.min.x + 1, side = positions.side();
+  struct Row {
+    Imf::PixelType type;
+    std::size_t offset; ///< in the line, bytes
+    float* positions;   ///< the image's channel (row 0), or null
+    int layer;          ///< index in layers, or -1
+    int channel;
+  };
+  std::vector<Row> rows;
+  std::size_t lineBytes = 0;
+  for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+    Row row{it.channel().type, lineBytes, nullptr, -1, 0};
+    for (int c = 0; c < 3; ++c)
+      if (kPositionChannels[c] == std::string_view(it.name()))
+        row.positions = &positions.texels()[0].x + c;
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+      const Layer& layer = layers[k].layer();
+      const auto names = layer.channelNames();
+      for (int c = 0; c < layer.channels; ++c)
+        if (layer.name + "." + names[c] == it.name()) {
+          row.layer = static_cast<int>(k);
+          row.channel = c;
+        }
+    }
+    lineBytes += static_cast<std::size_t>(width) * (row.type == Imf::HALF ? 2 : 4);
+    if (row.positions || row.layer >= 0) rows.push_back(row);
+  }
+
+  std::vector<char> raw(lineBytes * kBandRows);
+  // A uniform layer's channel rows are bytes equal to the first line's first sample repeated:
+  // such a band is compared, not converted (a new document's layers are all uniform).
+  std::vector<char> uniformLine(lineBytes);
+  for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
+    const int rowEnd = std::min(side, rowBegin + kBandRows);
+    for (int j = rowBegin; j < rowEnd; ++j) {
+      int bytes = 0;
+      file.rawPixelDataToBuffer(window.min.y + j, raw.data() + (j - rowBegin) * lineBytes, bytes);
+      if (static_cast<std::size_t>(bytes) != lineBytes)
+        refuse(path, "corrupt: line " + std::to_string(j) + " holds " + std::to_string(bytes) +
+                         " bytes where its channels take " + std::to_string(lineBytes));
+    }
+    if (rowBegin == 0)
+      for (const Row& row : rows) {
+        const std::size_t bytes = row.type == Imf::HALF ? 2 : 4;
+        for (int i = 0; i < width; ++i)
+          std::memcpy(uniformLine.data() + row.offset + i * bytes, raw.data() + row.offset, bytes);
+      }
+    std::vector<float*> bands(layers.size(), nullptr); // null: the band repeats the fill
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+      bool same = rowBegin > 0 && layers[k].uniformSoFar();
+      for (const Row& row : rows)
+        if (same && row.layer == static_cast<int>(k)) {
+          const std::size_t bytes =
+              static_cast<std::size_t>(width) * (row.type == Imf::HALF ? 2 : 4);
+          for (int r = 0; same && r < rowEnd - rowBegin; ++r)
+            same = std::memcmp(raw.data() + r * lineBytes + row.offset,
+                               uniformLine.data() + row.offset, bytes) == 0;
+        }
+      if (!same) bands[k] = layers[k].band(rowBegin, rowEnd);
+    }
+    detail::parallelRows(
+        rowEnd - rowBegin,
+        [&](int a, int b) {
+          for (int r = a; r < b; ++r) {
+            const char* line = raw.data() + static_cast<std::size_t>(r) * lineBytes;
+            for (const Row& row : rows)
+              if (row.positions)
+                convertRow(row.type, line + row.offset, width,
+                           row.positions + static_cast<std::size_t>(rowBegin + r) * side * 4, 4);
+              else if (bands[row.layer]) {
+                const std::size_t channels =
+                    static_cast<std::size_t>(layers[row.layer].layer().channels);
+                convertRow(row.type, line + row.offset, width,
+                           bands[row.layer] + static_cast<std::size_t>(r) * side * channels +
+                               row.channel,
+                           channels);
+              }
+          }
+        },
+        8);
+    for (std::size_t k = 0; k < layers.size(); ++k)
+      if (bands[k]) layers[k].takeBand(rowBegin);
+  }
+}
+
+bool layerInFile(const DocumentHeader& header, const Layer& layer) {
+  // checkHeader refused a partial layer: one channel tells.
+  return std::count(header.channels.begin(), header.channels.end(),
+                    layer.name + "." + layer.channelNames()[0]) > 0;
+}
+
+// The automatic choice (docs/documents.md has the table): RLE up to N = 2048, where unpainted
+// layers shrink to nothing (13 MB instead of 27 at N = 1024) for little time; raw above, where
+// float positions barely compress (at N = 4096 ZIP level 1 takes 40 % off RLE's size for about
+// 10x raw's time to write and 8x to read) and raw lines are read without OpenEXR's conversion
+// (readRawPixels).
+constexpr int kLargestCompressedSize = 2048;
+
+Imf::Compression exrCompression(DocumentCompression compression, int n) {
+  switch (compression) {
+  case DocumentCompression::None:
+    return Imf::NO_COMPRESSION;
+  case DocumentCompression::Rle:
+    return Imf::RLE_COMPRESSION;
+  case DocumentCompression::Zips:
+    return Imf::ZIPS_COMPRESSION;
+  case DocumentCompression::Zip:
+    return Imf::ZIP_COMPRESSION;
+  case DocumentCompression::Automatic:
+    break;
+  }
+  return n <= kLargestCompressedSize ? Imf::RLE_COMPRESSION : Imf::NO_COMPRESSION;
 }
 
 } // namespace
@@ -188,8 +392,7 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
   requireExrMagic(path);
   Document document;
   try {
-    const auto opened = openExr(path);
-    Imf::InputFile& file = *opened;
+    Imf::InputFile file(path.c_str(), exrThreads());
     const DocumentHeader header = checkHeader(path, file.header());
     if (!file.isComplete())
       refuse(path, "truncated: the file ends before all its pixels (an interrupted copy?)");
@@ -197,25 +400,37 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
     const int side = header.size + 1;
     const Imath::Box2i window = file.header().dataWindow();
     const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
-    Imf::FrameBuffer frame;
     float* base = &document.positions.texels()[0].x;
-    for (int c = 0; c < 3; ++c)
-      frame.insert(
-          kPositionChannels[c],
-          Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+
+    std::vector<LayerReader> layers;
+    layers.reserve(3);
     if (options.layers)
       for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-        addLayerReadSlices(frame, window, header, *layer, side);
-    // One read for every channel: each readPixels call decompresses the whole file again.
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
+        if (layerInFile(header, *layer)) layers.emplace_back(*layer, side);
+    // Band by band: positions straight into the image, layers through a band buffer each.
+    if (readsRaw(file.header()))
+      readRawPixels(path, file, document.positions, layers);
+    else
+      for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
+        const int rowEnd = std::min(side, rowBegin + kBandRows);
+        Imf::FrameBuffer frame;
+        for (int c = 0; c < 3; ++c)
+          frame.insert(kPositionChannels[c],
+                       Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride,
+                                  yStride));
+        for (LayerReader& layer : layers)
+          layer.addSlices(frame, window, rowBegin, rowEnd);
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y + rowBegin, window.min.y + rowEnd - 1);
+        for (LayerReader& layer : layers)
+          layer.takeBand(rowBegin);
+      }
+    for (LayerReader& layer : layers)
+      layer.finish();
 
     if (const auto problem = positionsProblem(document.positions)) refuse(path, *problem);
     for (const Layer* layer : {&document.diffuse, &document.feature, &document.mask})
       if (const auto problem = layerValuesProblem(*layer, header.size)) refuse(path, *problem);
-
-    for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-      collapseUniformLayer(*layer);
     document.hasMask = std::count(header.channels.begin(), header.channels.end(), "mask.Y") > 0;
   } catch (const Error&) {
     throw;
@@ -228,52 +443,48 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
   return document;
 }
 
-void writeDocument(const Document& document, const fs::path& path) {
+void writeDocument(const Document& document, const fs::path& path,
+                   const DocumentWriteOptions& options) {
   const int n = document.size();
   requireValidSize(n);
   const int side = n + 1;
-  // The file is built in memory, then written whole by the one checked writer.
-  std::vector<std::uint8_t> bytes;
-  {
-    Imf::Header header(side, side);
-    // ZIP level 1: most of ZIP's gain on float positions for a fraction of its time.
-    // RLE up to N = 2048: unpainted layers shrink to nothing and saving stays near raw speed
-    // (N = 1024 here: RLE 120 ms / 13 MB, ZIP 430 ms / 8-12 MB, none 65 ms / 27 MB). Float
-    // positions barely compress, so larger documents are written raw to keep saves under
-    // two seconds; compact storage is `octaclay-cli compress`'s job.
-    header.compression() = n <= kLargestCompressedSize ? Imf::RLE_COMPRESSION : Imf::NO_COMPRESSION;
-    header.insert(kFormatAttribute, Imf::IntAttribute(kDocumentFormatVersion));
-    header.insert(kParameterizationAttribute, Imf::StringAttribute("octahedral"));
-    header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
-    for (const char* name : kPositionChannels)
-      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    std::vector<const Layer*> layers{&document.diffuse, &document.feature};
-    if (document.hasMask) layers.push_back(&document.mask);
-    for (const Layer* layer : layers)
-      for (const auto& c : layer->channelNames())
-        header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
+  Imf::Header header(side, side);
+  header.compression() = exrCompression(options.compression, n);
+  header.zipCompressionLevel() = std::clamp(options.zipLevel, 1, 9);
+  header.insert(kFormatAttribute, Imf::IntAttribute(kDocumentFormatVersion));
+  header.insert(kParameterizationAttribute, Imf::StringAttribute("octahedral"));
+  header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
+  for (const char* name : kPositionChannels)
+    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  std::vector<const Layer*> layers{&document.diffuse, &document.feature};
+  if (document.hasMask) layers.push_back(&document.mask);
+  for (const Layer* layer : layers)
+    for (const auto& c : layer->channelNames())
+      header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
+  const Imath::Box2i window = header.dataWindow();
+  const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
+  auto* base = const_cast<float*>(&document.positions.texels()[0].x);
 
-    const Imath::Box2i window = header.dataWindow();
-    Imf::FrameBuffer frame;
-    const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
-    auto* base = const_cast<float*>(&document.positions.texels()[0].x);
-    for (int c = 0; c < 3; ++c)
-      frame.insert(
-          kPositionChannels[c],
-          Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
-    std::array<std::vector<half>, 3> halves;
-    for (std::size_t k = 0; k < layers.size(); ++k)
-      addLayerSlices(frame, window, *layers[k], side, halves[k]);
-
-    detail::ExrMemoryStream stream;
+  writeFileAtomically(path, [&](ByteSink& sink) {
+    detail::ExrSinkStream stream(sink);
     {
-      Imf::OutputFile file(stream, header, exrThreads(header.compression()));
-      file.setFrameBuffer(frame);
-      file.writePixels(side);
+      Imf::OutputFile file(stream, header, exrThreads());
+      std::array<std::vector<half>, 3> halves;
+      for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
+        const int rowEnd = std::min(side, rowBegin + kBandRows);
+        Imf::FrameBuffer frame;
+        for (int c = 0; c < 3; ++c)
+          frame.insert(kPositionChannels[c],
+                       Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride,
+                                  yStride));
+        for (std::size_t k = 0; k < layers.size(); ++k)
+          addLayerWriteSlices(frame, window, *layers[k], side, rowBegin, rowEnd, halves[k]);
+        file.setFrameBuffer(frame);
+        file.writePixels(rowEnd - rowBegin);
+      }
     }
-    bytes = std::move(stream.bytes());
-  }
-  writeBytesAtomically(path, bytes);
+    stream.finish(); // the offset table OutputFile's destructor wrote, and any error it met
+  });
 }
 
 } // namespace octaclay::core

@@ -122,10 +122,7 @@ void resizeLayer(const Layer& from, Layer& to, int n, int m) {
 } // namespace
 
 Document resizeDocument(const Document& document, int m) {
-  if (!isValidSize(m))
-    throw Error(ErrorKind::InvalidArgument,
-                "size " + std::to_string(m) + " is not a power of two from " +
-                    std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
+  requireValidSize(m);
   if (const auto problem = positionsProblem(document.positions))
     throw Error(ErrorKind::InvalidInput,
                 *problem + "; the document is damaged and cannot be resized");

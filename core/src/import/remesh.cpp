@@ -187,10 +187,7 @@ RemeshResult remeshDocument(const Document& document, const RemeshOptions& optio
                             const std::function<bool(float)>& progress) {
   const int n = document.size();
   const int m = options.size == 0 ? n : options.size;
-  if (!isValidSize(m))
-    throw Error(ErrorKind::InvalidArgument,
-                "size " + std::to_string(m) + " is not a power of two from " +
-                    std::to_string(kMinSize) + " to " + std::to_string(kMaxSize));
+  requireValidSize(m);
   if (const auto problem = positionsProblem(document.positions))
     throw Error(ErrorKind::InvalidInput,
                 *problem + "; the document is damaged and cannot be remeshed");

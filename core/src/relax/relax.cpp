@@ -9,6 +9,7 @@
 #include "octaclay/core/geometry/mesh_extraction.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -49,6 +50,10 @@ constexpr float kCoarseStretchedEdge = 1.5f;
 constexpr float kLongEdge = 0.003f;
 constexpr float kEvenOutDonorEdge = 3.0f;
 constexpr float kKeepDetailDonorEdge = 5.0f;
+// How far keep-detail's relaxation may move the surface, as fractions of the bounding-box
+// diagonal (the even-out's tolerance).
+constexpr double kKeepDetailRms = 1e-4;
+constexpr double kKeepDetailHausdorff = 1e-3;
 
 float edgeLength(const GeometryImage& image, int i, int j, int di, int dj) {
   return length(image.at(i + di, j + dj).xyz() - image.at(i, j).xyz());
@@ -91,69 +96,60 @@ float stretchedEdgeLimit(const GeometryImage& image, float median) {
                     kStretchedEdge * median);
 }
 
-bool stretchedInside(const GeometryImage& image, TexelRect r, float limit) {
-  for (int j = r.y; j + 1 < r.y + r.height; ++j)
-    for (int i = r.x; i + 1 < r.x + r.width; ++i)
-      if (edgeLength(image, i, j, 1, 0) > limit || edgeLength(image, i, j, 0, 1) > limit)
-        return true;
-  return false;
+// The tiling's half-turn centres, which cannot move without tearing the seam.
+bool isSideMidpoint(int n, Sample s) {
+  const int h = n / 2;
+  return (s.i == h && (s.j == 0 || s.j == n)) || (s.j == h && (s.i == 0 || s.i == n));
 }
 
-bool stretchedBorder(const GeometryImage& image, TexelRect r, float limit) {
-  const int x1 = r.x + r.width - 1, y1 = r.y + r.height - 1;
-  for (int i = r.x; i < x1; ++i)
-    if (edgeLength(image, i, r.y, 1, 0) > limit || edgeLength(image, i, y1, 1, 0) > limit)
-      return true;
-  for (int j = r.y; j < y1; ++j)
-    if (edgeLength(image, r.x, j, 0, 1) > limit || edgeLength(image, x1, j, 0, 1) > limit)
-      return true;
-  return false;
-}
-
-TexelRect grownBy(TexelRect r, int by, int n) {
-  return clipped({r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}, n);
-}
-
-// What to relax around a changed rectangle: grown until its border is no longer stretched
-// (the whole pulled part), then by half its size, so that samples can flow in from the
-// unstretched surface around it. The last growth may leave the image: the surface goes on
-// across the seam (OffsetField::freeInside wraps it), and a rim on the image's border would
-// hold the samples there while the other side of the seam moves.
-TexelRect relaxedExtent(const GeometryImage& image, TexelRect seed, float limit) {
+// Whether a changed sample has a grid edge (through the wrap) over `limit` long.
+bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed,
+                 float limit) {
   const int n = image.size();
-  TexelRect r = clipped(seed, n);
-  while (r.width < n + 1 || r.height < n + 1) {
-    if (!stretchedBorder(image, r, limit)) break;
-    r = grownBy(r, std::max(4, std::max(r.width, r.height) / 8), n);
-  }
-  const int by = std::max({16, r.width, r.height});
-  TexelRect e{r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by};
-  if (e.width > n) e.x = -1, e.width = n + 3; // all of the side: every sample, border included
-  if (e.height > n) e.y = -1, e.height = n + 3;
-  return e;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      if (!changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
+                   static_cast<std::size_t>(i)])
+        continue;
+      const Vec3f p = image.at(i, j).xyz();
+      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
+        if (length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit) return true;
+    }
+  return false;
 }
 
-bool meet(TexelRect a, TexelRect b) {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
-
-// Overlapping extents become one: a border between two would pin the samples on it.
-std::vector<TexelRect> mergedExtents(std::vector<TexelRect> rects) {
-  for (bool merged = true; merged;) {
-    merged = false;
-    for (std::size_t a = 0; a < rects.size() && !merged; ++a)
-      for (std::size_t b = a + 1; b < rects.size() && !merged; ++b)
-        if (meet(rects[a], rects[b])) {
-          const TexelRect p = rects[a], q = rects[b];
-          const int x0 = std::min(p.x, q.x), y0 = std::min(p.y, q.y);
-          const int x1 = std::max(p.x + p.width, q.x + q.width);
-          const int y1 = std::max(p.y + p.height, q.y + q.height);
-          rects[a] = {x0, y0, x1 - x0, y1 - y0};
-          rects.erase(rects.begin() + static_cast<std::ptrdiff_t>(b));
-          merged = true;
-        }
+// The samples within `margin` (Chebyshev distance on the tiled plane, so across the seams) of a
+// changed one: a breadth-first search over the 8 neighbours, every copy of a border sample
+// reached with it.
+std::vector<std::uint8_t> grownMask(int n, const std::vector<std::uint8_t>& changed, int margin) {
+  const std::size_t side = static_cast<std::size_t>(n + 1);
+  auto index = [side](Sample s) {
+    return static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i);
+  };
+  std::vector<std::uint8_t> in(changed.size(), 0);
+  std::vector<Sample> front;
+  auto reach = [&](Sample s, std::vector<Sample>& next) {
+    std::array<Sample, 4> copies;
+    const int k = identifiedSamples(n, wrap(n, s), copies);
+    for (int c = 0; c < k; ++c) {
+      const Sample q = copies[static_cast<std::size_t>(c)];
+      if (in[index(q)]) continue;
+      in[index(q)] = 1;
+      next.push_back(q);
+    }
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (changed[index({i, j})]) reach({i, j}, front);
+  for (int d = 0; d < margin && !front.empty(); ++d) {
+    std::vector<Sample> next;
+    for (const Sample s : front)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          if (di != 0 || dj != 0) reach({s.i + di, s.j + dj}, next);
+    front = std::move(next);
   }
-  return rects;
+  return in;
 }
 
 // The even-out's offsets (the whole model free), solved on document's positions.
@@ -219,6 +215,104 @@ std::string times(double ratio) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3gx", ratio);
   return text;
+}
+
+// The grid's triangles over the cells with a moved corner (offsets[k] != 0), their vertices at
+// `positions` (wrapped through the seams), compacted: the part of the surface a local relaxation
+// can change.
+TriangleMesh movedCellsMesh(int n, const std::vector<Vec3f>& positions,
+                            const detail::OffsetField& field) {
+  TriangleMesh mesh;
+  std::vector<std::uint32_t> vertex(positions.size(), ~0u);
+  const auto moved = [&](Sample s) {
+    const auto& d = field.offset[field.index(s.i, s.j)];
+    return d[0] != 0.0f || d[1] != 0.0f;
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (!moved({i, j}) && !moved({i + 1, j}) && !moved({i, j + 1}) && !moved({i + 1, j + 1}))
+        continue;
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        std::array<std::uint32_t, 3> t{};
+        for (std::size_t v = 0; v < 3; ++v) {
+          const std::size_t k = field.index(tri[v].i, tri[v].j);
+          if (vertex[k] == ~0u) {
+            vertex[k] = static_cast<std::uint32_t>(mesh.positions.size());
+            mesh.positions.push_back(positions[k]);
+          }
+          t[v] = vertex[k];
+        }
+        mesh.triangles.push_back(t);
+      }
+    }
+  return mesh;
+}
+
+double meshArea(const TriangleMesh& mesh) {
+  double area = 0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * double(length(cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                      mesh.positions[t[2]] - mesh.positions[t[0]])));
+  return area;
+}
+
+// The positions of `image` resampled at the field's parameter points (what resampleDocument
+// writes into the positions), as plain points.
+std::vector<Vec3f> resampledPositions(const Document& document, const detail::OffsetField& field) {
+  const int n = document.size();
+  std::vector<Vec3f> out(document.positions.texels().size());
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = document.positions.texels()[k].xyz();
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const auto& d = field.offset[field.index(i, j)];
+      if (d[0] == 0.0f && d[1] == 0.0f) continue;
+      float p[4];
+      detail::resampleTexel(document, field, EditLayer::Positions, i, j, p);
+      out[field.index(i, j)] = {p[0], p[1], p[2]};
+    }
+  return out;
+}
+
+// Keeps keep-detail's solved move within the relaxation's tolerance: the surface moves by at
+// most kKeepDetailRms (RMS) and kKeepDetailHausdorff (Hausdorff) of the bounding-box diagonal,
+// measured over the cells that changed (the rest of the surface keeps its bits; the RMS is
+// taken over the whole surface's area). Like evenOut, the move is kept, or scaled back (1/2,
+// 1/4, 1/8: a move that cuts across a sharp feature, a crease's valley or the coarse facets of
+// a limb pulled far in one stroke), or dropped (every offset zero). Returns the step kept (0:
+// none).
+double keepWithinTolerance(const Document& document, detail::OffsetField& field) {
+  const GeometryImage& image = document.positions;
+  const int n = image.size();
+  const double diag = diagonal(image);
+  std::vector<Vec3f> before(image.texels().size());
+  for (std::size_t k = 0; k < before.size(); ++k)
+    before[k] = image.texels()[k].xyz();
+  const TriangleMesh old = movedCellsMesh(n, before, field);
+  if (old.triangles.empty()) return 0;
+  double total = 0; // the whole surface's area, straight from the grid (no mesh built)
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        const Vec3f a = image.at(tri[0]).xyz();
+        total +=
+            0.5 * double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
+      }
+  const double share = total > 0 ? std::min(1.0, meshArea(old) / total) : 1.0;
+  const detail::OffsetField solved = field;
+  for (const double step : {1.0, 0.5, 0.25, 0.125}) {
+    for (std::size_t k = 0; k < field.offset.size(); ++k)
+      field.offset[k] = {static_cast<float>(step * double(solved.offset[k][0])),
+                         static_cast<float>(step * double(solved.offset[k][1]))};
+    const SurfaceDistance d =
+        compareSurfaces(old, movedCellsMesh(n, resampledPositions(document, field), field),
+                        {.samplesPerSurface = 20'000});
+    const double hausdorff = d.hausdorff * d.diagonal, rms = d.rms * d.diagonal * std::sqrt(share);
+    if (hausdorff <= kKeepDetailHausdorff * diag && rms <= kKeepDetailRms * diag) return step;
+  }
+  for (auto& d : field.offset)
+    d = {0.0f, 0.0f};
+  return 0;
 }
 
 } // namespace
@@ -310,20 +404,33 @@ EvenOutResult evenOut(const Document& document, const RelaxOptions& options,
   return out;
 }
 
-Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
-                        std::string label, const RelaxOptions& options) {
+int keepDetailMargin(const GeometryImage& image, double radius) {
+  const double median = medianEdge(image);
+  const double margin = median > 0 ? std::ceil(kKeepDetailMarginRadii * radius / median) : 0.0;
+  // At most the image's whole side: past it the region holds every sample anyway.
+  return static_cast<int>(std::clamp(margin, double(kKeepDetailMinMargin), double(image.size())));
+}
+
+Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
+                        int margin, std::string label, const RelaxOptions& options) {
   checkOptions(options);
+  if (margin < 0)
+    throw Error(ErrorKind::InvalidArgument,
+                "a relaxation margin must be 0 or more samples, not " + std::to_string(margin));
   checkPositions(document.positions);
   const int n = document.size(), side = n + 1;
+  if (changed.size() != static_cast<std::size_t>(side) * static_cast<std::size_t>(side))
+    throw Error(ErrorKind::InvalidArgument, "the changed samples must cover the (N+1)² image");
   detail::OffsetField field(n);
   const float median = medianEdge(document.positions);
   const float limit = stretchedEdgeLimit(document.positions, median);
-  std::vector<TexelRect> extents;
-  for (const TexelRect& r : regions)
-    if (r.width > 0 && r.height > 0 && stretchedInside(document.positions, clipped(r, n), limit))
-      extents.push_back(relaxedExtent(document.positions, r, limit));
-  for (const TexelRect& r : mergedExtents(std::move(extents)))
-    field.freeInside(r);
+  if (stretchedAt(document.positions, changed, limit)) {
+    const std::vector<std::uint8_t> region = grownMask(n, changed, margin);
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        if (region[field.index(i, j)] && !isSideMidpoint(n, {i, j}))
+          field.free[field.index(i, j)] = 1;
+  }
   for (Sample s : options.pinned)
     field.pin(s);
   StrokeRecorder recorder(side);
@@ -331,6 +438,7 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
     return recorder.finish(std::move(label));
   detail::solveOffsets(document.positions, field, fineIterations(options),
                        kKeepDetailDonorEdge * median, true, {});
+  keepWithinTolerance(document, field);
   const int tiles = StrokeRecorder::tilesPerSide(side);
   std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
   for (int j = 0; j <= n; ++j)
@@ -364,9 +472,24 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
   return recorder.finish(std::move(label));
 }
 
+Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions, int margin,
+                        std::string label, const RelaxOptions& options) {
+  const int n = document.size();
+  std::vector<std::uint8_t> changed(
+      static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1), 0);
+  for (const TexelRect& region : regions) {
+    const TexelRect r = clipped(region, n);
+    for (int j = r.y; j < r.y + r.height; ++j)
+      for (int i = r.x; i < r.x + r.width; ++i)
+        changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
+                static_cast<std::size_t>(i)] = 1;
+  }
+  return relaxChangedStep(document, changed, margin, std::move(label), options);
+}
+
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
-                                    const RelaxOptions& options) {
-  const Stroke step = relaxRegionsStep(document, regions, "relax", options);
+                                    int margin, const RelaxOptions& options) {
+  const Stroke step = relaxRegionsStep(document, regions, margin, "relax", options);
   const TileApplier apply = applierFor(document);
   std::vector<TexelRect> changed;
   for (const TileChange& t : step.tiles) {

@@ -197,6 +197,7 @@ private slots:
   void init() { QVERIFY(dir_.isValid()); }
   void roundTrip();
   void roundTripPaintedLayer();
+  void everyCompressionReadsBack();
   void header();
   void missingFile();
   void notExr();
@@ -277,6 +278,54 @@ void DocumentIoTest::roundTripPaintedLayer() {
                       std::pair{&doc.feature, &back.feature}, std::pair{&doc.mask, &back.mask}}) {
     const QString why = compareLayer(*w, *r, 64);
     QVERIFY2(why.isEmpty(), qPrintable(why));
+  }
+}
+
+// Documents are read and written in bands of rows, uncompressed files without OpenEXR's own
+// conversion: every compression comes back the same, with a layer that turns non-uniform only
+// after the first band, one painted from the first row, and a uniform one.
+void DocumentIoTest::everyCompressionReadsBack() {
+  const int n = 512; // 513 rows: bands of 128 and a short last one
+  Document doc = makeTestDocument(n);
+  const std::size_t side = n + 1, texels = side * side;
+  doc.diffuse.texels.assign(texels * 4, 0.0f);
+  for (std::size_t t = 0; t < texels; ++t)
+    for (std::size_t c = 0; c < 4; ++c)
+      doc.diffuse.texels[t * 4 + c] = t / side < 300 ? doc.diffuse.fill[c] : 0.25f * float(c);
+  doc.feature.texels.resize(texels * 3);
+  for (std::size_t t = 0; t < texels * 3; ++t)
+    doc.feature.texels[t] = float(t % 7) / 8.0f;
+  for (const DocumentCompression compression :
+       {DocumentCompression::Automatic, DocumentCompression::None, DocumentCompression::Rle,
+        DocumentCompression::Zips, DocumentCompression::Zip}) {
+    const fs::path p = path("compressed.exr");
+    NO_THROW(writeDocument(doc, p, {compression, 1}));
+    Document back;
+    NO_THROW(back = readDocument(p));
+    QVERIFY2(positionsBitExact(doc.positions, back.positions), "positions not bit-exact");
+    QVERIFY(back.hasMask && back.mask.uniform() && !back.diffuse.uniform());
+    for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse},
+                        std::pair{&doc.feature, &back.feature}, std::pair{&doc.mask, &back.mask}}) {
+      const QString why = compareLayer(*w, *r, n);
+      QVERIFY2(
+          why.isEmpty(),
+          qPrintable(QString("compression %1: %2").arg(static_cast<int>(compression)).arg(why)));
+    }
+    Document positionsOnly;
+    NO_THROW(positionsOnly = readDocument(p, DocumentReadOptions{false}));
+    QVERIFY(positionsBitExact(doc.positions, positionsOnly.positions));
+    QVERIFY(positionsOnly.diffuse.uniform() && positionsOnly.feature.uniform());
+  }
+
+  // A truncated uncompressed file is refused, whatever its length.
+  const fs::path p = path("raw.exr");
+  NO_THROW(writeDocument(doc, p, {DocumentCompression::None, 1}));
+  const std::string bytes = readBytes(p);
+  const fs::path cut = path("raw-cut.exr");
+  for (std::size_t k = 1; k < 20; ++k) {
+    writeBytes(cut, std::string_view(bytes).substr(0, bytes.size() * k / 20));
+    const QString why = expectError([&] { readDocument(cut); }, ErrorKind::InvalidInput, "");
+    QVERIFY2(why.isEmpty(), qPrintable(QString("length %1/20: %2").arg(k).arg(why)));
   }
 }
 

@@ -85,6 +85,9 @@ public:
   void refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects);
   /// Recomputes the whole normal map (a new or reloaded document).
   void refreshAllNormals(GpuDocument& document);
+  /// The normal map as refreshed so far: RGBA8, (N+1)², each texel a unit normal mapped to
+  /// [0, 1]. For tests that check what a refresh covered.
+  const Texture& normalMap() const { return normals_; }
 
   /// Draws into the bound framebuffer with the current viewport, depth-tested, skipping chunks
   /// of the level that wholly face away from view.eye. Leaves the program, vertex array and

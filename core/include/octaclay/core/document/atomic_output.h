@@ -4,8 +4,8 @@
 // modeller writes is staged as a temporary beside its target (`.stem.tmp-PID-N.ext`, the stem cut
 // to 64 bytes), written with every write and close checked, fsynced, and renamed into place only
 // when every file of its set was staged; a failure leaves the previous files whole and no temporary
-// behind. Writers only produce bytes (into a ByteSink, or in memory first: EXR, glTF, OpenMesh
-// formats); no other code opens an output file.
+// behind. Writers only produce bytes (into a ByteSink, streamed as the document's EXR is, or in
+// memory first: other EXR files, glTF, OpenMesh formats); no other code opens an output file.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +22,9 @@ class ByteSink {
 public:
   void write(std::span<const std::uint8_t> bytes);
   void write(std::string_view text);
+  /// Writes bytes at a byte offset from the file's start (pwrite: the position write() appends at
+  /// does not move), for formats that fill in a table at the front once the body is written.
+  void writeAt(std::uint64_t offset, std::span<const std::uint8_t> bytes);
 
 private:
   friend class OutputSet;

@@ -30,8 +30,21 @@ DocumentHeader readDocumentHeader(const std::filesystem::path& path);
 /// Error(InvalidInput) for truncated or corrupt pixel data and non-finite positions.
 Document readDocument(const std::filesystem::path& path, const DocumentReadOptions& options = {});
 
+/// How a document's pixels are compressed in the file. Automatic is the measured choice
+/// (docs/documents.md: size against time at N = 1024, 4096 and 8192); the others are there to
+/// measure it again (bench_document_io). Every choice reads back bit-exact.
+enum class DocumentCompression { Automatic, None, Rle, Zips, Zip };
+
+struct DocumentWriteOptions {
+  DocumentCompression compression = DocumentCompression::Automatic;
+  int zipLevel = 1; ///< 1 (fastest) .. 9 (smallest), for Zips and Zip
+};
+
 /// Writes atomically: into a temporary file beside path, then renamed over it, so a failure
-/// never leaves a partial file and never replaces a good one. Throws Error(Io).
-void writeDocument(const Document& document, const std::filesystem::path& path);
+/// never leaves a partial file and never replaces a good one. Throws Error(Io). The file is
+/// written as it is encoded (OpenEXR's thread pool, bands of rows), never built whole in memory:
+/// beside the document it holds a few MB.
+void writeDocument(const Document& document, const std::filesystem::path& path,
+                   const DocumentWriteOptions& options = {});
 
 } // namespace octaclay::core

@@ -7,6 +7,7 @@
 #include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/measure/surface_distance.h"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -74,20 +75,45 @@ struct EvenOutResult {
 EvenOutResult evenOut(const Document& document, const RelaxOptions& options = {},
                       const EvenOutCheckOptions& check = {}, const RelaxProgress& progress = {});
 
-/// The local relaxation behind "keep detail": the same flow around what changed. A region
-/// (e.g. the texels a stroke moved) counts only when one of its grid edges is stretched (over
-/// twice the surface's median edge); it is then grown until its border is no longer stretched
-/// (the whole pulled part) and by its size again (the surface samples flow in from), and
-/// overlapping ones are merged. The samples inside move, the rest and each extent's outer ring
-/// stay. Rewrites the changed texels of every layer in place and returns the rectangles it
-/// changed (empty when none). Throws like evenOutSamples.
-std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
-                                    const RelaxOptions& options = {});
+/// How far keep-detail's relaxation reaches beyond the texels a stroke changed: this many brush
+/// radii, counted in the surface's median grid edges (Chebyshev distance in samples, through the
+/// seams), and at least kKeepDetailMinMargin samples: a 0.06-unit crease on the creature of
+/// tests/creature_layout.h at N = 256 reaches 12 samples beyond its texels, a 0.2-unit snake
+/// hook on the unit ball about 40 (four times as many at N = 1024). Three radii: a limb pushed out
+/// with clicks of radius r draws on that much surface around it (fewer radii left its tip's
+/// edges 20x the median and longer).
+inline constexpr double kKeepDetailMarginRadii = 3.0;
+inline constexpr int kKeepDetailMinMargin = 4;
 
-/// relaxRegions as an undo step, the document left as it is: the tiles of every layer the
-/// relaxation changes, before and after (empty when nothing moved). Apply its After state to
-/// make the change (what keep-detail does on the GPU).
-Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
+/// keep-detail's margin in samples for a stroke of brush radius `radius` (object units; the
+/// largest its dabs used) on `image`.
+int keepDetailMargin(const GeometryImage& image, double radius);
+
+/// The local relaxation behind "keep detail": the same flow around what a stroke changed.
+/// `changed` marks the changed samples, (N+1)² row-major (a border sample and its copies alike).
+/// Nothing happens unless one of their grid edges is stretched (over twice the surface's median
+/// edge; from 1.5 times at coarse N). Then the samples within `margin` samples of a changed one
+/// (Chebyshev distance on the tiled plane, so across the seams) move (pins and the four side
+/// midpoints excepted) toward where the surface is stretched, onto what the stroke pulled, and
+/// every other sample of every layer keeps its bits. The move is kept only within the
+/// relaxation's tolerance (the surface moves by at most 0.01 % RMS and 0.1 % Hausdorff of the
+/// bounding-box diagonal, measured over the cells that changed); else it is scaled back (1/2,
+/// 1/4, 1/8) or dropped, as evenOut's. Returns the change as an undo step, the
+/// document left as it is: the tiles of every layer the relaxation changes, before and after (empty
+/// when nothing moved). Apply its After state to make the change (what keep-detail does on the
+/// GPU). Throws like evenOutSamples, and Error(InvalidArgument) when `changed` is not (N+1)² long
+/// or margin < 0. Samples beyond the margin keep their bits in every layer, and so do their normals
+/// (which read their grid neighbours) beyond one sample more.
+Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
+                        int margin, std::string label, const RelaxOptions& options = {});
+
+/// relaxChangedStep with the changed texels given as rectangles (clipped to the image).
+Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions, int margin,
                         std::string label, const RelaxOptions& options = {});
+
+/// relaxRegionsStep applied to `document` in place; returns the rectangles of positions it
+/// changed (empty when none).
+std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
+                                    int margin, const RelaxOptions& options = {});
 
 } // namespace octaclay::core
