@@ -146,12 +146,30 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
   return true;
 }
 
-bool DocumentActions::swapDocument(HeldDocument& held) {
+bool DocumentActions::replaceDocument(core::Document document, const QString& label) {
+  if (!parts_.viewport->hasDocument()) return false;
+  parts_.viewport->endStroke();
+  auto previous = std::make_unique<HeldDocument>(
+      HeldDocument{core::Document{}, core::EditHistory{}, path_, importedFrom_, forceModified_});
+  previous->document = std::move(document);
+  // swapDocument shows the held one (the new document, no strokes yet) and keeps the shown one,
+  // with its history, in its place: the step then holds what undo brings back.
+  if (!swapDocument(*previous, /*keepView=*/true)) return false;
+  parts_.undoStack->push(
+      new ReplaceDocumentCommand(label, std::move(previous), [this](HeldDocument& held) {
+        return swapDocument(held, /*keepView=*/true);
+      }));
+  emit titleChanged();
+  lastError_.clear();
+  return true;
+}
+
+bool DocumentActions::swapDocument(HeldDocument& held, bool keepView) {
   parts_.viewport->endStroke();
   HeldDocument shown{parts_.viewport->document(), std::move(parts_.viewport->history()), path_,
                      importedFrom_, forceModified_};
   emit aboutToAdopt();
-  if (!parts_.viewport->setDocument(std::move(held.document))) {
+  if (!parts_.viewport->setDocument(std::move(held.document), keepView)) {
     parts_.viewport->history() = std::move(shown.history);
     showError(parts_.viewport->error());
     return false;

@@ -62,6 +62,13 @@ public:
   /// full resolution (glTF's normalTexture).
   bool exportLod(const QString& path);
 
+  /// Makes document (the same surface resampled: Mesh ▸ Remesh, Mesh ▸ Resolution) the current
+  /// one as one undo step labelled label (a ReplaceDocumentCommand holding the replaced document
+  /// with its strokes), keeping the path, the camera and what the model was imported from; undo
+  /// brings the replaced document back bit for bit. False (reported; nothing changes) if the
+  /// viewport refused it.
+  bool replaceDocument(core::Document document, const QString& label);
+
   QString currentPath() const { return path_; }
   /// The mesh the current document was imported from (absolute), empty if it was not.
   QString importedFrom() const { return importedFrom_; }
@@ -97,8 +104,9 @@ private:
   /// Shows document as the current one (clearing the undo stack when clearUndo); false if the
   /// viewport refused it (reported; the current document stays).
   bool adoptDocument(core::Document document, const QString& path, bool clearUndo = true);
-  /// Shows held (with its history, path and state) and puts the shown document in its place.
-  bool swapDocument(HeldDocument& held);
+  /// Shows held (with its history, path and state) and puts the shown document in its place;
+  /// with keepView the camera stays (the same surface), else the model is framed anew.
+  bool swapDocument(HeldDocument& held, bool keepView = false);
   void addRecentFile(const QString& path);
 
   Parts parts_;

@@ -14,7 +14,6 @@
 #include "viewport_focus.h"
 #include "viewport_widget.h"
 
-#include "octaclay/core/relax/relax.h"
 #include "octaclay/gpu/brush_library.h"
 
 #include <QApplication>
@@ -222,83 +221,6 @@ void MainWindow::refreshBrushes() {
   brushPanel_->setMaterials(viewport_->materialIds());
   brushPanel_->setBrushes(std::move(brushes), std::move(errors));
   viewport_->setBrushSettings(brushPanel_->settings());
-}
-
-bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
-  BackgroundTaskRunner& runner = documents_->runner();
-  // On the GPU (GL started), not just pending: the result is applied there.
-  if (!viewport_->glReady() || !viewport_->hasDocument() || viewport_->stroking() || runner.busy())
-    return false;
-  if (!control) control = std::make_shared<TaskControl>();
-  // The copy is taken here, on the GUI thread; the worker never touches the viewport.
-  auto source = std::make_shared<const core::Document>(viewport_->document());
-  auto result = std::make_shared<core::EvenOutResult>();
-  // What tells that the model changed while the task ran (input reaches the viewport in the
-  // moment before the progress dialog appears): applying the result would undo that change.
-  const auto mark = [this] {
-    return std::tuple(viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(),
-                      undoStack_->count(),
-                      viewport_->hasDocument() ? viewport_->document().size() : 0);
-  };
-  const auto before = mark();
-  if (QAction* a = action(QStringLiteral("actionEvenOutSamples"))) a->setEnabled(false);
-  QString error = runner.run(
-      tr("Evening out the samples…"),
-      [source, result, control] {
-        // core::evenOut checks its own result: the document comes back unchanged, with the
-        // reason, rather than moved beyond its tolerance or more stretched.
-        *result = core::evenOut(*source, {}, {}, [control](float f) {
-          control->fraction = f;
-          return !control->cancel.load();
-        });
-      },
-      control);
-  updateMeshActions();
-  if (control->cancel) {
-    statusBar()->showMessage(tr("Even out cancelled"), 8000);
-    return false;
-  }
-  if (error.isEmpty() && mark() != before) {
-    statusBar()->showMessage(tr("The model changed while evening out; nothing was applied"), 8000);
-    return false;
-  }
-  if (error.isEmpty() && !result->changed) {
-    statusBar()->showMessage(
-        tr("Even Out left the model unchanged: %1").arg(QString::fromStdString(result->reason)),
-        15000);
-    return false;
-  }
-  bool recorded = false;
-  if (error.isEmpty()) {
-    try {
-      recorded = viewport_->applyChange(result->document, "Even Out Samples");
-    } catch (const std::exception& e) {
-      error = QString::fromUtf8(e.what());
-    }
-  }
-  if (!error.isEmpty()) {
-    const QString message = tr("Could not even out the samples: %1").arg(error);
-    statusBar()->showMessage(message, 15000);
-    auto* box =
-        new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open(); // window-modal, does not block the caller
-    return false;
-  }
-  if (!recorded) {
-    statusBar()->showMessage(tr("The samples are already even"), 8000);
-    return false;
-  }
-  undoStack_->push(new StrokeCommand(viewport_, tr("Even Out Samples")));
-  statusBar()->showMessage(tr("Samples evened out"), 5000);
-  return true;
-}
-
-void MainWindow::updateMeshActions() {
-  const bool ready = viewport_->glReady() && viewport_->hasDocument() && !viewport_->stroking() &&
-                     !documents_->runner().busy();
-  for (const char* name : {"actionEvenOutSamples"})
-    if (QAction* a = action(QString::fromLatin1(name))) a->setEnabled(ready);
 }
 
 void MainWindow::updateStatus() {

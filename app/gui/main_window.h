@@ -13,6 +13,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 class QAction;
 class QLabel;
@@ -91,14 +92,23 @@ public:
   bool exportLod(const QString& path) { return documents_->exportLod(path); }
   /// Mesh ▸ Even Out Samples: core::evenOut on a copy of the document, off the GUI
   /// thread behind a progress dialog with Cancel (control: the task's progress and cancel flag,
-  /// new if null; tests pass one already cancelled). On success the result becomes the document
-  /// as one undo step ("Even Out Samples" on the undo stack) and the document is modified; when
-  /// the even-out's own check leaves the model unchanged, the status bar says why and no step is
-  /// pushed; on
-  /// cancel nothing changes and the status bar says so; on an error a message box says why and
-  /// nothing changes. Returns whether a step was made. Refused (false) without a document,
-  /// during a stroke or while another task runs.
+  /// new if null; tests pass one already cancelled), the menu item showing how far it is. On
+  /// success the result becomes the document as one undo step ("Even Out Samples" on the undo
+  /// stack) and the document is modified; when the even-out's own check leaves the model
+  /// unchanged, the status bar says why and no step is pushed; on cancel nothing changes and the
+  /// status bar says so; on an error a message box says why and nothing changes. Returns whether
+  /// a step was made. Refused (false) without a document, during a stroke or while another task
+  /// runs.
   bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
+  /// Mesh ▸ Remesh…: core::remeshDocument at size n (0: the current N) as evenOutSamples runs
+  /// core::evenOut. The result replaces the document as one undo step ("Remesh", or "Remesh at
+  /// N = n"; a ReplaceDocumentCommand holding the replaced document and its strokes, so undo
+  /// brings it back bit for bit); the path, the camera and the saved file stay. When the
+  /// remesh's own check leaves the model unchanged the status bar says why and no step is made.
+  bool remesh(int n = 0, std::shared_ptr<TaskControl> control = nullptr);
+  /// Mesh ▸ Resolution…: core::resizeDocument to n, run and applied as remesh() is ("Resolution
+  /// N → n"). n equal to the current N changes nothing and says so.
+  bool changeResolution(int n, std::shared_ptr<TaskControl> control = nullptr);
   /// Draws the viewport offscreen at size (device pixels) with or without its background
   /// (transparent) and writes it to path as PNG; the status bar says what happened.
   bool saveImage(const QString& path, QSize size, bool background);
@@ -135,6 +145,31 @@ private:
   void updateStatus();
   /// Enables the Mesh menu's actions when they can run (a document, no stroke, no task).
   void updateMeshActions();
+  /// What a Mesh menu task made from the document: a new one, or the reason it is unchanged.
+  struct MeshOutcome {
+    core::Document document;
+    bool changed = false;
+    std::string reason;
+  };
+  struct MeshTask {
+    QString action;        ///< the menu item's object name (shows the progress, disabled)
+    QString name;          ///< "Remesh": "<name> left the model unchanged: <reason>"
+    QString verb;          ///< "Remeshing": the menu item's "<verb>… 40 %"
+    QString progressLabel; ///< the progress dialog's text
+    QString cancelled;     ///< the status bar's message on cancel
+    QString failure;       ///< "<failure>: <error>" in a message box on an error
+    /// Runs on a worker thread with a copy of the document; writes control.fraction, polls
+    /// control.cancel.
+    std::function<MeshOutcome(const core::Document&, TaskControl&)> work;
+  };
+  /// Runs task (main_window_mesh.cpp) and reports every ending but a changed model (cancel, the
+  /// model edited meanwhile, an error, unchanged with its reason); the changed model is returned
+  /// for the caller to apply as one undo step.
+  std::optional<MeshOutcome> runMeshTask(const MeshTask& task,
+                                         std::shared_ptr<TaskControl> control);
+  void showMeshError(const QString& failure, const QString& error);
+  /// Mesh ▸ Remesh… (remeshing) or Mesh ▸ Resolution…: the MeshSizeDialog, then the task.
+  void openMeshSizeDialog(bool remeshing);
   void updateTitle();
   void rebuildRecentMenu();
   bool maybeSave();

@@ -208,7 +208,7 @@ void ViewportWidget::resizeGL(int width, int height) {
   renderWindow_->SetSize(static_cast<int>(width * ratio), static_cast<int>(height * ratio));
 }
 
-bool ViewportWidget::setDocument(core::Document document) {
+bool ViewportWidget::setDocument(core::Document document, bool keepView) {
   if (!glStarted_) {
     pending_ = std::move(document);
     session_.history().clear();
@@ -217,13 +217,13 @@ bool ViewportWidget::setDocument(core::Document document) {
   bool ok = false;
   {
     CurrentContext current(*this);
-    ok = uploadDocument(std::move(document));
+    ok = uploadDocument(std::move(document), keepView);
   }
   update();
   return ok;
 }
 
-bool ViewportWidget::uploadDocument(core::Document document) {
+bool ViewportWidget::uploadDocument(core::Document document, bool keepView) {
   if (!model_) {
     pending_ = std::move(document); // kept so it can still be saved
     return false;
@@ -257,7 +257,7 @@ bool ViewportWidget::uploadDocument(core::Document document) {
   }
   surfaceEdited();
   refreshSaliency();
-  resetCamera();
+  if (!keepView) resetCamera();
   emit statsChanged();
   emit surfaceChanged();
   return true;

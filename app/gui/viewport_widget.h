@@ -82,8 +82,9 @@ public:
 
   /// Replaces the document and clears the stroke history (uploaded now if GL is ready, else at
   /// GL start). Returns false with error() set if the upload failed; the previous document
-  /// then stays.
-  bool setDocument(core::Document document);
+  /// then stays. A new model is framed from the front; with keepView the camera stays where it
+  /// is (Mesh ▸ Remesh and Resolution replace the document with the same surface).
+  bool setDocument(core::Document document, bool keepView = false);
   bool hasDocument() const;
   /// The document as edited so far (the engine's CPU mirror). Only valid if hasDocument().
   const core::Document& document() const;
@@ -244,7 +245,7 @@ protected:
 private:
   enum class Drag { None, Sculpt, Orbit, Pan };
 
-  bool uploadDocument(core::Document document);
+  bool uploadDocument(core::Document document, bool keepView = false);
   void onRenderWindowEvent(vtkObject* caller, unsigned long event, void* callData);
   void drainGlErrors();
   void drawModel(vtkRenderer* renderer);

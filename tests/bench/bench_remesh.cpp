@@ -6,11 +6,14 @@
 // (RMS, Hausdorff, fractions of the diagonal), whether the operation changed the document, and
 // the time. Cases: the snake-hook limb off the image's centre at N = 256, fourteen push clicks
 // at strength 13.3 at N = 256, the four-legged creature (keep-detail on) at N = 1024
-// (--creature=N for another N, 0 to leave it out). Other arguments are ignored (scripts/bench
-// passes benchmark filters).
+// (--creature=N for another N, 0 to leave it out). --file=doc.exr (repeatable) runs documents
+// from files instead, the pulled part being what lies farther than 1.6 from the centre, as
+// `octaclay-cli stroke` makes the limb. Other arguments are ignored (scripts/bench passes
+// benchmark filters).
 #include "../creature_layout.h"
 #include "sculpt_session.h"
 
+#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/import/remesh.h"
 #include "octaclay/core/measure/stretch.h"
@@ -90,8 +93,18 @@ void runCase(const Case& c) {
 
 int main(int argc, char** argv) {
   int creatureSize = 1024;
-  for (int a = 1; a < argc; ++a)
+  std::vector<std::string> files;
+  for (int a = 1; a < argc; ++a) {
     if (std::strncmp(argv[a], "--creature=", 11) == 0) creatureSize = std::atoi(argv[a] + 11);
+    if (std::strncmp(argv[a], "--file=", 7) == 0) files.emplace_back(argv[a] + 7);
+  }
+  if (!files.empty()) {
+    std::printf("| case | operation | changed | longest ÷ median | least fair share | RMS moved | "
+                "Hausdorff moved | ms | note |\n|---|---|---|---|---|---|---|---|---|\n");
+    for (const std::string& f : files)
+      runCase({f, core::readDocument(f), limbShare});
+    return 0;
+  }
   gpu::GlContext context = gpu::GlContext::createHeadless();
   gpu::BrushCatalog catalog;
   catalog.scan({std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/brushes"});

@@ -2,6 +2,7 @@
 
 #include "detail/aabb_tree.h"
 #include "detail/parallel_rows.h"
+#include "import/spherical_image.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -215,8 +216,9 @@ RemeshResult remeshDocument(const Document& document, const RemeshOptions& optio
     throw Error(ErrorKind::InvalidInput, "the surface's mesh lost vertices in validation");
   SphericalMap map;
   try {
-    map = parameterizeOnSphere(validated.mesh,
-                               [&](float f) { return !progress || progress(0.8f * f); });
+    map = detail::parameterizeImageOnSphere(document.positions, validated.mesh, [&](float f) {
+      return !progress || progress(0.8f * f);
+    });
   } catch (const Error& e) {
     if (e.kind() == ErrorKind::Cancelled) throw cancelled();
     out.document = document;

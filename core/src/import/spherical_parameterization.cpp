@@ -8,7 +8,9 @@
 #include "import/spherical_stages.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <numeric>
 #include <string>
 
@@ -17,6 +19,7 @@ namespace octaclay::core {
 namespace {
 
 using detail::Adjacency;
+using detail::adjacency;
 using detail::balance;
 using detail::conformalizedFlow;
 using detail::equalizeAreas;
@@ -97,23 +100,6 @@ CompactMesh compact(const TriangleMesh& mesh) {
   return out;
 }
 
-Adjacency adjacency(int n, const std::vector<Tri>& triangles) {
-  // On a closed manifold each directed edge (a → b) appears once; its start vertex lists b.
-  Adjacency a;
-  a.start.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (const Tri& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      ++a.start[static_cast<std::size_t>(t[k]) + 1];
-  for (int v = 0; v < n; ++v)
-    a.start[v + 1] += a.start[v];
-  a.adj.resize(static_cast<std::size_t>(a.start[n]));
-  std::vector<int> fill(a.start.begin(), a.start.end() - 1);
-  for (const Tri& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      a.adj[fill[t[k]]++] = t[(k + 1) % 3];
-  return a;
-}
-
 // The whole-mesh pipeline: conformalized flow, untangling, Möbius balancing, area
 // equalization, stretch relaxation. Good on small or smooth meshes; the coarse-to-fine path
 // uses it for its base. `progress` may be empty.
@@ -157,7 +143,22 @@ SphericalMap parameterizeOnSphere(const TriangleMesh& mesh,
   // (it wins on some smooth meshes) both run and the lower L2 stretch without flips is kept.
   const bool coarseToFine = options.baseVertices > 0 && n > 2 * options.baseVertices;
   const bool direct = !coarseToFine || n <= options.compareBelowVertices;
-  const double split = coarseToFine && direct ? 0.5 : 1.0;
+  // Where both run they run at once, the whole-mesh map on a worker thread (it reads the mesh
+  // only): on two cores the pair takes as long as the slower. The worker reports no progress
+  // (progress is called on the caller's thread); it stops when the caller's path ends early.
+  std::atomic<bool> stop{false};
+  std::future<Points> other;
+  const struct StopGuard {
+    std::atomic<bool>& stop;
+    ~StopGuard() { stop = true; } // before `other`'s destructor waits for the worker
+  } guard{stop};
+  if (coarseToFine && direct)
+    other = std::async(std::launch::async, [&] {
+      Points t = mapDirectly(input.x, input.triangles, rings, options,
+                             [&](float) { return !stop.load(); });
+      untangle(t, input.triangles, rings);
+      return t;
+    });
   Points s;
   if (coarseToFine) {
     detail::CoarseToFineOptions coarse;
@@ -167,25 +168,19 @@ SphericalMap parameterizeOnSphere(const TriangleMesh& mesh,
                          {});
     };
     s = detail::mapCoarseToFine(input.x, input.triangles, coarse, mapBase,
-                                [&](double f) { report(progress, 0.9 * split * f); });
+                                [&](double f) { report(progress, 0.9 * f); });
     if (options.relaxSweeps > 0)
-      relaxStretch(s, input.x, input.triangles, rings, options.relaxSweeps, progress, 0.9 * split,
-                   split);
+      relaxStretch(s, input.x, input.triangles, rings, options.relaxSweeps, progress, 0.9, 1.0);
     untangle(s, input.triangles, rings);
   }
-  if (direct) {
-    const std::function<bool(float)> scaled = [&](float f) {
-      return !progress || progress(static_cast<float>(split + (1 - split) * f));
-    };
-    Points other = mapDirectly(input.x, input.triangles, rings, options, scaled);
-    untangle(other, input.triangles, rings);
-    if (!coarseToFine) {
-      s = std::move(other);
-    } else {
-      const StretchSummary a = stretch(s, input.x, input.triangles);
-      const StretchSummary b = stretch(other, input.x, input.triangles);
-      if (b.flipped < a.flipped || (b.flipped == a.flipped && b.l2 < a.l2)) s = std::move(other);
-    }
+  if (direct && !coarseToFine) {
+    s = mapDirectly(input.x, input.triangles, rings, options, progress);
+    untangle(s, input.triangles, rings);
+  } else if (direct) {
+    Points t = other.get();
+    const StretchSummary a = stretch(s, input.x, input.triangles);
+    const StretchSummary b = stretch(t, input.x, input.triangles);
+    if (b.flipped < a.flipped || (b.flipped == a.flipped && b.l2 < a.l2)) s = std::move(t);
   }
   // Small meshes, where time is cheap, get many more flip-safe descent sweeps on the summed
   // squares of the per-triangle L2 stretch, which weighs the most squeezed triangles (the

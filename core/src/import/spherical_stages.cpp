@@ -313,12 +313,32 @@ void equalizeAreas(Points& s, const Points& x, const std::vector<Tri>& triangles
   }
 }
 
-// Sander et al.'s local optimization: each vertex in turn moves on the sphere down the
-// (finite-difference) gradient of its one-ring's L2 stretch, Σ A'·(a + c)/2, with a halving
-// line search. The energy is infinite for a flipped triangle, so no move flips one.
-void relaxStretch(Points& s, const Points& x, const std::vector<Tri>& triangles,
-                  const Adjacency& rings, int sweeps, const std::function<bool(float)>& progress,
-                  double progressBegin, double progressEnd) {
+Adjacency adjacency(int n, const std::vector<Tri>& triangles) {
+  // On a closed manifold each directed edge (a → b) appears once; its start vertex lists b.
+  Adjacency a;
+  a.start.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      ++a.start[static_cast<std::size_t>(t[k]) + 1];
+  for (int v = 0; v < n; ++v)
+    a.start[v + 1] += a.start[v];
+  a.adj.resize(static_cast<std::size_t>(a.start[n]));
+  std::vector<int> fill(a.start.begin(), a.start.end() - 1);
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      a.adj[fill[t[k]]++] = t[(k + 1) % 3];
+  return a;
+}
+
+namespace {
+
+// relaxStretch and relaxStretchWhereMoving: with `adaptive`, after the first sweep only the
+// vertices that moved by at least 1 % of their shortest ring edge, and their neighbours, are
+// visited again, and the sweeps stop when none did.
+void relaxStretchSweeps(Points& s, const Points& x, const std::vector<Tri>& triangles,
+                        const Adjacency& rings, int sweeps, bool adaptive,
+                        const std::function<bool(float)>& progress, double progressBegin,
+                        double progressEnd) {
   const int n = static_cast<int>(s.size());
   // Triangles around each vertex, in compressed rows like the rings.
   std::vector<int> start(static_cast<std::size_t>(n) + 1, 0), around(triangles.size() * 3);
@@ -349,36 +369,69 @@ void relaxStretch(Points& s, const Points& x, const std::vector<Tri>& triangles,
     s[v] = saved;
     return e;
   };
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    report(progress, progressBegin + (progressEnd - progressBegin) * sweep / sweeps);
-    for (int v = 0; v < n; ++v) {
-      const Vec3d p = s[v];
-      double shortest = std::numeric_limits<double>::infinity();
-      for (int k = rings.start[v]; k < rings.start[v + 1]; ++k)
-        shortest = std::min(shortest, (s[rings.adj[k]] - p).norm());
-      if (!(shortest > 0)) continue;
-      const Vec3d e1 =
-          (std::abs(p.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY()).cross(p).normalized();
-      const Vec3d e2 = p.cross(e1);
-      const double h = 1e-3 * shortest;
-      const double e0 = ringEnergy(v, p);
-      const Vec3d gradient =
-          (ringEnergy(v, (p + h * e1).normalized()) - ringEnergy(v, (p - h * e1).normalized())) *
-              e1 +
-          (ringEnergy(v, (p + h * e2).normalized()) - ringEnergy(v, (p - h * e2).normalized())) *
-              e2;
-      const double norm = gradient.norm();
-      if (!(norm > 0) || !std::isfinite(norm)) continue;
-      const Vec3d direction = -gradient / norm;
-      for (double step = 0.5 * shortest; step > 1e-4 * shortest; step *= 0.5) {
-        const Vec3d q = (p + step * direction).normalized();
-        if (ringEnergy(v, q) < e0) {
-          s[v] = q;
-          break;
-        }
+  // One descent step of vertex v; returns the step taken over its shortest ring edge (0: none).
+  const auto move = [&](int v) {
+    const Vec3d p = s[v];
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int k = rings.start[v]; k < rings.start[v + 1]; ++k)
+      shortest = std::min(shortest, (s[rings.adj[k]] - p).norm());
+    if (!(shortest > 0)) return 0.0;
+    const Vec3d e1 =
+        (std::abs(p.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY()).cross(p).normalized();
+    const Vec3d e2 = p.cross(e1);
+    const double h = 1e-3 * shortest;
+    const double e0 = ringEnergy(v, p);
+    const Vec3d gradient =
+        (ringEnergy(v, (p + h * e1).normalized()) - ringEnergy(v, (p - h * e1).normalized())) * e1 +
+        (ringEnergy(v, (p + h * e2).normalized()) - ringEnergy(v, (p - h * e2).normalized())) * e2;
+    const double norm = gradient.norm();
+    if (!(norm > 0) || !std::isfinite(norm)) return 0.0;
+    const Vec3d direction = -gradient / norm;
+    for (double step = 0.5 * shortest; step > 1e-4 * shortest; step *= 0.5) {
+      const Vec3d q = (p + step * direction).normalized();
+      if (ringEnergy(v, q) < e0) {
+        s[v] = q;
+        return step / shortest;
       }
     }
+    return 0.0;
+  };
+  constexpr double kMovedEnough = 0.01;
+  std::vector<int> visit(static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v)
+    visit[v] = v;
+  std::vector<char> next(adaptive ? static_cast<std::size_t>(n) : 0, 0);
+  for (int sweep = 0; sweep < sweeps && !visit.empty(); ++sweep) {
+    report(progress, progressBegin + (progressEnd - progressBegin) * sweep / sweeps);
+    for (int v : visit)
+      if (const double moved = move(v); adaptive && moved >= kMovedEnough) {
+        next[v] = 1;
+        for (int k = rings.start[v]; k < rings.start[v + 1]; ++k)
+          next[rings.adj[k]] = 1;
+      }
+    if (!adaptive) continue;
+    visit.clear();
+    for (int v = 0; v < n; ++v)
+      if (next[v]) visit.push_back(v), next[v] = 0;
   }
+}
+
+} // namespace
+
+// Sander et al.'s local optimization: each vertex in turn moves on the sphere down the
+// (finite-difference) gradient of its one-ring's L2 stretch, Σ A'·(a + c)/2, with a halving
+// line search. The energy is infinite for a flipped triangle, so no move flips one.
+void relaxStretch(Points& s, const Points& x, const std::vector<Tri>& triangles,
+                  const Adjacency& rings, int sweeps, const std::function<bool(float)>& progress,
+                  double progressBegin, double progressEnd) {
+  relaxStretchSweeps(s, x, triangles, rings, sweeps, false, progress, progressBegin, progressEnd);
+}
+
+void relaxStretchWhereMoving(Points& s, const Points& x, const std::vector<Tri>& triangles,
+                             const Adjacency& rings, int maxSweeps,
+                             const std::function<bool(float)>& progress, double progressBegin,
+                             double progressEnd) {
+  relaxStretchSweeps(s, x, triangles, rings, maxSweeps, true, progress, progressBegin, progressEnd);
 }
 
 } // namespace octaclay::core::detail

@@ -20,6 +20,9 @@ struct Adjacency {
   std::vector<int> start, adj;
 };
 
+// The one-rings of a closed manifold mesh of n vertices.
+Adjacency adjacency(int n, const std::vector<Tri>& triangles);
+
 // Hands `progress` the fraction done; throws Cancelled when it asks to stop.
 inline void report(const std::function<bool(float)>& progress, double fraction) {
   if (progress && !progress(static_cast<float>(std::clamp(fraction, 0.0, 1.0)))) throw Cancelled();
@@ -63,5 +66,14 @@ void equalizeAreas(Points& s, const Points& x, const std::vector<Tri>& triangles
 void relaxStretch(Points& s, const Points& x, const std::vector<Tri>& triangles,
                   const Adjacency& rings, int sweeps, const std::function<bool(float)>& progress,
                   double progressBegin, double progressEnd);
+
+// relaxStretch that visits again only where it is still moving: after the first sweep, the
+// vertices that moved by at least 1 % of their shortest ring edge and their neighbours; it
+// stops when none did or after maxSweeps. For a map good almost everywhere (a coarse map
+// refined), the work goes where the stretch is.
+void relaxStretchWhereMoving(Points& s, const Points& x, const std::vector<Tri>& triangles,
+                             const Adjacency& rings, int maxSweeps,
+                             const std::function<bool(float)>& progress, double progressBegin,
+                             double progressEnd);
 
 } // namespace octaclay::core::detail

@@ -65,7 +65,8 @@ inline double ringStretchEnergy(const Points& s, std::span<const RingFace> ring,
     if (power != 1) {
       const double area = 0.5 * (f.qa - f.qv).cross(f.qb - f.qv).norm();
       if (!(area > 0)) continue;
-      const double scale = std::pow(e / area, power - 1);
+      // pow(m, 1) is m exactly: the common power 2 without a call to pow.
+      const double scale = power == 2 ? e / area : std::pow(e / area, power - 1);
       e *= scale;
       g *= power * scale;
     }

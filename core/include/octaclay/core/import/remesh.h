@@ -49,7 +49,10 @@ struct RemeshResult {
 
 /// Mesh ▸ Remesh and `octaclay-cli remesh`: a new, even sampling of the document's surface.
 /// The surface (extractMesh) is parameterized over the sphere as `import` does
-/// (validateGenus0Mesh, parameterizeOnSphere), resampled through the octahedron at the new N
+/// (validateGenus0Mesh, parameterizeOnSphere), from N = 256 on coarse to fine along the image's
+/// own grid: the grid of 128 parameterized whole, each finer level placed from the one below
+/// and relaxed where it still moves (src/import/spherical_image.h); resampled through the
+/// octahedron at the new N
 /// (locateOctahedralSamples) and every layer carried from the old surface: each new sample lies
 /// on an old triangle and takes its layers' values there, barycentrically (the closest point of
 /// the old surface is the sample itself). Identified samples get equal bits. The result is

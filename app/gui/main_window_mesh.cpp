@@ -1,0 +1,217 @@
+// The Mesh menu's whole-model operations: Even Out Samples, Remesh… and Resolution…, each run on
+// a copy of the document off the GUI thread (progress and Cancel) and applied as one undo step.
+#include "document_actions.h"
+#include "main_window.h"
+#include "mesh_size_dialog.h"
+#include "stroke_command.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/document/resize.h"
+#include "octaclay/core/import/remesh.h"
+#include "octaclay/core/relax/relax.h"
+
+#include <QAction>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <memory>
+#include <stdexcept>
+#include <tuple>
+
+namespace octaclay::app {
+namespace {
+
+QString percentOf(double fraction) {
+  return QStringLiteral("%1 %").arg(100 * fraction, 0, 'g', 2);
+}
+
+} // namespace
+
+std::optional<MainWindow::MeshOutcome>
+MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
+  BackgroundTaskRunner& runner = documents_->runner();
+  // On the GPU (GL started), not just pending: the result is applied there.
+  if (!viewport_->glReady() || !viewport_->hasDocument() || viewport_->stroking() || runner.busy())
+    return std::nullopt;
+  if (!control) control = std::make_shared<TaskControl>();
+  // The copy is taken here, on the GUI thread; the worker never touches the viewport.
+  auto source = std::make_shared<const core::Document>(viewport_->document());
+  auto outcome = std::make_shared<MeshOutcome>();
+  // What tells that the model changed while the task ran (input reaches the viewport in the
+  // moment before the progress dialog appears): applying the result would undo that change.
+  const auto mark = [this] {
+    return std::tuple(viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(),
+                      undoStack_->count(),
+                      viewport_->hasDocument() ? viewport_->document().size() : 0);
+  };
+  const auto before = mark();
+  // The menu item says how far the task is (the progress dialog appears after 100 ms).
+  QAction* item = action(task.action);
+  const QString itemText = item ? item->text() : QString();
+  QTimer itemProgress;
+  if (item) {
+    item->setEnabled(false);
+    const auto show = [item, control, verb = task.verb] {
+      item->setText(tr("%1… %2 %").arg(verb).arg(qRound(100 * control->fraction.load())));
+    };
+    show();
+    connect(&itemProgress, &QTimer::timeout, item, show);
+    itemProgress.start(100);
+  }
+  const auto work = task.work;
+  QString error = runner.run(
+      task.progressLabel, [source, outcome, control, work] { *outcome = work(*source, *control); },
+      control);
+  itemProgress.stop();
+  if (item) item->setText(itemText);
+  updateMeshActions();
+  if (control->cancel) {
+    statusBar()->showMessage(task.cancelled, 8000);
+    return std::nullopt;
+  }
+  if (error.isEmpty() && mark() != before) {
+    statusBar()->showMessage(
+        tr("The model changed while %1; nothing was applied").arg(task.verb.toLower()), 8000);
+    return std::nullopt;
+  }
+  if (!error.isEmpty()) {
+    showMeshError(task.failure, error);
+    return std::nullopt;
+  }
+  if (!outcome->changed) {
+    statusBar()->showMessage(tr("%1 left the model unchanged: %2")
+                                 .arg(task.name, QString::fromStdString(outcome->reason)),
+                             15000);
+    return std::nullopt;
+  }
+  return std::move(*outcome);
+}
+
+void MainWindow::showMeshError(const QString& failure, const QString& error) {
+  const QString message = tr("%1: %2").arg(failure, error);
+  statusBar()->showMessage(message, 15000);
+  auto* box =
+      new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open(); // window-modal, does not block the caller
+}
+
+bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
+  MeshTask task;
+  task.action = QStringLiteral("actionEvenOutSamples");
+  task.name = tr("Even Out");
+  task.verb = tr("Evening out");
+  task.progressLabel = tr("Evening out the samples…");
+  task.cancelled = tr("Even out cancelled");
+  task.failure = tr("Could not even out the samples");
+  task.work = [](const core::Document& source, TaskControl& job) {
+    // core::evenOut checks its own result: the document comes back unchanged, with the
+    // reason, rather than moved beyond its tolerance or more stretched.
+    core::EvenOutResult r = core::evenOut(source, {}, {}, [&job](float f) {
+      job.fraction = f;
+      return !job.cancel.load();
+    });
+    return MeshOutcome{std::move(r.document), r.changed, std::move(r.reason)};
+  };
+  std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
+  if (!outcome) return false;
+  bool recorded = false;
+  try {
+    recorded = viewport_->applyChange(outcome->document, "Even Out Samples");
+  } catch (const std::exception& e) {
+    showMeshError(task.failure, QString::fromUtf8(e.what()));
+    return false;
+  }
+  if (!recorded) {
+    statusBar()->showMessage(tr("The samples are already even"), 8000);
+    return false;
+  }
+  undoStack_->push(new StrokeCommand(viewport_, tr("Even Out Samples")));
+  statusBar()->showMessage(tr("Samples evened out"), 5000);
+  return true;
+}
+
+bool MainWindow::remesh(int n, std::shared_ptr<TaskControl> control) {
+  if (!viewport_->hasDocument()) return false;
+  const int current = viewport_->document().size();
+  if (n == 0) n = current;
+  MeshTask task;
+  task.action = QStringLiteral("actionRemesh");
+  task.name = tr("Remesh");
+  task.verb = tr("Remeshing");
+  task.progressLabel = tr("Remeshing the surface at N = %1 (every layer carried)…").arg(n);
+  task.cancelled = tr("Remesh cancelled; the model is unchanged");
+  task.failure = tr("Could not remesh");
+  auto summary = std::make_shared<QString>();
+  task.work = [n, summary](const core::Document& source, TaskControl& job) {
+    core::RemeshResult r = core::remeshDocument(source, {.size = n}, [&job](float f) {
+      job.fraction = f;
+      return !job.cancel.load();
+    });
+    *summary = tr("longest edge %1× → %2× the median, surface moved %3 (RMS)")
+                   .arg(r.before.longestOverMedian, 0, 'f', 1)
+                   .arg(r.after.longestOverMedian, 0, 'f', 1)
+                   .arg(percentOf(r.moved.rms));
+    return MeshOutcome{std::move(r.document), r.changed, std::move(r.reason)};
+  };
+  std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
+  if (!outcome) return false;
+  if (!documents_->replaceDocument(std::move(outcome->document),
+                                   n == current ? tr("Remesh") : tr("Remesh at N = %1").arg(n)))
+    return false;
+  statusBar()->showMessage(tr("Remeshed at N = %1: %2").arg(n).arg(*summary), 15000);
+  return true;
+}
+
+bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
+  if (!viewport_->hasDocument()) return false;
+  const int current = viewport_->document().size();
+  if (n == current) {
+    statusBar()->showMessage(tr("The model is already N = %1: nothing to resample").arg(n), 8000);
+    return false;
+  }
+  MeshTask task;
+  task.action = QStringLiteral("actionResolution");
+  task.name = tr("Resolution");
+  task.verb = tr("Resampling");
+  task.progressLabel = tr("Resampling every layer from N = %1 to N = %2…").arg(current).arg(n);
+  task.cancelled = tr("Resolution change cancelled; the model is unchanged");
+  task.failure = tr("Could not change the resolution");
+  task.work = [n](const core::Document& source, TaskControl& job) {
+    // One pass with no progress of its own: Cancel takes effect when it ends (the result is
+    // dropped), which at most a few seconds at N = 8192.
+    if (job.cancel) throw std::runtime_error("cancelled");
+    core::Document resized = core::resizeDocument(source, n);
+    job.fraction = 1.0f;
+    return MeshOutcome{std::move(resized), true, {}};
+  };
+  std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
+  if (!outcome) return false;
+  if (!documents_->replaceDocument(std::move(outcome->document),
+                                   tr("Resolution %1 → %2").arg(current).arg(n)))
+    return false;
+  statusBar()->showMessage(tr("Resampled from N = %1 to N = %2").arg(current).arg(n), 8000);
+  return true;
+}
+
+void MainWindow::openMeshSizeDialog(bool remeshing) {
+  if (!viewport_->hasDocument()) return;
+  MeshSizeDialog dialog(remeshing ? MeshSizeDialog::Kind::Remesh : MeshSizeDialog::Kind::Resolution,
+                        viewport_->document().size(), this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  if (remeshing)
+    remesh(dialog.size());
+  else
+    changeResolution(dialog.size());
+}
+
+void MainWindow::updateMeshActions() {
+  const bool ready = viewport_->glReady() && viewport_->hasDocument() && !viewport_->stroking() &&
+                     !documents_->runner().busy();
+  for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
+    if (QAction* a = action(QString::fromLatin1(name))) a->setEnabled(ready);
+}
+
+} // namespace octaclay::app
