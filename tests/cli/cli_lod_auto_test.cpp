@@ -83,9 +83,8 @@ void CliLodAutoTest::sculptedSphereGetsTheImageMethod() {
   const QString sphere = file("sphere.exr"), sculpted = file("sculpted.exr");
   RUN_JSON(created, "new", "--shape", "sphere", "--size", "128", "-o", sphere, "--json");
   // Keep-detail off: its local relaxation (issue 30) most likely leaves a step in the sample
-  // spacing at its
-  // margin, which imageRoughness reads as bending (it does not tell tangential spacing from the
-  // surface's own bend), so auto picks the collapse there: a known limit of the roughness.
+  // spacing at its margin, which imageRoughness reads as bending (it does not tell tangential
+  // spacing from the surface's own bend), so auto picks the collapse there: a known limit.
   RUN_JSON(stroked, "stroke", sphere, "--brush", "push", "--path", "0.3,0.4;0.5,0.5;0.6,0.7",
            "--radius", "0.1", "--strength", "0.5", "--keep-detail", "off", "-o", sculpted,
            "--json");
