@@ -35,12 +35,6 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-void requireExtension(const std::string& path, const char* ext, const char* what) {
-  if (core::lowerExtension(path) != ext)
-    throw core::Error(core::ErrorKind::InvalidArgument,
-                      "cannot write " + path + ": " + what + " must end in " + ext);
-}
-
 std::string codecList() {
   std::string list;
   for (const core::Codec& c : core::codecs())
@@ -151,7 +145,7 @@ int runCompress(const CompressOptionsCli& opt) {
     throw core::Error(core::ErrorKind::InvalidArgument, "--quality must be a number >= 0 (" +
                                                             std::string(codec.info.id) + ": " +
                                                             std::string(codec.info.quality) + ")");
-  requireExtension(opt.output, ".ocz", "the compressed document");
+  requireOutputExtension(opt.output, {".ocz"}, "the compressed document");
   requireNotInput(opt.output, opt.input);
 
   ProgressLine progress("compress", !opt.json);
@@ -287,7 +281,7 @@ Command addDecompressCommand(CLI::App& app) {
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
   return {sub, [opt]() {
-            requireExtension(opt->output, ".exr", "the document");
+            requireOutputExtension(opt->output, {".exr"}, "the document");
             requireNotInput(opt->output, opt->input);
             const std::vector<std::uint8_t> bytes = readBytes(opt->input);
             const auto start = Clock::now();

@@ -9,6 +9,7 @@
 #include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/export/textured_export.h"
+#include "octaclay/core/file_extension.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/lod/lod.h"
 #include "octaclay/core/lod/lod_vertices.h"
@@ -18,7 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -34,24 +34,13 @@ namespace {
 enum class ExportKind { TexturedObj, Glb, Plain };
 
 ExportKind exportKindFromPath(const std::string& output) {
-  std::string ext = std::filesystem::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = core::lowerExtension(output);
   if (ext == ".obj") return ExportKind::TexturedObj;
   if (ext == ".glb") return ExportKind::Glb;
   if (core::meshFormatFromPath(output)) return ExportKind::Plain;
   throw core::Error(core::ErrorKind::InvalidArgument,
                     "cannot export to " + output +
                         ": unknown mesh format; use .obj, .glb, .ply, .stl or .off");
-}
-
-void requireNormalMapPath(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (!path.empty() && ext != ".png" && ext != ".exr")
-    throw core::Error(core::ErrorKind::InvalidArgument, "cannot write the normal map to " + path +
-                                                            ": use .png (8-bit) or .exr (float)");
 }
 
 // --normal-map: the full-resolution object-space normals over the image coordinates (they do
@@ -153,9 +142,11 @@ Command addExportCommand(CLI::App& app) {
                                 "--triangles " + std::to_string(opt->triangles) +
                                     " is too small: a closed mesh has at least 4 triangles; ask "
                                     "for more than 4");
-            requireNormalMapPath(opt->normalMap);
-            if (!opt->normalMap.empty())
+            if (!opt->normalMap.empty()) {
+              requireOutputExtension(opt->normalMap, {".png", ".exr"},
+                                     "the normal map (8-bit .png or float .exr)");
               requireNotInput(opt->normalMap, opt->input, "--normal-map");
+            }
             requireNotInput(opt->output, opt->input);
             core::Document document =
                 core::readDocument(opt->input, {.layers = kind != ExportKind::Plain && !collapse});

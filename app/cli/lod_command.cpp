@@ -132,13 +132,12 @@ Command addLodCommand(CLI::App& app) {
         if (!space)
           throw Error(ErrorKind::InvalidArgument,
                       "unknown --normal-space '" + opt->space + "': use object or tangent");
-        if (!opt->normalMap.empty()) requireNotInput(opt->normalMap, opt->input, "--normal-map");
+        if (!opt->normalMap.empty()) {
+          requireOutputExtension(opt->normalMap, {".png", ".exr"},
+                                 "the normal map (8-bit .png or float .exr)");
+          requireNotInput(opt->normalMap, opt->input, "--normal-map");
+        }
         requireNotInput(opt->output, opt->input);
-        if (!opt->normalMap.empty() && core::lowerExtension(opt->normalMap) != ".png" &&
-            core::lowerExtension(opt->normalMap) != ".exr")
-          throw Error(ErrorKind::InvalidArgument, "cannot write the normal map to " +
-                                                      opt->normalMap +
-                                                      ": use .png (8-bit) or .exr (float)");
         const bool hasSize = sub->count("--size") > 0, hasTriangles = opt->triangles != 0;
         if (!hasSize && !hasTriangles)
           throw Error(ErrorKind::InvalidArgument,

@@ -233,11 +233,9 @@ struct StrokeSession::State {
   // Walks the straight segment from the previous point to b (image coordinates, in samples),
   // dabbing each time the distance since the last dab reaches spacing (object units). The
   // distance is exact on the start surface's triangles; the remainder carries to the next walk.
-  void walkTo(std::array<double, 2> b, double spacing, float radius, float strength,
-              float pressure) {
+  void walkTo(std::array<double, 2> b, float radius, float strength, float pressure) {
     const std::array<double, 2> a = *previous;
-    // A radius far below a sample would make dabs without end: at most 1e4 per diagonal.
-    spacing = std::max(spacing, 1e-4 * diagonal);
+    const double spacing = spacingFor(radius);
     // The spacing shrank since the last walk (pen pressure on the radius): a dab is due now.
     travelled = std::min(travelled, spacing);
     const auto at = [&](double t) {
@@ -267,6 +265,16 @@ struct StrokeSession::State {
     }
   }
 
+  // Between dabs at this radius, object units: the brush's spacing, and at most 1e4 dabs per
+  // diagonal (a radius far below a sample would otherwise make dabs without end).
+  double spacingFor(float radius) const {
+    return std::max(static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
+                    1e-4 * diagonal);
+  }
+
+  // A dab and its mirror images, one per symmetry plane combination.
+  int imagesPerDab() const { return 1 << std::popcount(settings.symmetry & 7u); }
+
   // The length of the straight walk a → b (image coordinates, in samples) on the surface as
   // the stroke began.
   double walkLength(std::array<double, 2> a, std::array<double, 2> b) const {
@@ -284,8 +292,7 @@ struct StrokeSession::State {
   // would take the stroke past kMaxStrokeDabs: a drag to infinity or a radius far below a
   // sample would otherwise dab without end.
   void requireDabBudget(double length, double spacing) const {
-    const double images = std::pow(2.0, std::popcount(settings.symmetry & 7u));
-    const double expected = dabs + images * std::floor(length / spacing);
+    const double expected = dabs + imagesPerDab() * std::floor(length / spacing);
     if (expected <= kMaxStrokeDabs) return;
     badSetting("the stroke would make about " + shortNumber(expected) + " dabs (a path " +
                shortNumber(length / diagonal) + " diagonals long at a spacing of " +
@@ -417,8 +424,7 @@ struct StrokeSession::State {
       if (!previous || xy != *previous) dabAt(xy, radius, strength, pressure);
       previous = xy;
     } else {
-      walkTo(xy, static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
-             radius, strength, pressure);
+      walkTo(xy, radius, strength, pressure);
     }
     engineMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -470,9 +476,7 @@ struct StrokeSession::State {
     if (brush.stroke == StrokeKind::Anchored) {
       dabAt(xy, radius, strength, pressure, target);
     } else {
-      const double spacing =
-          std::max(static_cast<double>(dabSpacing(brush, settings.spacing)) * std::abs(radius),
-                   1e-4 * diagonal);
+      const double spacing = spacingFor(radius);
       const core::Vec3f from = lastDrag;
       const double length = core::length(target - from);
       travelled = std::min(travelled, spacing);
@@ -556,9 +560,7 @@ int StrokeSession::expectDabs(const std::vector<std::array<float, 2>>& path,
   checkFinite("the radius", radius);
   for (const core::Vec3f& p : dragPoints)
     st.requireDragReach(p);
-  const double spacing =
-      std::max(static_cast<double>(dabSpacing(st.brush, st.settings.spacing)) * std::abs(radius),
-               1e-4 * st.diagonal);
+  const double spacing = st.spacingFor(radius);
   const double n = st.document.size();
   const auto xy = [n](const std::array<float, 2>& uv) {
     return std::array<double, 2>{uv[0] * n, uv[1] * n};
@@ -575,11 +577,10 @@ int StrokeSession::expectDabs(const std::vector<std::array<float, 2>>& path,
       from = p;
     }
   }
-  const int first =
-      path.empty() ? 0 : static_cast<int>(std::pow(2.0, std::popcount(st.settings.symmetry & 7u)));
   st.requireDabBudget(length, spacing);
-  const double images = std::pow(2.0, std::popcount(st.settings.symmetry & 7u));
-  return first + static_cast<int>(images * std::floor(length / spacing));
+  // The first point's dab, then one every spacing along the way.
+  const int first = path.empty() ? 0 : 1;
+  return st.imagesPerDab() * (first + static_cast<int>(std::floor(length / spacing)));
 }
 
 void StrokeSession::observeDabs(std::function<void(int)> observer) {

@@ -3,6 +3,7 @@
 // evenly again as one undo step, a cancelled even-out changes nothing, and the Brushes dock's
 // Keep detail box reaches the sculpting session.
 #include "brush_panel.h"
+#include "limb_document.h"
 #include "main_window.h"
 #include "test_window.h"
 #include "viewport_widget.h"
@@ -28,25 +29,10 @@
 
 using namespace octaclay;
 using app::MainWindow;
+using testing::bitsOf;
+using testing::limbDocument;
 
 namespace {
-
-// A unit sphere with a thin limb 3 long pulled out of the pole that sample (N/2, N/2) sits on
-// (+z): few samples spread over a long spike, as a far push leaves them.
-core::Document limbDocument(int n) {
-  core::GeometryImage image = core::makeBaseShape(core::BaseShape::Sphere, n);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      core::Vec4f& p = image.at(i, j);
-      const float angle = std::acos(std::clamp(p.z / core::length(p.xyz()), -1.0f, 1.0f));
-      const float t = 1.0f - angle / 0.3f;
-      if (t <= 0) continue;
-      p.z += 3.0f * t * t * (3 - 2 * t);
-      const float pinch = 1.0f - 0.7f * std::min(1.0f, 4 * t);
-      p.x *= pinch, p.y *= pinch;
-    }
-  return core::makeDocument(std::move(image));
-}
 
 // The longest grid edge (to the right and down neighbours of the (N+1)² image) over the median.
 double longestOverMedian(const core::GeometryImage& image) {
@@ -62,24 +48,6 @@ double longestOverMedian(const core::GeometryImage& image) {
   const double longest = *std::max_element(edges.begin(), edges.end());
   std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
   return longest / edges[edges.size() / 2];
-}
-
-// Every texel of every layer, as bytes: "unchanged" means bit for bit.
-std::vector<unsigned char> bitsOf(const core::Document& d) {
-  std::vector<unsigned char> out;
-  const auto append = [&out](const void* data, std::size_t bytes) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    out.insert(out.end(), b, b + bytes);
-  };
-  const int side = d.size() + 1;
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i)
-      append(&d.positions.at(i, j), sizeof(core::Vec4f));
-  for (const core::Layer* layer : {&d.diffuse, &d.feature, &d.mask}) {
-    append(layer->fill.data(), sizeof(layer->fill));
-    append(layer->texels.data(), layer->texels.size() * sizeof(float));
-  }
-  return out;
 }
 
 class EvenOutRenderTest : public QObject {

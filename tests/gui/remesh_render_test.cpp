@@ -3,6 +3,7 @@
 // as one undo step that brings the original back bit for bit, a run twice by accident is one
 // Undo away, a cancelled run changes neither the model nor its history, the resolution goes up
 // and down as one step, and the dialogs say what they will do.
+#include "limb_document.h"
 #include "main_window.h"
 #include "mesh_size_dialog.h"
 #include "test_window.h"
@@ -33,25 +34,15 @@
 using namespace octaclay;
 using app::MainWindow;
 using app::MeshSizeDialog;
+using testing::bitsOf;
 
 namespace {
 
 // A unit sphere with a thin limb 3 long pulled out of the +z pole (few samples spread over a
 // long spike, as a far push leaves them) and a red cap painted on its -x side (away from the
 // limb and off the image's centre).
-core::Document limbDocument(int n) {
-  core::GeometryImage image = core::makeBaseShape(core::BaseShape::Sphere, n);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      core::Vec4f& p = image.at(i, j);
-      const float angle = std::acos(std::clamp(p.z / core::length(p.xyz()), -1.0f, 1.0f));
-      const float t = 1.0f - angle / 0.3f;
-      if (t <= 0) continue;
-      p.z += 3.0f * t * t * (3 - 2 * t);
-      const float pinch = 1.0f - 0.7f * std::min(1.0f, 4 * t);
-      p.x *= pinch, p.y *= pinch;
-    }
-  core::Document d = core::makeDocument(std::move(image));
+core::Document paintedLimb(int n) {
+  core::Document d = testing::limbDocument(n);
   const std::size_t side = static_cast<std::size_t>(n + 1);
   d.diffuse.texels.resize(side * side * 4);
   for (std::size_t t = 0; t < side * side; ++t) {
@@ -61,24 +52,6 @@ core::Document limbDocument(int n) {
     std::copy(c.begin(), c.end(), d.diffuse.texels.begin() + std::ptrdiff_t(t * 4));
   }
   return d;
-}
-
-// Every texel of every layer, as bytes: "unchanged" means bit for bit.
-std::vector<unsigned char> bitsOf(const core::Document& d) {
-  std::vector<unsigned char> out;
-  const auto append = [&out](const void* data, std::size_t bytes) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    out.insert(out.end(), b, b + bytes);
-  };
-  const int side = d.size() + 1; // a different N gives a different length
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i)
-      append(&d.positions.at(i, j), sizeof(core::Vec4f));
-  for (const core::Layer* layer : {&d.diffuse, &d.feature, &d.mask}) {
-    append(layer->fill.data(), sizeof(layer->fill));
-    append(layer->texels.data(), layer->texels.size() * sizeof(float));
-  }
-  return out;
 }
 
 // Share of the samples with |P| > 1.6 (the limb) over the share of the area there: 1 when the
@@ -132,7 +105,7 @@ void RemeshRenderTest::initTestCase() {
   QCoreApplication::setOrganizationName("OctaclayTest");
   QCoreApplication::setApplicationName("remesh_render_test");
   qputenv("XDG_DATA_HOME", dir_.filePath("data").toUtf8());
-  core::writeDocument(limbDocument(64), dir_.filePath("limb.exr").toStdString());
+  core::writeDocument(paintedLimb(64), dir_.filePath("limb.exr").toStdString());
 }
 
 void RemeshRenderTest::init() {

@@ -5,10 +5,7 @@
 namespace octaclay::core::detail {
 
 int unitScaleExponent(const GeometryImage& image) {
-  BoundingBox box;
-  for (const Vec4f& t : image.texels())
-    box.extend(t.xyz());
-  return unitScaleExponent(static_cast<double>(box.diagonal()));
+  return unitScaleExponent(static_cast<double>(boundingBox(image).diagonal()));
 }
 
 int unitScaleExponent(double diagonal) {

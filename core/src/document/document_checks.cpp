@@ -29,12 +29,7 @@ std::optional<std::string> positionsProblem(const GeometryImage& positions) {
 }
 
 std::optional<std::string> sizeProblem(const GeometryImage& positions) {
-  const int side = positions.size() + 1;
-  BoundingBox box;
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i)
-      box.extend(positions.at(i, j).xyz());
-  return sizeProblem(box);
+  return sizeProblem(boundingBox(positions));
 }
 
 std::optional<std::string> sizeProblem(const BoundingBox& box) {

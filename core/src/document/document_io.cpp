@@ -118,6 +118,17 @@ char* shifted(void* base, const Imath::Box2i& window, std::size_t xStride, std::
          static_cast<std::ptrdiff_t>(window.min.y) * yStride;
 }
 
+// The position image's P.X, P.Y, P.Z as float slices of frame (the reader's and the writer's).
+void insertPositionSlices(Imf::FrameBuffer& frame, const GeometryImage& positions,
+                          const Imath::Box2i& window) {
+  const std::size_t xStride = sizeof(Vec4f), yStride = xStride * (positions.size() + 1);
+  auto* base = const_cast<float*>(&positions.texels()[0].x);
+  for (int c = 0; c < 3; ++c)
+    frame.insert(
+        kPositionChannels[c],
+        Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride, yStride));
+}
+
 // OpenEXR converts pixel types when reading but not when writing, so a layer is handed over as
 // half, a band of rows at a time: one row of its fill value while uniform (a zero y stride repeats
 // it down the band; OpenEXR loops forever on a zero x stride), else the band's texels converted.
@@ -399,8 +410,6 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
     document.positions = GeometryImage(header.size);
     const int side = header.size + 1;
     const Imath::Box2i window = file.header().dataWindow();
-    const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
-    float* base = &document.positions.texels()[0].x;
 
     std::vector<LayerReader> layers;
     layers.reserve(3);
@@ -414,10 +423,7 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
       for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
         const int rowEnd = std::min(side, rowBegin + kBandRows);
         Imf::FrameBuffer frame;
-        for (int c = 0; c < 3; ++c)
-          frame.insert(kPositionChannels[c],
-                       Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride,
-                                  yStride));
+        insertPositionSlices(frame, document.positions, window);
         for (LayerReader& layer : layers)
           layer.addSlices(frame, window, rowBegin, rowEnd);
         file.setFrameBuffer(frame);
@@ -462,8 +468,6 @@ void writeDocument(const Document& document, const fs::path& path,
     for (const auto& c : layer->channelNames())
       header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
   const Imath::Box2i window = header.dataWindow();
-  const std::size_t xStride = sizeof(Vec4f), yStride = xStride * side;
-  auto* base = const_cast<float*>(&document.positions.texels()[0].x);
 
   writeFileAtomically(path, [&](ByteSink& sink) {
     detail::ExrSinkStream stream(sink);
@@ -473,10 +477,7 @@ void writeDocument(const Document& document, const fs::path& path,
       for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
         const int rowEnd = std::min(side, rowBegin + kBandRows);
         Imf::FrameBuffer frame;
-        for (int c = 0; c < 3; ++c)
-          frame.insert(kPositionChannels[c],
-                       Imf::Slice(Imf::FLOAT, shifted(base + c, window, xStride, yStride), xStride,
-                                  yStride));
+        insertPositionSlices(frame, document.positions, window);
         for (std::size_t k = 0; k < layers.size(); ++k)
           addLayerWriteSlices(frame, window, *layers[k], side, rowBegin, rowEnd, halves[k]);
         file.setFrameBuffer(frame);

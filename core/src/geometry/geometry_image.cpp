@@ -7,4 +7,11 @@ GeometryImage::GeometryImage(int n) : n_(n) {
   texels_.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
 }
 
+BoundingBox boundingBox(const GeometryImage& image) {
+  BoundingBox box;
+  for (const Vec4f& t : image.texels())
+    box.extend(t.xyz());
+  return box;
+}
+
 } // namespace octaclay::core

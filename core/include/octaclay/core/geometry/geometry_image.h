@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/geometry/vec.h"
 
 #include <cstddef>
@@ -40,5 +41,8 @@ private:
   int n_ = 0;
   std::vector<Vec4f> texels_;
 };
+
+/// The bounding box of every sample's position (xyz).
+BoundingBox boundingBox(const GeometryImage& image);
 
 } // namespace octaclay::core
