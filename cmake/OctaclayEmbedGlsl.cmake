@@ -1,5 +1,5 @@
 # octaclay_embed_glsl(<target> <files...>): compiles the GLSL files into <target> as strings.
-# gpu/src/shader_sources.cpp looks them up by file name; OCTACLAY_SHADER_DIR (an environment
+# gpu/src/render/shader_sources.cpp looks them up by file name; OCTACLAY_SHADER_DIR (an environment
 # variable) makes it read the live files instead, for editing shaders without rebuilding.
 function(octaclay_embed_glsl target)
   set(entries "")

@@ -124,7 +124,7 @@ void NewcomerMessagesTest::lodFiguresAreClearedForANewDocument() {
 }
 
 void NewcomerMessagesTest::readmeNamesTheRecoveryFolder() {
-  // The modeller's names (app/gui/main.cpp) and the default data home.
+  // The modeller's names (app/gui/window/main.cpp) and the default data home.
   qunsetenv("XDG_DATA_HOME");
   QCoreApplication::setOrganizationName("Octaclay");
   QCoreApplication::setApplicationName("octaclay");

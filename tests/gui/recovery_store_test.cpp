@@ -1,4 +1,4 @@
-// Autosave and crash recovery (app/gui/recovery_store.h). A crashed session and the one that
+// Autosave and crash recovery (app/gui/window/recovery_store.h). A crashed session and the one that
 // restarts after it are simulated inside this one process by giving each store a PID of its
 // own: one that no process has (crashed) or this process's real one (running).
 

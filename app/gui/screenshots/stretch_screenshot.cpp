@@ -53,23 +53,32 @@ double longestOverMedian(const ViewportWidget& view) {
 
 } // namespace
 
-bool makeStretchScreenshot(MainWindow& window, const QString& imagePath) {
+bool makeStretchScreenshot(MainWindow& window, const QString& imagePath,
+                           StretchOperation operation) {
   ViewportWidget& view = *window.viewport();
   if (!waitForViewport(view)) return false;
+  const bool remeshing = operation == StretchOperation::Remesh;
   // Drawn at the half's size, so the camera frames what the picture shows.
   view.setFixedSize(kHalfWidth, kHalfHeight);
   settleEvents(300);
-  view.setLevelDivisor(1); // every sample: the few the limb has are what the picture is about
+  view.setLevelDivisor(1); // every sample: how they spread is what the picture is about
   window.layersPanel()->setPreview(LayersPanel::Preview::Stretch);
-  // From the side (-y, a little above and in front), the +z limb pointing right (screen right =
-  // view direction x up); zoomed as resetCamera() fits the bounding sphere in the height and the
-  // limb runs across the width.
-  frameAlong(view, {0.25f, -1.0f, 0.3f}, {-1, 0, 0}, 1.45);
+  if (remeshing) {
+    // The creature from the front right and a little above (up +y, front +z).
+    frameAlong(view, {1.0f, 0.35f, 0.75f}, {0, 1, 0}, 1.1);
+  } else {
+    // From the side (-y, a little above and in front), the +z limb pointing right (screen
+    // right = view direction x up); zoomed as resetCamera() fits the bounding sphere in the
+    // height and the limb runs across the width.
+    frameAlong(view, {0.25f, -1.0f, 0.3f}, {-1, 0, 0}, 1.45);
+  }
   const double before = longestOverMedian(view);
   const QImage beforeImage = grabHalf(view);
 
-  if (!window.evenOutSamples()) {
-    std::fprintf(stderr, "octaclay: Even Out Samples made no change: %s\n",
+  const QString name = remeshing ? QStringLiteral("Mesh \u25B8 Remesh")
+                                 : QStringLiteral("Mesh \u25B8 Even Out Samples");
+  if (!(remeshing ? window.remesh() : window.evenOutSamples())) {
+    std::fprintf(stderr, "octaclay: %s made no change: %s\n", qPrintable(name),
                  qPrintable(window.lastError()));
     return false;
   }
@@ -85,11 +94,10 @@ bool makeStretchScreenshot(MainWindow& window, const QString& imagePath) {
   painter.fillRect(kHalfWidth - 1, 0, 2, kHalfHeight, Qt::white);
   drawCaption(painter, 0,
               QStringLiteral("before: longest edge %1x the median").arg(before, 0, 'f', 0));
-  drawCaption(painter, kHalfWidth,
-              QStringLiteral("after Mesh \u25B8 Even Out Samples: %1x").arg(after, 0, 'f', 0));
+  drawCaption(painter, kHalfWidth, QStringLiteral("after %1: %2x").arg(name).arg(after, 0, 'f', 0));
   painter.end();
-  std::printf("longest edge over the median: %.1f before, %.1f after Even Out Samples\n", before,
-              after);
+  std::printf("longest edge over the median: %.1f before, %.1f after %s\n", before, after,
+              qPrintable(name));
   return saveImagePng(out, imagePath);
 }
 

@@ -35,6 +35,11 @@ int main(int argc, char** argv) {
       "Show the document (a pulled limb) with Preview > Stretch before and after Mesh > Even Out "
       "Samples, save both side by side as an image and quit.",
       "image.png");
+  QCommandLineOption remeshScreenshot(
+      "remesh-screenshot",
+      "Show the document (a creature) with Preview > Stretch before and after Mesh > Remesh, save "
+      "both side by side as an image and quit.",
+      "image.png");
   QCommandLineOption startupTime("startup-time",
                                  "Print the time from start to the first drawn frame, then quit.");
   QCommandLineOption modelScreenshot(
@@ -42,7 +47,8 @@ int main(int argc, char** argv) {
       "Show the document in the clay matcap from the front right with the snake-hook brush "
       "chosen, save the window as an image and quit.",
       "image.png");
-  parser.addOptions({shape, size, screenshot, stretchScreenshot, startupTime, modelScreenshot});
+  parser.addOptions(
+      {shape, size, screenshot, stretchScreenshot, remeshScreenshot, startupTime, modelScreenshot});
   parser.process(app);
 
   const auto baseShape = octaclay::core::parseBaseShape(parser.value(shape).toStdString());
@@ -66,6 +72,12 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (parser.isSet(remeshScreenshot) && args.isEmpty()) {
+    fprintf(stderr, "octaclay: --remesh-screenshot needs a document (a creature, see "
+                    "scripts/remesh-screenshot)\n");
+    return 2;
+  }
+
   octaclay::app::MainWindow window;
   window.show();
   if (args.isEmpty() || !window.openDocument(args.front())) window.newDocument(*baseShape, n, true);
@@ -85,6 +97,13 @@ int main(int argc, char** argv) {
     const QString out = parser.value(stretchScreenshot);
     QTimer::singleShot(0, &window, [&window, out] {
       const bool ok = octaclay::app::makeStretchScreenshot(window, out);
+      QCoreApplication::exit(ok ? 0 : 1);
+    });
+  } else if (parser.isSet(remeshScreenshot)) {
+    const QString out = parser.value(remeshScreenshot);
+    QTimer::singleShot(0, &window, [&window, out] {
+      const bool ok = octaclay::app::makeStretchScreenshot(window, out,
+                                                           octaclay::app::StretchOperation::Remesh);
       QCoreApplication::exit(ok ? 0 : 1);
     });
   } else if (parser.isSet(modelScreenshot)) {
