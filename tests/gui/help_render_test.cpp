@@ -336,7 +336,7 @@ void HelpRenderTest::aboutNamesEveryLibraryAndItsLicence() {
       {"Qt", "LGPL-3.0"},       {"VTK", "BSD-3-Clause"},      {"OpenEXR", "BSD-3-Clause"},
       {"OpenCV", "Apache-2.0"}, {"OpenMesh", "BSD-3-Clause"}, {"Eigen", "MPL-2.0"},
       {"tinygltf", "MIT"},      {"CLI11", "BSD-3-Clause"},    {"nlohmann-json", "MIT"},
-      {"libepoxy", "MIT"}};
+      {"libepoxy", "MIT"},      {"libpng", "libpng-2.0"}};
   for (const auto& [name, licence] : libraries)
     QVERIFY2(text.contains(QString("<td>%1</td><td>").arg(name)) &&
                  text.contains(QRegularExpression(

@@ -17,6 +17,7 @@ QString aboutText() {
       {"VTK", QString::fromLatin1(vtkVersion::GetVTKVersion()), "BSD-3-Clause"},
       {"OpenEXR", {}, "BSD-3-Clause"},
       {"OpenCV", {}, "Apache-2.0"},
+      {"libpng", {}, "libpng-2.0"},
       {"OpenMesh", {}, "BSD-3-Clause"},
       {"Eigen", {}, "MPL-2.0"},
       {"tinygltf", {}, "MIT"},

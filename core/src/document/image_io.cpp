@@ -1,28 +1,78 @@
 #include "octaclay/core/document/image_io.h"
 
+#include "detail/png_codec.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <fstream>
+#include <string>
 #include <system_error>
 #include <vector>
 
 namespace octaclay::core {
 
-RasterImage readImage(const std::filesystem::path& path, int channels) {
-  if (channels != 1 && channels != 3 && channels != 4)
-    throw Error(ErrorKind::InvalidArgument, "images are read as 1, 3 or 4 channels");
+namespace {
+
+// The most bytes an image file may have: beyond any texture or map Octaclay reads.
+constexpr std::uintmax_t kMaxImageFileBytes = std::uintmax_t(1) << 30;
+
+std::vector<std::uint8_t> readFileBytes(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(ErrorKind::Io, path.string() + ": no such file");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(ErrorKind::Io, path.string() + ": cannot read (" + ec.message() + ")");
+  if (size > kMaxImageFileBytes)
+    throw Error(ErrorKind::InvalidInput, path.string() + ": an image file of " +
+                                             std::to_string(size >> 20) +
+                                             " MiB is larger than Octaclay reads (1 GiB)");
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
+    throw Error(ErrorKind::Io, path.string() + ": cannot read");
+  return bytes;
+}
+
+// value (0–255 or 0–65535 samples as floats in [0, 1]) of pixel i in a layout of have channels
+// (1 grey, 2 grey and alpha, 3 RGB, 4 RGBA) as want channels (1, 3 or 4).
+template <typename Sample>
+RasterImage convertChannels(int width, int height, int have, const Sample& sample, int want) {
+  RasterImage image;
+  image.width = width;
+  image.height = height;
+  image.channels = want;
+  const std::size_t count = static_cast<std::size_t>(width) * height;
+  image.pixels.resize(count * want);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t in = i * have;
+    const bool colour = have >= 3;
+    const float r = sample(in), g = colour ? sample(in + 1) : r, b = colour ? sample(in + 2) : r;
+    const float a = have == 2 ? sample(in + 1) : have == 4 ? sample(in + 3) : 1.0f;
+    float* out = image.pixels.data() + i * want;
+    if (want == 1) {
+      out[0] = colour ? 0.299f * r + 0.587f * g + 0.114f * b : r; // OpenCV's and Rec. 601 grey
+      continue;
+    }
+    out[0] = r;
+    out[1] = g;
+    out[2] = b;
+    if (want == 4) out[3] = a;
+  }
+  return image;
+}
+
+// Formats other than PNG (a mesh's JPEG or TIFF texture) through OpenCV's codecs.
+RasterImage decodeWithOpenCv(const std::vector<std::uint8_t>& bytes,
+                             const std::filesystem::path& path, int channels) {
   cv::Mat raw;
   try {
-    raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+    raw = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception& e) {
     throw Error(ErrorKind::InvalidInput,
                 path.string() + ": not a readable image (" + e.what() + ")");
@@ -33,34 +83,30 @@ RasterImage readImage(const std::filesystem::path& path, int channels) {
   const double scale = raw.depth() == CV_8U ? 1.0 / 255 : raw.depth() == CV_16U ? 1.0 / 65535 : 1.0;
   cv::Mat converted;
   raw.convertTo(converted, CV_32F, scale);
-  // OpenCV keeps colour as BGR(A): reorder to RGB(A) and adapt the channel count.
-  cv::Mat out;
   const int have = converted.channels();
-  if (channels == 1 && have == 1)
-    out = converted;
-  else if (channels == 1)
-    cv::cvtColor(converted, out, have == 3 ? cv::COLOR_BGR2GRAY : cv::COLOR_BGRA2GRAY);
-  else if (channels == 3)
-    cv::cvtColor(converted, out,
-                 have == 1   ? cv::COLOR_GRAY2RGB
-                 : have == 3 ? cv::COLOR_BGR2RGB
-                             : cv::COLOR_BGRA2RGB);
-  else
-    cv::cvtColor(converted, out,
-                 have == 1   ? cv::COLOR_GRAY2RGBA
-                 : have == 3 ? cv::COLOR_BGR2RGBA
-                             : cv::COLOR_BGRA2RGBA);
-  RasterImage image;
-  image.width = out.cols;
-  image.height = out.rows;
-  image.channels = channels;
-  image.pixels.resize(static_cast<std::size_t>(out.cols) * out.rows * channels);
-  for (int y = 0; y < out.rows; ++y) {
-    const float* row = out.ptr<float>(y);
-    std::copy(row, row + static_cast<std::ptrdiff_t>(out.cols) * channels,
-              image.pixels.begin() + static_cast<std::ptrdiff_t>(y) * out.cols * channels);
-  }
-  return image;
+  if (have != 1 && have != 3 && have != 4)
+    throw Error(ErrorKind::InvalidInput, path.string() + ": an image of " + std::to_string(have) +
+                                             " channels (1, 3 or 4 are read)");
+  if (!converted.isContinuous()) converted = converted.clone();
+  const float* data = converted.ptr<float>(0);
+  // OpenCV keeps colour as BGR(A): swap red and blue while converting.
+  const auto sample = [data, have](std::size_t k) {
+    const std::size_t c = k % have;
+    return have >= 3 && c != 1 && c != 3 ? data[k - c + (2 - c)] : data[k];
+  };
+  return convertChannels(converted.cols, converted.rows, have, sample, channels);
+}
+
+} // namespace
+
+RasterImage readImage(const std::filesystem::path& path, int channels) {
+  if (channels != 1 && channels != 3 && channels != 4)
+    throw Error(ErrorKind::InvalidArgument, "images are read as 1, 3 or 4 channels");
+  const std::vector<std::uint8_t> bytes = readFileBytes(path);
+  if (!detail::isPng(bytes)) return decodeWithOpenCv(bytes, path, channels);
+  const detail::DecodedPng png = detail::decodePng(bytes, path.string());
+  const auto sample = [&png](std::size_t k) { return png.samples[k] / 255.0f; };
+  return convertChannels(png.width, png.height, png.channels, sample, channels);
 }
 
 std::vector<std::uint8_t> encodePng(const RasterImage& image) {
@@ -68,34 +114,15 @@ std::vector<std::uint8_t> encodePng(const RasterImage& image) {
       (image.channels != 1 && image.channels != 3 && image.channels != 4) ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * image.channels)
     throw Error(ErrorKind::InvalidArgument, "encodePng: the image's size and pixels disagree");
-  cv::Mat rgb(image.height, image.width, CV_8UC(image.channels));
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width * image.channels; ++x)
-      rgb.ptr<std::uint8_t>(y)[x] = static_cast<std::uint8_t>(
-          std::clamp(image.pixels[static_cast<std::size_t>(y) * image.width * image.channels + x],
-                     0.0f, 1.0f) *
-              255.0f +
-          0.5f);
-  cv::Mat bgr;
-  if (image.channels == 3)
-    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  else if (image.channels == 4)
-    cv::cvtColor(rgb, bgr, cv::COLOR_RGBA2BGRA);
-  else
-    bgr = rgb;
-  std::vector<std::uint8_t> bytes;
-  bool ok = false;
-  try {
-    ok = cv::imencode(".png", bgr, bytes);
-  } catch (const cv::Exception&) {
-    ok = false;
-  }
-  if (!ok) throw Error(ErrorKind::Io, "cannot encode the image as PNG");
-  return bytes;
+  std::vector<std::uint8_t> samples(image.pixels.size());
+  std::transform(image.pixels.begin(), image.pixels.end(), samples.begin(), [](float v) {
+    return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+  });
+  return detail::encodePng(samples, image.width, image.height, image.channels);
 }
 
 void writePng(const RasterImage& image, const std::filesystem::path& path) {
-  // Encoded in memory and written by the checked writer: imwrite does not report a failed close.
+  // Encoded in memory and written by the checked writer, all or nothing.
   writeBytesAtomically(path, encodePng(image));
 }
 

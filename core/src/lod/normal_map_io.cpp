@@ -1,7 +1,8 @@
-// Normal maps on disk: 8-bit PNG through OpenCV (what every viewer reads) or float32 EXR through
+// Normal maps on disk: 8-bit PNG through libpng (what every viewer reads) or float32 EXR through
 // OpenEXR (no quantisation, for offline renderers and tests).
 
 #include "detail/exr_memory_stream.h"
+#include "detail/png_codec.h"
 #include "lod/normal_map_encoding.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -13,11 +14,11 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace octaclay::core {
 namespace detail {
@@ -31,28 +32,16 @@ void requireNormalMap(const NormalMap& map) {
 std::vector<unsigned char> encodeNormalMapPng(const NormalMap& map) {
   requireNormalMap(map);
   const int r = map.resolution;
-  cv::Mat bgr(r, r, CV_8UC3);
   const auto byte = [](float c) {
     return static_cast<std::uint8_t>(std::clamp(c * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f);
   };
-  for (int y = 0; y < r; ++y) {
-    std::uint8_t* row = bgr.ptr<std::uint8_t>(y);
-    const Vec3f* in = map.texels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(r);
-    for (int x = 0; x < r; ++x) {
-      row[3 * x] = byte(in[x].z); // OpenCV stores BGR
-      row[3 * x + 1] = byte(in[x].y);
-      row[3 * x + 2] = byte(in[x].x);
-    }
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(r) * r * 3);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(r) * r; ++i) {
+    rgb[3 * i] = byte(map.texels[i].x);
+    rgb[3 * i + 1] = byte(map.texels[i].y);
+    rgb[3 * i + 2] = byte(map.texels[i].z);
   }
-  std::vector<unsigned char> bytes;
-  bool ok = false;
-  try {
-    ok = cv::imencode(".png", bgr, bytes);
-  } catch (const cv::Exception&) {
-    ok = false;
-  }
-  if (!ok) throw Error(ErrorKind::Io, "cannot encode the normal map as PNG");
-  return bytes;
+  return encodePng(rgb, r, r, 3);
 }
 
 } // namespace detail

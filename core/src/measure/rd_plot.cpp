@@ -1,10 +1,11 @@
 #include "octaclay/core/measure/rd_plot.h"
 
+#include "detail/png_codec.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace octaclay::core {
@@ -179,10 +181,11 @@ void stageRdPlot(std::span<const RdSeries> series, const std::string& title,
   cv::putText(image, title, {kLeft, 28}, cv::FONT_HERSHEY_SIMPLEX, 0.8, kInk, 2, cv::LINE_AA);
   for (int k = 0; k < 2; ++k)
     drawPanel(image(cv::Rect(k * kPanelWidth, 40, kPanelWidth, kHeight)), series, k == 1);
-  std::vector<std::uint8_t> bytes;
-  if (!cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, 9}))
-    throw Error(ErrorKind::Io, png.string() + ": cannot encode the plot");
-  set.stageBytes(png, bytes);
+  // OpenCV draws in BGR; libpng writes RGB.
+  cv::Mat rgb;
+  cv::cvtColor(image, rgb, cv::COLOR_BGR2RGB);
+  const std::span<const std::uint8_t> samples(rgb.ptr<std::uint8_t>(0), rgb.total() * 3);
+  set.stageBytes(png, detail::encodePng(samples, rgb.cols, rgb.rows, 3));
 }
 
 void writeRdPlot(std::span<const RdSeries> series, const std::string& title,

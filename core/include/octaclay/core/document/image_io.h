@@ -1,7 +1,8 @@
 #pragma once
 
 // Reading and writing the small raster images Octaclay ships and exports (material maps,
-// environment maps, exported textures): PNG, and whatever else OpenCV's codecs read.
+// environment maps, exported textures): PNG through libpng, the other formats (a mesh's JPEG or
+// TIFF texture) through OpenCV's codecs.
 
 #include <cstdint>
 #include <filesystem>
@@ -21,7 +22,8 @@ struct RasterImage {
 
 /// Reads an image as `channels` (1, 3 or 4) channels in [0, 1]: grey is replicated, a missing
 /// alpha is 1, 8- and 16-bit files are scaled by their maximum. Throws Error(Io) when the file
-/// cannot be read, Error(InvalidInput) when it is not an image OpenCV decodes.
+/// cannot be read, Error(InvalidInput) when it is not an image libpng or OpenCV decodes, or is
+/// larger than 16384² pixels (PNG) or 1 GiB.
 RasterImage readImage(const std::filesystem::path& path, int channels);
 
 /// The image as PNG bytes (values clamped to [0, 1], 8 bits per channel). Throws
