@@ -175,6 +175,146 @@ void measureCarried(const Document& from, const Document& to, RemeshResult& out)
   }
 }
 
+// Sharp tips and creases of the old surface that the new samples step over: an old vertex
+// farther than `tolerance` (object units) from the new surface near it (the four triangles of
+// either diagonal of the new grid cell its sphere point falls in: an upper bound of its
+// distance) hands its own location to a corner of that cell, so the new surface passes through
+// it. Worst first, a few passes (a snapped sample changes its neighbours' distances). A sample
+// moves only while the four cells around it stay convex in the grid's parameter domain (the
+// samples' sphere points seen as grid coordinates), so no triangle of the new grid folds over;
+// samples on the image's border move only when no neighbour has moved. Returns how many samples
+// moved.
+int snapToFeatures(const TriangleMesh& mesh, const SphericalMap& map, const GeometryImage& old,
+                   int m, double tolerance, std::vector<SampleLocation>& where) {
+  const std::size_t side = static_cast<std::size_t>(m + 1);
+  const std::vector<Sample> oldSamples = VertexIndex(old.size()).canonicalSamples();
+  const auto index = [side](Sample q) {
+    return static_cast<std::size_t>(q.j) * side + static_cast<std::size_t>(q.i);
+  };
+  const auto positionAt = [&](int i, int j) {
+    const SampleLocation& at = where[index(canonical(m, {i, j}))];
+    const auto& tri = mesh.triangles[at.triangle];
+    detail::Vec3d p;
+    for (std::size_t k = 0; k < 3; ++k)
+      p = p + detail::Vec3d(mesh.positions[tri[k]]) * double(at.weights[k]);
+    return p;
+  };
+  // Each moved sample's place in grid coordinates (an interior sample's own i, j otherwise).
+  std::vector<std::array<double, 2>> place(side * side);
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i)
+      place[index({i, j})] = {double(i), double(j)};
+  std::vector<std::uint8_t> moved(side * side, 0);
+  // Each old vertex's place as a corner of one of its triangles.
+  std::vector<SampleLocation> corner(mesh.positions.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k) {
+      SampleLocation& at = corner[mesh.triangles[t][k]];
+      at.triangle = static_cast<std::uint32_t>(t);
+      at.weights = {0, 0, 0};
+      at.weights[k] = 1;
+    }
+  struct Candidate {
+    double distance;
+    std::uint32_t vertex;
+    double u, w; // grid coordinates of its sphere point
+  };
+  const auto measure = [&](std::uint32_t v, Candidate& c) {
+    const std::array<double, 2> st = octahedralSquarePoint(map.sphere[v]);
+    c.vertex = v;
+    c.u = st[0] * m;
+    c.w = st[1] * m;
+    const int i0 = std::clamp(static_cast<int>(std::floor(c.u)), 0, m - 1);
+    const int j0 = std::clamp(static_cast<int>(std::floor(c.w)), 0, m - 1);
+    const detail::Vec3d a = positionAt(i0, j0), b = positionAt(i0 + 1, j0),
+                        cc = positionAt(i0 + 1, j0 + 1), d = positionAt(i0, j0 + 1);
+    const detail::Vec3d x(old.at(oldSamples[v]).xyz());
+    const auto distance = [&](detail::Vec3d p, detail::Vec3d q, detail::Vec3d r) {
+      const detail::Vec3d e = x - detail::closestPointOnTriangle(x, p, q, r);
+      return dot(e, e);
+    };
+    c.distance = std::sqrt(
+        std::min({distance(a, b, d), distance(b, cc, d), distance(a, b, cc), distance(a, cc, d)}));
+    return c.distance > tolerance;
+  };
+  // Whether the interior sample (i, j) may move to p: its four cells stay strictly convex.
+  const auto keepsCellsConvex = [&](int i, int j, std::array<double, 2> p) {
+    const auto at = [&](int di, int dj) {
+      return di == 0 && dj == 0 ? p : place[index({i + di, j + dj})];
+    };
+    for (const auto& [ci, cj] : {std::pair{-1, -1}, {0, -1}, {0, 0}, {-1, 0}}) {
+      const std::array<std::array<double, 2>, 4> q{at(ci, cj), at(ci + 1, cj), at(ci + 1, cj + 1),
+                                                   at(ci, cj + 1)};
+      for (int k = 0; k < 4; ++k) {
+        const auto &o = q[k], &e = q[(k + 1) % 4], &f = q[(k + 3) % 4];
+        const double cross = (e[0] - o[0]) * (f[1] - o[1]) - (e[1] - o[1]) * (f[0] - o[0]);
+        if (!(cross > 1e-3)) return false;
+      }
+    }
+    return true;
+  };
+  const auto tryMove = [&](const Candidate& c) {
+    // The corners of its cell, nearest first.
+    const int i0 = std::clamp(static_cast<int>(std::floor(c.u)), 0, m - 1);
+    const int j0 = std::clamp(static_cast<int>(std::floor(c.w)), 0, m - 1);
+    std::array<Sample, 4> corners{Sample{i0, j0}, {i0 + 1, j0}, {i0 + 1, j0 + 1}, {i0, j0 + 1}};
+    const auto far = [&](Sample q) { return std::hypot(q.i - c.u, q.j - c.w); };
+    std::sort(corners.begin(), corners.end(), [&](Sample a, Sample b) { return far(a) < far(b); });
+    for (const Sample q : corners) {
+      const Sample k = canonical(m, q);
+      if (moved[index(k)]) continue;
+      const bool border = q.i <= 1 || q.j <= 1 || q.i >= m - 1 || q.j >= m - 1;
+      if (border) {
+        // Only the nearest corner, and only with no moved neighbour (folds make the
+        // neighbourhood's coordinates ambiguous).
+        if (far(q) > 0.5) return false;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            if (moved[index(canonical(m, wrap(m, {q.i + di, q.j + dj})))]) return false;
+      } else if (!keepsCellsConvex(q.i, q.j, {c.u, c.w})) {
+        continue;
+      } else {
+        place[index(q)] = {c.u, c.w};
+      }
+      moved[index(k)] = 1;
+      where[index(k)] = corner[c.vertex];
+      return true;
+    }
+    return false;
+  };
+
+  std::vector<Candidate> candidates;
+  std::mutex lock;
+  detail::parallelRows(
+      static_cast<int>(oldSamples.size()),
+      [&](int begin, int end) {
+        std::vector<Candidate> local;
+        Candidate c{};
+        for (int v = begin; v < end; ++v)
+          if (measure(static_cast<std::uint32_t>(v), c)) local.push_back(c);
+        const std::lock_guard<std::mutex> guard(lock);
+        candidates.insert(candidates.end(), local.begin(), local.end());
+      },
+      1024);
+  int count = 0;
+  for (int pass = 0; pass < 3 && !candidates.empty(); ++pass) {
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      return x.distance != y.distance ? x.distance > y.distance : x.vertex < y.vertex;
+    });
+    std::vector<Candidate> left;
+    for (const Candidate& c : candidates)
+      if (tryMove(c))
+        ++count;
+      else
+        left.push_back(c);
+    // Those left, measured against the surface the moves made.
+    candidates.clear();
+    for (Candidate& c : left)
+      if (measure(c.vertex, c)) candidates.push_back(c);
+  }
+  return count;
+}
+
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
@@ -231,7 +371,10 @@ RemeshResult remeshDocument(const Document& document, const RemeshOptions& optio
 
   // Every layer at each new sample's point on the old surface.
   start = Clock::now();
-  const std::vector<SampleLocation> where = locateOctahedralSamples(validated.mesh, map, m);
+  std::vector<SampleLocation> where = locateOctahedralSamples(validated.mesh, map, m);
+  const double diagonal = boundingBox(surface).diagonal();
+  out.snapped = snapToFeatures(validated.mesh, map, document.positions, m,
+                               options.featureTolerance * diagonal, where);
   const std::vector<Sample> oldSamples = VertexIndex(n).canonicalSamples();
   const std::size_t oldSide = static_cast<std::size_t>(n + 1);
   const std::size_t side = static_cast<std::size_t>(m + 1);
