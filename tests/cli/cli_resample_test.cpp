@@ -23,6 +23,7 @@ private slots:
   void relaxOnTheSnakeHookLimb();
   void relaxOnThePushSpike();
   void remeshGivesTheLimbItsSamples();
+  void remeshOnThePushSpike();
   void remeshKeepsPaint();
   void resizeRoundTrip();
   void resizeChecksItsResult();
@@ -127,18 +128,48 @@ void CliResampleTest::remeshGivesTheLimbItsSamples() {
         reply["after"].toObject()["longest_over_median"].toDouble(), 100 * reply["rms"].toDouble(),
         100 * reply["hausdorff"].toDouble(), reply["ms"].toDouble(),
         reply["parameterize_ms"].toDouble());
-  // The targets: fair share ≥ 0.7, longest ≤ 8× the median, RMS ≤ 0.01 %, Hausdorff
-  // ≤ 0.2 %, ≤ 2 s. Measured: longest 63.8 -> 4.8, RMS 0.0025 %, Hausdorff 0.64 %, ~10 s here
-  // (the parameterization of 65 538 vertices); the Hausdorff and time targets are not met yet.
+  // The targets: fair share ≥ 0.7, spacing ≤ 1.5× the body's, longest ≤ 8× the
+  // median, RMS ≤ 0.01 %, Hausdorff ≤ 0.2 %, ≤ 2 s. Measured: fair share 0.87, spacing ratio
+  // 1.07, longest 63.8 -> 7.2, RMS 0.0022 %, Hausdorff 0.176 % (the tip's sample snapped onto
+  // it; 0.78 % without), 2.3 s of CPU (4.5 s wall with the 2 cores shared at a load of 6; no
+  // timed assert: bench_remesh gives the figure).
   QVERIFY(reply["changed"].toBool());
   QCOMPARE(reply["size"].toInt(), 256);
   QVERIFY(limbAfter.fairShare >= 0.7);
+  QVERIFY(limbAfter.spacingRatio <= 1.5);
   QVERIFY(reply["after"].toObject()["longest_over_median"].toDouble() <= 8);
+  QVERIFY(reply["rms"].toDouble() <= 1e-4);
+  QVERIFY(reply["hausdorff"].toDouble() <= 2e-3);
+  RUN_JSON(info, "info", out, "--json");
+  QCOMPARE(info["euler"].toInt(), 2);
+  QVERIFY(info["closed"].toBool());
+  QCOMPARE(info["seam_gap"].toDouble(), 0.0);
+}
+
+void CliResampleTest::remeshOnThePushSpike() {
+  const QString out = path("spike-remeshed.exr");
+  RUN_JSON(reply, "remesh", spike_, "-o", out, "--json");
+  const core::Document before = core::readDocument(spike_.toStdString());
+  const core::Document after = core::readDocument(out.toStdString());
+  const core::RegionSampling spikeBefore = core::regionSampling(before.positions, inLimb);
+  const core::RegionSampling spikeAfter = core::regionSampling(after.positions, inLimb);
+  qInfo("remesh spike: changed %d %s, fair share %.3f -> %.3f, longest/median %.1f -> %.1f, RMS "
+        "%.5f %%, Hausdorff %.4f %%, %d snapped",
+        reply["changed"].toBool(), qPrintable(reply["reason"].toString()), spikeBefore.fairShare,
+        spikeAfter.fairShare, reply["before"].toObject()["longest_over_median"].toDouble(),
+        reply["after"].toObject()["longest_over_median"].toDouble(), 100 * reply["rms"].toDouble(),
+        100 * reply["hausdorff"].toDouble(), reply["snapped"].toInt());
+  // Measured: fair share 0.005 -> 0.33, longest/median 97 -> 12.5, RMS 0.006 %, Hausdorff 0.29 %.
+  QVERIFY(reply["changed"].toBool());
+  QVERIFY(spikeAfter.fairShare > 10 * spikeBefore.fairShare);
+  QVERIFY(reply["after"].toObject()["longest_over_median"].toDouble() <
+          reply["before"].toObject()["longest_over_median"].toDouble() / 4);
   QVERIFY(reply["rms"].toDouble() <= 1e-4);
   QVERIFY(reply["hausdorff"].toDouble() <= 1e-2);
   RUN_JSON(info, "info", out, "--json");
   QCOMPARE(info["euler"].toInt(), 2);
   QVERIFY(info["closed"].toBool());
+  QCOMPARE(info["seam_gap"].toDouble(), 0.0);
 }
 
 void CliResampleTest::remeshKeepsPaint() {
@@ -155,9 +186,10 @@ void CliResampleTest::remeshKeepsPaint() {
         100 * diffuse["painted_share_within"].toDouble(), 100 * diffuse["painted_area"].toDouble());
   QVERIFY(reply["changed"].toBool());
   // Each old sample against the new surface's colour at its closest point: the paint's edge
-  // is resampled once more (the target: 98 %; measured 97.2 % here, mean ΔE 0.02).
+  // is resampled once more (the target: 98 %; measured 100 %, mean ΔE 0.01, max 4.9;
+  // 97.2 % before the new samples were snapped onto the old surface's sharp vertices).
   QVERIFY(diffuse["painted_area"].toDouble() > 0);
-  QVERIFY(diffuse["painted_share_within"].toDouble() >= 0.95);
+  QVERIFY(diffuse["painted_share_within"].toDouble() >= 0.98);
   QVERIFY(diffuse["mean_error"].toDouble() <= 0.5);
   QVERIFY(reply["feature"].isNull());
 }
