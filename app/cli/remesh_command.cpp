@@ -93,6 +93,7 @@ Command addRemeshCommand(CLI::App& app) {
                                   {"feature", carriedJson(r.feature)},
                                   {"mask", carriedJson(r.mask)},
                                   {"flipped", r.flipped},
+                                  {"snapped", r.snapped},
                                   {"parameterize_ms", r.parameterizeMs},
                                   {"resample_ms", r.resampleMs},
                                   {"measure_ms", r.measureMs},

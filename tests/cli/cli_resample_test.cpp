@@ -23,8 +23,10 @@ private slots:
   void relaxOnTheSnakeHookLimb();
   void relaxOnThePushSpike();
   void remeshGivesTheLimbItsSamples();
+  void remeshOnThePushSpike();
   void remeshKeepsPaint();
   void resizeRoundTrip();
+  void resizeChecksItsResult();
   void refusesBadInput();
 
 private:
@@ -126,18 +128,48 @@ void CliResampleTest::remeshGivesTheLimbItsSamples() {
         reply["after"].toObject()["longest_over_median"].toDouble(), 100 * reply["rms"].toDouble(),
         100 * reply["hausdorff"].toDouble(), reply["ms"].toDouble(),
         reply["parameterize_ms"].toDouble());
-  // The targets: fair share ≥ 0.7, longest ≤ 8× the median, RMS ≤ 0.01 %, Hausdorff
-  // ≤ 0.2 %, ≤ 2 s. Measured: longest 63.8 -> 4.8, RMS 0.0025 %, Hausdorff 0.64 %, ~10 s here
-  // (the parameterization of 65 538 vertices); the Hausdorff and time targets are not met yet.
+  // The targets: fair share ≥ 0.7, spacing ≤ 1.5× the body's, longest ≤ 8× the
+  // median, RMS ≤ 0.01 %, Hausdorff ≤ 0.2 %, ≤ 2 s. Measured: fair share 0.87, spacing ratio
+  // 1.07, longest 63.8 -> 7.2, RMS 0.0022 %, Hausdorff 0.176 % (the tip's sample snapped onto
+  // it; 0.78 % without), 2.3 s of CPU (4.5 s wall with the 2 cores shared at a load of 6; no
+  // timed assert: bench_remesh gives the figure).
   QVERIFY(reply["changed"].toBool());
   QCOMPARE(reply["size"].toInt(), 256);
   QVERIFY(limbAfter.fairShare >= 0.7);
+  QVERIFY(limbAfter.spacingRatio <= 1.5);
   QVERIFY(reply["after"].toObject()["longest_over_median"].toDouble() <= 8);
+  QVERIFY(reply["rms"].toDouble() <= 1e-4);
+  QVERIFY(reply["hausdorff"].toDouble() <= 2e-3);
+  RUN_JSON(info, "info", out, "--json");
+  QCOMPARE(info["euler"].toInt(), 2);
+  QVERIFY(info["closed"].toBool());
+  QCOMPARE(info["seam_gap"].toDouble(), 0.0);
+}
+
+void CliResampleTest::remeshOnThePushSpike() {
+  const QString out = path("spike-remeshed.exr");
+  RUN_JSON(reply, "remesh", spike_, "-o", out, "--json");
+  const core::Document before = core::readDocument(spike_.toStdString());
+  const core::Document after = core::readDocument(out.toStdString());
+  const core::RegionSampling spikeBefore = core::regionSampling(before.positions, inLimb);
+  const core::RegionSampling spikeAfter = core::regionSampling(after.positions, inLimb);
+  qInfo("remesh spike: changed %d %s, fair share %.3f -> %.3f, longest/median %.1f -> %.1f, RMS "
+        "%.5f %%, Hausdorff %.4f %%, %d snapped",
+        reply["changed"].toBool(), qPrintable(reply["reason"].toString()), spikeBefore.fairShare,
+        spikeAfter.fairShare, reply["before"].toObject()["longest_over_median"].toDouble(),
+        reply["after"].toObject()["longest_over_median"].toDouble(), 100 * reply["rms"].toDouble(),
+        100 * reply["hausdorff"].toDouble(), reply["snapped"].toInt());
+  // Measured: fair share 0.005 -> 0.33, longest/median 97 -> 12.5, RMS 0.006 %, Hausdorff 0.29 %.
+  QVERIFY(reply["changed"].toBool());
+  QVERIFY(spikeAfter.fairShare > 10 * spikeBefore.fairShare);
+  QVERIFY(reply["after"].toObject()["longest_over_median"].toDouble() <
+          reply["before"].toObject()["longest_over_median"].toDouble() / 4);
   QVERIFY(reply["rms"].toDouble() <= 1e-4);
   QVERIFY(reply["hausdorff"].toDouble() <= 1e-2);
   RUN_JSON(info, "info", out, "--json");
   QCOMPARE(info["euler"].toInt(), 2);
   QVERIFY(info["closed"].toBool());
+  QCOMPARE(info["seam_gap"].toDouble(), 0.0);
 }
 
 void CliResampleTest::remeshKeepsPaint() {
@@ -154,9 +186,10 @@ void CliResampleTest::remeshKeepsPaint() {
         100 * diffuse["painted_share_within"].toDouble(), 100 * diffuse["painted_area"].toDouble());
   QVERIFY(reply["changed"].toBool());
   // Each old sample against the new surface's colour at its closest point: the paint's edge
-  // is resampled once more (the target: 98 %; measured 97.2 % here, mean ΔE 0.02).
+  // is resampled once more (the target: 98 %; measured 100 %, mean ΔE 0.01, max 4.9;
+  // 97.2 % before the new samples were snapped onto the old surface's sharp vertices).
   QVERIFY(diffuse["painted_area"].toDouble() > 0);
-  QVERIFY(diffuse["painted_share_within"].toDouble() >= 0.95);
+  QVERIFY(diffuse["painted_share_within"].toDouble() >= 0.98);
   QVERIFY(diffuse["mean_error"].toDouble() <= 0.5);
   QVERIFY(reply["feature"].isNull());
 }
@@ -168,15 +201,38 @@ void CliResampleTest::resizeRoundTrip() {
   const core::SurfaceDistance d = distance(core::readDocument(limb_.toStdString()),
                                            core::readDocument(path("down.exr").toStdString()));
   qInfo("resize 256 -> 512 -> 256: RMS %.5f %%, Hausdorff %.4f %%", 100 * d.rms, 100 * d.hausdorff);
-  // The limb's edges are 64× the median: the filter down cuts more there than on a smooth
-  // surface (resize_test: 0.0013 % on a sculpted sphere); measured 0.0115 %.
-  QVERIFY(d.rms <= 2e-4);
+  // Down predicts with up itself, so down after up gives the original back bit for bit
+  // (measured 0; 0.0115 % with the widened Catmull-Rom filter down). The target: 0.01 %.
+  QVERIFY(up["changed"].toBool());
+  QVERIFY(down["changed"].toBool());
+  QVERIFY(d.rms <= 1e-4);
   RUN_JSON(info, "info", path("down.exr"), "--json");
   QCOMPARE(info["euler"].toInt(), 2);
   QVERIFY(info["closed"].toBool());
   const QStringList human{"resize", limb_, "--size", "128", "-o", path("small.exr")};
   const Result r = runCli(human);
   QVERIFY2(r.exitCode == kOk && r.out.contains("N = 128"), qPrintable(describe(human, r)));
+}
+
+void CliResampleTest::resizeChecksItsResult() {
+  // N = 64 cannot hold the push spike (its edges 79× the median): measured RMS 1.44 % against
+  // the 0.8 % allowed at a sixteenth of the samples. The document is written unchanged, exit 0.
+  const QString out = path("spike-64.exr");
+  RUN_JSON(reply, "resize", spike_, "--size", "64", "-o", out, "--json");
+  qInfo("resize spike 256 -> 64: changed %d, RMS %.3f %%, Hausdorff %.2f %%: %s",
+        reply["changed"].toBool(), 100 * reply["rms"].toDouble(),
+        100 * reply["hausdorff"].toDouble(), qPrintable(reply["reason"].toString()));
+  QVERIFY(!reply["changed"].toBool());
+  QVERIFY(reply["reason"].toString().contains("surface would move"));
+  QCOMPARE(reply["size"].toInt(), 256);
+  const core::Document written = core::readDocument(out.toStdString());
+  const core::Document spike = core::readDocument(spike_.toStdString());
+  QCOMPARE(written.size(), 256);
+  QVERIFY(std::memcmp(written.positions.texels().data(), spike.positions.texels().data(),
+                      spike.positions.byteSize()) == 0);
+  const QStringList human{"resize", spike_, "--size", "64", "-o", path("spike-64b.exr")};
+  const Result r = runCli(human);
+  QVERIFY2(r.exitCode == kOk && r.out.contains("unchanged"), qPrintable(describe(human, r)));
 }
 
 void CliResampleTest::refusesBadInput() {

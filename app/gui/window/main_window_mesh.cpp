@@ -183,9 +183,11 @@ bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
     // One pass with no progress of its own: Cancel takes effect when it ends (the result is
     // dropped), which at most a few seconds at N = 8192.
     if (job.cancel) throw std::runtime_error("cancelled");
-    core::Document resized = core::resizeDocument(source, n);
+    // Checked as Remesh is: a coarser N that cannot hold a stretched part leaves the model
+    // unchanged and says why.
+    core::ResizeResult r = core::resizeAndCheck(source, {.size = n});
     job.fraction = 1.0f;
-    return MeshOutcome{std::move(resized), true, {}};
+    return MeshOutcome{std::move(r.document), r.changed, std::move(r.reason)};
   };
   std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
   if (!outcome) return false;

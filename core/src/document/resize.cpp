@@ -4,14 +4,19 @@
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/measure/stretch.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <span>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace octaclay::core {
@@ -31,27 +36,16 @@ struct Taps {
   std::vector<double> weights; // for base, base + 1, …
 };
 
-// The taps for new sample k of an m grid from an n grid along one axis.
+// The taps for new sample k of an m grid (m > n) from an n grid along one axis: Catmull-Rom
+// interpolation at k·n/m.
 Taps tapsFor(int k, int n, int m) {
   Taps t;
-  if (m >= n) { // interpolate at k·n/m
-    const int r = m / n;
-    const int whole = k / r;
-    const double frac = double(k % r) / double(r);
-    t.base = whole - 1;
-    for (int a = -1; a <= 2; ++a)
-      t.weights.push_back(catmullRom(double(a) - frac));
-  } else { // filter around k·r with the kernel widened r times
-    const int r = n / m;
-    t.base = k * r - (2 * r - 1);
-    double sum = 0;
-    for (int d = -(2 * r - 1); d <= 2 * r - 1; ++d) {
-      t.weights.push_back(catmullRom(double(d) / double(r)));
-      sum += t.weights.back();
-    }
-    for (double& w : t.weights)
-      w /= sum;
-  }
+  const int r = m / n;
+  const int whole = k / r;
+  const double frac = double(k % r) / double(r);
+  t.base = whole - 1;
+  for (int a = -1; a <= 2; ++a)
+    t.weights.push_back(catmullRom(double(a) - frac));
   return t;
 }
 
@@ -107,6 +101,43 @@ std::vector<float> resampleField(int n, int m, int channels, bool clamp, const V
   return out;
 }
 
+// Catmull-Rom swings out beside long edges (a stretched limb's 64× the median: 2.5 % of the
+// diagonal at its tip). Each new sample's offset from the old surface at its point (linear on
+// the old grid's triangles, as extractMesh splits the cells) is cut to a tenth of the old
+// median edge, far above the sagitta of a smooth surface's cell (h/8R of h) and far below an
+// overshoot beside a long edge. Identified samples get their canonical sample's bits again.
+void limitOvershoot(const GeometryImage& from, GeometryImage& to) {
+  const int n = from.size(), m = to.size(), r = m / n, half = n / 2;
+  const double cap = 0.1 * summarizeStretch(from).medianEdge;
+  if (!(cap > 0)) return;
+  detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i <= m; ++i) {
+        const int ci = std::min(i / r, n - 1), cj = std::min(j / r, n - 1);
+        const double u = double(i - ci * r) / r, w = double(j - cj * r) / r;
+        const Vec3f a = from.at(ci, cj).xyz(), b = from.at(ci + 1, cj).xyz(),
+                    c = from.at(ci + 1, cj + 1).xyz(), d = from.at(ci, cj + 1).xyz();
+        Vec3f p;
+        if ((ci < half) == (cj < half)) // triangles abd and bcd
+          p = u + w <= 1 ? a + (b - a) * float(u) + (d - a) * float(w)
+                         : c + (d - c) * float(1 - u) + (b - c) * float(1 - w);
+        else // triangles abc and acd
+          p = u >= w ? a + (b - a) * float(u) + (c - b) * float(w)
+                     : a + (c - d) * float(u) + (d - a) * float(w);
+        Vec4f& q = to.at(i, j);
+        const Vec3f offset = q.xyz() - p;
+        const double distance = length(offset);
+        if (distance > cap) {
+          const Vec3f limited = p + offset * float(cap / distance);
+          q = {limited.x, limited.y, limited.z, q.w};
+        }
+      }
+  });
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i)
+      if (const Sample c = canonical(m, {i, j}); !(c == Sample{i, j})) to.at(i, j) = to.at(c);
+}
+
 void resizeLayer(const Layer& from, Layer& to, int n, int m) {
   to = from;
   if (from.uniform()) return;
@@ -121,13 +152,12 @@ void resizeLayer(const Layer& from, Layer& to, int n, int m) {
 
 } // namespace
 
-Document resizeDocument(const Document& document, int m) {
-  requireValidSize(m);
-  if (const auto problem = positionsProblem(document.positions))
-    throw Error(ErrorKind::InvalidInput,
-                *problem + "; the document is damaged and cannot be resized");
+namespace {
+
+// One resampling step, n → m with m ≥ n or m = n/2.
+// Up, n → m > n: Catmull-Rom, positions limited (limitOvershoot), painted layers clamped.
+Document resizeUp(const Document& document, int m) {
   const int n = document.size();
-  if (m == n) return document;
   Document out = document;
   out.positions = GeometryImage(m);
   const std::vector<float> positions = resampleField(n, m, 4, false, [&](Sample s, float* v) {
@@ -138,9 +168,174 @@ Document resizeDocument(const Document& document, int m) {
   for (std::size_t t = 0; t < texels.size(); ++t)
     texels[t] = {positions[4 * t], positions[4 * t + 1], positions[4 * t + 2],
                  positions[4 * t + 3]};
+  limitOvershoot(document.positions, out.positions);
   resizeLayer(document.diffuse, out.diffuse, n, m);
   resizeLayer(document.feature, out.feature, n, m);
   resizeLayer(document.mask, out.mask, n, m);
+  return out;
+}
+
+// Down, n → n/2, by lifting (Sweldens 1996) with resizeUp as its prediction: the even samples
+// e, predicted back up, leave the details d = y − resizeUp(e) (0 on the even samples); each
+// new sample is e plus d's mean around it, weighted 1/8 on the four samples beside and 1/16 on
+// the four diagonal ones, the weights that cancel the grid's Nyquist frequencies along each
+// axis and both. A document that resizeUp made has no details, so down after up gives it back
+// bit for bit, where the up's limit acted too. Painted layers are clamped to the 3 × 3 samples
+// around (no ringing at a paint edge).
+Document resizeDown(const Document& document) {
+  const int n = document.size(), m = n / 2;
+  const std::size_t oldSide = static_cast<std::size_t>(n + 1),
+                    side = static_cast<std::size_t>(m + 1);
+  Document even = document;
+  even.positions = GeometryImage(m);
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i)
+      even.positions.at(i, j) = document.positions.at(2 * i, 2 * j);
+  for (const auto& [from, to] : {std::pair{&document.diffuse, &even.diffuse},
+                                 {&document.feature, &even.feature},
+                                 {&document.mask, &even.mask}}) {
+    if (from->uniform()) continue;
+    const std::size_t ch = static_cast<std::size_t>(from->channels);
+    to->texels.assign(side * side * ch, 0.0f);
+    for (int j = 0; j <= m; ++j)
+      for (int i = 0; i <= m; ++i)
+        std::copy_n(&from->texels[(std::size_t(2 * j) * oldSide + std::size_t(2 * i)) * ch], ch,
+                    &to->texels[(std::size_t(j) * side + std::size_t(i)) * ch]);
+  }
+  const Document predicted = resizeUp(even, n);
+  Document out = even;
+  // new(i, j) = e(i, j) + Σ w · (y − predicted) around (2i, 2j), each channel of `count`.
+  const auto update = [&](int count, const auto& fine, const auto& guess, const auto& write,
+                          bool clamp) {
+    detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+      std::array<float, 4> y{}, p{};
+      std::array<double, 4> sum{}, lo{}, hi{};
+      for (int j = rowBegin; j < rowEnd; ++j)
+        for (int i = 0; i <= m; ++i) {
+          sum.fill(0);
+          lo.fill(1e300);
+          hi.fill(-1e300);
+          for (int b = -1; b <= 1; ++b)
+            for (int a = -1; a <= 1; ++a) {
+              const Sample s = wrap(n, {2 * i + a, 2 * j + b});
+              fine(s, y.data());
+              guess(s, p.data());
+              const double w = a == 0 && b == 0 ? 0.0 : a == 0 || b == 0 ? 0.125 : 0.0625;
+              for (int c = 0; c < count; ++c) {
+                sum[std::size_t(c)] += w * (double(y[std::size_t(c)]) - double(p[std::size_t(c)]));
+                lo[std::size_t(c)] = std::min(lo[std::size_t(c)], double(y[std::size_t(c)]));
+                hi[std::size_t(c)] = std::max(hi[std::size_t(c)], double(y[std::size_t(c)]));
+              }
+            }
+          fine(Sample{2 * i, 2 * j}, y.data());
+          for (int c = 0; c < count; ++c) {
+            const double v = double(y[std::size_t(c)]) + sum[std::size_t(c)];
+            sum[std::size_t(c)] = clamp ? std::clamp(v, lo[std::size_t(c)], hi[std::size_t(c)]) : v;
+          }
+          write(i, j, sum.data());
+        }
+    });
+  };
+  update(
+      4,
+      [&](Sample s, float* v) {
+        const Vec4f& q = document.positions.at(s);
+        v[0] = q.x, v[1] = q.y, v[2] = q.z, v[3] = q.w;
+      },
+      [&](Sample s, float* v) {
+        const Vec4f& q = predicted.positions.at(s);
+        v[0] = q.x, v[1] = q.y, v[2] = q.z, v[3] = q.w;
+      },
+      [&](int i, int j, const double* v) {
+        out.positions.at(i, j) = {float(v[0]), float(v[1]), float(v[2]), float(v[3])};
+      },
+      false);
+  for (const auto& [from, guess, to] :
+       {std::tuple{&document.diffuse, &predicted.diffuse, &out.diffuse},
+        {&document.feature, &predicted.feature, &out.feature},
+        {&document.mask, &predicted.mask, &out.mask}}) {
+    if (from->uniform()) continue;
+    const int ch = from->channels;
+    const std::size_t chs = static_cast<std::size_t>(ch);
+    const auto read = [oldSide, chs](const Layer& layer) {
+      return [&layer, oldSide, chs](Sample s, float* v) {
+        std::copy_n(&layer.texels[(std::size_t(s.j) * oldSide + std::size_t(s.i)) * chs], chs, v);
+      };
+    };
+    update(
+        ch, read(*from), read(*guess),
+        [&, chs](int i, int j, const double* v) {
+          float* o = &to->texels[(std::size_t(j) * side + std::size_t(i)) * chs];
+          for (std::size_t c = 0; c < chs; ++c)
+            o[c] = static_cast<float>(v[c]);
+        },
+        true);
+  }
+  // Identified samples: the canonical one's bits.
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) {
+      const Sample c = canonical(m, {i, j});
+      if (c == Sample{i, j}) continue;
+      out.positions.at(i, j) = out.positions.at(c);
+      for (Layer* l : {&out.diffuse, &out.feature, &out.mask}) {
+        if (l->uniform()) continue;
+        const std::size_t ch = static_cast<std::size_t>(l->channels);
+        std::copy_n(&l->texels[(std::size_t(c.j) * side + std::size_t(c.i)) * ch], ch,
+                    &l->texels[(std::size_t(j) * side + std::size_t(i)) * ch]);
+      }
+    }
+  return out;
+}
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
+  return text;
+}
+
+} // namespace
+
+Document resizeDocument(const Document& document, int m) {
+  requireValidSize(m);
+  if (const auto problem = positionsProblem(document.positions))
+    throw Error(ErrorKind::InvalidInput,
+                *problem + "; the document is damaged and cannot be resized");
+  Document out = document;
+  while (out.size() > m)
+    out = resizeDown(out);
+  if (out.size() < m) out = resizeUp(out, m);
+  return out;
+}
+
+ResizeResult resizeAndCheck(const Document& document, const ResizeOptions& options) {
+  ResizeResult out;
+  Document resized = resizeDocument(document, options.size);
+  const int n = document.size(), m = options.size;
+  out.before = summarizeStretch(document.positions);
+  out.after = summarizeStretch(resized.positions);
+  const TriangleMesh before = extractMesh(document.positions);
+  if (boundingBox(before).diagonal() > 0)
+    out.moved = compareSurfaces(before, extractMesh(resized.positions),
+                                {.samplesPerSurface = options.samplesPerSurface});
+  const double scale = m < n ? double(n / m) * double(n / m) : 1.0;
+  if (const auto problem = positionsProblem(resized.positions))
+    out.reason = "the result would not be finite (" + *problem + ")";
+  else if (out.moved.rms > scale * options.rmsTolerance)
+    out.reason = "the surface would move by " + percent(out.moved.rms) +
+                 " of the diagonal (RMS; at most " + percent(scale * options.rmsTolerance) + ")";
+  else if (out.moved.hausdorff > scale * options.hausdorffTolerance)
+    out.reason = "the surface would move by " + percent(out.moved.hausdorff) +
+                 " of the diagonal (Hausdorff; at most " +
+                 percent(scale * options.hausdorffTolerance) + ")";
+  if (!out.reason.empty()) {
+    if (m < n)
+      out.reason += ": N = " + std::to_string(m) +
+                    " has too few samples for its stretched parts (Remesh first, or keep N)";
+    out.document = document;
+    return out;
+  }
+  out.document = std::move(resized);
+  out.changed = m != n;
   return out;
 }
 

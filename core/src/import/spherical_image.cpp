@@ -72,7 +72,7 @@ SphericalMap parameterizeImageOnSphere(const GeometryImage& image, const Triangl
     coarse = std::move(validated.mesh);
     if (coarse.positions.size() != VertexIndex(n, step).vertexCount())
       return parameterizeOnSphere(mesh, progress);
-    // The default pipeline at this size (128² + 2 vertices): coarse to fine (its
+    // The default pipeline at this size (64² + 2 vertices): coarse to fine (its
     // simplification keeps a thin limb the grid has few samples on) and the whole-mesh map (it
     // wins on smooth surfaces such as an imported one) at once, the better kept, then the
     // descent on the largest stretch.
@@ -116,7 +116,7 @@ SphericalMap parameterizeImageOnSphere(const GeometryImage& image, const Triangl
     const Adjacency rings = adjacency(static_cast<int>(x.size()), triangles);
     untangle(s, triangles, rings);
     const double begin = 0.5 + 0.5 * done / levels, end = 0.5 + 0.5 * (done + 1) / levels;
-    if (options.sweepsPerLevel > 0)
+    if (options.sweepsPerLevel > 0 && n / fine <= options.relaxUpToSize)
       relaxStretchWhereMoving(s, x, triangles, rings, options.sweepsPerLevel, progress, begin, end);
     // The descent on the largest stretch once more on the level of finishSize: the tips of
     // thin parts the coarse grid saw too few samples of.

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 using namespace octaclay::core;
 
@@ -76,6 +77,7 @@ private slots:
   void roundTripComesBack();
   void upKeepsTheOldSamples();
   void layersFollowAndStayInRange();
+  void checksItsOwnResult();
   void refusesBadInput();
 };
 
@@ -102,6 +104,11 @@ void ResizeTest::roundTripComesBack() {
         100 * u.rms, 100 * u.hausdorff, 100 * d.rms, 100 * d.hausdorff);
   if (n == 256) QVERIFY(d.rms <= 1e-4); // the target
   QVERIFY(d.rms <= 1e-3);
+  // Down predicts with up itself: a document up made comes back bit for bit, every layer.
+  QVERIFY(std::memcmp(back.positions.texels().data(), original.positions.texels().data(),
+                      original.positions.byteSize()) == 0);
+  QVERIFY(back.diffuse.texels == original.diffuse.texels);
+  QVERIFY(back.mask.texels == original.mask.texels);
   const DocumentInfo info = describeDocument(back);
   QCOMPARE(info.euler, 2LL);
   QVERIFY(info.closed);
@@ -141,8 +148,9 @@ void ResizeTest::layersFollowAndStayInRange() {
     int allRed = 0, red = 0, allGrey = 0, grey = 0;
     for (int j = 0; j <= m; ++j)
       for (int i = 0; i <= m; ++i) {
-        // The taps: up, the 4 × 4 old samples around (i, j)·n/m; down, 2r − 1 either side.
-        const int reach = m > n ? 2 : 2 * (n / m) - 1;
+        // The taps: up, the 4 × 4 old samples around (i, j)·n/m; down, 4 either side per
+        // halving, 4·(r − 1) in all.
+        const int reach = m > n ? 2 : 4 * (n / m - 1);
         const int ci = m > n ? i * n / m : i * (n / m), cj = m > n ? j * n / m : j * (n / m);
         float lo = 1, hi = 0;
         for (int b = cj - reach; b <= cj + reach; ++b)
@@ -158,6 +166,63 @@ void ResizeTest::layersFollowAndStayInRange() {
     QCOMPARE(red, allRed);
     QCOMPARE(grey, allGrey);
     QVERIFY(seamsExact(r));
+  }
+}
+
+// A spike 2 long on a unit sphere, its samples spread along it (edges ~60× the median): what
+// fourteen push clicks leave.
+Document spiked(int n) {
+  GeometryImage image = makeBaseShape(BaseShape::Sphere, n);
+  const Vec3f axis = normalize(Vec3f{0.6f, -0.4f, 0.5f});
+  for (Vec4f& p : image.texels()) {
+    const float angle = std::acos(std::clamp(dot(normalize(p.xyz()), axis), -1.0f, 1.0f));
+    if (const float t = 1 - angle / 0.25f; t > 0) {
+      const Vec3f q = p.xyz() + axis * (2.0f * t * t * t);
+      p = {q.x, q.y, q.z, 0};
+    }
+  }
+  return makeDocument(std::move(image));
+}
+
+void ResizeTest::checksItsOwnResult() {
+  const Document spike = spiked(128);
+  const TriangleMesh surface = extractMesh(spike.positions);
+  // Up: Catmull-Rom alone swings out beside the spike's long edges; the limit keeps the surface.
+  const ResizeResult up = resizeAndCheck(spike, {.size = 256});
+  qInfo("spike 128 -> 256: %s, moved RMS %.5f %%, Hausdorff %.4f %% %s",
+        up.changed ? "changed" : "unchanged", 100 * up.moved.rms, 100 * up.moved.hausdorff,
+        up.reason.c_str());
+  QVERIFY2(up.changed, up.reason.c_str());
+  QCOMPARE(up.document.size(), 256);
+  // Without the limit, `octaclay-cli resize` 256 -> 512 moved the snake-hook limb by 2.5 % of
+  // the diagonal (Hausdorff) and the push spike by 2.3 %.
+  QVERIFY(up.moved.rms <= 1e-4 && up.moved.hausdorff <= 1e-3);
+  // The figures are the result's: measured again, other points.
+  const SurfaceDistance again = compareSurfaces(surface, extractMesh(up.document.positions),
+                                                {.samplesPerSurface = 100'000, .seed = 7});
+  QVERIFY(again.hausdorff <= 1.05e-3);
+  QVERIFY(seamsExact(resizeAndCheck(sculpted(64), {.size = 128}).document));
+
+  // Down: 32 cannot hold the spike; the document comes back unchanged and says why.
+  const ResizeResult down = resizeAndCheck(spike, {.size = 32});
+  qInfo("spike 128 -> 32: %s, moved RMS %.4f %%, Hausdorff %.3f %% %s",
+        down.changed ? "changed" : "unchanged", 100 * down.moved.rms, 100 * down.moved.hausdorff,
+        down.reason.c_str());
+  QVERIFY(!down.changed);
+  QVERIFY2(down.reason.find("surface would move") != std::string::npos, down.reason.c_str());
+  QCOMPARE(down.document.size(), 128);
+  QVERIFY(std::memcmp(down.document.positions.texels().data(), spike.positions.texels().data(),
+                      spike.positions.byteSize()) == 0);
+  // The check can fail on a smooth sphere too, when asked for more than a grid can give.
+  const ResizeResult strict = resizeAndCheck(sculpted(64), {.size = 128, .rmsTolerance = 1e-12});
+  QVERIFY(!strict.changed);
+  QVERIFY(!strict.reason.empty());
+  // A smooth surface passes both ways.
+  for (int m : {256, 32}) {
+    const ResizeResult r =
+        resizeAndCheck(makeDocument(makeBaseShape(BaseShape::Sphere, 64)), {.size = m});
+    QVERIFY2(r.changed, r.reason.c_str());
+    QCOMPARE(r.document.size(), m);
   }
 }
 

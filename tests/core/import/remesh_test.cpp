@@ -100,8 +100,9 @@ void RemeshTest::givesTheLimbItsSamples() {
         before.fairShare, after.fairShare, before.spacingRatio, after.spacingRatio,
         r.before.longestOverMedian, r.after.longestOverMedian, 100 * r.moved.rms,
         100 * r.moved.hausdorff, ms, r.parameterizeMs);
-  // Measured: fair share 0.13 -> 0.63, spacing ratio 2.8 -> 1.3, longest/median 8.0 -> 2.9,
-  // RMS 0.0037 %, Hausdorff 0.34 % (the targets: ≥ 0.7, ≤ 1.5, ≤ 8, 0.01 %, 0.2 %).
+  // Measured: fair share 0.13 -> 0.73, spacing ratio 2.8 -> 1.18, longest/median 8.0 -> 3.3,
+  // RMS 0.0024 %, Hausdorff 0.24 % (the targets, for the snake-hook limb that
+  // cli_resample_test remeshes: ≥ 0.7, ≤ 1.5, ≤ 8, 0.01 %, 0.2 %).
   QVERIFY(before.fairShare < 0.2);
   QVERIFY(after.fairShare >= 0.6);
   QVERIFY(after.spacingRatio <= 1.5);
@@ -143,9 +144,9 @@ void RemeshTest::carriesPaintToTheSameSurfacePoints() {
 
   // A stripe with hard edges on the stretched limb: each old sample against the new surface's
   // colour at its closest point. An old sample there covers a long cell, and its colour peak
-  // is resampled once more by the denser new samples: measured 97.4 % of the whole area but
-  // only 30.5 % of the painted area within ΔE 5 (the target, 98 %, is not met on hard
-  // edges; a brush's soft edge does better: cli_resample_test, 97.2 %).
+  // is resampled once more by the denser new samples: measured 98.5 % of the whole area but
+  // only 66 % of the painted area within ΔE 5 (the target, 98 %, is not met on hard
+  // edges; a brush's soft edge is: cli_resample_test, 100 %).
   Document limb = limbDocument(128);
   paintStripe(limb);
   const RemeshResult r = remeshDocument(limb);
@@ -157,7 +158,7 @@ void RemeshTest::carriesPaintToTheSameSurfacePoints() {
   QVERIFY(r.diffuse.painted);
   QVERIFY(r.diffuse.shareWithin >= 0.95);
   QVERIFY(r.diffuse.paintedArea > 0.005);
-  QVERIFY(r.diffuse.paintedShareWithin >= 0.25);
+  QVERIFY(r.diffuse.paintedShareWithin >= 0.5);
   QVERIFY(r.diffuse.meanError <= 0.5);
   QVERIFY(!r.feature.painted);
 }
@@ -177,9 +178,11 @@ void RemeshTest::changesSizeBothWays() {
 void RemeshTest::importedMeshesStayPut_data() {
   QTest::addColumn<QString>("file");
   QTest::addColumn<int>("n");
-  QTest::newRow("bunny_npm 64") << "bunny_npm.obj" << 64;
-  QTest::newRow("spot 64") << "spot.obj" << 64;
-  QTest::newRow("spot 256") << "spot.obj" << 256;
+  // The shared meshes of under 10⁴ vertices (the larger ones take tens of seconds to import).
+  for (const char* file : {"spot.obj", "blub.obj", "bunny_npm.obj", "wingnut.obj",
+                           "max_planck_decimated.obj", "fandisk.obj", "airplane.obj"})
+    for (int n : {64, 256})
+      QTest::newRow(qPrintable(QString("%1 %2").arg(file).arg(n))) << QString(file) << n;
 }
 
 void RemeshTest::importedMeshesStayPut() {

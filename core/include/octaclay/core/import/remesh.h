@@ -19,6 +19,10 @@ struct RemeshOptions {
   /// up to about half a new spacing (docs/import.md gives the figures of remeshed cases).
   double rmsTolerance = 5e-4;
   double hausdorffTolerance = 1e-2;
+  /// Sharp tips and creases: an old vertex farther than this (a fraction of the diagonal) from
+  /// the new surface pulls the new sample nearest it onto itself, so the new surface passes
+  /// through it (the Hausdorff distance is set by such vertices). Infinity snaps none.
+  double featureTolerance = 2.5e-4;
   /// Random points per surface of the surface-distance measure (besides the vertices).
   std::size_t samplesPerSurface = 100'000;
 };
@@ -44,18 +48,20 @@ struct RemeshResult {
   SurfaceDistance moved;        ///< old surface against the remeshed one
   CarriedLayer diffuse, feature, mask;
   int flipped = 0; ///< triangles the spherical map folds (refused when not 0)
+  int snapped = 0; ///< new samples moved onto a sharp old vertex (RemeshOptions::featureTolerance)
   double parameterizeMs = 0, resampleMs = 0, measureMs = 0;
 };
 
 /// Mesh ▸ Remesh and `octaclay-cli remesh`: a new, even sampling of the document's surface.
 /// The surface (extractMesh) is parameterized over the sphere as `import` does
-/// (validateGenus0Mesh, parameterizeOnSphere), from N = 256 on coarse to fine along the image's
-/// own grid: the grid of 128 parameterized whole, each finer level placed from the one below
-/// and relaxed where it still moves (src/import/spherical_image.h); resampled through the
-/// octahedron at the new N
-/// (locateOctahedralSamples) and every layer carried from the old surface: each new sample lies
-/// on an old triangle and takes its layers' values there, barycentrically (the closest point of
-/// the old surface is the sample itself). Identified samples get equal bits. The result is
+/// (validateGenus0Mesh, parameterizeOnSphere), from N = 128 on coarse to fine along the image's
+/// own grid: the grid of 64 parameterized whole, each finer level placed from the one below
+/// and, up to 256, relaxed where it still moves (src/import/spherical_image.h); resampled
+/// through the octahedron at the new N (locateOctahedralSamples), the new samples nearest the
+/// old surface's sharp tips and creases moved onto them (RemeshOptions::featureTolerance), and
+/// every layer carried from the old surface: each new sample lies on an old triangle and takes
+/// its layers' values there, barycentrically (the closest point of the old surface is the
+/// sample itself). Identified samples get equal bits. The result is
 /// checked: when the surface moved beyond the tolerances, or the map folds, the document comes
 /// back unchanged with the reason. progress (fraction done; false cancels) is called on the
 /// caller's thread. Throws Error(InvalidArgument) for an invalid size, Error(InvalidInput) for a
