@@ -403,18 +403,21 @@ RemeshResult remeshDocument(const Document& document, const RemeshOptions& optio
   // The surface as a mesh, one vertex per canonical sample (VertexIndex's numbering).
   auto start = Clock::now();
   const TriangleMesh surface = extractMesh(document.positions);
+  // The grid's mesh is closed, manifold and genus 0 by construction, with no unused vertex and
+  // no repeated corner: all validateGenus0Mesh would do is turn an inward-facing one around (at
+  // the cost of sorting its 6N² half-edges, a tenth of the time at N = 1024), or refuse one
+  // that encloses no volume.
   ValidatedMesh validated;
-  try {
-    validated = validateGenus0Mesh(surface);
-  } catch (const Error& e) {
+  validated.mesh = surface;
+  const double volume = signedVolume(surface);
+  if (!(std::abs(volume) > 0)) {
     out.document = document;
-    out.reason = std::string("the surface cannot be parameterized: ") + e.what();
+    out.reason = "the surface cannot be parameterized: it encloses no volume";
     return out;
   }
-  // Validation only turns faces here (the grid's mesh has no unused vertex and no repeated
-  // corner): the vertices keep their numbers.
-  if (validated.mesh.positions.size() != surface.positions.size())
-    throw Error(ErrorKind::InvalidInput, "the surface's mesh lost vertices in validation");
+  if (volume < 0)
+    for (auto& t : validated.mesh.triangles)
+      std::swap(t[1], t[2]);
   SphericalMap map;
   try {
     map = detail::parameterizeImageOnSphere(document.positions, validated.mesh, [&](float f) {
