@@ -53,8 +53,8 @@ struct RemeshResult {
 };
 
 /// Mesh ▸ Remesh and `octaclay-cli remesh`: a new, even sampling of the document's surface.
-/// The surface (extractMesh) is parameterized over the sphere as `import` does
-/// (validateGenus0Mesh, parameterizeOnSphere), from N = 128 on coarse to fine along the image's
+/// The surface (extractMesh, turned outward) is parameterized over the sphere as `import` does
+/// (parameterizeOnSphere), from N = 128 on coarse to fine along the image's
 /// own grid: the grid of 64 parameterized whole, each finer level placed from the one below
 /// and, up to 256, relaxed where it still moves (src/import/spherical_image.h); resampled
 /// through the octahedron at the new N (locateOctahedralSamples), the new samples nearest the
