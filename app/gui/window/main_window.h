@@ -106,8 +106,9 @@ public:
   /// brings it back bit for bit); the path, the camera and the saved file stay. When the
   /// remesh's own check leaves the model unchanged the status bar says why and no step is made.
   bool remesh(int n = 0, std::shared_ptr<TaskControl> control = nullptr);
-  /// Mesh ▸ Resolution…: core::resizeDocument to n, run and applied as remesh() is ("Resolution
-  /// N → n"). n equal to the current N changes nothing and says so.
+  /// Mesh ▸ Resolution…: core::resizeAndCheck to n (unchanged, with the reason, when the result
+  /// would be worse), run and applied as remesh() is ("Resolution N → n"). n equal to the current N
+  /// changes nothing and says so.
   bool changeResolution(int n, std::shared_ptr<TaskControl> control = nullptr);
   /// Draws the viewport offscreen at size (device pixels) with or without its background
   /// (transparent) and writes it to path as PNG; the status bar says what happened.
