@@ -128,11 +128,18 @@ public:
 
 private:
   struct ActiveStroke;
+  struct KeepDetailRun;
 
+  /// Keep detail as a dragging stroke goes (snake hook): after its 4th dab, then each time its
+  /// dab count doubles, the samples near what its dabs changed so far relax
+  /// (core::relaxChangedStep), written into the stroke (gpu::StrokeSession::applyBetweenDabs)
+  /// so that it stays one undo step. The modeller's stroke and strokeAlongPath call it alike.
+  void relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
+                        const gpu::BrushManifest& brush, float radius, int dabs);
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
   // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
   core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush, float radius,
-                               const std::vector<std::array<float, 2>>& pinnedPath = {});
+                               KeepDetailRun& run);
 
   bool keepDetail_ = true;
   core::Stroke lastRelaxation_;
