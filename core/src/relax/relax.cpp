@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -254,39 +255,6 @@ TriangleMesh movedCellsMesh(int n, const std::vector<Vec3f>& positions,
   return mesh;
 }
 
-// The grid's triangles over the cells marked in `cells` (n × n, row-major: 0 none), vertices at
-// `positions` (wrapped through the seams), compacted; `samples` gets each vertex's sample and
-// `sampled` each triangle's flag: whether its cell is marked 2.
-TriangleMesh cellsMesh(int n, const std::vector<Vec3f>& positions,
-                       const std::vector<std::uint8_t>& cells, std::vector<std::size_t>& samples,
-                       std::vector<std::uint8_t>& sampled) {
-  TriangleMesh mesh;
-  std::vector<std::uint32_t> vertex(positions.size(), ~0u);
-  const std::size_t side = static_cast<std::size_t>(n) + 1;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const std::uint8_t mark = cells[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
-                                      static_cast<std::size_t>(i)];
-      if (!mark) continue;
-      for (const auto& tri : cellTriangles(n, i, j)) {
-        std::array<std::uint32_t, 3> t{};
-        for (std::size_t v = 0; v < 3; ++v) {
-          const std::size_t k =
-              static_cast<std::size_t>(tri[v].j) * side + static_cast<std::size_t>(tri[v].i);
-          if (vertex[k] == ~0u) {
-            vertex[k] = static_cast<std::uint32_t>(mesh.positions.size());
-            mesh.positions.push_back(positions[k]);
-            samples.push_back(k);
-          }
-          t[v] = vertex[k];
-        }
-        mesh.triangles.push_back(t);
-        sampled.push_back(mark == 2);
-      }
-    }
-  return mesh;
-}
-
 double meshArea(const TriangleMesh& mesh) {
   double area = 0;
   for (const auto& t : mesh.triangles)
@@ -323,16 +291,69 @@ constexpr std::uint32_t kCheckLeaves = 256;
 // (nor found far: `far` takes the points beyond the same share).
 constexpr double kCheckSkip = 0.5;
 
-struct CheckSide {
+// One side's surface for the check: the grid's triangles over some cells (vertices wrapped
+// through the seams), its AABB tree, and where each cell's two triangles are in it.
+struct CheckSurface {
+  TriangleMesh mesh;
+  std::vector<std::size_t> samples;       ///< per vertex, its grid sample
+  std::vector<std::int32_t> cellTriangle; ///< per cell × 2 (its triangles), mesh index or -1
+  std::vector<std::uint32_t> cellOf;      ///< per mesh triangle, cell × 2 + which
   detail::AabbTree tree;
-  std::vector<detail::Vec3d> points;
+  std::vector<std::uint32_t> leafOf; ///< per mesh triangle, its index in tree.triangles()
+};
+
+// The surface over the cells marked (non-zero) in `cells` (n × n, row-major).
+CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
+                          const std::vector<std::uint8_t>& cells) {
+  TriangleMesh mesh;
   std::vector<std::size_t> samples;
-  /// Per point, the mesh triangle it lies on (a vertex: one of its triangles). Both sides are
-  /// built over the same cells in the same order, so it names the other side's triangle
-  /// nearest to it too: the query's first bound.
-  std::vector<std::uint32_t> triangles;
-  /// Per mesh triangle, its index in tree.triangles() (what closest() takes as a hint).
-  std::vector<std::uint32_t> leafOf;
+  std::vector<std::int32_t> cellTriangle(2 * cells.size(), -1);
+  std::vector<std::uint32_t> cellOf;
+  std::vector<std::uint32_t> vertex(positions.size(), ~0u);
+  const std::size_t side = static_cast<std::size_t>(n) + 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::size_t cell =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
+      if (!cells[cell]) continue;
+      std::size_t which = 0;
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        std::array<std::uint32_t, 3> t{};
+        for (std::size_t v = 0; v < 3; ++v) {
+          const std::size_t k =
+              static_cast<std::size_t>(tri[v].j) * side + static_cast<std::size_t>(tri[v].i);
+          if (vertex[k] == ~0u) {
+            vertex[k] = static_cast<std::uint32_t>(mesh.positions.size());
+            mesh.positions.push_back(positions[k]);
+            samples.push_back(k);
+          }
+          t[v] = vertex[k];
+        }
+        cellTriangle[2 * cell + which] = static_cast<std::int32_t>(mesh.triangles.size());
+        cellOf.push_back(static_cast<std::uint32_t>(2 * cell + which));
+        mesh.triangles.push_back(t);
+        ++which;
+      }
+    }
+  detail::AabbTree tree(mesh);
+  std::vector<std::uint32_t> leafOf(mesh.triangles.size());
+  const auto ids = tree.triangleIds();
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    leafOf[ids[k]] = static_cast<std::uint32_t>(k);
+  return {std::move(mesh),   std::move(samples), std::move(cellTriangle),
+          std::move(cellOf), std::move(tree),    std::move(leafOf)};
+}
+
+// The points measured on one side: the vertices (every k-th, at most kCheckVertices) and
+// kCheckAreaPoints area-weighted random points of the surface's triangles whose cells are
+// marked 2 in `cells`.
+struct CheckPoints {
+  std::vector<detail::Vec3d> points;
+  std::vector<std::size_t>
+      samples; ///< the grid sample each stands for (a random point's nearest corner)
+  /// Per point, its cell × 2 + which triangle (a vertex: one of its triangles): the same cell's
+  /// triangle on the other side is the query's first bound.
+  std::vector<std::uint32_t> cellTriangles;
   /// Per point, the samples whose moves bound its distance to the other side: a vertex's own
   /// (three times), a random point's triangle's corners.
   std::vector<std::array<std::size_t, 3>> corners;
@@ -340,17 +361,15 @@ struct CheckSide {
   double sampledArea = 0;       ///< of the triangles the random points are drawn on
 };
 
-CheckSide checkSide(const TriangleMesh& mesh, const std::vector<std::size_t>& vertexSamples,
-                    const std::vector<std::uint8_t>& sampled, std::uint64_t seed) {
-  CheckSide side{detail::AabbTree(mesh), {}, {}, {}, {}, {}};
-  side.leafOf.resize(mesh.triangles.size());
-  const auto ids = side.tree.triangleIds();
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    side.leafOf[ids[k]] = static_cast<std::uint32_t>(k);
+CheckPoints checkPoints(const CheckSurface& surface, const std::vector<std::uint8_t>& cells,
+                        std::uint64_t seed) {
+  const TriangleMesh& mesh = surface.mesh;
+  const auto sampled = [&](std::size_t t) { return cells[surface.cellOf[t] / 2] == 2; };
+  CheckPoints out;
   const std::size_t count = mesh.positions.size();
   std::vector<std::uint32_t> triangleOf(count, ~0u);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (sampled[t])
+    if (sampled(t))
       for (const std::uint32_t v : mesh.triangles[t])
         triangleOf[v] = static_cast<std::uint32_t>(t);
   std::size_t used = 0;
@@ -359,23 +378,24 @@ CheckSide checkSide(const TriangleMesh& mesh, const std::vector<std::size_t>& ve
   const std::size_t stride = std::max<std::size_t>(1, (used + kCheckVertices - 1) / kCheckVertices);
   for (std::size_t v = 0, u = 0; v < count; ++v) {
     if (triangleOf[v] == ~0u || u++ % stride != 0) continue;
-    side.points.emplace_back(mesh.positions[v]);
-    side.samples.push_back(vertexSamples[v]);
-    side.triangles.push_back(triangleOf[v]);
-    side.corners.push_back({vertexSamples[v], vertexSamples[v], vertexSamples[v]});
+    const std::size_t k = surface.samples[v];
+    out.points.emplace_back(mesh.positions[v]);
+    out.samples.push_back(k);
+    out.cellTriangles.push_back(surface.cellOf[triangleOf[v]]);
+    out.corners.push_back({k, k, k});
   }
-  side.vertexPoints = side.points.size();
+  out.vertexPoints = out.points.size();
   std::vector<double> cumulative(mesh.triangles.size());
   double total = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
-    if (sampled[t])
+    if (sampled(t))
       total += 0.5 * double(length(cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
                                          mesh.positions[tri[2]] - mesh.positions[tri[0]])));
     cumulative[t] = total;
   }
-  side.sampledArea = total;
-  if (!(total > 0)) return side;
+  out.sampledArea = total;
+  if (!(total > 0)) return out;
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   // Drawn in the order of the mesh's triangles (sorted), so consecutive queries are near.
@@ -393,13 +413,14 @@ CheckSide checkSide(const TriangleMesh& mesh, const std::vector<std::size_t>& ve
     const auto& tri = mesh.triangles[t];
     const detail::Vec3d a(mesh.positions[tri[0]]), b(mesh.positions[tri[1]]),
         c(mesh.positions[tri[2]]);
-    side.points.push_back(a + (b - a) * u + (c - a) * v);
+    out.points.push_back(a + (b - a) * u + (c - a) * v);
     const double w0 = 1 - u - v;
-    side.samples.push_back(vertexSamples[tri[w0 >= u && w0 >= v ? 0 : u >= v ? 1 : 2]]);
-    side.triangles.push_back(static_cast<std::uint32_t>(t));
-    side.corners.push_back({vertexSamples[tri[0]], vertexSamples[tri[1]], vertexSamples[tri[2]]});
+    out.samples.push_back(surface.samples[tri[w0 >= u && w0 >= v ? 0 : u >= v ? 1 : 2]]);
+    out.cellTriangles.push_back(surface.cellOf[t]);
+    out.corners.push_back(
+        {surface.samples[tri[0]], surface.samples[tri[1]], surface.samples[tri[2]]});
   }
-  return side;
+  return out;
 }
 
 // Distances from `from`'s points to the surface of `to`: the largest and the sum of squares
@@ -411,12 +432,13 @@ struct CheckSums {
 };
 
 // Without `far`, the measure stops at the first point farther than `fail` (the try fails: its
-// figures are then a lower bound). A point whose corners (CheckSide::corners) moved by at most
+// figures are then a lower bound). A point whose corners (CheckPoints::corners) moved by at most
 // `skip` (`moves`, per sample, object units) is not queried: the point of the other surface
 // with its barycentric weights lies no farther than the farthest corner move, which counts as
 // its distance (an upper bound: the figures stay conservative).
-CheckSums measureSide(const CheckSide& from, const CheckSide& toSide, double limit, double fail,
-                      const std::vector<float>& moves, double skip, std::vector<std::size_t>* far) {
+CheckSums measureSide(const CheckPoints& from, const CheckSurface& toSide, double limit,
+                      double fail, const std::vector<float>& moves, double skip,
+                      std::vector<std::size_t>* far) {
   const detail::AabbTree& to = toSide.tree;
   std::atomic<bool> failed{false};
   const std::size_t n = from.points.size();
@@ -440,8 +462,11 @@ CheckSums measureSide(const CheckSide& from, const CheckSide& toSide, double lim
               s.count += random;
               continue;
             }
-            const detail::AabbTree::Hit hit =
-                to.closest(from.points[k], toSide.leafOf[from.triangles[k]], kCheckLeaves);
+            const std::int32_t t = toSide.cellTriangle[from.cellTriangles[k]];
+            const detail::AabbTree::Hit hit = to.closest(
+                from.points[k],
+                t >= 0 ? toSide.leafOf[static_cast<std::size_t>(t)] : detail::AabbTree::noTriangle,
+                kCheckLeaves);
             if (hit.distanceSquared > fail * fail) failed.store(true, std::memory_order_relaxed);
             s.maxSquared = std::max(s.maxSquared, hit.distanceSquared);
             s.sumSquared += random ? hit.distanceSquared : 0.0;
@@ -467,12 +492,12 @@ CheckSums measureSide(const CheckSide& from, const CheckSide& toSide, double lim
 // measured over the cells that changed (the rest of the surface keeps its bits; the RMS is
 // taken over the whole surface's area). Like evenOut, the move is kept, or scaled back (1/2,
 // 1/4, 1/8: a move that cuts across a sharp feature, a crease's valley or the coarse facets of
-// a limb pulled far in one stroke), or dropped (every offset zero). The old surface's points
-// and tree are built once for every try. `far`, when given, gets the samples whose points the
-// full move takes farther than half the Hausdorff tolerance (where it cuts: a pulled limb's tip).
-// Returns the step kept (0: none).
-double keepWithinTolerance(const Document& document, detail::OffsetField& field,
-                           std::vector<std::size_t>* far = nullptr) {
+// a limb pulled far in one stroke), or dropped (every offset zero). `old` is the old surface over
+// every cell that may move and the ring around them, its tree built once per relaxation. `far`,
+// when given, gets the samples whose points the full move takes farther than half the Hausdorff
+// tolerance (where it cuts: a pulled limb's tip). Returns the step kept (0: none).
+double keepWithinTolerance(const Document& document, const CheckSurface& old,
+                           detail::OffsetField& field, std::vector<std::size_t>* far = nullptr) {
   // Collecting where the full move cuts: only the full move is tried (the caller holds those
   // samples and solves again rather than scale the move down).
   const std::vector<double> steps =
@@ -483,8 +508,8 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field,
   std::vector<Vec3f> before(image.texels().size());
   for (std::size_t k = 0; k < before.size(); ++k)
     before[k] = image.texels()[k].xyz();
-  const TriangleMesh old = movedCellsMesh(n, before, field);
-  if (old.triangles.empty()) return 0;
+  const TriangleMesh movedMesh = movedCellsMesh(n, before, field);
+  if (movedMesh.triangles.empty()) return 0;
   double total = 0; // the whole surface's area, straight from the grid (no mesh built)
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
@@ -493,7 +518,7 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field,
         total +=
             0.5 * double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
       }
-  const double movedArea = meshArea(old);
+  const double movedArea = meshArea(movedMesh);
   const double share = total > 0 ? std::min(1.0, movedArea / total) : 1.0;
   const double fail = kKeepDetailHausdorff * diag, limit = 0.5 * fail, skip = kCheckSkip * fail;
   const std::size_t side = static_cast<std::size_t>(n) + 1;
@@ -541,20 +566,17 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field,
     double hausdorff = skip,
            rms = std::sqrt(skippedSquares / std::max(movedArea, 1e-30)) * std::sqrt(share);
     if (any) {
-      std::vector<std::size_t> oldSamples, newSamples;
-      std::vector<std::uint8_t> oldSampled, newSampled;
-      const TriangleMesh oldMesh = cellsMesh(n, before, cells, oldSamples, oldSampled);
-      const TriangleMesh newMesh = cellsMesh(n, after, cells, newSamples, newSampled);
-      const CheckSide oldSide = checkSide(oldMesh, oldSamples, oldSampled, 1);
-      const CheckSide newSide = checkSide(newMesh, newSamples, newSampled, 2);
+      const CheckSurface moved = checkSurface(n, after, cells);
+      const CheckPoints oldPoints = checkPoints(old, cells, 1);
+      const CheckPoints newPoints = checkPoints(moved, cells, 2);
       std::vector<std::size_t>* cuts = step == 1.0 ? far : nullptr;
-      const CheckSums a = measureSide(oldSide, newSide, limit, fail, moves, skip, cuts);
+      const CheckSums a = measureSide(oldPoints, moved, limit, fail, moves, skip, cuts);
       if (!cuts && a.maxSquared > fail * fail) continue;
-      const CheckSums b = measureSide(newSide, oldSide, limit, fail, moves, skip, cuts);
+      const CheckSums b = measureSide(newPoints, old, limit, fail, moves, skip, cuts);
       hausdorff = std::max(skip, std::sqrt(std::max(a.maxSquared, b.maxSquared)));
       // The RMS over the moved cells' area: the measured cells' mean square by their area, the
       // others' bound by theirs.
-      const double measured = std::min(movedArea, oldSide.sampledArea);
+      const double measured = std::min(movedArea, oldPoints.sampledArea);
       const double meanSquared =
           (a.sumSquared + b.sumSquared) / double(std::max<std::size_t>(1, a.count + b.count));
       rms = std::sqrt((measured * meanSquared + skippedSquares) / std::max(movedArea, 1e-30)) *
@@ -693,6 +715,23 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
   // again around them, up to kHoldAttempts times; the try that keeps the largest step wins.
   const detail::OffsetField unsolved = field;
   detail::OffsetField best = field; // nothing moved
+  // The old surface over every cell with a corner that may move, and the ring around them (where
+  // a moved point's nearest old point may lie): built once for every try.
+  std::vector<std::uint8_t> region(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      bool free = false;
+      for (int dj = -1; dj <= 2 && !free; ++dj)
+        for (int di = -1; di <= 2 && !free; ++di)
+          if (i + di >= 0 && j + dj >= 0 && i + di <= n && j + dj <= n)
+            free = unsolved.free[field.index(i + di, j + dj)] != 0;
+      region[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+             static_cast<std::size_t>(i)] = free;
+    }
+  std::vector<Vec3f> was(document.positions.texels().size());
+  for (std::size_t k = 0; k < was.size(); ++k)
+    was[k] = document.positions.texels()[k].xyz();
+  const CheckSurface old = checkSurface(n, was, region);
   double bestStep = 0;
   std::vector<Sample> held;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
@@ -703,7 +742,7 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
                          kKeepDetailDonorEdge * median, true, {});
     std::vector<std::size_t> far;
     const double step =
-        keepWithinTolerance(document, tried, attempt < kHoldAttempts ? &far : nullptr);
+        keepWithinTolerance(document, old, tried, attempt < kHoldAttempts ? &far : nullptr);
     if (step > bestStep) {
       best = std::move(tried);
       bestStep = step;
