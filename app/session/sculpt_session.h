@@ -102,12 +102,15 @@ public:
 
   /// Keep detail (on by default): after a sculpt stroke stretched the positions it changed, the
   /// samples within core::keepDetailMargin of the changed texels flow toward the stretch
-  /// (core::relaxChangedStep); every other sample keeps its bits. The stroke and the
-  /// relaxation are one undo step. Applies to finishStroke() and strokeAlongPath().
+  /// (core::relaxChangedStep); every other sample keeps its bits. A dragging stroke (snake hook)
+  /// also relaxes as it goes (relaxBetweenDabs). The stroke and its relaxations are one undo
+  /// step. Applies to finishStroke() and strokeAlongPath() alike.
   void setKeepDetail(bool on) { keepDetail_ = on; }
   bool keepDetail() const { return keepDetail_; }
-  /// The relaxation keep-detail made after the last stroke (no tiles when it made none): its
-  /// Before side is the surface as the stroke left it (benchmarks measure how far it moved).
+  /// What keep-detail's relaxations changed in the last stroke, during it (a dragging brush)
+  /// and after it, as one step (no tiles when none moved): its tiles are what to redraw. After a
+  /// stroke relaxed only at its end, its Before side is the surface as the stroke left it
+  /// (benchmarks measure how far it moved).
   const core::Stroke& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
