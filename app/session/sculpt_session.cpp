@@ -11,8 +11,23 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 
 namespace octaclay::app {
+
+// Keep-detail's state over one stroke: the relaxations made between its dabs.
+struct SculptSession::KeepDetailRun {
+  std::vector<std::array<float, 2>> pinnedPath; ///< a scripted stroke's path points
+  int relaxedAt = 0; ///< the dab count at the last relaxation between dabs
+  /// The samples the dabs changed so far ((N+1)²; empty: none known yet): what each relaxation
+  /// grows its region from. What relaxations moved is not in it (the region would creep outward
+  /// by a margin each time) unless a dab changed it again.
+  std::vector<std::uint8_t> dabChanged;
+  /// Where the relaxations left the samples they moved (index → position), to tell a dab's
+  /// change from theirs.
+  std::unordered_map<std::size_t, core::Vec4f> relaxed;
+  core::Stroke relaxations; ///< what they changed, as one step
+};
 
 struct SculptSession::ActiveStroke {
   std::string brushId;
@@ -28,6 +43,7 @@ struct SculptSession::ActiveStroke {
   std::vector<Move> queue;
   bool failed = false; // a dab threw: the engine restored the layers, no more dabs
   float reach = 0;     // the largest radius a dab used (object units): keep-detail's margin
+  KeepDetailRun keep;
 };
 
 SculptSession::SculptSession() = default;
@@ -85,6 +101,9 @@ void SculptSession::beginStroke(const std::string& id, const BrushSettings& sett
   if (id == settings.brushId) s.parameters = settings.parameters;
   s.viewEye = eye; // splats project from here
   stroke->stroke = std::make_unique<gpu::StrokeSession>(*engine_, *document_, stroke->manifest, s);
+  stroke->stroke->observeDabs([this, active = stroke.get()](int dabs) {
+    relaxBetweenDabs(active->keep, *active->stroke, active->manifest, active->reach, dabs);
+  });
   stroke_ = std::move(stroke);
 }
 
@@ -143,7 +162,7 @@ std::string SculptSession::finishStroke() {
   const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
   core::Stroke record = ending->stroke->finish(label);
   if (dabs == 0 || record.tiles.empty()) return {};
-  record = keepDetailAfter(std::move(record), ending->manifest, ending->reach);
+  record = keepDetailAfter(std::move(record), ending->manifest, ending->reach, ending->keep);
   history_.record(std::move(record));
   return label;
 }
@@ -151,11 +170,16 @@ std::string SculptSession::finishStroke() {
 gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
                                                  const gpu::StrokeSettings& settings,
                                                  const std::function<void(int, int)>& progress) {
-  gpu::StrokeResult result = gpu::runStroke(*engine_, *document_, brush, settings, progress);
-  const auto start = std::chrono::steady_clock::now();
   // The path's points stay on their surface points, so a script that dabs there again (a
   // limb pulled by repeated clicks) finds the same spot after the relaxation.
-  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.radius, settings.path);
+  KeepDetailRun keep;
+  keep.pinnedPath = settings.path;
+  gpu::StrokeResult result = gpu::runStroke(
+      *engine_, *document_, brush, settings, progress, [&](gpu::StrokeSession& stroke, int dabs) {
+        relaxBetweenDabs(keep, stroke, brush, settings.radius, dabs);
+      });
+  const auto start = std::chrono::steady_clock::now();
+  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.radius, keep);
   result.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -188,29 +212,104 @@ std::vector<std::uint8_t> changedSamples(const core::Stroke& record, int side) {
   return changed;
 }
 
-} // namespace
+// Keep-detail's first relaxation during a dragging stroke (snake hook), after this many dabs.
+constexpr int kFirstRelaxationDab = 4;
 
-core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
-                                            float radius,
-                                            const std::vector<std::array<float, 2>>& pinnedPath) {
-  lastRelaxation_ = {};
-  if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
-    return record;
-  const int n = document_->size();
-  const std::vector<std::uint8_t> changed = changedSamples(record, n + 1);
-  if (changed.empty()) return record;
+core::RelaxOptions pinOptions(const std::vector<std::array<float, 2>>& pinnedPath, int n) {
   core::RelaxOptions options;
   for (const auto& uv : pinnedPath)
     options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
                               static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
-  lastRelaxation_ = core::relaxChangedStep(
-      document_->document(), changed,
-      core::keepDetailMargin(document_->document().positions, radius), record.label, options);
-  if (lastRelaxation_.tiles.empty()) return record;
+  return options;
+}
+
+// Adds to dabChanged ((N+1)², allocated on first use) the samples the dabs changed: those
+// `soFar` (the stroke's record so far) changed, except where a relaxation left them (`relaxed`)
+// and no dab moved them since. Returns whether any is marked.
+bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
+                   const std::unordered_map<std::size_t, core::Vec4f>& relaxed,
+                   const core::Stroke& soFar, const core::GeometryImage& positions) {
+  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
+  if (dabChanged.empty()) dabChanged.assign(side * side, 0);
+  for (const core::TileChange& t : soFar.tiles) {
+    if (t.layer != core::EditLayer::Positions) continue;
+    std::size_t at = 0;
+    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
+      at += t.runs[r];
+      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
+        const std::size_t i =
+            static_cast<std::size_t>(t.region.x) + at % static_cast<std::size_t>(t.region.width);
+        const std::size_t j =
+            static_cast<std::size_t>(t.region.y) + at / static_cast<std::size_t>(t.region.width);
+        const std::size_t index = j * side + i;
+        if (dabChanged[index]) continue;
+        const auto left = relaxed.find(index);
+        if (left == relaxed.end() || !(left->second == positions.texels()[index]))
+          dabChanged[index] = 1;
+      }
+    }
+  }
+  return std::find(dabChanged.begin(), dabChanged.end(), 1) != dabChanged.end();
+}
+
+// Notes where `step` (a relaxation, applied) left the positions it changed.
+void noteRelaxed(std::unordered_map<std::size_t, core::Vec4f>& relaxed, const core::Stroke& step,
+                 const core::GeometryImage& positions) {
+  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
+  const std::vector<std::uint8_t> moved = changedSamples(step, static_cast<int>(side));
+  for (std::size_t k = 0; k < moved.size(); ++k)
+    if (moved[k]) relaxed[k] = positions.texels()[k];
+}
+
+} // namespace
+
+void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
+                                     const gpu::BrushManifest& brush, float radius, int dabs) {
+  // At dab kFirstRelaxationDab, then each time the dab count doubles: a limb pulled in one
+  // stroke takes its samples in steps that each stay within the tolerance (one relaxation at
+  // the end must move them the limb's whole length: the tolerance leaves little of it), and a
+  // stroke of d dabs relaxes about log2(d / kFirstRelaxationDab) + 1 times.
+  if (!keepDetail_ || brush.category != gpu::Category::Sculpt ||
+      brush.stroke != gpu::StrokeKind::Drag ||
+      dabs < std::max(kFirstRelaxationDab, 2 * run.relaxedAt))
+    return;
+  run.relaxedAt = dabs;
+  const int n = document_->size();
+  const core::Document& document = document_->document();
+  if (!addDabChanges(run.dabChanged, run.relaxed, stroke.recordSoFar(brush.id), document.positions))
+    return;
+  const core::Stroke step = core::relaxChangedStep(
+      document, run.dabChanged, core::keepDetailMargin(document.positions, radius), brush.id,
+      pinOptions(run.pinnedPath, n));
+  if (step.tiles.empty()) return;
+  stroke.applyBetweenDabs(step);
+  noteRelaxed(run.relaxed, step, document.positions);
+  run.relaxations = run.relaxations.tiles.empty()
+                        ? step
+                        : core::combineSteps(run.relaxations, step, document, brush.id);
+}
+
+core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
+                                            float radius, KeepDetailRun& run) {
+  lastRelaxation_ = std::move(run.relaxations);
+  if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
+    return record;
+  const int n = document_->size();
+  if (!addDabChanges(run.dabChanged, run.relaxed, record, document_->document().positions))
+    return record;
+  const core::Stroke step =
+      core::relaxChangedStep(document_->document(), run.dabChanged,
+                             core::keepDetailMargin(document_->document().positions, radius),
+                             record.label, pinOptions(run.pinnedPath, n));
+  if (step.tiles.empty()) return record;
   const core::TileApplier apply = gpu::undoApplier(*document_);
-  for (const core::TileChange& t : lastRelaxation_.tiles)
+  for (const core::TileChange& t : step.tiles)
     t.apply(core::TileState::After, apply);
-  return core::combineSteps(record, lastRelaxation_, document_->document(), record.label);
+  lastRelaxation_ =
+      lastRelaxation_.tiles.empty()
+          ? step
+          : core::combineSteps(lastRelaxation_, step, document_->document(), record.label);
+  return core::combineSteps(record, step, document_->document(), record.label);
 }
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,

@@ -102,12 +102,15 @@ public:
 
   /// Keep detail (on by default): after a sculpt stroke stretched the positions it changed, the
   /// samples within core::keepDetailMargin of the changed texels flow toward the stretch
-  /// (core::relaxChangedStep); every other sample keeps its bits. The stroke and the
-  /// relaxation are one undo step. Applies to finishStroke() and strokeAlongPath().
+  /// (core::relaxChangedStep); every other sample keeps its bits. A dragging stroke (snake hook)
+  /// also relaxes as it goes (relaxBetweenDabs). The stroke and its relaxations are one undo
+  /// step. Applies to finishStroke() and strokeAlongPath() alike.
   void setKeepDetail(bool on) { keepDetail_ = on; }
   bool keepDetail() const { return keepDetail_; }
-  /// The relaxation keep-detail made after the last stroke (no tiles when it made none): its
-  /// Before side is the surface as the stroke left it (benchmarks measure how far it moved).
+  /// What keep-detail's relaxations changed in the last stroke, during it (a dragging brush)
+  /// and after it, as one step (no tiles when none moved): its tiles are what to redraw. After a
+  /// stroke relaxed only at its end, its Before side is the surface as the stroke left it
+  /// (benchmarks measure how far it moved).
   const core::Stroke& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
@@ -128,11 +131,18 @@ public:
 
 private:
   struct ActiveStroke;
+  struct KeepDetailRun;
 
+  /// Keep detail as a dragging stroke goes (snake hook): after its 4th dab, then each time its
+  /// dab count doubles, the samples near what its dabs changed so far relax
+  /// (core::relaxChangedStep), written into the stroke (gpu::StrokeSession::applyBetweenDabs)
+  /// so that it stays one undo step. The modeller's stroke and strokeAlongPath call it alike.
+  void relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
+                        const gpu::BrushManifest& brush, float radius, int dabs);
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
   // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
   core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush, float radius,
-                               const std::vector<std::array<float, 2>>& pinnedPath = {});
+                               KeepDetailRun& run);
 
   bool keepDetail_ = true;
   core::Stroke lastRelaxation_;

@@ -43,6 +43,7 @@ private slots:
   void aSnakeHookLegGainsOnEitherHalf_data();
   void aSnakeHookLegGainsOnEitherHalf();
   void theAnimalKeepsItsShareInEveryPart();
+  void aHookRelaxedAsItGoesIsOneUndoStep();
   void aCreaseOnOneLegLeavesTheRestAlone_data();
   void aCreaseOnOneLegLeavesTheRestAlone();
 
@@ -183,14 +184,16 @@ void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf_data() {
 }
 
 // bench_creature's back right leg alone, one snake-hook stroke at N = 256: 0.08 of its fair share
-// without keep-detail. Issue 30 bounds keep-detail by the relaxation's tolerance (0.1 % of the
-// diagonal, Hausdorff): the full move over the leg's coarse facets cuts them by 0.135 %, 1/4 of
-// it by 0.111 %, so 1/8 is kept (fair share 0.081 -> 0.097; before issue 30, with no bound,
-// 0.69). It never loses samples and its longest edge gets no longer. Its relaxation once took
-// samples off it (-z: 0.080, longest edge 30x the
-// median; +z: 0.073, 40x): the coarse levels moved the samples around the pinned start sample,
-// which lies between theirs, refining tore the cells at the pin and the fold repair put half the
-// offsets back to zero. On the -z half the relaxed rectangle also stopped at the image's border.
+// without keep-detail. Issue 30 bounds each relaxation by the tolerance (0.1 % of the diagonal,
+// Hausdorff). One relaxation after the stroke had to move the samples along the whole leg, over
+// its coarse facets: 1/8 of that move fitted (0.097). Relaxing as the stroke goes (after its 4th
+// dab, then each time its dab count doubles), holding the leg's tip where the full move cuts it,
+// the leg takes its samples in steps that fit: 0.32 on either half. It never loses samples and
+// its longest edge gets no longer. Its relaxation once took samples off it (-z: 0.080, longest
+// edge 30x the median; +z: 0.073, 40x): the coarse levels moved the samples around the pinned
+// start sample, which lies between theirs, refining tore the cells at the pin and the fold repair
+// put half the offsets back to zero. On the -z half the relaxed rectangle also stopped at the
+// image's border.
 void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf() {
   QFETCH(testing::CreatureLayout, layout);
   const auto [offShare, offLongest] = hookLeg(false, layout);
@@ -198,15 +201,16 @@ void KeepDetailTest::aSnakeHookLegGainsOnEitherHalf() {
   qInfo("snake-hook leg: fair share %.3f -> %.3f, longest edge %.1fx -> %.1fx the median", offShare,
         onShare, offLongest, onLongest);
   QVERIFY(offShare < 0.1);
-  QVERIFY(onShare > offShare);
+  QVERIFY(onShare >= 0.25);
   QVERIFY(onLongest < offLongest);
 }
 
 // Issue 23's target: the animal of bench_creature (four legs from the ball's lower half, two of
 // them from its -z half, and a neck, each one snake-hook stroke at N = 256): with keep-detail no
 // part holds less than 0.3 of its fair share of samples (each 0.09-0.14 without). Issue 30's
-// tolerance (the relaxation moves the surface by at most 0.1 % of the diagonal) keeps a fraction
-// of each stroke's move: every part holds at least what it holds without keep-detail.
+// tolerance (each relaxation moves the surface by at most 0.1 % of the diagonal) bounds each
+// step; relaxing as the stroke goes, every part holds at least 0.15 (measured: the legs
+// 0.19-0.43, the neck 1.57; one relaxation after each stroke gave the legs 0.09-0.10).
 void KeepDetailTest::theAnimalKeepsItsShareInEveryPart() {
   const gpu::BrushManifest& hook = *catalog_.find("snake-hook");
   app::SculptSession session;
@@ -224,8 +228,63 @@ void KeepDetailTest::theAnimalKeepsItsShareInEveryPart() {
   // Without keep-detail: bench_creature's figures (0.088 each leg, 0.143 the neck).
   for (std::size_t k = 0; k < parts.size(); ++k) {
     qInfo("%s: fair share %.3f", parts[k].name, sampling[k].fairShare);
-    QVERIFY2(sampling[k].fairShare >= (k < 4 ? 0.088 : 0.143), parts[k].name);
+    QVERIFY2(sampling[k].fairShare >= 0.15, parts[k].name);
   }
+}
+
+// A snake hook pulled through the modeller's path (the start queued, then the pointer's rays,
+// over several frames) on a painted ball: keep-detail relaxes as the stroke goes, and the
+// relaxations (positions and the paint they resample) are part of the stroke: one undo step that
+// gives back the ball bit for bit, and redo the result.
+void KeepDetailTest::aHookRelaxedAsItGoesIsOneUndoStep() {
+  const gpu::BrushManifest& hook = *catalog_.find("snake-hook");
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(hook);
+  session.setKeepDetail(true);
+  const int n = 128;
+  core::Document ball = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n));
+  ball.diffuse.texels.resize(std::size_t(n + 1) * std::size_t(n + 1) * 4);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      float* c = &ball.diffuse.texels[(std::size_t(j) * std::size_t(n + 1) + std::size_t(i)) * 4];
+      c[0] = float(i) / float(n), c[1] = float(j) / float(n), c[2] = 0.5f, c[3] = 1.0f;
+    }
+  session.setDocument(ball);
+  const Snapshot before = snapshot(session.gpuDocument());
+  app::BrushSettings settings;
+  settings.brushId = hook.id;
+  settings.radius = 0.06f;
+  settings.strength = 1.0f;
+  settings.pressureTarget = app::PressureTarget::None;
+  const core::Vec3f eye{0, 0, 10}, end{0.6f, 0.2f, 1.0f}; // on the view plane z = 1
+  session.beginStroke(hook.id, settings, core::EditLayer::Diffuse, 1.0f, eye);
+  session.queueDab({0.5f, 0.5f}, 1.0f); // the +z pole
+  int made = 0;
+  for (int frame = 1; frame <= 8; ++frame) {
+    const core::Vec3f at =
+        core::Vec3f{0, 0, 1} + (end - core::Vec3f{0, 0, 1}) * (float(frame) / 8.0f);
+    session.queueDrag(eye, core::normalize(at - eye), 1.0f);
+    const app::DabRun run = session.runQueuedDabs(settings);
+    QVERIFY2(run.error.empty(), run.error.c_str());
+    made += run.made;
+  }
+  QCOMPARE(session.finishStroke(), hook.id);
+  const core::Stroke& relaxed = session.lastRelaxation();
+  bool paint = false;
+  for (const core::TileChange& t : relaxed.tiles)
+    paint = paint || t.layer == core::EditLayer::Diffuse;
+  qInfo("%d dabs; the relaxations changed %zu texels in %zu tiles (paint among them: %s)", made,
+        relaxed.changedTexels, relaxed.tiles.size(), paint ? "yes" : "no");
+  QVERIFY(made >= 8);
+  QVERIFY2(!relaxed.tiles.empty(), "nothing relaxed: nothing tested");
+  QVERIFY(paint);
+  const Snapshot after = snapshot(session.gpuDocument());
+  QCOMPARE(session.history().undoCount(), std::size_t(1));
+  QVERIFY(session.undo());
+  QVERIFY(sameBits(snapshot(session.gpuDocument()), before));
+  QVERIFY(session.redo());
+  QVERIFY(sameBits(snapshot(session.gpuDocument()), after));
 }
 
 namespace {

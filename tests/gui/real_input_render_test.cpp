@@ -14,12 +14,15 @@
 #include <QApplication>
 #include <QFontMetricsF>
 #include <QGuiApplication>
+#include <QPushButton>
 #include <QScreen>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QUndoView>
 #include <QtTest>
@@ -114,6 +117,7 @@ private slots:
   void snakeHookAtItsDefaultPullsAlongTheDrag();
   void bracketWorksRightAfterDraggingTheStrengthSlider();
   void undoSaysWhenItsBudgetDropsSteps();
+  void aSparseTipSaysWhyBeforeTheBrushActs();
 
 private:
   QTemporaryDir dir_;
@@ -538,6 +542,80 @@ void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
   while (stack->canRedo())
     stack->redo();
   QVERIFY(app::testing::bitEqual(app::testing::positionsOf(*window), newest));
+}
+
+// Issue 30: a limb pulled out with the snake hook (a 200 px drag, keep-detail on as it is by
+// default) leaves few samples at its tip. A press there with Inflate says, before the brush acts,
+// why the result will be coarse: the status bar names Preview ▸ Stretch and shows a "Remesh…"
+// button that triggers Mesh ▸ Remesh…. A press on the ball, where the samples are dense, says
+// nothing.
+void RealInputRenderTest::aSparseTipSaysWhyBeforeTheBrushActs() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  QSettings().clear();
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  app::BrushPanel* panel = window->brushPanel();
+  const QPoint centre = view->project({0, 0, 0}).toPoint();
+  input.moveTo(view->mapToGlobal(centre));
+  QVERIFY(activate(*window));
+  QVERIFY(panel->selectBrush("snake-hook"));
+  input.moveTo(view->mapToGlobal(centre));
+  input.button(1, true);
+  for (int k = 1; k <= 20; ++k)
+    input.moveTo(view->mapToGlobal(centre + QPoint(10 * k, 0)));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 10000));
+
+  auto* button = window->statusBar()->findChild<QPushButton*>("sparseSamplingRemesh");
+  QVERIFY(button);
+  QVERIFY(panel->selectBrush("inflate"));
+  // On the ball, away from the limb: dense samples, no hint.
+  const QPoint body = view->project({-0.5f, 0.3f, 0.8f}).toPoint();
+  QVERIFY(view->pickAt(body));
+  window->statusBar()->clearMessage();
+  input.moveTo(view->mapToGlobal(body));
+  input.button(1, true);
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return !view->stroking(); }, 5000));
+  QVERIFY2(!window->statusBar()->currentMessage().startsWith("Few samples"),
+           qPrintable(window->statusBar()->currentMessage()));
+  QVERIFY(!button->isVisible());
+
+  // The limb's tip: its sample farthest to the right on screen that a pick finds.
+  const std::vector<float> p = app::testing::positionsOf(*window);
+  QPoint tip;
+  double farthest = -1e9;
+  for (std::size_t k = 0; k + 3 < p.size(); k += 4) {
+    const QPointF s = view->project({p[k], p[k + 1], p[k + 2]});
+    if (s.x() > farthest && view->pickAt(s - QPointF(2, 0))) farthest = s.x(), tip = s.toPoint();
+  }
+  tip -= QPoint(2, 0);
+  window->statusBar()->clearMessage();
+  input.moveTo(view->mapToGlobal(tip));
+  input.button(1, true);
+  const QString said = window->statusBar()->currentMessage();
+  const bool shown = button->isVisible();
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return !view->stroking(); }, 5000));
+  qInfo("the tip (%d, %d px): %s", tip.x(), tip.y(), qPrintable(said));
+  QVERIFY2(said.startsWith("Few samples here"), qPrintable(said));
+  QVERIFY(said.contains(QString::fromUtf8("Preview ▸ Stretch")));
+  QVERIFY(shown);
+  // The button runs Mesh ▸ Remesh… (its dialog, closed here at once).
+  QAction* remesh = window->findChild<QAction*>(QStringLiteral("actionRemesh"));
+  QVERIFY(remesh);
+  // (Mesh ▸ Remesh… waits while a background task runs, as the menu does.)
+  QVERIFY(QTest::qWaitFor([&] { return remesh->isEnabled(); }, 10000));
+  QSignalSpy triggered(remesh, &QAction::triggered);
+  QTimer::singleShot(300, [] {
+    if (QWidget* dialog = QApplication::activeModalWidget()) dialog->close();
+  });
+  button->click();
+  QCOMPARE(triggered.count(), 1);
 }
 
 QTEST_MAIN(RealInputRenderTest)

@@ -9,6 +9,7 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "save_image_dialog.h"
+#include "sparse_sampling_hint.h"
 #include "stroke_command.h"
 #include "user_messages.h"
 #include "viewport_focus.h"
@@ -55,6 +56,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connectParts();
   buildToolBars();
   qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
+  new SparseSamplingHint(viewport_, statusBar(), action("actionRemesh"), this);
 
   fpsLabel_ = new QLabel(this);
   dabLabel_ = new QLabel(this);

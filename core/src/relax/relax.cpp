@@ -1,5 +1,7 @@
 #include "octaclay/core/relax/relax.h"
 
+#include "detail/aabb_tree.h"
+#include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
 #include "relax/offset_field.h"
 
@@ -10,8 +12,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -54,6 +59,8 @@ constexpr float kKeepDetailDonorEdge = 5.0f;
 // diagonal (the even-out's tolerance).
 constexpr double kKeepDetailRms = 1e-4;
 constexpr double kKeepDetailHausdorff = 1e-3;
+// How many times keep-detail solves again with the samples where its move cut too deep held.
+constexpr int kHoldAttempts = 2;
 
 float edgeLength(const GeometryImage& image, int i, int j, int di, int dj) {
   return length(image.at(i + di, j + dj).xyz() - image.at(i, j).xyz());
@@ -274,22 +281,235 @@ std::vector<Vec3f> resampledPositions(const Document& document, const detail::Of
   return out;
 }
 
+// Keep-detail's surface check: on each side, the mesh's vertices (every k-th, at most
+// kCheckVertices) and kCheckAreaPoints area-weighted random points, each with the grid sample it
+// stands for (a vertex's own, a random point's nearest corner), and the side's AABB tree; each
+// query visits at most kCheckLeaves leaves (compareSurfaces' bound).
+constexpr std::size_t kCheckVertices = 20'000, kCheckAreaPoints = 20'000, kCheckChunk = 1024;
+constexpr std::uint32_t kCheckLeaves = 256;
+// Points whose surface moved by at most this share of the Hausdorff tolerance are not queried
+// (nor found far: `far` takes the points beyond the same share).
+constexpr double kCheckSkip = 0.5;
+
+// One side's surface for the check: the grid's triangles over some cells (vertices wrapped
+// through the seams), its AABB tree, and where each cell's two triangles are in it.
+struct CheckSurface {
+  TriangleMesh mesh;
+  std::vector<std::size_t> samples;       ///< per vertex, its grid sample
+  std::vector<std::int32_t> cellTriangle; ///< per cell × 2 (its triangles), mesh index or -1
+  std::vector<std::uint32_t> cellOf;      ///< per mesh triangle, cell × 2 + which
+  detail::AabbTree tree;
+  std::vector<std::uint32_t> leafOf; ///< per mesh triangle, its index in tree.triangles()
+};
+
+// The surface over the cells marked (non-zero) in `cells` (n × n, row-major).
+CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
+                          const std::vector<std::uint8_t>& cells) {
+  TriangleMesh mesh;
+  std::vector<std::size_t> samples;
+  std::vector<std::int32_t> cellTriangle(2 * cells.size(), -1);
+  std::vector<std::uint32_t> cellOf;
+  std::vector<std::uint32_t> vertex(positions.size(), ~0u);
+  const std::size_t side = static_cast<std::size_t>(n) + 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::size_t cell =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
+      if (!cells[cell]) continue;
+      std::size_t which = 0;
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        std::array<std::uint32_t, 3> t{};
+        for (std::size_t v = 0; v < 3; ++v) {
+          const std::size_t k =
+              static_cast<std::size_t>(tri[v].j) * side + static_cast<std::size_t>(tri[v].i);
+          if (vertex[k] == ~0u) {
+            vertex[k] = static_cast<std::uint32_t>(mesh.positions.size());
+            mesh.positions.push_back(positions[k]);
+            samples.push_back(k);
+          }
+          t[v] = vertex[k];
+        }
+        cellTriangle[2 * cell + which] = static_cast<std::int32_t>(mesh.triangles.size());
+        cellOf.push_back(static_cast<std::uint32_t>(2 * cell + which));
+        mesh.triangles.push_back(t);
+        ++which;
+      }
+    }
+  detail::AabbTree tree(mesh);
+  std::vector<std::uint32_t> leafOf(mesh.triangles.size());
+  const auto ids = tree.triangleIds();
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    leafOf[ids[k]] = static_cast<std::uint32_t>(k);
+  return {std::move(mesh),   std::move(samples), std::move(cellTriangle),
+          std::move(cellOf), std::move(tree),    std::move(leafOf)};
+}
+
+// The points measured on one side: the vertices (every k-th, at most kCheckVertices) and
+// kCheckAreaPoints area-weighted random points of the surface's triangles whose cells are
+// marked 2 in `cells`.
+struct CheckPoints {
+  std::vector<detail::Vec3d> points;
+  std::vector<std::size_t>
+      samples; ///< the grid sample each stands for (a random point's nearest corner)
+  /// Per point, its cell × 2 + which triangle (a vertex: one of its triangles): the same cell's
+  /// triangle on the other side is the query's first bound.
+  std::vector<std::uint32_t> cellTriangles;
+  /// Per point, the samples whose moves bound its distance to the other side: a vertex's own
+  /// (three times), a random point's triangle's corners.
+  std::vector<std::array<std::size_t, 3>> corners;
+  std::size_t vertexPoints = 0; ///< the first points are vertices, the rest random
+  double sampledArea = 0;       ///< of the triangles the random points are drawn on
+};
+
+CheckPoints checkPoints(const CheckSurface& surface, const std::vector<std::uint8_t>& cells,
+                        std::uint64_t seed) {
+  const TriangleMesh& mesh = surface.mesh;
+  const auto sampled = [&](std::size_t t) { return cells[surface.cellOf[t] / 2] == 2; };
+  CheckPoints out;
+  const std::size_t count = mesh.positions.size();
+  std::vector<std::uint32_t> triangleOf(count, ~0u);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (sampled(t))
+      for (const std::uint32_t v : mesh.triangles[t])
+        triangleOf[v] = static_cast<std::uint32_t>(t);
+  std::size_t used = 0;
+  for (const std::uint32_t t : triangleOf)
+    used += t != ~0u;
+  const std::size_t stride = std::max<std::size_t>(1, (used + kCheckVertices - 1) / kCheckVertices);
+  for (std::size_t v = 0, u = 0; v < count; ++v) {
+    if (triangleOf[v] == ~0u || u++ % stride != 0) continue;
+    const std::size_t k = surface.samples[v];
+    out.points.emplace_back(mesh.positions[v]);
+    out.samples.push_back(k);
+    out.cellTriangles.push_back(surface.cellOf[triangleOf[v]]);
+    out.corners.push_back({k, k, k});
+  }
+  out.vertexPoints = out.points.size();
+  std::vector<double> cumulative(mesh.triangles.size());
+  double total = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    if (sampled(t))
+      total += 0.5 * double(length(cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
+                                         mesh.positions[tri[2]] - mesh.positions[tri[0]])));
+    cumulative[t] = total;
+  }
+  out.sampledArea = total;
+  if (!(total > 0)) return out;
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  // Drawn in the order of the mesh's triangles (sorted), so consecutive queries are near.
+  std::vector<double> draws(kCheckAreaPoints);
+  for (double& r : draws)
+    r = uniform(random) * total;
+  std::sort(draws.begin(), draws.end());
+  for (const double r : draws) {
+    const std::size_t t = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), r) -
+                                 cumulative.begin()),
+        cumulative.size() - 1);
+    double u = uniform(random), v = uniform(random);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const auto& tri = mesh.triangles[t];
+    const detail::Vec3d a(mesh.positions[tri[0]]), b(mesh.positions[tri[1]]),
+        c(mesh.positions[tri[2]]);
+    out.points.push_back(a + (b - a) * u + (c - a) * v);
+    const double w0 = 1 - u - v;
+    out.samples.push_back(surface.samples[tri[w0 >= u && w0 >= v ? 0 : u >= v ? 1 : 2]]);
+    out.cellTriangles.push_back(surface.cellOf[t]);
+    out.corners.push_back(
+        {surface.samples[tri[0]], surface.samples[tri[1]], surface.samples[tri[2]]});
+  }
+  return out;
+}
+
+// Distances from `from`'s points to the surface of `to`: the largest and the sum of squares
+// (over chunks summed in order, so the figures do not depend on the thread count); the samples
+// of the points farther than `limit` go to `far` when given.
+struct CheckSums {
+  double maxSquared = 0, sumSquared = 0; ///< sumSquared: over the random points
+  std::size_t count = 0;                 ///< random points
+};
+
+// Without `far`, the measure stops at the first point farther than `fail` (the try fails: its
+// figures are then a lower bound). A point whose corners (CheckPoints::corners) moved by at most
+// `skip` (`moves`, per sample, object units) is not queried: the point of the other surface
+// with its barycentric weights lies no farther than the farthest corner move, which counts as
+// its distance (an upper bound: the figures stay conservative).
+CheckSums measureSide(const CheckPoints& from, const CheckSurface& toSide, double limit,
+                      double fail, const std::vector<float>& moves, double skip,
+                      std::vector<std::size_t>* far) {
+  const detail::AabbTree& to = toSide.tree;
+  std::atomic<bool> failed{false};
+  const std::size_t n = from.points.size();
+  const int chunks = static_cast<int>((n + kCheckChunk - 1) / kCheckChunk);
+  std::vector<CheckSums> sums(static_cast<std::size_t>(chunks));
+  std::vector<std::vector<std::size_t>> farChunks(static_cast<std::size_t>(chunks));
+  detail::parallelRows(
+      chunks,
+      [&](int begin, int end) {
+        for (int c = begin; c < end; ++c) {
+          CheckSums& s = sums[static_cast<std::size_t>(c)];
+          const std::size_t first = static_cast<std::size_t>(c) * kCheckChunk;
+          for (std::size_t k = first; k < std::min(n, first + kCheckChunk); ++k) {
+            if (!far && failed.load(std::memory_order_relaxed)) break;
+            const auto& at = from.corners[k];
+            const double bound = double(std::max({moves[at[0]], moves[at[1]], moves[at[2]]}));
+            const bool random = k >= from.vertexPoints;
+            if (bound <= skip) {
+              s.maxSquared = std::max(s.maxSquared, bound * bound);
+              s.sumSquared += random ? bound * bound : 0.0;
+              s.count += random;
+              continue;
+            }
+            const std::int32_t t = toSide.cellTriangle[from.cellTriangles[k]];
+            const detail::AabbTree::Hit hit = to.closest(
+                from.points[k],
+                t >= 0 ? toSide.leafOf[static_cast<std::size_t>(t)] : detail::AabbTree::noTriangle,
+                kCheckLeaves);
+            if (hit.distanceSquared > fail * fail) failed.store(true, std::memory_order_relaxed);
+            s.maxSquared = std::max(s.maxSquared, hit.distanceSquared);
+            s.sumSquared += random ? hit.distanceSquared : 0.0;
+            s.count += random;
+            if (far && hit.distanceSquared > limit * limit)
+              farChunks[static_cast<std::size_t>(c)].push_back(from.samples[k]);
+          }
+        }
+      },
+      1);
+  CheckSums total;
+  for (std::size_t c = 0; c < sums.size(); ++c) {
+    total.maxSquared = std::max(total.maxSquared, sums[c].maxSquared);
+    total.sumSquared += sums[c].sumSquared;
+    total.count += sums[c].count;
+    if (far) far->insert(far->end(), farChunks[c].begin(), farChunks[c].end());
+  }
+  return total;
+}
+
 // Keeps keep-detail's solved move within the relaxation's tolerance: the surface moves by at
 // most kKeepDetailRms (RMS) and kKeepDetailHausdorff (Hausdorff) of the bounding-box diagonal,
 // measured over the cells that changed (the rest of the surface keeps its bits; the RMS is
 // taken over the whole surface's area). Like evenOut, the move is kept, or scaled back (1/2,
 // 1/4, 1/8: a move that cuts across a sharp feature, a crease's valley or the coarse facets of
-// a limb pulled far in one stroke), or dropped (every offset zero). Returns the step kept (0:
-// none).
-double keepWithinTolerance(const Document& document, detail::OffsetField& field) {
+// a limb pulled far in one stroke), or dropped (every offset zero). `old` is the old surface over
+// every cell that may move and the ring around them, its tree built once per relaxation. `far`,
+// when given, gets the samples whose points the full move takes farther than half the Hausdorff
+// tolerance (where it cuts: a pulled limb's tip). Returns the step kept (0: none).
+double keepWithinTolerance(const Document& document, const CheckSurface& old,
+                           detail::OffsetField& field, std::vector<std::size_t>* far = nullptr) {
+  // Collecting where the full move cuts: only the full move is tried (the caller holds those
+  // samples and solves again rather than scale the move down).
+  const std::vector<double> steps =
+      far ? std::vector<double>{1.0} : std::vector<double>{1.0, 0.5, 0.25, 0.125};
   const GeometryImage& image = document.positions;
   const int n = image.size();
   const double diag = diagonal(image);
   std::vector<Vec3f> before(image.texels().size());
   for (std::size_t k = 0; k < before.size(); ++k)
     before[k] = image.texels()[k].xyz();
-  const TriangleMesh old = movedCellsMesh(n, before, field);
-  if (old.triangles.empty()) return 0;
+  const TriangleMesh movedMesh = movedCellsMesh(n, before, field);
+  if (movedMesh.triangles.empty()) return 0;
   double total = 0; // the whole surface's area, straight from the grid (no mesh built)
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
@@ -298,17 +518,71 @@ double keepWithinTolerance(const Document& document, detail::OffsetField& field)
         total +=
             0.5 * double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
       }
-  const double share = total > 0 ? std::min(1.0, meshArea(old) / total) : 1.0;
+  const double movedArea = meshArea(movedMesh);
+  const double share = total > 0 ? std::min(1.0, movedArea / total) : 1.0;
+  const double fail = kKeepDetailHausdorff * diag, limit = 0.5 * fail, skip = kCheckSkip * fail;
+  const std::size_t side = static_cast<std::size_t>(n) + 1;
   const detail::OffsetField solved = field;
-  for (const double step : {1.0, 0.5, 0.25, 0.125}) {
+  for (const double step : steps) {
     for (std::size_t k = 0; k < field.offset.size(); ++k)
       field.offset[k] = {static_cast<float>(step * double(solved.offset[k][0])),
                          static_cast<float>(step * double(solved.offset[k][1]))};
-    const SurfaceDistance d =
-        compareSurfaces(old, movedCellsMesh(n, resampledPositions(document, field), field),
-                        {.samplesPerSurface = 20'000, .maxVertices = 20'000});
-    const double hausdorff = d.hausdorff * d.diagonal, rms = d.rms * d.diagonal * std::sqrt(share);
-    if (hausdorff <= kKeepDetailHausdorff * diag && rms <= kKeepDetailRms * diag) return step;
+    const std::vector<Vec3f> after = resampledPositions(document, field);
+    std::vector<float> moves(after.size(), 0.0f);
+    for (std::size_t k = 0; k < after.size(); ++k)
+      moves[k] = length(after[k] - before[k]);
+    // Only the cells whose surface moved by more than `skip` are measured (a point of a cell
+    // lies within its farthest corner's move of the other surface), against them and the cells
+    // around them.
+    std::vector<std::uint8_t> cells(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
+    const auto move = [&](int i, int j) {
+      return moves[static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)];
+    };
+    bool any = false;
+    double skippedSquares = 0; // the unmeasured moved cells: area × farthest corner move²
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double farthest =
+            double(std::max({move(i, j), move(i + 1, j), move(i, j + 1), move(i + 1, j + 1)}));
+        if (farthest > 0 && farthest <= skip)
+          for (const auto& tri : cellTriangles(n, i, j)) {
+            const Vec3f a = image.at(tri[0]).xyz();
+            skippedSquares +=
+                farthest * farthest * 0.5 *
+                double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
+          }
+        if (farthest > skip) {
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di)
+              if (i + di >= 0 && j + dj >= 0 && i + di < n && j + dj < n) {
+                std::uint8_t& c =
+                    cells[static_cast<std::size_t>(j + dj) * static_cast<std::size_t>(n) +
+                          static_cast<std::size_t>(i + di)];
+                c = std::max<std::uint8_t>(c, di == 0 && dj == 0 ? 2 : 1);
+              }
+          any = true;
+        }
+      }
+    double hausdorff = skip,
+           rms = std::sqrt(skippedSquares / std::max(movedArea, 1e-30)) * std::sqrt(share);
+    if (any) {
+      const CheckSurface moved = checkSurface(n, after, cells);
+      const CheckPoints oldPoints = checkPoints(old, cells, 1);
+      const CheckPoints newPoints = checkPoints(moved, cells, 2);
+      std::vector<std::size_t>* cuts = step == 1.0 ? far : nullptr;
+      const CheckSums a = measureSide(oldPoints, moved, limit, fail, moves, skip, cuts);
+      if (!cuts && a.maxSquared > fail * fail) continue;
+      const CheckSums b = measureSide(newPoints, old, limit, fail, moves, skip, cuts);
+      hausdorff = std::max(skip, std::sqrt(std::max(a.maxSquared, b.maxSquared)));
+      // The RMS over the moved cells' area: the measured cells' mean square by their area, the
+      // others' bound by theirs.
+      const double measured = std::min(movedArea, oldPoints.sampledArea);
+      const double meanSquared =
+          (a.sumSquared + b.sumSquared) / double(std::max<std::size_t>(1, a.count + b.count));
+      rms = std::sqrt((measured * meanSquared + skippedSquares) / std::max(movedArea, 1e-30)) *
+            std::sqrt(share);
+    }
+    if (hausdorff <= fail && rms <= kKeepDetailRms * diag) return step;
   }
   for (auto& d : field.offset)
     d = {0.0f, 0.0f};
@@ -436,9 +710,57 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
   StrokeRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
-  detail::solveOffsets(document.positions, field, fineIterations(options),
-                       kKeepDetailDonorEdge * median, true, {});
-  keepWithinTolerance(document, field);
+  // Where the full move cuts too deep (the tip of a limb pulled far: its samples are the
+  // surface's corners there), those samples and their neighbours are held and the flow solved
+  // again around them, up to kHoldAttempts times; the try that keeps the largest step wins.
+  const detail::OffsetField unsolved = field;
+  detail::OffsetField best = field; // nothing moved
+  // The old surface over every cell with a corner that may move, and the ring around them (where
+  // a moved point's nearest old point may lie): built once for every try.
+  std::vector<std::uint8_t> region(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      bool free = false;
+      for (int dj = -1; dj <= 2 && !free; ++dj)
+        for (int di = -1; di <= 2 && !free; ++di)
+          if (i + di >= 0 && j + dj >= 0 && i + di <= n && j + dj <= n)
+            free = unsolved.free[field.index(i + di, j + dj)] != 0;
+      region[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
+             static_cast<std::size_t>(i)] = free;
+    }
+  std::vector<Vec3f> was(document.positions.texels().size());
+  for (std::size_t k = 0; k < was.size(); ++k)
+    was[k] = document.positions.texels()[k].xyz();
+  const CheckSurface old = checkSurface(n, was, region);
+  double bestStep = 0;
+  std::vector<Sample> held;
+  for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
+    detail::OffsetField tried = unsolved;
+    for (Sample s : held)
+      tried.pin(s);
+    detail::solveOffsets(document.positions, tried, fineIterations(options),
+                         kKeepDetailDonorEdge * median, true, {});
+    std::vector<std::size_t> far;
+    const double step =
+        keepWithinTolerance(document, old, tried, attempt < kHoldAttempts ? &far : nullptr);
+    if (step > bestStep) {
+      best = std::move(tried);
+      bestStep = step;
+    }
+    if (step == 1.0 || far.empty()) break;
+    for (const std::size_t k : far) {
+      const int i = static_cast<int>(k % static_cast<std::size_t>(side)),
+                j = static_cast<int>(k / static_cast<std::size_t>(side));
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          if (const Sample q = wrap(n, {i + di, j + dj}); unsolved.free[field.index(q.i, q.j)])
+            held.push_back(q);
+    }
+    std::sort(held.begin(), held.end(),
+              [&](Sample a, Sample b) { return field.index(a.i, a.j) < field.index(b.i, b.j); });
+    held.erase(std::unique(held.begin(), held.end()), held.end());
+  }
+  field = std::move(best);
   const int tiles = StrokeRecorder::tilesPerSide(side);
   std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
   for (int j = 0; j <= n; ++j)

@@ -129,7 +129,8 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
 
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings,
-                       const std::function<void(int, int)>& progress) {
+                       const std::function<void(int, int)>& progress,
+                       const std::function<void(StrokeSession&, int)>& betweenDabs) {
   if (settings.path.empty()) badSetting("the stroke's path has no point");
   if (!settings.dragPoints.empty() && brush.stroke != StrokeKind::Anchored &&
       brush.stroke != StrokeKind::Drag)
@@ -143,7 +144,11 @@ StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushMa
   // rules and dab at the same places.
   StrokeSession session(engine, document, brush, settings);
   const int expected = session.expectDabs(settings.path, settings.dragPoints, settings.radius);
-  if (progress) session.observeDabs([&progress, expected](int done) { progress(done, expected); });
+  if (progress || betweenDabs)
+    session.observeDabs([&](int done) {
+      if (progress) progress(done, expected);
+      if (betweenDabs) betweenDabs(session, done);
+    });
   for (const auto& uv : settings.path)
     session.moveToUv({uv[0], uv[1]}, settings.radius, settings.strength, settings.pressure);
   for (const core::Vec3f& point : settings.dragPoints)
@@ -604,6 +609,28 @@ std::vector<core::TexelRect> StrokeSession::takeTouched() {
   st.touchedTiles.clear();
   st.touchedSeams.clear();
   return touched;
+}
+
+void StrokeSession::applyBetweenDabs(const core::Stroke& change) {
+  State& st = *state_;
+  if (st.abandoned || st.finished)
+    throw std::logic_error("StrokeSession::applyBetweenDabs after the stroke ended");
+  for (const core::TileChange& t : change.tiles)
+    st.undo.coverTile(t.layer, t.tileX, t.tileY);
+  const core::TileApplier apply = undoApplier(st.document);
+  try {
+    for (const core::TileChange& t : change.tiles) {
+      t.apply(core::TileState::After, apply);
+      st.touchedTiles.insert({t.region.x, t.region.y, t.region.width, t.region.height});
+    }
+  } catch (...) { // all or nothing, as a failed dab
+    st.abandon();
+    throw;
+  }
+}
+
+core::Stroke StrokeSession::recordSoFar(const std::string& label) const {
+  return state_->undo.record(label);
 }
 
 int StrokeSession::dabs() const {

@@ -2,6 +2,7 @@
 
 #include "octaclay/core/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace octaclay::gpu::detail {
@@ -19,6 +20,15 @@ void UndoCapture::cover(core::TexelRect rect) {
           if (layer == core::EditLayer::Positions) at->second = static_cast<int>(before_.size());
           before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
         }
+}
+
+void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
+  if (std::find(layers_.begin(), layers_.end(), layer) != layers_.end()) {
+    cover(core::StrokeRecorder::tileRegion(side_, tx, ty));
+    return;
+  }
+  if (extra_.insert({static_cast<int>(layer), tx, ty}).second)
+    before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
 }
 
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
@@ -44,6 +54,14 @@ core::Stroke UndoCapture::finish(const std::string& label) {
     checkFinite(t, after); // on the after-tiles read anyway: no extra readback
     recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels, after);
   }
+  return recorder.finish(label);
+}
+
+core::Stroke UndoCapture::record(const std::string& label) const {
+  core::StrokeRecorder recorder(side_);
+  for (const Tile& t : before_)
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
+                     texels(t.layer, t.x, t.y));
   return recorder.finish(label);
 }
 

@@ -8,7 +8,9 @@
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/gpu/gpu_document.h"
 
+#include <array>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,9 @@ public:
 
   /// Captures the tiles of rect not captured yet.
   void cover(core::TexelRect rect);
+  /// Captures undo tile (tx, ty) of layer if not captured yet, whether or not the brush writes
+  /// that layer (a change made between dabs, keep-detail's relaxation, resamples every layer).
+  void coverTile(core::EditLayer layer, int tx, int ty);
   /// The position of sample s as it was when the stroke began: from the captured tile when the
   /// stroke writes positions and has covered s, else from the mirror (which nothing the stroke
   /// may have changed differs from).
@@ -33,6 +38,8 @@ public:
   /// written texel is not finite, or a position lies beyond kMaxCoordinate, restores the
   /// captured tiles first and throws core::Error(InvalidInput) naming the sample.
   core::Stroke finish(const std::string& label);
+  /// The record so far, without the finite check: the stroke goes on.
+  core::Stroke record(const std::string& label) const;
 
 private:
   struct Tile {
@@ -50,6 +57,7 @@ private:
   int side_, tiles_;
   std::map<int, int> seen_; ///< tile index → its positions tile in before_, or -1
   std::vector<Tile> before_;
+  std::set<std::array<int, 3>> extra_; ///< (layer, tx, ty) captured beyond layers_
 };
 
 } // namespace octaclay::gpu::detail

@@ -13,6 +13,8 @@
 
 namespace octaclay::gpu {
 
+class StrokeSession;
+
 /// Mirror planes through the model's centre (bounding-box centre at the stroke's start).
 enum SymmetryAxis : unsigned { kSymmetryNone = 0, kSymmetryX = 1, kSymmetryY = 2, kSymmetryZ = 4 };
 
@@ -66,9 +68,13 @@ struct StrokeResult {
 /// overran the engine's time limit.
 /// progress, when set, is told (dabs made, dabs expected) after each dab; the expected count
 /// (StrokeSession::expectDabs) is checked against kMaxStrokeDabs before the first dab.
+/// betweenDabs, when set, is called after each dab with the stroke and its dab count, and may
+/// change the document through StrokeSession::applyBetweenDabs (keep-detail's relaxation as the
+/// stroke goes); the modeller's stroke calls the same at the same dab counts.
 StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
                        const StrokeSettings& settings,
-                       const std::function<void(int, int)>& progress = {});
+                       const std::function<void(int, int)>& progress = {},
+                       const std::function<void(StrokeSession&, int)>& betweenDabs = {});
 
 /// The sample whose position is nearest to p (searching only tiles near p).
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
@@ -133,6 +139,16 @@ public:
   void observeDabs(std::function<void(int)> observer);
   /// Texel rectangles the dabs since the last call ran over (for redrawing), then forgets them.
   std::vector<core::TexelRect> takeTouched();
+
+  /// Between dabs (e.g. from observeDabs' observer): makes `change`, an edit computed from the
+  /// document as it is now (keep-detail's relaxation: tiles of any layer, before and after), part
+  /// of the stroke. Its tiles are captured for undo first, then its After state is written to
+  /// the mirror and the textures, and its tiles count as touched (takeTouched). finish()'s record
+  /// and a failed dab's restore include it; the next dabs act on the changed surface.
+  void applyBetweenDabs(const core::Stroke& change);
+  /// The stroke's undo record so far (the captured tiles against the mirror now), labelled;
+  /// the stroke goes on. No finite check (finish() makes it).
+  core::Stroke recordSoFar(const std::string& label) const;
 
   int dabs() const;
   double engineMs() const;

@@ -96,9 +96,14 @@ int keepDetailMargin(const GeometryImage& image, double radius);
 /// (Chebyshev distance on the tiled plane, so across the seams) move (pins and the four side
 /// midpoints excepted) toward where the surface is stretched, onto what the stroke pulled, and
 /// every other sample of every layer keeps its bits. The move is kept only within the
-/// relaxation's tolerance (the surface moves by at most 0.01 % RMS and 0.1 % Hausdorff of the
-/// bounding-box diagonal, measured over the cells that changed); else it is scaled back (1/2,
-/// 1/4, 1/8) or dropped, as evenOut's. Returns the change as an undo step, the
+/// relaxation's tolerance: the surface moves by at most 0.01 % RMS and 0.1 % Hausdorff of the
+/// bounding-box diagonal, measured over the cells that changed (each side's vertices and
+/// area-weighted points against the other side's closest points; a cell whose corners moved by
+/// less than half the Hausdorff tolerance counts with its corners' farthest move, a bound). Where
+/// the full move takes a point farther than half the tolerance (the tip of a limb pulled far: the
+/// surface's corners there), the samples there and around them are held and the flow solved again,
+/// twice at most; the last solve's move is scaled back (1/2, 1/4, 1/8) if it must be, and the
+/// largest step that fits is kept, else nothing moves. Returns the change as an undo step, the
 /// document left as it is: the tiles of every layer the relaxation changes, before and after (empty
 /// when nothing moved). Apply its After state to make the change (what keep-detail does on the
 /// GPU). Throws like evenOutSamples, and Error(InvalidArgument) when `changed` is not (N+1)² long

@@ -1,0 +1,63 @@
+#include "sparse_sampling_hint.h"
+
+#include "viewport_widget.h"
+
+#include "octaclay/core/measure/brush_sampling.h"
+
+#include <QAction>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QStatusBar>
+
+#include <algorithm>
+
+namespace octaclay::app {
+
+SparseSamplingHint::SparseSamplingHint(ViewportWidget* view, QStatusBar* bar, QAction* remesh,
+                                       QObject* parent)
+    : QObject(parent), view_(view), bar_(bar), button_(new QPushButton(tr("Remesh…"), bar)) {
+  button_->setObjectName(QStringLiteral("sparseSamplingRemesh"));
+  button_->setToolTip(tr("Mesh ▸ Remesh…: the whole surface sampled evenly again"));
+  button_->setFocusPolicy(Qt::NoFocus); // the keys stay with the view
+  button_->hide();
+  bar_->addWidget(button_);
+  if (remesh) connect(button_, &QPushButton::clicked, remesh, &QAction::trigger);
+  // The button goes with the hint's message.
+  connect(bar_, &QStatusBar::messageChanged, this, [this](const QString& text) {
+    if (text != message_) {
+      message_.clear();
+      button_->hide();
+    }
+  });
+  view_->installEventFilter(this);
+}
+
+bool SparseSamplingHint::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == view_ && event->type() == QEvent::MouseButtonPress) {
+    const auto* press = static_cast<QMouseEvent*>(event);
+    if (press->button() == Qt::LeftButton && !(press->modifiers() & Qt::AltModifier))
+      check(press->position());
+  }
+  return QObject::eventFilter(watched, event);
+}
+
+void SparseSamplingHint::check(QPointF p) {
+  if (!view_->hasDocument() || view_->stroking()) return;
+  const std::optional<core::PickHit> hit = view_->pickAt(p);
+  if (!hit) return;
+  const double radius = double(view_->brushSettings().radius) * double(view_->modelDiagonal());
+  const core::BrushSampling sampling =
+      core::brushSampling(view_->document().positions,
+                          {std::clamp(hit->u, 0.0f, 1.0f), std::clamp(hit->v, 0.0f, 1.0f)}, radius);
+  lastSamples_ = sampling.samplesAcross;
+  if (!sampling.sparse()) return;
+  message_ = tr("Few samples here: %1 across the brush's radius (%2 or more shape the surface "
+                "smoothly), so this stroke will be coarse. Preview ▸ Stretch shows where the "
+                "samples are sparse; Remesh samples the surface evenly again.")
+                 .arg(sampling.samplesAcross, 0, 'f', 1)
+                 .arg(core::kMinSamplesAcrossRadius, 0, 'f', 0);
+  bar_->showMessage(message_, 20000);
+  button_->show();
+}
+
+} // namespace octaclay::app
