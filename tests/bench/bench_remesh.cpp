@@ -112,48 +112,49 @@ int main(int argc, char** argv) {
   for (const char* id : {"snake-hook", "push", "relax"})
     engine.load(*catalog.find(id), gpu::BrushCatalog::shaderSource(*catalog.find(id)));
 
-  const auto session = [&](int n, bool keepDetail) {
+  const auto session = [&](int n) {
     auto s = std::make_unique<app::SculptSession>();
     s->setBrushes(engine, catalog);
-    s->setKeepDetail(keepDetail);
     s->setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
+    return s;
+  };
+  // A stroke as octaclay-cli makes it; radius a fraction of the diagonal.
+  const auto script = [](const char* id, float radius, float strength, bool keepDetail) {
+    app::StrokeScript s;
+    s.start.brushId = s.start.settings.brushId = id;
+    s.start.settings.radius = radius;
+    s.start.settings.strength = strength;
+    s.start.settings.keepDetail = keepDetail;
     return s;
   };
   std::printf("| case | operation | changed | longest ÷ median | least fair share | RMS moved | "
               "Hausdorff moved | ms | note |\n|---|---|---|---|---|---|---|---|---|\n");
   {
-    auto s = session(256, false);
-    gpu::StrokeSettings hook;
-    hook.brush = "snake-hook";
+    auto s = session(256);
+    app::StrokeScript hook = script("snake-hook", 0.05f / s->diagonal(), 1, false);
     hook.path = {{0.70f, 0.40f}};
     hook.dragPoints = {
         {0.9f, -0.35f, 0.55f}, {1.3f, -0.55f, 0.8f}, {1.7f, -0.75f, 1.05f}, {2.0f, -0.9f, 1.25f}};
-    hook.radius = 0.05f;
-    hook.strength = 1;
-    s->strokeAlongPath(*catalog.find("snake-hook"), hook);
+    app::playStroke(*s, hook);
     glFinish();
     runCase({"snake-hook limb, N 256", s->document(), limbShare});
   }
   {
-    auto s = session(256, true);
-    gpu::StrokeSettings push;
-    push.brush = "push";
+    auto s = session(256);
+    app::StrokeScript push = script("push", 0.05f / s->diagonal(), 13.3f, true);
     push.path = {{0.70f, 0.40f}};
-    push.radius = 0.05f;
-    push.strength = 13.3f;
     for (int i = 0; i < 14; ++i)
-      s->strokeAlongPath(*catalog.find("push"), push);
+      app::playStroke(*s, push);
     glFinish();
     runCase({"push spike, N 256", s->document(), limbShare});
   }
   if (creatureSize > 0) {
-    auto s = session(creatureSize, true);
+    auto s = session(creatureSize);
     const std::vector<testing::CreaturePart> parts =
         testing::creatureParts(testing::CreatureLayout::Animal);
     const core::GeometryImage ball = s->document().positions;
     for (const testing::CreaturePart& part : parts)
-      s->strokeAlongPath(*catalog.find("snake-hook"),
-                         testing::creatureStroke(part, ball, "snake-hook"));
+      app::playStroke(*s, testing::creatureStroke(part, ball, "snake-hook", s->diagonal()));
     glFinish();
     runCase({"creature, N " + std::to_string(creatureSize), s->document(),
              [parts](const core::GeometryImage& image) {

@@ -3,6 +3,7 @@
 // material texels keep their object-space size where the image is stretched, the uv mode's not;
 // the one-pass splat (brushLayers) writes what per-layer passes of the same body would.
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -435,7 +436,7 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   const int n = d.size(), side = n + 1;
   const std::vector<float> diffuse = layerTexels(d, core::EditLayer::Diffuse);
   const std::vector<float> feature = layerTexels(d, core::EditLayer::Feature);
-  StrokeSettings settings;
+  PathStroke settings;
   settings.brush = "splat";
   settings.radius = 0.3f;
   settings.strength = 1.0f;
