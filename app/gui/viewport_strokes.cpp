@@ -186,7 +186,7 @@ bool ViewportWidget::redoStroke() {
 bool ViewportWidget::stepHistory(bool undo) {
   if (!session_.hasDocument() || !(undo ? canUndo() : canRedo()) || session_.stroking())
     return false;
-  const core::Stroke* s = nullptr;
+  const core::EditStep* s = nullptr;
   {
     CurrentContext current(*this);
     try {

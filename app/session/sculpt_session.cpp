@@ -172,7 +172,7 @@ StrokeEnd SculptSession::finishStroke() {
   end.dabs = ending->stroke->dabs();
   end.engineMs = ending->stroke->engineMs();
   lastRelaxation_ = {};
-  core::Stroke record = ending->stroke->finish(label);
+  core::EditStep record = ending->stroke->finish(label);
   if (end.dabs > 0 && !record.tiles.empty()) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::array<float, 2>> held;
@@ -193,7 +193,7 @@ StrokeEnd SculptSession::finishStroke() {
 void SculptSession::abandonStroke() {
   if (!stroke_) return;
   const std::unique_ptr<ActiveStroke> ending = std::move(stroke_);
-  core::Stroke record;
+  core::EditStep record;
   try {
     record = ending->stroke->finish(ending->start.brushId);
   } catch (const core::Error&) { // a non-finite result: finish restored the layers itself
@@ -208,7 +208,7 @@ namespace {
 
 // The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
 // relaxation after it reaches keepDetailMargin samples beyond them and no farther.
-std::vector<std::uint8_t> changedSamples(const core::Stroke& record, int side) {
+std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side) {
   std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
                                     0);
   bool any = false;
@@ -233,9 +233,9 @@ std::vector<std::uint8_t> changedSamples(const core::Stroke& record, int side) {
 
 } // namespace
 
-core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
-                                            float radius,
-                                            const std::vector<std::array<float, 2>>& pinnedPath) {
+core::EditStep SculptSession::keepDetailAfter(core::EditStep record,
+                                              const gpu::BrushManifest& brush, float radius,
+                                              const std::vector<std::array<float, 2>>& pinnedPath) {
   lastRelaxation_ = {};
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
@@ -258,7 +258,7 @@ core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::Brus
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,
                                                         const std::string& label) {
-  core::Stroke change = core::recordDifference(document_->document(), after, label);
+  core::EditStep change = core::recordDifference(document_->document(), after, label);
   if (change.tiles.empty()) return {};
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : change.tiles)
@@ -268,12 +268,12 @@ std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& af
   return rects;
 }
 
-const core::Stroke* SculptSession::undo() {
+const core::EditStep* SculptSession::undo() {
   if (!document_ || stroke_ || !history_.canUndo()) return nullptr;
   return history_.undo(gpu::undoApplier(*document_));
 }
 
-const core::Stroke* SculptSession::redo() {
+const core::EditStep* SculptSession::redo() {
   if (!document_ || stroke_ || !history_.canRedo()) return nullptr;
   return history_.redo(gpu::undoApplier(*document_));
 }
@@ -296,7 +296,7 @@ std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touc
   return core::mergeRects(touched);
 }
 
-std::vector<core::TexelRect> changedRects(const core::Stroke& stroke) {
+std::vector<core::TexelRect> changedRects(const core::EditStep& stroke) {
   std::vector<core::TexelRect> rects;
   for (const core::TileChange& t : stroke.tiles)
     rects.push_back(t.region);

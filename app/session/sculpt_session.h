@@ -82,7 +82,7 @@ struct StrokeEnd {
   int dabs = 0;                 ///< mirrored ones included
   double engineMs = 0;          ///< the brush engine's time and keep detail's, file I/O excluded
   std::size_t changedTiles = 0; ///< tiles of the step (the stroke and its relaxation)
-  std::size_t stepBytes = 0;    ///< memory the step holds (core::Stroke::computeBytes)
+  std::size_t stepBytes = 0;    ///< memory the step holds (core::EditStep::computeBytes)
 };
 
 /// One sculpting session, without widgets: the document on the GPU, the brushes it is edited
@@ -174,7 +174,7 @@ public:
   bool keepDetail() const { return keepDetail_; }
   /// The relaxation keep-detail made after the last stroke (no tiles when it made none): its
   /// Before side is the surface as the stroke left it (benchmarks measure how far it moved).
-  const core::Stroke& lastRelaxation() const { return lastRelaxation_; }
+  const core::EditStep& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
   /// labelled label (e.g. the global even-out); returns the texel rectangles it changed (empty:
@@ -186,8 +186,8 @@ public:
   /// Reverts / reapplies the newest stroke on the GPU and the mirror: the stroke stepped, or
   /// null if there is none (or no document, or a stroke is being made). Throws what the
   /// history's applier throws; the history is then unchanged.
-  const core::Stroke* undo();
-  const core::Stroke* redo();
+  const core::EditStep* undo();
+  const core::EditStep* redo();
 
   long long dabs() const { return dabCount_; }    ///< made since the session began
   double lastDabMs() const { return lastDabMs_; } ///< per dab, over the last run that dabbed
@@ -197,11 +197,12 @@ private:
 
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
   // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
-  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush, float radius,
-                               const std::vector<std::array<float, 2>>& pinnedPath = {});
+  core::EditStep keepDetailAfter(core::EditStep record, const gpu::BrushManifest& brush,
+                                 float radius,
+                                 const std::vector<std::array<float, 2>>& pinnedPath = {});
 
   bool keepDetail_ = true;
-  core::Stroke lastRelaxation_;
+  core::EditStep lastRelaxation_;
   gpu::BrushEngine* engine_ = nullptr;
   const gpu::BrushCatalog* catalog_ = nullptr;
   BrushVariants variants_;
@@ -217,6 +218,6 @@ private:
 /// one). side is N + 1.
 std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side);
 /// The texel rectangles a recorded stroke changed.
-std::vector<core::TexelRect> changedRects(const core::Stroke& stroke);
+std::vector<core::TexelRect> changedRects(const core::EditStep& stroke);
 
 } // namespace octaclay::app

@@ -585,10 +585,10 @@ double StrokeSession::engineMs() const {
   return state_->engineMs;
 }
 
-core::Stroke StrokeSession::finish(const std::string& label) {
+core::EditStep StrokeSession::finish(const std::string& label) {
   State& st = *state_;
   if (st.abandoned) { // the layers are as before the stroke: nothing to undo
-    core::Stroke nothing;
+    core::EditStep nothing;
     nothing.label = label;
     nothing.imageSide = st.document.size() + 1;
     return nothing;

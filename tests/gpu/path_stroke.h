@@ -4,7 +4,7 @@
 // same StrokeSession calls; these tests check the engine's stroke below it.
 #pragma once
 
-#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_step.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/stroke.h"
@@ -28,7 +28,7 @@ struct PathStroke : StrokeSettings {
 struct StrokeResult {
   int dabs = 0;        ///< including mirrored dabs
   double engineMs = 0; ///< GPU passes, seaming and mirror updates
-  core::Stroke undo;   ///< the tiles the stroke changed, before and after
+  core::EditStep undo; ///< the tiles the stroke changed, before and after
 };
 
 /// Plays stroke through a StrokeSession and finishes it, labelled with brush's id. Throws what

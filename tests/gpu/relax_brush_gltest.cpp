@@ -212,7 +212,7 @@ private:
   // A sphere with a limb pulled out at the pole sample (N/2, N/2): 15 one-dab push strokes.
   GpuDocument limb();
   // Relax strokes along the limb, base to tip; returns the last one's undo record.
-  core::Stroke relax(GpuDocument& document, int strokes);
+  core::EditStep relax(GpuDocument& document, int strokes);
 
   std::optional<GlContext> context_;
   std::optional<BrushEngine> engine_;
@@ -254,12 +254,12 @@ GpuDocument RelaxBrushTest::limb() {
   return document;
 }
 
-core::Stroke RelaxBrushTest::relax(GpuDocument& document, int strokes) {
+core::EditStep RelaxBrushTest::relax(GpuDocument& document, int strokes) {
   PathStroke settings;
   settings.brush = "relax";
   settings.radius = 1.0f;
   settings.strength = 1.0f;
-  core::Stroke last;
+  core::EditStep last;
   for (int k = 0; k < strokes; ++k) {
     // Along the limb from its base to its tip: the samples on the ray i > N/2 from the pole.
     const core::GeometryImage& image = document.document().positions;

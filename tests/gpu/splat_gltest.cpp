@@ -5,6 +5,7 @@
 #include "brush_test_support.h"
 #include "path_stroke.h"
 
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/octahedral.h"
@@ -454,7 +455,7 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   QCOMPARE(layerTexels(d, core::EditLayer::Positions), texture);
   session.moveTo(end, settings.radius, settings.strength, 1.0f);
   QVERIFY(session.dabs() > 3);
-  core::Stroke undo = session.finish("splat");
+  core::EditStep undo = session.finish("splat");
   QVERIFY(!d.mirrorStale());
 
   const std::vector<float> paint = d.texture(core::EditLayer::Diffuse).read({0, 0, side, side});

@@ -8,6 +8,7 @@
 #include "brush_test_support.h"
 #include "path_stroke.h"
 
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"

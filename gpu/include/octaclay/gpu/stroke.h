@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_step.h"
 #include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_engine.h"
 
@@ -107,7 +107,7 @@ public:
   /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
   /// layer now holds a non-finite value or a position beyond ±1e15, the layers are restored
   /// bit for bit and core::Error(InvalidInput) names the sample instead.
-  core::Stroke finish(const std::string& label);
+  core::EditStep finish(const std::string& label);
 
 private:
   struct State;
