@@ -4,9 +4,10 @@
 // out of a ball with snake-hook, each one stroke along a 3-point path (where it starts on the
 // ball, then two object-space points the drag moves through), and each part's share of samples.
 
+#include "stroke_script.h"
+
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/measure/stretch.h"
-#include "octaclay/gpu/stroke.h"
 
 #include <array>
 #include <string>
@@ -62,9 +63,11 @@ inline std::vector<CreaturePart> creatureParts(CreatureLayout layout) {
 }
 
 /// The snake-hook stroke that pulls part out of ball: from ball's sample nearest to the part's
-/// start through its drag points, at full strength.
-inline gpu::StrokeSettings creatureStroke(const CreaturePart& part, const core::GeometryImage& ball,
-                                          const std::string& brushId) {
+/// start through its drag points, at full strength, through the session's door (playStroke);
+/// diagonal is the model's as the stroke begins (SculptSession::diagonal), which turns the part's
+/// radius into the session's unit.
+inline app::StrokeScript creatureStroke(const CreaturePart& part, const core::GeometryImage& ball,
+                                        const std::string& brushId, float diagonal) {
   const int n = ball.size();
   float best = 1e30f;
   std::array<float, 2> uv{};
@@ -72,12 +75,12 @@ inline gpu::StrokeSettings creatureStroke(const CreaturePart& part, const core::
     for (int i = 0; i <= n; ++i)
       if (const float d = core::length(ball.at(i, j).xyz() - part.start); d < best)
         best = d, uv = {float(i) / float(n), float(j) / float(n)};
-  gpu::StrokeSettings s;
-  s.brush = brushId;
+  app::StrokeScript s;
+  s.start.brushId = s.start.settings.brushId = brushId;
+  s.start.settings.radius = part.radius / diagonal;
+  s.start.settings.strength = 1.0f;
   s.path = {uv};
   s.dragPoints = {part.drag[0], part.drag[1]};
-  s.radius = part.radius;
-  s.strength = 1.0f;
   return s;
 }
 

@@ -5,6 +5,7 @@
 #include "output_rules.h"
 #include "progress_line.h"
 #include "sculpt_session.h"
+#include "stroke_script.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
@@ -12,7 +13,6 @@
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gpu_document.h"
-#include "octaclay/gpu/stroke.h"
 
 #include <nlohmann/json.hpp>
 
@@ -232,16 +232,26 @@ Command addStrokeCommand(CLI::App& app) {
             known += (known.empty() ? "" : ", ") + b.id;
           badArgument("no brush '" + opt->brush + "' (loaded: " + known + ")");
         }
-        gpu::StrokeSettings settings;
-        settings.brush = brush->id;
-        settings.path = path;
-        settings.strength = opt->strength;
-        settings.spacing = opt->spacing;
-        settings.symmetry = parseSymmetry(opt->symmetry);
+        // The stroke as the modeller's Brushes panel would set it: the brush's own area and
+        // falloff, the radius a fraction of the diagonal, pressure 1.
+        StrokeScript script;
+        StrokeStart& start = script.start;
+        start.brushId = brush->id;
+        start.settings.brushId = brush->id;
+        start.settings.radius = opt->radius;
+        start.settings.strength = opt->strength;
+        start.settings.area = brush->area;
+        start.settings.falloff = brush->falloff;
+        start.settings.symmetry = parseSymmetry(opt->symmetry);
+        start.settings.keepDetail = opt->keepDetail == "on";
+        start.spacing = opt->spacing;
+        // A script's points stay on their surface points, so a script that dabs there again
+        // (a limb pulled by repeated clicks) finds the same spot after the relaxation.
+        script.path = path;
         for (const std::string& p : opt->params) {
           const auto eq = p.find('=');
           if (eq == std::string::npos) badArgument("--param '" + p + "' is not id=value");
-          settings.parameters[p.substr(0, eq)] =
+          start.settings.parameters[p.substr(0, eq)] =
               parseParameter(*brush, p.substr(0, eq), p.substr(eq + 1));
         }
 
@@ -250,14 +260,14 @@ Command addStrokeCommand(CLI::App& app) {
           for (std::string point; std::getline(in, point, ';');) {
             const std::vector<float> xyz = numbers(point, ',', "--drag");
             if (xyz.size() != 3) badArgument("--drag: '" + point + "' is not an x,y,z point");
-            settings.dragPoints.push_back({xyz[0], xyz[1], xyz[2]});
+            script.dragPoints.push_back({xyz[0], xyz[1], xyz[2]});
           }
         }
 
         if (!opt->view.empty()) {
           const std::vector<float> eye = numbers(opt->view, ',', "--view");
           if (eye.size() != 3) badArgument("--view takes the camera eye as x,y,z");
-          settings.viewEye = core::Vec3f{eye[0], eye[1], eye[2]};
+          start.eye = core::Vec3f{eye[0], eye[1], eye[2]};
         }
 
         ProgressLine progress("stroke", !opt->json);
@@ -266,19 +276,16 @@ Command addStrokeCommand(CLI::App& app) {
         core::requireUsableSize(document.positions, "cannot sculpt " + opt->input);
         const gpu::GlContext context = gpu::GlContext::createHeadless();
         gpu::BrushEngine engine;
-        loadMaterialsFor(*brush, engine, settings.parameters, opt->params);
-        // The modeller's rules (gpu/stroke_rules.h): the stroke shares --strength out by spacing.
+        loadMaterialsFor(*brush, engine, start.settings.parameters, opt->params);
+        // The modeller's door (SculptSession): the stroke shares --strength out by spacing.
         SculptSession session;
         session.setBrushes(engine, catalog);
-        session.setKeepDetail(opt->keepDetail == "on");
         session.loadBrush(*brush);
         session.setDocument(std::move(document));
-        settings.radius = opt->radius * session.gpuDocument().bounds().diagonal();
         progress.stage("stroking");
-        const gpu::StrokeResult result =
-            session.strokeAlongPath(*brush, settings, [&progress](int done, int expected) {
-              progress.count("dabs", done, expected);
-            });
+        const StrokeEnd result = playStroke(session, script, [&progress](int done, int expected) {
+          progress.count("dabs", done, expected);
+        });
         const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
         std::ostringstream report; // made before the save, which commits last
         if (opt->json)
@@ -287,8 +294,8 @@ Command addStrokeCommand(CLI::App& app) {
                                    {"dabs", result.dabs},
                                    {"engine_ms", result.engineMs},
                                    {"ms_per_dab", perDab},
-                                   {"changed_tiles", result.undo.tiles.size()},
-                                   {"undo_bytes", result.undo.computeBytes()}}
+                                   {"changed_tiles", result.changedTiles},
+                                   {"undo_bytes", result.stepBytes}}
                         .dump()
                  << "\n";
         else

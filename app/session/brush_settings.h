@@ -22,7 +22,7 @@ struct BrushSettings {
   PressureTarget pressureTarget = PressureTarget::Strength;
   float stabilizer = 0.0f; ///< lazy-mouse strength in [0, 1]; 0 follows the cursor exactly
   unsigned symmetry = 0;   ///< gpu::SymmetryAxis bits
-  /// Sculpt strokes relax what they stretched (SculptSession::setKeepDetail).
+  /// Sculpt strokes relax what they stretched (SculptSession::keepDetail).
   bool keepDetail = true;
 };
 

@@ -1,6 +1,7 @@
 #include "sculpt_session.h"
 
 #include "octaclay/core/document/edit_steps.h"
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/core/relax/relax.h"
 #include "octaclay/gpu/brush_catalog.h"
@@ -26,24 +27,21 @@ struct SculptSession::KeepDetailRun {
   /// Where the relaxations left the samples they moved (index → position), to tell a dab's
   /// change from theirs.
   std::unordered_map<std::size_t, core::Vec4f> relaxed;
-  core::Stroke relaxations; ///< what they changed, as one step
+  core::EditStep relaxations; ///< what they changed, as one step
 };
 
 struct SculptSession::ActiveStroke {
-  std::string brushId;
+  StrokeStart start;
   float unit = 1; // object units per radius fraction: the diagonal when the stroke began
   gpu::BrushManifest manifest; // the stroke refers to it
-  float sign = 1;
   std::unique_ptr<gpu::StrokeSession> stroke;
-  struct Move {
-    core::Vec2f uv;
-    float pressure = 1;
-    std::optional<std::array<core::Vec3f, 2>> ray; ///< a drag's pointer ray: origin, direction
-  };
-  std::vector<Move> queue;
+  std::vector<StrokeMove> queue;
   bool failed = false; // a dab threw: the engine restored the layers, no more dabs
   float reach = 0;     // the largest radius a dab used (object units): keep-detail's margin
   KeepDetailRun keep;
+  // The first and last image points moved to: keep detail holds the samples there.
+  std::optional<std::array<float, 2>> first, last;
+  std::function<void(int)> progress; // told the dab count after each dab (observeDabs)
 };
 
 SculptSession::SculptSession() = default;
@@ -85,41 +83,81 @@ void SculptSession::releaseGpu() {
   document_.reset();
 }
 
-void SculptSession::beginStroke(const std::string& id, const BrushSettings& settings,
-                                core::EditLayer paintTarget, float sign, core::Vec3f eye) {
+void SculptSession::beginStroke(const StrokeStart& start) {
   auto stroke = std::make_unique<ActiveStroke>();
-  stroke->brushId = id;
-  stroke->manifest = variants_.prepare(*engine_, *catalog_, id, settings, paintTarget);
-  stroke->sign = sign;
-  // Fixed for the stroke: a stroke that grows the model must not grow its own brush.
-  stroke->unit = diagonal();
+  stroke->start = start;
+  const BrushSettings& settings = start.settings;
+  stroke->manifest =
+      variants_.prepare(*engine_, *catalog_, start.brushId, settings, start.paintTarget);
+  // Fixed for the stroke: a stroke that grows the model must not grow its own brush. Not
+  // diagonal()'s floor: a model far below a unit across strokes as it does at unit scale
+  // (gpu::StrokeSession refuses one too small for float).
+  stroke->unit = document_->bounds().diagonal();
   gpu::StrokeSettings s;
-  s.brush = id;
-  s.radius = settings.radius * stroke->unit;
-  s.strength = settings.strength;
+  s.spacing = start.spacing;
   s.symmetry = settings.symmetry;
-  if (id == settings.brushId) s.parameters = settings.parameters;
-  s.viewEye = eye; // splats project from here
+  if (start.brushId == settings.brushId) s.parameters = settings.parameters;
+  s.viewEye = start.eye; // splats project from here, drags move across its view
   stroke->stroke = std::make_unique<gpu::StrokeSession>(*engine_, *document_, stroke->manifest, s);
+  keepDetail_ = settings.keepDetail;
+  // After each dab: keep detail's relaxation as a dragging stroke goes, then the caller's
+  // progress. The viewport's and the CLI's strokes both come through here.
   stroke->stroke->observeDabs([this, active = stroke.get()](int dabs) {
+    active->keep.pinnedPath.clear();
+    for (const auto& uv : {active->first, active->last})
+      if (uv) active->keep.pinnedPath.push_back(*uv);
     relaxBetweenDabs(active->keep, *active->stroke, active->manifest, active->reach, dabs);
+    if (active->progress) active->progress(dabs);
   });
   stroke_ = std::move(stroke);
-}
-
-void SculptSession::queueDab(core::Vec2f uv, float pressure) {
-  stroke_->queue.push_back({uv, pressure, std::nullopt});
 }
 
 bool SculptSession::strokeDrags() const {
   return stroke_ && stroke_->stroke->drags();
 }
 
-void SculptSession::queueDrag(core::Vec3f origin, core::Vec3f direction, float pressure) {
-  stroke_->queue.push_back({{}, pressure, std::array{origin, direction}});
+int SculptSession::moveTo(const StrokeMove& move) {
+  ActiveStroke& st = *stroke_;
+  if (st.failed) return 0;
+  const BrushSettings& settings = st.start.settings;
+  // The strength as given: the stroke shares it out among its dabs (dabShare).
+  float radius = settings.radius * st.unit;
+  float strength = settings.strength;
+  if (settings.pressureTarget == PressureTarget::Radius)
+    radius *= std::max(move.pressure, 0.05f);
+  else if (settings.pressureTarget == PressureTarget::Strength)
+    strength *= move.pressure;
+  strength *= st.start.sign;
+  st.reach = std::max(st.reach, radius);
+  int made = 0;
+  try {
+    switch (move.kind) {
+    case StrokeMove::Kind::ImagePoint:
+      // The start is held from the first dab on (keep detail relaxes between a drag's dabs).
+      if (!st.first) st.first = {move.uv.x, move.uv.y};
+      made = st.stroke->moveToUv(move.uv, radius, strength, 1.0f);
+      st.last = {move.uv.x, move.uv.y};
+      break;
+    case StrokeMove::Kind::Ray:
+      made = st.stroke->dragAlong(move.origin, move.direction, radius, strength, 1.0f);
+      break;
+    case StrokeMove::Kind::ObjectPoint:
+      made = st.stroke->dragTo(move.origin, radius, strength, 1.0f);
+      break;
+    }
+  } catch (...) { // a failed dab put the layers back; a refused move made none: no more moves
+    st.failed = true;
+    throw;
+  }
+  dabCount_ += made;
+  return made;
 }
 
-DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
+void SculptSession::queueMove(const StrokeMove& move) {
+  stroke_->queue.push_back(move);
+}
+
+DabRun SculptSession::runQueuedMoves() {
   DabRun run;
   if (!stroke_ || stroke_->queue.empty()) return run;
   if (stroke_->failed) {
@@ -128,26 +166,14 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (const auto& [uv, pressure, ray] : stroke_->queue) {
-      // The strength as given: the stroke shares it out among its dabs (dabShare).
-      float radius = settings.radius * stroke_->unit;
-      float strength = settings.strength;
-      if (settings.pressureTarget == PressureTarget::Radius)
-        radius *= std::max(pressure, 0.05f);
-      else if (settings.pressureTarget == PressureTarget::Strength)
-        strength *= pressure;
-      stroke_->reach = std::max(stroke_->reach, radius);
-      run.made += ray ? stroke_->stroke->dragAlong((*ray)[0], (*ray)[1], radius,
-                                                   stroke_->sign * strength, 1.0f)
-                      : stroke_->stroke->moveToUv(uv, radius, stroke_->sign * strength, 1.0f);
-    }
+    for (const StrokeMove& move : stroke_->queue)
+      run.made += moveTo(move);
     run.touched = stroke_->stroke->takeTouched();
   } catch (const std::exception& e) {
     run.error = e.what();
     stroke_->failed = true;
   }
   stroke_->queue.clear();
-  dabCount_ += run.made;
   if (run.made > 0)
     lastDabMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                      .count() /
@@ -155,41 +181,61 @@ DabRun SculptSession::runQueuedDabs(const BrushSettings& settings) {
   return run;
 }
 
-std::string SculptSession::finishStroke() {
-  if (!stroke_) return {};
-  const std::string label = stroke_->brushId;
-  const int dabs = stroke_->stroke->dabs();
-  const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
-  core::Stroke record = ending->stroke->finish(label);
-  if (dabs == 0 || record.tiles.empty()) return {};
-  record = keepDetailAfter(std::move(record), ending->manifest, ending->reach, ending->keep);
-  history_.record(std::move(record));
-  return label;
+int SculptSession::expectDabs(const std::vector<std::array<float, 2>>& path,
+                              const std::vector<core::Vec3f>& dragPoints) const {
+  return stroke_->stroke->expectDabs(path, dragPoints,
+                                     stroke_->start.settings.radius * stroke_->unit);
 }
 
-gpu::StrokeResult SculptSession::strokeAlongPath(const gpu::BrushManifest& brush,
-                                                 const gpu::StrokeSettings& settings,
-                                                 const std::function<void(int, int)>& progress) {
-  // The path's points stay on their surface points, so a script that dabs there again (a
-  // limb pulled by repeated clicks) finds the same spot after the relaxation.
-  KeepDetailRun keep;
-  keep.pinnedPath = settings.path;
-  gpu::StrokeResult result = gpu::runStroke(
-      *engine_, *document_, brush, settings, progress, [&](gpu::StrokeSession& stroke, int dabs) {
-        relaxBetweenDabs(keep, stroke, brush, settings.radius, dabs);
-      });
-  const auto start = std::chrono::steady_clock::now();
-  result.undo = keepDetailAfter(std::move(result.undo), brush, settings.radius, keep);
-  result.engineMs +=
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return result;
+void SculptSession::observeDabs(std::function<void(int)> observer) {
+  stroke_->progress = std::move(observer);
+}
+
+StrokeEnd SculptSession::finishStroke() {
+  StrokeEnd end;
+  if (!stroke_) return end;
+  const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
+  const std::string label = ending->start.brushId;
+  end.dabs = ending->stroke->dabs();
+  end.engineMs = ending->stroke->engineMs();
+  lastRelaxation_ = {};
+  core::EditStep record = ending->stroke->finish(label);
+  if (end.dabs > 0 && !record.tiles.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    ending->keep.pinnedPath.clear();
+    for (const auto& uv : {ending->first, ending->last})
+      if (uv) ending->keep.pinnedPath.push_back(*uv);
+    record = keepDetailAfter(std::move(record), ending->manifest, ending->reach, ending->keep);
+    end.engineMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  end.changedTiles = record.tiles.size();
+  end.stepBytes = record.computeBytes();
+  if (end.dabs == 0 || record.tiles.empty()) return end;
+  history_.record(std::move(record));
+  end.label = label;
+  return end;
+}
+
+void SculptSession::abandonStroke() {
+  if (!stroke_) return;
+  const std::unique_ptr<ActiveStroke> ending = std::move(stroke_);
+  core::EditStep record;
+  try {
+    record = ending->stroke->finish(ending->start.brushId);
+  } catch (const core::Error&) { // a non-finite result: finish restored the layers itself
+    return;
+  }
+  const core::TileApplier apply = gpu::undoApplier(*document_);
+  for (auto t = record.tiles.rbegin(); t != record.tiles.rend(); ++t)
+    t->apply(core::TileState::Before, apply);
 }
 
 namespace {
 
 // The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
 // relaxation after it reaches keepDetailMargin samples beyond them and no farther.
-std::vector<std::uint8_t> changedSamples(const core::Stroke& record, int side) {
+std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side) {
   std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
                                     0);
   bool any = false;
@@ -228,7 +274,7 @@ core::RelaxOptions pinOptions(const std::vector<std::array<float, 2>>& pinnedPat
 // and no dab moved them since. Returns whether any is marked.
 bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
                    const std::unordered_map<std::size_t, core::Vec4f>& relaxed,
-                   const core::Stroke& soFar, const core::GeometryImage& positions) {
+                   const core::EditStep& soFar, const core::GeometryImage& positions) {
   const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
   if (dabChanged.empty()) dabChanged.assign(side * side, 0);
   for (const core::TileChange& t : soFar.tiles) {
@@ -253,7 +299,7 @@ bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
 }
 
 // Notes where `step` (a relaxation, applied) left the positions it changed.
-void noteRelaxed(std::unordered_map<std::size_t, core::Vec4f>& relaxed, const core::Stroke& step,
+void noteRelaxed(std::unordered_map<std::size_t, core::Vec4f>& relaxed, const core::EditStep& step,
                  const core::GeometryImage& positions) {
   const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
   const std::vector<std::uint8_t> moved = changedSamples(step, static_cast<int>(side));
@@ -278,7 +324,7 @@ void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& str
   const core::Document& document = document_->document();
   if (!addDabChanges(run.dabChanged, run.relaxed, stroke.recordSoFar(brush.id), document.positions))
     return;
-  const core::Stroke step = core::relaxChangedStep(
+  const core::EditStep step = core::relaxChangedStep(
       document, run.dabChanged, core::keepDetailMargin(document.positions, radius), brush.id,
       pinOptions(run.pinnedPath, n));
   if (step.tiles.empty()) return;
@@ -289,15 +335,16 @@ void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& str
                         : core::combineSteps(run.relaxations, step, document, brush.id);
 }
 
-core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush,
-                                            float radius, KeepDetailRun& run) {
+core::EditStep SculptSession::keepDetailAfter(core::EditStep record,
+                                              const gpu::BrushManifest& brush, float radius,
+                                              KeepDetailRun& run) {
   lastRelaxation_ = std::move(run.relaxations);
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
     return record;
   const int n = document_->size();
   if (!addDabChanges(run.dabChanged, run.relaxed, record, document_->document().positions))
     return record;
-  const core::Stroke step =
+  const core::EditStep step =
       core::relaxChangedStep(document_->document(), run.dabChanged,
                              core::keepDetailMargin(document_->document().positions, radius),
                              record.label, pinOptions(run.pinnedPath, n));
@@ -314,7 +361,7 @@ core::Stroke SculptSession::keepDetailAfter(core::Stroke record, const gpu::Brus
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,
                                                         const std::string& label) {
-  core::Stroke change = core::recordDifference(document_->document(), after, label);
+  core::EditStep change = core::recordDifference(document_->document(), after, label);
   if (change.tiles.empty()) return {};
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : change.tiles)
@@ -324,12 +371,12 @@ std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& af
   return rects;
 }
 
-const core::Stroke* SculptSession::undo() {
+const core::EditStep* SculptSession::undo() {
   if (!document_ || stroke_ || !history_.canUndo()) return nullptr;
   return history_.undo(gpu::undoApplier(*document_));
 }
 
-const core::Stroke* SculptSession::redo() {
+const core::EditStep* SculptSession::redo() {
   if (!document_ || stroke_ || !history_.canRedo()) return nullptr;
   return history_.redo(gpu::undoApplier(*document_));
 }
@@ -352,7 +399,7 @@ std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touc
   return core::mergeRects(touched);
 }
 
-std::vector<core::TexelRect> changedRects(const core::Stroke& stroke) {
+std::vector<core::TexelRect> changedRects(const core::EditStep& stroke) {
   std::vector<core::TexelRect> rects;
   for (const core::TileChange& t : stroke.tiles)
     rects.push_back(t.region);

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,11 +24,65 @@ class GpuDocument;
 
 namespace octaclay::app {
 
-/// What one run of the queued dabs did.
+/// How a stroke begins (SculptSession::beginStroke): the brush as the user set it and the view.
+/// The viewport fills it from the Brushes panel and its camera, `octaclay-cli stroke` from its
+/// options; everything after this is the session's.
+struct StrokeStart {
+  /// The brush to stroke with (Shift's smooth may differ from settings.brushId).
+  std::string brushId;
+  /// Radius (a fraction of the model's bounding-box diagonal as the stroke begins), strength,
+  /// pressure target, symmetry and keep detail; the area, falloff and parameters apply when
+  /// brushId is settings.brushId (else the manifest's). Fixed for the stroke.
+  BrushSettings settings;
+  /// Where colour paint goes (a brush writing only diffuse: the Layers dock's target).
+  core::EditLayer paintTarget = core::EditLayer::Diffuse;
+  float sign = 1; ///< negative inverts the brush (Ctrl)
+  /// The camera's eye (object space): splats project from it through each dab's centre, drags
+  /// move in the view plane through the stroke's start. Unset: along the dab's normal, and a
+  /// scripted drag along its points.
+  std::optional<core::Vec3f> eye;
+  float spacing = 0; ///< between dabs, a fraction of the radius; 0: the brush's (dabSpacing)
+};
+
+/// One move of a stroke (SculptSession::moveTo): to a point of the image, along a pointer's ray
+/// (dragging brushes after their first move) or to a point in object space (a dragging brush's
+/// scripted drag), with pen pressure in [0, 1].
+struct StrokeMove {
+  enum class Kind { ImagePoint, Ray, ObjectPoint };
+  Kind kind = Kind::ImagePoint;
+  core::Vec2f uv;                ///< ImagePoint: (u, v), each in [0, 1]
+  core::Vec3f origin, direction; ///< Ray: object space; ObjectPoint: origin is the point
+  float pressure = 1;
+
+  /// To image point uv (a pick's interpolated (u, v) or a path's point).
+  static StrokeMove toUv(core::Vec2f uv, float pressure = 1) {
+    return {Kind::ImagePoint, uv, {}, {}, pressure};
+  }
+  /// A dragging brush to where the pointer's ray meets the drag plane (gpu::StrokeSession::
+  /// dragAlong).
+  static StrokeMove alongRay(core::Vec3f origin, core::Vec3f direction, float pressure = 1) {
+    return {Kind::Ray, {}, origin, direction, pressure};
+  }
+  /// A dragging brush to point (gpu::StrokeSession::dragTo).
+  static StrokeMove toPoint(core::Vec3f point, float pressure = 1) {
+    return {Kind::ObjectPoint, {}, point, {}, pressure};
+  }
+};
+
+/// What one run of the queued moves did.
 struct DabRun {
   int made = 0;                         ///< dabs, mirrored ones included
   std::vector<core::TexelRect> touched; ///< texels the dabs ran over (empty after an error)
   std::string error;                    ///< why a dab failed; empty if none did
+};
+
+/// How a stroke ended (SculptSession::finishStroke).
+struct StrokeEnd {
+  std::string label;            ///< the brush id; empty when nothing was recorded
+  int dabs = 0;                 ///< mirrored ones included
+  double engineMs = 0;          ///< the brush engine's time and keep detail's, file I/O excluded
+  std::size_t changedTiles = 0; ///< tiles of the step (the stroke and its relaxation)
+  std::size_t stepBytes = 0;    ///< memory the step holds (core::EditStep::computeBytes)
 };
 
 /// One sculpting session, without widgets: the document on the GPU, the brushes it is edited
@@ -44,6 +99,8 @@ public:
   /// The brushes to sculpt with; both must outlive the session (or the next call).
   void setBrushes(gpu::BrushEngine& engine, const gpu::BrushCatalog& catalog);
   bool hasBrushes() const { return engine_ != nullptr; }
+  /// The brushes' catalog. Only valid if hasBrushes().
+  const gpu::BrushCatalog& brushes() const { return *catalog_; }
   /// Compiles brush as its manifest declares it.
   void loadBrush(const gpu::BrushManifest& brush);
   /// The brushes were recompiled from their files (a reload): their variants are compiled anew
@@ -65,53 +122,61 @@ public:
   /// Drops the stroke and the GPU document, e.g. before their GL context goes.
   void releaseGpu();
 
-  /// Begins a stroke of brush id: with the settings' area, falloff and parameters when id is
-  /// settings.brushId (else the manifest's), paint brushes writing paintTarget, inverted when
-  /// sign is negative, splats projecting from eye. Radius and strength are read at each dab
-  /// (runQueuedDabs). Throws (the message says why) if the brush is not loaded or will not
-  /// compile; no stroke begins then. Precondition: a document, brushes and no stroke.
-  void beginStroke(const std::string& id, const BrushSettings& settings,
-                   core::EditLayer paintTarget, float sign, core::Vec3f eye);
-  bool stroking() const { return stroke_ != nullptr; }
-  /// Queues a move of the stroke to image point uv (a pick's interpolated (u, v), each in
-  /// [0, 1]); pressure in [0, 1]. The stroke dabs along the way (gpu::StrokeSession::moveToUv).
-  void queueDab(core::Vec2f uv, float pressure);
-  /// Whether the stroke's brush drags (grab, snake hook: gpu::StrokeSession::drags()): after
-  /// its first queueDab, the viewport queues the pointer's rays with queueDrag instead.
-  bool strokeDrags() const;
-  /// Queues a dragging brush's move to the pointer's ray (object space, gpu::StrokeSession::
-  /// dragAlong).
-  void queueDrag(core::Vec3f origin, core::Vec3f direction, float pressure);
-  /// Makes the queued moves with the settings' current radius, strength and pressure target,
-  /// then empties the queue. A failing dab (a GL error, the watchdog) ends the run with its
-  /// error and the stroke with it: the layers are back as before the stroke, later dabs are
-  /// dropped and finishStroke() records nothing.
-  DabRun runQueuedDabs(const BrushSettings& settings);
-  /// Ends the stroke and records it in history(), labelled with its brush id, which it returns;
-  /// empty (nothing recorded) if it made no dab or changed nothing. When the result holds a
-  /// non-finite value the layers are restored, nothing is recorded, the stroke is over and
-  /// core::Error(InvalidInput) says where.
-  std::string finishStroke();
+  // The one stroke door. The viewport feeds it pointer samples (queueMove, runQueuedMoves once
+  // per frame), `octaclay-cli stroke` a path (playStroke in stroke_script.h): the same calls,
+  // so the same stroke gives the same document bit for bit.
 
-  /// Runs a whole stroke along settings.path (runStroke's contract; radius in object units)
-  /// with brush as loaded: the same rules as an interactive stroke (gpu/stroke_rules.h). It is
-  /// not recorded in history(). progress, when set, is told (dabs made, dabs expected).
-  gpu::StrokeResult strokeAlongPath(const gpu::BrushManifest& brush,
-                                    const gpu::StrokeSettings& settings,
-                                    const std::function<void(int, int)>& progress = {});
+  /// Begins a stroke as start says: the brush compiled as the settings ask (BrushVariants), the
+  /// radius unit (the diagonal) fixed. Throws (the message says why) if the brush is not loaded
+  /// or will not compile, and what gpu::StrokeSession's constructor throws (a parameter or view
+  /// that is not finite or out of range, a model with no usable size); no stroke begins then.
+  /// Precondition: a document, brushes and no stroke.
+  void beginStroke(const StrokeStart& start);
+  bool stroking() const { return stroke_ != nullptr; }
+  /// Whether the stroke's brush drags (grab, snake hook: gpu::StrokeSession::drags()): after
+  /// its first move, the viewport moves it along the pointer's rays.
+  bool strokeDrags() const;
+  /// Moves the stroke now: the dabs along the way at the stroke's radius and strength, scaled
+  /// by move.pressure as the settings' pressure target says. Returns the dabs made. Throws what
+  /// gpu::StrokeSession's moves throw; when a dab failed (a GL error, the watchdog) the layers
+  /// are back as before the stroke, later moves make no dab and finishStroke() records nothing.
+  /// Precondition: stroking().
+  int moveTo(const StrokeMove& move);
+  /// Queues a move for runQueuedMoves (the viewport: one run per frame).
+  void queueMove(const StrokeMove& move);
+  /// Makes the queued moves (moveTo), then empties the queue. A failing move ends the run with
+  /// its error, as moveTo says.
+  DabRun runQueuedMoves();
+  /// About how many dabs moving along path and then dragging through dragPoints will make
+  /// (gpu::StrokeSession::expectDabs), before any of it is done; throws
+  /// core::Error(InvalidArgument) past gpu::kMaxStrokeDabs. Precondition: stroking().
+  int expectDabs(const std::vector<std::array<float, 2>>& path,
+                 const std::vector<core::Vec3f>& dragPoints) const;
+  /// observer is told the stroke's dab count after each dab (a progress display).
+  void observeDabs(std::function<void(int)> observer);
+  /// Ends the stroke: keep detail relaxes what it stretched (when the start's settings ask and
+  /// the brush sculpts), holding the samples at the stroke's first and last image points (where
+  /// a press or a script's path begins and ends: a script that dabs there again, a limb pulled
+  /// click by click, finds the same spot after the relaxation), and the stroke and its relaxation
+  /// are recorded in history() as one step labelled with the brush id. Nothing is recorded when it
+  /// made no dab or changed nothing. When the result holds a non-finite value the layers are
+  /// restored, nothing is recorded, the stroke is over and core::Error(InvalidInput) says where.
+  StrokeEnd finishStroke();
+  /// Ends the stroke without recording it, the layers back as before it (a script refused
+  /// part-way). Nothing happens without a stroke.
+  void abandonStroke();
 
   /// Keep detail (on by default): after a sculpt stroke stretched the positions it changed, the
   /// samples within core::keepDetailMargin of the changed texels flow toward the stretch
   /// (core::relaxChangedStep); every other sample keeps its bits. A dragging stroke (snake hook)
   /// also relaxes as it goes (relaxBetweenDabs). The stroke and its relaxations are one undo
-  /// step. Applies to finishStroke() and strokeAlongPath() alike.
-  void setKeepDetail(bool on) { keepDetail_ = on; }
+  /// step. Each stroke's StrokeStart settings say whether it applies; this is the last stroke's.
   bool keepDetail() const { return keepDetail_; }
   /// What keep-detail's relaxations changed in the last stroke, during it (a dragging brush)
   /// and after it, as one step (no tiles when none moved): its tiles are what to redraw. After a
   /// stroke relaxed only at its end, its Before side is the surface as the stroke left it
   /// (benchmarks measure how far it moved).
-  const core::Stroke& lastRelaxation() const { return lastRelaxation_; }
+  const core::EditStep& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
   /// labelled label (e.g. the global even-out); returns the texel rectangles it changed (empty:
@@ -123,8 +188,8 @@ public:
   /// Reverts / reapplies the newest stroke on the GPU and the mirror: the stroke stepped, or
   /// null if there is none (or no document, or a stroke is being made). Throws what the
   /// history's applier throws; the history is then unchanged.
-  const core::Stroke* undo();
-  const core::Stroke* redo();
+  const core::EditStep* undo();
+  const core::EditStep* redo();
 
   long long dabs() const { return dabCount_; }    ///< made since the session began
   double lastDabMs() const { return lastDabMs_; } ///< per dab, over the last run that dabbed
@@ -136,16 +201,16 @@ private:
   /// Keep detail as a dragging stroke goes (snake hook): after its 4th dab, then each time its
   /// dab count doubles, the samples near what its dabs changed so far relax
   /// (core::relaxChangedStep), written into the stroke (gpu::StrokeSession::applyBetweenDabs)
-  /// so that it stays one undo step. The modeller's stroke and strokeAlongPath call it alike.
+  /// so that it stays one undo step. Both doors reach it: beginStroke observes every dab.
   void relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
                         const gpu::BrushManifest& brush, float radius, int dabs);
   /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
   // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
-  core::Stroke keepDetailAfter(core::Stroke record, const gpu::BrushManifest& brush, float radius,
-                               KeepDetailRun& run);
+  core::EditStep keepDetailAfter(core::EditStep record, const gpu::BrushManifest& brush,
+                                 float radius, KeepDetailRun& run);
 
   bool keepDetail_ = true;
-  core::Stroke lastRelaxation_;
+  core::EditStep lastRelaxation_;
   gpu::BrushEngine* engine_ = nullptr;
   const gpu::BrushCatalog* catalog_ = nullptr;
   BrushVariants variants_;
@@ -161,6 +226,6 @@ private:
 /// one). side is N + 1.
 std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side);
 /// The texel rectangles a recorded stroke changed.
-std::vector<core::TexelRect> changedRects(const core::Stroke& stroke);
+std::vector<core::TexelRect> changedRects(const core::EditStep& stroke);
 
 } // namespace octaclay::app

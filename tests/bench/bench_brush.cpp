@@ -2,6 +2,7 @@
 // bounding-box diagonal, material splat dabs at N = 1024, a whole-image smooth pass at each N, and
 // effective bytes/s of a dab beside a memcpy of the same bytes in the same run (issue 3's targets;
 // ANCHORS.md's Blender), and a push dab at N = 1024 with and without the GPU watchdog (issue 20).
+#include "../gpu/path_stroke.h"
 #include "bench_support.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -248,7 +249,7 @@ void timeStrokes(benchmark::State& state, const char* brush) {
   const int n = static_cast<int>(state.range(0));
   Session& s = session();
   gpu::GpuDocument& document = s.freshDocument(n);
-  gpu::StrokeSettings stroke;
+  gpu::testing::PathStroke stroke;
   stroke.brush = brush;
   stroke.path = {{0.5f, 0.5f}, {1.0f, 0.5f}, {1.0f, 0.0f}, {0.5f, 0.0f}, {0.5f, 0.5f}};
   stroke.radius = 0.1f * document.bounds().diagonal();
@@ -259,7 +260,7 @@ void timeStrokes(benchmark::State& state, const char* brush) {
   for (auto _ : state) {
     stroke.strength = k++ % 2 ? -0.05f : 0.05f; // out and back
     const auto start = std::chrono::steady_clock::now();
-    dabs += gpu::runStroke(s.library.engine(), document, manifest, stroke).dabs;
+    dabs += gpu::testing::strokeAlongPath(s.library.engine(), document, manifest, stroke).dabs;
     glFinish();
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

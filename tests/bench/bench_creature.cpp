@@ -48,14 +48,15 @@ Row makeCreature(gpu::BrushEngine& engine, const gpu::BrushCatalog& catalog, int
   const gpu::BrushManifest& hook = *catalog.find("snake-hook");
   app::SculptSession session;
   session.setBrushes(engine, catalog);
-  session.setKeepDetail(keepDetail);
   const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, n);
   session.setDocument(core::makeDocument(ball));
   const std::vector<testing::CreaturePart> all = testing::creatureParts(layout);
   double ms = 0;
   for (const testing::CreaturePart& part : all) {
     const auto start = Clock::now();
-    session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
+    app::StrokeScript stroke = testing::creatureStroke(part, ball, hook.id, session.diagonal());
+    stroke.start.settings.keepDetail = keepDetail;
+    app::playStroke(session, stroke);
     glFinish();
     ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   }

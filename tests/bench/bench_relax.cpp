@@ -7,6 +7,7 @@
 // left) and times; beside it push's per-dab cost with keep-detail off and on.
 // Arguments other than --sizes=a,b are ignored (scripts/bench passes benchmark filters to all).
 #include "sculpt_session.h"
+#include "stroke_script.h"
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -82,19 +83,19 @@ struct Limb {
 Limb pullLimb(Brushes& b, int n, bool keepDetail) {
   app::SculptSession session;
   session.setBrushes(b.engine, b.catalog);
-  session.setKeepDetail(keepDetail);
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
   double ms = 0;
   core::SurfaceDistance worst;
   for (int i = 0; i < 15; ++i) {
-    gpu::StrokeSettings s;
-    s.brush = "push";
+    app::StrokeScript s;
+    s.start.brushId = s.start.settings.brushId = "push";
+    s.start.settings.radius = 0.06f;
+    s.start.settings.strength = 1.0f;
+    s.start.settings.keepDetail = keepDetail;
+    s.start.spacing = 1.0f;
     s.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
-    s.radius = 0.06f * session.gpuDocument().bounds().diagonal();
-    s.strength = 1.0f;
-    s.spacing = 1.0f;
     const auto start = Clock::now();
-    session.strokeAlongPath(*b.push, s);
+    app::playStroke(session, s);
     glFinish();
     ms += msSince(start);
     if (session.lastRelaxation().tiles.empty()) continue;
@@ -120,15 +121,15 @@ double pushPerDab(Brushes& b, int n, bool keepDetail, bool pull) {
   for (int run = 0; run < 5; ++run) {
     app::SculptSession session;
     session.setBrushes(b.engine, b.catalog);
-    session.setKeepDetail(keepDetail);
     session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
-    gpu::StrokeSettings s;
-    s.brush = "push";
+    app::StrokeScript s;
+    s.start.brushId = s.start.settings.brushId = "push";
+    s.start.settings.radius = pull ? 0.06f : 0.1f;
+    s.start.settings.strength = pull ? 4.0f : 0.5f;
+    s.start.settings.keepDetail = keepDetail;
     s.path = {{0.35f, 0.5f}, {0.65f, 0.5f}};
-    s.radius = (pull ? 0.06f : 0.1f) * session.gpuDocument().bounds().diagonal();
-    s.strength = pull ? 4.0f : 0.5f;
     const auto start = Clock::now();
-    const gpu::StrokeResult r = session.strokeAlongPath(*b.push, s);
+    const app::StrokeEnd r = app::playStroke(session, s);
     glFinish();
     perDab.push_back(msSince(start) / std::max(1, r.dabs));
   }

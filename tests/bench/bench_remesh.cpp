@@ -14,6 +14,7 @@
 // there. Other arguments are ignored (scripts/bench passes benchmark filters).
 #include "../creature_layout.h"
 #include "sculpt_session.h"
+#include "stroke_script.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -147,22 +148,27 @@ int main(int argc, char** argv) {
   for (const char* id : {"snake-hook", "push", "relax", "paint"})
     engine.load(*catalog.find(id), gpu::BrushCatalog::shaderSource(*catalog.find(id)));
 
-  const auto session = [&](int n, bool keepDetail) {
+  const auto session = [&](int n) {
     auto s = std::make_unique<app::SculptSession>();
     s->setBrushes(engine, catalog);
-    s->setKeepDetail(keepDetail);
     s->setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
+    return s;
+  };
+  // A stroke as octaclay-cli makes it: radius a fraction of the diagonal (--radius).
+  const auto script = [](const char* id, float radius, float strength, bool keepDetail) {
+    app::StrokeScript s;
+    s.start.brushId = s.start.settings.brushId = id;
+    s.start.settings.radius = radius;
+    s.start.settings.strength = strength;
+    s.start.settings.keepDetail = keepDetail;
     return s;
   };
   // A stroke of the paint brush across the pulled part's base, as cli_resample_test paints the
   // limb (`stroke --brush paint --path 0.70,0.40;0.72,0.42 --radius 0.04 --strength 1`).
   const auto paint = [&](app::SculptSession& s, std::array<float, 2> at) {
-    gpu::StrokeSettings p;
-    p.brush = "paint";
+    app::StrokeScript p = script("paint", 0.04f, 1, true);
     p.path = {at, {at[0] + 0.02f, at[1] + 0.02f}};
-    p.radius = 0.04f * s.gpuDocument().bounds().diagonal();
-    p.strength = 1;
-    s.strokeAlongPath(*catalog.find("paint"), p);
+    app::playStroke(s, p);
     glFinish();
   };
   const auto run = [&](const Case& c) {
@@ -174,44 +180,39 @@ int main(int argc, char** argv) {
   {
     // `stroke --brush snake-hook --path 0.70,0.40 --drag … --radius 0.05 --strength 1
     // --keep-detail off`, then the paint stroke.
-    auto s = session(256, false);
-    gpu::StrokeSettings hook;
-    hook.brush = "snake-hook";
+    auto s = session(256);
+    app::StrokeScript hook = script("snake-hook", 0.05f, 1, false);
     hook.path = {{0.70f, 0.40f}};
     hook.dragPoints = {
         {0.9f, -0.35f, 0.55f}, {1.3f, -0.55f, 0.8f}, {1.7f, -0.75f, 1.05f}, {2.0f, -0.9f, 1.25f}};
-    hook.radius = 0.05f * s->gpuDocument().bounds().diagonal(); // --radius is of the diagonal
-    hook.strength = 1;
-    s->strokeAlongPath(*catalog.find("snake-hook"), hook);
+    app::playStroke(*s, hook);
+    glFinish();
     paint(*s, {0.70f, 0.40f});
     run({"limb", s->document(), limbParts});
   }
   {
     // Fourteen `stroke --brush push --path 0.70,0.40 --radius 0.05 --strength 13.3` (keep
     // detail on, each with the radius of the model's diagonal then), then the paint stroke.
-    auto s = session(256, true);
-    gpu::StrokeSettings push;
-    push.brush = "push";
+    auto s = session(256);
+    app::StrokeScript push = script("push", 0.05f, 13.3f, true);
     push.path = {{0.70f, 0.40f}};
-    push.strength = 13.3f;
     for (int i = 0; i < 14; ++i) {
-      push.radius = 0.05f * s->gpuDocument().bounds().diagonal();
-      s->strokeAlongPath(*catalog.find("push"), push);
+      app::playStroke(*s, push);
       glFinish();
     }
     paint(*s, {0.70f, 0.40f});
     run({"spike", s->document(), limbParts});
   }
   if (creatureSize > 0) {
-    auto s = session(creatureSize, true);
+    auto s = session(creatureSize);
     const std::vector<testing::CreaturePart> parts =
         testing::creatureParts(testing::CreatureLayout::Animal);
     const core::GeometryImage ball = s->document().positions;
     for (const testing::CreaturePart& part : parts)
-      s->strokeAlongPath(*catalog.find("snake-hook"),
-                         testing::creatureStroke(part, ball, "snake-hook"));
+      app::playStroke(*s, testing::creatureStroke(part, ball, "snake-hook", s->diagonal()));
     glFinish();
-    const gpu::StrokeSettings first = testing::creatureStroke(parts.front(), ball, "snake-hook");
+    const app::StrokeScript first =
+        testing::creatureStroke(parts.front(), ball, "snake-hook", s->diagonal());
     paint(*s, first.path.front());
     run({"creature" + std::to_string(creatureSize), s->document(),
          [parts](const core::GeometryImage& image) {

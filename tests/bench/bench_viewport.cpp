@@ -214,7 +214,7 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
   checkShownTriangles(widget);
 
   // The stroke must have changed the model; no texel moves more than strength x radius a dab.
-  const core::Stroke* record = widget.history().nextUndo();
+  const core::EditStep* record = widget.history().nextUndo();
   f.recordTexels = record ? record->changedTexels : 0;
   const core::GeometryImage& now = widget.document().positions;
   for (int j = 0; j <= n; ++j)

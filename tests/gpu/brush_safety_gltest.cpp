@@ -5,6 +5,7 @@
 // BrushTimeoutError.
 
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -39,8 +40,8 @@ std::vector<std::vector<float>> snapshot(GpuDocument& document) {
   return layers;
 }
 
-StrokeSettings strokeOf(const std::string& brush, float strength) {
-  StrokeSettings s;
+PathStroke strokeOf(const std::string& brush, float strength) {
+  PathStroke s;
   s.brush = brush;
   s.path = {{0.5f, 0.5f}, {0.6f, 0.5f}};
   s.radius = 0.3f;
@@ -77,7 +78,7 @@ private:
   // Runs the stroke and returns the core::Error kind and message it must throw; fails the test
   // when it does not throw, or when the document changed.
   std::pair<core::ErrorKind, std::string> refused(const BrushManifest& brush,
-                                                  const StrokeSettings& stroke);
+                                                  const PathStroke& stroke);
 
   std::optional<GlContext> context_;
   std::optional<BrushEngine> engine_;
@@ -113,12 +114,12 @@ const BrushManifest& BrushSafetyTest::plugin(const std::string& id, const std::s
 }
 
 std::pair<core::ErrorKind, std::string> BrushSafetyTest::refused(const BrushManifest& brush,
-                                                                 const StrokeSettings& stroke) {
+                                                                 const PathStroke& stroke) {
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 32)));
   const auto before = snapshot(document);
   std::pair<core::ErrorKind, std::string> error{core::ErrorKind::Io, "it did not throw"};
   try {
-    runStroke(*engine_, document, brush, stroke);
+    strokeAlongPath(*engine_, document, brush, stroke);
   } catch (const core::Error& e) {
     error = {e.kind(), e.what()};
   }
@@ -183,7 +184,7 @@ void BrushSafetyTest::nonFiniteSettingsAreRefused() {
              "vec4 brush(vec4 value, BrushInput b) {\n"
              "  return value + vec4(u_tint.rgb * u_amount * b.weight, 0);\n"
              "}\n");
-  StrokeSettings stroke = strokeOf("tunable", 0.1f);
+  PathStroke stroke = strokeOf("tunable", 0.1f);
   if (setting == "strength") stroke.strength = value;
   if (setting == "radius") stroke.radius = value;
   if (setting == "pressure") stroke.pressure = value;
@@ -209,7 +210,7 @@ void BrushSafetyTest::overrunningPassMarksTheBrushBroken() {
   const std::string expected =
       (brush.folder / "brush.glsl").string() + ": a pass took longer than 1 µs";
   try {
-    runStroke(*engine_, document, brush, strokeOf("loop", 0.5f));
+    strokeAlongPath(*engine_, document, brush, strokeOf("loop", 0.5f));
     QFAIL("the overrunning pass was not caught");
   } catch (const BrushTimeoutError& e) {
     QVERIFY2(std::string(e.what()).starts_with(expected), e.what());
@@ -220,13 +221,13 @@ void BrushSafetyTest::overrunningPassMarksTheBrushBroken() {
   QVERIFY(engine_->brokenReason("push") == nullptr);
   // Broken until loaded again, even with a generous limit.
   QVERIFY_THROWS_EXCEPTION(BrushTimeoutError,
-                           runStroke(*engine_, document, brush, strokeOf("loop", 0.5f)));
+                           strokeAlongPath(*engine_, document, brush, strokeOf("loop", 0.5f)));
   QVERIFY(sameBits(snapshot(document), before));
   // The other brushes work on, and the reloaded brush runs within 2 s.
-  runStroke(*engine_, document, manifests_.at("push"), strokeOf("push", 0.1f));
+  strokeAlongPath(*engine_, document, manifests_.at("push"), strokeOf("push", 0.1f));
   engine_->load(brush, readFile(brush.shaderPath()));
   QVERIFY(engine_->brokenReason("loop") == nullptr);
-  runStroke(*engine_, document, brush, strokeOf("loop", 0.5f));
+  strokeAlongPath(*engine_, document, brush, strokeOf("loop", 0.5f));
 }
 
 QTEST_APPLESS_MAIN(BrushSafetyTest)

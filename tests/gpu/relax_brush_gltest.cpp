@@ -5,6 +5,7 @@
 // with its file and line.
 
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/edit_history.h"
@@ -211,7 +212,7 @@ private:
   // A sphere with a limb pulled out at the pole sample (N/2, N/2): 15 one-dab push strokes.
   GpuDocument limb();
   // Relax strokes along the limb, base to tip; returns the last one's undo record.
-  core::Stroke relax(GpuDocument& document, int strokes);
+  core::EditStep relax(GpuDocument& document, int strokes);
 
   std::optional<GlContext> context_;
   std::optional<BrushEngine> engine_;
@@ -242,23 +243,23 @@ void RelaxBrushTest::manifestIsAReparameterizePass() {
 
 GpuDocument RelaxBrushTest::limb() {
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, kN)));
-  StrokeSettings push;
+  PathStroke push;
   push.brush = "push";
   push.path = {{0.5f, 0.5f}};
   push.radius = 0.06f * document.bounds().diagonal();
   push.strength = 1.0f;
   push.spacing = 1.0f;
   for (int k = 0; k < 15; ++k)
-    runStroke(*engine_, document, manifests_.at("push"), push);
+    strokeAlongPath(*engine_, document, manifests_.at("push"), push);
   return document;
 }
 
-core::Stroke RelaxBrushTest::relax(GpuDocument& document, int strokes) {
-  StrokeSettings settings;
+core::EditStep RelaxBrushTest::relax(GpuDocument& document, int strokes) {
+  PathStroke settings;
   settings.brush = "relax";
   settings.radius = 1.0f;
   settings.strength = 1.0f;
-  core::Stroke last;
+  core::EditStep last;
   for (int k = 0; k < strokes; ++k) {
     // Along the limb from its base to its tip: the samples on the ray i > N/2 from the pole.
     const core::GeometryImage& image = document.document().positions;
@@ -270,7 +271,7 @@ core::Stroke RelaxBrushTest::relax(GpuDocument& document, int strokes) {
       if (r > far) far = r, tip = i;
     }
     settings.path = {{float(base) / kN, 0.5f}, {float(tip) / kN, 0.5f}};
-    last = runStroke(*engine_, document, manifests_.at("relax"), settings).undo;
+    last = strokeAlongPath(*engine_, document, manifests_.at("relax"), settings).undo;
   }
   return last;
 }
@@ -278,7 +279,7 @@ core::Stroke RelaxBrushTest::relax(GpuDocument& document, int strokes) {
 void RelaxBrushTest::relaxGivesTheLimbSamplesAndKeepsTheSurface() {
   GpuDocument document = limb();
   // A stripe round the limb's middle.
-  StrokeSettings paint;
+  PathStroke paint;
   paint.brush = "paint";
   paint.radius = 0.4f;
   paint.strength = 1.0f;
@@ -290,7 +291,7 @@ void RelaxBrushTest::relaxGivesTheLimbSamplesAndKeepsTheSurface() {
       if (core::length(image.at(i, kN / 2).xyz()) > 2.5f) middle = i;
     paint.path = {{float(middle) / kN, 0.5f}};
   }
-  runStroke(*engine_, document, manifests_.at("paint"), paint);
+  strokeAlongPath(*engine_, document, manifests_.at("paint"), paint);
 
   const core::Document start = document.document();
   const Sampling old = measure(start.positions);
@@ -410,12 +411,12 @@ void RelaxBrushTest::relaxGivesTheLimbSamplesAndKeepsTheSurface() {
 
 void RelaxBrushTest::undoRedoIsBitExact() {
   GpuDocument document = limb();
-  StrokeSettings paint;
+  PathStroke paint;
   paint.brush = "paint";
   paint.path = {{0.55f, 0.5f}};
   paint.radius = 0.5f;
   paint.strength = 1.0f;
-  runStroke(*engine_, document, manifests_.at("paint"), paint);
+  strokeAlongPath(*engine_, document, manifests_.at("paint"), paint);
   const auto start = snapshot(document);
   core::EditHistory history;
   history.record(relax(document, 1));

@@ -9,6 +9,7 @@
 
 #include "../mesh_self_intersections.h"
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/error.h"
@@ -36,9 +37,9 @@ namespace {
 constexpr const char* kNewBrushes[] = {"grab",  "snake-hook",  "pinch",  "crease",
                                        "layer", "clay-strips", "scrape", "twist"};
 
-StrokeSettings strokeOf(const std::string& brush, std::vector<std::array<float, 2>> path,
-                        float radius, float strength) {
-  StrokeSettings s;
+PathStroke strokeOf(const std::string& brush, std::vector<std::array<float, 2>> path, float radius,
+                    float strength) {
+  PathStroke s;
   s.brush = brush;
   s.path = std::move(path);
   s.radius = radius;
@@ -86,8 +87,8 @@ private slots:
   void strokesOverSeamsAndPoleStayClosedAndUndo();
 
 private:
-  StrokeResult stroke(GpuDocument& document, const StrokeSettings& settings) {
-    return runStroke(*engine_, document, manifests_.at(settings.brush), settings);
+  StrokeResult stroke(GpuDocument& document, const PathStroke& settings) {
+    return strokeAlongPath(*engine_, document, manifests_.at(settings.brush), settings);
   }
   std::optional<GlContext> context_;
   std::optional<BrushEngine> engine_;
@@ -124,8 +125,7 @@ void SculptBrushesTest::grabMovesTheDragStartToItsEnd() {
   const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
   GpuDocument document(core::makeDocument(sphere));
   // From the +z pole (sample (64, 64)) over a third of the way to the point the drag ends at.
-  StrokeSettings settings =
-      strokeOf("grab", {{0.5f, 0.5f}, {0.53f, 0.52f}, {0.56f, 0.5f}}, 0.3f, 1.0f);
+  PathStroke settings = strokeOf("grab", {{0.5f, 0.5f}, {0.53f, 0.52f}, {0.56f, 0.5f}}, 0.3f, 1.0f);
   const core::Vec3f start = surfaceAt(sphere, settings.path.front());
   core::Vec3f drag = surfaceAt(sphere, settings.path.back()) - start;
   if (view) {
@@ -184,7 +184,7 @@ void SculptBrushesTest::grabDraggedByItsRadiusDoesNotCrossItself() {
         {{0.25f, 0.25f}, {0.15f, 0.3f}},
         {{0.0f, 0.25f}, {0.08f, 0.2f}}}) {
     const core::GeometryImage before = document.document().positions;
-    StrokeSettings settings = strokeOf(brush.toStdString(), path, 1.0f, 1.0f);
+    PathStroke settings = strokeOf(brush.toStdString(), path, 1.0f, 1.0f);
     settings.radius =
         core::length(surfaceAt(before, path.back()) - surfaceAt(before, path[0])) / dragOverRadius;
     QVERIFY(settings.radius > 0.05f);
@@ -202,7 +202,7 @@ void SculptBrushesTest::snakeHookFollowsAnLShapedPath() {
   const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
   GpuDocument document(core::makeDocument(sphere));
   // Out of the +z pole, seen from above: right, then up; the limb grows in the plane z = 1.
-  StrokeSettings settings =
+  PathStroke settings =
       strokeOf("snake-hook", {{0.5f, 0.5f}, {0.62f, 0.5f}, {0.62f, 0.62f}}, 0.15f, 1.0f);
   settings.viewEye = core::Vec3f{0.0f, 0.0f, 6.0f};
   const core::Vec3f start = surfaceAt(sphere, settings.path.front());
@@ -238,7 +238,7 @@ void SculptBrushesTest::draggingBrushesFollowThePointersRay() {
   const core::Vec3f pole = sphere.at(n / 2, n / 2).xyz(), end{0.35f, 0.2f, 1.0f};
   for (const char* brush : {"grab", "snake-hook"}) {
     GpuDocument document(core::makeDocument(sphere));
-    StrokeSettings settings = strokeOf(brush, {}, 0.3f, 1.0f);
+    PathStroke settings = strokeOf(brush, {}, 0.3f, 1.0f);
     settings.viewEye = eye;
     StrokeSession session(*engine_, document, manifests_.at(brush), settings);
     QVERIFY(session.drags());
@@ -450,7 +450,7 @@ void SculptBrushesTest::strokesOverSeamsAndPoleStayClosedAndUndo() {
   QFETCH(QString, path);
   const int n = 64;
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
-  StrokeSettings settings = strokeOf(brush.toStdString(), {}, 0.25f, strength);
+  PathStroke settings = strokeOf(brush.toStdString(), {}, 0.25f, strength);
   for (const QString& point : path.split(';'))
     settings.path.push_back({point.split(',')[0].toFloat(), point.split(',')[1].toFloat()});
   const auto start = snapshot(document);

@@ -3,7 +3,9 @@
 // material texels keep their object-space size where the image is stretched, the uv mode's not;
 // the one-pass splat (brushLayers) writes what per-layer passes of the same body would.
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/octahedral.h"
@@ -435,7 +437,7 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   const int n = d.size(), side = n + 1;
   const std::vector<float> diffuse = layerTexels(d, core::EditLayer::Diffuse);
   const std::vector<float> feature = layerTexels(d, core::EditLayer::Feature);
-  StrokeSettings settings;
+  PathStroke settings;
   settings.brush = "splat";
   settings.radius = 0.3f;
   settings.strength = 1.0f;
@@ -453,7 +455,7 @@ void SplatTest::aStrokeReadsItsPaintBackOnceAtItsEnd() {
   QCOMPARE(layerTexels(d, core::EditLayer::Positions), texture);
   session.moveTo(end, settings.radius, settings.strength, 1.0f);
   QVERIFY(session.dabs() > 3);
-  core::Stroke undo = session.finish("splat");
+  core::EditStep undo = session.finish("splat");
   QVERIFY(!d.mirrorStale());
 
   const std::vector<float> paint = d.texture(core::EditLayer::Diffuse).read({0, 0, side, side});

@@ -1,10 +1,11 @@
 // Strokes follow one set of rules (gpu/stroke_rules.h) whatever the image's resolution and
 // whoever feeds them: the same stroke on a sphere at N = 128 … 1024 makes the same dabs and the
-// same shape; StrokeSession fed the points a viewport picks along the way dabs where runStroke
-// dabs along the path's two ends; a dab falls every spacing × radius of the surface as it was
+// same shape; StrokeSession fed the points a viewport picks along the way dabs where it dabs
+// fed only the path's two ends; a dab falls every spacing × radius of the surface as it was
 // when the stroke began, the remainder carried across moves.
 
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/ray_pick.h"
@@ -91,13 +92,13 @@ Shape StrokeIndependenceTest::strokeSphere(int n, float spacing) {
   const core::GeometryImage before = document.document().positions;
   Shape shape;
   const std::vector<float> profileBefore = radialProfile(document);
-  StrokeSettings stroke;
+  PathStroke stroke;
   stroke.brush = "push";
   stroke.path = {kFrom, kTo};
   shape.radius = stroke.radius = kRadiusFraction * document.bounds().diagonal();
   stroke.strength = kStrength;
   stroke.spacing = spacing;
-  shape.dabs = runStroke(*engine_, document, manifests_.at("push"), stroke).dabs;
+  shape.dabs = strokeAlongPath(*engine_, document, manifests_.at("push"), stroke).dabs;
   const core::GeometryImage& after = document.document().positions;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i)
@@ -147,17 +148,18 @@ void StrokeIndependenceTest::sameStrokeAtEveryN() {
 }
 
 // The viewport feeds a StrokeSession the (u, v) it picks at every pointer move; those points
-// lie on the path, so the dabs must be runStroke's, whatever the points and their count.
+// lie on the path, so the dabs must be those of the path's two ends, whatever the points and
+// their count.
 void StrokeIndependenceTest::viewportPointsDabWhereThePathDabs() {
   const int n = 256;
   const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
   GpuDocument scripted(core::makeDocument(sphere)), interactive(core::makeDocument(sphere));
-  StrokeSettings stroke;
+  PathStroke stroke;
   stroke.brush = "push";
   stroke.path = {kFrom, kTo};
   stroke.radius = kRadiusFraction * scripted.bounds().diagonal();
   stroke.strength = kStrength;
-  const StrokeResult result = runStroke(*engine_, scripted, manifests_.at("push"), stroke);
+  const StrokeResult result = strokeAlongPath(*engine_, scripted, manifests_.at("push"), stroke);
 
   StrokeSession session(*engine_, interactive, manifests_.at("push"), stroke);
   int dabs = 0;
@@ -202,7 +204,7 @@ void StrokeIndependenceTest::dabsFallEverySpacingOfTheStartSurface() {
       };
       length += double(core::length(at(step + 1) - at(step)));
     }
-  StrokeSettings settings;
+  PathStroke settings;
   settings.brush = "paint";
   settings.parameters["color"] = {1, 0, 0, 1};
   StrokeSession session(*engine_, document, paint, settings);
@@ -224,13 +226,13 @@ void StrokeIndependenceTest::onePointIsOneDabAtTheSpacingShare() {
   for (float spacing : {1.0f, 0.0f}) {
     GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
     const core::Vec3f start = document.document().positions.at(pole).xyz();
-    StrokeSettings stroke;
+    PathStroke stroke;
     stroke.brush = "push";
     stroke.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
     stroke.radius = 0.3f;
     stroke.strength = 0.8f;
     stroke.spacing = spacing;
-    QCOMPARE(runStroke(*engine_, document, manifests_.at("push"), stroke).dabs, 1);
+    QCOMPARE(strokeAlongPath(*engine_, document, manifests_.at("push"), stroke).dabs, 1);
     const float moved = core::length(document.document().positions.at(pole).xyz() - start);
     const float expected =
         stroke.strength * stroke.radius * dabShare(manifests_.at("push"), spacing);

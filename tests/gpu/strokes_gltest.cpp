@@ -1,11 +1,14 @@
 // Strokes on the GPU: a stroke over seams and the corner pole leaves a closed genus-0 surface
 // with no crack, symmetric strokes give mirror-equal results, and undo/redo over 100 random
 // strokes of every brush restores each state bit-exactly on the CPU mirror and the textures.
-// StrokeSession (the interactive stroke) dabs exactly where runStroke does, names every texel
-// it changed for redrawing, and its undo record restores the start bit-exactly.
+// StrokeSession names every texel it changed for redrawing, and its undo record restores the
+// start bit-exactly. (That a viewport's stroke and a script's are the same stroke is tested at
+// the one door they share: tests/gui/stroke_door_test.cpp.)
 
 #include "brush_test_support.h"
+#include "path_stroke.h"
 
+#include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -46,9 +49,9 @@ std::vector<std::vector<float>> textureSnapshot(GpuDocument& document) {
   return layers;
 }
 
-StrokeSettings strokeOf(const std::string& brush, std::vector<std::array<float, 2>> path,
-                        float radius, float strength) {
-  StrokeSettings s;
+PathStroke strokeOf(const std::string& brush, std::vector<std::array<float, 2>> path, float radius,
+                    float strength) {
+  PathStroke s;
   s.brush = brush;
   s.path = std::move(path);
   s.radius = radius;
@@ -90,8 +93,6 @@ private slots:
   void symmetricStrokesAreMirrorEqual_data();
   void symmetricStrokesAreMirrorEqual();
   void undoRedoIsBitExactOverRandomStrokes();
-  void sessionDabsWhereRunStrokeDabs_data();
-  void sessionDabsWhereRunStrokeDabs();
   void sessionTouchedRectsCoverEveryChange();
   void sessionUndoRestoresTheStartBitExactly();
   void sessionRefusesSamplesOutsideTheImage();
@@ -127,10 +128,11 @@ void StrokesTest::strokeOverSeamsAndPoleLeavesAClosedSphere() {
   const int n = 128;
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
   // Across the left seam, along the bottom seam, into the corner pole and out over the top.
-  const StrokeSettings stroke =
+  const PathStroke stroke =
       strokeOf(brush.toStdString(),
                {{0.1f, 0.3f}, {0.0f, 0.3f}, {0.0f, 0.0f}, {0.3f, 0.0f}, {0.7f, 1.0f}}, 0.25f, 0.3f);
-  const StrokeResult result = runStroke(*engine_, document, manifest(brush.toStdString()), stroke);
+  const StrokeResult result =
+      strokeAlongPath(*engine_, document, manifest(brush.toStdString()), stroke);
   QVERIFY(result.dabs > 10);
   const core::GeometryImage& after = document.document().positions;
   QCOMPARE(core::maxSeamGap(after), 0.0f);
@@ -182,10 +184,11 @@ void StrokesTest::symmetricStrokesAreMirrorEqual() {
       byPosition[key(sphere.at(i, j).xyz())] = {i, j};
 
   GpuDocument document(core::makeDocument(sphere));
-  StrokeSettings stroke =
+  PathStroke stroke =
       strokeOf(brush.toStdString(), {{u, v}, {u + 0.05f, v + 0.05f}}, 0.3f, strength);
   stroke.symmetry = axis;
-  const StrokeResult result = runStroke(*engine_, document, manifest(brush.toStdString()), stroke);
+  const StrokeResult result =
+      strokeAlongPath(*engine_, document, manifest(brush.toStdString()), stroke);
   QVERIFY(result.dabs >= 4);
   QCOMPARE(result.dabs % 2, 0);
   const core::GeometryImage& after = document.document().positions;
@@ -214,7 +217,7 @@ void StrokesTest::undoRedoIsBitExactOverRandomStrokes() {
                                          "sphere-add", "sphere-subtract", "mask",   "paint"};
   int strokes = 0;
   while (strokes < 100) {
-    StrokeSettings stroke;
+    PathStroke stroke;
     stroke.brush = brushes[random() % brushes.size()];
     const int points = 1 + int(random() % 3);
     for (int k = 0; k < points; ++k)
@@ -224,7 +227,7 @@ void StrokesTest::undoRedoIsBitExactOverRandomStrokes() {
     stroke.symmetry = random() % 4 == 0 ? unsigned(random() % 8) : 0u;
     if (stroke.brush == "paint")
       stroke.parameters["color"] = {unit(random), unit(random), unit(random), 1.0f};
-    StrokeResult result = runStroke(*engine_, document, manifest(stroke.brush), stroke);
+    StrokeResult result = strokeAlongPath(*engine_, document, manifest(stroke.brush), stroke);
     const std::size_t before = history.undoCount();
     history.record(std::move(result.undo));
     if (history.undoCount() == before) { // nothing changed: nothing to undo
@@ -250,48 +253,12 @@ void StrokesTest::undoRedoIsBitExactOverRandomStrokes() {
   QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
 }
 
-void StrokesTest::sessionDabsWhereRunStrokeDabs_data() {
-  QTest::addColumn<QString>("brush");
-  QTest::addColumn<unsigned>("symmetry");
-  QTest::newRow("push") << "push" << 0u;
-  QTest::newRow("inflate x") << "inflate" << unsigned(kSymmetryX);
-  QTest::newRow("paint xz") << "paint" << unsigned(kSymmetryX | kSymmetryZ);
-}
-
-// runStroke is a session fed its path points, so both must dab at the very same places: the
-// same dab count and bit-identical layers, over seams and with symmetry.
-void StrokesTest::sessionDabsWhereRunStrokeDabs() {
-  QFETCH(QString, brush);
-  QFETCH(unsigned, symmetry);
-  const int n = 64;
-  const core::GeometryImage blob = core::makeBaseShape(core::BaseShape::Blob, n);
-  GpuDocument scripted(core::makeDocument(blob)), interactive(core::makeDocument(blob));
-  StrokeSettings stroke = strokeOf(
-      brush.toStdString(), {{0.2f, 0.3f}, {0.0f, 0.35f}, {0.0f, 0.1f}, {0.4f, 0.6f}}, 0.2f, 0.3f);
-  stroke.symmetry = symmetry;
-  stroke.parameters["color"] = {0.9f, 0.2f, 0.1f, 1.0f};
-  const BrushManifest& brushManifest = manifest(stroke.brush);
-  const StrokeResult result = runStroke(*engine_, scripted, brushManifest, stroke);
-
-  StrokeSession session(*engine_, interactive, brushManifest, stroke);
-  int dabs = 0;
-  for (const auto& uv : stroke.path)
-    dabs += session.moveToUv({uv[0], uv[1]}, stroke.radius, stroke.strength);
-  const core::Stroke undo = session.finish("interactive");
-  QVERIFY(result.dabs > 4);
-  QCOMPARE(dabs, result.dabs);
-  QCOMPARE(session.dabs(), result.dabs);
-  QVERIFY(sameBits(snapshot(interactive), snapshot(scripted)));
-  QVERIFY(sameBits(textureSnapshot(interactive), textureSnapshot(scripted)));
-  QCOMPARE(undo.label, std::string("interactive"));
-}
-
 // A modeller redraws only what takeTouched() names, so every texel a move changed (on any
 // layer, seams included) must lie in its rectangles.
 void StrokesTest::sessionTouchedRectsCoverEveryChange() {
   const int n = 64, side = n + 1;
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
-  StrokeSettings settings = strokeOf("inflate", {}, 0.15f, 0.4f);
+  PathStroke settings = strokeOf("inflate", {}, 0.15f, 0.4f);
   settings.symmetry = kSymmetryY;
   StrokeSession session(*engine_, document, manifest("inflate"), settings);
   // Ends across the left seam so a seamed dab is among them.
@@ -321,7 +288,7 @@ void StrokesTest::sessionUndoRestoresTheStartBitExactly() {
   const int n = 64;
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
   const auto start = snapshot(document);
-  StrokeSettings settings = strokeOf("push", {}, 0.2f, 0.5f);
+  PathStroke settings = strokeOf("push", {}, 0.2f, 0.5f);
   settings.symmetry = kSymmetryX;
   StrokeSession session(*engine_, document, manifest("push"), settings);
   // Pressure and radius vary along the stroke as a pen's would.
@@ -365,7 +332,7 @@ void StrokesTest::sessionRefusesSamplesOutsideTheImage() {
   unknown.id = "not-loaded";
   bool refused = false;
   try {
-    StrokeSession never(*engine_, document, unknown, StrokeSettings{});
+    StrokeSession never(*engine_, document, unknown, PathStroke{});
   } catch (const core::Error& e) {
     refused = e.kind() == core::ErrorKind::UnknownId;
   }

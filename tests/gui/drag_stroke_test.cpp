@@ -55,27 +55,28 @@ void DragStrokeTest::dragFollowsThePointersRays() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(*catalog_.find(id));
-  session.setKeepDetail(keepDetail);
   const int n = 128;
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n)));
   const auto before = snapshot(session.gpuDocument());
-  app::BrushSettings settings;
-  settings.brushId = id;
-  settings.radius = 0.08f; // of the diagonal: 0.28
-  settings.strength = 1.0f;
-  settings.pressureTarget = app::PressureTarget::None;
+  app::StrokeStart start;
+  start.brushId = start.settings.brushId = id;
+  start.settings.radius = 0.08f; // of the diagonal: 0.28
+  start.settings.strength = 1.0f;
+  start.settings.pressureTarget = app::PressureTarget::None;
+  start.settings.keepDetail = keepDetail;
   const core::Vec3f eye{0, 0, 10}, end{0.3f, 0.1f, 1.0f}; // on the view plane z = 1
-  session.beginStroke(id, settings, core::EditLayer::Diffuse, 1.0f, eye);
+  start.eye = eye;
+  session.beginStroke(start);
   QVERIFY(session.strokeDrags());
-  session.queueDab({0.5f, 0.5f}, 1.0f); // the pole
+  session.queueMove(app::StrokeMove::toUv({0.5f, 0.5f})); // the pole
   for (float t : {0.25f, 0.5f, 0.75f, 1.0f}) {
     const core::Vec3f at = core::Vec3f{0, 0, 1} + (end - core::Vec3f{0, 0, 1}) * t;
-    session.queueDrag(eye, core::normalize(at - eye), 1.0f);
+    session.queueMove(app::StrokeMove::alongRay(eye, core::normalize(at - eye)));
   }
-  const app::DabRun run = session.runQueuedDabs(settings);
+  const app::DabRun run = session.runQueuedMoves();
   QVERIFY2(run.error.empty(), run.error.c_str());
   QVERIFY(run.made > 1);
-  QCOMPARE(session.finishStroke(), id);
+  QCOMPARE(session.finishStroke().label, id);
   const core::GeometryImage& image = session.document().positions;
   // Some sample (the one under the start) reaches the point the last ray gives.
   float nearest = 1e9f;

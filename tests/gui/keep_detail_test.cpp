@@ -71,19 +71,20 @@ double KeepDetailTest::pull(bool keepDetail, int clicks, int* relaxedClicks) {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(*catalog_.find("push"));
-  session.setKeepDetail(keepDetail);
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 128)));
-  app::BrushSettings settings;
-  settings.brushId = "push";
-  settings.radius = 0.06f;
-  settings.strength = 1.0f;
-  settings.pressureTarget = app::PressureTarget::None;
+  app::StrokeStart start;
+  start.brushId = start.settings.brushId = "push";
+  start.settings.radius = 0.06f;
+  start.settings.strength = 1.0f;
+  start.settings.pressureTarget = app::PressureTarget::None;
+  start.settings.keepDetail = keepDetail;
+  start.eye = core::Vec3f{0, 0, 10};
   *relaxedClicks = 0;
   for (int i = 0; i < clicks; ++i) {
     const Snapshot before = snapshot(session.gpuDocument());
-    session.beginStroke("push", settings, core::EditLayer::Diffuse, 1.0f, {0, 0, 10});
-    session.queueDab({0.5f, 0.5f}, 1.0f);
-    const app::DabRun run = session.runQueuedDabs(settings);
+    session.beginStroke(start);
+    session.queueMove(app::StrokeMove::toUv({0.5f, 0.5f}));
+    const app::DabRun run = session.runQueuedMoves();
     if (!run.error.empty()) qFatal("dab failed: %s", run.error.c_str());
     session.finishStroke();
     if (session.lastRelaxation().tiles.empty()) continue;
@@ -124,18 +125,17 @@ void KeepDetailTest::theIssuesLimbStaysWithinTolerance() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(*catalog_.find("push"));
-  session.setKeepDetail(true);
   session.setDocument(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 256)));
   double worstRms = 0, worstHausdorff = 0;
   int relaxed = 0;
   for (int i = 0; i < 15; ++i) {
-    gpu::StrokeSettings s;
-    s.brush = "push";
+    app::StrokeScript s;
+    s.start.brushId = s.start.settings.brushId = "push";
+    s.start.settings.radius = 0.06f;
+    s.start.settings.strength = 1.0f;
+    s.start.spacing = 1.0f;
     s.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
-    s.radius = 0.06f * session.gpuDocument().bounds().diagonal();
-    s.strength = 1.0f;
-    s.spacing = 1.0f;
-    session.strokeAlongPath(*catalog_.find("push"), s);
+    app::playStroke(session, s);
     if (session.lastRelaxation().tiles.empty()) continue;
     ++relaxed;
     core::Document stroked = session.document();
@@ -167,11 +167,12 @@ std::pair<double, double> KeepDetailTest::hookLeg(bool keepDetail, testing::Crea
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(hook);
-  session.setKeepDetail(keepDetail);
   const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, 256);
   session.setDocument(core::makeDocument(ball));
-  session.strokeAlongPath(
-      hook, testing::creatureStroke(testing::creatureParts(layout)[0], ball, hook.id));
+  app::StrokeScript stroke =
+      testing::creatureStroke(testing::creatureParts(layout)[0], ball, hook.id, session.diagonal());
+  stroke.start.settings.keepDetail = keepDetail;
+  app::playStroke(session, stroke);
   const core::RegionSampling leg = core::regionSampling(
       session.document().positions, [](const core::Vec3f& p) { return core::length(p) > 1.15f; });
   return {leg.fairShare, core::summarizeStretch(session.document().positions).longestOverMedian};
@@ -216,13 +217,12 @@ void KeepDetailTest::theAnimalKeepsItsShareInEveryPart() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(hook);
-  session.setKeepDetail(true);
   const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, 256);
   session.setDocument(core::makeDocument(ball));
   const std::vector<testing::CreaturePart> parts =
       testing::creatureParts(testing::CreatureLayout::Animal);
   for (const testing::CreaturePart& part : parts)
-    session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
+    app::playStroke(session, testing::creatureStroke(part, ball, hook.id, session.diagonal()));
   const std::vector<core::RegionSampling> sampling =
       testing::creatureSampling(session.document().positions, parts);
   // Without keep-detail: bench_creature's figures (0.088 each leg, 0.143 the neck).
@@ -241,7 +241,6 @@ void KeepDetailTest::aHookRelaxedAsItGoesIsOneUndoStep() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(hook);
-  session.setKeepDetail(true);
   const int n = 128;
   core::Document ball = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, n));
   ball.diffuse.texels.resize(std::size_t(n + 1) * std::size_t(n + 1) * 4);
@@ -252,25 +251,27 @@ void KeepDetailTest::aHookRelaxedAsItGoesIsOneUndoStep() {
     }
   session.setDocument(ball);
   const Snapshot before = snapshot(session.gpuDocument());
-  app::BrushSettings settings;
-  settings.brushId = hook.id;
-  settings.radius = 0.06f;
-  settings.strength = 1.0f;
-  settings.pressureTarget = app::PressureTarget::None;
+  app::StrokeStart start;
+  start.brushId = start.settings.brushId = hook.id;
+  start.settings.radius = 0.06f;
+  start.settings.strength = 1.0f;
+  start.settings.pressureTarget = app::PressureTarget::None;
+  start.settings.keepDetail = true;
   const core::Vec3f eye{0, 0, 10}, end{0.6f, 0.2f, 1.0f}; // on the view plane z = 1
-  session.beginStroke(hook.id, settings, core::EditLayer::Diffuse, 1.0f, eye);
-  session.queueDab({0.5f, 0.5f}, 1.0f); // the +z pole
+  start.eye = eye;
+  session.beginStroke(start);
+  session.queueMove(app::StrokeMove::toUv({0.5f, 0.5f})); // the +z pole
   int made = 0;
   for (int frame = 1; frame <= 8; ++frame) {
     const core::Vec3f at =
         core::Vec3f{0, 0, 1} + (end - core::Vec3f{0, 0, 1}) * (float(frame) / 8.0f);
-    session.queueDrag(eye, core::normalize(at - eye), 1.0f);
-    const app::DabRun run = session.runQueuedDabs(settings);
+    session.queueMove(app::StrokeMove::alongRay(eye, core::normalize(at - eye)));
+    const app::DabRun run = session.runQueuedMoves();
     QVERIFY2(run.error.empty(), run.error.c_str());
     made += run.made;
   }
-  QCOMPARE(session.finishStroke(), hook.id);
-  const core::Stroke& relaxed = session.lastRelaxation();
+  QCOMPARE(session.finishStroke().label, hook.id);
+  const core::EditStep& relaxed = session.lastRelaxation();
   bool paint = false;
   for (const core::TileChange& t : relaxed.tiles)
     paint = paint || t.layer == core::EditLayer::Diffuse;
@@ -378,21 +379,20 @@ void KeepDetailTest::aCreaseOnOneLegLeavesTheRestAlone() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(hook);
-  session.setKeepDetail(true);
   const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, n);
   session.setDocument(core::makeDocument(ball));
   const std::vector<testing::CreaturePart> parts =
       testing::creatureParts(testing::CreatureLayout::Animal);
   for (const testing::CreaturePart& part : parts)
-    session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
+    app::playStroke(session, testing::creatureStroke(part, ball, hook.id, session.diagonal()));
   const core::Document made = session.document();
 
   // Down the leg's outer side, from near its tip to near the ball: the leg's samples nearest to
   // points beside its axis.
   const testing::CreaturePart& part = parts[std::size_t(leg)];
   const core::Vec3f tip = part.drag[1], side{part.start.x, 0, 0};
-  gpu::StrokeSettings s;
-  s.brush = crease.id;
+  app::StrokeScript s;
+  s.start.brushId = s.start.settings.brushId = crease.id;
   for (const float t : {0.85f, 0.7f, 0.55f, 0.4f, 0.25f}) {
     const core::Vec3f beside = part.start + (tip - part.start) * t + side * 0.5f;
     float best = 1e30f;
@@ -406,23 +406,25 @@ void KeepDetailTest::aCreaseOnOneLegLeavesTheRestAlone() {
       }
     s.path.push_back(uv);
   }
-  s.radius = 0.06f;
+  const float radius = 0.06f; // object units
+  s.start.settings.radius = radius / session.diagonal();
   // A ridge (the crease's negative strength, Ctrl with the brush). A valley at 0.2-1.0 cuts
   // across the leg's coarse facets by 0.11-0.37 % of the diagonal (Hausdorff) even at 1/8 of the
   // move, so keep-detail leaves it unrelaxed and there would be nothing to check here.
-  s.strength = -0.5f;
+  s.start.settings.strength = -0.5f;
 
   // The crease alone (keep-detail off), from the same document: what the stroke changed.
   app::SculptSession plain;
   plain.setBrushes(*engine_, catalog_);
   plain.loadBrush(crease);
-  plain.setKeepDetail(false);
   plain.setDocument(made);
-  plain.strokeAlongPath(crease, s);
+  s.start.settings.keepDetail = false;
+  app::playStroke(plain, s);
+  s.start.settings.keepDetail = true;
   const core::Document creased = plain.document();
 
   session.loadBrush(crease);
-  session.strokeAlongPath(crease, s);
+  app::playStroke(session, s);
   QVERIFY2(!session.lastRelaxation().tiles.empty(), "the crease was not relaxed: nothing tested");
   const core::Document relaxed = session.document();
 
@@ -430,7 +432,7 @@ void KeepDetailTest::aCreaseOnOneLegLeavesTheRestAlone() {
   std::vector<std::uint8_t> changed(count, 0);
   for (std::size_t k = 0; k < count; ++k)
     changed[k] = !(creased.positions.texels()[k] == made.positions.texels()[k]);
-  const int margin = core::keepDetailMargin(creased.positions, s.radius);
+  const int margin = core::keepDetailMargin(creased.positions, radius);
   const std::vector<std::uint8_t> region = grown(n, changed, margin);
   const std::vector<std::uint8_t> normalRegion = grown(n, changed, margin + 1);
   const float diagonal = core::boundingBox(core::extractMesh(made.positions)).diagonal();

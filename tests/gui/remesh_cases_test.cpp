@@ -4,6 +4,7 @@
 // Remesh's tolerances, and the result is one closed genus-0 surface with exact seams.
 #include "../creature_layout.h"
 #include "sculpt_session.h"
+#include "stroke_script.h"
 
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/geometry/base_shapes.h"
@@ -45,13 +46,12 @@ void RemeshCasesTest::theCreatureKeepsEveryPartsShare() {
   app::SculptSession session;
   session.setBrushes(*engine_, catalog_);
   session.loadBrush(hook);
-  session.setKeepDetail(true);
   const core::GeometryImage ball = core::makeBaseShape(core::BaseShape::Sphere, 1024);
   session.setDocument(core::makeDocument(ball));
   const std::vector<testing::CreaturePart> parts =
       testing::creatureParts(testing::CreatureLayout::Animal);
   for (const testing::CreaturePart& part : parts)
-    session.strokeAlongPath(hook, testing::creatureStroke(part, ball, hook.id));
+    app::playStroke(session, testing::creatureStroke(part, ball, hook.id, session.diagonal()));
   const core::Document creature = session.document();
   const std::vector<core::RegionSampling> before =
       testing::creatureSampling(creature.positions, parts);

@@ -31,15 +31,19 @@ void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
   const float sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
   try {
     CurrentContext current(*this); // a changed area or falloff recompiles the brush
-    session_.setKeepDetail(settings_.keepDetail);
-    session_.beginStroke(id, settings_, paintTarget_, sign,
-                         toVec(renderer_->GetActiveCamera()->GetPosition()));
+    StrokeStart start;
+    start.brushId = id;
+    start.settings = settings_;
+    start.paintTarget = paintTarget_;
+    start.sign = sign;
+    start.eye = toVec(renderer_->GetActiveCamera()->GetPosition());
+    session_.beginStroke(start);
   } catch (const std::exception& e) {
     fail(QString::fromUtf8(e.what()));
     return;
   }
   stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});
-  session_.queueDab(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f);
+  session_.queueMove(StrokeMove::toUv(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f));
   hover_ = hit;
   update();
 }
@@ -59,13 +63,14 @@ void ViewportWidget::queueStrokePoint(QPointF p) {
     const core::Ray ray = core::cameraRay(
         pickCamera(*renderer_->GetActiveCamera()), static_cast<int>(view.width()),
         static_cast<int>(view.height()), static_cast<float>(p.x()), static_cast<float>(p.y()));
-    session_.queueDrag(ray.origin, ray.direction, tabletDown_ ? tabletPressure_ : 1.0f);
+    session_.queueMove(
+        StrokeMove::alongRay(ray.origin, ray.direction, tabletDown_ ? tabletPressure_ : 1.0f));
     return;
   }
   const std::optional<core::PickHit> hit = pickAt(p);
   if (!hit) return; // off the model: the stroke resumes where the pointer comes back
   hover_ = hit;
-  session_.queueDab(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f);
+  session_.queueMove(StrokeMove::toUv(pickedUv(*hit), tabletDown_ ? tabletPressure_ : 1.0f));
 }
 
 void ViewportWidget::endStroke() {
@@ -82,7 +87,7 @@ void ViewportWidget::endStroke() {
 }
 
 int ViewportWidget::runQueuedDabs() {
-  DabRun run = session_.runQueuedDabs(settings_);
+  DabRun run = session_.runQueuedMoves();
   if (!run.error.empty()) {
     fail(QString::fromStdString(run.error));
     refreshAllNormals(); // the engine put the layers back as they were before the stroke
@@ -100,7 +105,7 @@ int ViewportWidget::runQueuedDabs() {
 void ViewportWidget::finishStroke() {
   std::string label;
   try {
-    label = session_.finishStroke();
+    label = session_.finishStroke().label;
   } catch (const std::exception& e) { // refused (non-finite result): the layers are back
     fail(QString::fromUtf8(e.what()));
     refreshAllNormals();
@@ -181,7 +186,7 @@ bool ViewportWidget::redoStroke() {
 bool ViewportWidget::stepHistory(bool undo) {
   if (!session_.hasDocument() || !(undo ? canUndo() : canRedo()) || session_.stroking())
     return false;
-  const core::Stroke* s = nullptr;
+  const core::EditStep* s = nullptr;
   {
     CurrentContext current(*this);
     try {

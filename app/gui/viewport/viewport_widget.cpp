@@ -1,5 +1,6 @@
 #include "viewport_widget.h"
 
+#include "brush_setup.h"
 #include "camera_control.h"
 #include "current_context.h"
 #include "data_folders.h"
@@ -174,14 +175,14 @@ void ViewportWidget::initializeGL() {
   renderWindow_->OpenGLInitContext();
   try {
     context_ = std::make_unique<gpu::GlContext>(gpu::GlContext::adoptCurrent());
-    library_ =
-        std::make_unique<gpu::BrushLibrary>(gpu::BrushCatalog::defaultSearchPath(builtInBrushes()));
+    library_ = std::make_unique<gpu::BrushLibrary>(
+        gpu::BrushCatalog::defaultSearchPath(builtInBrushFolder()));
     model_ = std::make_unique<gpu::ModelRenderer>();
     const QString renderer = QString::fromLatin1(
         reinterpret_cast<const char*>(context()->functions()->glGetString(GL_RENDERER)));
     saliency_.setOnCpu(renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
                        renderer.contains("SwiftShader"));
-    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(resourceFolder() / "materials"));
+    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(builtInMaterialFolder()));
     library_->engine().setMaterials(materials_);
     try {
       model_->setEnvironment(core::readImage(resourceFolder() / "environment/studio.png", 3));

@@ -150,7 +150,7 @@ public:
   /// normals are then redrawn from whatever the layers hold.
   bool applyChange(const core::Document& after, const std::string& label);
   /// Whether the session relaxes what sculpt strokes stretch: the brush settings' keepDetail as
-  /// of the last stroke begun (SculptSession::setKeepDetail).
+  /// of the last stroke begun (StrokeStart::settings).
   bool keepsDetail() const { return session_.keepDetail(); }
 
   /// The front view, framing the model (a new document is shown so).

@@ -26,18 +26,18 @@ bool meets(TexelRect a, const std::vector<TexelRect>& rects) {
 
 } // namespace
 
-Stroke recordDifference(const Document& before, const Document& after, std::string label,
-                        const std::vector<TexelRect>& within) {
+EditStep recordDifference(const Document& before, const Document& after, std::string label,
+                          const std::vector<TexelRect>& within) {
   if (before.size() != after.size())
     throw Error(ErrorKind::InvalidArgument, "recordDifference: the documents differ in size");
   const int side = before.size() + 1;
-  StrokeRecorder recorder(side);
-  const int tiles = StrokeRecorder::tilesPerSide(side);
+  EditStepRecorder recorder(side);
+  const int tiles = EditStepRecorder::tilesPerSide(side);
   for (EditLayer layer : kLayers) {
     if (layer == EditLayer::Mask && !before.hasMask && !after.hasMask) continue;
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
-        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
+        const TexelRect r = EditStepRecorder::tileRegion(side, tx, ty);
         if (!meets(r, within)) continue;
         const std::vector<float> b = detail::tileTexels(before, layer, r),
                                  a = detail::tileTexels(after, layer, r);
@@ -48,8 +48,8 @@ Stroke recordDifference(const Document& before, const Document& after, std::stri
   return recorder.finish(std::move(label));
 }
 
-Stroke combineSteps(const Stroke& first, const Stroke& second, const Document& current,
-                    std::string label) {
+EditStep combineSteps(const EditStep& first, const EditStep& second, const Document& current,
+                      std::string label) {
   const int side = current.size() + 1;
   // Per (layer, tile): the change in each step, if any.
   std::map<std::array<int, 3>, std::pair<const TileChange*, const TileChange*>> tiles;
@@ -57,10 +57,10 @@ Stroke combineSteps(const Stroke& first, const Stroke& second, const Document& c
     tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].first = &t;
   for (const TileChange& t : second.tiles)
     tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].second = &t;
-  StrokeRecorder recorder(side);
+  EditStepRecorder recorder(side);
   for (const auto& [key, changes] : tiles) {
     const EditLayer layer = static_cast<EditLayer>(key[0]);
-    const TexelRect r = StrokeRecorder::tileRegion(side, key[2], key[1]);
+    const TexelRect r = EditStepRecorder::tileRegion(side, key[2], key[1]);
     const std::vector<float> after = detail::tileTexels(current, layer, r);
     std::vector<float> before = after;
     if (changes.second) changes.second->patch(TileState::Before, before);

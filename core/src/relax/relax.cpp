@@ -685,8 +685,8 @@ int keepDetailMargin(const GeometryImage& image, double radius) {
   return static_cast<int>(std::clamp(margin, double(kKeepDetailMinMargin), double(image.size())));
 }
 
-Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
-                        int margin, std::string label, const RelaxOptions& options) {
+EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
+                          int margin, std::string label, const RelaxOptions& options) {
   checkOptions(options);
   if (margin < 0)
     throw Error(ErrorKind::InvalidArgument,
@@ -707,7 +707,7 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
   }
   for (Sample s : options.pinned)
     field.pin(s);
-  StrokeRecorder recorder(side);
+  EditStepRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
   // Where the full move cuts too deep (the tip of a limb pulled far: its samples are the
@@ -761,14 +761,14 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
     held.erase(std::unique(held.begin(), held.end()), held.end());
   }
   field = std::move(best);
-  const int tiles = StrokeRecorder::tilesPerSide(side);
+  const int tiles = EditStepRecorder::tilesPerSide(side);
   std::vector<std::uint8_t> moved(static_cast<std::size_t>(tiles) * tiles, 0);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const auto& d = field.offset[field.index(i, j)];
       if (d[0] != 0.0f || d[1] != 0.0f)
-        moved[static_cast<std::size_t>(j / StrokeRecorder::kTileSize) * tiles +
-              static_cast<std::size_t>(i / StrokeRecorder::kTileSize)] = 1;
+        moved[static_cast<std::size_t>(j / EditStepRecorder::kTileSize) * tiles +
+              static_cast<std::size_t>(i / EditStepRecorder::kTileSize)] = 1;
     }
   for (EditLayer layer :
        {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
@@ -781,7 +781,7 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
         if (!moved[static_cast<std::size_t>(ty) * tiles + static_cast<std::size_t>(tx)]) continue;
-        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
+        const TexelRect r = EditStepRecorder::tileRegion(side, tx, ty);
         const std::vector<float> before = detail::tileTexels(document, layer, r);
         std::vector<float> after(before.size());
         std::size_t o = 0;
@@ -794,8 +794,8 @@ Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t
   return recorder.finish(std::move(label));
 }
 
-Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions, int margin,
-                        std::string label, const RelaxOptions& options) {
+EditStep relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
+                          int margin, std::string label, const RelaxOptions& options) {
   const int n = document.size();
   std::vector<std::uint8_t> changed(
       static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1), 0);
@@ -811,7 +811,7 @@ Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& 
 
 std::vector<TexelRect> relaxRegions(Document& document, const std::vector<TexelRect>& regions,
                                     int margin, const RelaxOptions& options) {
-  const Stroke step = relaxRegionsStep(document, regions, margin, "relax", options);
+  const EditStep step = relaxRegionsStep(document, regions, margin, "relax", options);
   const TileApplier apply = applierFor(document);
   std::vector<TexelRect> changed;
   for (const TileChange& t : step.tiles) {

@@ -127,39 +127,6 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
   }
 }
 
-StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
-                       const StrokeSettings& settings,
-                       const std::function<void(int, int)>& progress,
-                       const std::function<void(StrokeSession&, int)>& betweenDabs) {
-  if (settings.path.empty()) badSetting("the stroke's path has no point");
-  if (!settings.dragPoints.empty() && brush.stroke != StrokeKind::Anchored &&
-      brush.stroke != StrokeKind::Drag)
-    badSetting("brush " + brush.id + " does not drag: it takes no drag points");
-  for (const core::Vec3f& p : settings.dragPoints)
-    for (float v : {p.x, p.y, p.z})
-      checkFinite("a drag point's coordinate", v);
-  for (const auto& uv : settings.path)
-    checkPoint({uv[0], uv[1]});
-  // One session fed the path points: a scripted stroke and an interactive one follow the same
-  // rules and dab at the same places.
-  StrokeSession session(engine, document, brush, settings);
-  const int expected = session.expectDabs(settings.path, settings.dragPoints, settings.radius);
-  if (progress || betweenDabs)
-    session.observeDabs([&](int done) {
-      if (progress) progress(done, expected);
-      if (betweenDabs) betweenDabs(session, done);
-    });
-  for (const auto& uv : settings.path)
-    session.moveToUv({uv[0], uv[1]}, settings.radius, settings.strength, settings.pressure);
-  for (const core::Vec3f& point : settings.dragPoints)
-    session.dragTo(point, settings.radius, settings.strength, settings.pressure);
-  StrokeResult result;
-  result.dabs = session.dabs();
-  result.engineMs = session.engineMs();
-  result.undo = session.finish(brush.id);
-  return result;
-}
-
 struct StrokeSession::State {
   State(BrushEngine& e, GpuDocument& d, const BrushManifest& b, StrokeSettings s)
       : engine(e), document(d), brush(b), settings(std::move(s)), undo(d, b.writes) {
@@ -506,7 +473,6 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
   if (!engine.has(brush.id))
     throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brush.id + "' is loaded");
   checkSettings(brush, settings);
-  settings.path.clear();
   state_ = std::make_unique<State>(engine, document, brush, std::move(settings));
   state_->share = dabShare(brush, state_->settings.spacing);
   core::BoundingBox box;
@@ -611,7 +577,7 @@ std::vector<core::TexelRect> StrokeSession::takeTouched() {
   return touched;
 }
 
-void StrokeSession::applyBetweenDabs(const core::Stroke& change) {
+void StrokeSession::applyBetweenDabs(const core::EditStep& change) {
   State& st = *state_;
   if (st.abandoned || st.finished)
     throw std::logic_error("StrokeSession::applyBetweenDabs after the stroke ended");
@@ -629,7 +595,7 @@ void StrokeSession::applyBetweenDabs(const core::Stroke& change) {
   }
 }
 
-core::Stroke StrokeSession::recordSoFar(const std::string& label) const {
+core::EditStep StrokeSession::recordSoFar(const std::string& label) const {
   return state_->undo.record(label);
 }
 
@@ -641,10 +607,10 @@ double StrokeSession::engineMs() const {
   return state_->engineMs;
 }
 
-core::Stroke StrokeSession::finish(const std::string& label) {
+core::EditStep StrokeSession::finish(const std::string& label) {
   State& st = *state_;
   if (st.abandoned) { // the layers are as before the stroke: nothing to undo
-    core::Stroke nothing;
+    core::EditStep nothing;
     nothing.label = label;
     nothing.imageSide = st.document.size() + 1;
     return nothing;

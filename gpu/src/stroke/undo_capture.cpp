@@ -9,10 +9,10 @@ namespace octaclay::gpu::detail {
 
 UndoCapture::UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers)
     : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
-      tiles_(core::StrokeRecorder::tilesPerSide(side_)) {}
+      tiles_(core::EditStepRecorder::tilesPerSide(side_)) {}
 
 void UndoCapture::cover(core::TexelRect rect) {
-  const int size = core::StrokeRecorder::kTileSize;
+  const int size = core::EditStepRecorder::kTileSize;
   for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
     for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
       if (const auto [at, added] = seen_.emplace(ty * tiles_ + tx, -1); added)
@@ -24,7 +24,7 @@ void UndoCapture::cover(core::TexelRect rect) {
 
 void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
   if (std::find(layers_.begin(), layers_.end(), layer) != layers_.end()) {
-    cover(core::StrokeRecorder::tileRegion(side_, tx, ty));
+    cover(core::EditStepRecorder::tileRegion(side_, tx, ty));
     return;
   }
   if (extra_.insert({static_cast<int>(layer), tx, ty}).second)
@@ -32,11 +32,11 @@ void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
 }
 
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
-  const int size = core::StrokeRecorder::kTileSize;
+  const int size = core::EditStepRecorder::kTileSize;
   const auto at = seen_.find((s.j / size) * tiles_ + s.i / size);
   if (at == seen_.end() || at->second < 0) return document_.document().positions.at(s).xyz();
   const Tile& t = before_[static_cast<std::size_t>(at->second)];
-  const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, t.x, t.y);
+  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
   const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
                         static_cast<std::size_t>(GpuDocument::channels(t.layer));
   return {t.texels[k], t.texels[k + 1], t.texels[k + 2]};
@@ -44,11 +44,11 @@ core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
 
 void UndoCapture::restore() {
   for (const Tile& t : before_)
-    document_.restore(t.layer, core::StrokeRecorder::tileRegion(side_, t.x, t.y), t.texels);
+    document_.restore(t.layer, core::EditStepRecorder::tileRegion(side_, t.x, t.y), t.texels);
 }
 
-core::Stroke UndoCapture::finish(const std::string& label) {
-  core::StrokeRecorder recorder(side_);
+core::EditStep UndoCapture::finish(const std::string& label) {
+  core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_) {
     std::vector<float> after = texels(t.layer, t.x, t.y);
     checkFinite(t, after); // on the after-tiles read anyway: no extra readback
@@ -57,8 +57,8 @@ core::Stroke UndoCapture::finish(const std::string& label) {
   return recorder.finish(label);
 }
 
-core::Stroke UndoCapture::record(const std::string& label) const {
-  core::StrokeRecorder recorder(side_);
+core::EditStep UndoCapture::record(const std::string& label) const {
+  core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_)
     recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
                      texels(t.layer, t.x, t.y));
@@ -66,7 +66,7 @@ core::Stroke UndoCapture::record(const std::string& label) const {
 }
 
 std::vector<float> UndoCapture::texels(core::EditLayer layer, int tx, int ty) const {
-  const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, tx, ty);
+  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, tx, ty);
   return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
 }
 
@@ -78,7 +78,7 @@ void UndoCapture::checkFinite(const Tile& t, const std::vector<float>& after) {
     // Positions' xyz are bounded; their w (saliency) and paint channels only need be finite.
     const bool bounded = positions && k % channels < 3;
     if (std::isfinite(v) && (!bounded || std::abs(v) <= kMaxCoordinate)) continue;
-    const core::TexelRect r = core::StrokeRecorder::tileRegion(side_, t.x, t.y);
+    const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
     const int texel = static_cast<int>(k / channels);
     const std::string sample = "(" + std::to_string(r.x + texel % r.width) + ", " +
                                std::to_string(r.y + texel / r.width) + ")";

@@ -5,7 +5,7 @@
 // is not finite puts the captured tiles back, bit for bit.
 
 #include "octaclay/core/document/document_checks.h"
-#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_step.h"
 #include "octaclay/gpu/gpu_document.h"
 
 #include <array>
@@ -37,9 +37,9 @@ public:
   /// The stroke's undo record, from the captured tiles and the mirror as it is now. When a
   /// written texel is not finite, or a position lies beyond kMaxCoordinate, restores the
   /// captured tiles first and throws core::Error(InvalidInput) naming the sample.
-  core::Stroke finish(const std::string& label);
+  core::EditStep finish(const std::string& label);
   /// The record so far, without the finite check: the stroke goes on.
-  core::Stroke record(const std::string& label) const;
+  core::EditStep record(const std::string& label) const;
 
 private:
   struct Tile {

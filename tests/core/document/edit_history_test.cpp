@@ -21,7 +21,7 @@ using namespace octaclay::core;
 
 namespace {
 
-constexpr int kT = StrokeRecorder::kTileSize;
+constexpr int kT = EditStepRecorder::kTileSize;
 
 // Runs f, which must throw core::Error(InvalidArgument). Returns what went wrong, empty if fine.
 QString expectInvalid(const std::function<void()>& f) {
@@ -74,11 +74,11 @@ GeometryImage randomImage(int n, std::mt19937& rng) {
 }
 
 // Records every tile in `tiles` of image side `side` from the two images.
-Stroke recordTiles(const GeometryImage& before, const GeometryImage& after,
-                   const std::vector<std::pair<int, int>>& tiles, const std::string& label) {
-  StrokeRecorder rec(before.side());
+EditStep recordTiles(const GeometryImage& before, const GeometryImage& after,
+                     const std::vector<std::pair<int, int>>& tiles, const std::string& label) {
+  EditStepRecorder rec(before.side());
   for (auto [tx, ty] : tiles) {
-    const TexelRect r = StrokeRecorder::tileRegion(before.side(), tx, ty);
+    const TexelRect r = EditStepRecorder::tileRegion(before.side(), tx, ty);
     rec.addTile(EditLayer::Positions, tx, ty, 4, readTile(before, r), readTile(after, r));
   }
   return rec.finish(label);
@@ -87,8 +87,8 @@ Stroke recordTiles(const GeometryImage& before, const GeometryImage& after,
 // A brush-like stroke: moves a random disc of texels (radius in [rMin, rMax], clipped to the
 // image; about 10% of the disc is left as it was, the centre always moves) and records the
 // tiles the disc's bounding box overlaps plus `extraTiles` random others, in random order.
-Stroke randomStroke(GeometryImage& img, std::mt19937& rng, const std::string& label, int rMin,
-                    int rMax, int extraTiles) {
+EditStep randomStroke(GeometryImage& img, std::mt19937& rng, const std::string& label, int rMin,
+                      int rMax, int extraTiles) {
   const GeometryImage before = img;
   const int side = img.side();
   std::uniform_int_distribution<int> pos(0, side - 1), rad(rMin, rMax);
@@ -107,7 +107,7 @@ Stroke randomStroke(GeometryImage& img, std::mt19937& rng, const std::string& la
       t.z += d(rng);
       if (u(rng) < 0.5f) t.w = u(rng);
     }
-  const int tiles = StrokeRecorder::tilesPerSide(side);
+  const int tiles = EditStepRecorder::tilesPerSide(side);
   std::vector<std::pair<int, int>> list;
   for (int ty = y0 / kT; ty <= y1 / kT; ++ty)
     for (int tx = x0 / kT; tx <= x1 / kT; ++tx)
@@ -139,22 +139,22 @@ private slots:
 };
 
 void EditHistoryTest::tileGeometry() {
-  QCOMPARE(StrokeRecorder::tilesPerSide(257), 5);
-  QCOMPARE(StrokeRecorder::tilesPerSide(1025), 17);
-  QCOMPARE(StrokeRecorder::tilesPerSide(64), 1);
-  QCOMPARE(StrokeRecorder::tilesPerSide(65), 2);
-  QCOMPARE(StrokeRecorder::tileRegion(257, 0, 0), (TexelRect{0, 0, 64, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 3, 1), (TexelRect{192, 64, 64, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 2), (TexelRect{256, 128, 1, 64}));
-  QCOMPARE(StrokeRecorder::tileRegion(257, 4, 4), (TexelRect{256, 256, 1, 1}));
-  QCOMPARE(StrokeRecorder::tileRegion(3, 0, 0), (TexelRect{0, 0, 3, 3}));
+  QCOMPARE(EditStepRecorder::tilesPerSide(257), 5);
+  QCOMPARE(EditStepRecorder::tilesPerSide(1025), 17);
+  QCOMPARE(EditStepRecorder::tilesPerSide(64), 1);
+  QCOMPARE(EditStepRecorder::tilesPerSide(65), 2);
+  QCOMPARE(EditStepRecorder::tileRegion(257, 0, 0), (TexelRect{0, 0, 64, 64}));
+  QCOMPARE(EditStepRecorder::tileRegion(257, 3, 1), (TexelRect{192, 64, 64, 64}));
+  QCOMPARE(EditStepRecorder::tileRegion(257, 4, 2), (TexelRect{256, 128, 1, 64}));
+  QCOMPARE(EditStepRecorder::tileRegion(257, 4, 4), (TexelRect{256, 256, 1, 1}));
+  QCOMPARE(EditStepRecorder::tileRegion(3, 0, 0), (TexelRect{0, 0, 3, 3}));
   // Tiles cover the image exactly once.
   for (int side : {3, 65, 129, 257}) {
     std::vector<int> cover(std::size_t(side) * std::size_t(side), 0);
-    const int t = StrokeRecorder::tilesPerSide(side);
+    const int t = EditStepRecorder::tilesPerSide(side);
     for (int ty = 0; ty < t; ++ty)
       for (int tx = 0; tx < t; ++tx) {
-        const TexelRect r = StrokeRecorder::tileRegion(side, tx, ty);
+        const TexelRect r = EditStepRecorder::tileRegion(side, tx, ty);
         for (int j = r.y; j < r.y + r.height; ++j)
           for (int i = r.x; i < r.x + r.width; ++i)
             ++cover[std::size_t(j) * std::size_t(side) + std::size_t(i)];
@@ -178,7 +178,7 @@ void EditHistoryTest::randomStrokesUndoRedo() {
   std::size_t bytesSum = 0;
   for (int k = 0; k < 100; ++k) {
     const GeometryImage before = img;
-    Stroke s = randomStroke(img, rng, "stroke " + std::to_string(k), 1, 48, 3);
+    EditStep s = randomStroke(img, rng, "stroke " + std::to_string(k), 1, 48, 3);
     QCOMPARE(s.changedTexels, changedTexels(before, img));
     QVERIFY(s.changedTexels > 0);
     bytesSum += s.bytes;
@@ -202,7 +202,7 @@ void EditHistoryTest::randomStrokesUndoRedo() {
   };
   for (int k = 99; k >= 0; --k) {
     written = 0;
-    const Stroke* s = history.undo(counting);
+    const EditStep* s = history.undo(counting);
     QVERIFY(s);
     QCOMPARE(s->label, "stroke " + std::to_string(k));
     QCOMPARE(written, expectedChanged[std::size_t(k)]);
@@ -218,7 +218,7 @@ void EditHistoryTest::randomStrokesUndoRedo() {
 
   for (int k = 0; k < 100; ++k) {
     written = 0;
-    const Stroke* s = history.redo(counting);
+    const EditStep* s = history.redo(counting);
     QVERIFY(s);
     QCOMPARE(s->label, "stroke " + std::to_string(k));
     QCOMPARE(written, expectedChanged[std::size_t(k)]);
@@ -240,7 +240,7 @@ void EditHistoryTest::newStrokeClearsRedo() {
   std::vector<GeometryImage> states{img};
   std::vector<std::size_t> sizes;
   for (int k = 0; k < 6; ++k) {
-    Stroke s = randomStroke(img, rng, "s" + std::to_string(k), 2, 30, 1);
+    EditStep s = randomStroke(img, rng, "s" + std::to_string(k), 2, 30, 1);
     sizes.push_back(s.bytes);
     history.record(std::move(s));
     states.push_back(img);
@@ -260,7 +260,7 @@ void EditHistoryTest::newStrokeClearsRedo() {
   QCOMPARE(history.bytes(), bytesSix); // undo/redo move steps, they do not free them
 
   // A new stroke from state 4 replaces the redo steps (s4, s5).
-  Stroke fresh = randomStroke(img, rng, "fresh", 2, 30, 0);
+  EditStep fresh = randomStroke(img, rng, "fresh", 2, 30, 0);
   const std::size_t freshBytes = fresh.bytes;
   history.record(std::move(fresh));
   const GeometryImage afterFresh = img;
@@ -284,12 +284,12 @@ void EditHistoryTest::newStrokeClearsRedo() {
 void EditHistoryTest::memoryFollowsChangedTexels() {
   std::mt19937 rng(99);
   const GeometryImage base = randomImage(256, rng);
-  const int tiles = StrokeRecorder::tilesPerSide(base.side());
+  const int tiles = EditStepRecorder::tilesPerSide(base.side());
   // Changes `count` texels of tile (1, 1), in row-major order from its corner (or scattered
   // with a stride), and records `recordTiles` (the changed tile always included).
   auto strokeBytes = [&](int count, int stride, bool allTiles) {
     GeometryImage after = base;
-    const TexelRect r = StrokeRecorder::tileRegion(base.side(), 1, 1);
+    const TexelRect r = EditStepRecorder::tileRegion(base.side(), 1, 1);
     for (int k = 0; k < count; ++k) {
       const int t = (k * stride) % (r.width * r.height);
       after.at(r.x + t % r.width, r.y + t / r.width).x += 0.25f;
@@ -299,7 +299,7 @@ void EditHistoryTest::memoryFollowsChangedTexels() {
       for (int ty = 0; ty < tiles; ++ty)
         for (int tx = 0; tx < tiles; ++tx)
           if (tx != 1 || ty != 1) list.emplace_back(tx, ty);
-    const Stroke s = recordTiles(base, after, list, "m");
+    const EditStep s = recordTiles(base, after, list, "m");
     if (s.changedTexels != std::size_t(count)) qFatal("changed %zu of %d", s.changedTexels, count);
     if (s.bytes != s.computeBytes()) qFatal("stroke bytes not up to date");
     return s.bytes;
@@ -332,7 +332,7 @@ void EditHistoryTest::memoryFollowsChangedTexels() {
   EditHistory history;
   std::size_t texels = 0, bytes = 0;
   for (int k = 0; k < 20; ++k) {
-    Stroke s = randomStroke(img, rng, "r", 16, 16, 0);
+    EditStep s = randomStroke(img, rng, "r", 16, 16, 0);
     texels += s.changedTexels;
     bytes += s.bytes;
     history.record(std::move(s));
@@ -353,7 +353,7 @@ void EditHistoryTest::budgetDropsOldest() {
   std::vector<std::size_t> sizes;
   bool dropped = false;
   for (int k = 0; k < 40; ++k) {
-    Stroke s = randomStroke(img, rng, "b" + std::to_string(k), 4, 20, 2);
+    EditStep s = randomStroke(img, rng, "b" + std::to_string(k), 4, 20, 2);
     sizes.push_back(s.bytes);
     QVERIFY(s.bytes <= budget);
     const std::size_t countBefore = history.undoCount();
@@ -399,11 +399,11 @@ void EditHistoryTest::singleHugeStrokeIsKept() {
   for (Vec4f& t : img.texels())
     t.y = -t.y - 1.0f;
   std::vector<std::pair<int, int>> all;
-  const int tiles = StrokeRecorder::tilesPerSide(img.side());
+  const int tiles = EditStepRecorder::tilesPerSide(img.side());
   for (int ty = 0; ty < tiles; ++ty)
     for (int tx = 0; tx < tiles; ++tx)
       all.emplace_back(tx, ty);
-  Stroke huge = recordTiles(beforeHuge, img, all, "huge");
+  EditStep huge = recordTiles(beforeHuge, img, all, "huge");
   const std::size_t hugeBytes = huge.bytes;
   qInfo("whole-image stroke at N=128: %zu texels, %zu bytes", huge.changedTexels, hugeBytes);
   QVERIFY(hugeBytes > budget);
@@ -455,9 +455,9 @@ void EditHistoryTest::nanAndNegativeZeroBitExact() {
   std::memcpy(before.data(), b.data(), 36 * 4);
   std::memcpy(after.data(), a.data(), 36 * 4);
 
-  StrokeRecorder rec(3);
+  EditStepRecorder rec(3);
   rec.addTile(EditLayer::Positions, 0, 0, 4, before, after);
-  Stroke s = rec.finish("special");
+  EditStep s = rec.finish("special");
   QCOMPARE(s.tiles.size(), std::size_t(1));
   // Texels 0..3 changed (floats 0-2, 4-5, 9, 13), 4..7 unchanged, 8 changed (float 35):
   // runs (skip 0, 4 changed) (skip 4, 1 changed).
@@ -490,8 +490,8 @@ void EditHistoryTest::documentLayers() {
   const std::vector<float> diffuseFill(doc.diffuse.fill.begin(), doc.diffuse.fill.begin() + 4);
 
   // Paint diffuse in tile (1, 0) (1 × 64 texels) and the mask in tile (0, 0) (64 × 64).
-  const TexelRect rd = StrokeRecorder::tileRegion(side, 1, 0);
-  const TexelRect rm = StrokeRecorder::tileRegion(side, 0, 0);
+  const TexelRect rd = EditStepRecorder::tileRegion(side, 1, 0);
+  const TexelRect rm = EditStepRecorder::tileRegion(side, 0, 0);
   QCOMPARE(rd, (TexelRect{64, 0, 1, 64}));
   std::vector<float> dBefore, dAfter, mBefore(std::size_t(rm.width * rm.height), 1.0f), mAfter;
   for (int k = 0; k < rd.width * rd.height; ++k)
@@ -502,12 +502,12 @@ void EditHistoryTest::documentLayers() {
   mAfter = mBefore;
   mAfter[5] = 0.0f;
   mAfter[100] = 0.5f;
-  StrokeRecorder rec(side);
+  EditStepRecorder rec(side);
   rec.addTile(EditLayer::Diffuse, 1, 0, 4, dBefore, dAfter);
   rec.addTile(EditLayer::Mask, 0, 0, 1, mBefore, mAfter);
   rec.addTile(EditLayer::Feature, 0, 0, 3, std::vector<float>(std::size_t(64 * 64 * 3), 0.0f),
               std::vector<float>(std::size_t(64 * 64 * 3), 0.0f));
-  Stroke s = rec.finish("paint");
+  EditStep s = rec.finish("paint");
   QCOMPARE(s.tiles.size(), std::size_t(2)); // the unchanged feature tile is not stored
   QCOMPARE(s.changedTexels, std::size_t(32 + 2));
 
@@ -541,17 +541,17 @@ void EditHistoryTest::documentLayers() {
 
 void EditHistoryTest::badInputThrows() {
   const int side = 257;
-  const TexelRect r = StrokeRecorder::tileRegion(side, 0, 0);
+  const TexelRect r = EditStepRecorder::tileRegion(side, 0, 0);
   const std::vector<float> tile(std::size_t(r.width * r.height * 4), 1.0f);
   std::vector<float> changed = tile;
   changed[0] = 2.0f;
   const std::vector<float> shortTile(tile.size() - 1, 1.0f), longTile(tile.size() + 4, 1.0f);
   const std::vector<float> lastTile(4, 1.0f); // tile (4, 4) is 1×1
 
-  EXPECT_INVALID(StrokeRecorder(1));
-  EXPECT_INVALID(StrokeRecorder(-5));
-  EXPECT_INVALID(StrokeRecorder::tileRegion(side, 5, 0));
-  StrokeRecorder rec(side);
+  EXPECT_INVALID(EditStepRecorder(1));
+  EXPECT_INVALID(EditStepRecorder(-5));
+  EXPECT_INVALID(EditStepRecorder::tileRegion(side, 5, 0));
+  EditStepRecorder rec(side);
   EXPECT_INVALID(rec.addTile(EditLayer::Positions, 0, 0, 4, shortTile, tile));
   EXPECT_INVALID(rec.addTile(EditLayer::Positions, 0, 0, 4, tile, longTile));
   EXPECT_INVALID(rec.addTile(EditLayer::Positions, 0, 0, 3, tile, tile)); // positions are 4
@@ -564,7 +564,7 @@ void EditHistoryTest::badInputThrows() {
   rec.addTile(EditLayer::Positions, 0, 0, 4, tile, changed);
   EXPECT_INVALID(rec.addTile(EditLayer::Positions, 0, 0, 4, tile, changed)); // twice
   rec.addTile(EditLayer::Diffuse, 0, 0, 4, tile, changed); // same tile, other layer: fine
-  Stroke s = rec.finish("ok");
+  EditStep s = rec.finish("ok");
   QCOMPARE(s.tiles.size(), std::size_t(2));
   QCOMPARE(s.changedTexels, std::size_t(2));
 
@@ -576,14 +576,14 @@ void EditHistoryTest::badInputThrows() {
   history.record(s);
   QCOMPARE(history.undoCount(), std::size_t(1));
   // Another image size in the same history.
-  StrokeRecorder small(65);
-  const TexelRect rs = StrokeRecorder::tileRegion(65, 0, 0);
+  EditStepRecorder small(65);
+  const TexelRect rs = EditStepRecorder::tileRegion(65, 0, 0);
   std::vector<float> a(std::size_t(rs.width * rs.height * 4), 0.0f), b = a;
   b[3] = 1.0f;
   small.addTile(EditLayer::Positions, 0, 0, 4, a, b);
   EXPECT_INVALID(history.record(small.finish("other size")));
   // Strokes tampered with by hand.
-  Stroke bad = s;
+  EditStep bad = s;
   bad.tiles[0].runs.back() += 1;
   EXPECT_INVALID(history.record(bad));
   bad = s;
@@ -598,7 +598,7 @@ void EditHistoryTest::badInputThrows() {
   GeometryImage img(256);
   TileApplier paint = [](EditLayer, TexelRect, std::span<const float>) {};
   QVERIFY(history.undo(paint));
-  history.record(StrokeRecorder(side).finish("empty"));
+  history.record(EditStepRecorder(side).finish("empty"));
   QCOMPARE(history.redoCount(), std::size_t(1));
 
   // The position-image applier rejects other layers and regions outside the image; the
@@ -613,7 +613,7 @@ void EditHistoryTest::badInputThrows() {
   EXPECT_INVALID(s.tiles[0].patch(TileState::Before, wrong));
   GeometryImage tiny(64); // side 65: a 257 stroke's tiles fall outside it
   EditHistory h2;
-  StrokeRecorder far(side);
+  EditStepRecorder far(side);
   std::vector<float> fb(std::size_t(64 * 64 * 4), 0.0f), fa = fb;
   fa[0] = 1.0f;
   far.addTile(EditLayer::Positions, 3, 3, 4, fb, fa);

@@ -283,7 +283,7 @@ void RelaxTest::movesOnlyWithinTheMargin() {
         changed[static_cast<std::size_t>(j) * (n + 1) + static_cast<std::size_t>(i)] = 1;
         lo = std::min({lo, i, j}), hi = std::max({hi, i, j});
       }
-  const Stroke step = relaxChangedStep(limb, changed, margin, "relax");
+  const EditStep step = relaxChangedStep(limb, changed, margin, "relax");
   QVERIFY(!step.tiles.empty());
   const TileApplier apply = applierFor(limb);
   for (const TileChange& t : step.tiles)

@@ -61,7 +61,7 @@ public:
 /// The watchdog: each pass is fenced (glFenceSync) and waited for at most passTimeLimit(),
 /// where the dab reads its result back anyway. A pass that overruns marks its brush broken
 /// (its dabs throw until it is loaded again) and dab() throws BrushTimeoutError; a stroke
-/// (runStroke, StrokeSession) then restores the layers from its undo capture. The GPU may still
+/// (StrokeSession) then restores the layers from its undo capture. The GPU may still
 /// be running the pass: the restore is queued behind it, so the document ends as it was once
 /// the pass completes. Drivers that recover from a hung shader only by a context reset (a GPU
 /// without preemption; the context reports GL_GUILTY_CONTEXT_RESET through robustness) lose
@@ -108,8 +108,8 @@ public:
   /// Opens and closes a stroke. A reparameterize brush's dabs between the two share one offset
   /// field and resample from the layers as they were at the stroke's first such dab, so that a
   /// whole stroke moves the surface and its paint by one interpolation, not one per dab. Without
-  /// an open stroke every dab is a stroke of its own. Other brushes ignore it. runStroke and
-  /// StrokeSession call them; endStroke() may be called when no stroke is open.
+  /// an open stroke every dab is a stroke of its own. Other brushes ignore it.
+  /// StrokeSession calls them; endStroke() may be called when no stroke is open.
   /// A brush that needs "stroke_start" sees the positions as they were at the stroke's first
   /// such dab (u_strokeStart): captured once per stroke (once per dab without an open stroke).
   void beginStroke() { strokeOpen_ = true; }

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "octaclay/core/document/document.h"
-#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_step.h"
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_objects.h"

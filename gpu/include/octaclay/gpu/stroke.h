@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/edit_step.h"
 #include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_engine.h"
 
@@ -27,54 +27,17 @@ inline constexpr int kMaxStrokeDabs = 100'000;
 /// from the model's centre is refused (core::Error(InvalidArgument)).
 inline constexpr double kMaxDragDiagonals = 100;
 
-/// A stroke: a path over the image and the brush settings shared by all its dabs.
+/// What a stroke's dabs share (StrokeSession); the radius, strength and pressure come with each
+/// move.
 struct StrokeSettings {
-  std::string brush;
-  std::vector<std::array<float, 2>> path; ///< (u, v) in [0, 1]; one point is one dab
-  float radius = 0.1f;                    ///< object units
-  float strength = 0.5f;                  ///< fraction of the radius
-  float pressure = 1.0f;
   float spacing = 0.0f; ///< between dabs, fraction of the radius; 0 → the brush's (dabSpacing)
   unsigned symmetry = kSymmetryNone;
   std::map<std::string, std::array<float, 4>> parameters;
-  /// A camera's eye (object space): splats project from it through each dab's centre. Unset:
-  /// along each dab's centre normal.
+  /// A camera's eye (object space): splats project from it through each dab's centre, and a
+  /// drag moves in the view plane through its start. Unset: along each dab's centre normal, a
+  /// drag across the start's normal (dragAlong) or as it is (dragTo).
   std::optional<core::Vec3f> viewEye;
-  /// A dragging brush (grab, snake hook): points in object space the drag moves through after
-  /// the path (StrokeSession::dragTo), as a pointer off the surface would.
-  std::vector<core::Vec3f> dragPoints;
 };
-
-struct StrokeResult {
-  int dabs = 0;        ///< including mirrored dabs
-  double engineMs = 0; ///< GPU passes, seaming and mirror updates
-  core::Stroke undo;   ///< the tiles the stroke changed, before and after
-};
-
-/// Runs a stroke by the rules of stroke_rules.h: dabs at arc length 0, s, 2s, … along the path
-/// (straight in (u, v) between its points, measured on the surface as the stroke began), each
-/// centred on the current surface's point at its (u, v) with the normal there, a sculpt brush's
-/// applying strength × dabShare(); each is repeated at the mirrored point for each symmetry
-/// plane. A one-point path is one dab. All or nothing: on any throw below after the first dab,
-/// the written layers are restored bit for bit from the stroke's undo capture. The drag points
-/// follow the path (StrokeSession::dragTo). Throws core::Error(UnknownId) for an unknown brush,
-/// core::Error(InvalidArgument) for an empty path, drag points for a brush that does not drag or
-/// that are not finite, a point outside [0, 1], a radius, strength, pressure, spacing or view that
-/// is not finite, or a parameter that is not finite or outside its [min, max];
-/// a drag point farther than kMaxDragDiagonals from the model, or a stroke that would make more
-/// than kMaxStrokeDabs dabs; core::Error(InvalidInput) for a model with no usable size
-/// (core::sizeProblem) and when the result holds a non-finite value or a coordinate beyond ±1e15
-/// ("the brush produced a non-finite value at sample (i, j) …"); BrushTimeoutError when a pass
-/// overran the engine's time limit.
-/// progress, when set, is told (dabs made, dabs expected) after each dab; the expected count
-/// (StrokeSession::expectDabs) is checked against kMaxStrokeDabs before the first dab.
-/// betweenDabs, when set, is called after each dab with the stroke and its dab count, and may
-/// change the document through StrokeSession::applyBetweenDabs (keep-detail's relaxation as the
-/// stroke goes); the modeller's stroke calls the same at the same dab counts.
-StrokeResult runStroke(BrushEngine& engine, GpuDocument& document, const BrushManifest& brush,
-                       const StrokeSettings& settings,
-                       const std::function<void(int, int)>& progress = {},
-                       const std::function<void(StrokeSession&, int)>& betweenDabs = {});
 
 /// The sample whose position is nearest to p (searching only tiles near p).
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
@@ -84,13 +47,14 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p);
 namespace octaclay::gpu {
 
 /// A stroke made interactively: the modeller feeds it the point under the pointer as the
-/// pointer moves, and it dabs along the way exactly as runStroke() dabs along a path (one set of
-/// rules, stroke_rules.h: spacing on the surface as the stroke began, the remainder carried from
-/// one move to the next, symmetry, undo captured over the whole stroke). Use it on the thread
-/// whose GL context is current; brush and document must outlive it.
+/// pointer moves, and `octaclay-cli stroke` the points of its path, both through the modeller's
+/// app::SculptSession; it dabs along the way by one set of rules (stroke_rules.h: spacing on the
+/// surface as the stroke began, the remainder carried from one move to the next, symmetry, undo
+/// captured over the whole stroke). Use it on the thread whose GL context is current; brush and
+/// document must outlive it.
 class StrokeSession {
 public:
-  /// settings.path is ignored. Throws core::Error(UnknownId) for an unknown brush,
+  /// Throws core::Error(UnknownId) for an unknown brush,
   /// core::Error(InvalidArgument) for a parameter, spacing or view that is not finite or a
   /// parameter outside its [min, max], core::Error(InvalidInput) for a model with no usable
   /// size (core::sizeProblem: a point, or smaller than float can resolve). Every move below
@@ -145,17 +109,17 @@ public:
   /// of the stroke. Its tiles are captured for undo first, then its After state is written to
   /// the mirror and the textures, and its tiles count as touched (takeTouched). finish()'s record
   /// and a failed dab's restore include it; the next dabs act on the changed surface.
-  void applyBetweenDabs(const core::Stroke& change);
+  void applyBetweenDabs(const core::EditStep& change);
   /// The stroke's undo record so far (the captured tiles against the mirror now), labelled;
   /// the stroke goes on. No finite check (finish() makes it).
-  core::Stroke recordSoFar(const std::string& label) const;
+  core::EditStep recordSoFar(const std::string& label) const;
 
   int dabs() const;
   double engineMs() const;
   /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
   /// layer now holds a non-finite value or a position beyond ±1e15, the layers are restored
   /// bit for bit and core::Error(InvalidInput) names the sample instead.
-  core::Stroke finish(const std::string& label);
+  core::EditStep finish(const std::string& label);
 
 private:
   struct State;

@@ -109,12 +109,12 @@ int keepDetailMargin(const GeometryImage& image, double radius);
 /// GPU). Throws like evenOutSamples, and Error(InvalidArgument) when `changed` is not (N+1)² long
 /// or margin < 0. Samples beyond the margin keep their bits in every layer, and so do their normals
 /// (which read their grid neighbours) beyond one sample more.
-Stroke relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
-                        int margin, std::string label, const RelaxOptions& options = {});
+EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
+                          int margin, std::string label, const RelaxOptions& options = {});
 
 /// relaxChangedStep with the changed texels given as rectangles (clipped to the image).
-Stroke relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions, int margin,
-                        std::string label, const RelaxOptions& options = {});
+EditStep relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
+                          int margin, std::string label, const RelaxOptions& options = {});
 
 /// relaxRegionsStep applied to `document` in place; returns the rectangles of positions it
 /// changed (empty when none).
