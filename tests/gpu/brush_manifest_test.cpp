@@ -105,6 +105,7 @@ private slots:
 
   void defaultSearchPathOrder();
   void scanLoadsGoodAndReportsBad();
+  void passContractIsCheckedWhenTheCatalogLoads();
   void pluginPathOverridesBuiltIn();
   void shaderSourceReadsFile();
   void changedBrushesReportsEditedShader();
@@ -372,7 +373,7 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("api a string", patched({{"api", "1"}}), R"(api: expected an integer, got "1")");
   row("api fractional", patched({{"api", 1.5}}), "api: expected an integer, got 1.5");
   row("api zero", patched({{"api", 0}}), "api: must be 1 or more, got 0");
-  row("api newer", patched({{"api", 4}}), "api: needs Octaclay brush API 4, this Octaclay has 3");
+  row("api newer", patched({{"api", 5}}), "api: needs Octaclay brush API 5, this Octaclay has 4");
   row("writes a string", patched({{"writes", "positions"}}),
       R"(writes: expected an array of layers, got "positions" (use ["positions"]))");
   row("spacing a string", patched({{"spacing", "wide"}}),
@@ -413,7 +414,16 @@ void BrushManifestTest::badManifestIsRefused_data() {
   row("pass with api 1", patched({{"pass", "reparameterize"}, {"writes", all}}),
       R"(pass: needs "api": 2 (pass kinds came with brush API 2), the manifest says 1)");
   row("unknown pass", patched({{"api", 2}, {"pass", "warp"}}),
-      R"(pass: unknown pass "warp" (use layers or reparameterize))");
+      R"(pass: unknown pass "warp" (use layers, reparameterize or all-layers))");
+  row("all-layers with api 3", patched({{"api", 3}, {"pass", "all-layers"}}),
+      R"(pass: "all-layers" needs "api": 4 (it came with brush API 4), the manifest says 3)");
+  row("all-layers writing the mask",
+      patched({{"api", 4}, {"pass", "all-layers"}, {"writes", QJsonArray{"positions", "mask"}}}),
+      R"(writes: an "all-layers" pass (brushLayers()) writes positions, diffuse and feature; )"
+      R"(a brush that writes the mask uses "pass": "layers" (brush()))");
+  row("mix without all-layers at api 4",
+      patched({{"api", 4}, {"writes", QJsonArray{"diffuse"}}, {"mix", QJsonArray{"diffuse"}}}),
+      R"(mix: needs "pass": "all-layers" (a brushLayers() body hands the colour back))");
   row("reparameterize writing positions only",
       patched({{"api", 2}, {"pass", "reparameterize"}, {"writes", QJsonArray{"positions"}}}),
       R"(writes: a "reparameterize" pass resamples every layer, so it writes all four: )"
@@ -615,8 +625,8 @@ void BrushManifestTest::iconMustBeAnSvgOrPngInsideTheFolder() {
 
 void BrushManifestTest::newerApiWinsOverUnknownFields() {
   // A manifest for a newer Octaclay may use fields this one does not know: say what matters.
-  const fs::path file = writeBrush(root() / "future", patched({{"api", 4}, {"stencil", true}}));
-  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 4, this Octaclay has 3");
+  const fs::path file = writeBrush(root() / "future", patched({{"api", 5}, {"stencil", true}}));
+  QCOMPARE(errorOf(file), file.string() + ": api: needs Octaclay brush API 5, this Octaclay has 4");
 }
 
 void BrushManifestTest::defaultSearchPathOrder() {
@@ -653,6 +663,51 @@ void BrushManifestTest::scanLoadsGoodAndReportsBad() {
   QVERIFY2(catalog.errors()[0].message.starts_with(bad.string() + ": invalid JSON at byte"),
            catalog.errors()[0].message.c_str());
   QVERIFY(catalog.notes().empty());
+}
+
+// The pass a manifest declares and the body its shader defines agree, or the brush is listed as
+// broken when the catalog loads it (not later, as a GL error): an API 4 "all-layers" brush
+// defines brushLayers(), an API 4 "layers" brush does not; an API 1-3 brush whose body defines
+// it is an all-layers brush, as it always was.
+void BrushManifestTest::passContractIsCheckedWhenTheCatalogLoads() {
+  const fs::path folder = root() / "contract";
+  const std::string layersBody =
+      "void brushLayers(inout vec4 positions, inout vec4 diffuse, inout vec4 feature, "
+      "BrushInput b) {}\n";
+  const auto manifest = [](const std::string& id, int api, const std::string& pass) {
+    return R"({"id": ")" + id + R"(", "name": "N", "api": )" + std::to_string(api) +
+           R"(, "shader": "brush.glsl", "writes": ["diffuse"], "area": "uv")" +
+           (pass.empty() ? "" : R"(, "pass": ")" + pass + "\"") + "}";
+  };
+  const fs::path declaredOnly =
+      writeBrush(folder / "declared", manifest("declared", 4, "all-layers"));
+  const fs::path undeclared = writeBrush(folder / "undeclared", manifest("undeclared", 4, ""));
+  writeFile(folder / "undeclared" / "brush.glsl", layersBody);
+  writeBrush(folder / "old", manifest("old", 3, ""));
+  writeFile(folder / "old" / "brush.glsl", layersBody);
+  writeBrush(folder / "new", manifest("new", 4, "all-layers"));
+  writeFile(folder / "new" / "brush.glsl", layersBody);
+
+  BrushCatalog catalog;
+  catalog.scan({folder});
+  QVERIFY(!catalog.find("declared"));
+  QVERIFY(!catalog.find("undeclared"));
+  QVERIFY(catalog.find("old") && catalog.find("new"));
+  QCOMPARE(catalog.find("old")->pass, PassKind::AllLayers);
+  QCOMPARE(catalog.find("new")->pass, PassKind::AllLayers);
+  QCOMPARE(catalog.errors().size(), std::size_t(2));
+  const auto errorFor = [&](const fs::path& file) {
+    for (const auto& e : catalog.errors())
+      if (e.path == file) return e.message;
+    return std::string("no error");
+  };
+  const std::string declaredError = errorFor(declaredOnly);
+  QVERIFY2(declaredError.starts_with((folder / "declared" / "brush.glsl").string() +
+                                     ": the manifest's \"pass\" is \"all-layers\""),
+           declaredError.c_str());
+  const std::string undeclaredError = errorFor(undeclared);
+  QVERIFY2(undeclaredError.find("declare \"pass\": \"all-layers\"") != std::string::npos,
+           undeclaredError.c_str());
 }
 
 void BrushManifestTest::pluginPathOverridesBuiltIn() {

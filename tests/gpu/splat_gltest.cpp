@@ -329,6 +329,7 @@ void SplatTest::onePassWritesWhatPerLayerPassesWrite() {
   paint.writes = {core::EditLayer::Diffuse, core::EditLayer::Feature};
   paint.reads = {};
   relief.mix = paint.mix = {}; // brush() bodies return the layer's value
+  relief.pass = paint.pass = PassKind::Layers;
   try {
     engine_->load(relief, kPerLayerSplat);
     engine_->load(paint, kPerLayerSplat);
@@ -600,6 +601,7 @@ void SplatTest::enumParametersAreConstantsPerValue() {
   m.id = "enum-test";
   m.writes = {core::EditLayer::Diffuse};
   m.mix = {};
+  m.pass = PassKind::Layers; // a brush() body
   m.falloff = Falloff::Constant;
   BrushParameter tone;
   tone.id = "tone";

@@ -4,6 +4,7 @@
 #include "octaclay/gpu/brush_catalog.h"
 
 #include "bounded_file.h"
+#include "brush_program.h"
 #include "manifest_json.h"
 
 #include <algorithm>
@@ -48,6 +49,7 @@ void BrushCatalog::scan(const std::vector<fs::path>& folders) {
       const fs::path manifestFile = candidate / kManifestName;
       try {
         BrushManifest brush = parseBrushManifest(manifestFile);
+        detail::resolveShaderContract(brush, shaderSource(brush));
         const auto same = std::find_if(brushes_.begin(), brushes_.end(),
                                        [&](const BrushManifest& b) { return b.id == brush.id; });
         if (same != brushes_.end()) {
@@ -139,6 +141,7 @@ bool BrushCatalog::reload(std::string_view id) {
   stamps_[it->id] = stampsOf(*it);
   try {
     BrushManifest fresh = parseBrushManifest(manifestFile);
+    detail::resolveShaderContract(fresh, shaderSource(fresh));
     if (fresh.id != it->id)
       throw BrushLoadError(manifestFile.string() + ": id: changed from \"" + it->id + "\" to \"" +
                            fresh.id + "\" while loaded (rescan the brush folders to rename)");

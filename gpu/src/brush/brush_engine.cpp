@@ -21,9 +21,7 @@ namespace octaclay::gpu {
 
 using detail::assemble;
 using detail::brushLog;
-using detail::definesBrushOffset;
 using detail::enumValues;
-using detail::writesAllLayers;
 
 namespace {
 
@@ -52,18 +50,21 @@ BrushEngine::BrushEngine()
 
 BrushEngine::~BrushEngine() = default;
 
-void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderSource) {
+void BrushEngine::load(const BrushManifest& given, const std::string& shaderSource) {
   auto brush = std::make_unique<LoadedBrush>();
-  brush->manifest = manifest;
+  brush->manifest = given;
+  // The catalog checked this when it loaded the brush; a manifest made otherwise (tests, a
+  // caller's own) is held to the same contract here.
+  try {
+    detail::resolveShaderContract(brush->manifest, shaderSource);
+  } catch (const BrushLoadError& e) {
+    throw GlError("brush " + given.id + ": " + e.what());
+  }
+  const BrushManifest& manifest = brush->manifest;
   brush->body = shaderSource;
-  brush->allLayers = writesAllLayers(shaderSource);
+  brush->allLayers = manifest.pass == PassKind::AllLayers;
   if (brush->reparameterize()) {
     // Every layer is resampled into its scratch from the layers before the dab: none in place.
-    if (!definesBrushOffset(shaderSource))
-      throw GlError("brush " + manifest.id + ": " + manifest.shaderPath().string() +
-                    ": a \"reparameterize\" brush defines vec2 brushOffset(BrushInput b) "
-                    "(the step of each sample in the image, in samples)");
-    brush->allLayers = false;
     program(*brush, core::EditLayer::Positions, false, enumValues(manifest, {}));
     brushes_[manifest.id] = std::move(brush);
     return;
@@ -78,9 +79,6 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
   }
   if (!manifest.mix.empty()) {
     const std::string file = manifest.shaderPath().string();
-    if (!brush->allLayers)
-      throw GlError("brush " + manifest.id + ": " + file +
-                    ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
     for (core::EditLayer layer : manifest.mix) {
       const char* sampler = layer == core::EditLayer::Diffuse ? "u_diffuseLayer" : "u_featureLayer";
       if (manifest.readsLayer(layer))
@@ -90,11 +88,6 @@ void BrushEngine::load(const BrushManifest& manifest, const std::string& shaderS
       brush->inPlace[static_cast<std::size_t>(layer)] = true; // the blender reads the target
     }
   }
-  if (brush->allLayers && std::find(manifest.writes.begin(), manifest.writes.end(),
-                                    core::EditLayer::Mask) != manifest.writes.end())
-    throw GlError("brush " + manifest.id + ": " + manifest.shaderPath().string() +
-                  ": brushLayers() writes positions, diffuse and feature; a brush that writes "
-                  "the mask defines brush() instead");
   for (core::EditLayer layer : manifest.writes)
     program(*brush, layer, false, enumValues(manifest, {}));
   brushes_[manifest.id] = std::move(brush); // only now: a failed reload keeps the old version

@@ -34,7 +34,7 @@ constexpr std::array kFalloffNames{"linear", "smooth", "constant", "curve"};
 constexpr std::array kCategoryNames{"sculpt", "paint", "splat"};
 constexpr std::array kTypeNames{"float", "int", "bool", "color", "enum", "material"};
 constexpr std::array kNeedNames{"normal", "stroke_start"};
-constexpr std::array kPassNames{"layers", "reparameterize"};
+constexpr std::array kPassNames{"layers", "reparameterize", "all-layers"};
 constexpr std::array kStrokeNames{"spaced", "target", "drag", "anchored"};
 
 constexpr std::array kTopLevelFields{
@@ -214,7 +214,18 @@ private:
         fail("pass", "needs \"api\": 2 (pass kinds came with brush API 2), the manifest says " +
                          std::to_string(manifest.api));
       manifest.pass = choose<PassKind>(*pass, kPassNames, "pass", "pass");
+      if (manifest.pass == PassKind::AllLayers && manifest.api < 4)
+        fail("pass", "\"all-layers\" needs \"api\": 4 (it came with brush API 4), the manifest "
+                     "says " +
+                         std::to_string(manifest.api));
     }
+    if (manifest.pass == PassKind::AllLayers &&
+        std::find(manifest.writes.begin(), manifest.writes.end(), core::EditLayer::Mask) !=
+            manifest.writes.end())
+      fail("writes", "an \"all-layers\" pass (brushLayers()) writes positions, diffuse and "
+                     "feature; a brush that writes the mask uses \"pass\": \"layers\" (brush())");
+    if (!manifest.mix.empty() && manifest.api >= 4 && manifest.pass != PassKind::AllLayers)
+      fail("mix", "needs \"pass\": \"all-layers\" (a brushLayers() body hands the colour back)");
     const bool reparameterize = manifest.pass == PassKind::Reparameterize;
     if (root.contains("iterations")) {
       if (!reparameterize) fail("iterations", "only used when \"pass\" is \"reparameterize\"");

@@ -104,6 +104,36 @@ bool definesBrushOffset(const std::string& body) {
   return std::regex_search(withoutComments(body), definition);
 }
 
+void resolveShaderContract(BrushManifest& manifest, const std::string& body) {
+  const std::string file = manifest.shaderPath().string();
+  const bool definesLayers = writesAllLayers(body);
+  if (manifest.pass == PassKind::Reparameterize) {
+    if (!definesBrushOffset(body))
+      throw BrushLoadError(file + ": a \"reparameterize\" brush defines vec2 "
+                                  "brushOffset(BrushInput b) (the step of each sample in the "
+                                  "image, in samples)");
+    return;
+  }
+  // API 1-3 manifests cannot declare it: the body says which pass it is.
+  if (manifest.api < 4 && definesLayers) manifest.pass = PassKind::AllLayers;
+  if (!manifest.mix.empty() && !definesLayers)
+    throw BrushLoadError(
+        file + ": \"mix\" needs a brushLayers() body (brush() returns the layer's value)");
+  if (manifest.pass == PassKind::AllLayers && !definesLayers)
+    throw BrushLoadError(file + ": the manifest's \"pass\" is \"all-layers\", so the shader "
+                                "defines void brushLayers(inout vec4 positions, inout vec4 "
+                                "diffuse, inout vec4 feature, BrushInput b)");
+  if (manifest.pass == PassKind::Layers && definesLayers)
+    throw BrushLoadError(file + ": the shader defines brushLayers() but the manifest's \"pass\" "
+                                "is \"layers\" (one brush() pass a layer): declare \"pass\": "
+                                "\"all-layers\"");
+  if (manifest.pass == PassKind::AllLayers &&
+      std::find(manifest.writes.begin(), manifest.writes.end(), core::EditLayer::Mask) !=
+          manifest.writes.end())
+    throw BrushLoadError(file + ": brushLayers() writes positions, diffuse and feature; a brush "
+                                "that writes the mask defines brush() instead");
+}
+
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
                      const std::string& body) {

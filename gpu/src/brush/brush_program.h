@@ -29,6 +29,13 @@ bool writesAllLayers(const std::string& body);
 /// Whether the brush body defines `vec2 brushOffset(`: a reparameterize brush must.
 bool definesBrushOffset(const std::string& body);
 
+/// The contract between manifest and shader body, checked when the catalog loads a brush (and
+/// again by BrushEngine::load): an "all-layers" pass defines brushLayers(), a "layers" pass does
+/// not (for API 1–3, whose manifests cannot say so, a body defining it makes the pass
+/// AllLayers), a reparameterize pass defines brushOffset(), "mix" needs brushLayers(), and
+/// brushLayers() writes no mask. Throws BrushLoadError starting with the shader's path.
+void resolveShaderContract(BrushManifest& manifest, const std::string& body);
+
 /// The longest step, in samples, a reparameterize brush's brushOffset() may take per iteration:
 /// below half the smallest height of a grid triangle (1/√8), so a step field folds no cell.
 inline constexpr const char* kMaxOffsetStep = "0.35";

@@ -13,8 +13,10 @@ namespace octaclay::gpu {
 
 /// The brush API major version this build accepts: a manifest whose "api" is higher is refused.
 /// API 2 added "pass" (reparameterize brushes) and "iterations"; API 3 "stroke" (anchored and
-/// drag strokes), the need "stroke_start" and the stroke's direction, movement and drag.
-inline constexpr int kBrushApiVersion = 3;
+/// drag strokes), the need "stroke_start" and the stroke's direction, movement and drag; API 4
+/// the pass "all-layers" (one brushLayers() pass writes every layer: declared, where brushes
+/// of API 1–3 had it found in their GLSL).
+inline constexpr int kBrushApiVersion = 4;
 /// The most steps a reparameterize brush may ask for per dab ("iterations").
 inline constexpr int kMaxIterations = 64;
 
@@ -44,7 +46,9 @@ enum class StrokeKind { Spaced, Target, Drag, Anchored };
 /// brushLayers()); Reparameterize, an offset in the image's parameter domain per sample
 /// (brushOffset()), after which the engine resamples every layer at the offset coordinates from
 /// the layers before the dab, so the surface and its paint stay where they are.
-enum class PassKind { Layers, Reparameterize };
+/// How a dab's passes run: one brush() pass per written layer, one brushLayers() pass for
+/// every layer, or a brushOffset() step that moves the samples (reparameterize).
+enum class PassKind { Layers, Reparameterize, AllLayers };
 
 /// The manifest spelling of each value ("positions", "volume+normal", "color" …). Not named
 /// toString: QTest finds that name by ADL and would break QCOMPARE on these enums.
@@ -94,7 +98,8 @@ struct BrushManifest {
   /// colour to mix in and its amount in alpha: the GPU's blender mixes rgb by that amount and
   /// keeps the layer's alpha, so the pass never reads the layer (its argument starts at zero).
   std::vector<core::EditLayer> mix;
-  /// Reparameterize (API 2): writes holds all four layers and mix is empty.
+  /// Reparameterize (API 2): writes holds all four layers and mix is empty. AllLayers (API 4;
+  /// for API 1–3 found in the shader when the catalog loads it): writes holds no mask.
   PassKind pass = PassKind::Layers;
   /// Reparameterize only: brushOffset() steps composed per dab, 1 … kMaxIterations.
   int iterations = 1;
