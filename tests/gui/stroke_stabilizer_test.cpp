@@ -1,5 +1,5 @@
-// Lazy-mouse stroke stabilizer (app/gui/viewport/stroke_stabilizer.h): passthrough at strength 0, the
-// dead zone of the string, the taut string after a long pull, dab spacing, and that it really
+// Lazy-mouse stroke stabilizer (app/gui/viewport/stroke_stabilizer.h): passthrough at strength 0,
+// the dead zone of the string, the taut string after a long pull, dab spacing, and that it really
 // smooths a jittery hand.
 
 #include "stroke_stabilizer.h"
