@@ -118,6 +118,7 @@ private slots:
   void bracketWorksRightAfterDraggingTheStrengthSlider();
   void undoSaysWhenItsBudgetDropsSteps();
   void aSparseTipSaysWhyBeforeTheBrushActs();
+  void aPressJustOffTheModelWithinTheRingSculpts();
 
 private:
   QTemporaryDir dir_;
@@ -616,6 +617,58 @@ void RealInputRenderTest::aSparseTipSaysWhyBeforeTheBrushActs() {
   });
   button->click();
   QCOMPARE(triggered.count(), 1);
+}
+
+// Issue 31: half the strokes begun just beside a thin neck orbited the camera. A real press
+// beside the sphere's silhouette, off the model but within the brush ring's radius of it, sculpts
+// (and leaves the camera where it was); a press farther out than the ring still orbits.
+void RealInputRenderTest::aPressJustOffTheModelWithinTheRingSculpts() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
+  app::ViewportWidget* view = window->viewport();
+  QVERIFY(window->brushPanel()->selectBrush("push"));
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+  // Pixels a side: the unit sphere's outline and the brush ring (radius × the diagonal, 2√3).
+  const QPointF centre = view->project({0, 0, 0});
+  const core::Vec3f up = upOf(*camera);
+  const double sphere =
+      std::hypot(view->project(up).x() - centre.x(), view->project(up).y() - centre.y());
+  const float radius = window->brushPanel()->radius() * 2.0f * std::sqrt(3.0f);
+  const double ring = std::hypot(view->project(up * radius).x() - centre.x(),
+                                 view->project(up * radius).y() - centre.y());
+  qInfo("outline %.0f px, ring %.0f px", sphere, ring);
+  QVERIFY2(ring > 12, "the ring is too small on screen to press beside the outline");
+  // Below the outline (screen down is -up): a few pixels off the model, inside the ring.
+  const QPointF beside = centre + QPointF(0, sphere + std::min(6.0, ring / 3));
+  QVERIFY2(!view->pickAt(beside), "the press point is on the model: nothing tested");
+  const double cameraBefore[3] = {camera->GetPosition()[0], camera->GetPosition()[1],
+                                  camera->GetPosition()[2]};
+  const auto cameraMoved = [&] {
+    const double* p = camera->GetPosition();
+    return std::hypot(p[0] - cameraBefore[0], p[1] - cameraBefore[1], p[2] - cameraBefore[2]) >
+           1e-6;
+  };
+  input.moveTo(view->mapToGlobal(beside.toPoint()));
+  input.button(1, true);
+  for (int k = 1; k <= 8; ++k)
+    input.moveTo(view->mapToGlobal(beside.toPoint() + QPoint(4 * k, -2 * k)));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 3000));
+  QVERIFY2(!cameraMoved(), "the press beside the model orbited the camera");
+
+  // Farther out than the ring: the same drag orbits.
+  const QPointF far = centre + QPointF(0, sphere + ring * 1.5 + 4);
+  QVERIFY(far.y() < view->height() - 2);
+  input.moveTo(view->mapToGlobal(far.toPoint()));
+  input.button(1, true);
+  for (int k = 1; k <= 8; ++k)
+    input.moveTo(view->mapToGlobal(far.toPoint() + QPoint(4 * k, -2 * k)));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor(cameraMoved, 3000));
 }
 
 QTEST_MAIN(RealInputRenderTest)

@@ -26,9 +26,12 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   dragButton_ = event->button();
   lastPos_ = event->position();
   const Qt::KeyboardModifiers mods = event->modifiers();
-  if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier) && pickAt(lastPos_)) {
+  // One pick a press: on the surface or within the brush ring of it, a left press sculpts.
+  std::optional<core::PickHit> hit;
+  if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) hit = pressPick(lastPos_);
+  if (hit) {
     drag_ = Drag::Sculpt;
-    beginStrokeAt(lastPos_, mods);
+    beginStrokeAt(lastPos_, *hit, mods);
     if (!session_.stroking()) drag_ = Drag::None;
   } else if (event->button() == Qt::MiddleButton) {
     drag_ = (mods & Qt::ShiftModifier) ? Drag::Pan : Drag::Orbit;

@@ -12,6 +12,7 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace octaclay::app {
 namespace {
@@ -23,10 +24,39 @@ core::Vec2f pickedUv(const core::PickHit& hit) {
 
 } // namespace
 
+std::optional<core::PickHit> ViewportWidget::pressPick(QPointF p) const {
+  if (std::optional<core::PickHit> hit = pickAt(p)) return hit;
+  if (!session_.hasDocument()) return std::nullopt;
+  // The ring's radius on screen at the depth of the camera's focal point (the model, as the
+  // views frame it): the brush radius along the view's up.
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  const core::Vec3f centre = toVec(camera->GetFocalPoint());
+  const core::Vec3f up = core::normalize(toVec(camera->GetViewUp()));
+  const QPointF a = project(centre),
+                b = project(centre + up * (settings_.radius * session_.diagonal()));
+  const double ring = std::hypot(b.x() - a.x(), b.y() - a.y());
+  // Rings of a third, two thirds and the whole radius, nearest first: the nearest hit wins.
+  for (int k = 1; k <= 3; ++k) {
+    const double r = ring * k / 3.0;
+    const int around = 12 * k;
+    for (int m = 0; m < around; ++m) {
+      const double angle = 2.0 * 3.14159265358979 * m / around;
+      if (std::optional<core::PickHit> hit =
+              pickAt(p + QPointF(r * std::cos(angle), r * std::sin(angle))))
+        return hit;
+    }
+  }
+  return std::nullopt;
+}
+
 void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
+  if (const std::optional<core::PickHit> hit = pressPick(p)) beginStrokeAt(p, *hit, modifiers);
+}
+
+void ViewportWidget::beginStrokeAt(QPointF p, const core::PickHit& pressed,
+                                   Qt::KeyboardModifiers modifiers) {
   if (!session_.hasDocument() || !library_ || session_.stroking()) return; // one at a time
-  const std::optional<core::PickHit> hit = pickAt(p);
-  if (!hit) return;
+  const std::optional<core::PickHit> hit = pressed;
   const std::string id = (modifiers & Qt::ShiftModifier) ? "smooth" : settings_.brushId;
   const float sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
   try {

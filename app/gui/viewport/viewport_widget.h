@@ -176,12 +176,18 @@ public:
   int maxImageSide();
   /// The surface point under widget position p (logical pixels), if any.
   std::optional<core::PickHit> pickAt(QPointF p) const;
+  /// The surface point a press at p sculpts: the one under p, else the nearest within the brush
+  /// ring's radius on screen (a press just off a thin limb or the silhouette sculpts there, as
+  /// Blender's does); none: the press orbits.
+  std::optional<core::PickHit> pressPick(QPointF p) const;
   /// Where object-space point p appears in the widget (logical pixels).
   QPointF project(core::Vec3f p) const;
 
   /// Feeds one point of a scripted stroke as the mouse would (begin, move…, end), for
   /// benchmarks and the screenshot script; positions in logical pixels.
   void beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers = {});
+  /// As above, at a point already picked (a press picks once).
+  void beginStrokeAt(QPointF p, const core::PickHit& hit, Qt::KeyboardModifiers modifiers = {});
   void continueStrokeTo(QPointF p);
   void endStroke();
   bool stroking() const { return session_.stroking(); }
