@@ -262,10 +262,11 @@ Document resizeDown(const Document& document) {
         std::copy_n(&layer.texels[(std::size_t(s.j) * oldSide + std::size_t(s.i)) * chs], chs, v);
       };
     };
+    Layer* const target = to; // clang 14 (the fuzz build) captures no structured binding
     update(
         ch, read(*from), read(*guess),
-        [&, chs](int i, int j, const double* v) {
-          float* o = &to->texels[(std::size_t(j) * side + std::size_t(i)) * chs];
+        [&, chs, target](int i, int j, const double* v) {
+          float* o = &target->texels[(std::size_t(j) * side + std::size_t(i)) * chs];
           for (std::size_t c = 0; c < chs; ++c)
             o[c] = static_cast<float>(v[c]);
         },
