@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTemporaryDir>
@@ -119,6 +120,7 @@ private slots:
   void undoSaysWhenItsBudgetDropsSteps();
   void aSparseTipSaysWhyBeforeTheBrushActs();
   void aPressJustOffTheModelWithinTheRingSculpts();
+  void preferencesSetTheUndoMemory();
 
 private:
   QTemporaryDir dir_;
@@ -669,6 +671,48 @@ void RealInputRenderTest::aPressJustOffTheModelWithinTheRingSculpts() {
     input.moveTo(view->mapToGlobal(far.toPoint() + QPoint(4 * k, -2 * k)));
   input.button(1, false);
   QVERIFY(QTest::qWaitFor(cameraMoved, 3000));
+}
+
+// Issue 31: the undo budget could not be changed. Edit ▸ Preferences' "Undo memory", typed into
+// as a user types, sets the history's budget, which the next document keeps and the next start
+// reads back.
+void RealInputRenderTest::preferencesSetTheUndoMemory() {
+  QSettings().remove("undo/budgetMiB");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
+  app::ViewportWidget* view = window->viewport();
+  QCOMPARE(view->history().budget(), std::size_t(256) << 20);
+  QAction* preferences = window->findChild<QAction*>(QStringLiteral("actionPreferences"));
+  QVERIFY(preferences);
+  bool typed = false;
+  QTimer::singleShot(300, window.get(), [&] {
+    QWidget* dialog = QApplication::activeModalWidget();
+    auto* memory = dialog ? dialog->findChild<QSpinBox*>(QStringLiteral("undoMemory")) : nullptr;
+    if (!memory) {
+      if (dialog) dialog->close();
+      return;
+    }
+    memory->setFocus();
+    memory->selectAll();
+    QTest::keyClicks(memory, "64");
+    typed = memory->value() == 64;
+    QTest::keyClick(dialog, Qt::Key_Return); // the dialog's default button: OK
+  });
+  preferences->trigger(); // the dialog runs its own loop until the timer's Return
+  QVERIFY2(typed, "no Undo memory box in Edit ▸ Preferences");
+  QCOMPARE(window->undoBudgetMiB(), 64);
+  QCOMPARE(view->history().budget(), std::size_t(64) << 20);
+  QCOMPARE(QSettings().value("undo/budgetMiB").toInt(), 64);
+  // The next document, and the next start, keep it.
+  QVERIFY(window->newDocument(core::BaseShape::Cube, 64, true));
+  QCOMPARE(view->history().budget(), std::size_t(64) << 20);
+  const std::unique_ptr<app::MainWindow> next =
+      app::testing::openTestWindow(dir_.filePath("recovery-next"));
+  QVERIFY(next);
+  QCOMPARE(next->undoBudgetMiB(), 64);
+  QSettings().remove("undo/budgetMiB");
 }
 
 QTEST_MAIN(RealInputRenderTest)

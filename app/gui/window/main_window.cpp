@@ -31,6 +31,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <memory>
 #include <tuple>
 
@@ -48,6 +49,10 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
       options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid(), this);
   connect(documents_, &DocumentActions::aboutToAdopt, this, [this] { lodFollower_.reset(); });
   connect(documents_, &DocumentActions::adopted, this, &MainWindow::updateStatus);
+  connect(documents_, &DocumentActions::adopted, this, &MainWindow::applyUndoBudget);
+  undoBudgetMiB_ = std::clamp(QSettings().value("undo/budgetMiB", kDefaultUndoMiB).toInt(),
+                              kMinUndoMiB, kMaxUndoMiB);
+  applyUndoBudget();
   connect(documents_, &DocumentActions::titleChanged, this, &MainWindow::updateTitle);
   connect(documents_, &DocumentActions::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
   connect(documents_, &DocumentActions::saliencyWishChanged, this,
@@ -337,6 +342,27 @@ void MainWindow::startSession() {
   options_.autosaveSeconds = seconds;
   if (seconds > 0) autosaveTimer_->start(seconds * 1000);
   if (options_.quickStartOnFirstRun) showQuickStartOnFirstRun(*this);
+}
+
+void MainWindow::applyUndoBudget() {
+  viewport_->history().setBudget(static_cast<std::size_t>(undoBudgetMiB_) << 20);
+}
+
+void MainWindow::setUndoBudgetMiB(int mib) {
+  undoBudgetMiB_ = std::clamp(mib, kMinUndoMiB, kMaxUndoMiB);
+  QSettings().setValue("undo/budgetMiB", undoBudgetMiB_);
+  const std::size_t before = viewport_->history().undoCount();
+  applyUndoBudget();
+  const std::size_t after = viewport_->history().undoCount();
+  if (after == before) return;
+  markDroppedSteps(*undoStack_, viewport_->history());
+  showStatusMessage(*statusBar(),
+                    tr("Undo now keeps only the newest %1 steps: %2 older ones did not fit its "
+                       "%3 MiB")
+                        .arg(after)
+                        .arg(before - after)
+                        .arg(undoBudgetMiB_),
+                    15000);
 }
 
 void MainWindow::rebuildRecentMenu() {

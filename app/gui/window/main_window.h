@@ -49,6 +49,13 @@ public:
   MainWindow() : MainWindow(Options{}) {}
   ~MainWindow() override;
 
+  /// Edit ▸ Preferences' undo memory, in MiB (kMinUndoMiB to kMaxUndoMiB): applied to the
+  /// history now (while it does not fit, the oldest steps go and the status bar says so), to
+  /// every document opened, made or replaced after, and kept in the settings for the next start.
+  void setUndoBudgetMiB(int mib);
+  int undoBudgetMiB() const { return undoBudgetMiB_; }
+  static constexpr int kMinUndoMiB = 16, kMaxUndoMiB = 16384, kDefaultUndoMiB = 256;
+
   ViewportWidget* viewport() const { return viewport_; }
   BrushPanel* brushPanel() const { return brushPanel_; }
   LayersPanel* layersPanel() const { return layersPanel_; }
@@ -138,6 +145,10 @@ protected:
   void closeEvent(QCloseEvent* event) override;
 
 private:
+  // The history's budget on the document shown now (a replaced document's history comes with
+  // the default).
+  void applyUndoBudget();
+  int undoBudgetMiB_ = kDefaultUndoMiB;
   void buildMenus();
   void buildDocks();
   /// The brush tool bar, the header above the viewport and F / Shift+F (main_window_toolbars.cpp).

@@ -164,9 +164,19 @@ void MainWindow::buildMenus() {
     dialog.setWindowTitle(tr("Preferences"));
     auto* form = new QFormLayout(&dialog);
     const core::EditHistory& h = viewport_->history();
-    form->addRow(tr("Undo history"), new QLabel(tr("%1 MiB used of a %2 MiB budget (%3 steps)")
-                                                    .arg(mib(h.bytes()), mib(h.budget()))
-                                                    .arg(h.undoCount() + h.redoCount())));
+    auto* undoMemory = new QSpinBox(&dialog);
+    undoMemory->setObjectName(QStringLiteral("undoMemory"));
+    undoMemory->setRange(kMinUndoMiB, kMaxUndoMiB);
+    undoMemory->setSingleStep(64);
+    undoMemory->setSuffix(tr(" MiB"));
+    undoMemory->setValue(undoBudgetMiB_);
+    undoMemory->setToolTip(tr("How much memory Undo may hold: when strokes no longer fit, the "
+                              "oldest can no longer be undone. A step at N = 1024 takes a few "
+                              "MiB."));
+    form->addRow(tr("Undo memory"), undoMemory);
+    form->addRow(QString(), new QLabel(tr("%1 MiB in use now (%2 steps)")
+                                           .arg(mib(h.bytes()))
+                                           .arg(h.undoCount() + h.redoCount())));
     auto* minutes = new QSpinBox(&dialog);
     minutes->setRange(0, 60);
     minutes->setSuffix(tr(" min"));
@@ -178,6 +188,7 @@ void MainWindow::buildMenus() {
     connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     if (dialog.exec() != QDialog::Accepted) return;
+    if (undoMemory->value() != undoBudgetMiB_) setUndoBudgetMiB(undoMemory->value());
     options_.autosaveSeconds = minutes->value() * 60;
     QSettings().setValue("autosave/seconds", options_.autosaveSeconds);
     if (options_.autosaveSeconds > 0)

@@ -76,6 +76,15 @@ void EditHistory::record(EditStep stroke) {
   }
 }
 
+void EditHistory::setBudget(std::size_t budgetBytes) {
+  budget_ = budgetBytes;
+  while (bytes_ > budget_ && cursor_ > 1) {
+    bytes_ -= steps_.front().bytes;
+    steps_.pop_front();
+    --cursor_;
+  }
+}
+
 const EditStep* EditHistory::nextUndo() const {
   return canUndo() ? &steps_[cursor_ - 1] : nullptr;
 }

@@ -133,6 +133,7 @@ private slots:
   void memoryFollowsChangedTexels();
   void budgetDropsOldest();
   void singleHugeStrokeIsKept();
+  void loweredBudgetDropsOldestUndoStepsOnly();
   void nanAndNegativeZeroBitExact();
   void documentLayers();
   void badInputThrows();
@@ -383,6 +384,43 @@ void EditHistoryTest::budgetDropsOldest() {
   for (std::size_t k = 0; k < kept; ++k)
     QVERIFY(history.redo(apply));
   QVERIFY(sameBits(img, states[40]));
+}
+
+// Edit ▸ Preferences lowers the budget: the oldest undo steps go until the rest fit; the redo
+// steps and the newest undo step stay, and undo/redo still reach the same states.
+void EditHistoryTest::loweredBudgetDropsOldestUndoStepsOnly() {
+  std::mt19937 rng(5);
+  GeometryImage img = randomImage(128, rng);
+  EditHistory history; // 256 MiB: everything fits
+  std::vector<GeometryImage> states{img};
+  std::vector<std::size_t> sizes;
+  for (int k = 0; k < 10; ++k) {
+    EditStep s = randomStroke(img, rng, "p" + std::to_string(k), 4, 20, 2);
+    sizes.push_back(s.bytes);
+    history.record(std::move(s));
+    states.push_back(img);
+  }
+  const TileApplier apply = applierFor(img);
+  QVERIFY(history.undo(apply) && history.undo(apply)); // p9 and p8 become redo steps
+  const std::size_t redoBytes = sizes[8] + sizes[9];
+  // Room for the redo steps and the newest three undo steps (p5, p6, p7).
+  const std::size_t budget = redoBytes + sizes[5] + sizes[6] + sizes[7];
+  history.setBudget(budget);
+  QCOMPARE(history.budget(), budget);
+  QCOMPARE(history.undoCount(), std::size_t(3));
+  QCOMPARE(history.redoCount(), std::size_t(2));
+  QCOMPARE(history.bytes(), budget);
+  QCOMPARE(history.nextUndo()->label, std::string("p7"));
+  while (history.canUndo())
+    history.undo(apply);
+  QVERIFY(sameBits(img, states[5]));
+  while (history.canRedo())
+    history.redo(apply);
+  QVERIFY(sameBits(img, states[10]));
+  // A budget below one step: the newest undo step stays, alone.
+  history.setBudget(1);
+  QCOMPARE(history.undoCount(), std::size_t(1));
+  QCOMPARE(history.nextUndo()->label, std::string("p9"));
 }
 
 void EditHistoryTest::singleHugeStrokeIsKept() {

@@ -49,6 +49,9 @@ public:
   /// compressed payload (capacities, not sizes).
   std::size_t bytes() const { return bytes_; }
   std::size_t budget() const { return budget_; }
+  /// A new budget (Edit ▸ Preferences): while bytes() exceeds it, drops the oldest undo steps,
+  /// never the newest one and never a redo step.
+  void setBudget(std::size_t budgetBytes);
   /// Drops every step.
   void clear();
 
