@@ -2,6 +2,7 @@
 
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_catalog.h"
+#include "octaclay/gpu/stroke_rules.h"
 
 #include <cmath>
 #include <string>
@@ -11,12 +12,6 @@ namespace {
 
 [[noreturn]] void badSetting(const std::string& message) {
   throw core::Error(core::ErrorKind::InvalidArgument, message);
-}
-
-std::string formatValue(float v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
-  return std::to_string(v);
 }
 
 } // namespace
@@ -30,12 +25,9 @@ StrokeEnd playStroke(SculptSession& session, const StrokeScript& script,
     badSetting("brush " + brush->id + " does not drag: it takes no drag points");
   for (const core::Vec3f& p : script.dragPoints)
     for (float v : {p.x, p.y, p.z})
-      if (!std::isfinite(v))
-        badSetting("a drag point's coordinate " + formatValue(v) + " is not a finite number");
+      gpu::requireFinite("a drag point's coordinate", v);
   for (const auto& uv : script.path)
-    if (!(uv[0] >= 0 && uv[0] <= 1 && uv[1] >= 0 && uv[1] <= 1))
-      badSetting("path point (" + formatValue(uv[0]) + ", " + formatValue(uv[1]) +
-                 ") is outside [0, 1]");
+    gpu::requirePathPoint({uv[0], uv[1]});
   session.beginStroke(script.start);
   try {
     const int expected = session.expectDabs(script.path, script.dragPoints);

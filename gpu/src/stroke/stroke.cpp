@@ -32,18 +32,11 @@ std::string formatValue(float v) {
   return std::to_string(v);
 }
 
-// NaN fails every comparison: each check is written so that it must pass, never so that it
-// must fail.
-void checkFinite(const char* what, float v) {
-  if (!std::isfinite(v))
-    badSetting(std::string(what) + " " + formatValue(v) + " is not a finite number");
-}
-
 void checkParameter(const BrushParameter& p, const std::array<float, 4>& v) {
   const std::string name = "parameter '" + p.id + "'";
   const std::size_t used = p.type == ParameterType::Color ? 4 : 1;
   for (std::size_t c = 0; c < used; ++c)
-    checkFinite(name.c_str(), v[c]);
+    requireFinite(name.c_str(), v[c]);
   if (p.type == ParameterType::Material) return; // an index into the engine's materials
   for (std::size_t c = 0; c < used; ++c)
     if (!(v[c] >= p.min && v[c] <= p.max))
@@ -55,17 +48,11 @@ void checkSettings(const BrushManifest& brush, const StrokeSettings& settings) {
   for (const auto& [id, value] : settings.parameters)
     if (const BrushParameter* p = brush.parameter(id)) checkParameter(*p, value);
   if (settings.viewEye) {
-    checkFinite("the view's x", settings.viewEye->x);
-    checkFinite("the view's y", settings.viewEye->y);
-    checkFinite("the view's z", settings.viewEye->z);
+    requireFinite("the view's x", settings.viewEye->x);
+    requireFinite("the view's y", settings.viewEye->y);
+    requireFinite("the view's z", settings.viewEye->z);
   }
-  checkFinite("the spacing", settings.spacing);
-}
-
-void checkPoint(core::Vec2f uv) {
-  if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1))
-    badSetting("path point (" + formatValue(uv.x) + ", " + formatValue(uv.y) +
-               ") is outside [0, 1]");
+  requireFinite("the spacing", settings.spacing);
 }
 
 core::Vec3f mirrored(core::Vec3f p, core::Vec3f centre, unsigned axes) {
@@ -386,9 +373,9 @@ struct StrokeSession::State {
   int moveTo(std::array<double, 2> xy, float radius, float strength, float pressure) {
     if (abandoned) throw std::logic_error("StrokeSession::moveTo after a dab failed");
     if (finished) throw std::logic_error("StrokeSession::moveTo after finish()");
-    checkFinite("the radius", radius);
-    checkFinite("the strength", strength);
-    checkFinite("the pressure", pressure);
+    requireFinite("the radius", radius);
+    requireFinite("the strength", strength);
+    requireFinite("the pressure", pressure);
     const auto start = std::chrono::steady_clock::now();
     const int before = dabs;
     if (!previous || brush.stroke == StrokeKind::Anchored) {
@@ -411,7 +398,7 @@ struct StrokeSession::State {
                 float pressure) {
     checkDragMove(radius, strength, pressure);
     for (float v : {origin.x, origin.y, origin.z, direction.x, direction.y, direction.z})
-      checkFinite("the drag's ray", v);
+      requireFinite("the drag's ray", v);
     const core::Vec3f plane = core::length(dragNormal) > 0 ? dragNormal : anchorNormal;
     const float facing = core::dot(direction, plane);
     if (std::abs(facing) < 1e-6f * core::length(direction)) return 0; // along the plane: no point
@@ -426,7 +413,7 @@ struct StrokeSession::State {
   int dragTo(core::Vec3f point, float radius, float strength, float pressure) {
     checkDragMove(radius, strength, pressure);
     for (float v : {point.x, point.y, point.z})
-      checkFinite("the drag's point", v);
+      requireFinite("the drag's point", v);
     requireDragReach(point);
     const core::Vec3f target = point - startPoint;
     return dragBy(target - dragNormal * core::dot(target, dragNormal), radius, strength, pressure);
@@ -436,9 +423,9 @@ struct StrokeSession::State {
     if (abandoned) throw std::logic_error("StrokeSession: a drag after a dab failed");
     if (finished) throw std::logic_error("StrokeSession: a drag after finish()");
     if (!previous) throw std::logic_error("StrokeSession: a drag before the stroke's first move");
-    checkFinite("the radius", radius);
-    checkFinite("the strength", strength);
-    checkFinite("the pressure", pressure);
+    requireFinite("the radius", radius);
+    requireFinite("the strength", strength);
+    requireFinite("the pressure", pressure);
   }
 
   int dragBy(core::Vec3f target, float radius, float strength, float pressure) {
@@ -500,7 +487,7 @@ int StrokeSession::moveTo(core::Sample s, float radius, float strength, float pr
 }
 
 int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float pressure) {
-  checkPoint(uv);
+  requirePathPoint(uv);
   const double n = state_->document.size();
   return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * n}, radius,
                         strength, pressure);
@@ -527,8 +514,8 @@ int StrokeSession::expectDabs(const std::vector<std::array<float, 2>>& path,
                               const std::vector<core::Vec3f>& dragPoints, float radius) const {
   State& st = *state_;
   for (const auto& uv : path)
-    checkPoint({uv[0], uv[1]});
-  checkFinite("the radius", radius);
+    requirePathPoint({uv[0], uv[1]});
+  requireFinite("the radius", radius);
   for (const core::Vec3f& p : dragPoints)
     st.requireDragReach(p);
   const double spacing = st.spacingFor(radius);

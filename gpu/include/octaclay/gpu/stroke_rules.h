@@ -34,6 +34,13 @@ float dabSpacing(const BrushManifest& brush, float spacing);
 /// whose "stroke" is not "spaced" (their dabs converge, follow the drag or are anchored).
 float dabShare(const BrushManifest& brush, float spacing);
 
+/// A stroke's settings checked before they are used, the same words for every door: throws
+/// core::Error(InvalidArgument) "<what> <value> is not a finite number" unless v is finite.
+void requireFinite(const char* what, float v);
+/// Throws core::Error(InvalidArgument) "path point (u, v) is outside [0, 1]" unless uv is in the
+/// image.
+void requirePathPoint(core::Vec2f uv);
+
 /// A point of the image's surface mesh (core::GridPoint) at image coordinates (x, y), in
 /// samples, each clamped to [0, N].
 core::GridPoint surfacePointAt(int n, double x, double y);
