@@ -233,27 +233,33 @@ void SculptSession::abandonStroke() {
 
 namespace {
 
+// Calls visit(index) with the texel index ((N+1)², row-major) of every position the step changed.
+template <typename Visit>
+void forEachChangedPosition(const core::EditStep& step, std::size_t side, Visit&& visit) {
+  for (const core::TileChange& t : step.tiles) {
+    if (t.layer != core::EditLayer::Positions) continue;
+    const std::size_t x = static_cast<std::size_t>(t.region.x),
+                      y = static_cast<std::size_t>(t.region.y),
+                      width = static_cast<std::size_t>(t.region.width);
+    std::size_t at = 0;
+    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
+      at += t.runs[r];
+      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at)
+        visit((y + at / width) * side + x + at % width);
+    }
+  }
+}
+
 // The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
 // relaxation after it reaches keepDetailMargin samples beyond them and no farther.
 std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side) {
   std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
                                     0);
   bool any = false;
-  for (const core::TileChange& t : record.tiles) {
-    if (t.layer != core::EditLayer::Positions) continue;
-    std::size_t at = 0;
-    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
-      at += t.runs[r];
-      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
-        const std::size_t i =
-            static_cast<std::size_t>(t.region.x) + at % static_cast<std::size_t>(t.region.width);
-        const std::size_t j =
-            static_cast<std::size_t>(t.region.y) + at / static_cast<std::size_t>(t.region.width);
-        changed[j * static_cast<std::size_t>(side) + i] = 1;
-        any = true;
-      }
-    }
-  }
+  forEachChangedPosition(record, static_cast<std::size_t>(side), [&](std::size_t index) {
+    changed[index] = 1;
+    any = true;
+  });
   if (!any) changed.clear();
   return changed;
 }
@@ -277,24 +283,12 @@ bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
                    const core::EditStep& soFar, const core::GeometryImage& positions) {
   const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
   if (dabChanged.empty()) dabChanged.assign(side * side, 0);
-  for (const core::TileChange& t : soFar.tiles) {
-    if (t.layer != core::EditLayer::Positions) continue;
-    std::size_t at = 0;
-    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
-      at += t.runs[r];
-      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at) {
-        const std::size_t i =
-            static_cast<std::size_t>(t.region.x) + at % static_cast<std::size_t>(t.region.width);
-        const std::size_t j =
-            static_cast<std::size_t>(t.region.y) + at / static_cast<std::size_t>(t.region.width);
-        const std::size_t index = j * side + i;
-        if (dabChanged[index]) continue;
-        const auto left = relaxed.find(index);
-        if (left == relaxed.end() || !(left->second == positions.texels()[index]))
-          dabChanged[index] = 1;
-      }
-    }
-  }
+  forEachChangedPosition(soFar, side, [&](std::size_t index) {
+    if (dabChanged[index]) return;
+    const auto left = relaxed.find(index);
+    if (left == relaxed.end() || !(left->second == positions.texels()[index]))
+      dabChanged[index] = 1;
+  });
   return std::find(dabChanged.begin(), dabChanged.end(), 1) != dabChanged.end();
 }
 

@@ -5,7 +5,6 @@
 #include "octaclay/core/measure/brush_sampling.h"
 
 #include <QAction>
-#include <QMouseEvent>
 #include <QPushButton>
 #include <QStatusBar>
 
@@ -29,26 +28,13 @@ SparseSamplingHint::SparseSamplingHint(ViewportWidget* view, QStatusBar* bar, QA
       button_->hide();
     }
   });
-  view_->installEventFilter(this);
+  connect(view_, &ViewportWidget::strokePressed, this, &SparseSamplingHint::check);
 }
 
-bool SparseSamplingHint::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == view_ && event->type() == QEvent::MouseButtonPress) {
-    const auto* press = static_cast<QMouseEvent*>(event);
-    if (press->button() == Qt::LeftButton && !(press->modifiers() & Qt::AltModifier))
-      check(press->position());
-  }
-  return QObject::eventFilter(watched, event);
-}
-
-void SparseSamplingHint::check(QPointF p) {
-  if (!view_->hasDocument() || view_->stroking()) return;
-  const std::optional<core::PickHit> hit = view_->pickAt(p);
-  if (!hit) return;
+void SparseSamplingHint::check(core::Vec2f uv) {
+  if (!view_->hasDocument()) return;
   const double radius = double(view_->brushSettings().radius) * double(view_->modelDiagonal());
-  const core::BrushSampling sampling =
-      core::brushSampling(view_->document().positions,
-                          {std::clamp(hit->u, 0.0f, 1.0f), std::clamp(hit->v, 0.0f, 1.0f)}, radius);
+  const core::BrushSampling sampling = core::brushSampling(view_->document().positions, uv, radius);
   lastSamples_ = sampling.samplesAcross;
   if (!sampling.sparse()) return;
   message_ = tr("Few samples here: %1 across the brush's radius (%2 or more shape the surface "

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "octaclay/core/geometry/vec.h"
+
 #include <QObject>
 #include <QPointF>
 
@@ -15,9 +17,8 @@ class ViewportWidget;
 /// (core::brushSampling: fewer than core::kMinSamplesAcrossRadius across its radius, as at the
 /// tip of a limb pulled far in one stroke), the status bar says why the result will be coarse,
 /// names Preview ▸ Stretch (which shows where) and offers Remesh (a "Remesh…" button that
-/// triggers Mesh ▸ Remesh…). It watches the viewport's left-button presses (an event filter:
-/// the stroke then begins as before) and picks the point itself; nothing else changes. GUI
-/// thread.
+/// triggers Mesh ▸ Remesh…). It follows the viewport's strokePressed (the press's own pick,
+/// before the first dab); nothing else changes. GUI thread.
 class SparseSamplingHint : public QObject {
   Q_OBJECT
 public:
@@ -26,11 +27,8 @@ public:
   /// The samples across the brush's radius at the last press that checked (0 before any).
   double lastSamplesAcross() const { return lastSamples_; }
 
-protected:
-  bool eventFilter(QObject* watched, QEvent* event) override;
-
 private:
-  void check(QPointF p);
+  void check(core::Vec2f uv);
 
   ViewportWidget* view_;
   QStatusBar* bar_;

@@ -30,6 +30,7 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   std::optional<core::PickHit> hit;
   if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) hit = pressPick(lastPos_);
   if (hit) {
+    emit strokePressed({std::clamp(hit->u, 0.0f, 1.0f), std::clamp(hit->v, 0.0f, 1.0f)});
     drag_ = Drag::Sculpt;
     beginStrokeAt(lastPos_, *hit, mods);
     if (!session_.stroking()) drag_ = Drag::None;

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace octaclay::app {
 namespace {
@@ -40,7 +41,7 @@ std::optional<core::PickHit> ViewportWidget::pressPick(QPointF p) const {
     const double r = ring * k / 3.0;
     const int around = 12 * k;
     for (int m = 0; m < around; ++m) {
-      const double angle = 2.0 * 3.14159265358979 * m / around;
+      const double angle = 2.0 * std::numbers::pi * m / around;
       if (std::optional<core::PickHit> hit =
               pickAt(p + QPointF(r * std::cos(angle), r * std::sin(angle))))
         return hit;

@@ -226,6 +226,8 @@ signals:
   void errorOccurred(const QString& message);
   /// A frame showing the document was drawn.
   void framePainted();
+  /// A left press is about to begin a stroke at the image point uv (the press's one pick).
+  void strokePressed(core::Vec2f uv);
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document).
   void surfaceChanged();
 

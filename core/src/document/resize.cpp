@@ -1,6 +1,7 @@
 #include "octaclay/core/document/resize.h"
 
 #include "detail/parallel_rows.h"
+#include "measure/move_tolerance.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -288,12 +289,6 @@ Document resizeDown(const Document& document) {
   return out;
 }
 
-std::string percent(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
-  return text;
-}
-
 } // namespace
 
 Document resizeDocument(const Document& document, int m) {
@@ -321,13 +316,9 @@ ResizeResult resizeAndCheck(const Document& document, const ResizeOptions& optio
   const double scale = m < n ? double(n / m) * double(n / m) : 1.0;
   if (const auto problem = positionsProblem(resized.positions))
     out.reason = "the result would not be finite (" + *problem + ")";
-  else if (out.moved.rms > scale * options.rmsTolerance)
-    out.reason = "the surface would move by " + percent(out.moved.rms) +
-                 " of the diagonal (RMS; at most " + percent(scale * options.rmsTolerance) + ")";
-  else if (out.moved.hausdorff > scale * options.hausdorffTolerance)
-    out.reason = "the surface would move by " + percent(out.moved.hausdorff) +
-                 " of the diagonal (Hausdorff; at most " +
-                 percent(scale * options.hausdorffTolerance) + ")";
+  else
+    out.reason = detail::surfaceMovedTooFar(out.moved, scale * options.rmsTolerance,
+                                            scale * options.hausdorffTolerance);
   if (!out.reason.empty()) {
     if (m < n)
       out.reason += ": N = " + std::to_string(m) +

@@ -3,6 +3,7 @@
 #include "detail/aabb_tree.h"
 #include "detail/parallel_rows.h"
 #include "import/spherical_image.h"
+#include "measure/move_tolerance.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -423,12 +424,6 @@ SurfaceDistance measureMoved(const TriangleMesh& surface, const GeometryImage& o
   return d;
 }
 
-std::string percent(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
-  return text;
-}
-
 } // namespace
 
 RemeshResult remeshDocument(const Document& document, const RemeshOptions& options,
@@ -557,13 +552,9 @@ RemeshResult remeshDocument(const Document& document, const RemeshOptions& optio
   const double scale = m < n ? double(n / m) * double(n / m) : 1.0;
   if (map.flipped > 0)
     out.reason = "the surface's spherical map folds " + std::to_string(map.flipped) + " triangles";
-  else if (out.moved.rms > scale * options.rmsTolerance)
-    out.reason = "the surface would move by " + percent(out.moved.rms) +
-                 " of the diagonal (RMS; at most " + percent(scale * options.rmsTolerance) + ")";
-  else if (out.moved.hausdorff > scale * options.hausdorffTolerance)
-    out.reason = "the surface would move by " + percent(out.moved.hausdorff) +
-                 " of the diagonal (Hausdorff; at most " +
-                 percent(scale * options.hausdorffTolerance) + ")";
+  else
+    out.reason = detail::surfaceMovedTooFar(out.moved, scale * options.rmsTolerance,
+                                            scale * options.hausdorffTolerance);
   if (!out.reason.empty()) {
     out.document = document;
     return out;

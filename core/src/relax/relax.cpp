@@ -3,6 +3,7 @@
 #include "detail/aabb_tree.h"
 #include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
+#include "measure/move_tolerance.h"
 #include "relax/offset_field.h"
 
 #include "octaclay/core/document/document_checks.h"
@@ -210,12 +211,6 @@ std::size_t stretchedShown(const detail::OffsetField& field, double step,
     }
   });
   return count;
-}
-
-std::string percent(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", 100 * fraction);
-  return text;
 }
 
 std::string times(double ratio) {
@@ -650,12 +645,7 @@ EvenOutResult evenOut(const Document& document, const RelaxOptions& options,
       moved = compareSurfaces(surface, extractMesh(result.positions),
                               {.samplesPerSurface = check.samplesPerSurface});
       out.moved = moved;
-      if (moved.rms > check.rmsTolerance)
-        reason = "the surface would move by " + percent(moved.rms) +
-                 " of the diagonal (RMS; at most " + percent(check.rmsTolerance) + ")";
-      else if (moved.hausdorff > check.hausdorffTolerance)
-        reason = "the surface would move by " + percent(moved.hausdorff) +
-                 " of the diagonal (Hausdorff; at most " + percent(check.hausdorffTolerance) + ")";
+      reason = detail::surfaceMovedTooFar(moved, check.rmsTolerance, check.hausdorffTolerance);
     }
     if (progress &&
         !progress(solveShare + (1 - solveShare) * float(t + 1) / float(check.steps.size())))

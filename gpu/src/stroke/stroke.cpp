@@ -1,6 +1,7 @@
 #include "octaclay/gpu/stroke.h"
 
 #include "undo_capture.h"
+#include "value_text.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -26,12 +27,6 @@ namespace {
   throw core::Error(core::ErrorKind::InvalidArgument, message);
 }
 
-std::string formatValue(float v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
-  return std::to_string(v);
-}
-
 void checkParameter(const BrushParameter& p, const std::array<float, 4>& v) {
   const std::string name = "parameter '" + p.id + "'";
   const std::size_t used = p.type == ParameterType::Color ? 4 : 1;
@@ -40,8 +35,8 @@ void checkParameter(const BrushParameter& p, const std::array<float, 4>& v) {
   if (p.type == ParameterType::Material) return; // an index into the engine's materials
   for (std::size_t c = 0; c < used; ++c)
     if (!(v[c] >= p.min && v[c] <= p.max))
-      badSetting(name + " = " + formatValue(v[c]) + " is outside [" + formatValue(p.min) + ", " +
-                 formatValue(p.max) + "]");
+      badSetting(name + " = " + detail::valueText(v[c]) + " is outside [" +
+                 detail::valueText(p.min) + ", " + detail::valueText(p.max) + "]");
 }
 
 void checkSettings(const BrushManifest& brush, const StrokeSettings& settings) {

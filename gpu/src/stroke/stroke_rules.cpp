@@ -1,5 +1,7 @@
 #include "octaclay/gpu/stroke_rules.h"
 
+#include "value_text.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/normals.h"
 #include "octaclay/core/geometry/octahedral.h"
@@ -10,28 +12,18 @@
 
 namespace octaclay::gpu {
 
-namespace {
-
-std::string formatValue(float v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
-  return std::to_string(v);
-}
-
-} // namespace
-
 // NaN fails every comparison: each check is written so that it must pass, never so that it
 // must fail.
 void requireFinite(const char* what, float v) {
   if (!std::isfinite(v))
     throw core::Error(core::ErrorKind::InvalidArgument,
-                      std::string(what) + " " + formatValue(v) + " is not a finite number");
+                      std::string(what) + " " + detail::valueText(v) + " is not a finite number");
 }
 
 void requirePathPoint(core::Vec2f uv) {
   if (!(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1))
-    throw core::Error(core::ErrorKind::InvalidArgument, "path point (" + formatValue(uv.x) + ", " +
-                                                            formatValue(uv.y) +
+    throw core::Error(core::ErrorKind::InvalidArgument, "path point (" + detail::valueText(uv.x) +
+                                                            ", " + detail::valueText(uv.y) +
                                                             ") is outside [0, 1]");
 }
 
