@@ -22,7 +22,9 @@ Command addNewCommand(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand("new", "Create a document from a base shape");
-  sub->add_option("--shape", opt->shape, "sphere, cube, cylinder or blob")->capture_default_str();
+  sub->add_option("--shape", opt->shape,
+                  "sphere, cube, cylinder, blob or capsule (radius 0.5, 2 long, along z)")
+      ->capture_default_str();
   sub->add_option("--size", opt->size,
                   "N: the image has (N+1)x(N+1) samples; a power of two, 2..8192")
       ->capture_default_str();
@@ -35,7 +37,7 @@ Command addNewCommand(CLI::App& app) {
             if (!shape)
               throw core::Error(core::ErrorKind::InvalidArgument,
                                 "unknown shape '" + opt->shape +
-                                    "'; use sphere, cube, cylinder or blob");
+                                    "'; use sphere, cube, cylinder, blob or capsule");
             core::requireValidSize(opt->size);
             const auto start = std::chrono::steady_clock::now();
             const core::Document document =

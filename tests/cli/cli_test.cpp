@@ -53,7 +53,7 @@ QString CliTest::makeDoc(const QString& shape, int n) {
 
 void CliTest::newAndInfo_data() {
   QTest::addColumn<QString>("shape");
-  for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+  for (const char* s : {"sphere", "cube", "cylinder", "blob", "capsule"})
     QTest::newRow(s) << QString(s);
 }
 
@@ -82,8 +82,11 @@ void CliTest::newAndInfo() {
   for (int k = 0; k < 3; ++k) {
     const double lo = min[k].toDouble(NAN), hi = max[k].toDouble(NAN);
     QVERIFY(lo >= -1.0001 && hi <= 1.0001 && lo < hi);
-    if (shape != "blob") { // analytic extent ±1, reached by the axis samples
-      QVERIFY2(std::abs(lo + 1) < 1e-5 && std::abs(hi - 1) < 1e-5, qPrintable(QString::number(lo)));
+    // Analytic extent ±1 (the capsule's ±0.5 across, ±1 along z), reached by the axis samples.
+    const double extent = shape == "capsule" && k < 2 ? 0.5 : 1.0;
+    if (shape != "blob") {
+      QVERIFY2(std::abs(lo + extent) < 1e-5 && std::abs(hi - extent) < 1e-5,
+               qPrintable(QString::number(lo)));
     }
     squared += (hi - lo) * (hi - lo);
   }
