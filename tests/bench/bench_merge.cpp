@@ -5,7 +5,9 @@
 // each stage's time, the whole merge's wall-clock and CPU time (target: ≤ 15 s wall), each
 // part's fair share of samples (its share of the samples ÷ its share of the area, a sample
 // belonging to the part whose analytic surface is nearest; target ≥ 0.5), the samples' distance
-// to the analytic union and the stretch summary. --out=FILE writes the merged document.
+// to the analytic union and the stretch summary. --paint paints every part's diffuse layer (a
+// colour per part, the body's red following x) so that the layers are carried, which a merge of
+// unpainted parts skips. --out=FILE writes the merged document.
 // Other arguments are ignored (scripts/bench passes benchmark filters).
 #include "../merge_creature.h"
 
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
   options.size = 1024;
   int partSize = 256;
   std::string out;
+  bool paint = false;
   for (int a = 1; a < argc; ++a) {
     if (std::strncmp(argv[a], "--size=", 7) == 0)
       options.size = std::atoi(argv[a] + 7);
@@ -47,10 +50,23 @@ int main(int argc, char** argv) {
       partSize = std::atoi(argv[a] + 8);
     else if (std::strncmp(argv[a], "--level-set=", 12) == 0)
       options.levelSetSize = std::atoi(argv[a] + 12);
+    else if (std::strcmp(argv[a], "--paint") == 0)
+      paint = true;
     else if (std::strncmp(argv[a], "--out=", 6) == 0)
       out = argv[a] + 6;
   }
   const std::vector<testing::CreaturePiece> pieces = testing::mergeCreature(partSize);
+  if (paint)
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      core::Document& d = *pieces[k].document;
+      const std::size_t side = std::size_t(d.size() + 1);
+      d.diffuse.texels.resize(side * side * 4);
+      for (std::size_t t = 0; t < side * side; ++t) {
+        const float x = d.positions.texels()[t].x;
+        const float rgba[4] = {k == 0 ? 0.5f + 0.5f * x : 0.1f * float(k), 0.5f, 0.5f, 1.0f};
+        std::copy(rgba, rgba + 4, d.diffuse.texels.begin() + std::ptrdiff_t(4 * t));
+      }
+    }
   const std::vector<core::MergePart> parts = testing::creatureMergeParts(pieces);
 
   const auto wallStart = std::chrono::steady_clock::now();
@@ -67,8 +83,9 @@ int main(int argc, char** argv) {
           .count();
   const double cpu = cpuMs() - cpuStart;
 
-  std::printf("creature from %zu parts of N = %d merged at N = %d (level set %d)\n", parts.size(),
-              partSize, options.size, std::min(options.size, options.levelSetSize));
+  std::printf("creature from %zu parts of N = %d%s merged at N = %d (level set %d)\n", parts.size(),
+              partSize, paint ? ", painted," : "", options.size,
+              std::min(options.size, options.levelSetSize));
   std::printf("voxel %.4f; union's mesh %zu vertices, %zu triangles, Euler %lld\n",
               merged.voxelSize, merged.levelSetVertices, merged.levelSetTriangles, merged.euler);
   std::printf("least fair share estimated from the map: %.2f, turned %.2f\n",
