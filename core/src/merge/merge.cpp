@@ -30,9 +30,13 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Largest level set a merge builds, in voxels across the union's bounding box: far beyond any
-// N a document takes, and small enough that OpenVDB's 32-bit coordinates never overflow.
+// Largest level set a merge builds: in voxels across the union's bounding box, small enough
+// that OpenVDB's 32-bit coordinates never overflow; in surface voxels (the parts' area over a
+// voxel's face), as many as the largest document has samples (8192²), about 12 GiB of narrow
+// band at most, where a chosen voxel size far below the parts' scale would ask for more than
+// any machine has.
 constexpr double kMaxVoxelsAcross = double(1 << 24);
+constexpr double kMaxSurfaceVoxels = 8192.0 * 8192.0 * 1.01;
 
 double determinant3(const std::array<double, 16>& m) {
   return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
@@ -137,10 +141,13 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   const int m =
       options.levelSetSize > 0 ? std::min(options.size, options.levelSetSize) : options.size;
   out.voxelSize = options.voxelSize > 0 ? options.voxelSize : std::sqrt(area / double(m) / m);
-  if (!(out.voxelSize > 0) || double(box.diagonal()) / out.voxelSize > kMaxVoxelsAcross)
-    throw Error(ErrorKind::InvalidArgument, "the voxel size " + std::to_string(out.voxelSize) +
-                                                " is too small for parts " +
-                                                std::to_string(box.diagonal()) + " across");
+  if (!(out.voxelSize > 0) || double(box.diagonal()) / out.voxelSize > kMaxVoxelsAcross ||
+      area / (out.voxelSize * out.voxelSize) > kMaxSurfaceVoxels)
+    throw Error(ErrorKind::InvalidArgument,
+                "the voxel size " + std::to_string(out.voxelSize) + " is too small for parts " +
+                    std::to_string(box.diagonal()) + " across: their surface would take " +
+                    std::to_string(area / (out.voxelSize * out.voxelSize)) +
+                    " voxels, more than 8192² (the largest document's samples)");
   std::vector<TriangleMesh> levelSetMeshes;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Document& doc = *parts[k].document;

@@ -262,6 +262,8 @@ void MergeTest::badArgumentsAreRefused() {
   MergeOptions tiny = ok;
   tiny.voxelSize = 1e-9;
   refused({{&ball, {}}}, tiny, "too small");
+  tiny.voxelSize = 1e-4; // 1.3·10⁹ surface voxels on the unit ball: refused before any is made
+  refused({{&ball, {}}}, tiny, "more than 8192");
   Document broken = ball;
   broken.positions.at(3, 4).y = std::numeric_limits<float>::quiet_NaN();
   ErrorKind kind{};

@@ -74,7 +74,8 @@ struct MergeResult {
 /// Throws, with nothing changed (the parts are only read):
 /// - Error(InvalidArgument) for no parts, a null document, an N out of range, a transform with a
 ///   non-finite entry, a last row other than (0, 0, 0, 1) or a singular 3×3 part, a voxel size
-///   that is not finite, or one so small that the level set would exceed 2²⁴ voxels across;
+///   that is not finite, or one so small that the level set would exceed 2²⁴ voxels across or
+///   the parts' surface 8192² voxels (the largest document's samples);
 /// - Error(InvalidInput) for a part with non-finite positions; "these objects do not touch"
 ///   when the union has more than one piece (the count named); "the merged surface has genus G
 ///   (Euler characteristic χ) …" when it is not genus 0; when the union's mesh cannot be mapped
