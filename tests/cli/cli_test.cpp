@@ -23,6 +23,7 @@ private slots:
   void initTestCase();
   void newAndInfo_data();
   void newAndInfo();
+  void newCapsuleOfAGivenShape();
   void humanOutput();
   void exportAndCompare();
   void lodExports();
@@ -118,6 +119,22 @@ void CliTest::newAndInfo() {
   }
 }
 
+void CliTest::newCapsuleOfAGivenShape() {
+  // A limb: radius 0.2, a cylinder 2 long, so 2.4 along z and 0.4 across.
+  const QString doc = file("limb.exr");
+  RUN_JSON(created, "new", "--shape", "capsule", "--radius", "0.2", "--length", "2", "--size", "64",
+           "-o", doc, "--json");
+  RUN_JSON(info, "info", doc, "--json");
+  QCOMPARE(info["euler"].toDouble(), 2.0);
+  const QJsonObject bbox = info["bbox"].toObject();
+  const QJsonArray min = bbox["min"].toArray(), max = bbox["max"].toArray();
+  const double half[3] = {0.2, 0.2, 1.2};
+  for (int k = 0; k < 3; ++k)
+    QVERIFY2(std::abs(min[k].toDouble() + half[k]) < 1e-5 &&
+                 std::abs(max[k].toDouble() - half[k]) < 1e-5,
+             qPrintable(QJsonDocument(bbox).toJson()));
+}
+
 void CliTest::humanOutput() {
   const QString doc = makeDoc("sphere", 16);
   const QStringList args{"info", doc};
@@ -183,6 +200,10 @@ void CliTest::badArguments() {
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16384", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "sixteen", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16");
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--radius", "0.2", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--radius", "0", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--radius", "nan", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--length", "-1", "-o", out);
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "12");
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "32");
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "1");

@@ -10,10 +10,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 namespace octaclay::core {
 namespace {
+
+// A number as a message shows it: 6 significant digits (0, 1e-09, nan), not to_string's 0.000000.
+std::string number(float value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 // The point of the capsule that the equal-area map sends the octahedron point o (|o|₁ = 1) to.
 Vec3f capsulePoint(const Capsule& capsule, detail::Dir3d d) {
@@ -39,11 +47,11 @@ GeometryImage makeCapsule(int n, const Capsule& capsule) {
   if (!(std::isfinite(capsule.radius) && capsule.radius > 0))
     throw Error(ErrorKind::InvalidArgument,
                 "a capsule's radius must be a finite number above 0, not " +
-                    std::to_string(capsule.radius));
+                    number(capsule.radius));
   if (!(std::isfinite(capsule.length) && capsule.length >= 0))
     throw Error(ErrorKind::InvalidArgument,
                 "a capsule's length must be a finite number, 0 or more, not " +
-                    std::to_string(capsule.length));
+                    number(capsule.length));
   GeometryImage image(n);
   const int side = image.side();
   detail::parallelRows(side, [&](int rowBegin, int rowEnd) {

@@ -19,12 +19,20 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 namespace octaclay::core {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A number as a message shows it: 6 significant digits (1e-09, 5.01), not to_string's 0.000000.
+std::string number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -144,9 +152,9 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   if (!(out.voxelSize > 0) || double(box.diagonal()) / out.voxelSize > kMaxVoxelsAcross ||
       area / (out.voxelSize * out.voxelSize) > kMaxSurfaceVoxels)
     throw Error(ErrorKind::InvalidArgument,
-                "the voxel size " + std::to_string(out.voxelSize) + " is too small for parts " +
-                    std::to_string(box.diagonal()) + " across: their surface would take " +
-                    std::to_string(area / (out.voxelSize * out.voxelSize)) +
+                "the voxel size " + number(out.voxelSize) + " is too small for parts " +
+                    number(box.diagonal()) + " across: their surface would take " +
+                    number(area / (out.voxelSize * out.voxelSize)) +
                     " voxels, more than 8192² (the largest document's samples)");
   std::vector<TriangleMesh> levelSetMeshes;
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -179,7 +187,7 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   out.euler = topology.topology.euler;
   if (topology.pieces == 0)
     throw Error(ErrorKind::InvalidInput, "the parts enclose no volume at a voxel size of " +
-                                             std::to_string(out.voxelSize) + ": nothing to merge");
+                                             number(out.voxelSize) + ": nothing to merge");
   if (topology.pieces > 1)
     throw Error(ErrorKind::InvalidInput,
                 "these objects do not touch: their union is " + std::to_string(topology.pieces) +
