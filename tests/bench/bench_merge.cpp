@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
       partSize = std::atoi(argv[a] + 8);
     else if (std::strncmp(argv[a], "--level-set=", 12) == 0)
       options.levelSetSize = std::atoi(argv[a] + 12);
+    else if (std::strcmp(argv[a], "--no-snap") == 0)
+      options.snapToParts = false;
     else if (std::strcmp(argv[a], "--paint") == 0)
       paint = true;
     else if (std::strncmp(argv[a], "--out=", 6) == 0)
@@ -90,8 +92,11 @@ int main(int argc, char** argv) {
               merged.voxelSize, merged.levelSetVertices, merged.levelSetTriangles, merged.euler);
   std::printf("least fair share estimated from the map: %.2f, turned %.2f\n",
               merged.leastShareUnturned, merged.leastShareTurned);
-  std::printf("level set %.0f ms, map + resample %.0f ms, layers %.0f ms\n", merged.levelSetMs,
-              merged.parameterizeMs, merged.layersMs);
+  std::printf("level set %.0f ms, map + resample %.0f ms, snap %.0f ms (%.1f %% of the samples "
+              "moved onto their part), layers %.0f ms\n",
+              merged.levelSetMs, merged.parameterizeMs, merged.snapMs,
+              100.0 * double(merged.snapped) / double(merged.document.positions.texelCount()),
+              merged.layersMs);
   std::printf("merge: %.1f s wall, %.1f s CPU (target <= 15 s wall) %s\n", wallMs / 1e3, cpu / 1e3,
               wallMs <= 15e3 ? "PASS" : "MISS");
 

@@ -4,6 +4,7 @@
 #include "merge/map_rotation.h"
 #include "merge/part_layers.h"
 #include "merge/part_locator.h"
+#include "merge/part_snap.h"
 #include "merge/union_topology.h"
 #include "merge/voxel_union.h"
 
@@ -243,6 +244,13 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   out.document = makeDocument(resampleOctahedral(validated.mesh, map, options.size));
   out.parameterizeMs = msSince(start);
   report(0.9f);
+
+  start = Clock::now();
+  if (options.snapToParts)
+    out.snapped = detail::snapToParts(locator, out.document.positions, 0.75 * out.voxelSize,
+                                      1.5 * out.voxelSize);
+  out.snapMs = msSince(start);
+  report(0.95f);
 
   start = Clock::now();
   detail::carryPartLayers(locator, out.document, out.sourcePart);

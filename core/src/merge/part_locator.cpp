@@ -37,4 +37,15 @@ PartLocator::Found PartLocator::nearest(Vec3d p, Cursor& cursor) const {
           closestPointOnTriangle(p, Vec3d(t.a), Vec3d(t.b), Vec3d(t.c))};
 }
 
+bool PartLocator::otherWithin(Vec3d p, std::size_t except, double bound, Cursor& cursor) const {
+  const double bound2 = bound * bound;
+  for (std::size_t k = 0; k < parts_.size(); ++k) {
+    if (k == except || boxDistanceSquared(parts_[k].box, p) >= bound2) continue;
+    const AabbTree::Hit hit = parts_[k].tree->closest(p, cursor.hints[k]);
+    cursor.hints[k] = hit.triangle;
+    if (hit.distanceSquared < bound2) return true;
+  }
+  return false;
+}
+
 } // namespace octaclay::core::detail

@@ -48,6 +48,10 @@ public:
   /// than the best so far.
   Found nearest(Vec3d p, Cursor& cursor) const;
 
+  /// Whether a part other than `except` comes within `bound` of p (only parts whose bounding
+  /// box does are searched).
+  bool otherWithin(Vec3d p, std::size_t except, double bound, Cursor& cursor) const;
+
   std::size_t size() const { return parts_.size(); }
   const PlacedSurface& part(std::size_t k) const { return *parts_[k].surface; }
 

@@ -43,6 +43,10 @@ struct MergeOptions {
   /// M = size.
   int levelSetSize = 128;
   double voxelSize = 0; ///< when > 0, this voxel size (world units) instead of the rule above
+  /// Each sample where the surface is one part's alone (farther than 1.5 voxels from every
+  /// other part) moved onto that part's closest point when it is within 0.75 voxel: the merged
+  /// surface is the parts' own there, not the level set's facets (src/merge/part_snap.h).
+  bool snapToParts = true;
 };
 
 /// What a merge measured on the way.
@@ -56,7 +60,8 @@ struct MergeResult {
   /// The least part's fair share of samples as the grid would sample the sphere map before and
   /// after it was turned for the parts (estimated from the map, before resampling).
   double leastShareUnturned = 0, leastShareTurned = 0;
-  double levelSetMs = 0, parameterizeMs = 0, layersMs = 0;
+  std::size_t snapped = 0; ///< samples moved onto their part (MergeOptions::snapToParts)
+  double levelSetMs = 0, parameterizeMs = 0, snapMs = 0, layersMs = 0;
 };
 
 /// The parts' voxel union as one octahedral document of N = options.size. Each part's surface
@@ -66,7 +71,8 @@ struct MergeResult {
 /// shorter diagonal); that mesh is checked (one piece, genus 0), cleaned (validateGenus0Mesh),
 /// mapped onto the sphere (parameterizeOnSphere), turned so that the grid's denser directions
 /// fall where they even out the parts' shares of samples (the part of a point: the nearest
-/// placed part), and resampled at N (resampleOctahedral), as `octaclay-cli import` does. Every
+/// placed part), and resampled at N (resampleOctahedral), as `octaclay-cli import` does; where
+/// the surface is one part's alone its samples are moved onto that part (snapToParts). Every
 /// layer is carried from the parts: each new sample takes the value at its closest point on the
 /// placed parts, the nearest part winning (a layer uniform with the same fill in every part stays
 /// uniform; hasMask when any part has one). Saliency 0.
