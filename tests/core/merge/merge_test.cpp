@@ -48,6 +48,7 @@ class MergeTest : public QObject {
 
 private slots:
   void creatureIsOneClosedBallNearTheUnion();
+  void creaseOnALegIsAsDeepAsOnTheBody();
   void layersComeFromTheNearestPart();
   void ringIsRefusedWithItsGenus();
   void apartIsRefused();
@@ -154,6 +155,50 @@ void MergeTest::creatureIsOneClosedBallNearTheUnion() {
   const StretchSummary stretch = summarizeStretch(doc.positions);
   qInfo("longest edge / median %.2f, p99 / median %.2f", stretch.longestOverMedian,
         stretch.p99OverMedian);
+}
+
+void MergeTest::creaseOnALegIsAsDeepAsOnTheBody() {
+  // The same valley sculpted into the body (a ring around x = 0.8) and into a leg (a ring
+  // around its middle): 0.03 deep (0.8 voxel), a Gaussian of width 0.04. Its depth: the
+  // deepest sample below the part's analytic surface near the ring, in the part and merged.
+  constexpr float depth = 0.03f, width = 0.04f;
+  std::vector<testing::CreaturePiece> pieces = testing::mergeCreature(128);
+  for (Vec4f& t : pieces[0].document->positions.texels()) {
+    const float g = std::exp(-((t.x - 0.8f) / width) * ((t.x - 0.8f) / width));
+    t.x *= 1 - depth * g, t.y *= 1 - depth * g, t.z *= 1 - depth * g;
+  }
+  for (Vec4f& t : pieces[1].document->positions.texels()) { // local: the capsule along z
+    const float g = std::exp(-(t.z / width) * (t.z / width)), rho = std::hypot(t.x, t.y);
+    if (rho > 0) t.x *= 1 - depth * g / rho, t.y *= 1 - depth * g / rho;
+  }
+  const auto valley = [&](const GeometryImage& image, const PartTransform& placed,
+                          std::size_t piece) {
+    const testing::CreaturePiece& part = pieces[piece];
+    const Vec3f centre = piece == 0 ? Vec3f{0.8f, 0, 0} : (part.a + part.b) * 0.5f;
+    const Vec3f axis = piece == 0 ? Vec3f{1, 0, 0} : normalize(part.b - part.a);
+    float deepest = 0;
+    for (const Vec4f& t : image.texels()) {
+      const Vec3f p = placed.apply(t.xyz());
+      if (std::abs(dot(p - centre, axis)) > width || testing::nearestPiece(pieces, p) != int(piece))
+        continue;
+      deepest = std::max(deepest, -testing::pieceDistance(part, p));
+    }
+    return deepest;
+  };
+  MergeOptions options;
+  options.size = 256;
+  const MergeResult merged = mergeParts(testing::creatureMergeParts(pieces), options);
+  double ratio[2] = {};
+  for (const std::size_t piece : {std::size_t(0), std::size_t(1)}) {
+    const float before = valley(pieces[piece].document->positions, pieces[piece].transform, piece);
+    const float after = valley(merged.document.positions, PartTransform{}, piece);
+    ratio[piece == 0 ? 0 : 1] = double(after) / double(before);
+    qInfo("%-16s valley %.4f deep in the part, %.4f merged (%.2f)", pieces[piece].name.c_str(),
+          double(before), double(after), ratio[piece == 0 ? 0 : 1]);
+    QVERIFY(before > 0.8f * depth);
+    QVERIFY2(std::abs(ratio[piece == 0 ? 0 : 1] - 1.0) <= 0.2, qPrintable(QString::number(after)));
+  }
+  QVERIFY2(std::abs(ratio[1] / ratio[0] - 1.0) <= 0.2, "the leg's valley against the body's");
 }
 
 void MergeTest::layersComeFromTheNearestPart() {
