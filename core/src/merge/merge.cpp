@@ -192,7 +192,10 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   if (topology.pieces > 1)
     throw Error(ErrorKind::InvalidInput,
                 "these objects do not touch: their union is " + std::to_string(topology.pieces) +
-                    " separate pieces; move them until they overlap, then merge");
+                    " separate pieces; move them until they overlap, then merge (at a voxel of " +
+                    number(out.voxelSize) +
+                    ", a part thinner than about two voxels can fall "
+                    "apart too)");
   if (topology.topology.euler != 2)
     throw Error(ErrorKind::InvalidInput,
                 "the merged surface has genus " + std::to_string(topology.genus()) +

@@ -52,6 +52,7 @@ private slots:
   void layersComeFromTheNearestPart();
   void ringIsRefusedWithItsGenus();
   void apartIsRefused();
+  void farFromTheOriginAndLarge();
   void badArgumentsAreRefused();
   void progressAndCancel();
 };
@@ -299,6 +300,32 @@ void MergeTest::apartIsRefused() {
   const std::vector<MergePart> touching{{&ball, PartTransform::fromTrs({-0.9f, 0, 0})},
                                         {&ball, PartTransform::fromTrs({0.9f, 0, 0})}};
   QCOMPARE(mergeParts(touching, options).euler, 2LL);
+}
+
+void MergeTest::farFromTheOriginAndLarge() {
+  // Two balls of radius 1000 overlapping by 200, a million units from the origin: the merge
+  // works in the parts' own scale (the voxel from their area), so the result is the small
+  // case's scaled: one ball, every sample within a voxel of the union, most snapped.
+  const Document ball = makeDocument(makeBaseShape(BaseShape::Sphere, 32));
+  const Vec3f far{1e6f, -2e6f, 5e5f}, s{1000, 1000, 1000};
+  const std::vector<MergePart> parts{
+      {&ball, PartTransform::fromTrs(far + Vec3f{-900, 0, 0}, {0, 0, 0}, s)},
+      {&ball, PartTransform::fromTrs(far + Vec3f{900, 0, 0}, {0, 0, 0}, s)}};
+  MergeOptions options;
+  options.size = 64;
+  const MergeResult merged = mergeParts(parts, options);
+  QCOMPARE(merged.euler, 2LL);
+  QVERIFY(merged.voxelSize > 10 && merged.voxelSize < 100);
+  double worst = 0;
+  for (const Vec4f& t : merged.document.positions.texels()) {
+    const Vec3f p = t.xyz() - far;
+    const double d = std::min(length(p - Vec3f{-900, 0, 0}), length(p - Vec3f{900, 0, 0})) - 1000;
+    worst = std::max(worst, std::abs(d));
+  }
+  qInfo("voxel %.1f, worst %.2f, %zu of %zu snapped", merged.voxelSize, worst, merged.snapped,
+        merged.document.positions.texelCount());
+  QVERIFY2(worst <= merged.voxelSize, qPrintable(QString::number(worst)));
+  QVERIFY(merged.snapped > merged.document.positions.texelCount() / 2);
 }
 
 void MergeTest::badArgumentsAreRefused() {
