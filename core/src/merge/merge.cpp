@@ -248,16 +248,16 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
   out.parameterizeMs = msSince(start);
   report(0.9f);
 
+  // Snapped and the layers carried in one search per texel (or the layers alone).
   start = Clock::now();
-  if (options.snapToParts)
+  if (options.snapToParts) {
+    detail::LayerCarrier layers(locator, out.document, out.sourcePart);
     out.snapped = detail::snapToParts(locator, out.document.positions, 0.75 * out.voxelSize,
-                                      1.5 * out.voxelSize);
-  out.snapMs = msSince(start);
-  report(0.95f);
-
-  start = Clock::now();
-  detail::carryPartLayers(locator, out.document, out.sourcePart);
-  out.layersMs = msSince(start);
+                                      1.5 * out.voxelSize, &layers);
+  } else {
+    detail::carryPartLayers(locator, out.document, out.sourcePart);
+  }
+  out.partsMs = msSince(start);
   report(1.0f);
   return out;
 }

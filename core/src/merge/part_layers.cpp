@@ -31,72 +31,78 @@ std::array<double, 3> barycentric(Vec3d q, Vec3d a, Vec3d b, Vec3d c) {
 
 } // namespace
 
-void carryPartLayers(const PartLocator& parts, Document& merged,
-                     std::vector<std::uint16_t>& sourcePart) {
-  sourcePart.clear();
-  merged.hasMask = false;
-  for (std::size_t k = 0; k < parts.size(); ++k)
-    merged.hasMask = merged.hasMask || parts.part(k).document->hasMask;
-  std::vector<int> carried;
+LayerCarrier::LayerCarrier(const PartLocator& parts, Document& merged,
+                           std::vector<std::uint16_t>& sourcePart)
+    : parts_(parts), merged_(merged), sourcePart_(sourcePart) {
+  sourcePart_.clear();
+  merged_.hasMask = false;
+  for (std::size_t k = 0; k < parts_.size(); ++k)
+    merged_.hasMask = merged_.hasMask || parts_.part(k).document->hasMask;
   for (int which = 0; which < 3; ++which) {
-    const Layer& first = layerOf(*parts.part(0).document, which);
+    const Layer& first = layerOf(*parts_.part(0).document, which);
     bool same = true;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      const Layer& l = layerOf(*parts.part(k).document, which);
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      const Layer& l = layerOf(*parts_.part(k).document, which);
       same = same && l.uniform() && l.fill == first.fill;
     }
-    Layer& to = layerOf(merged, which);
+    Layer& to = layerOf(merged_, which);
     to.texels.clear();
     if (same)
       to.fill = first.fill;
     else
-      carried.push_back(which);
+      carried_.push_back(which);
   }
-  if (carried.empty()) return;
-
-  // The texel each part's mesh vertex reads its layers from.
-  std::vector<std::vector<std::size_t>> vertexTexel(parts.size());
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    const int n = parts.part(k).document->size();
+  if (carried_.empty()) return;
+  for (std::size_t k = 0; k < parts_.size(); ++k) {
+    const int n = parts_.part(k).document->size();
+    std::vector<std::size_t> texels;
     for (const Sample s : VertexIndex(n).canonicalSamples())
-      vertexTexel[k].push_back(std::size_t(s.j) * std::size_t(n + 1) + std::size_t(s.i));
+      texels.push_back(std::size_t(s.j) * std::size_t(n + 1) + std::size_t(s.i));
+    vertexTexel_.push_back(std::move(texels));
   }
+  const std::size_t texels = merged_.positions.texelCount();
+  sourcePart_.assign(texels, 0);
+  for (int which : carried_) {
+    Layer& to = layerOf(merged_, which);
+    to.texels.assign(texels * std::size_t(to.channels), 0.0f);
+  }
+}
+
+void LayerCarrier::carry(std::size_t texel, const PartLocator::Found& found) {
+  sourcePart_[texel] = std::uint16_t(found.part);
+  const PlacedSurface& part = parts_.part(found.part);
+  const auto& tri = part.mesh.triangles[found.triangle];
+  const std::array<double, 3> w =
+      barycentric(found.point, Vec3d(part.mesh.positions[tri[0]]),
+                  Vec3d(part.mesh.positions[tri[1]]), Vec3d(part.mesh.positions[tri[2]]));
+  for (int which : carried_) {
+    const Layer& from = layerOf(*part.document, which);
+    Layer& to = layerOf(merged_, which);
+    const std::size_t channels = std::size_t(to.channels);
+    for (std::size_t ch = 0; ch < channels; ++ch) {
+      double value = 0;
+      for (std::size_t corner = 0; corner < 3; ++corner)
+        value += w[corner] *
+                 (from.uniform()
+                      ? double(from.fill[ch])
+                      : double(from.texels[vertexTexel_[found.part][tri[corner]] * channels + ch]));
+      to.texels[texel * channels + ch] = float(value);
+    }
+  }
+}
+
+void carryPartLayers(const PartLocator& parts, Document& merged,
+                     std::vector<std::uint16_t>& sourcePart) {
+  LayerCarrier carrier(parts, merged, sourcePart);
+  if (!carrier.active()) return;
   const int m = merged.size();
   const std::size_t side = std::size_t(m + 1);
-  sourcePart.assign(side * side, 0);
-  for (int which : carried) {
-    Layer& to = layerOf(merged, which);
-    to.texels.assign(side * side * std::size_t(to.channels), 0.0f);
-  }
   parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
     PartLocator::Cursor cursor = parts.cursor();
     for (int j = rowBegin; j < rowEnd; ++j)
-      for (int i = 0; i <= m; ++i) {
-        const std::size_t texel = std::size_t(j) * side + std::size_t(i);
-        const PartLocator::Found found =
-            parts.nearest(Vec3d(merged.positions.at(i, j).xyz()), cursor);
-        sourcePart[texel] = std::uint16_t(found.part);
-        const PlacedSurface& part = parts.part(found.part);
-        const auto& tri = part.mesh.triangles[found.triangle];
-        const std::array<double, 3> w =
-            barycentric(found.point, Vec3d(part.mesh.positions[tri[0]]),
-                        Vec3d(part.mesh.positions[tri[1]]), Vec3d(part.mesh.positions[tri[2]]));
-        for (int which : carried) {
-          const Layer& from = layerOf(*part.document, which);
-          Layer& to = layerOf(merged, which);
-          const std::size_t channels = std::size_t(to.channels);
-          for (std::size_t ch = 0; ch < channels; ++ch) {
-            double value = 0;
-            for (std::size_t corner = 0; corner < 3; ++corner)
-              value +=
-                  w[corner] *
-                  (from.uniform()
-                       ? double(from.fill[ch])
-                       : double(from.texels[vertexTexel[found.part][tri[corner]] * channels + ch]));
-            to.texels[texel * channels + ch] = float(value);
-          }
-        }
-      }
+      for (int i = 0; i <= m; ++i)
+        carrier.carry(std::size_t(j) * side + std::size_t(i),
+                      parts.nearest(Vec3d(merged.positions.at(i, j).xyz()), cursor));
   });
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "merge/part_layers.h"
 #include "merge/part_locator.h"
 
 #include "octaclay/core/geometry/geometry_image.h"
@@ -16,8 +17,11 @@ namespace octaclay::core::detail {
 /// voxel and clearance of 1.5 voxels a moved sample never lands inside another part: it would
 /// have to have been more than 1.5 − 0.75 − 0.5 voxel inside it already. Seams the image
 /// (identified samples move alike, their closest points being one). Returns how many samples
-/// moved. Runs on every hardware thread, one or two PartLocator queries per sample.
+/// moved. When `layers` is given and active, each texel's layers are carried on the way from
+/// the very point found for it (the closest point to the texel as it ends, moved or not), so a
+/// merge searches once per texel. Runs on every hardware thread, one or two PartLocator
+/// queries per sample.
 std::size_t snapToParts(const PartLocator& parts, GeometryImage& positions, double maxMove,
-                        double clearance);
+                        double clearance, LayerCarrier* layers = nullptr);
 
 } // namespace octaclay::core::detail

@@ -71,7 +71,7 @@ void MergeTest::creatureIsOneClosedBallNearTheUnion() {
   const MergeResult merged = mergeParts(parts, options);
   qInfo("voxel %.4f, level set %zu vertices, %zu triangles; %.0f + %.0f + %.0f ms",
         merged.voxelSize, merged.levelSetVertices, merged.levelSetTriangles, merged.levelSetMs,
-        merged.parameterizeMs, merged.layersMs);
+        merged.parameterizeMs, merged.partsMs);
   for (std::size_t k = 0; k < pieces.size(); ++k) // the parts are only read
     QVERIFY(pieces[k].document->positions.texels().size() == before[k].positions.texels().size() &&
             std::equal(pieces[k].document->positions.texels().begin(),
@@ -216,48 +216,53 @@ void MergeTest::layersComeFromTheNearestPart() {
     std::copy(rgba, rgba + 4, body.diffuse.texels.begin() + std::ptrdiff_t(4 * t));
   }
   pieces[3].document->hasMask = true;
-  MergeOptions options;
-  options.size = 128;
-  const MergeResult merged = mergeParts(testing::creatureMergeParts(pieces), options);
-  const Document& doc = merged.document;
-  QVERIFY(!doc.diffuse.uniform());
-  QVERIFY(doc.feature.uniform() && doc.mask.uniform()); // the same fill in every part
-  QVERIFY(doc.hasMask);
-  const std::size_t mergedSide = std::size_t(doc.size() + 1);
-  QCOMPARE(merged.sourcePart.size(), mergedSide * mergedSide);
+  // Carried on the way while snapping, and on their own without it.
+  for (const bool snap : {true, false}) {
+    MergeOptions options;
+    options.size = 128;
+    options.snapToParts = snap;
+    const MergeResult merged = mergeParts(testing::creatureMergeParts(pieces), options);
+    const Document& doc = merged.document;
+    QVERIFY(!doc.diffuse.uniform());
+    QVERIFY(doc.feature.uniform() && doc.mask.uniform()); // the same fill in every part
+    QVERIFY(doc.hasMask);
+    const std::size_t mergedSide = std::size_t(doc.size() + 1);
+    QCOMPARE(merged.sourcePart.size(), mergedSide * mergedSide);
 
-  // Away from the junctions (the nearest part nearer than the next by 0.05), every texel took
-  // its layers from the part whose surface it lies on: that part's colour, and on the body the
-  // painted red, read at the closest point (within 0.02: the body at N = 64 is 0.04 between
-  // samples, and red changes by half of x's change).
-  std::size_t clear = 0, fromNearest = 0, colourRight = 0;
-  double worstRed = 0;
-  for (std::size_t t = 0; t < mergedSide * mergedSide; ++t) {
-    const Vec3f p = doc.positions.texels()[t].xyz();
-    float margin = 0;
-    const int k = testing::nearestPiece(pieces, p, &margin);
-    if (margin < 0.05f) continue;
-    ++clear;
-    if (merged.sourcePart[t] == k) ++fromNearest;
-    const float* rgba = doc.diffuse.texels.data() + 4 * t;
-    if (k == 0) {
-      worstRed = std::max(worstRed, std::abs(double(rgba[0]) - (0.5 + 0.5 * double(p.x))));
-      if (std::abs(rgba[0] - (0.5f + 0.5f * p.x)) <= 0.02f && rgba[1] == 0.25f && rgba[2] == 0.75f)
-        ++colourRight;
-    } else {
-      const auto& fill = pieces[std::size_t(k)].document->diffuse.fill;
-      bool same = true;
-      for (int c = 0; c < 4; ++c)
-        same = same && std::abs(rgba[c] - fill[std::size_t(c)]) <= 1e-6f;
-      if (same) ++colourRight;
+    // Away from the junctions (the nearest part nearer than the next by 0.05), every texel took
+    // its layers from the part whose surface it lies on: that part's colour, and on the body the
+    // painted red, read at the closest point (within 0.02: the body at N = 64 is 0.04 between
+    // samples, and red changes by half of x's change).
+    std::size_t clear = 0, fromNearest = 0, colourRight = 0;
+    double worstRed = 0;
+    for (std::size_t t = 0; t < mergedSide * mergedSide; ++t) {
+      const Vec3f p = doc.positions.texels()[t].xyz();
+      float margin = 0;
+      const int k = testing::nearestPiece(pieces, p, &margin);
+      if (margin < 0.05f) continue;
+      ++clear;
+      if (merged.sourcePart[t] == k) ++fromNearest;
+      const float* rgba = doc.diffuse.texels.data() + 4 * t;
+      if (k == 0) {
+        worstRed = std::max(worstRed, std::abs(double(rgba[0]) - (0.5 + 0.5 * double(p.x))));
+        if (std::abs(rgba[0] - (0.5f + 0.5f * p.x)) <= 0.02f && rgba[1] == 0.25f &&
+            rgba[2] == 0.75f)
+          ++colourRight;
+      } else {
+        const auto& fill = pieces[std::size_t(k)].document->diffuse.fill;
+        bool same = true;
+        for (int c = 0; c < 4; ++c)
+          same = same && std::abs(rgba[c] - fill[std::size_t(c)]) <= 1e-6f;
+        if (same) ++colourRight;
+      }
     }
+    qInfo("%zu of %zu texels clear of the junctions; from the nearest part %zu, colour right %zu; "
+          "body's red off by %.4f at most",
+          clear, mergedSide * mergedSide, fromNearest, colourRight, worstRed);
+    QVERIFY(clear > mergedSide * mergedSide * 3 / 4);
+    QCOMPARE(fromNearest, clear);
+    QCOMPARE(colourRight, clear);
   }
-  qInfo("%zu of %zu texels clear of the junctions; from the nearest part %zu, colour right %zu; "
-        "body's red off by %.4f at most",
-        clear, mergedSide * mergedSide, fromNearest, colourRight, worstRed);
-  QVERIFY(clear > mergedSide * mergedSide * 3 / 4);
-  QCOMPARE(fromNearest, clear);
-  QCOMPARE(colourRight, clear);
 }
 
 void MergeTest::ringIsRefusedWithItsGenus() {

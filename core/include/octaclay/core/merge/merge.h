@@ -61,7 +61,9 @@ struct MergeResult {
   /// after it was turned for the parts (estimated from the map, before resampling).
   double leastShareUnturned = 0, leastShareTurned = 0;
   std::size_t snapped = 0; ///< samples moved onto their part (MergeOptions::snapToParts)
-  double levelSetMs = 0, parameterizeMs = 0, snapMs = 0, layersMs = 0;
+  /// Times: the level set and its checks; the map, its turn and the resampling; the search of
+  /// the parts per texel (snapping and the layers).
+  double levelSetMs = 0, parameterizeMs = 0, partsMs = 0;
 };
 
 /// The parts' voxel union as one octahedral document of N = options.size. Each part's surface
