@@ -111,6 +111,9 @@ Vec3f PartTransform::apply(Vec3f p) const {
 MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& options,
                        const std::function<bool(float)>& progress) {
   if (parts.empty()) throw Error(ErrorKind::InvalidArgument, "a merge needs at least one part");
+  if (parts.size() > 65535) // MergeResult::sourcePart numbers them in 16 bits
+    throw Error(ErrorKind::InvalidArgument,
+                "a merge takes at most 65 535 parts, not " + std::to_string(parts.size()));
   if (!isValidSize(options.size))
     throw Error(ErrorKind::InvalidArgument, "the merged size N = " + std::to_string(options.size) +
                                                 " is out of range: use a power of two from " +

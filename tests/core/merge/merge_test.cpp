@@ -346,6 +346,7 @@ void MergeTest::badArgumentsAreRefused() {
   ok.size = 64;
   refused({}, ok, "at least one part");
   refused({{nullptr, {}}}, ok, "no document");
+  refused(std::vector<MergePart>(65536, {&ball, {}}), ok, "at most 65 535 parts");
   for (int n : {0, 3, 100, 16384}) {
     MergeOptions bad = ok;
     bad.size = n;

@@ -39,8 +39,8 @@ struct MergeOptions {
   /// face per voxel² of surface; fewer where the parts overlap). Mapping that mesh onto the
   /// sphere costs most of a merge and grows faster than its vertices (docs/ARCHITECTURE.md, "A
   /// merge", has the figures), so above levelSetSize the merged document samples the union's
-  /// mesh finer than the mesh itself: detail finer than a voxel is not carried. 0 or less:
-  /// M = size.
+  /// mesh finer than the mesh itself, and detail finer than a voxel is kept only where
+  /// snapToParts puts the samples back onto the parts. 0 or less: M = size.
   int levelSetSize = 128;
   double voxelSize = 0; ///< when > 0, this voxel size (world units) instead of the rule above
   /// Each sample where the surface is one part's alone (farther than 1.5 voxels from every
@@ -55,7 +55,8 @@ struct MergeResult {
   double voxelSize = 0;
   std::size_t levelSetVertices = 0, levelSetTriangles = 0; ///< the union's mesh
   long long euler = 0;                                     ///< of that mesh: 2 for genus 0
-  /// Per texel ((N+1)², row-major) the index of the part its layers were carried from.
+  /// Per texel ((N+1)², row-major) the index of the part its layers were carried from; empty
+  /// when every layer has one fill in every part (nothing to carry, nothing searched).
   std::vector<std::uint16_t> sourcePart;
   /// The least part's fair share of samples as the grid would sample the sphere map before and
   /// after it was turned for the parts (estimated from the map, before resampling).
@@ -80,7 +81,8 @@ struct MergeResult {
 /// uniform; hasMask when any part has one). Saliency 0.
 ///
 /// Throws, with nothing changed (the parts are only read):
-/// - Error(InvalidArgument) for no parts, a null document, an N out of range, a transform with a
+/// - Error(InvalidArgument) for no parts or more than 65 535, a null document, an N out of
+///   range, a transform with a
 ///   non-finite entry, a last row other than (0, 0, 0, 1) or a singular 3×3 part, a voxel size
 ///   that is not finite, or one so small that the level set would exceed 2²⁴ voxels across or
 ///   the parts' surface 8192² voxels (the largest document's samples);
