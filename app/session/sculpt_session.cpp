@@ -444,18 +444,22 @@ const core::EditStep* SculptSession::redo() {
 
 std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side) {
   if (touched.empty()) return touched;
+  // A texel's normal reads its neighbours up to kNormalReach texels away (normal_map.glsl's
+  // wide central differences where the four faces around it disagree): grow by that much.
+  constexpr int kNormalReach = 3;
   bool border = false;
   for (core::TexelRect& r : touched) {
-    // A texel's normal reads its neighbours: grow by one.
-    const int x0 = std::max(0, r.x - 1), y0 = std::max(0, r.y - 1);
-    const int x1 = std::min(side, r.x + r.width + 1), y1 = std::min(side, r.y + r.height + 1);
+    const int x0 = std::max(0, r.x - kNormalReach), y0 = std::max(0, r.y - kNormalReach);
+    const int x1 = std::min(side, r.x + r.width + kNormalReach),
+              y1 = std::min(side, r.y + r.height + kNormalReach);
     r = {x0, y0, x1 - x0, y1 - y0};
     border = border || x0 == 0 || y0 == 0 || x1 == side || y1 == side;
   }
+  constexpr int strip = kNormalReach + 1;
   if (border) // neighbours across a seam sit on the opposite border
     for (core::TexelRect r :
-         {core::TexelRect{0, 0, side, 2}, core::TexelRect{0, side - 2, side, 2},
-          core::TexelRect{0, 0, 2, side}, core::TexelRect{side - 2, 0, 2, side}})
+         {core::TexelRect{0, 0, side, strip}, core::TexelRect{0, side - strip, side, strip},
+          core::TexelRect{0, 0, strip, side}, core::TexelRect{side - strip, 0, strip, side}})
       touched.push_back(r);
   return core::mergeRects(touched);
 }

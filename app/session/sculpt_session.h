@@ -261,7 +261,8 @@ private:
   double lastDabMs_ = 0;
 };
 
-/// The texel rectangles whose normals read the touched texels: each grown by one, plus the
+/// The texel rectangles whose normals read the touched texels: each grown by three (the normal
+/// pass's widest reach), plus the
 /// image's borders when one reaches a border (neighbours across a seam sit on the opposite
 /// one). side is N + 1.
 std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side);

@@ -110,8 +110,8 @@ bool Modeller::hasDocument() const {
 
 const core::Document& Modeller::document() const {
   if (!session_.hasDocument()) return *pending_;
-  auto& self = const_cast<Modeller&>(*this);
-  self.strokes_.settle(); // a stroke's relaxation is part of the document
+  // While a stroke's relaxation is solved beside the GUI this is the surface as shown (both only
+  // read it); its step is recorded, and the document written, when it is in.
   if (!session_.gpuDocument().mirrorStale()) return session_.document();
   // Mid-stroke (autosave, save): the session reads the deferred paint back, which is GL work.
   CurrentContext current(*host_, CurrentContext::Mode::IfNotCurrent);

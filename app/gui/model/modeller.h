@@ -51,8 +51,8 @@ public:
   /// documentReplaced(keepView) tells the viewport.
   bool setDocument(core::Document document, bool keepView = false);
   bool hasDocument() const;
-  /// The document as edited so far (the CPU mirror), a stroke's relaxation settled first. Only
-  /// valid if hasDocument().
+  /// The document as edited so far (the CPU mirror): while a stroke's relaxation is being solved,
+  /// the surface as shown, without it. Only valid if hasDocument().
   const core::Document& document() const;
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;

@@ -90,6 +90,8 @@ public:
   /// The model's bounds from the document's tile boxes (xmin, xmax, ymin, …).
   const std::array<double, 6>& updateBounds();
   const std::array<double, 6>& bounds() const;
+  /// The renderer (null before GL started): its normal and stretch maps.
+  const gpu::ModelRenderer* modelRenderer() const { return model_.get(); }
   /// The last drawing error, empty if none.
   QString error() const { return error_; }
 
