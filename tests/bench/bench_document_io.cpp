@@ -103,6 +103,17 @@ double copySeconds(const fs::path& from, const fs::path& to, int repeats) {
   return best;
 }
 
+// The file the reading benchmarks read: the one BM_WriteDocument left, else written now with
+// the benchmark's compression (a filter that runs a read alone).
+const fs::path& fileToRead(const benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  static fs::path path;
+  path = documentPath(n);
+  if (!fs::exists(path))
+    writeDocument(document(n), path, kCompressions.at(static_cast<std::size_t>(state.range(1))));
+  return path;
+}
+
 void report(benchmark::State& state, double best, double baseline, const char* ratioName,
             const fs::path& file) {
   state.counters["best_s"] = best;
@@ -122,6 +133,7 @@ void BM_WriteDocument(benchmark::State& state) {
 // Every layer, as the modeller and `stroke` read (the file BM_WriteDocument left).
 void BM_ReadDocument(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
   const double best = bestSeconds(state, [&] {
     Document read = readDocument(documentPath(n));
     benchmark::DoNotOptimize(read.positions.texels().data());
@@ -132,6 +144,7 @@ void BM_ReadDocument(benchmark::State& state) {
 // Positions only, as `info` reads.
 void BM_ReadPositions(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
   const double best = bestSeconds(state, [&] {
     Document read = readDocument(documentPath(n), {.layers = false});
     benchmark::DoNotOptimize(read.positions.texels().data());
@@ -143,6 +156,7 @@ void BM_ReadPositions(benchmark::State& state) {
 // stretch summary it prints.
 void BM_Info(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
   const double best = bestSeconds(state, [&] {
     const Document read = readDocument(documentPath(n), {.layers = false});
     const DocumentInfo info = describeDocument(read);
