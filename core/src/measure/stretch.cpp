@@ -344,37 +344,29 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   for (double a : rowArea)
     total += a;
   summary.meanSpacing = std::sqrt(total / vertexCount(n));
-  // The spacing of every vertex once (its canonical sample), in any order: only ranks and a
-  // count are taken.
-  std::vector<std::array<int, 3>> runs; // j, iBegin, iEnd
-  forEachCanonicalRun(n, [&](int j, int iBegin, int iEnd) { runs.push_back({j, iBegin, iEnd}); });
-  std::vector<std::size_t> runStart(runs.size() + 1, 0);
-  for (std::size_t r = 0; r < runs.size(); ++r)
-    runStart[r + 1] = runStart[r] + static_cast<std::size_t>(runs[r][2] - runs[r][1]);
-  std::vector<float> spacing(runStart.back());
-  detail::parallelRows(static_cast<int>(runs.size()), [&](int r0, int r1) {
-    for (int r = r0; r < r1; ++r) {
-      const auto [j, iBegin, iEnd] = runs[static_cast<std::size_t>(r)];
-      float* out = spacing.data() + runStart[static_cast<std::size_t>(r)];
-      for (int i = iBegin; i < iEnd; ++i)
-        out[i - iBegin] = std::sqrt(area[texelIndex(n, i, j)]);
-    }
+  // The spacing of every vertex once: its canonical sample's area, the other copies of border
+  // vertices marked -1 (left out of the ranks). A spacing is √area as a float, monotone in the
+  // area, so the median spacing is the square root of the median area.
+  forEachCanonicalRun(n, [&](int j, int iBegin, int iEnd) {
+    for (int i = 0; i < iBegin; ++i)
+      area[texelIndex(n, i, j)] = -1.0f;
+    for (int i = iEnd; i <= n; ++i)
+      area[texelIndex(n, i, j)] = -1.0f;
   });
-  area = {};
-  const detail::FloatRanks spacingRanks = detail::selectFloatRanks(
-      spacing, [](std::size_t count) { return std::vector<std::size_t>{nearestRank(count, 0.5)}; });
-  const double medianSpacing = spacingRanks.count ? double(spacingRanks.at[0]) : 0.0;
+  const detail::FloatRanks areaRanks = detail::selectFloatRanks(
+      area, [](std::size_t count) { return std::vector<std::size_t>{nearestRank(count, 0.5)}; });
+  const double medianSpacing = areaRanks.count ? double(std::sqrt(areaRanks.at[0])) : 0.0;
   std::vector<std::size_t> overPerBand(64, 0);
   const int bands = static_cast<int>(overPerBand.size());
   detail::parallelRows(
       bands,
       [&](int b0, int b1) {
         for (int b = b0; b < b1; ++b) {
-          const std::size_t from = spacing.size() * static_cast<std::size_t>(b) / bands,
-                            to = spacing.size() * static_cast<std::size_t>(b + 1) / bands;
+          const std::size_t from = area.size() * static_cast<std::size_t>(b) / bands,
+                            to = area.size() * static_cast<std::size_t>(b + 1) / bands;
           std::size_t over = 0;
           for (std::size_t k = from; k < to; ++k)
-            over += spacing[k] > 4.0 * medianSpacing ? 1 : 0;
+            over += area[k] >= 0.0f && std::sqrt(area[k]) > 4.0 * medianSpacing ? 1 : 0;
           overPerBand[static_cast<std::size_t>(b)] = over;
         }
       },
@@ -382,7 +374,7 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   std::size_t over = 0;
   for (std::size_t c : overPerBand)
     over += c;
-  summary.shareOver4x = spacing.empty() ? 0.0 : double(over) / double(spacing.size());
+  summary.shareOver4x = areaRanks.count ? double(over) / double(areaRanks.count) : 0.0;
   return summary;
 }
 
