@@ -556,34 +556,39 @@ void DocumentIoTest::failedOverwriteKeepsOldFile() {
   const std::string good = readBytes(p);
   const auto before = listDir(root);
 
-  // Another document, whose file size we measure first.
+  // Another document, whose file size we measure first; written compressed (OpenEXR's frame
+  // buffers) and raw (lines pwritten on every core, raw_exr_lines).
   const Document other = makeDocument(makeBaseShape(BaseShape::Sphere, 64));
-  NO_THROW(writeDocument(other, root / "measure.exr"));
-  const auto otherSize = fs::file_size(root / "measure.exr");
-  fs::remove(root / "measure.exr");
-  QVERIFY(otherSize > 2000);
-
-  // Root ignores permissions, so make the write fail with a file-size limit (EFBIG): once early,
-  // and once only a few bytes short of the full file.
-  rlimit old{};
-  QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
   const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-  for (rlim_t limit : {rlim_t(1024), rlim_t(otherSize / 2), rlim_t(otherSize - 8)}) {
-    rlimit lowered = old;
-    lowered.rlim_cur = limit;
-    QCOMPARE(setrlimit(RLIMIT_FSIZE, &lowered), 0);
-    const QString why = expectError([&] { writeDocument(other, p); }, ErrorKind::Io, "");
-    setrlimit(RLIMIT_FSIZE, &old);
-    const std::string now = readBytes(p);
-    QVERIFY2(why.isEmpty(), qPrintable(QString("limit %1 of %2 bytes: %3; %4 now holds %5 bytes%6")
-                                           .arg(limit)
-                                           .arg(otherSize)
-                                           .arg(why)
-                                           .arg(QString::fromStdString(p.filename().string()))
-                                           .arg(now.size())
-                                           .arg(now == good ? " (unchanged)" : " (replaced)")));
-    QVERIFY2(now == good, qPrintable(QString("limit %1: old file changed").arg(limit)));
-    QVERIFY2(listDir(root) == before, qPrintable(QString("limit %1: temporary left").arg(limit)));
+  for (const DocumentWriteOptions options :
+       {DocumentWriteOptions{}, DocumentWriteOptions{DocumentCompression::None, 1}}) {
+    NO_THROW(writeDocument(other, root / "measure.exr", options));
+    const auto otherSize = fs::file_size(root / "measure.exr");
+    fs::remove(root / "measure.exr");
+    QVERIFY(otherSize > 2000);
+
+    // Root ignores permissions, so make the write fail with a file-size limit (EFBIG): once early,
+    // and once only a few bytes short of the full file.
+    rlimit old{};
+    QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
+    for (rlim_t limit : {rlim_t(1024), rlim_t(otherSize / 2), rlim_t(otherSize - 8)}) {
+      rlimit lowered = old;
+      lowered.rlim_cur = limit;
+      QCOMPARE(setrlimit(RLIMIT_FSIZE, &lowered), 0);
+      const QString why = expectError([&] { writeDocument(other, p, options); }, ErrorKind::Io, "");
+      setrlimit(RLIMIT_FSIZE, &old);
+      const std::string now = readBytes(p);
+      QVERIFY2(why.isEmpty(),
+               qPrintable(QString("limit %1 of %2 bytes: %3; %4 now holds %5 bytes%6")
+                              .arg(limit)
+                              .arg(otherSize)
+                              .arg(why)
+                              .arg(QString::fromStdString(p.filename().string()))
+                              .arg(now.size())
+                              .arg(now == good ? " (unchanged)" : " (replaced)")));
+      QVERIFY2(now == good, qPrintable(QString("limit %1: old file changed").arg(limit)));
+      QVERIFY2(listDir(root) == before, qPrintable(QString("limit %1: temporary left").arg(limit)));
+    }
   }
   std::signal(SIGXFSZ, oldHandler);
   Document kept, replaced;
