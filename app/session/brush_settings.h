@@ -24,6 +24,8 @@ struct BrushSettings {
   unsigned symmetry = 0;   ///< gpu::SymmetryAxis bits
   /// Sculpt strokes relax what they stretched (SculptSession::keepDetail).
   bool keepDetail = true;
+
+  bool operator==(const BrushSettings&) const = default;
 };
 
 } // namespace octaclay::app

@@ -66,6 +66,18 @@ void SculptSession::setDocument(core::Document document,
   stroke_.reset();
   document_ = std::move(uploaded);
   history_.clear();
+  document_->setChangeFollower(follower_);
+  document_->markAllChanged();
+  publish(gpu::ChangeKind::NewDocument);
+}
+
+void SculptSession::setChangeFollower(std::function<void(const gpu::DocumentChange&)> follower) {
+  follower_ = std::move(follower);
+  if (document_) document_->setChangeFollower(follower_);
+}
+
+void SculptSession::publish(gpu::ChangeKind kind) {
+  if (document_) document_->publishChanges(kind);
 }
 
 const core::Document& SculptSession::document() const {
@@ -116,7 +128,15 @@ bool SculptSession::strokeDrags() const {
   return stroke_ && stroke_->stroke->drags();
 }
 
-int SculptSession::moveTo(const StrokeMove& move) {
+int SculptSession::moveTo(const StrokeMove& m) {
+  struct Report { // also when the move throws: a failed dab restored the layers
+    SculptSession& session;
+    ~Report() { session.publish(gpu::ChangeKind::Dabs); }
+  } report{*this};
+  return move(m);
+}
+
+int SculptSession::move(const StrokeMove& move) {
   ActiveStroke& st = *stroke_;
   if (st.failed) return 0;
   const BrushSettings& settings = st.start.settings;
@@ -166,14 +186,14 @@ DabRun SculptSession::runQueuedMoves() {
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (const StrokeMove& move : stroke_->queue)
-      run.made += moveTo(move);
-    run.touched = stroke_->stroke->takeTouched();
+    for (const StrokeMove& m : stroke_->queue)
+      run.made += move(m);
   } catch (const std::exception& e) {
     run.error = e.what();
     stroke_->failed = true;
   }
   stroke_->queue.clear();
+  publish(run.error.empty() ? gpu::ChangeKind::Dabs : gpu::ChangeKind::Applied);
   if (run.made > 0)
     lastDabMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                      .count() /
@@ -191,29 +211,81 @@ void SculptSession::observeDabs(std::function<void(int)> observer) {
   stroke_->progress = std::move(observer);
 }
 
-StrokeEnd SculptSession::finishStroke() {
+// What a stroke's end carries from its dabs to its record: the relaxation's inputs and result.
+struct StrokeEnding::Parts {
+  std::unique_ptr<SculptSession::ActiveStroke> stroke;
+  const core::Document* mirror = nullptr; // the session's CPU mirror, read by relax()
+  core::EditStep record;                  // the stroke's, before the relaxation
   StrokeEnd end;
-  if (!stroke_) return end;
-  const std::unique_ptr<ActiveStroke> ending = std::move(stroke_); // over even if finish throws
-  const std::string label = ending->start.brushId;
-  end.dabs = ending->stroke->dabs();
-  end.engineMs = ending->stroke->engineMs();
-  lastRelaxation_ = {};
-  core::EditStep record = ending->stroke->finish(label);
-  if (end.dabs > 0 && !record.tiles.empty()) {
-    const auto start = std::chrono::steady_clock::now();
-    ending->keep.pinnedPath.clear();
-    for (const auto& uv : {ending->first, ending->last})
-      if (uv) ending->keep.pinnedPath.push_back(*uv);
-    record = keepDetailAfter(std::move(record), ending->manifest, ending->reach, ending->keep);
-    end.engineMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  core::EditStep relaxation; // relax()'s result (no tiles: none)
+};
+
+StrokeEnding::StrokeEnding(std::unique_ptr<Parts> parts) : parts_(std::move(parts)) {}
+StrokeEnding::~StrokeEnding() = default;
+
+StrokeEnd SculptSession::finishStroke() {
+  std::unique_ptr<StrokeEnding> ending = concludeStroke();
+  if (!ending) return {};
+  ending->relax();
+  return commitStroke(std::move(ending));
+}
+
+std::unique_ptr<StrokeEnding> SculptSession::concludeStroke() {
+  if (!stroke_) return nullptr;
+  auto parts = std::make_unique<StrokeEnding::Parts>();
+  parts->stroke = std::move(stroke_); // over even if finish throws
+  struct Report { // finish restores the layers when it refuses a non-finite result
+    SculptSession& session;
+    ~Report() { session.publish(gpu::ChangeKind::StrokeEnd); }
+  } report{*this};
+  ActiveStroke& st = *parts->stroke;
+  parts->end.dabs = st.stroke->dabs();
+  parts->end.engineMs = st.stroke->engineMs();
+  lastRelaxation_ = std::move(st.keep.relaxations);
+  parts->record = st.stroke->finish(st.start.brushId);
+  parts->mirror = &document_->document();
+  st.keep.pinnedPath.clear();
+  for (const auto& uv : {st.first, st.last})
+    if (uv) st.keep.pinnedPath.push_back(*uv);
+  auto ending = std::unique_ptr<StrokeEnding>(new StrokeEnding(std::move(parts)));
+  ending->relaxes_ = st.start.settings.keepDetail &&
+                     st.manifest.category == gpu::Category::Sculpt &&
+                     ending->parts_->end.dabs > 0 && !ending->parts_->record.tiles.empty();
+  return ending;
+}
+
+void StrokeEnding::relax() {
+  if (!relaxes_ || solved_) return;
+  solved_ = true;
+  const auto start = std::chrono::steady_clock::now();
+  SculptSession::ActiveStroke& st = *parts_->stroke;
+  parts_->relaxation = SculptSession::relaxAfterStroke(*parts_->mirror, parts_->record, st);
+  parts_->end.engineMs +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+StrokeEnd SculptSession::commitStroke(std::unique_ptr<StrokeEnding> ending) {
+  if (!ending) return {};
+  StrokeEnding::Parts& parts = *ending->parts_;
+  core::EditStep record = std::move(parts.record);
+  if (!parts.relaxation.tiles.empty()) {
+    const core::TileApplier apply = gpu::undoApplier(*document_);
+    for (const core::TileChange& t : parts.relaxation.tiles)
+      t.apply(core::TileState::After, apply);
+    const core::Document& mirror = document_->document();
+    lastRelaxation_ =
+        lastRelaxation_.tiles.empty()
+            ? parts.relaxation
+            : core::combineSteps(lastRelaxation_, parts.relaxation, mirror, record.label);
+    record = core::combineSteps(record, parts.relaxation, mirror, record.label);
+    publish(gpu::ChangeKind::StrokeEnd);
   }
+  StrokeEnd end = parts.end;
   end.changedTiles = record.tiles.size();
   end.stepBytes = record.computeBytes();
   if (end.dabs == 0 || record.tiles.empty()) return end;
+  end.label = record.label;
   history_.record(std::move(record));
-  end.label = label;
   return end;
 }
 
@@ -229,6 +301,7 @@ void SculptSession::abandonStroke() {
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (auto t = record.tiles.rbegin(); t != record.tiles.rend(); ++t)
     t->apply(core::TileState::Before, apply);
+  publish(gpu::ChangeKind::Applied);
 }
 
 namespace {
@@ -329,28 +402,13 @@ void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& str
                         : core::combineSteps(run.relaxations, step, document, brush.id);
 }
 
-core::EditStep SculptSession::keepDetailAfter(core::EditStep record,
-                                              const gpu::BrushManifest& brush, float radius,
-                                              KeepDetailRun& run) {
-  lastRelaxation_ = std::move(run.relaxations);
-  if (!keepDetail_ || brush.category != gpu::Category::Sculpt || record.tiles.empty())
-    return record;
-  const int n = document_->size();
-  if (!addDabChanges(run.dabChanged, run.relaxed, record, document_->document().positions))
-    return record;
-  const core::EditStep step =
-      core::relaxChangedStep(document_->document(), run.dabChanged,
-                             core::keepDetailMargin(document_->document().positions, radius),
-                             record.label, pinOptions(run.pinnedPath, n));
-  if (step.tiles.empty()) return record;
-  const core::TileApplier apply = gpu::undoApplier(*document_);
-  for (const core::TileChange& t : step.tiles)
-    t.apply(core::TileState::After, apply);
-  lastRelaxation_ =
-      lastRelaxation_.tiles.empty()
-          ? step
-          : core::combineSteps(lastRelaxation_, step, document_->document(), record.label);
-  return core::combineSteps(record, step, document_->document(), record.label);
+core::EditStep SculptSession::relaxAfterStroke(const core::Document& mirror,
+                                               const core::EditStep& record, ActiveStroke& st) {
+  KeepDetailRun& run = st.keep;
+  if (!addDabChanges(run.dabChanged, run.relaxed, record, mirror.positions)) return {};
+  return core::relaxChangedStep(mirror, run.dabChanged,
+                                core::keepDetailMargin(mirror.positions, st.reach), record.label,
+                                pinOptions(run.pinnedPath, mirror.size()));
 }
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,
@@ -362,16 +420,25 @@ std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& af
     t.apply(core::TileState::After, apply);
   std::vector<core::TexelRect> rects = changedRects(change);
   history_.record(std::move(change));
+  publish(gpu::ChangeKind::Applied);
   return rects;
 }
 
 const core::EditStep* SculptSession::undo() {
   if (!document_ || stroke_ || !history_.canUndo()) return nullptr;
+  struct Report {
+    SculptSession& session;
+    ~Report() { session.publish(gpu::ChangeKind::Undo); }
+  } report{*this};
   return history_.undo(gpu::undoApplier(*document_));
 }
 
 const core::EditStep* SculptSession::redo() {
   if (!document_ || stroke_ || !history_.canRedo()) return nullptr;
+  struct Report {
+    SculptSession& session;
+    ~Report() { session.publish(gpu::ChangeKind::Redo); }
+  } report{*this};
   return history_.redo(gpu::undoApplier(*document_));
 }
 

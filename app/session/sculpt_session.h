@@ -7,6 +7,7 @@
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/core/document/edit_layer.h"
 #include "octaclay/core/geometry/texel_rect.h"
+#include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/stroke.h"
 
 #include <functional>
@@ -19,7 +20,6 @@
 namespace octaclay::gpu {
 class BrushCatalog;
 class BrushEngine;
-class GpuDocument;
 } // namespace octaclay::gpu
 
 namespace octaclay::app {
@@ -71,9 +71,8 @@ struct StrokeMove {
 
 /// What one run of the queued moves did.
 struct DabRun {
-  int made = 0;                         ///< dabs, mirrored ones included
-  std::vector<core::TexelRect> touched; ///< texels the dabs ran over (empty after an error)
-  std::string error;                    ///< why a dab failed; empty if none did
+  int made = 0;      ///< dabs, mirrored ones included
+  std::string error; ///< why a dab failed; empty if none did
 };
 
 /// How a stroke ended (SculptSession::finishStroke).
@@ -83,6 +82,27 @@ struct StrokeEnd {
   double engineMs = 0;          ///< the brush engine's time and keep detail's, file I/O excluded
   std::size_t changedTiles = 0; ///< tiles of the step (the stroke and its relaxation)
   std::size_t stepBytes = 0;    ///< memory the step holds (core::EditStep::computeBytes)
+};
+
+class SculptSession;
+
+/// A stroke whose dabs are done and whose keep-detail relaxation is not yet solved
+/// (SculptSession::concludeStroke).
+class StrokeEnding {
+public:
+  ~StrokeEnding();
+  /// Whether relax() has work to do (keep detail on, a sculpt brush that changed positions).
+  bool needsRelaxation() const { return relaxes_; }
+  /// Solves keep detail's relaxation over the session's CPU mirror: no GL, no session state, so
+  /// any thread may run it while nothing writes the document.
+  void relax();
+
+private:
+  friend class SculptSession;
+  struct Parts;
+  explicit StrokeEnding(std::unique_ptr<Parts> parts);
+  std::unique_ptr<Parts> parts_;
+  bool relaxes_ = false, solved_ = false;
 };
 
 /// One sculpting session, without widgets: the document on the GPU, the brushes it is edited
@@ -162,6 +182,14 @@ public:
   /// made no dab or changed nothing. When the result holds a non-finite value the layers are
   /// restored, nothing is recorded, the stroke is over and core::Error(InvalidInput) says where.
   StrokeEnd finishStroke();
+  /// finishStroke() in three steps, so that keep detail's relaxation (CPU work, ~0.5 s at
+  /// N = 1024) can run beside the GUI: concludeStroke ends the dabs (GL current; null without a
+  /// stroke), StrokeEnding::relax solves the relaxation (any thread, no GL; reads the CPU mirror,
+  /// which nothing may write meanwhile), commitStroke applies it and records the step (GL
+  /// current). finishStroke() is the three in a row, so both give the same document bit for bit.
+  /// concludeStroke and commitStroke throw as finishStroke does.
+  std::unique_ptr<StrokeEnding> concludeStroke();
+  StrokeEnd commitStroke(std::unique_ptr<StrokeEnding> ending);
   /// Ends the stroke without recording it, the layers back as before it (a script refused
   /// part-way). Nothing happens without a stroke.
   void abandonStroke();
@@ -191,10 +219,17 @@ public:
   const core::EditStep* undo();
   const core::EditStep* redo();
 
+  /// The one follower of the document's changes (gpu::GpuDocument::setChangeFollower), kept
+  /// across documents. The session reports after each of its calls that changed something:
+  /// runQueuedMoves and moveTo (Dabs), finishStroke / commitStroke (StrokeEnd), abandonStroke
+  /// and a failed run (Applied), undo / redo, applyChange (Applied), setDocument (NewDocument).
+  void setChangeFollower(std::function<void(const gpu::DocumentChange&)> follower);
+
   long long dabs() const { return dabCount_; }    ///< made since the session began
   double lastDabMs() const { return lastDabMs_; } ///< per dab, over the last run that dabbed
 
 private:
+  friend class StrokeEnding;
   struct ActiveStroke;
   struct KeepDetailRun;
 
@@ -204,11 +239,16 @@ private:
   /// so that it stays one undo step. Both doors reach it: beginStroke observes every dab.
   void relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
                         const gpu::BrushManifest& brush, float radius, int dabs);
-  /// The stroke's record, with the keep-detail relaxation applied and folded into it when on.
-  // radius: the largest radius the stroke's dabs used (object units), which sets the margin.
-  core::EditStep keepDetailAfter(core::EditStep record, const gpu::BrushManifest& brush,
-                                 float radius, KeepDetailRun& run);
+  /// Keep detail's relaxation after the stroke whose record (positions as the dabs left them in
+  /// mirror) is given: no GL, no session state (StrokeEnding::relax).
+  static core::EditStep relaxAfterStroke(const core::Document& mirror, const core::EditStep& record,
+                                         ActiveStroke& stroke);
 
+  /// moveTo without reporting the change (runQueuedMoves reports once for its run).
+  int move(const StrokeMove& move);
+  void publish(gpu::ChangeKind kind);
+
+  std::function<void(const gpu::DocumentChange&)> follower_;
   bool keepDetail_ = true;
   core::EditStep lastRelaxation_;
   gpu::BrushEngine* engine_ = nullptr;

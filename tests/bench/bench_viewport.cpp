@@ -6,6 +6,7 @@
 // frame is a synchronous paint of the widget followed by glFinish, so the GL work (llvmpipe
 // without a GPU) is counted. Needs an X display with GLX (scripts/bench runs it under Xvfb).
 #include "model_prop.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document.h"
@@ -86,7 +87,7 @@ void frame(app::ViewportWidget& widget) {
 }
 
 void load(app::ViewportWidget& widget, const core::GeometryImage& image, int divisor) {
-  if (!widget.setDocument(core::makeDocument(image)))
+  if (!widget.modeller().setDocument(core::makeDocument(image)))
     fail("setDocument failed: " + widget.error().toStdString());
   widget.setLevelDivisor(divisor);
   QCoreApplication::processEvents();
@@ -149,7 +150,7 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
     frame(widget);
   }
   widget.endStroke();
-  if (!widget.undoStroke()) fail("the warm-up stroke left nothing to undo");
+  if (!widget.modeller().undoStroke()) fail("the warm-up stroke left nothing to undo");
   frame(widget);
 
   // The timed stroke. Between frames, off the clock, the dabs are counted by replaying the
@@ -157,12 +158,13 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
   // no dab count): walk the straight (u, v) segment from the previous point over the surface as
   // the stroke began (the sphere: the warm-up was undone), one dab per spacing x radius, the
   // remainder carried, the radius a fraction of the bounding box when the stroke began.
-  const float spacingFraction = gpu::dabSpacing(*widget.library()->catalog().find("push"), 0);
+  const float spacingFraction =
+      gpu::dabSpacing(*widget.modeller().library()->catalog().find("push"), 0);
   const auto radius = [&] {
     core::BoundingBox box;
-    for (const core::Vec4f& texel : widget.document().positions.texels())
+    for (const core::Vec4f& texel : widget.modeller().document().positions.texels())
       box.extend(texel.xyz());
-    return widget.brushSettings().radius * box.diagonal();
+    return widget.modeller().brushState().settings().radius * box.diagonal();
   };
   const double spacing = double(spacingFraction * radius());
   const auto startAt = [&](double u, double v) {
@@ -214,9 +216,9 @@ StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
   checkShownTriangles(widget);
 
   // The stroke must have changed the model; no texel moves more than strength x radius a dab.
-  const core::EditStep* record = widget.history().nextUndo();
+  const core::EditStep* record = widget.modeller().history().nextUndo();
   f.recordTexels = record ? record->changedTexels : 0;
-  const core::GeometryImage& now = widget.document().positions;
+  const core::GeometryImage& now = widget.modeller().document().positions;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const float move = core::length(now.at(i, j).xyz() - start.at(i, j).xyz());
@@ -314,7 +316,8 @@ int main(int argc, char** argv) {
   QApplication application(argc, argv);
   const auto total = Clock::now();
 
-  app::ViewportWidget widget;
+  app::Modeller modeller;
+  app::ViewportWidget widget(modeller);
   QObject::connect(&widget, &app::ViewportWidget::frameSwapped, [] { ++swaps; });
   widget.resize(kWidth, kHeight);
   widget.show();
@@ -325,7 +328,7 @@ int main(int argc, char** argv) {
     fail("the viewport is " + std::to_string(widget.width()) + " x " +
          std::to_string(widget.height()) + ", not 1280 x 800 (screen too small?)");
   const gpu::BrushManifest* push =
-      widget.library() ? widget.library()->catalog().find("push") : nullptr;
+      widget.modeller().library() ? widget.modeller().library()->catalog().find("push") : nullptr;
   if (!push) fail("the push brush is not in the library");
 
   // Diagnosis only: OCTACLAY_BENCH_MULTISAMPLES=0 measures the viewport without VTK's MSAA.
@@ -337,7 +340,7 @@ int main(int argc, char** argv) {
   settings.strength = 0.3f;
   settings.area = push->area; // as the Brushes panel starts them: the manifest's
   settings.falloff = push->falloff;
-  widget.setBrushSettings(settings);
+  widget.modeller().brushState().setSettings(settings);
 
   widget.makeCurrent();
   const auto* glRenderer =
@@ -403,14 +406,14 @@ int main(int argc, char** argv) {
   checkDrawn(widget, "(c) our level-256 model");
   row("(c) ours, N=1024 at level 256 (/4)", ours, widget.stats().displayedTriangles);
 
-  const core::TriangleMesh full = core::extractMesh(widget.document().positions, 1);
+  const core::TriangleMesh full = core::extractMesh(widget.modeller().document().positions, 1);
   const DrawFigures vtkFull = vtkCase(widget, full, true, "(d) VTK full resolution");
   row("(d) VTK polydata, N=1024 full res, vtkPolyDataNormals on", vtkFull,
       static_cast<long long>(full.triangles.size()));
   const DrawFigures vtkFullFlat = vtkCase(widget, full, false, "(d') VTK full, no normals");
   row("(d') VTK polydata, N=1024 full res, normals off", vtkFullFlat,
       static_cast<long long>(full.triangles.size()));
-  const core::TriangleMesh level = core::extractMesh(widget.document().positions, 4);
+  const core::TriangleMesh level = core::extractMesh(widget.modeller().document().positions, 4);
   const DrawFigures vtkLevel = vtkCase(widget, level, true, "(e) VTK level 256");
   row("(e) VTK polydata, level-256 mesh, vtkPolyDataNormals on", vtkLevel,
       static_cast<long long>(level.triangles.size()));

@@ -23,6 +23,7 @@ private slots:
   void initTestCase();
   void newAndInfo_data();
   void newAndInfo();
+  void newCapsuleOfAGivenShape();
   void humanOutput();
   void exportAndCompare();
   void lodExports();
@@ -53,7 +54,7 @@ QString CliTest::makeDoc(const QString& shape, int n) {
 
 void CliTest::newAndInfo_data() {
   QTest::addColumn<QString>("shape");
-  for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+  for (const char* s : {"sphere", "cube", "cylinder", "blob", "capsule"})
     QTest::newRow(s) << QString(s);
 }
 
@@ -82,8 +83,11 @@ void CliTest::newAndInfo() {
   for (int k = 0; k < 3; ++k) {
     const double lo = min[k].toDouble(NAN), hi = max[k].toDouble(NAN);
     QVERIFY(lo >= -1.0001 && hi <= 1.0001 && lo < hi);
-    if (shape != "blob") { // analytic extent ±1, reached by the axis samples
-      QVERIFY2(std::abs(lo + 1) < 1e-5 && std::abs(hi - 1) < 1e-5, qPrintable(QString::number(lo)));
+    // Analytic extent ±1 (the capsule's ±0.5 across, ±1 along z), reached by the axis samples.
+    const double extent = shape == "capsule" && k < 2 ? 0.5 : 1.0;
+    if (shape != "blob") {
+      QVERIFY2(std::abs(lo + extent) < 1e-5 && std::abs(hi - extent) < 1e-5,
+               qPrintable(QString::number(lo)));
     }
     squared += (hi - lo) * (hi - lo);
   }
@@ -113,6 +117,22 @@ void CliTest::newAndInfo() {
     QVERIFY2(std::abs(longest - 1.3) < 0.1, qPrintable(QString::number(longest)));
     QVERIFY(std::abs(stretch["mean_spacing"].toDouble() - std::sqrt(4 * M_PI / 4098)) < 1e-3);
   }
+}
+
+void CliTest::newCapsuleOfAGivenShape() {
+  // A limb: radius 0.2, a cylinder 2 long, so 2.4 along z and 0.4 across.
+  const QString doc = file("limb.exr");
+  RUN_JSON(created, "new", "--shape", "capsule", "--radius", "0.2", "--length", "2", "--size", "64",
+           "-o", doc, "--json");
+  RUN_JSON(info, "info", doc, "--json");
+  QCOMPARE(info["euler"].toDouble(), 2.0);
+  const QJsonObject bbox = info["bbox"].toObject();
+  const QJsonArray min = bbox["min"].toArray(), max = bbox["max"].toArray();
+  const double half[3] = {0.2, 0.2, 1.2};
+  for (int k = 0; k < 3; ++k)
+    QVERIFY2(std::abs(min[k].toDouble() + half[k]) < 1e-5 &&
+                 std::abs(max[k].toDouble() - half[k]) < 1e-5,
+             qPrintable(QJsonDocument(bbox).toJson()));
 }
 
 void CliTest::humanOutput() {
@@ -180,6 +200,10 @@ void CliTest::badArguments() {
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16384", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "sixteen", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16");
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--radius", "0.2", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--radius", "0", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--radius", "nan", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "capsule", "--length", "-1", "-o", out);
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "12");
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "32");
   EXPECT_FAILURE(kUsage, mesh, "export", doc, "-o", mesh, "--lod", "1");

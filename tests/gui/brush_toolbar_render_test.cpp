@@ -11,6 +11,7 @@
 #include "canvas_brush_adjust.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -43,7 +44,7 @@ using app::MainWindow;
 namespace {
 
 std::vector<core::Vec3f> positionsOf(const MainWindow& w) {
-  const core::GeometryImage& image = w.viewport()->document().positions;
+  const core::GeometryImage& image = w.viewport()->modeller().document().positions;
   std::vector<core::Vec3f> out;
   for (int j = 0; j <= image.size(); ++j)
     for (int i = 0; i <= image.size(); ++i)
@@ -88,7 +89,7 @@ double ringPixels(const app::ViewportWidget& view, core::Vec3f p, float r) {
   const core::Vec3f right =
       core::normalize(core::cross(core::Vec3f{float(d[0]), float(d[1]), float(d[2])},
                                   core::Vec3f{float(up[0]), float(up[1]), float(up[2])}));
-  const QPointF a = view.project(p), b = view.project(p + right * (r * view.modelDiagonal()));
+  const QPointF a = view.project(p), b = view.project(p + right * (r * view.modeller().modelDiagonal()));
   return std::hypot(b.x() - a.x(), b.y() - a.y());
 }
 
@@ -173,11 +174,11 @@ void BrushToolBarRenderTest::freshWindowIsOneClickAndOneDragFromAChangedSurface(
   QCOMPARE(window_->brushPanel()->currentBrushId(), QStringLiteral("inflate"));
   const QPoint centre(view->width() / 2, view->height() / 2);
   drag(view, centre - QPoint(60, 0), centre + QPoint(60, 0));
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
 
   // The surface swelled where the drag went, visibly but like clay: the largest move is a tenth
   // to a half of the default radius (a horn or a trench would be more).
-  const float radius = window_->brushPanel()->radius() * view->modelDiagonal();
+  const float radius = window_->brushPanel()->radius() * view->modeller().modelDiagonal();
   const float moved = largestMove(before, positionsOf(*window_));
   qInfo("first stroke: largest move %.4f, %.2f of the radius", double(moved),
         double(moved / radius));
@@ -201,7 +202,7 @@ void BrushToolBarRenderTest::eachIconSelectsItsBrushAndFollowsTheDock() {
     QTest::mouseClick(button, Qt::LeftButton);
     QCOMPARE(window_->brushPanel()->currentBrushId(), id);
     QCOMPARE(treeCurrentId(*window_), id);
-    QCOMPARE(QString::fromStdString(window_->viewport()->brushSettings().brushId), id);
+    QCOMPARE(QString::fromStdString(window_->viewport()->modeller().brushState().settings().brushId), id);
     QVERIFY(action->isChecked());
     // The tooltip names the brush and its shortcut.
     const QKeySequence key = app::brushShortcut(id);
@@ -271,14 +272,14 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
       std::abs(ringPixels(*view, hit->position, r1) - (ring0 + 40)) < 1.0,
       qPrintable(
           QString("ring %1 px -> %2 px").arg(ring0).arg(ringPixels(*view, hit->position, r1))));
-  QCOMPARE(view->brushSettings().radius, r1); // the ring is drawn with it already
+  QCOMPARE(view->modeller().brushState().settings().radius, r1); // the ring is drawn with it already
   QCOMPARE(slider->value(), app::BrushHeader::radiusToPosition(r1));
   // Esc puts it back exactly; nothing was sculpted.
   QTest::keyClick(view, Qt::Key_Escape);
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
   QCOMPARE(panel->radius(), r0);
-  QCOMPARE(view->brushSettings().radius, r0);
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QCOMPARE(view->modeller().brushState().settings().radius, r0);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
 
   // Leftwards shrinks it; a click sets it, and the click sculpts nothing.
   pointAt(view, centre); // F starts from where the pointer is
@@ -292,10 +293,10 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   QTest::mouseClick(view, Qt::LeftButton, {}, centre - QPoint(shrink, 0));
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
   QCOMPARE(panel->radius(), r2);
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   // The next press sculpts again.
   drag(view, centre, centre + QPoint(30, 0));
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   // F during a stroke does nothing: the stroke goes on and ends as usual.
   pointAt(view, centre);
   QTest::mousePress(view, Qt::LeftButton, {}, centre);
@@ -304,7 +305,7 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
   QTest::mouseMove(view, centre + QPoint(20, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, centre + QPoint(20, 0));
-  QCOMPARE(window_->undoStack()->count(), 2);
+  QTRY_COMPARE(window_->undoStack()->count(), 2);
   QCOMPARE(panel->radius(), r2);
 }
 
@@ -327,7 +328,7 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   const float expected = s0 - float(60 / CanvasBrushAdjust::kPixelsPerStrength);
   QVERIFY2(std::abs(panel->strength() - expected) < 1e-4f,
            qPrintable(QString("%1 vs %2").arg(panel->strength()).arg(expected)));
-  QCOMPARE(view->brushSettings().strength, panel->strength());
+  QCOMPARE(view->modeller().brushState().settings().strength, panel->strength());
   QCOMPARE(slider->value(), int(std::lround(expected * 100)));
   // A right click cancels: the strength comes back and the camera did not orbit.
   double eye[3];
@@ -391,7 +392,7 @@ void BrushToolBarRenderTest::defaultStrengthPullLeavesNoCrossingTriangle() {
   app::ViewportWidget* view = window_->viewport();
   auto* bar = window_->findChild<BrushToolBar*>(QStringLiteral("BrushToolBar"));
   QTest::mouseClick(bar->widgetForAction(bar->brushAction(QStringLiteral("push"))), Qt::LeftButton);
-  const core::GeometryImage start0 = view->document().positions;
+  const core::GeometryImage start0 = view->modeller().document().positions;
   const core::TriangleMesh start = core::extractMesh(start0);
   QCOMPARE(testing::selfIntersections(start, std::vector<bool>(start.positions.size(), true)), 0);
   // The newcomer's stroke: Ctrl and a drag across the model, back and forth over the trench.
@@ -403,16 +404,16 @@ void BrushToolBarRenderTest::defaultStrengthPullLeavesNoCrossingTriangle() {
     for (int k = 1; k <= 16; ++k)
       QTest::mouseMove(view, pass % 2 == 0 ? a + (b - a) * k / 16 : b + (a - b) * k / 16);
   QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, a);
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   for (const int step : {1, 4}) { // the full resolution and N/4, the level shown at N = 1024
     const core::TriangleMesh before = core::extractMesh(start0, step);
-    const core::TriangleMesh pulled = core::extractMesh(view->document().positions, step);
+    const core::TriangleMesh pulled = core::extractMesh(view->modeller().document().positions, step);
     const std::vector<bool> changed = testing::changedVertices(before, pulled);
     const auto count = std::count(changed.begin(), changed.end(), true);
     QVERIFY2(count > 100, qPrintable(QString::number(count)));
     qInfo("pull, level N/%d: %lld samples moved, deepest %.4f (radius %.4f)", step,
           static_cast<long long>(count), double(largestMove(before.positions, pulled.positions)),
-          double(window_->brushPanel()->radius() * view->modelDiagonal()));
+          double(window_->brushPanel()->radius() * view->modeller().modelDiagonal()));
     QCOMPARE(testing::selfIntersections(pulled, changed), 0);
   }
 }

@@ -6,6 +6,7 @@
 #include "limb_document.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -93,7 +94,7 @@ std::unique_ptr<MainWindow> EvenOutRenderTest::makeWindow() {
 }
 
 bool EvenOutRenderTest::openLimb(MainWindow& w) {
-  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->document().size() == 256;
+  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->modeller().document().size() == 256;
 }
 
 void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
@@ -111,30 +112,30 @@ void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
 
   QVERIFY(openLimb(*window_));
   QVERIFY(evenOut->isEnabled());
-  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
-  const double ratioBefore = longestOverMedian(window_->viewport()->document().positions);
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
+  const double ratioBefore = longestOverMedian(window_->viewport()->modeller().document().positions);
   QVERIFY2(ratioBefore > 8, qPrintable(QString::number(ratioBefore)));
   QVERIFY(!window_->isModified());
 
   evenOut->trigger(); // runs to the end: the task's event loop waits for it
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   QCOMPARE(window_->undoStack()->undoText(), QString("Even Out Samples"));
   QVERIFY(window_->isModified());
   QVERIFY(evenOut->isEnabled());
-  const std::vector<unsigned char> after = bitsOf(window_->viewport()->document());
-  const double ratioAfter = longestOverMedian(window_->viewport()->document().positions);
+  const std::vector<unsigned char> after = bitsOf(window_->viewport()->modeller().document());
+  const double ratioAfter = longestOverMedian(window_->viewport()->modeller().document().positions);
   qInfo("longest ÷ median grid edge %.1f -> %.1f", ratioBefore, ratioAfter);
   QVERIFY2(ratioAfter < ratioBefore / 2, qPrintable(QString::number(ratioAfter)));
   // The window draws the new surface (normals refreshed around what changed, no GL error).
   QVERIFY(window_->viewport()->error().isEmpty());
 
   window_->action("actionUndo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == before);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
   QVERIFY(!window_->isModified());
   window_->action("actionRedo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == after);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == after);
   QVERIFY(window_->isModified());
-  QCOMPARE(window_->viewport()->history().undoCount(), std::size_t(1));
+  QCOMPARE(window_->viewport()->modeller().history().undoCount(), std::size_t(1));
 }
 
 void EvenOutRenderTest::cancelledEvenOutChangesNothing() {
@@ -144,16 +145,16 @@ void EvenOutRenderTest::cancelledEvenOutChangesNothing() {
   // Twice: on the document as opened (unmodified, no history), and after one even-out
   // (modified, one step).
   for (int round = 0; round < 2; ++round) {
-    const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+    const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
     const int steps = window_->undoStack()->count();
-    const std::size_t undoable = window_->viewport()->history().undoCount();
+    const std::size_t undoable = window_->viewport()->modeller().history().undoCount();
     const bool modified = window_->isModified();
     auto control = std::make_shared<app::TaskControl>();
     control->cancel = true; // as if Cancel were pressed at once
     QVERIFY(!window_->evenOutSamples(control));
-    QVERIFY(bitsOf(window_->viewport()->document()) == before);
-    QCOMPARE(window_->undoStack()->count(), steps);
-    QCOMPARE(window_->viewport()->history().undoCount(), undoable);
+    QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
+    QTRY_COMPARE(window_->undoStack()->count(), steps);
+    QCOMPARE(window_->viewport()->modeller().history().undoCount(), undoable);
     QCOMPARE(window_->isModified(), modified);
     QCOMPARE(window_->statusBar()->currentMessage(), QString("Even out cancelled"));
     QVERIFY(window_->action("actionEvenOutSamples")->isEnabled());
@@ -177,11 +178,11 @@ void EvenOutRenderTest::keepDetailBoxReachesTheSessionForTheNextStroke() {
     box->setChecked(on);
     QTest::mousePress(view, Qt::LeftButton, {}, centre.toPoint());
     QTest::mouseMove(view, (centre + QPointF(20, 0)).toPoint());
-    QCOMPARE(view->keepsDetail(), on); // set as the stroke began
+    QCOMPARE(view->modeller().keepsDetail(), on); // set as the stroke began
     QTest::mouseRelease(view, Qt::LeftButton, {}, (centre + QPointF(20, 0)).toPoint());
-    QCOMPARE(view->keepsDetail(), on);
+    QCOMPARE(view->modeller().keepsDetail(), on);
   }
-  QCOMPARE(window_->undoStack()->count(), 3);
+  QTRY_COMPARE(window_->undoStack()->count(), 3);
 }
 
 void EvenOutRenderTest::evenOutThatWouldHurtLeavesTheModelAndSaysWhy() {
@@ -189,11 +190,11 @@ void EvenOutRenderTest::evenOutThatWouldHurtLeavesTheModelAndSaysWhy() {
   QVERIFY(window_);
   // At N = 64 the limb's even-out would move the surface past its tolerance (issue 30): the
   // window keeps the model, pushes no step and says why.
-  QVERIFY(window_->viewport()->setDocument(limbDocument(64)));
-  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  QVERIFY(window_->viewport()->modeller().setDocument(limbDocument(64)));
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
   window_->action("actionEvenOutSamples")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == before);
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   QVERIFY(!window_->isModified());
   const QString said = window_->statusBar()->currentMessage();
   QVERIFY2(said.startsWith("Even Out left the model unchanged: ") && said.contains("%"),
@@ -207,11 +208,11 @@ void EvenOutRenderTest::failedEvenOutSaysWhyAndChangesNothing() {
   // directly is not checked, and the even-out refuses it.
   core::Document broken = limbDocument(64);
   broken.positions.at(10, 20).x = std::nanf("");
-  QVERIFY(window_->viewport()->setDocument(std::move(broken)));
-  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  QVERIFY(window_->viewport()->modeller().setDocument(std::move(broken)));
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
   QVERIFY(!window_->evenOutSamples());
-  QVERIFY(bitsOf(window_->viewport()->document()) == before);
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   QVERIFY(!window_->isModified());
   QMessageBox* box = nullptr;
   QVERIFY(QTest::qWaitFor([&] {

@@ -177,20 +177,20 @@ void HelpRenderTest::redoKeysRedoAndSaveAsKeyAsks() {
   QVERIFY(activate(*window_));
   const std::vector<float> before = positionsOf(*window_);
   app::testing::pushStrokeAcross(*window_, 0);
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   const std::vector<float> after = positionsOf(*window_);
   QVERIFY(!bitEqual(before, after));
 
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
   QVERIFY(bitEqual(positionsOf(*window_), before));
-  QCOMPARE(window_->undoStack()->index(), 0);
+  QTRY_COMPARE(window_->undoStack()->index(), 0);
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
-  QCOMPARE(window_->undoStack()->index(), 1);
+  QTRY_COMPARE(window_->undoStack()->index(), 1);
   QVERIFY(bitEqual(positionsOf(*window_), after));
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
-  QCOMPARE(window_->undoStack()->index(), 0);
+  QTRY_COMPARE(window_->undoStack()->index(), 0);
   QTest::keyClick(window_.get(), Qt::Key_Y, Qt::ControlModifier);
-  QCOMPARE(window_->undoStack()->index(), 1);
+  QTRY_COMPARE(window_->undoStack()->index(), 1);
   QVERIFY(bitEqual(positionsOf(*window_), after));
   for (const QString& w : warnings_)
     QVERIFY2(!w.contains("Ambiguous"), qPrintable(w));
@@ -298,7 +298,7 @@ void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {
     app::testing::pushStrokeAcross(*window_, dy);
     states.push_back(positionsOf(*window_));
   }
-  QCOMPARE(window_->undoStack()->count(), 3);
+  QTRY_COMPARE(window_->undoStack()->count(), 3);
   window_->action("actionHistory")->trigger();
   auto* history = window_->findChild<app::HistoryDialog*>();
   QVERIFY(history);
@@ -312,17 +312,17 @@ void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {
   // A click on the first stroke undoes the two after it, bit-exactly.
   const QRect first = view->visualRect(view->model()->index(1, 0));
   QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, first.center());
-  QCOMPARE(window_->undoStack()->index(), 1);
+  QTRY_COMPARE(window_->undoStack()->index(), 1);
   QVERIFY(bitEqual(positionsOf(*window_), states[1]));
   // A click on the row above the strokes goes back to the model as it was made.
   QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
                     view->visualRect(view->model()->index(0, 0)).center());
-  QCOMPARE(window_->undoStack()->index(), 0);
+  QTRY_COMPARE(window_->undoStack()->index(), 0);
   QVERIFY(bitEqual(positionsOf(*window_), states[0]));
   // And forward again to the newest.
   QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
                     view->visualRect(view->model()->index(3, 0)).center());
-  QCOMPARE(window_->undoStack()->index(), 3);
+  QTRY_COMPARE(window_->undoStack()->index(), 3);
   QVERIFY(bitEqual(positionsOf(*window_), states[3]));
   // A new stroke appears as a row while the list is open.
   app::testing::pushStrokeAcross(*window_, 60);

@@ -6,6 +6,7 @@
 #include "lod_panel.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -79,7 +80,7 @@ void LodExportRenderTest::dockExportCarriesThePaintAndATangentNormalMap() {
   for (int k = 1; k <= 10; ++k)
     QTest::mouseMove(view, (from + (to - from) * (k / 10.0)).toPoint());
   QTest::mouseRelease(view, Qt::LeftButton, {}, to.toPoint());
-  QTRY_VERIFY(!view->document().diffuse.uniform());
+  QTRY_VERIFY(!view->modeller().document().diffuse.uniform());
 
   window->lodPanel()->setTargetTriangles(1000);
   QString path;

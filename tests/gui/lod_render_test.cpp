@@ -7,6 +7,7 @@
 #include "lod_panel.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -107,9 +108,9 @@ void LodRenderTest::heatMapIsRedOnASharpBumpAndBlueOnSmoothClay() {
     QVERIFY(view->stroking());
     view->endStroke();
   }
-  view->setSaliencyOnCpu(false); // the GPU pass, whatever the GL (llvmpipe takes the CPU's)
+  view->modeller().setSaliencyOnCpu(false); // the GPU pass, whatever the GL (llvmpipe takes the CPU's)
   window_->layersPanel()->setPreview(6);
-  QVERIFY(view->saliencyCurrent()); // computed on the GPU when the heat map was asked for
+  QVERIFY(view->modeller().saliencyCurrent()); // computed on the GPU when the heat map was asked for
   hideBrushOutline(view);
   const QImage image = view->grabFramebuffer();
   // The reddest pixel within 25 px of the bump (its rim and top are where the normal turns).
@@ -128,14 +129,14 @@ void LodRenderTest::heatMapIsRedOnASharpBumpAndBlueOnSmoothClay() {
   QVERIFY2(qRed(onBump) > qBlue(onBump) + 60, qPrintable(describe(onBump)));
   QVERIFY2(qBlue(onSmooth) > qRed(onSmooth) + 60, qPrintable(describe(onSmooth)));
   // The saliency is in the positions' alpha: low on the smooth part.
-  const core::GeometryImage& positions = view->document().positions;
+  const core::GeometryImage& positions = view->modeller().document().positions;
   const auto far = view->pickAt(smooth);
   QVERIFY(far);
   QVERIFY(positions.at(far->sample).w < 0.1f);
   // Undo: the sphere's saliency comes back along with its shape (recomputed, so current).
   for (int k = 0; k < 3; ++k)
     window_->action("actionUndo")->trigger();
-  QVERIFY(view->saliencyCurrent());
+  QVERIFY(view->modeller().saliencyCurrent());
   float peak = 0;
   for (const core::Vec4f& t : positions.texels())
     peak = std::max(peak, t.w);
@@ -210,7 +211,7 @@ void LodRenderTest::strokeUpdatesTheLiveLodAtItsTarget() {
   QTest::mouseRelease(view, Qt::LeftButton, {}, to.toPoint());
   // salient-point reads the saliency: it follows the stroke (on a worker under llvmpipe), and
   // the LOD is made again with it.
-  QVERIFY(QTest::qWaitFor([&] { return view->saliencyCurrent(); }, 30000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().saliencyCurrent(); }, 30000));
   QVERIFY(waitForLod(generated, count));
   const std::shared_ptr<const core::LodMesh> after = window_->lodGenerator()->lod();
   QVERIFY(after && after != before);

@@ -9,6 +9,7 @@
 #include "matcap_generator.h"
 #include "test_window.h"
 #include "viewport_overlay.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/image_io.h"
@@ -371,7 +372,7 @@ void LooksRenderTest::importedModelHasNoUnlitSpecklesAtAnyLevel() {
       };
       const auto above = [&](QPoint p) { return luminance(image.pixel(p)) - ambient; };
       // Whether the pixels a and b, on either side of p, lie on p's surface: no depth jump.
-      const float jump = 0.02f * view->modelDiagonal();
+      const float jump = 0.02f * view->modeller().modelDiagonal();
       const auto continuous = [&](QPoint a, QPoint p, QPoint b) {
         const auto ha = view->pickAt(a), hp = view->pickAt(p), hb = view->pickAt(b);
         return ha && hp && hb && std::abs(ha->distance - hp->distance) < jump &&
@@ -450,7 +451,7 @@ void LooksRenderTest::crumpledSamplesShadeAsTheSmoothSurface() {
   window_ = makeWindow();
   QVERIFY(window_);
   window_->layersPanel()->setVisible(core::EditLayer::Diffuse, false);
-  QVERIFY(window_->viewport()->setDocument(core::makeDocument(std::move(image))));
+  QVERIFY(window_->viewport()->modeller().setDocument(core::makeDocument(std::move(image))));
   const float ambient = 0.18f * luminance(qRgb(204, 199, 189));
   for (int divisor : {2, 4}) {
     QVERIFY(window_->lodPanel()->setDivisor(divisor));
@@ -477,7 +478,7 @@ void LooksRenderTest::maskTintIsNotAPaintColour() {
   QVERIFY(window_);
   core::Document d = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64));
   d.mask.texels.assign(65 * 65, 0.0f); // masked everywhere
-  QVERIFY(window_->viewport()->setDocument(std::move(d)));
+  QVERIFY(window_->viewport()->modeller().setDocument(std::move(d)));
   const QImage image = grab();
   const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
   // Orange, hatched: red over blue, and neighbouring diagonals differ.

@@ -4,6 +4,7 @@
 #include "layers_panel.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -124,7 +125,7 @@ void ModellerRenderTest::viewportRendersTheDefaultSphere() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 1024, true));
-  QCOMPARE(window_->viewport()->document().size(), 1024);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 1024);
   const QImage image = window_->viewport()->grabFramebuffer();
   QVERIFY(!image.isNull());
   const int w = image.width(), h = image.height();
@@ -171,7 +172,7 @@ void ModellerRenderTest::dragSculptsUnderTheCursorAndUndoRestoresBitExactly() {
   const std::vector<float> before = positionsOf(*window_);
 
   stroke(*window_, "push", 0.05f, 0.2f, from, to);
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   QVERIFY(window_->isModified());
   const std::vector<float> after = positionsOf(*window_);
   QVERIFY(!bitEqual(before, after));
@@ -192,7 +193,7 @@ void ModellerRenderTest::dragSculptsUnderTheCursorAndUndoRestoresBitExactly() {
     QVERIFY2(nearest < reach, qPrintable(QString("a sample %1 from the path moved").arg(nearest)));
   }
   QVERIFY(moved > 100);
-  const int side = view->document().size() + 1;
+  const int side = view->modeller().document().size() + 1;
   auto movedAt = [&](core::Sample s) {
     const std::size_t k = (std::size_t(s.j) * side + s.i) * 4;
     return before[k] != after[k] || before[k + 1] != after[k + 1] || before[k + 2] != after[k + 2];
@@ -225,7 +226,7 @@ void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
     QVERIFY(view->stroking());
     view->endStroke();
   }
-  QCOMPARE(window_->undoStack()->count(), 4);
+  QTRY_COMPARE(window_->undoStack()->count(), 4);
   hideBrushOutline(view);
   const QImage bumped = view->grabFramebuffer();
   int changed = 0, far = 0;
@@ -262,7 +263,7 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
   const auto hit = view->pickAt(centre);
   QVERIFY(hit);
   auto radial = [&] { // distance from the sphere's centre of the sample under the cursor
-    const auto p = view->document().positions.at(hit->sample.i, hit->sample.j);
+    const auto p = view->modeller().document().positions.at(hit->sample.i, hit->sample.j);
     return core::length(core::Vec3f{p.x, p.y, p.z});
   };
   QVERIFY(window_->brushPanel()->selectBrush("push"));
@@ -279,14 +280,14 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
   QVERIFY2(pushed > r0 + 0.01f, qPrintable(QString("%1 -> %2").arg(r0).arg(pushed)));
   click(Qt::ControlModifier);
   QVERIFY2(std::abs(radial() - r0) < 0.002f, qPrintable(QString::number(radial() - r0)));
-  QCOMPARE(window_->undoStack()->count(), 2);
+  QTRY_COMPARE(window_->undoStack()->count(), 2);
   // Shift smooths instead of pushing: it lowers a fresh bump's top.
   click({});
   const float bumped = radial();
   QVERIFY(bumped > r0 + 0.01f);
   const std::vector<float> beforeSmooth = positionsOf(*window_);
   click(Qt::ShiftModifier);
-  QCOMPARE(window_->undoStack()->text(window_->undoStack()->count() - 1),
+  QTRY_COMPARE(window_->undoStack()->text(window_->undoStack()->count() - 1),
            QString("Stroke (smooth)"));
   QVERIFY(!bitEqual(beforeSmooth, positionsOf(*window_)));
   QVERIFY(radial() <= bumped); // smoothing never lifts a bump's top
@@ -414,7 +415,7 @@ void ModellerRenderTest::stretchPreviewIsColdOnASphereAndHotOnAPulledLimb() {
   }
 
   // The limb: samples within 0.2 rad of +x moved out along x by 4.3 (1 − θ/0.2)².
-  core::Document limb = view->document();
+  core::Document limb = view->modeller().document();
   for (core::Vec4f& t : limb.positions.texels()) {
     const double theta = std::acos(std::clamp(double(t.x), -1.0, 1.0));
     if (theta < 0.2) t.x += float(4.3 * (1.0 - theta / 0.2) * (1.0 - theta / 0.2));
@@ -472,16 +473,16 @@ void ModellerRenderTest::otherPressesDuringAStrokeLeaveItWhole() {
   // The right button pressed and released mid-stroke: no orbit, and the stroke goes on.
   QTest::mousePress(view, Qt::RightButton, {}, from + QPoint(30, 0));
   QTest::mouseRelease(view, Qt::RightButton, {}, from + QPoint(30, 0));
-  QCOMPARE(window_->undoStack()->count(), 0); // not ended by the other button's release
+  QTRY_COMPARE(window_->undoStack()->count(), 0); // not ended by the other button's release
   for (int k = 4; k <= 6; ++k)
     QTest::mouseMove(view, from + QPoint(10 * k, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, from + QPoint(60, 0));
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   const std::vector<float> stroked = positionsOf(*window_);
   // Nothing is left hanging: the next press and release make a second stroke.
   QTest::mousePress(view, Qt::LeftButton, {}, from, 500);
   QTest::mouseRelease(view, Qt::LeftButton, {}, from);
-  QCOMPARE(window_->undoStack()->count(), 2);
+  QTRY_COMPARE(window_->undoStack()->count(), 2);
   window_->undoStack()->undo();
   QVERIFY(bitEqual(stroked, positionsOf(*window_)));
   window_->undoStack()->undo();
@@ -492,7 +493,7 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
-  QVERIFY(window_->viewport()->materialIds().contains("brick"));
+  QVERIFY(window_->viewport()->modeller().materialIds().contains("brick"));
   QVERIFY(window_->brushPanel()->selectBrush("splat"));
   QVERIFY(qobject_cast<QComboBox*>(window_->brushPanel()->parameterWidget("material")));
   app::ViewportWidget* view = window_->viewport();
@@ -507,8 +508,8 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
     QTest::mouseMove(view, from + QPoint(8 * k, 0));
   // The queued dabs run in paintGL; a window shown just now may take a few events to paint.
   view->repaint();
-  QTRY_VERIFY(!view->document().diffuse.uniform());
-  const core::Document& midStroke = view->document();
+  QTRY_VERIFY(!view->modeller().document().diffuse.uniform());
+  const core::Document& midStroke = view->modeller().document();
   const int side = midStroke.size() + 1;
   int painted = 0;
   for (std::size_t k = 0; k < midStroke.diffuse.texels.size(); k += 4)
@@ -517,14 +518,14 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   for (int k = 6; k <= 10; ++k)
     QTest::mouseMove(view, from + QPoint(8 * k, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, from + QPoint(80, 0));
-  QCOMPARE(window_->undoStack()->count(), 1);
-  const core::Document& d = view->document();
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
+  const core::Document& d = view->modeller().document();
   QVERIFY(!bitEqual(before, positionsOf(*window_)));     // relief
   QVERIFY(!d.diffuse.uniform() && !d.feature.uniform()); // colour, shine, reflectivity
   // One undo takes all of it back.
   window_->action("actionUndo")->trigger();
   QVERIFY(bitEqual(before, positionsOf(*window_)));
-  const core::Document& undone = view->document();
+  const core::Document& undone = view->modeller().document();
   for (std::size_t k = 0; k < undone.diffuse.texels.size(); k += 4)
     QVERIFY(std::abs(undone.diffuse.texels[k] - undone.diffuse.fill[0]) < 1e-6f);
 }
@@ -580,12 +581,12 @@ void ModellerRenderTest::strokeWithANonFiniteResultIsUndoneWithAMessage() {
   const QPointF centre(view->width() / 2.0, view->height() / 2.0);
   stroke(*window_, "test-nan", 0.05f, 0.2f, centre, centre + QPointF(20, 0));
   QVERIFY(bitEqual(before, positionsOf(*window_)));
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   const QString message = window_->statusBar()->currentMessage();
   QVERIFY2(message.contains("non-finite value"), qPrintable(message));
   stroke(*window_, "push", 0.05f, 0.2f, centre, centre + QPointF(20, 0));
   QVERIFY(!bitEqual(before, positionsOf(*window_)));
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   std::filesystem::remove_all(target);
 }
 
@@ -616,7 +617,7 @@ void ModellerRenderTest::corruptFileFromTheFileMenuKeepsTheDocument() {
              qPrintable(window_->lastError()));
     QVERIFY(bitEqual(positionsOf(*window_), before));
     QCOMPARE(window_->currentPath(), QFileInfo(saved).absoluteFilePath());
-    QCOMPARE(window_->undoStack()->count(), 1);
+    QTRY_COMPARE(window_->undoStack()->count(), 1);
   }
   // The saved file itself opens and holds the stroke.
   window_->setFileChooser([&](MainWindow::FileRequest) { return saved; });
@@ -644,14 +645,14 @@ void ModellerRenderTest::importTurnsAMeshIntoAModelOrSaysWhyNot() {
   });
   window_->action("actionImport")->trigger();
   QVERIFY2(window_->lastError().isEmpty(), qPrintable(window_->lastError()));
-  const core::Document& d = window_->viewport()->document();
+  const core::Document& d = window_->viewport()->modeller().document();
   QCOMPARE(d.size(), 512);
   QCOMPARE(core::maxSeamGap(d.positions), 0.0f);
   QVERIFY(window_->isModified());
   stroke(*window_, "push", 0.05f, 0.5f,
          {window_->viewport()->width() / 2.0, window_->viewport()->height() / 2.0},
          {window_->viewport()->width() / 2.0 + 20, window_->viewport()->height() / 2.0});
-  QCOMPARE(window_->undoStack()->count(), 2); // the import, then the stroke
+  QTRY_COMPARE(window_->undoStack()->count(), 2); // the import, then the stroke
 }
 
 void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
@@ -682,7 +683,7 @@ void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
   QVERIFY(window_->pendingRecovery().has_value());
   QVERIFY(window_->recover());
   QVERIFY(bitEqual(positionsOf(*window_), stroked));
-  QVERIFY(!window_->viewport()->document().diffuse.uniform()); // the paint stroke came back
+  QVERIFY(!window_->viewport()->modeller().document().diffuse.uniform()); // the paint stroke came back
   QVERIFY(window_->isModified());
   QVERIFY(!window_->pendingRecovery());
 }
@@ -700,7 +701,7 @@ void ModellerRenderTest::largeDocumentsLoadAndSaveWithProgressWhileTheWindowResp
   });
   probe.start(20);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 4096, true));
-  QCOMPARE(window_->viewport()->document().size(), 4096);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 4096);
   const QString path = dir_.filePath("large.exr");
   // The GUI thread must keep running through the work (the probe ticks every 20 ms), and work
   // long enough for a person to notice (over 300 ms here) must have shown the dialog.
@@ -725,7 +726,7 @@ void ModellerRenderTest::largeDocumentsLoadAndSaveWithProgressWhileTheWindowResp
   clock.start();
   QVERIFY(window_->openDocument(path));
   check("open");
-  QCOMPARE(window_->viewport()->document().size(), 4096);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 4096);
   ticks = 0;
   QVERIFY(window_->exportMesh(dir_.filePath("large.ply"), 4));
   QVERIFY(ticks > 0);

@@ -8,6 +8,7 @@
 #include "lod_panel.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -136,9 +137,9 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   QVERIFY(!window_->isModified());
 
   QVERIFY(window_->importMesh(egg_, 64));
-  QCOMPARE(window_->viewport()->document().size(), 64);
-  QCOMPARE(window_->undoStack()->count(), 2);
-  QCOMPARE(window_->undoStack()->text(1), QStringLiteral("Import egg.obj"));
+  QCOMPARE(window_->viewport()->modeller().document().size(), 64);
+  QTRY_COMPARE(window_->undoStack()->count(), 2);
+  QTRY_COMPARE(window_->undoStack()->text(1), QStringLiteral("Import egg.obj"));
   QVERIFY(window_->currentPath().isEmpty());
   QVERIFY(window_->isModified());
   QCOMPARE(window_->windowTitle(), QStringLiteral("egg[*] — Octaclay")); // the mesh's name
@@ -146,7 +147,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   app::testing::pushStrokeAcross(*window_, 0);
   const std::vector<float> importedStroked = positionsOf(*window_);
   QVERIFY(!bitEqual(imported, importedStroked));
-  QCOMPARE(window_->undoStack()->count(), 3);
+  QTRY_COMPARE(window_->undoStack()->count(), 3);
 
   // Back through the egg's stroke and the import to the saved ball, then its own stroke.
   QAction* undo = window_->action("actionUndo");
@@ -154,7 +155,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   undo->trigger();
   QVERIFY(bitEqual(positionsOf(*window_), imported));
   undo->trigger();
-  QCOMPARE(window_->viewport()->document().size(), 128);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 128);
   QVERIFY(bitEqual(positionsOf(*window_), stroked));
   QCOMPARE(window_->currentPath(), QFileInfo(dir_.filePath("ball.exr")).absoluteFilePath());
   QVERIFY(!window_->isModified()); // as saved
@@ -166,7 +167,7 @@ void NewcomerRenderTest::importIsOneUndoStepThatBringsThePreviousModelBack() {
   redo->trigger();
   QVERIFY(bitEqual(positionsOf(*window_), stroked));
   redo->trigger();
-  QCOMPARE(window_->viewport()->document().size(), 64);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 64);
   QVERIFY(bitEqual(positionsOf(*window_), imported));
   QVERIFY(window_->currentPath().isEmpty());
   QVERIFY(window_->isModified());

@@ -6,6 +6,7 @@
 #include "history_dialog.h"
 #include "main_window.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -154,7 +155,7 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
   QVERIFY(window->brushPanel()->selectBrush("push"));
-  QVERIFY(!view->canUndo());
+  QVERIFY(!view->modeller().canUndo());
 
   // A left drag across the model sculpts.
   const QPoint centre = view->mapToGlobal(view->project({0, 0, 0}).toPoint());
@@ -163,13 +164,13 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   for (int k = 1; k <= 12; ++k)
     input.moveTo(centre - QPoint(60, 0) + QPoint(10 * k, 3 * k));
   input.button(1, false);
-  QVERIFY(QTest::qWaitFor([&] { return view->canUndo(); }, 3000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo(); }, 3000));
 
   // Keys typed with the pointer over the frames reach the window's shortcuts.
   input.press({XK_Control_L, XK_z});
-  QVERIFY(QTest::qWaitFor([&] { return !view->canUndo() && view->canRedo(); }, 3000));
+  QVERIFY(QTest::qWaitFor([&] { return !view->modeller().canUndo() && view->modeller().canRedo(); }, 3000));
   input.press({XK_Control_L, XK_y});
-  QVERIFY(QTest::qWaitFor([&] { return view->canUndo(); }, 3000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo(); }, 3000));
   input.press({XK_s});
   QVERIFY(QTest::qWaitFor(
       [&] { return window->brushPanel()->currentBrushId() == QString("smooth"); }, 3000));
@@ -421,7 +422,7 @@ void RealInputRenderTest::snakeHookAtItsDefaultPullsAlongTheDrag() {
   for (int k = 1; k <= 20; ++k)
     input.moveTo(view->mapToGlobal(from + QPoint(10 * k, 0)));
   input.button(1, false);
-  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 5000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo() && !view->stroking(); }, 5000));
   const std::vector<float> after = app::testing::positionsOf(*window);
   float pulled = 0;
   for (std::size_t k = 0; k + 3 < after.size(); k += 4)
@@ -508,11 +509,11 @@ void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
   QVERIFY(stroke());
   QUndoStack* stack = window->undoStack();
   // A budget of about two such strokes.
-  const std::size_t one = view->history().bytes();
+  const std::size_t one = view->modeller().history().bytes();
   QVERIFY(one > 0);
   stack->undo();
-  QVERIFY(!view->canUndo());
-  view->history() = core::EditHistory(one * 5 / 2);
+  QVERIFY(!view->modeller().canUndo());
+  view->modeller().history() = core::EditHistory(one * 5 / 2);
   stack->clear();
   strokes = 0;
 
@@ -526,9 +527,9 @@ void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
   QVERIFY(stroke());
   QCOMPARE(firstRow(), QString("Model as opened or made"));
   QVERIFY(activate(*window));
-  while (strokes < 6 && std::size_t(stack->count()) == view->history().undoCount())
+  while (strokes < 6 && std::size_t(stack->count()) == view->modeller().history().undoCount())
     QVERIFY(stroke());
-  QVERIFY2(std::size_t(stack->count()) > view->history().undoCount(),
+  QVERIFY2(std::size_t(stack->count()) > view->modeller().history().undoCount(),
            "six strokes fit a budget of two and a half");
   // The status bar says so, the dropped step says so, the first row no longer promises the
   // model as it was made.
@@ -541,7 +542,7 @@ void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
   const std::vector<float> newest = app::testing::positionsOf(*window);
   while (stack->canUndo())
     stack->undo();
-  QVERIFY(!view->canUndo());
+  QVERIFY(!view->modeller().canUndo());
   while (stack->canRedo())
     stack->redo();
   QVERIFY(app::testing::bitEqual(app::testing::positionsOf(*window), newest));
@@ -571,7 +572,7 @@ void RealInputRenderTest::aSparseTipSaysWhyBeforeTheBrushActs() {
   for (int k = 1; k <= 20; ++k)
     input.moveTo(view->mapToGlobal(centre + QPoint(10 * k, 0)));
   input.button(1, false);
-  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 10000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo() && !view->stroking(); }, 10000));
 
   auto* button = window->statusBar()->findChild<QPushButton*>("sparseSamplingRemesh");
   QVERIFY(button);
@@ -659,7 +660,7 @@ void RealInputRenderTest::aPressJustOffTheModelWithinTheRingSculpts() {
   for (int k = 1; k <= 8; ++k)
     input.moveTo(view->mapToGlobal(beside.toPoint() + QPoint(4 * k, -2 * k)));
   input.button(1, false);
-  QVERIFY(QTest::qWaitFor([&] { return view->canUndo() && !view->stroking(); }, 3000));
+  QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo() && !view->stroking(); }, 3000));
   QVERIFY2(!cameraMoved(), "the press beside the model orbited the camera");
 
   // Farther out than the ring: the same drag orbits.
@@ -683,7 +684,7 @@ void RealInputRenderTest::preferencesSetTheUndoMemory() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
   app::ViewportWidget* view = window->viewport();
-  QCOMPARE(view->history().budget(), std::size_t(256) << 20);
+  QCOMPARE(view->modeller().history().budget(), std::size_t(256) << 20);
   QAction* preferences = window->findChild<QAction*>(QStringLiteral("actionPreferences"));
   QVERIFY(preferences);
   bool typed = false;
@@ -703,11 +704,11 @@ void RealInputRenderTest::preferencesSetTheUndoMemory() {
   preferences->trigger(); // the dialog runs its own loop until the timer's Return
   QVERIFY2(typed, "no Undo memory box in Edit ▸ Preferences");
   QCOMPARE(window->undoBudgetMiB(), 64);
-  QCOMPARE(view->history().budget(), std::size_t(64) << 20);
+  QCOMPARE(view->modeller().history().budget(), std::size_t(64) << 20);
   QCOMPARE(QSettings().value("undo/budgetMiB").toInt(), 64);
   // The next document, and the next start, keep it.
   QVERIFY(window->newDocument(core::BaseShape::Cube, 64, true));
-  QCOMPARE(view->history().budget(), std::size_t(64) << 20);
+  QCOMPARE(view->modeller().history().budget(), std::size_t(64) << 20);
   const std::unique_ptr<app::MainWindow> next =
       app::testing::openTestWindow(dir_.filePath("recovery-next"));
   QVERIFY(next);

@@ -7,6 +7,7 @@
 #include "main_window.h"
 #include "mesh_size_dialog.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -118,7 +119,7 @@ void RemeshRenderTest::cleanup() {
 }
 
 bool RemeshRenderTest::openLimb(MainWindow& w) {
-  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->document().size() == 64;
+  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->modeller().document().size() == 64;
 }
 
 void RemeshRenderTest::menuItemsSayWhatTheyWillDo() {
@@ -165,7 +166,7 @@ void RemeshRenderTest::remeshFromTheMenuIsOneUndoStepBackToTheOriginalBitForBit(
   QVERIFY(window_);
   QVERIFY(openLimb(*window_));
   const QString path = window_->currentPath();
-  const core::Document original = window_->viewport()->document();
+  const core::Document original = window_->viewport()->modeller().document();
   const std::vector<unsigned char> before = bitsOf(original);
   const double shareBefore = limbFairShare(original);
   const double ratioBefore = core::summarizeStretch(original.positions).longestOverMedian;
@@ -195,7 +196,7 @@ void RemeshRenderTest::remeshFromTheMenuIsOneUndoStepBackToTheOriginalBitForBit(
   QVERIFY(!itemTexts.isEmpty());
   QVERIFY2(itemTexts.first().startsWith("Remeshing… ") && itemTexts.first().endsWith(" %"),
            qPrintable(itemTexts.join(", ")));
-  QCOMPARE(window_->undoStack()->count(), 1);
+  QTRY_COMPARE(window_->undoStack()->count(), 1);
   QCOMPARE(window_->undoStack()->undoText(), QString("Remesh"));
   QVERIFY(window_->isModified());
   QCOMPARE(window_->currentPath(), path); // the same model, still saved where it was
@@ -206,7 +207,7 @@ void RemeshRenderTest::remeshFromTheMenuIsOneUndoStepBackToTheOriginalBitForBit(
   QCOMPARE(window_->action("actionRemesh")->text(), QString("&Remesh…"));
   QVERIFY(eyeOf(*window_) == eye); // the camera stays: the same surface
 
-  const core::Document remeshed = window_->viewport()->document();
+  const core::Document remeshed = window_->viewport()->modeller().document();
   const std::vector<unsigned char> after = bitsOf(remeshed);
   const double shareAfter = limbFairShare(remeshed);
   const double ratioAfter = core::summarizeStretch(remeshed.positions).longestOverMedian;
@@ -221,30 +222,30 @@ void RemeshRenderTest::remeshFromTheMenuIsOneUndoStepBackToTheOriginalBitForBit(
            qPrintable(QString::number(redAfter)));
 
   window_->action("actionUndo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == before);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
   QVERIFY(!window_->isModified());
   QVERIFY(eyeOf(*window_) == eye);
   window_->action("actionRedo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == after);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == after);
   QVERIFY(window_->isModified());
 }
 
 void RemeshRenderTest::remeshTwiceByAccidentIsOneUndoAway() {
   QVERIFY(window_);
   QVERIFY(openLimb(*window_));
-  const std::vector<unsigned char> original = bitsOf(window_->viewport()->document());
+  const std::vector<unsigned char> original = bitsOf(window_->viewport()->modeller().document());
   QVERIFY(window_->remesh());
-  const std::vector<unsigned char> once = bitsOf(window_->viewport()->document());
+  const std::vector<unsigned char> once = bitsOf(window_->viewport()->modeller().document());
   QVERIFY(once != original);
   // The second run either changes the model again (a step of its own) or says why not.
   const bool again = window_->remesh();
-  QCOMPARE(window_->undoStack()->count(), again ? 2 : 1);
+  QTRY_COMPARE(window_->undoStack()->count(), again ? 2 : 1);
   if (again) {
     window_->action("actionUndo")->trigger();
-    QVERIFY(bitsOf(window_->viewport()->document()) == once);
+    QVERIFY(bitsOf(window_->viewport()->modeller().document()) == once);
   }
   window_->action("actionUndo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == original);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == original);
   QVERIFY(!window_->isModified());
 
   // Even Out twice: each run is one step or none (its own check may refuse this limb, saying
@@ -253,21 +254,21 @@ void RemeshRenderTest::remeshTwiceByAccidentIsOneUndoAway() {
   for (int run = 0; run < 2; ++run) {
     const int steps = window_->undoStack()->count();
     if (window_->evenOutSamples()) {
-      QCOMPARE(window_->undoStack()->count(), steps + 1);
+      QTRY_COMPARE(window_->undoStack()->count(), steps + 1);
       window_->action("actionUndo")->trigger();
-      QVERIFY(bitsOf(window_->viewport()->document()) == previous);
+      QVERIFY(bitsOf(window_->viewport()->modeller().document()) == previous);
       window_->action("actionRedo")->trigger();
-      previous = bitsOf(window_->viewport()->document());
+      previous = bitsOf(window_->viewport()->modeller().document());
     } else {
-      QCOMPARE(window_->undoStack()->count(), steps);
-      QVERIFY(bitsOf(window_->viewport()->document()) == previous);
+      QTRY_COMPARE(window_->undoStack()->count(), steps);
+      QVERIFY(bitsOf(window_->viewport()->modeller().document()) == previous);
       QVERIFY2(window_->statusBar()->currentMessage().startsWith("Even Out left the model"),
                qPrintable(window_->statusBar()->currentMessage()));
     }
   }
   while (window_->undoStack()->canUndo())
     window_->action("actionUndo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == original);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == original);
 }
 
 void RemeshRenderTest::cancelledRemeshAndResolutionChangeNothing() {
@@ -276,20 +277,20 @@ void RemeshRenderTest::cancelledRemeshAndResolutionChangeNothing() {
   // Twice: on the document as opened (unmodified, no history), and after one remesh
   // (modified, one step, the history held by it).
   for (int round = 0; round < 2; ++round) {
-    const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+    const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
     const int steps = window_->undoStack()->count();
     const int index = window_->undoStack()->index();
-    const std::size_t undoable = window_->viewport()->history().undoCount();
+    const std::size_t undoable = window_->viewport()->modeller().history().undoCount();
     const bool modified = window_->isModified();
     for (const bool remeshing : {true, false}) {
       auto control = std::make_shared<app::TaskControl>();
       control->cancel = true; // as if Cancel were pressed at once
       QVERIFY(remeshing ? !window_->remesh(128, control)
                         : !window_->changeResolution(128, control));
-      QVERIFY(bitsOf(window_->viewport()->document()) == before);
-      QCOMPARE(window_->undoStack()->count(), steps);
-      QCOMPARE(window_->undoStack()->index(), index);
-      QCOMPARE(window_->viewport()->history().undoCount(), undoable);
+      QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
+      QTRY_COMPARE(window_->undoStack()->count(), steps);
+      QTRY_COMPARE(window_->undoStack()->index(), index);
+      QCOMPARE(window_->viewport()->modeller().history().undoCount(), undoable);
       QCOMPARE(window_->isModified(), modified);
       QCOMPARE(window_->statusBar()->currentMessage(),
                remeshing ? QString("Remesh cancelled; the model is unchanged")
@@ -304,28 +305,28 @@ void RemeshRenderTest::cancelledRemeshAndResolutionChangeNothing() {
 void RemeshRenderTest::resolutionUpAndDownAreOneStepEach() {
   QVERIFY(window_);
   QVERIFY(openLimb(*window_));
-  const std::vector<unsigned char> original = bitsOf(window_->viewport()->document());
-  const double redBefore = redShare(window_->viewport()->document());
+  const std::vector<unsigned char> original = bitsOf(window_->viewport()->modeller().document());
+  const double redBefore = redShare(window_->viewport()->modeller().document());
   QVERIFY(!window_->changeResolution(64)); // the current N: nothing to do
   QCOMPARE(window_->statusBar()->currentMessage(),
            QString("The model is already N = 64: nothing to resample"));
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
 
   QVERIFY(window_->changeResolution(128));
-  QCOMPARE(window_->viewport()->document().size(), 128);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 128);
   QCOMPARE(window_->undoStack()->undoText(), QString("Resolution 64 → 128"));
   QCOMPARE(window_->statusBar()->currentMessage(), QString("Resampled from N = 64 to N = 128"));
   QCOMPARE(window_->viewport()->stats().n, 128);
-  const double redUp = redShare(window_->viewport()->document());
+  const double redUp = redShare(window_->viewport()->modeller().document());
   QVERIFY2(std::abs(redUp - redBefore) < 0.1 * redBefore, qPrintable(QString::number(redUp)));
   QVERIFY(window_->changeResolution(32));
-  QCOMPARE(window_->viewport()->document().size(), 32);
-  QCOMPARE(window_->undoStack()->count(), 2);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 32);
+  QTRY_COMPARE(window_->undoStack()->count(), 2);
 
   window_->action("actionUndo")->trigger();
-  QCOMPARE(window_->viewport()->document().size(), 128);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 128);
   window_->action("actionUndo")->trigger();
-  QVERIFY(bitsOf(window_->viewport()->document()) == original);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == original);
   QCOMPARE(window_->viewport()->stats().n, 64);
   QVERIFY(!window_->isModified());
 
@@ -337,7 +338,7 @@ void RemeshRenderTest::resolutionUpAndDownAreOneStepEach() {
     }
   });
   window_->action("actionResolution")->trigger();
-  QCOMPARE(window_->viewport()->document().size(), 256);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 256);
   QCOMPARE(window_->undoStack()->undoText(), QString("Resolution 64 → 256"));
 }
 
@@ -348,11 +349,11 @@ void RemeshRenderTest::unchangedRemeshSaysWhyAndPushesNoStep() {
   core::Document needle = core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64));
   needle.positions.at(40, 20).x *= 6, needle.positions.at(40, 20).y *= 6,
       needle.positions.at(40, 20).z *= 6;
-  QVERIFY(window_->viewport()->setDocument(needle));
-  const std::vector<unsigned char> before = bitsOf(window_->viewport()->document());
+  QVERIFY(window_->viewport()->modeller().setDocument(needle));
+  const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
   QVERIFY(!window_->remesh());
-  QVERIFY(bitsOf(window_->viewport()->document()) == before);
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QVERIFY(bitsOf(window_->viewport()->modeller().document()) == before);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   QVERIFY(!window_->isModified());
   const QString message = window_->statusBar()->currentMessage();
   QVERIFY2(message.startsWith("Remesh left the model unchanged: the surface would move by"),

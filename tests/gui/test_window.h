@@ -4,6 +4,7 @@
 
 #include "brush_panel.h"
 #include "main_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QImage>
@@ -55,7 +56,7 @@ inline PixelDifference comparePixels(const QImage& a, const QImage& b, int step 
 }
 
 inline std::vector<float> positionsOf(const MainWindow& w) {
-  const core::GeometryImage& image = w.viewport()->document().positions;
+  const core::GeometryImage& image = w.viewport()->modeller().document().positions;
   std::vector<float> out;
   const int side = image.size() + 1;
   out.reserve(std::size_t(side) * side * 4);
@@ -84,6 +85,8 @@ inline void pushStrokeAcross(MainWindow& w, int dy) {
   for (int k = 1; k <= 10; ++k)
     QTest::mouseMove(view, from + (to - from) * k / 10);
   QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+  // A release hands keep detail's relaxation to a worker: the step is in when it is.
+  QTRY_VERIFY_WITH_TIMEOUT(!w.viewport()->stroking(), 20000);
 }
 
 } // namespace octaclay::app::testing

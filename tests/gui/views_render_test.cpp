@@ -8,6 +8,7 @@
 #include "main_window.h"
 #include "save_image_dialog.h"
 #include "test_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document.h"
@@ -214,7 +215,7 @@ void ViewsRenderTest::cleanup() {
 
 std::unique_ptr<MainWindow> ViewsRenderTest::openSphere() {
   auto w = app::testing::openTestWindow(dir_.filePath("recovery"));
-  if (!w || !w->viewport()->setDocument(paintedSphere(64))) return nullptr;
+  if (!w || !w->viewport()->modeller().setDocument(paintedSphere(64))) return nullptr;
   w->viewport()->setLevelDivisor(1);
   // Keyboard focus needs the window active (no window manager under Xvfb: asked for).
   w->activateWindow();
@@ -520,7 +521,7 @@ void ViewsRenderTest::escapeInASpinBoxHandsTheKeysBackWithoutAStroke() {
   app::ViewportWidget* view = window_->viewport();
   auto* radius = window_->brushPanel()->findChild<QDoubleSpinBox*>("radius");
   QVERIFY(radius);
-  const core::GeometryImage before = view->document().positions;
+  const core::GeometryImage before = view->modeller().document().positions;
 
   radius->setFocus();
   QVERIFY(QTest::qWaitFor([&] { return radius->hasFocus(); }));
@@ -543,9 +544,9 @@ void ViewsRenderTest::escapeInASpinBoxHandsTheKeysBackWithoutAStroke() {
   QTest::mouseClick(view, Qt::LeftButton, {}, QPoint(view->width() / 2, view->height() / 2));
   QVERIFY(view->hasFocus());
   // Nothing was stroked.
-  QCOMPARE(window_->undoStack()->count(), 0);
+  QTRY_COMPARE(window_->undoStack()->count(), 0);
   QCOMPARE(view->stats().dabs, 0LL);
-  QVERIFY(view->document().positions.at(10, 20).x == before.at(10, 20).x);
+  QVERIFY(view->modeller().document().positions.at(10, 20).x == before.at(10, 20).x);
 }
 
 void ViewsRenderTest::idleStatusBarShowsNoZeroFrameRate() {

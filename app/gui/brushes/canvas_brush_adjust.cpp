@@ -1,6 +1,7 @@
 #include "canvas_brush_adjust.h"
 
 #include "brush_panel.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QApplication>
@@ -77,7 +78,7 @@ bool CanvasBrushAdjust::begin(Mode mode) {
                   core::Vec3f{float(up[0]), float(up[1]), float(up[2])}));
   const core::Vec3f centre =
       hit ? hit->position : core::Vec3f{float(focal[0]), float(focal[1]), float(focal[2])};
-  const float step = 0.1f * viewport_->modelDiagonal();
+  const float step = 0.1f * viewport_->modeller().modelDiagonal();
   const QPointF a = viewport_->project(centre), b = viewport_->project(centre + right * step);
   pixelsPerRadius_ = std::hypot(b.x() - a.x(), b.y() - a.y()) / 0.1;
   if (!std::isfinite(pixelsPerRadius_) || pixelsPerRadius_ < 1e-3)

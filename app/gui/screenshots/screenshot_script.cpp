@@ -5,6 +5,7 @@
 #include "main_window.h"
 #include "screenshot_support.h"
 #include "view_looks.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QImage>
@@ -18,12 +19,12 @@ namespace {
 // A stroke along a screen-space curve through the viewport centre.
 bool stroke(ViewportWidget& view, const QString& brush, float radius, float strength,
             const std::function<QPointF(double)>& curve) {
-  BrushSettings settings = view.brushSettings();
+  BrushSettings settings = view.modeller().brushState().settings();
   settings.brushId = brush.toStdString();
   settings.radius = radius;
   settings.strength = strength;
   settings.area = brush == "paint" ? gpu::AreaMode::Volume : settings.area;
-  view.setBrushSettings(settings);
+  view.modeller().brushState().setSettings(settings);
   view.beginStrokeAt(curve(0));
   if (!view.stroking()) return false;
   for (int k = 1; k <= 60; ++k) {

@@ -1,5 +1,6 @@
 #include "screenshot_support.h"
 
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QCoreApplication>
@@ -38,7 +39,7 @@ bool waitForViewport(ViewportWidget& view) {
   wait.start();
   while (!view.glReady() && wait.elapsed() < 10000)
     settleEvents(50);
-  if (view.glReady() && view.hasDocument()) return true;
+  if (view.glReady() && view.modeller().hasDocument()) return true;
   std::fprintf(stderr, "octaclay: no OpenGL 4.3 context or no document: %s\n",
                qPrintable(view.error()));
   return false;

@@ -4,6 +4,7 @@
 #include "layers_panel.h"
 #include "main_window.h"
 #include "screenshot_support.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/measure/stretch.h"
@@ -48,7 +49,7 @@ void drawCaption(QPainter& painter, int x, const QString& caption) {
 }
 
 double longestOverMedian(const ViewportWidget& view) {
-  return core::summarizeStretch(view.document().positions).longestOverMedian;
+  return core::summarizeStretch(view.modeller().document().positions).longestOverMedian;
 }
 
 } // namespace

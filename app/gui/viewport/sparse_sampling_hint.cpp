@@ -1,5 +1,6 @@
 #include "sparse_sampling_hint.h"
 
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/measure/brush_sampling.h"
@@ -32,9 +33,9 @@ SparseSamplingHint::SparseSamplingHint(ViewportWidget* view, QStatusBar* bar, QA
 }
 
 void SparseSamplingHint::check(core::Vec2f uv) {
-  if (!view_->hasDocument()) return;
-  const double radius = double(view_->brushSettings().radius) * double(view_->modelDiagonal());
-  const core::BrushSampling sampling = core::brushSampling(view_->document().positions, uv, radius);
+  if (!view_->modeller().hasDocument()) return;
+  const double radius = double(view_->modeller().brushState().settings().radius) * double(view_->modeller().modelDiagonal());
+  const core::BrushSampling sampling = core::brushSampling(view_->modeller().document().positions, uv, radius);
   lastSamples_ = sampling.samplesAcross;
   if (!sampling.sparse()) return;
   message_ = tr("Few samples here: %1 across the brush's radius (%2 or more shape the surface "

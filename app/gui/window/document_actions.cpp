@@ -1,6 +1,7 @@
 #include "document_actions.h"
 
 #include "lod_panel.h"
+#include "modeller.h"
 #include "replace_document_command.h"
 #include "save_compressed_dialog.h"
 #include "user_messages.h"
@@ -112,14 +113,14 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   }
   // One undo step: the replaced document (with its own strokes) is held by the step.
   std::unique_ptr<HeldDocument> previous;
-  if (parts_.viewport->hasDocument()) {
+  if (parts_.viewport->modeller().hasDocument()) {
     parts_.viewport->endStroke();
-    previous = std::make_unique<HeldDocument>(HeldDocument{parts_.viewport->document(),
-                                                           std::move(parts_.viewport->history()),
-                                                           path_, importedFrom_, forceModified_});
+    previous = std::make_unique<HeldDocument>(HeldDocument{
+        parts_.viewport->modeller().document(), std::move(parts_.viewport->modeller().history()),
+        path_, importedFrom_, forceModified_});
   }
   if (!adoptDocument(std::move(*made), {}, /*clearUndo=*/!previous)) {
-    if (previous) parts_.viewport->history() = std::move(previous->history);
+    if (previous) parts_.viewport->modeller().history() = std::move(previous->history);
     return false;
   }
   parts_.viewport->frameFrom(*facing);
@@ -138,7 +139,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
 
 bool DocumentActions::adoptDocument(core::Document document, const QString& path, bool clearUndo) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
-  if (!parts_.viewport->setDocument(std::move(document))) {
+  if (!parts_.viewport->modeller().setDocument(std::move(document))) {
     showError(parts_.viewport->error());
     return false;
   }
@@ -148,7 +149,7 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
   forceModified_ = false;
   autosavedIndex_ = -1;
   autosavingIndex_ = -1; // an autosave in flight was of the document before
-  parts_.lodPanel->setDocumentSize(parts_.viewport->document().size());
+  parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
@@ -156,7 +157,7 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
 }
 
 bool DocumentActions::replaceDocument(core::Document document, const QString& label) {
-  if (!parts_.viewport->hasDocument()) return false;
+  if (!parts_.viewport->modeller().hasDocument()) return false;
   parts_.viewport->endStroke();
   auto previous = std::make_unique<HeldDocument>(
       HeldDocument{core::Document{}, core::EditHistory{}, path_, importedFrom_, forceModified_});
@@ -175,22 +176,23 @@ bool DocumentActions::replaceDocument(core::Document document, const QString& la
 
 bool DocumentActions::swapDocument(HeldDocument& held, bool keepView) {
   parts_.viewport->endStroke();
-  HeldDocument shown{parts_.viewport->document(), std::move(parts_.viewport->history()), path_,
-                     importedFrom_, forceModified_};
+  HeldDocument shown{parts_.viewport->modeller().document(),
+                     std::move(parts_.viewport->modeller().history()), path_, importedFrom_,
+                     forceModified_};
   emit aboutToAdopt();
-  if (!parts_.viewport->setDocument(std::move(held.document), keepView)) {
-    parts_.viewport->history() = std::move(shown.history);
+  if (!parts_.viewport->modeller().setDocument(std::move(held.document), keepView)) {
+    parts_.viewport->modeller().history() = std::move(shown.history);
     showError(parts_.viewport->error());
     return false;
   }
-  parts_.viewport->history() = std::move(held.history);
+  parts_.viewport->modeller().history() = std::move(held.history);
   path_ = held.path;
   importedFrom_ = held.importedFrom;
   forceModified_ = held.forceModified;
   autosavedIndex_ = -1;
   autosavingIndex_ = -1; // an autosave in flight was of the document before
   held = std::move(shown);
-  parts_.lodPanel->setDocumentSize(parts_.viewport->document().size());
+  parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
@@ -240,10 +242,10 @@ bool DocumentActions::openDocument(const QString& path) {
 }
 
 bool DocumentActions::saveDocument(const QString& path) {
-  if (!parts_.viewport->hasDocument()) return false;
+  if (!parts_.viewport->modeller().hasDocument()) return false;
   parts_.viewport->endStroke();
   // A snapshot: the save runs while the user may keep sculpting.
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()),
                   [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
@@ -263,9 +265,9 @@ bool DocumentActions::saveDocument(const QString& path) {
 }
 
 bool DocumentActions::saveCompressed(const QString& path, const core::CompressOptions& options) {
-  if (!parts_.viewport->hasDocument()) return false;
+  if (!parts_.viewport->modeller().hasDocument()) return false;
   parts_.viewport->endStroke();
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()), [snapshot, path, options] {
         core::writeCompressedDocument(*snapshot, options, toPath(path));
@@ -280,7 +282,7 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
 }
 
 bool DocumentActions::exportMesh(const QString& path, int divisor) {
-  if (!parts_.viewport->hasDocument()) return false;
+  if (!parts_.viewport->modeller().hasDocument()) return false;
   // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
   const QString suffix = QFileInfo(path).suffix().toLower();
   const bool obj = suffix == "obj", glb = suffix == "glb";
@@ -291,7 +293,7 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
   std::function<void()> work;
   if (obj || glb) {
     parts_.viewport->endStroke();
-    auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+    auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
     work = [snapshot, path, divisor, obj] {
       if (obj)
         core::writeTexturedObj(*snapshot, divisor, toPath(path));
@@ -299,7 +301,8 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
         core::writeGlb(*snapshot, divisor, toPath(path));
     };
   } else {
-    auto snapshot = std::make_shared<core::GeometryImage>(parts_.viewport->document().positions);
+    auto snapshot =
+        std::make_shared<core::GeometryImage>(parts_.viewport->modeller().document().positions);
     work = [snapshot, path, divisor] {
       core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
     };
@@ -315,7 +318,7 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
 }
 
 bool DocumentActions::exportLod(const QString& path) {
-  if (!parts_.viewport->hasDocument()) return false;
+  if (!parts_.viewport->modeller().hasDocument()) return false;
   const QString suffix = QFileInfo(path).suffix().toLower();
   if (suffix != "obj" && suffix != "glb") {
     showError(tr("Cannot export the level of detail to %1: use .obj or .glb").arg(path));
@@ -327,10 +330,10 @@ bool DocumentActions::exportLod(const QString& path) {
   const core::ResampleMethod m = parts_.lodPanel->method();
   const bool salient =
       m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
-  if (salient) parts_.viewport->setSaliencyWanted(true);
-  const bool computeSaliency = salient && !parts_.viewport->saliencyCurrent();
+  if (salient) parts_.viewport->modeller().setSaliencyWanted(true);
+  const bool computeSaliency = salient && !parts_.viewport->modeller().saliencyCurrent();
   // The whole document: the LOD carries the paint as File ▸ Export Mesh does.
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->document());
+  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
   const core::LodOptions options = parts_.lodPanel->lodOptions();
   auto control = std::make_shared<TaskControl>();
   const QString error = runner_.run(
@@ -368,7 +371,8 @@ bool DocumentActions::exportLod(const QString& path) {
 }
 
 bool DocumentActions::autosaveNow() {
-  if (!parts_.viewport->hasDocument() || runner_.busy() || autosaver_.busy()) return false;
+  if (!parts_.viewport->modeller().hasDocument() || runner_.busy() || autosaver_.busy())
+    return false;
   if (!isModified() || parts_.undoStack->index() == autosavedIndex_) return true;
   if (parts_.viewport->stroking()) { // the stroke's end makes the next step: save after it
     QTimer::singleShot(2000, this, [this] { autosaveNow(); });
@@ -376,7 +380,7 @@ bool DocumentActions::autosaveNow() {
   }
   // The GUI thread only copies the document; encoding and writing run on a worker while the
   // window goes on (the finished signal records the undo index saved, or says what failed).
-  auto snapshot = std::make_shared<const core::Document>(parts_.viewport->document());
+  auto snapshot = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
   autosavingIndex_ = parts_.undoStack->index();
   return autosaver_.start(std::move(snapshot), path_);
 }

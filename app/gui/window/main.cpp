@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
   parser.addHelpOption();
   parser.addVersionOption();
   parser.addPositionalArgument("document", "An Octaclay document (.exr) to open.", "[document]");
-  QCommandLineOption shape("shape", "Shape of a new model: sphere, cube, cylinder, blob.", "shape",
-                           "sphere");
+  QCommandLineOption shape("shape", "Shape of a new model: sphere, cube, cylinder, blob, capsule.",
+                           "shape", "sphere");
   QCommandLineOption size("size", "Size N of a new model (N+1 samples a side).", "N", "1024");
   QCommandLineOption screenshot(
       "screenshot", "Make a few strokes, save the window as an image and quit.", "image.png");
@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
   bool sizeOk = false;
   const int n = parser.value(size).toInt(&sizeOk);
   if (!baseShape || !sizeOk || n < 2 || n > 8192 || (n & (n - 1)) != 0) {
-    fprintf(stderr, "octaclay: --shape must be sphere, cube, cylinder or blob and --size a power "
-                    "of two from 2 to 8192\n");
+    fprintf(stderr,
+            "octaclay: --shape must be sphere, cube, cylinder, blob or capsule and --size a power "
+            "of two from 2 to 8192\n");
     return 2;
   }
 

@@ -8,6 +8,7 @@
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
+#include "modeller.h"
 #include "save_image_dialog.h"
 #include "sparse_sampling_hint.h"
 #include "stroke_command.h"
@@ -40,7 +41,8 @@ namespace octaclay::app {
 MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   setObjectName("MainWindow");
   undoStack_ = new QUndoStack(this);
-  viewport_ = new ViewportWidget(this);
+  modeller_ = new Modeller(this);
+  viewport_ = new ViewportWidget(*modeller_, this);
   setCentralWidget(viewport_);
   buildDocks();
   documents_ = new DocumentActions(
@@ -77,7 +79,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connect(autosaveTimer_, &QTimer::timeout, this, [this] { autosaveNow(); });
   auto* brushPoll = new QTimer(this);
   connect(brushPoll, &QTimer::timeout, this, [this] {
-    for (const QString& failure : viewport_->reloadBrushes())
+    for (const QString& failure : viewport_->modeller().reloadBrushes())
       showStatusMessage(*statusBar(), failure, 8000);
   });
   brushPoll->start(1000);
@@ -90,7 +92,9 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  delete viewport_; // its GL context goes first, taking the modeller's GL objects with it
+}
 
 QAction* MainWindow::action(const QString& objectName) const {
   return findChild<QAction*>(objectName);
@@ -114,20 +118,20 @@ void MainWindow::buildDocks() {
 }
 
 void MainWindow::connectParts() {
-  connect(viewport_, &ViewportWidget::strokeFinished, this, [this](const QString& label) {
+  connect(&viewport_->modeller(), &Modeller::strokeFinished, this, [this](const QString& label) {
     undoStack_->push(new StrokeCommand(viewport_, tr("Stroke (%1)").arg(label)));
   });
   // Steps the history's budget dropped: marked on the stack (Edit ▸ History then names its
   // first row truthfully); the first time, the status bar says so.
   connect(undoStack_, &QUndoStack::indexChanged, this, [this] {
-    const int marked = markDroppedSteps(*undoStack_, viewport_->history());
+    const int marked = markDroppedSteps(*undoStack_, viewport_->modeller().history());
     if (marked == 0) return;
     int dropped = 0;
     for (int k = 0; k < undoStack_->count(); ++k)
       if (const auto* step = dynamic_cast<const StrokeCommand*>(undoStack_->command(k)))
         dropped += step->dropped();
     if (dropped == marked) {
-      const core::EditHistory& h = viewport_->history();
+      const core::EditHistory& h = viewport_->modeller().history();
       showStatusMessage(*statusBar(),
                         tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
                            "its %2 MiB")
@@ -138,12 +142,12 @@ void MainWindow::connectParts() {
   });
   connect(undoStack_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
   connect(undoStack_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
-  connect(viewport_, &ViewportWidget::brushesChanged, this, &MainWindow::refreshBrushes);
-  connect(viewport_, &ViewportWidget::errorOccurred, this,
+  connect(&viewport_->modeller(), &Modeller::brushesChanged, this, &MainWindow::refreshBrushes);
+  connect(&viewport_->modeller(), &Modeller::errorOccurred, this,
           [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
   connect(brushPanel_, &BrushPanel::settingsChanged, this,
-          [this] { viewport_->setBrushSettings(brushPanel_->settings()); });
+          [this] { viewport_->modeller().brushState().setSettings(brushPanel_->settings()); });
   connect(viewport_, &ViewportWidget::radiusStepRequested, this,
           [this](float f) { brushPanel_->setRadius(brushPanel_->radius() * f); });
   connect(viewport_, &ViewportWidget::strengthStepRequested, this,
@@ -151,7 +155,7 @@ void MainWindow::connectParts() {
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
     viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
-    viewport_->setPaintTarget(layersPanel_->paintTarget());
+    viewport_->modeller().brushState().setPaintTarget(layersPanel_->paintTarget());
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
   connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
@@ -159,22 +163,23 @@ void MainWindow::connectParts() {
   applyLayers();
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
-  viewport_->setBrushSettings(brushPanel_->settings());
+  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
   connectLod();
 }
 
 void MainWindow::connectLod() {
-  lodGenerator_ = new LodGenerator([this] { return viewport_->positionsSnapshot(); }, this);
+  lodGenerator_ =
+      new LodGenerator([this] { return viewport_->modeller().positionsSnapshot(); }, this);
   lodGenerator_->setOptions(lodPanel_->liveLodOptions());
   const auto regenerate = [this] {
     if (lodPanel_->lodShown()) lodGenerator_->request();
   };
   // Each change of the surface: the shown LOD follows it at once (a frame's work), and a new one
   // is generated in the background.
-  connect(viewport_, &ViewportWidget::surfaceChanged, this, [this, regenerate] {
-    if (lodPanel_->lodShown() && lodFollower_ && viewport_->hasDocument())
+  connect(&viewport_->modeller(), &Modeller::surfaceChanged, this, [this, regenerate] {
+    if (lodPanel_->lodShown() && lodFollower_ && viewport_->modeller().hasDocument())
       viewport_->setLodMesh(std::make_shared<const core::LodMesh>(
-          lodFollower_->follow(viewport_->document().positions)));
+          lodFollower_->follow(viewport_->modeller().document().positions)));
     regenerate();
   });
   connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
@@ -197,9 +202,9 @@ void MainWindow::connectLod() {
             lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
             lodFollower_ = std::make_unique<LodFollower>(*lod, *lodGenerator_->lodSource());
             // Made from a snapshot the stroke may have moved on from since.
-            if (viewport_->hasDocument())
+            if (viewport_->modeller().hasDocument())
               lod = std::make_shared<const core::LodMesh>(
-                  lodFollower_->follow(viewport_->document().positions));
+                  lodFollower_->follow(viewport_->modeller().document().positions));
             viewport_->setLodMesh(std::move(lod));
           });
   connect(lodGenerator_, &LodGenerator::measured, this,
@@ -212,22 +217,22 @@ void MainWindow::connectLod() {
 
 void MainWindow::updateSaliencyWanted() {
   const bool salientLod = lodPanel_->lodShown() && lodPanel_->liveLodReadsSaliency();
-  viewport_->setSaliencyWanted(layersPanel_->preview() == LayersPanel::Preview::Saliency ||
-                               salientLod);
+  viewport_->modeller().setSaliencyWanted(
+      layersPanel_->preview() == LayersPanel::Preview::Saliency || salientLod);
 }
 
 void MainWindow::refreshBrushes() {
-  gpu::BrushLibrary* library = viewport_->library();
+  gpu::BrushLibrary* library = viewport_->modeller().library();
   if (!library) return;
   std::vector<gpu::BrushManifest> brushes;
   for (const gpu::BrushManifest* b : library->brushes())
     brushes.push_back(*b);
   std::vector<std::string> errors = library->errors();
-  for (const QString& e : viewport_->materialErrors())
+  for (const QString& e : viewport_->modeller().materialErrors())
     errors.push_back(e.toStdString());
-  brushPanel_->setMaterials(viewport_->materialIds());
+  brushPanel_->setMaterials(viewport_->modeller().materialIds());
   brushPanel_->setBrushes(std::move(brushes), std::move(errors));
-  viewport_->setBrushSettings(brushPanel_->settings());
+  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
 }
 
 void MainWindow::updateStatus() {
@@ -243,8 +248,8 @@ void MainWindow::updateStatus() {
           .arg(locale.toString(s.displayedTriangles), locale.toString(s.fullTriangles)));
   lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
   updateMeshActions();
-  if (viewport_->hasDocument()) {
-    const core::Document& d = viewport_->document();
+  if (viewport_->modeller().hasDocument()) {
+    const core::Document& d = viewport_->modeller().document();
     layersPanel_->setLayerState(core::EditLayer::Diffuse, !d.diffuse.uniform());
     layersPanel_->setLayerState(core::EditLayer::Feature, !d.feature.uniform());
     layersPanel_->setLayerState(core::EditLayer::Mask, !d.mask.uniform());
@@ -345,17 +350,17 @@ void MainWindow::startSession() {
 }
 
 void MainWindow::applyUndoBudget() {
-  viewport_->history().setBudget(static_cast<std::size_t>(undoBudgetMiB_) << 20);
+  viewport_->modeller().history().setBudget(static_cast<std::size_t>(undoBudgetMiB_) << 20);
 }
 
 void MainWindow::setUndoBudgetMiB(int mib) {
   undoBudgetMiB_ = std::clamp(mib, kMinUndoMiB, kMaxUndoMiB);
   QSettings().setValue("undo/budgetMiB", undoBudgetMiB_);
-  const std::size_t before = viewport_->history().undoCount();
+  const std::size_t before = viewport_->modeller().history().undoCount();
   applyUndoBudget();
-  const std::size_t after = viewport_->history().undoCount();
+  const std::size_t after = viewport_->modeller().history().undoCount();
   if (after == before) return;
-  markDroppedSteps(*undoStack_, viewport_->history());
+  markDroppedSteps(*undoStack_, viewport_->modeller().history());
   showStatusMessage(*statusBar(),
                     tr("Undo now keeps only the newest %1 steps: %2 older ones did not fit its "
                        "%3 MiB")

@@ -27,6 +27,7 @@ class BrushPanel;
 class LayersPanel;
 class LodFollower;
 class LodGenerator;
+class Modeller;
 class LodPanel;
 class ViewportWidget;
 
@@ -57,6 +58,8 @@ public:
   static constexpr int kMinUndoMiB = 16, kMaxUndoMiB = 16384, kDefaultUndoMiB = 256;
 
   ViewportWidget* viewport() const { return viewport_; }
+  /// The modeller the window's parts observe (document, brushes, strokes, history).
+  Modeller* modeller() const { return modeller_; }
   BrushPanel* brushPanel() const { return brushPanel_; }
   LayersPanel* layersPanel() const { return layersPanel_; }
   LodPanel* lodPanel() const { return lodPanel_; }
@@ -195,6 +198,7 @@ private:
 
   Options options_;
   DocumentActions* documents_ = nullptr;
+  Modeller* modeller_ = nullptr;
   ViewportWidget* viewport_ = nullptr;
   BrushPanel* brushPanel_ = nullptr;
   LayersPanel* layersPanel_ = nullptr;

@@ -10,6 +10,7 @@
 #include "save_compressed_dialog.h"
 #include "shortcut_sheet.h"
 #include "view_actions.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QComboBox>
@@ -109,10 +110,10 @@ void MainWindow::buildMenus() {
           });
   connect(add(file, tr("Save &Compressed…"), "actionSaveCompressed"), &QAction::triggered, this,
           [this] {
-            if (!viewport_->hasDocument()) return;
+            if (!viewport_->modeller().hasDocument()) return;
             viewport_->endStroke();
             SaveCompressedDialog dialog(
-                std::make_shared<const core::Document>(viewport_->document()), this);
+                std::make_shared<const core::Document>(viewport_->modeller().document()), this);
             if (dialog.exec() != QDialog::Accepted) return;
             const QString path = choose(FileRequest::SaveCompressed);
             if (!path.isEmpty()) saveCompressed(path, dialog.options());
@@ -120,10 +121,10 @@ void MainWindow::buildMenus() {
   connect(add(file, tr("&Export Mesh…"), "actionExport", QKeySequence(tr("Ctrl+E"))),
           &QAction::triggered, this, [this] {
             const QString path = choose(FileRequest::Export);
-            if (path.isEmpty() || !viewport_->hasDocument()) return;
+            if (path.isEmpty() || !viewport_->modeller().hasDocument()) return;
             int divisor = lodPanel_->divisor();
             if (!chooser_) { // interactive: ask which level, offering the displayed one
-              const int n = viewport_->document().size();
+              const int n = viewport_->modeller().document().size();
               QStringList levels;
               for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
                 levels << (d == 1 ? tr("Full detail (%2 triangles)")
@@ -163,7 +164,7 @@ void MainWindow::buildMenus() {
     QDialog dialog(this);
     dialog.setWindowTitle(tr("Preferences"));
     auto* form = new QFormLayout(&dialog);
-    const core::EditHistory& h = viewport_->history();
+    const core::EditHistory& h = viewport_->modeller().history();
     auto* undoMemory = new QSpinBox(&dialog);
     undoMemory->setObjectName(QStringLiteral("undoMemory"));
     undoMemory->setRange(kMinUndoMiB, kMaxUndoMiB);

@@ -4,6 +4,7 @@
 #include "main_window.h"
 #include "mesh_size_dialog.h"
 #include "stroke_command.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/resize.h"
@@ -33,18 +34,18 @@ std::optional<MainWindow::MeshOutcome>
 MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
   BackgroundTaskRunner& runner = documents_->runner();
   // On the GPU (GL started), not just pending: the result is applied there.
-  if (!viewport_->glReady() || !viewport_->hasDocument() || viewport_->stroking() || runner.busy())
+  if (!viewport_->glReady() || !viewport_->modeller().hasDocument() || viewport_->stroking() || runner.busy())
     return std::nullopt;
   if (!control) control = std::make_shared<TaskControl>();
   // The copy is taken here, on the GUI thread; the worker never touches the viewport.
-  auto source = std::make_shared<const core::Document>(viewport_->document());
+  auto source = std::make_shared<const core::Document>(viewport_->modeller().document());
   auto outcome = std::make_shared<MeshOutcome>();
   // What tells that the model changed while the task ran (input reaches the viewport in the
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
     return std::tuple(viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(),
                       undoStack_->count(),
-                      viewport_->hasDocument() ? viewport_->document().size() : 0);
+                      viewport_->modeller().hasDocument() ? viewport_->modeller().document().size() : 0);
   };
   const auto before = mark();
   // The menu item says how far the task is (the progress dialog appears after 100 ms).
@@ -119,7 +120,7 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
   if (!outcome) return false;
   bool recorded = false;
   try {
-    recorded = viewport_->applyChange(outcome->document, "Even Out Samples");
+    recorded = viewport_->modeller().applyChange(outcome->document, "Even Out Samples");
   } catch (const std::exception& e) {
     showMeshError(task.failure, QString::fromUtf8(e.what()));
     return false;
@@ -134,8 +135,8 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
 }
 
 bool MainWindow::remesh(int n, std::shared_ptr<TaskControl> control) {
-  if (!viewport_->hasDocument()) return false;
-  const int current = viewport_->document().size();
+  if (!viewport_->modeller().hasDocument()) return false;
+  const int current = viewport_->modeller().document().size();
   if (n == 0) n = current;
   MeshTask task;
   task.action = QStringLiteral("actionRemesh");
@@ -166,8 +167,8 @@ bool MainWindow::remesh(int n, std::shared_ptr<TaskControl> control) {
 }
 
 bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
-  if (!viewport_->hasDocument()) return false;
-  const int current = viewport_->document().size();
+  if (!viewport_->modeller().hasDocument()) return false;
+  const int current = viewport_->modeller().document().size();
   if (n == current) {
     statusBar()->showMessage(tr("The model is already N = %1: nothing to resample").arg(n), 8000);
     return false;
@@ -199,9 +200,9 @@ bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
 }
 
 void MainWindow::openMeshSizeDialog(bool remeshing) {
-  if (!viewport_->hasDocument()) return;
+  if (!viewport_->modeller().hasDocument()) return;
   MeshSizeDialog dialog(remeshing ? MeshSizeDialog::Kind::Remesh : MeshSizeDialog::Kind::Resolution,
-                        viewport_->document().size(), this);
+                        viewport_->modeller().document().size(), this);
   if (dialog.exec() != QDialog::Accepted) return;
   if (remeshing)
     remesh(dialog.size());
@@ -210,7 +211,7 @@ void MainWindow::openMeshSizeDialog(bool remeshing) {
 }
 
 void MainWindow::updateMeshActions() {
-  const bool ready = viewport_->glReady() && viewport_->hasDocument() && !viewport_->stroking() &&
+  const bool ready = viewport_->glReady() && viewport_->modeller().hasDocument() && !viewport_->stroking() &&
                      !documents_->runner().busy();
   for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
     if (QAction* a = action(QString::fromLatin1(name))) a->setEnabled(ready);

@@ -6,6 +6,7 @@
 #include "brush_toolbar.h"
 #include "canvas_brush_adjust.h"
 #include "main_window.h"
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/gpu/brush_library.h"
@@ -24,13 +25,13 @@ void MainWindow::buildToolBars() {
 
   const auto fillBrushes = [this, brushes] {
     std::vector<gpu::BrushManifest> list;
-    if (gpu::BrushLibrary* library = viewport_->library())
+    if (gpu::BrushLibrary* library = viewport_->modeller().library())
       for (const gpu::BrushManifest* b : library->brushes())
         list.push_back(*b);
     brushes->setBrushes(list);
     brushes->setCurrentBrush(brushPanel_->currentBrushId());
   };
-  connect(viewport_, &ViewportWidget::brushesChanged, this, fillBrushes);
+  connect(&viewport_->modeller(), &Modeller::brushesChanged, this, fillBrushes);
   fillBrushes();
   connect(brushes, &BrushToolBar::brushChosen, brushPanel_, &BrushPanel::selectBrush);
 

@@ -1,5 +1,6 @@
 #include "stroke_command.h"
 
+#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/edit_history.h"
@@ -14,13 +15,13 @@ StrokeCommand::StrokeCommand(ViewportWidget* viewport, const QString& text)
     : QUndoCommand(text), viewport_(viewport) {}
 
 void StrokeCommand::undo() {
-  if (!dropped_ && !viewport_->undoStroke()) markDropped();
+  if (!dropped_ && !viewport_->modeller().undoStroke()) markDropped();
   done_ = false;
 }
 
 void StrokeCommand::redo() {
   if (done_) return; // QUndoStack::push() calls redo(); the stroke is already on the model
-  if (!dropped_) viewport_->redoStroke();
+  if (!dropped_) viewport_->modeller().redoStroke();
   done_ = true;
 }
 

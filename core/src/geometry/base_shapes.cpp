@@ -3,6 +3,7 @@
 #include "detail/parallel_rows.h"
 #include "geometry/octahedral_direction.h"
 
+#include "octaclay/core/geometry/capsule.h"
 #include "octaclay/core/geometry/seaming.h"
 
 #include <algorithm>
@@ -83,6 +84,8 @@ Vec3f surfacePoint(BaseShape shape, Dir d) {
   case BaseShape::Blob:
     t = blobRadius(d.x, d.y, d.z);
     break;
+  case BaseShape::Capsule: // makeBaseShape samples it with makeCapsule
+    break;
   }
   return {float(t * d.x), float(t * d.y), float(t * d.z)};
 }
@@ -90,7 +93,8 @@ Vec3f surfacePoint(BaseShape shape, Dir d) {
 } // namespace
 
 std::optional<BaseShape> parseBaseShape(std::string_view name) {
-  for (BaseShape s : {BaseShape::Sphere, BaseShape::Cube, BaseShape::Cylinder, BaseShape::Blob})
+  for (BaseShape s : {BaseShape::Sphere, BaseShape::Cube, BaseShape::Cylinder, BaseShape::Blob,
+                      BaseShape::Capsule})
     if (baseShapeName(s) == name) return s;
   return std::nullopt;
 }
@@ -105,11 +109,14 @@ std::string_view baseShapeName(BaseShape shape) {
     return "cylinder";
   case BaseShape::Blob:
     return "blob";
+  case BaseShape::Capsule:
+    return "capsule";
   }
   return "sphere";
 }
 
 GeometryImage makeBaseShape(BaseShape shape, int n) {
+  if (shape == BaseShape::Capsule) return makeCapsule(n, Capsule{});
   GeometryImage image(n);
   const int side = image.side();
   detail::parallelRows(side, [&](int rowBegin, int rowEnd) {
@@ -135,6 +142,8 @@ float baseShapeDistance(BaseShape shape, Vec3f p) {
     return float(roundedBoxDistance<2>({std::hypot(x, y), z}, kCylinderRounding));
   case BaseShape::Blob:
     return r > 0 ? float(r - blobRadius(x / r, y / r, z / r)) : -1.0f;
+  case BaseShape::Capsule:
+    return capsuleDistance(Capsule{}, p);
   }
   return 0;
 }

@@ -130,6 +130,7 @@ void GpuDocument::restore(core::EditLayer layer, core::TexelRect rect,
 }
 
 void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
+  note(layer, rect);
   const core::Layer* l = mirrorLayer(layer);
   if (!l || !l->uniform()) { // straight from the mirror's memory
     const int c = channels(layer);
@@ -160,6 +161,7 @@ void GpuDocument::pull(core::EditLayer layer, core::TexelRect rect) {
 }
 
 void GpuDocument::changed(core::EditLayer layer, core::TexelRect rect) {
+  note(layer, rect);
   if (!deferring_ || layer == core::EditLayer::Positions) {
     pull(layer, rect);
     return;
@@ -241,6 +243,33 @@ void GpuDocument::writeSaliency(std::span<const float> saliency) {
   const int side = document_.positions.side();
   push(core::EditLayer::Positions,
        {0, 0, side, side}); // the mirror's texels, now with the saliency
+}
+
+void GpuDocument::note(core::EditLayer layer, core::TexelRect rect) {
+  std::vector<core::TexelRect>& rects = unpublished_[index(layer)];
+  rects.push_back(rect);
+  // A long stroke between publications: keep the list short.
+  if (rects.size() > 256) rects = core::mergeRects(std::move(rects));
+}
+
+void GpuDocument::markAllChanged() {
+  const int side = document_.positions.side();
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask})
+    unpublished_[index(layer)] = {core::TexelRect{0, 0, side, side}};
+}
+
+bool GpuDocument::publishChanges(ChangeKind kind) {
+  bool any = false;
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask}) {
+    std::vector<core::TexelRect> rects = std::move(unpublished_[index(layer)]);
+    unpublished_[index(layer)].clear();
+    if (rects.empty()) continue;
+    any = true;
+    if (follower_) follower_({kind, layer, core::mergeRects(std::move(rects))});
+  }
+  return any;
 }
 
 core::TileApplier undoApplier(GpuDocument& document) {

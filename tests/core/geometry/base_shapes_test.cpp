@@ -120,6 +120,7 @@ void BaseShapesTest::names() {
   QCOMPARE(baseShapeName(BaseShape::Cube), std::string_view("cube"));
   QCOMPARE(baseShapeName(BaseShape::Cylinder), std::string_view("cylinder"));
   QCOMPARE(baseShapeName(BaseShape::Blob), std::string_view("blob"));
+  QCOMPARE(baseShapeName(BaseShape::Capsule), std::string_view("capsule"));
   for (const char* bad : {"", "torus", "spheres", "sphere ", "cub"})
     QVERIFY2(!parseBaseShape(bad).has_value(), bad);
 }

@@ -10,8 +10,31 @@
 #include <cstdint>
 #include <functional>
 #include <utility>
+#include <vector>
 
 namespace octaclay::gpu {
+
+/// What a change of the document was part of, for the followers that act only when an edit
+/// settles (the saliency, the live LOD).
+enum class ChangeKind {
+  Dabs,        ///< a stroke's dabs (more may follow)
+  Relaxation,  ///< keep detail's relaxation during or after a stroke
+  StrokeEnd,   ///< a stroke ended (its last dabs and relaxation, or nothing more)
+  Undo,        ///< history stepped back
+  Redo,        ///< history stepped forward
+  Applied,     ///< a whole-document change applied in place (Even Out) or a refused stroke undone
+  NewDocument, ///< every layer uploaded anew
+};
+
+/// One change of a layer's texture (and mirror): the one kind of event GpuDocument reports to
+/// its followers (the renderer's normals and stretch map, the saliency, the live LOD). The
+/// saliency written into the positions' alpha (writeSaliency) is not a change of the surface and
+/// is not reported.
+struct DocumentChange {
+  ChangeKind kind = ChangeKind::Dabs;
+  core::EditLayer layer = core::EditLayer::Positions;
+  std::vector<core::TexelRect> rects; ///< merged (core::mergeRects); empty: nothing of the layer
+};
 
 /// A document being edited: its layers as GPU textures (each with a scratch twin for
 /// ping-pong passes) and a CPU mirror that the engine keeps equal to them, region by region,
@@ -63,6 +86,20 @@ public:
 
   static int channels(core::EditLayer layer);
 
+  // The change feed: every texture write that goes through changed(), push() or restore() is
+  // collected per layer and reported by publishChanges() to the one follower, so no caller
+  // passes rectangles around.
+
+  /// The function told of each change (one call per layer changed); empty: none.
+  void setChangeFollower(std::function<void(const DocumentChange&)> follower) {
+    follower_ = std::move(follower);
+  }
+  /// Reports what changed since the last call, as kind, then forgets it. Returns whether
+  /// anything had changed.
+  bool publishChanges(ChangeKind kind);
+  /// Marks every texel of every layer changed (a new upload).
+  void markAllChanged();
+
   /// Writes saliency ((N+1)² values, row-major) into the positions' alpha of the mirror and the
   /// texture; xyz stay as they are. Throws core::Error(InvalidArgument) for a wrong count.
   void writeSaliency(std::span<const float> saliency);
@@ -84,6 +121,10 @@ private:
   /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred (empty: none).
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
+  std::array<std::vector<core::TexelRect>, 4> unpublished_; // changed since publishChanges()
+  std::function<void(const DocumentChange&)> follower_;
+  /// Notes rect of layer as changed for the next publishChanges().
+  void note(core::EditLayer layer, core::TexelRect rect);
 };
 
 /// Undo/redo writes through this: each region goes to the mirror and the texture.

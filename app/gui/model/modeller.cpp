@@ -1,0 +1,273 @@
+#include "modeller.h"
+
+#include "brush_setup.h"
+#include "current_context.h"
+#include "data_folders.h"
+
+#include "octaclay/gpu/brush_library.h"
+#include "octaclay/gpu/gl_context.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+
+namespace octaclay::app {
+
+Modeller::Modeller(QObject* parent) : QObject(parent), strokes_(*this) {
+  session_.setChangeFollower([this](const gpu::DocumentChange& c) { documentChanged(c); });
+  connect(&saliency_, &SaliencyKeeper::jobFinished, this, &Modeller::cpuSaliencyFinished);
+  connect(&saliency_, &SaliencyKeeper::failed, this, &Modeller::fail);
+}
+
+Modeller::~Modeller() {
+  strokes_.settle();
+  saliency_.waitForJob();
+}
+
+bool Modeller::glStarted(GlHost& host) {
+  host_ = &host;
+  try {
+    context_ = std::make_unique<gpu::GlContext>(gpu::GlContext::adoptCurrent());
+    library_ = std::make_unique<gpu::BrushLibrary>(
+        gpu::BrushCatalog::defaultSearchPath(builtInBrushFolder()));
+    const QString renderer = QString::fromLatin1(
+        reinterpret_cast<const char*>(host.context()->functions()->glGetString(GL_RENDERER)));
+    // On a software rasterizer the GPU pass is CPU work that would hold the GUI thread for
+    // seconds at N = 1024; the threaded CPU reference takes less, in the background.
+    saliency_.setOnCpu(renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                       renderer.contains("SwiftShader"));
+    materials_.scan(gpu::MaterialCatalog::defaultSearchPath(builtInMaterialFolder()));
+    library_->engine().setMaterials(materials_);
+  } catch (const std::exception& e) {
+    library_.reset();
+    fail(QStringLiteral("OpenGL 4.3 core is needed for sculpting: %1").arg(e.what()));
+    return false;
+  }
+  session_.setBrushes(library_->engine(), library_->catalog());
+  emit brushesChanged();
+  if (pending_) {
+    core::Document document = std::move(*pending_);
+    pending_.reset();
+    uploadDocument(std::move(document), false);
+  }
+  return true;
+}
+
+void Modeller::glStopping() {
+  strokes_.settle();
+  saliency_.waitForJob();
+  session_.releaseGpu();
+  saliency_.releaseGpu();
+  library_.reset();
+  context_.reset();
+  host_ = nullptr;
+}
+
+bool Modeller::setDocument(core::Document document, bool keepView) {
+  strokes_.settle();
+  if (!host_ || !host_->context()) {
+    pending_ = std::move(document);
+    session_.history().clear();
+    return true;
+  }
+  CurrentContext current(*host_);
+  return uploadDocument(std::move(document), keepView);
+}
+
+bool Modeller::uploadDocument(core::Document document, bool keepView) {
+  if (!library_) {
+    pending_ = std::move(document); // kept so it can still be saved
+    return false;
+  }
+  try {
+    drainGlErrors();
+    // The upload is GL work, so it stays on this thread; between its bands the event loop runs
+    // (timers, repaints, the progress dialog) but no user input: nothing may edit meanwhile.
+    QElapsedTimer sinceEvents;
+    sinceEvents.start();
+    session_.setDocument(std::move(document), [&](float) {
+      if (sinceEvents.elapsed() < 30) return;
+      uploading_ = true;
+      QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+      uploading_ = false;
+      host_->makeCurrent(); // a repaint in between may have left another context current
+      sinceEvents.restart();
+    });
+  } catch (const std::exception& e) {
+    uploading_ = false;
+    fail(QStringLiteral("Could not load the model onto the GPU: %1").arg(e.what()));
+    return false;
+  }
+  emit documentReplaced(keepView);
+  host_->update();
+  return true;
+}
+
+bool Modeller::hasDocument() const {
+  return session_.hasDocument() || pending_.has_value();
+}
+
+const core::Document& Modeller::document() const {
+  if (!session_.hasDocument()) return *pending_;
+  auto& self = const_cast<Modeller&>(*this);
+  self.strokes_.settle(); // a stroke's relaxation is part of the document
+  if (!session_.gpuDocument().mirrorStale()) return session_.document();
+  // Mid-stroke (autosave, save): the session reads the deferred paint back, which is GL work.
+  CurrentContext current(*host_, CurrentContext::Mode::IfNotCurrent);
+  return session_.document();
+}
+
+std::shared_ptr<const core::GeometryImage> Modeller::positionsSnapshot() const {
+  if (!hasDocument()) return nullptr;
+  return std::make_shared<const core::GeometryImage>(document().positions);
+}
+
+QStringList Modeller::reloadBrushes() {
+  QStringList failed;
+  if (!library_) return failed;
+  gpu::BrushLibrary::ReloadReport report;
+  {
+    CurrentContext current(*host_);
+    report = library_->reloadChanged();
+  }
+  for (const std::string& f : report.failed)
+    failed << QString::fromStdString(f);
+  session_.brushesReloaded(report.reloaded);
+  if (!report.reloaded.empty() || !report.failed.empty() || !report.added.empty() ||
+      !report.removed.empty())
+    emit brushesChanged();
+  return failed;
+}
+
+QStringList Modeller::materialIds() const {
+  QStringList ids;
+  for (const gpu::Material& m : materials_.materials())
+    ids << QString::fromStdString(m.id);
+  return ids;
+}
+
+QStringList Modeller::materialErrors() const {
+  QStringList errors;
+  for (const std::string& e : materials_.errors())
+    errors << QString::fromStdString(e);
+  return errors;
+}
+
+void Modeller::documentChanged(const gpu::DocumentChange& change) {
+  if (change.layer == core::EditLayer::Positions) saliency_.surfaceEdited();
+  for (const auto& follow : followers_)
+    follow(change);
+  switch (change.kind) {
+  case gpu::ChangeKind::Dabs:
+  case gpu::ChangeKind::Relaxation:
+    break; // the stroke goes on: its end settles (strokeSettled)
+  default:
+    if (change.layer == core::EditLayer::Positions) refreshSaliency();
+    break;
+  }
+}
+
+void Modeller::followChanges(std::function<void(const gpu::DocumentChange&)> follower) {
+  followers_.push_back(std::move(follower));
+}
+
+void Modeller::strokeSettled(const QString& label) {
+  refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
+  if (!label.isEmpty()) emit strokeFinished(label);
+  emit surfaceChanged();
+}
+
+void Modeller::setSaliencyWanted(bool wanted) {
+  saliency_.setWanted(wanted);
+  if (!wanted || !saliency_.stale() || !session_.hasDocument() || !host_) return;
+  {
+    CurrentContext current(*host_);
+    refreshSaliency();
+  }
+  host_->update();
+  emit surfaceChanged();
+}
+
+void Modeller::refreshSaliency() {
+  // Not while a relaxation reads the mirror beside the GUI: its end refreshes.
+  if (session_.hasDocument() && library_ && !strokes_.relaxing())
+    saliency_.refresh(session_.gpuDocument());
+}
+
+void Modeller::cpuSaliencyFinished() {
+  if (!session_.hasDocument() || strokes_.relaxing()) return; // the stroke's end starts anew
+  {
+    CurrentContext current(*host_);
+    // The surface changed meanwhile: again (a stroke's end starts its own).
+    if (saliency_.storeJob(session_.gpuDocument()) && !session_.stroking()) refreshSaliency();
+  }
+  if (saliency_.current()) {
+    host_->update();
+    emit surfaceChanged(); // a salient LOD is regenerated with it
+  }
+}
+
+bool Modeller::undoStroke() {
+  return stepHistory(true);
+}
+
+bool Modeller::redoStroke() {
+  return stepHistory(false);
+}
+
+bool Modeller::stepHistory(bool undo) {
+  strokes_.settle();
+  if (!session_.hasDocument() || !host_ || !(undo ? canUndo() : canRedo()) || session_.stroking())
+    return false;
+  const core::EditStep* s = nullptr;
+  {
+    CurrentContext current(*host_);
+    try {
+      s = undo ? session_.undo() : session_.redo(); // the feed redraws and refreshes
+    } catch (const std::exception& e) {
+      fail(QString::fromUtf8(e.what()));
+    }
+  }
+  host_->update();
+  if (s) emit surfaceChanged();
+  return s != nullptr;
+}
+
+bool Modeller::applyChange(const core::Document& after, const std::string& label) {
+  strokes_.settle();
+  if (!session_.hasDocument() || !host_ || session_.stroking()) return false;
+  bool recorded = false;
+  {
+    CurrentContext current(*host_);
+    drainGlErrors();
+    try {
+      recorded = !session_.applyChange(after, label).empty();
+    } catch (const std::exception&) {
+      // The layers may be partly written: redraw all of it.
+      session_.gpuDocument().markAllChanged();
+      session_.gpuDocument().publishChanges(gpu::ChangeKind::Applied);
+      host_->update();
+      emit surfaceChanged();
+      throw;
+    }
+  }
+  host_->update();
+  if (recorded) emit surfaceChanged();
+  return recorded;
+}
+
+void Modeller::fail(const QString& message) {
+  error_ = message;
+  emit errorOccurred(message);
+}
+
+void Modeller::drainGlErrors() {
+  // Qt and VTK may leave an error pending; the engine checks errors after its own calls.
+  if (!host_ || !host_->context()) return;
+  QOpenGLFunctions* gl = host_->context()->functions();
+  for (int k = 0; k < 16 && gl->glGetError() != GL_NO_ERROR; ++k) {
+  }
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,144 @@
+#pragma once
+
+#include "brush_state.h"
+#include "gl_host.h"
+#include "saliency_keeper.h"
+#include "sculpt_session.h"
+#include "stroke_driver.h"
+
+#include "octaclay/core/document/document.h"
+#include "octaclay/core/document/edit_history.h"
+#include "octaclay/gpu/gpu_document.h"
+#include "octaclay/gpu/material_catalog.h"
+
+#include <QObject>
+#include <QStringList>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace octaclay::gpu {
+class BrushLibrary;
+class GlContext;
+} // namespace octaclay::gpu
+
+namespace octaclay::app {
+
+/// The modeller without its widgets: the edited document (on the GPU, in a SculptSession), the
+/// brushes and materials, the brush state, the strokes (StrokeDriver), the history with undo and
+/// redo, and the followers of the document's one change feed (gpu::DocumentChange: the saliency
+/// here, the renderer's normals and stretch map through followChanges, the live LOD through
+/// surfaceChanged). The window, docks, tool bar, header and viewport observe it. GUI thread;
+/// its GL work runs in the GlHost's context (the viewport's), made current by the modeller.
+class Modeller : public QObject {
+  Q_OBJECT
+public:
+  explicit Modeller(QObject* parent = nullptr);
+  ~Modeller() override;
+
+  /// The host's context is current and new: loads the brushes and materials, uploads a pending
+  /// document. Returns false with error() set when GL cannot sculpt.
+  bool glStarted(GlHost& host);
+  /// The host's context is current and about to go: frees every GL object.
+  void glStopping();
+  bool glReady() const { return library_ != nullptr; }
+  GlHost* glHost() const { return host_; }
+
+  /// Replaces the document and clears the history (uploaded now if GL is ready, else at GL start).
+  /// Returns false with error() set if the upload failed; the previous document then stays.
+  /// documentReplaced(keepView) tells the viewport.
+  bool setDocument(core::Document document, bool keepView = false);
+  bool hasDocument() const;
+  /// The document as edited so far (the CPU mirror), a stroke's relaxation settled first. Only
+  /// valid if hasDocument().
+  const core::Document& document() const;
+  /// A copy of the current positions (xyz and saliency), or null without a document.
+  std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
+  /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
+  float modelDiagonal() const { return session_.diagonal(); }
+  /// Whether a document is being uploaded (its bands let the event loop run: draw nothing).
+  bool uploading() const { return uploading_; }
+
+  /// The session the document lives in (for drawing it: gpuDocument()).
+  SculptSession& session() { return session_; }
+  const SculptSession& session() const { return session_; }
+  BrushState& brushState() { return brushState_; }
+  StrokeDriver& strokes() { return strokes_; }
+  const StrokeDriver& strokes() const { return strokes_; }
+
+  /// The brush library (null until GL started).
+  gpu::BrushLibrary* library() { return library_.get(); }
+  /// Polls the brush folders and reloads what changed or appeared; emits brushesChanged() if
+  /// anything did. Returns the messages of failed reloads.
+  QStringList reloadBrushes();
+  /// The materials splat brushes can use (engine order) and those that failed to load.
+  QStringList materialIds() const;
+  QStringList materialErrors() const;
+
+  /// While wanted (the saliency heat map, a salient LOD), the positions' alpha holds the saliency
+  /// of the current surface: recomputed when an edit settles, on the GPU or (setSaliencyOnCpu,
+  /// the default on a software rasterizer) with the CPU reference on a worker thread.
+  void setSaliencyWanted(bool wanted);
+  bool saliencyCurrent() const { return saliency_.current(); }
+  void setSaliencyOnCpu(bool onCpu) { saliency_.setOnCpu(onCpu); }
+  bool saliencyOnCpu() const { return saliency_.onCpu(); }
+
+  core::EditHistory& history() { return session_.history(); }
+  bool canUndo() const { return session_.history().canUndo(); }
+  bool canRedo() const { return session_.history().canRedo(); }
+  /// Reverts / reapplies the newest step; false if there is none or a stroke is being made.
+  bool undoStroke();
+  bool redoStroke();
+  /// Makes `after` (same size) the document as one history step labelled label
+  /// (SculptSession::applyChange). Returns whether a step was recorded. Throws what the session
+  /// throws.
+  bool applyChange(const core::Document& after, const std::string& label);
+  /// Whether the last stroke begun relaxed what it stretched (keep detail).
+  bool keepsDetail() const { return session_.keepDetail(); }
+
+  /// follower is told of every change of the document (after the saliency is), GL current.
+  void followChanges(std::function<void(const gpu::DocumentChange&)> follower);
+
+  /// Why GL or a brush failed, empty if nothing did.
+  QString error() const { return error_; }
+  /// Reports a failure (errorOccurred).
+  void fail(const QString& message);
+  /// Drops GL errors Qt or VTK left pending (GL current): the engine checks its own.
+  void drainGlErrors();
+  /// A stroke ended (StrokeDriver): label names the step recorded, empty when none was.
+  void strokeSettled(const QString& label);
+
+signals:
+  /// A step was recorded by a stroke (labelled with its brush).
+  void strokeFinished(const QString& label);
+  void brushesChanged();
+  void errorOccurred(const QString& message);
+  /// A new document was uploaded; keepView: the camera should stay.
+  void documentReplaced(bool keepView);
+  /// The surface changed (dabs, a finished stroke, undo, redo, a new document, the saliency in).
+  void surfaceChanged();
+
+private:
+  bool uploadDocument(core::Document document, bool keepView);
+  void documentChanged(const gpu::DocumentChange& change);
+  void refreshSaliency();
+  void cpuSaliencyFinished();
+  bool stepHistory(bool undo);
+
+  GlHost* host_ = nullptr;
+  SculptSession session_;
+  BrushState brushState_;
+  StrokeDriver strokes_;
+  SaliencyKeeper saliency_;
+  std::unique_ptr<gpu::GlContext> context_;
+  std::unique_ptr<gpu::BrushLibrary> library_;
+  gpu::MaterialCatalog materials_;
+  std::optional<core::Document> pending_; // set before GL started (or when it failed)
+  std::vector<std::function<void(const gpu::DocumentChange&)>> followers_;
+  bool uploading_ = false;
+  QString error_;
+};
+
+} // namespace octaclay::app
