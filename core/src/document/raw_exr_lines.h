@@ -36,6 +36,8 @@ bool readRawLines(const std::filesystem::path& path, const Imf::Header& header,
 /// Writes document's pixels as header's lines after OpenEXR's header bytes (magic number to the
 /// end of the attributes, the offset table's place included but not filled), then fills the
 /// offset table, all through sink. header's channels: P.X, P.Y, P.Z float, the layers half.
+/// Called from any thread but the process's main one (a modeller's worker), its threads run at
+/// the lowest CPU priority while they write, so the GUI and its GL driver keep the cores.
 void writeRawLines(const Document& document, const Imf::Header& header,
                    const std::vector<std::uint8_t>& headerBytes, ByteSink& sink);
 
