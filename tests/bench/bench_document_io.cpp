@@ -1,10 +1,14 @@
 // Reading and writing EXR documents at N = 1024, 4096 and 8192, each beside a plain read (cat)
 // or copy (cp) of the same file's bytes measured in the same run (issue 32: a read within 3x of
-// cat, a write within 3x of cp). The files go to $OCTACLAY_BENCH_DIR (else the temporary
-// folder) and are removed at the end; N = 8192 needs about 2 GB of disk and 4 GB of memory.
-// Times are the best of the iterations: the machine is shared.
+// cat, a write within 3x of cp). BM_Info and BM_New are what `octaclay-cli info` and `new` do
+// besides starting: the positions read and every figure info prints; the sphere made and written.
+// The files go to $OCTACLAY_BENCH_DIR (else the temporary folder) and are removed at the end; N =
+// 8192 needs about 2 GB of disk and 4 GB of memory. Times are the best of the iterations: the
+// machine is shared.
+#include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/measure/stretch.h"
 
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
@@ -99,6 +103,17 @@ double copySeconds(const fs::path& from, const fs::path& to, int repeats) {
   return best;
 }
 
+// The file the reading benchmarks read: the one BM_WriteDocument left, else written now with
+// the benchmark's compression (a filter that runs a read alone).
+const fs::path& fileToRead(const benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  static fs::path path;
+  path = documentPath(n);
+  if (!fs::exists(path))
+    writeDocument(document(n), path, kCompressions.at(static_cast<std::size_t>(state.range(1))));
+  return path;
+}
+
 void report(benchmark::State& state, double best, double baseline, const char* ratioName,
             const fs::path& file) {
   state.counters["best_s"] = best;
@@ -118,6 +133,7 @@ void BM_WriteDocument(benchmark::State& state) {
 // Every layer, as the modeller and `stroke` read (the file BM_WriteDocument left).
 void BM_ReadDocument(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
   const double best = bestSeconds(state, [&] {
     Document read = readDocument(documentPath(n));
     benchmark::DoNotOptimize(read.positions.texels().data());
@@ -128,11 +144,39 @@ void BM_ReadDocument(benchmark::State& state) {
 // Positions only, as `info` reads.
 void BM_ReadPositions(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
   const double best = bestSeconds(state, [&] {
     Document read = readDocument(documentPath(n), {.layers = false});
     benchmark::DoNotOptimize(read.positions.texels().data());
   });
   report(state, best, catSeconds(documentPath(n), 3), "x_cat", documentPath(n));
+}
+
+// What `octaclay-cli info` does once started: the positions read, the mesh facts and the
+// stretch summary it prints.
+void BM_Info(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  fileToRead(state);
+  const double best = bestSeconds(state, [&] {
+    const Document read = readDocument(documentPath(n), {.layers = false});
+    const DocumentInfo info = describeDocument(read);
+    const StretchSummary stretch = summarizeStretch(read.positions);
+    benchmark::DoNotOptimize(info.degenerateTriangles);
+    benchmark::DoNotOptimize(stretch.p99OverMedian);
+  });
+  report(state, best, catSeconds(documentPath(n), 3), "x_cat", documentPath(n));
+}
+
+// What `octaclay-cli new --size N` does once started: the sphere made and written (fsync
+// included; cp's copy is not synced).
+void BM_New(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const DocumentWriteOptions& options = kCompressions.at(static_cast<std::size_t>(state.range(1)));
+  const double best = bestSeconds(state, [&] {
+    const Document made = makeDocument(makeBaseShape(BaseShape::Sphere, n));
+    writeDocument(made, documentPath(n), options);
+  });
+  report(state, best, copySeconds(documentPath(n), copyPath(n), 3), "x_cp", documentPath(n));
 }
 
 } // namespace
@@ -148,7 +192,9 @@ int main(int argc, char** argv) {
            std::vector<std::pair<std::string, void (*)(benchmark::State&)>>{
                {"BM_WriteDocument", BM_WriteDocument},
                {"BM_ReadDocument", BM_ReadDocument},
-               {"BM_ReadPositions", BM_ReadPositions}})
+               {"BM_ReadPositions", BM_ReadPositions},
+               {"BM_Info", BM_Info},
+               {"BM_New", BM_New}})
         benchmark::RegisterBenchmark(name.c_str(), fn)
             ->Args({n, static_cast<int64_t>(c)})
             ->Iterations(iterations)

@@ -2,6 +2,7 @@
 // restarts after it are simulated inside this one process by giving each store a PID of its
 // own: one that no process has (crashed) or this process's real one (running).
 
+#include "autosaver.h"
 #include "recovery_store.h"
 
 #include "octaclay/core/document/document.h"
@@ -11,6 +12,7 @@
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 #include <signal.h>
 #include <sys/resource.h>
@@ -91,6 +93,7 @@ private slots:
   void reusedOwnPidCountsAsCrashed();
   void corruptRecoveryThrows();
   void failedSaveKeepsPreviousRecovery();
+  void autosaveRunsOnAWorkerAndEndsWhole();
 
 private:
   QString folder() const { return dir_->path() + "/recovery"; }
@@ -344,5 +347,55 @@ void RecoveryStoreTest::failedSaveKeepsPreviousRecovery() {
 }
 
 // No QApplication: the store is Qt Core only, and offscreen widgets would only slow this down.
+// The modeller's autosave (Autosaver): start() hands a snapshot to a worker and returns; the GUI
+// thread's event loop keeps turning while the file is encoded and written; a second start() is
+// refused while one runs; the recovery it leaves is whole and bit-exact; and a save still in
+// flight when the autosaver goes (the window quitting) finishes before it is gone, leaving no
+// temporary beside it.
+void RecoveryStoreTest::autosaveRunsOnAWorkerAndEndsWhole() {
+  RecoveryStore store(folder(), kCrashedPid);
+  QVERIFY(store.beginSession());
+  // N = 2048 (about half a second to write here): long enough to see the loop turn meanwhile.
+  const auto blob = std::make_shared<const core::Document>(
+      core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, 2048)));
+  const auto sphere = std::make_shared<const core::Document>(
+      core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 1024)));
+  int finished = 0, ticksBeforeFinished = 0;
+  QString error = "never finished";
+  {
+    octaclay::app::Autosaver saver(store);
+    connect(&saver, &octaclay::app::Autosaver::finished, this, [&](const QString& e) {
+      error = e;
+      ++finished;
+    });
+    QTimer tick;
+    connect(&tick, &QTimer::timeout, this, [&] { ticksBeforeFinished += finished == 0; });
+    tick.start(5);
+    QVERIFY(saver.start(blob, "/models/blob.exr"));
+    QVERIFY(saver.busy());
+    QVERIFY(!saver.start(sphere, "/models/sphere.exr")); // one at a time
+    QTRY_COMPARE_WITH_TIMEOUT(finished, 1, 60000);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QVERIFY2(ticksBeforeFinished >= 2, qPrintable(QString::number(ticksBeforeFinished)));
+    QVERIFY(!saver.busy());
+    {
+      RecoveryStore reader(folder(), kRestartedPid);
+      const auto pending = reader.pending();
+      QVERIFY(pending.has_value());
+      QCOMPARE(pending->originalPath, QString("/models/blob.exr"));
+      QVERIFY(positionsBitExact(reader.load(*pending), *blob));
+    }
+    // The second save is in flight as the autosaver goes.
+    QVERIFY(saver.start(sphere, "/models/sphere.exr"));
+  }
+  RecoveryStore restarted(folder(), kRestartedPid);
+  const auto pending = restarted.pending();
+  QVERIFY(pending.has_value());
+  QCOMPARE(pending->originalPath, QString("/models/sphere.exr"));
+  QVERIFY(positionsBitExact(restarted.load(*pending), *sphere));
+  for (const QString& name : listFolder(folder()))
+    QVERIFY2(!name.contains("tmp"), qPrintable(name)); // no half-written file left
+}
+
 QTEST_GUILESS_MAIN(RecoveryStoreTest)
 #include "recovery_store_test.moc"

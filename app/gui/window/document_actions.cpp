@@ -1,10 +1,10 @@
 #include "document_actions.h"
 
 #include "lod_panel.h"
+#include "modeller.h"
 #include "replace_document_command.h"
 #include "save_compressed_dialog.h"
 #include "user_messages.h"
-#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -24,6 +24,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -43,6 +44,13 @@ std::filesystem::path toPath(const QString& path) {
 DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qint64 sessionPid,
                                  QObject* parent)
     : QObject(parent), parts_(parts), runner_(parts.window), recovery_(recoveryFolder, sessionPid) {
+  connect(&autosaver_, &Autosaver::finished, this, [this](const QString& error) {
+    if (!error.isEmpty()) {
+      parts_.statusBar->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+      return;
+    }
+    autosavedIndex_ = autosavingIndex_;
+  });
 }
 
 bool DocumentActions::isModified() const {
@@ -107,9 +115,9 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   std::unique_ptr<HeldDocument> previous;
   if (parts_.viewport->modeller().hasDocument()) {
     parts_.viewport->endStroke();
-    previous = std::make_unique<HeldDocument>(HeldDocument{parts_.viewport->modeller().document(),
-                                                           std::move(parts_.viewport->modeller().history()),
-                                                           path_, importedFrom_, forceModified_});
+    previous = std::make_unique<HeldDocument>(HeldDocument{
+        parts_.viewport->modeller().document(), std::move(parts_.viewport->modeller().history()),
+        path_, importedFrom_, forceModified_});
   }
   if (!adoptDocument(std::move(*made), {}, /*clearUndo=*/!previous)) {
     if (previous) parts_.viewport->modeller().history() = std::move(previous->history);
@@ -140,6 +148,7 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
   importedFrom_.clear();
   forceModified_ = false;
   autosavedIndex_ = -1;
+  autosavingIndex_ = -1; // an autosave in flight was of the document before
   parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
@@ -167,8 +176,9 @@ bool DocumentActions::replaceDocument(core::Document document, const QString& la
 
 bool DocumentActions::swapDocument(HeldDocument& held, bool keepView) {
   parts_.viewport->endStroke();
-  HeldDocument shown{parts_.viewport->modeller().document(), std::move(parts_.viewport->modeller().history()), path_,
-                     importedFrom_, forceModified_};
+  HeldDocument shown{parts_.viewport->modeller().document(),
+                     std::move(parts_.viewport->modeller().history()), path_, importedFrom_,
+                     forceModified_};
   emit aboutToAdopt();
   if (!parts_.viewport->modeller().setDocument(std::move(held.document), keepView)) {
     parts_.viewport->modeller().history() = std::move(shown.history);
@@ -180,6 +190,7 @@ bool DocumentActions::swapDocument(HeldDocument& held, bool keepView) {
   importedFrom_ = held.importedFrom;
   forceModified_ = held.forceModified;
   autosavedIndex_ = -1;
+  autosavingIndex_ = -1; // an autosave in flight was of the document before
   held = std::move(shown);
   parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
@@ -245,7 +256,7 @@ bool DocumentActions::saveDocument(const QString& path) {
   path_ = QFileInfo(path).absoluteFilePath();
   parts_.undoStack->setClean();
   forceModified_ = false;
-  recovery_.discard(); // the file now holds everything the recovery did
+  recovery().discard(); // the file now holds everything the recovery did
   addRecentFile(path_);
   emit titleChanged();
   lastError_.clear();
@@ -290,7 +301,8 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
         core::writeGlb(*snapshot, divisor, toPath(path));
     };
   } else {
-    auto snapshot = std::make_shared<core::GeometryImage>(parts_.viewport->modeller().document().positions);
+    auto snapshot =
+        std::make_shared<core::GeometryImage>(parts_.viewport->modeller().document().positions);
     work = [snapshot, path, divisor] {
       core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
     };
@@ -359,27 +371,25 @@ bool DocumentActions::exportLod(const QString& path) {
 }
 
 bool DocumentActions::autosaveNow() {
-  if (!parts_.viewport->modeller().hasDocument() || runner_.busy()) return false;
+  if (!parts_.viewport->modeller().hasDocument() || runner_.busy() || autosaver_.busy())
+    return false;
   if (!isModified() || parts_.undoStack->index() == autosavedIndex_) return true;
-  parts_.viewport->endStroke();
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
-  const QString original = path_;
-  RecoveryStore* store = &recovery_;
-  const QString error = runner_.run(
-      tr("Autosaving…"), [snapshot, original, store] { store->save(*snapshot, original); });
-  if (!error.isEmpty()) {
-    parts_.statusBar->showMessage(tr("Autosave failed: %1").arg(error), 10000);
+  if (parts_.viewport->stroking()) { // the stroke's end makes the next step: save after it
+    QTimer::singleShot(2000, this, [this] { autosaveNow(); });
     return false;
   }
-  autosavedIndex_ = parts_.undoStack->index();
-  return true;
+  // The GUI thread only copies the document; encoding and writing run on a worker while the
+  // window goes on (the finished signal records the undo index saved, or says what failed).
+  auto snapshot = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
+  autosavingIndex_ = parts_.undoStack->index();
+  return autosaver_.start(std::move(snapshot), path_);
 }
 
 bool DocumentActions::recover() {
   if (!pending_) return false;
   core::Document document;
   const RecoveryStore::Pending pending = *pending_;
-  RecoveryStore* store = &recovery_;
+  RecoveryStore* store = &recovery();
   const QString error = runner_.run(
       tr("Recovering…"), [&document, pending, store] { document = store->load(pending); });
   if (!error.isEmpty()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "autosaver.h"
 #include "background_task.h"
 #include "recovery_store.h"
 
@@ -75,14 +76,25 @@ public:
   bool isModified() const;
   QString lastError() const { return lastError_; }
 
-  /// Writes the recovery file now if the document changed since. Returns false on failure.
+  /// Autosaves now if the document changed since the last autosave: a snapshot copied here, the
+  /// file encoded and written on a worker (Autosaver). True when one started or none was
+  /// needed; false when there is no document, other file work or an autosave runs, or a stroke is
+  /// being made (then it tries again two seconds later). A failure shows in the status bar.
   bool autosaveNow();
-  RecoveryStore& recovery() { return recovery_; }
+  /// The recovery store, once no autosave is writing to it.
+  RecoveryStore& recovery() {
+    autosaver_.wait();
+    return recovery_;
+  }
+  /// Whether an autosave is being written (on a worker).
+  bool autosaving() const { return autosaver_.busy(); }
+  /// Waits for an autosave in flight to end (tests; quitting waits by itself).
+  void waitForAutosave() { autosaver_.wait(); }
   /// The one runner every long task of the window shares, so that no two run at once.
   BackgroundTaskRunner& runner() { return runner_; }
   /// The recovery left by a crashed session (set by findRecovery()).
   const std::optional<RecoveryStore::Pending>& pendingRecovery() const { return pending_; }
-  void findRecovery() { pending_ = recovery_.pending(); }
+  void findRecovery() { pending_ = recovery().pending(); }
   void forgetRecovery() { pending_.reset(); }
   /// Loads the pending recovery as the current (modified) document.
   bool recover();
@@ -112,6 +124,8 @@ private:
   Parts parts_;
   BackgroundTaskRunner runner_;
   RecoveryStore recovery_;
+  Autosaver autosaver_{recovery_}; // after recovery_: destroyed (waiting for its save) first
+  int autosavingIndex_ = -1;       // undo index of the autosave in flight
   std::optional<RecoveryStore::Pending> pending_;
   QString path_;
   QString importedFrom_;

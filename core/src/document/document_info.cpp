@@ -4,8 +4,9 @@
 
 #include "octaclay/core/geometry/seaming.h"
 
-#include <atomic>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace octaclay::core {
 
@@ -21,27 +22,61 @@ DocumentInfo describeDocument(const Document& document) {
   info.euler = static_cast<long long>(info.vertices) - static_cast<long long>(info.edges) +
                static_cast<long long>(info.triangles);
 
-  for (const Vec4f& t : image.texels()) {
-    const Vec3f p = t.xyz();
-    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
-      info.bbox.extend(p);
-    else
-      ++info.nonFinite;
+  // One pass on every core: each band's box, non-finite samples and degenerate triangles (a
+  // cell's two triangles as cellTriangles() gives them, corners in its order), then merged.
+  struct Band {
+    BoundingBox box;
+    std::uint64_t nonFinite = 0, degenerate = 0;
+  };
+  std::vector<Band> bands(static_cast<std::size_t>(n + 1));
+  detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j) {
+      Band& band = bands[static_cast<std::size_t>(j)];
+      // BoundingBox::extend inline, in the same order (signed zeros land as they did).
+      const Vec4f* row = &image.at(0, j);
+      Vec3f lo{}, hi{};
+      bool any = false;
+      for (int i = 0; i <= n; ++i) {
+        const Vec3f p = row[i].xyz();
+        if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) {
+          ++band.nonFinite;
+        } else if (!any) {
+          lo = hi = p;
+          any = true;
+        } else {
+          lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+          hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+      }
+      if (any) {
+        band.box.extend(lo);
+        band.box.extend(hi);
+      }
+      if (j == n) continue;
+      const auto zeroArea = [](Vec3f a, Vec3f b, Vec3f c) {
+        const Vec3f normal = cross(b - a, c - a);
+        return dot(normal, normal) == 0.0f; // length(normal) == 0, without its square root
+      };
+      for (int i = 0; i < n; ++i) {
+        const Vec3f a = image.at(i, j).xyz(), b = image.at(i + 1, j).xyz(),
+                    c = image.at(i + 1, j + 1).xyz(), d = image.at(i, j + 1).xyz();
+        if ((2 * i >= n) == (2 * j >= n)) // CellSplit::AntiDiagonal: {a, b, d}, {b, c, d}
+          band.degenerate += std::uint64_t(zeroArea(a, b, d)) + std::uint64_t(zeroArea(b, c, d));
+        else // {a, b, c}, {a, c, d}
+          band.degenerate += std::uint64_t(zeroArea(a, b, c)) + std::uint64_t(zeroArea(a, c, d));
+      }
+    }
+  });
+  std::uint64_t degenerate = 0;
+  for (const Band& band : bands) {
+    if (!band.box.empty()) {
+      info.bbox.extend(band.box.min);
+      info.bbox.extend(band.box.max);
+    }
+    info.nonFinite += band.nonFinite;
+    degenerate += band.degenerate;
   }
   info.seamGap = maxSeamGap(image);
-
-  std::atomic<std::uint64_t> degenerate{0};
-  detail::parallelRows(n, [&](int rowBegin, int rowEnd) {
-    std::uint64_t count = 0;
-    for (int j = rowBegin; j < rowEnd; ++j)
-      for (int i = 0; i < n; ++i)
-        for (const auto& tri : cellTriangles(n, i, j)) {
-          const Vec3f a = image.at(tri[0]).xyz();
-          if (length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)) == 0.0f)
-            ++count;
-        }
-    degenerate += count;
-  });
   info.degenerateTriangles = degenerate;
 
   info.closed = info.seamGap == 0.0f && info.nonFinite == 0;

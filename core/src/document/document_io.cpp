@@ -1,7 +1,9 @@
 #include "octaclay/core/document/document_io.h"
 
+#include "detail/exr_memory_stream.h"
 #include "detail/exr_sink_stream.h"
 #include "detail/parallel_rows.h"
+#include "raw_exr_lines.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
@@ -226,136 +228,6 @@ private:
   std::array<float, 4> fill_{}; ///< the first texel: the layer's fill while every texel equals it
 };
 
-// Whether the pixels can be read raw (readRawPixels): uncompressed lines hold each channel's
-// row in turn, little-endian, which is this machine's order.
-bool readsRaw(const Imf::Header& header) {
-  if (header.compression() != Imf::NO_COMPRESSION || std::endian::native != std::endian::little)
-    return false;
-  for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
-    if (it.channel().xSampling != 1 || it.channel().ySampling != 1) return false;
-  return true;
-}
-
-// One row of a channel, as stored in an uncompressed line, into floats `stride` floats apart
-// (the conversions OpenEXR's frame buffers make: half and float exactly, uint by value).
-void convertRow(Imf::PixelType type, const char* from, int width, float* to, std::size_t stride) {
-  switch (type) {
-  case Imf::FLOAT:
-    for (int i = 0; i < width; ++i)
-      std::memcpy(to + i * stride, from + 4 * static_cast<std::size_t>(i), 4);
-    break;
-  case Imf::HALF:
-    for (int i = 0; i < width; ++i) {
-      std::uint16_t bits;
-      std::memcpy(&bits, from + 2 * static_cast<std::size_t>(i), 2);
-      half h;
-      h.setBits(bits);
-      to[i * stride] = static_cast<float>(h);
-    }
-    break;
-  case Imf::UINT:
-    for (int i = 0; i < width; ++i) {
-      std::uint32_t value;
-      std::memcpy(&value, from + 4 * static_cast<std::size_t>(i), 4);
-      to[i * stride] = static_cast<float>(value);
-    }
-    break;
-  default:
-    break;
-  }
-}
-
-// Reads an uncompressed file's lines raw, a band at a time, and converts each band on every core:
-// OpenEXR's own path converts byte by byte (its XDR copy) and made reading N = 4096 take 1 s
-// where the bytes take 0.06 s to read.
-void readRawPixels(const fs::path& path, Imf::InputFile& file, GeometryImage& positions,
-                   std::vector<LayerReader>& layers) {
-  const Imath::Box2i window = file.header().dataWindow();
-  const int width = window.max.x - window.min.x + 1, side = positions.side();
-  struct Row {
-    Imf::PixelType type;
-    std::size_t offset; ///< in the line, bytes
-    float* positions;   ///< the image's channel (row 0), or null
-    int layer;          ///< index in layers, or -1
-    int channel;
-  };
-  std::vector<Row> rows;
-  std::size_t lineBytes = 0;
-  for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
-    Row row{it.channel().type, lineBytes, nullptr, -1, 0};
-    for (int c = 0; c < 3; ++c)
-      if (kPositionChannels[c] == std::string_view(it.name()))
-        row.positions = &positions.texels()[0].x + c;
-    for (std::size_t k = 0; k < layers.size(); ++k) {
-      const Layer& layer = layers[k].layer();
-      const auto names = layer.channelNames();
-      for (int c = 0; c < layer.channels; ++c)
-        if (layer.name + "." + names[c] == it.name()) {
-          row.layer = static_cast<int>(k);
-          row.channel = c;
-        }
-    }
-    lineBytes += static_cast<std::size_t>(width) * (row.type == Imf::HALF ? 2 : 4);
-    if (row.positions || row.layer >= 0) rows.push_back(row);
-  }
-
-  std::vector<char> raw(lineBytes * kBandRows);
-  // A uniform layer's channel rows are bytes equal to the first line's first sample repeated:
-  // such a band is compared, not converted (a new document's layers are all uniform).
-  std::vector<char> uniformLine(lineBytes);
-  for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
-    const int rowEnd = std::min(side, rowBegin + kBandRows);
-    for (int j = rowBegin; j < rowEnd; ++j) {
-      int bytes = 0;
-      file.rawPixelDataToBuffer(window.min.y + j, raw.data() + (j - rowBegin) * lineBytes, bytes);
-      if (static_cast<std::size_t>(bytes) != lineBytes)
-        refuse(path, "corrupt: line " + std::to_string(j) + " holds " + std::to_string(bytes) +
-                         " bytes where its channels take " + std::to_string(lineBytes));
-    }
-    if (rowBegin == 0)
-      for (const Row& row : rows) {
-        const std::size_t bytes = row.type == Imf::HALF ? 2 : 4;
-        for (int i = 0; i < width; ++i)
-          std::memcpy(uniformLine.data() + row.offset + i * bytes, raw.data() + row.offset, bytes);
-      }
-    std::vector<float*> bands(layers.size(), nullptr); // null: the band repeats the fill
-    for (std::size_t k = 0; k < layers.size(); ++k) {
-      bool same = rowBegin > 0 && layers[k].uniformSoFar();
-      for (const Row& row : rows)
-        if (same && row.layer == static_cast<int>(k)) {
-          const std::size_t bytes =
-              static_cast<std::size_t>(width) * (row.type == Imf::HALF ? 2 : 4);
-          for (int r = 0; same && r < rowEnd - rowBegin; ++r)
-            same = std::memcmp(raw.data() + r * lineBytes + row.offset,
-                               uniformLine.data() + row.offset, bytes) == 0;
-        }
-      if (!same) bands[k] = layers[k].band(rowBegin, rowEnd);
-    }
-    detail::parallelRows(
-        rowEnd - rowBegin,
-        [&](int a, int b) {
-          for (int r = a; r < b; ++r) {
-            const char* line = raw.data() + static_cast<std::size_t>(r) * lineBytes;
-            for (const Row& row : rows)
-              if (row.positions)
-                convertRow(row.type, line + row.offset, width,
-                           row.positions + static_cast<std::size_t>(rowBegin + r) * side * 4, 4);
-              else if (bands[row.layer]) {
-                const std::size_t channels =
-                    static_cast<std::size_t>(layers[row.layer].layer().channels);
-                convertRow(row.type, line + row.offset, width,
-                           bands[row.layer] + static_cast<std::size_t>(r) * side * channels +
-                               row.channel,
-                           channels);
-              }
-          }
-        },
-        8);
-    for (std::size_t k = 0; k < layers.size(); ++k)
-      if (bands[k]) layers[k].takeBand(rowBegin);
-  }
-}
-
 bool layerInFile(const DocumentHeader& header, const Layer& layer) {
   // checkHeader refused a partial layer: one channel tells.
   return std::count(header.channels.begin(), header.channels.end(),
@@ -411,15 +283,18 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
     const int side = header.size + 1;
     const Imath::Box2i window = file.header().dataWindow();
 
-    std::vector<LayerReader> layers;
-    layers.reserve(3);
+    std::vector<Layer*> inFile;
     if (options.layers)
       for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-        if (layerInFile(header, *layer)) layers.emplace_back(*layer, side);
-    // Band by band: positions straight into the image, layers through a band buffer each.
-    if (readsRaw(file.header()))
-      readRawPixels(path, file, document.positions, layers);
-    else
+        if (layerInFile(header, *layer)) inFile.push_back(layer);
+    std::vector<LayerReader> layers;
+    layers.reserve(3);
+    // Uncompressed lines on every core (raw_exr_lines); else band by band through OpenEXR's frame
+    // buffers: positions straight into the image, layers through a band buffer each.
+    if (!(detail::rawLinesApply(file.header()) &&
+          detail::readRawLines(path, file.header(), document.positions, inFile))) {
+      for (Layer* layer : inFile)
+        layers.emplace_back(*layer, side);
       for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
         const int rowEnd = std::min(side, rowBegin + kBandRows);
         Imf::FrameBuffer frame;
@@ -431,6 +306,7 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
         for (LayerReader& layer : layers)
           layer.takeBand(rowBegin);
       }
+    }
     for (LayerReader& layer : layers)
       layer.finish();
 
@@ -469,6 +345,15 @@ void writeDocument(const Document& document, const fs::path& path,
       header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
   const Imath::Box2i window = header.dataWindow();
 
+  if (detail::rawLinesApply(header)) {
+    // OpenEXR writes the header (and a zero offset table) into memory; the lines are made and
+    // written on every core, each at its place (raw_exr_lines).
+    detail::ExrMemoryStream head;
+    { Imf::OutputFile file(head, header, 1); }
+    writeFileAtomically(
+        path, [&](ByteSink& sink) { detail::writeRawLines(document, header, head.bytes(), sink); });
+    return;
+  }
   writeFileAtomically(path, [&](ByteSink& sink) {
     detail::ExrSinkStream stream(sink);
     {

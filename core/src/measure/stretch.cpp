@@ -4,6 +4,7 @@
 // sample step rather than per unit of texture space.
 #include "octaclay/core/measure/stretch.h"
 
+#include "detail/float_ranks.h"
 #include "detail/parallel_rows.h"
 
 #include <algorithm>
@@ -42,6 +43,29 @@ TriangleFigures triangleFigures(Vec3d du, Vec3d dv) {
   return {float(area), float(sigma)};
 }
 
+// triangleFigures(du, dv).area without the stretch's square roots where they cannot reject the
+// triangle: σ² ≤ a + c (|b| ≤ √(ac)), so below 1e76 σ is finite and under 3e38.
+[[gnu::noinline]] float slowTriangleArea(Vec3d du, Vec3d dv) {
+  return triangleFigures(du, dv).area;
+}
+
+inline float triangleArea(Vec3d du, Vec3d dv) {
+  const double a = dotD(du, du), c = dotD(dv, dv);
+  if (!(a + c < 1e76)) [[unlikely]]
+    return slowTriangleArea(du, dv);
+  const Vec3d n{du.y * dv.z - du.z * dv.y, du.z * dv.x - du.x * dv.z, du.x * dv.y - du.y * dv.x};
+  const double area = 0.5 * std::sqrt(dotD(n, n));
+  if (!std::isfinite(area) || !(area < 3e38)) return 0;
+  return float(area);
+}
+
+// A grid edge's length, -1 when it is not finite or overflows a float.
+float edgeLength(const Vec4f& p, const Vec4f& q) {
+  const Vec3d d = difference(q, p);
+  const double l = std::sqrt(dotD(d, d));
+  return std::isfinite(l) && l < 3e38 ? float(l) : -1.0f;
+}
+
 // What measure() gathers per texel: a third of the incident triangles' area and their largest
 // stretch (both over the whole vertex after fixBorders()), and the surface's total area.
 struct VertexFigures {
@@ -74,6 +98,47 @@ std::array<TriangleFigures, 2> cellFigures(const GeometryImage& image, int i, in
             triangleFigures(difference(c, d), difference(c, b))};
   return {triangleFigures(difference(b, a), difference(c, b)),
           triangleFigures(difference(c, d), difference(d, a))};
+}
+
+// cellFigures' two areas alone.
+// here and next: rows j and j+1.
+std::array<float, 2> cellAreas(const Vec4f* here, const Vec4f* next, int n, int i, int j) {
+  const Vec4f& a = here[i];
+  const Vec4f& b = here[i + 1];
+  const Vec4f& c = next[i + 1];
+  const Vec4f& d = next[i];
+  if (antiDiagonal(n, i, j))
+    return {triangleArea(difference(b, a), difference(d, a)),
+            triangleArea(difference(c, d), difference(c, b))};
+  return {triangleArea(difference(b, a), difference(c, b)),
+          triangleArea(difference(c, d), difference(d, a))};
+}
+
+// Identified border samples are one vertex: each copy holds part of its ring. Gives every copy
+// the sum of their areas (and the largest of their sigmas, when sigma is given).
+void uniteIdentified(int n, std::vector<float>& area, std::vector<float>* sigma) {
+  const auto unite = [&](Sample s) {
+    if (!(canonical(n, s) == s)) return;
+    std::array<Sample, 4> copies;
+    const int count = identifiedSamples(n, s, copies);
+    float sum = 0, largest = 0;
+    for (int k = 0; k < count; ++k) {
+      sum += area[texelIndex(n, copies[k].i, copies[k].j)];
+      if (sigma) largest = std::max(largest, (*sigma)[texelIndex(n, copies[k].i, copies[k].j)]);
+    }
+    for (int k = 0; k < count; ++k) {
+      area[texelIndex(n, copies[k].i, copies[k].j)] = sum;
+      if (sigma) (*sigma)[texelIndex(n, copies[k].i, copies[k].j)] = largest;
+    }
+  };
+  for (int k = 0; k <= n; ++k) {
+    unite({k, 0});
+    unite({k, n});
+  }
+  for (int k = 1; k < n; ++k) { // the corners were united above, and only once
+    unite({0, k});
+    unite({n, k});
+  }
 }
 
 // The surface's area, every cell's triangles measured once (in parallel rows) and handed to
@@ -148,29 +213,7 @@ VertexFigures measureVertices(const GeometryImage& image) {
       }
   });
 
-  // Identified border samples are one vertex: each copy holds part of its ring.
-  const auto unite = [&](Sample s) {
-    if (!(canonical(n, s) == s)) return;
-    std::array<Sample, 4> copies;
-    const int count = identifiedSamples(n, s, copies);
-    float area = 0, sigma = 0;
-    for (int k = 0; k < count; ++k) {
-      area += out.area[texelIndex(n, copies[k].i, copies[k].j)];
-      sigma = std::max(sigma, out.sigma[texelIndex(n, copies[k].i, copies[k].j)]);
-    }
-    for (int k = 0; k < count; ++k) {
-      out.area[texelIndex(n, copies[k].i, copies[k].j)] = area;
-      out.sigma[texelIndex(n, copies[k].i, copies[k].j)] = sigma;
-    }
-  };
-  for (int k = 0; k <= n; ++k) {
-    unite({k, 0});
-    unite({k, n});
-  }
-  for (int k = 1; k < n; ++k) { // the corners were united above, and only once
-    unite({0, k});
-    unite({n, k});
-  }
+  uniteIdentified(n, out.area, &out.sigma);
   return out;
 }
 
@@ -178,12 +221,9 @@ double vertexCount(int n) {
   return double(n) * double(n) + 2.0;
 }
 
-// The q-quantile (0 ≤ q ≤ 1) of values by nearest rank; reorders values. 0 when empty.
-double quantile(std::vector<float>& values, double q) {
-  if (values.empty()) return 0;
-  const auto k = static_cast<std::size_t>(std::llround(q * double(values.size() - 1)));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
+// The q-quantile's (0 ≤ q ≤ 1) place among count values, by nearest rank.
+std::size_t nearestRank(std::size_t count, double q) {
+  return static_cast<std::size_t>(std::llround(q * double(count - 1)));
 }
 
 } // namespace
@@ -217,55 +257,124 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   StretchSummary summary;
   const int n = image.size();
   if (n < 2) return summary;
-  // Row j's edges: N to the right (none from the last column), then N+1 down (none from the
-  // last row); a non-finite one is marked -1 and left out.
+  // One pass over the texel rows on every core: row j's edges (N to the right, none from the last
+  // column; then N+1 down, none from the last row; a non-finite one is -1 and left out), the
+  // areas of the cells of row j (kept for row j+1) and the vertex areas of row j from the cells
+  // above and below it: measureVertices' figures without its per-cell and stretch arrays.
   const std::size_t perRow = 2 * static_cast<std::size_t>(n) + 1;
-  std::vector<float> edges(perRow * static_cast<std::size_t>(n + 1), -1.0f);
+  std::vector<float> edges(perRow * static_cast<std::size_t>(n + 1));
+  std::vector<float> area(image.texelCount());
+  std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
   detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
+    std::vector<std::array<float, 2>> above(static_cast<std::size_t>(n)),
+        below(static_cast<std::size_t>(n));
+    const auto cellRow = [&](int j, std::vector<std::array<float, 2>>& cells) {
+      double sum = 0;
+      const Vec4f* here = &image.at(0, j);
+      const Vec4f* next = &image.at(0, j + 1);
+      for (int i = 0; i < n; ++i) {
+        const auto f = cellAreas(here, next, n, i, j);
+        cells[static_cast<std::size_t>(i)] = f;
+        sum += double(f[0]) + double(f[1]);
+      }
+      return sum;
+    };
+    if (rowBegin > 0) cellRow(rowBegin - 1, above);
     for (int j = rowBegin; j < rowEnd; ++j) {
+      if (j < n) rowArea[static_cast<std::size_t>(j)] = cellRow(j, below);
+      // The take() order of measureVertices, so every vertex area is the same float.
+      for (int i = 0; i <= n; ++i) {
+        float a = 0;
+        if (j > 0) {
+          if (i > 0) {
+            const auto& f = above[static_cast<std::size_t>(i - 1)];
+            if (!antiDiagonal(n, i - 1, j - 1)) a += f[0];
+            a += f[1];
+          }
+          if (i < n) {
+            const auto& f = above[static_cast<std::size_t>(i)];
+            if (antiDiagonal(n, i, j - 1)) a += f[0];
+            a += f[1];
+          }
+        }
+        if (j < n) {
+          if (i > 0) {
+            const auto& f = below[static_cast<std::size_t>(i - 1)];
+            a += f[0];
+            if (antiDiagonal(n, i - 1, j)) a += f[1];
+          }
+          if (i < n) {
+            const auto& f = below[static_cast<std::size_t>(i)];
+            a += f[0];
+            if (!antiDiagonal(n, i, j)) a += f[1];
+          }
+        }
+        area[texelIndex(n, i, j)] = a / 3.0f;
+      }
       float* row = edges.data() + perRow * static_cast<std::size_t>(j);
-      const auto length = [](const Vec4f& p, const Vec4f& q) {
-        const Vec3d d = difference(q, p);
-        const double l = std::sqrt(dotD(d, d));
-        return std::isfinite(l) && l < 3e38 ? float(l) : -1.0f;
-      };
+      const Vec4f* here = &image.at(0, j);
       for (int i = 0; i < n; ++i)
-        row[i] = length(image.at(i, j), image.at(i + 1, j));
-      if (j < n)
+        row[i] = edgeLength(here[i], here[i + 1]);
+      if (j < n) {
+        const Vec4f* next = &image.at(0, j + 1);
         for (int i = 0; i <= n; ++i)
-          row[n + i] = length(image.at(i, j), image.at(i, j + 1));
+          row[n + i] = edgeLength(here[i], next[i]);
+      } else {
+        std::fill(row + n, row + perRow, -1.0f);
+      }
+      std::swap(above, below);
     }
   });
-  edges.erase(std::remove(edges.begin(), edges.end(), -1.0f), edges.end());
-  if (!edges.empty()) {
-    summary.longestEdge = *std::max_element(edges.begin(), edges.end());
-    summary.medianEdge = quantile(edges, 0.5);
-    // Everything after the median's place is at least the median: the 99th percentile is
-    // the same rank among those.
-    const auto median = static_cast<std::ptrdiff_t>(std::llround(0.5 * double(edges.size() - 1)));
-    const auto rank = static_cast<std::ptrdiff_t>(std::llround(0.99 * double(edges.size() - 1)));
-    std::nth_element(edges.begin() + median, edges.begin() + rank, edges.end());
-    const double p99 = edges[static_cast<std::size_t>(rank)];
+  uniteIdentified(n, area, nullptr);
+
+  const detail::FloatRanks edgeRanks = detail::selectFloatRanks(edges, [](std::size_t count) {
+    return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
+  });
+  if (edgeRanks.count > 0) {
+    summary.longestEdge = edgeRanks.largest;
+    summary.medianEdge = edgeRanks.at[0];
     if (summary.medianEdge > 0) {
       summary.longestOverMedian = summary.longestEdge / summary.medianEdge;
-      summary.p99OverMedian = p99 / summary.medianEdge;
+      summary.p99OverMedian = edgeRanks.at[1] / summary.medianEdge;
     }
   }
+  edges = {};
 
-  const VertexFigures v = measureVertices(image);
-  summary.meanSpacing = std::sqrt(v.totalArea / vertexCount(n));
-  std::vector<float> spacing;
-  spacing.reserve(static_cast<std::size_t>(vertexCount(n)));
+  double total = 0;
+  for (double a : rowArea)
+    total += a;
+  summary.meanSpacing = std::sqrt(total / vertexCount(n));
+  // The spacing of every vertex once: its canonical sample's area, the other copies of border
+  // vertices marked -1 (left out of the ranks). A spacing is √area as a float, monotone in the
+  // area, so the median spacing is the square root of the median area.
   forEachCanonicalRun(n, [&](int j, int iBegin, int iEnd) {
-    for (int i = iBegin; i < iEnd; ++i)
-      spacing.push_back(std::sqrt(v.area[texelIndex(n, i, j)]));
+    for (int i = 0; i < iBegin; ++i)
+      area[texelIndex(n, i, j)] = -1.0f;
+    for (int i = iEnd; i <= n; ++i)
+      area[texelIndex(n, i, j)] = -1.0f;
   });
-  std::vector<float> sorted = spacing;
-  const double medianSpacing = quantile(sorted, 0.5);
+  const detail::FloatRanks areaRanks = detail::selectFloatRanks(
+      area, [](std::size_t count) { return std::vector<std::size_t>{nearestRank(count, 0.5)}; });
+  const double medianSpacing = areaRanks.count ? double(std::sqrt(areaRanks.at[0])) : 0.0;
+  std::vector<std::size_t> overPerBand(64, 0);
+  const int bands = static_cast<int>(overPerBand.size());
+  detail::parallelRows(
+      bands,
+      [&](int b0, int b1) {
+        for (int b = b0; b < b1; ++b) {
+          const std::size_t from = area.size() * static_cast<std::size_t>(b) / bands,
+                            to = area.size() * static_cast<std::size_t>(b + 1) / bands;
+          std::size_t over = 0;
+          for (std::size_t k = from; k < to; ++k)
+            over += area[k] >= 0.0f && std::sqrt(area[k]) > 4.0 * medianSpacing ? 1 : 0;
+          overPerBand[static_cast<std::size_t>(b)] = over;
+        }
+      },
+      1);
   std::size_t over = 0;
-  for (float s : spacing)
-    if (s > 4.0 * medianSpacing) ++over;
-  summary.shareOver4x = spacing.empty() ? 0.0 : double(over) / double(spacing.size());
+  for (std::size_t c : overPerBand)
+    over += c;
+  summary.shareOver4x = areaRanks.count ? double(over) / double(areaRanks.count) : 0.0;
   return summary;
 }
 

@@ -49,7 +49,6 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     textures_[index(layer)] = Texture(side, side, formatOf(layer));
-    scratch_[index(layer)] = Texture(side, side, formatOf(layer));
     for (int y = 0; y < side; y += band) {
       push(layer, {0, y, side, std::min(band, side - y)});
       if (progress) progress(static_cast<float>(++step) / static_cast<float>(steps));
@@ -62,6 +61,15 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
         l->fill[k] = texel[k];
     }
   }
+}
+
+Texture& GpuDocument::scratch(core::EditLayer layer) {
+  Texture& twin = scratch_[index(layer)];
+  if (twin.id() == 0) {
+    const int side = document_.positions.side();
+    twin = Texture(side, side, formatOf(layer));
+  }
+  return twin;
 }
 
 core::Layer* GpuDocument::mirrorLayer(core::EditLayer layer) {

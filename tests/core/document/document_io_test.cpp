@@ -198,6 +198,7 @@ private slots:
   void roundTrip();
   void roundTripPaintedLayer();
   void everyCompressionReadsBack();
+  void rawLinesAreOpenExrsOwn();
   void header();
   void missingFile();
   void notExr();
@@ -327,6 +328,85 @@ void DocumentIoTest::everyCompressionReadsBack() {
     const QString why = expectError([&] { readDocument(cut); }, ErrorKind::InvalidInput, "");
     QVERIFY2(why.isEmpty(), qPrintable(QString("length %1/20: %2").arg(k).arg(why)));
   }
+}
+
+// Uncompressed documents are read and written line by line on every core, beside OpenEXR's frame
+// buffers: the file must be the one OpenEXR writes itself from the same header and pixels, byte
+// for byte, and a line that is not where the offset table says is refused.
+void DocumentIoTest::rawLinesAreOpenExrsOwn() {
+  const int n = 256;
+  Document doc = makeTestDocument(n);
+  const int side = n + 1;
+  const std::size_t texels = std::size_t(side) * side;
+  doc.feature.texels.resize(texels * 3);
+  for (std::size_t t = 0; t < texels * 3; ++t)
+    doc.feature.texels[t] = float(t % 11) / 16.0f;
+  const fs::path ours = path("raw-ours.exr");
+  NO_THROW(writeDocument(doc, ours, {DocumentCompression::None, 1}));
+
+  // OpenEXR's own decoding of our file, then its own encoding of those pixels under our header.
+  Imf::InputFile in(ours.c_str());
+  QCOMPARE(in.header().compression(), Imf::NO_COMPRESSION);
+  std::vector<std::vector<char>> planes;
+  Imf::FrameBuffer frame;
+  for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it) {
+    const std::size_t size = it.channel().type == Imf::HALF ? 2 : 4;
+    planes.emplace_back(texels * size);
+    frame.insert(it.name(), Imf::Slice(it.channel().type, planes.back().data(), size, size * side));
+  }
+  in.setFrameBuffer(frame);
+  in.readPixels(0, n);
+  for (int j = 0; j < side; j += 37) // P.X, P.Y, P.Z are the first three planes (alphabetical)
+    for (int i = 0; i < side; i += 5)
+      for (int c = 0; c < 3; ++c) {
+        float v;
+        std::memcpy(&v, planes[std::size_t(c)].data() + (std::size_t(j) * side + i) * 4, 4);
+        const Vec4f& t = doc.positions.at(i, j);
+        QCOMPARE(v, c == 0 ? t.x : c == 1 ? t.y : t.z);
+      }
+  const fs::path theirs = path("raw-theirs.exr");
+  {
+    Imf::OutputFile out(theirs.c_str(), in.header());
+    out.setFrameBuffer(frame);
+    out.writePixels(side);
+  }
+  const std::string a = readBytes(ours), b = readBytes(theirs);
+  QCOMPARE(a.size(), b.size());
+  QVERIFY2(a == b, "the uncompressed document differs from OpenEXR's own file");
+
+  // And OpenEXR's file reads back as written: painted feature, uniform diffuse, the mask.
+  Document back;
+  NO_THROW(back = readDocument(theirs));
+  QVERIFY(positionsBitExact(doc.positions, back.positions));
+  QVERIFY(!back.feature.uniform() && back.diffuse.uniform() && back.hasMask);
+  for (auto [w, r] : {std::pair{&doc.diffuse, &back.diffuse},
+                      std::pair{&doc.feature, &back.feature}, std::pair{&doc.mask, &back.mask}}) {
+    const QString why = compareLayer(*w, *r, n);
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+  }
+
+  // Line 100's chunk says it is line 101: refused with the line named, never read as pixels.
+  std::string moved = a;
+  std::size_t at = std::string::npos;
+  for (std::size_t k = a.size() / 2; k-- > 0;) { // the chunk of line 100: y = 100, then its size
+    std::int32_t y;
+    std::memcpy(&y, a.data() + k, 4);
+    if (y == 100 && k + 8 < a.size()) {
+      std::int32_t next;
+      std::memcpy(&next, a.data() + k + 4, 4);
+      if (next > 0 && std::size_t(next) == (a.size() - k) / std::size_t(side - 100) - 8) {
+        at = k;
+        break;
+      }
+    }
+  }
+  QVERIFY(at != std::string::npos);
+  const std::int32_t wrong = 101;
+  std::memcpy(moved.data() + at, &wrong, 4);
+  const fs::path bad = path("raw-moved-line.exr");
+  writeBytes(bad, moved);
+  const QString why = expectError([&] { readDocument(bad); }, ErrorKind::InvalidInput, "line 100");
+  QVERIFY2(why.isEmpty(), qPrintable(why));
 }
 
 void DocumentIoTest::header() {
@@ -476,34 +556,39 @@ void DocumentIoTest::failedOverwriteKeepsOldFile() {
   const std::string good = readBytes(p);
   const auto before = listDir(root);
 
-  // Another document, whose file size we measure first.
+  // Another document, whose file size we measure first; written compressed (OpenEXR's frame
+  // buffers) and raw (lines pwritten on every core, raw_exr_lines).
   const Document other = makeDocument(makeBaseShape(BaseShape::Sphere, 64));
-  NO_THROW(writeDocument(other, root / "measure.exr"));
-  const auto otherSize = fs::file_size(root / "measure.exr");
-  fs::remove(root / "measure.exr");
-  QVERIFY(otherSize > 2000);
-
-  // Root ignores permissions, so make the write fail with a file-size limit (EFBIG): once early,
-  // and once only a few bytes short of the full file.
-  rlimit old{};
-  QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
   const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-  for (rlim_t limit : {rlim_t(1024), rlim_t(otherSize / 2), rlim_t(otherSize - 8)}) {
-    rlimit lowered = old;
-    lowered.rlim_cur = limit;
-    QCOMPARE(setrlimit(RLIMIT_FSIZE, &lowered), 0);
-    const QString why = expectError([&] { writeDocument(other, p); }, ErrorKind::Io, "");
-    setrlimit(RLIMIT_FSIZE, &old);
-    const std::string now = readBytes(p);
-    QVERIFY2(why.isEmpty(), qPrintable(QString("limit %1 of %2 bytes: %3; %4 now holds %5 bytes%6")
-                                           .arg(limit)
-                                           .arg(otherSize)
-                                           .arg(why)
-                                           .arg(QString::fromStdString(p.filename().string()))
-                                           .arg(now.size())
-                                           .arg(now == good ? " (unchanged)" : " (replaced)")));
-    QVERIFY2(now == good, qPrintable(QString("limit %1: old file changed").arg(limit)));
-    QVERIFY2(listDir(root) == before, qPrintable(QString("limit %1: temporary left").arg(limit)));
+  for (const DocumentWriteOptions options :
+       {DocumentWriteOptions{}, DocumentWriteOptions{DocumentCompression::None, 1}}) {
+    NO_THROW(writeDocument(other, root / "measure.exr", options));
+    const auto otherSize = fs::file_size(root / "measure.exr");
+    fs::remove(root / "measure.exr");
+    QVERIFY(otherSize > 2000);
+
+    // Root ignores permissions, so make the write fail with a file-size limit (EFBIG): once early,
+    // and once only a few bytes short of the full file.
+    rlimit old{};
+    QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
+    for (rlim_t limit : {rlim_t(1024), rlim_t(otherSize / 2), rlim_t(otherSize - 8)}) {
+      rlimit lowered = old;
+      lowered.rlim_cur = limit;
+      QCOMPARE(setrlimit(RLIMIT_FSIZE, &lowered), 0);
+      const QString why = expectError([&] { writeDocument(other, p, options); }, ErrorKind::Io, "");
+      setrlimit(RLIMIT_FSIZE, &old);
+      const std::string now = readBytes(p);
+      QVERIFY2(why.isEmpty(),
+               qPrintable(QString("limit %1 of %2 bytes: %3; %4 now holds %5 bytes%6")
+                              .arg(limit)
+                              .arg(otherSize)
+                              .arg(why)
+                              .arg(QString::fromStdString(p.filename().string()))
+                              .arg(now.size())
+                              .arg(now == good ? " (unchanged)" : " (replaced)")));
+      QVERIFY2(now == good, qPrintable(QString("limit %1: old file changed").arg(limit)));
+      QVERIFY2(listDir(root) == before, qPrintable(QString("limit %1: temporary left").arg(limit)));
+    }
   }
   std::signal(SIGXFSZ, oldHandler);
   Document kept, replaced;

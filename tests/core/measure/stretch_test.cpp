@@ -9,10 +9,12 @@
 #include <QElapsedTimer>
 #include <QtTest>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <ctime>
 #include <limits>
+#include <random>
 #include <vector>
 
 using namespace octaclay::core;
@@ -44,6 +46,52 @@ std::array<double, 2> oneRing(const GeometryImage& image, Sample s) {
     sigma = std::max(sigma, std::sqrt(0.5 * (g11 + g22) + std::sqrt(h * h + g12 * g12)));
   }
   return {area / 3.0, sigma};
+}
+
+// summarizeStretch by its definitions: every finite grid edge and every vertex's spacing (its
+// canonical sample's, from measureStretch) sorted, nearest ranks taken.
+StretchSummary referenceSummary(const GeometryImage& image) {
+  const int n = image.size();
+  StretchSummary s;
+  std::vector<float> edges;
+  const auto edge = [&](Sample p, Sample q) {
+    const Vec4f a = image.at(p), b = image.at(q);
+    const double dx = double(b.x) - a.x, dy = double(b.y) - a.y, dz = double(b.z) - a.z;
+    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (std::isfinite(l) && l < 3e38) edges.push_back(float(l));
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      if (i < n) edge({i, j}, {i + 1, j});
+      if (j < n) edge({i, j}, {i, j + 1});
+    }
+  std::sort(edges.begin(), edges.end());
+  const auto rank = [](std::size_t count, double q) {
+    return static_cast<std::size_t>(std::llround(q * double(count - 1)));
+  };
+  if (!edges.empty()) {
+    s.longestEdge = edges.back();
+    s.medianEdge = edges[rank(edges.size(), 0.5)];
+    if (s.medianEdge > 0) {
+      s.longestOverMedian = s.longestEdge / s.medianEdge;
+      s.p99OverMedian = edges[rank(edges.size(), 0.99)] / s.medianEdge;
+    }
+  }
+  const StretchMap map = measureStretch(image);
+  std::vector<float> spacing;
+  forEachCanonicalRun(n, [&](int j, int iBegin, int iEnd) {
+    for (int i = iBegin; i < iEnd; ++i)
+      spacing.push_back(map.spacing[static_cast<std::size_t>(j) * (n + 1) + i]);
+  });
+  std::vector<float> sorted = spacing;
+  std::sort(sorted.begin(), sorted.end());
+  const double median = sorted[rank(sorted.size(), 0.5)];
+  std::size_t over = 0;
+  for (float v : spacing)
+    over += v > 4.0 * median ? 1 : 0;
+  s.shareOver4x = double(over) / double(spacing.size());
+  s.meanSpacing = meanSpacing(image);
+  return s;
 }
 
 // The sphere with every sample within geodesic angle 0.2 of the pole +z (the square's centre,
@@ -272,6 +320,39 @@ private slots:
     QCOMPARE(z.meanSpacing, 0.0);
     QCOMPARE(regionSampling(nan, [](const Vec3f&) { return true; }).samples, std::size_t(0));
     QCOMPARE(measureStretch(GeometryImage()).spacing.size(), std::size_t(0));
+  }
+
+  // The one-pass summary (radix-selected ranks, vertex areas gathered row by row) gives the
+  // definitions' figures exactly: bumpy, folded, degenerate, huge and non-finite samples, at
+  // several N, off the image's centre and across its seams.
+  void summaryEqualsItsDefinitions() {
+    std::mt19937 random(32);
+    std::uniform_real_distribution<float> bump(-0.3f, 0.3f);
+    for (const int n : {2, 4, 16, 64, 256}) {
+      for (int variant = 0; variant < 4; ++variant) {
+        GeometryImage image = makeBaseShape(BaseShape::Sphere, n);
+        for (Vec4f& t : image.texels()) {
+          const float f = 1.0f + bump(random) * (variant > 0 ? 1.0f : 0.0f);
+          t.x *= f, t.y *= f, t.z *= f;
+        }
+        if (variant >= 2 && n >= 4) {
+          image.at(1, 1) = image.at(2, 1); // a degenerate cell
+          image.at(n - 1, 2).x = 2e38f;    // huge edges: the stretch's own checks decide
+        }
+        if (variant == 3) {
+          image.at(n / 2, 1).y = std::numeric_limits<float>::quiet_NaN();
+          image.at(0, 0).z = std::numeric_limits<float>::infinity();
+        }
+        const StretchSummary fast = summarizeStretch(image), slow = referenceSummary(image);
+        QCOMPARE(fast.medianEdge, slow.medianEdge);
+        QCOMPARE(fast.longestEdge, slow.longestEdge);
+        QCOMPARE(fast.longestOverMedian, slow.longestOverMedian);
+        QCOMPARE(fast.p99OverMedian, slow.p99OverMedian);
+        QCOMPARE(fast.shareOver4x, slow.shareOver4x);
+        QCOMPARE(fast.meanSpacing, slow.meanSpacing);
+        if (variant == 2 && n >= 16) QVERIFY(fast.shareOver4x > 0); // the check can see a change
+      }
+    }
   }
 
   void fastAtN1024() {

@@ -53,10 +53,14 @@ public:
   const core::TileBounds& bounds() const { return bounds_; }
 
   Texture& texture(core::EditLayer layer) { return textures_[index(layer)]; }
-  Texture& scratch(core::EditLayer layer) { return scratch_[index(layer)]; }
+  /// The layer's scratch twin, made on first use: a document edited only by brushes that write
+  /// positions never holds its paint layers' twins (where the driver's texture memory is the
+  /// CPU's, as on llvmpipe, they are as large as the layers). Throws GlError.
+  Texture& scratch(core::EditLayer layer);
   /// Exchanges a layer's texture and its scratch twin: after a pass that wrote every texel of
   /// the scratch, this replaces copying it back.
   void swapScratch(core::EditLayer layer) {
+    scratch(layer);
     std::swap(textures_[index(layer)], scratch_[index(layer)]);
   }
 
