@@ -32,7 +32,8 @@ struct SculptSession::KeepDetailRun {
 
 struct SculptSession::ActiveStroke {
   StrokeStart start;
-  float unit = 1; // object units per radius fraction: the diagonal when the stroke began
+  float unit = 1;   // object units per radius fraction: the diagonal when the stroke began
+  float radius = 0; // object units, before pressure: start.objectRadius or radius × unit
   gpu::BrushManifest manifest; // the stroke refers to it
   std::unique_ptr<gpu::StrokeSession> stroke;
   std::vector<StrokeMove> queue;
@@ -96,6 +97,10 @@ void SculptSession::releaseGpu() {
 }
 
 void SculptSession::beginStroke(const StrokeStart& start) {
+  if (start.objectRadius && !(std::isfinite(*start.objectRadius) && *start.objectRadius > 0))
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "the brush radius must be a positive, finite length (object units), not " +
+                          std::to_string(*start.objectRadius));
   auto stroke = std::make_unique<ActiveStroke>();
   stroke->start = start;
   const BrushSettings& settings = start.settings;
@@ -105,6 +110,7 @@ void SculptSession::beginStroke(const StrokeStart& start) {
   // diagonal()'s floor: a model far below a unit across strokes as it does at unit scale
   // (gpu::StrokeSession refuses one too small for float).
   stroke->unit = document_->bounds().diagonal();
+  stroke->radius = start.objectRadius ? *start.objectRadius : settings.radius * stroke->unit;
   gpu::StrokeSettings s;
   s.spacing = start.spacing;
   s.symmetry = settings.symmetry;
@@ -141,7 +147,7 @@ int SculptSession::move(const StrokeMove& move) {
   if (st.failed) return 0;
   const BrushSettings& settings = st.start.settings;
   // The strength as given: the stroke shares it out among its dabs (dabShare).
-  float radius = settings.radius * st.unit;
+  float radius = st.radius;
   float strength = settings.strength;
   if (settings.pressureTarget == PressureTarget::Radius)
     radius *= std::max(move.pressure, 0.05f);
@@ -203,8 +209,7 @@ DabRun SculptSession::runQueuedMoves() {
 
 int SculptSession::expectDabs(const std::vector<std::array<float, 2>>& path,
                               const std::vector<core::Vec3f>& dragPoints) const {
-  return stroke_->stroke->expectDabs(path, dragPoints,
-                                     stroke_->start.settings.radius * stroke_->unit);
+  return stroke_->stroke->expectDabs(path, dragPoints, stroke_->radius);
 }
 
 void SculptSession::observeDabs(std::function<void(int)> observer) {

@@ -42,6 +42,10 @@ struct StrokeStart {
   /// scripted drag along its points.
   std::optional<core::Vec3f> eye;
   float spacing = 0; ///< between dabs, a fraction of the radius; 0: the brush's (dabSpacing)
+  /// The radius in object units, fixed for the stroke: the viewport's view radius (pixels at
+  /// the pressed point's depth, RadiusUnit::View). Unset: settings.radius × the diagonal.
+  /// Must be finite and positive.
+  std::optional<float> objectRadius;
 };
 
 /// One move of a stroke (SculptSession::moveTo): to a point of the image, along a pointer's ray
@@ -147,10 +151,11 @@ public:
   // so the same stroke gives the same document bit for bit.
 
   /// Begins a stroke as start says: the brush compiled as the settings ask (BrushVariants), the
-  /// radius unit (the diagonal) fixed. Throws (the message says why) if the brush is not loaded
-  /// or will not compile, and what gpu::StrokeSession's constructor throws (a parameter or view
-  /// that is not finite or out of range, a model with no usable size); no stroke begins then.
-  /// Precondition: a document, brushes and no stroke.
+  /// radius (start.objectRadius, else a fraction of the diagonal) fixed. Throws (the message
+  /// says why) if the brush is not loaded or will not compile, core::Error(InvalidArgument) for
+  /// an objectRadius that is not finite and positive, and what gpu::StrokeSession's constructor
+  /// throws (a parameter or view that is not finite or out of range, a model with no usable size);
+  /// no stroke begins then. Precondition: a document, brushes and no stroke.
   void beginStroke(const StrokeStart& start);
   bool stroking() const { return stroke_ != nullptr; }
   /// Whether the stroke's brush drags (grab, snake hook: gpu::StrokeSession::drags()): after

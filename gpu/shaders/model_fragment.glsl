@@ -45,26 +45,51 @@ vec3 heatColour(float s) {
 }
 
 #if defined(WIREFRAME)
-// How much of an edge covers this pixel: 1 on a triangle edge of the displayed level (the
-// grid's lines and each cell's diagonal, split as model_chunks.cpp splits it) or of the LOD,
-// fading over about a pixel.
-float wireAt() {
-#if defined(LOD_VERTICES)
-  vec3 d = v_corner / max(fwidth(v_corner), vec3(1e-6));
-  float pixels = min(d.x, min(d.y, d.z));
-#else
-  vec2 g = v_cell;
-  float m = float(u_side - 1);
+// The narrowest cell on screen whose lines are drawn, in pixels: the default display detail put
+// a line every 2 or 3 pixels and darkened the whole model; finer cells show a coarser level's.
+const float kMinCellPixels = 24.0;
+
+float edgeCover(float pixels) {
+  return 1.0 - smoothstep(0.5, 1.25, pixels);
+}
+
+#if !defined(LOD_VERTICES)
+// How much of an edge of the level with cells of `level` displayed cells (1, 2, 4 …: a coarser
+// level's triangles are unions of the displayed ones) covers this pixel.
+// widths: fwidth of g.x, g.y, g.x + g.y and g.x - g.y (taken once, in uniform control flow).
+float gridWireAt(vec2 g, vec4 widths, float level) {
+  g /= level;
+  float m = float(u_side - 1) / level;
   vec2 cell = min(floor(g), vec2(m - 1.0));
   // Lines i = const, j = const, and the diagonal: i + j = const where the cell's split is
   // anti-diagonal, i - j = const where it is not.
   bool anti = (cell.x < 0.5 * m) == (cell.y < 0.5 * m);
-  float diagonal = anti ? g.x + g.y : g.x - g.y;
-  vec3 along = vec3(g, diagonal);
-  vec3 d = abs(along - round(along)) / max(fwidth(along), vec3(1e-6));
-  float pixels = min(d.x, min(d.y, d.z));
+  vec3 along = vec3(g, anti ? g.x + g.y : g.x - g.y);
+  vec3 width = vec3(widths.xy, anti ? widths.z : widths.w) / level;
+  vec3 d = abs(along - round(along)) / max(width, vec3(1e-6));
+  return edgeCover(min(d.x, min(d.y, d.z)));
+}
 #endif
-  return 1.0 - smoothstep(0.5, 1.25, pixels);
+
+// How much of an edge covers this pixel: 1 on a triangle edge of the displayed level (the
+// grid's lines and each cell's diagonal, split as model_chunks.cpp splits it) or of the LOD,
+// fading over about a pixel. Where the displayed cells are narrower than kMinCellPixels on
+// screen, the edges of the coarser level whose cells are not (every 2nd, 4th … line), the next
+// finer level's fading in as its cells widen, so the surface stays visible between the lines.
+float wireAt() {
+#if defined(LOD_VERTICES)
+  vec3 d = v_corner / max(fwidth(v_corner), vec3(1e-6));
+  return edgeCover(min(d.x, min(d.y, d.z)));
+#else
+  vec2 g = v_cell;
+  vec4 widths = fwidth(vec4(g, g.x + g.y, g.x - g.y));
+  float cellPixels = 1.0 / max(max(widths.x, widths.y), 1e-6);
+  float coarsest = max(float(u_side - 1) * 0.5, 1.0);
+  float x = clamp(log2(kMinCellPixels / cellPixels), 0.0, log2(coarsest));
+  float level = exp2(floor(x));
+  float coarse = gridWireAt(g, widths, min(2.0 * level, coarsest));
+  return max(coarse, gridWireAt(g, widths, level) * (1.0 - fract(x)));
+#endif
 }
 #endif
 

@@ -76,6 +76,7 @@ private slots:
   void committedMatcapsMatchTheGenerator();
   void eachMatcapChangesThePixelsDifferently();
   void wireframeOverlayAddsLinePixelsAlongTheLevel();
+  void wireframeAtTheDefaultDetailLeavesTheSurfaceVisible();
   void backgroundChoiceChangesTheCornersAndIsRestored();
   void directFrameMatchesTheFrameVtkRenders();
   void importedModelHasNoUnlitSpecklesAtAnyLevel();
@@ -220,6 +221,52 @@ void LooksRenderTest::wireframeOverlayAddsLinePixelsAlongTheLevel() {
   QVERIFY(!window_->viewport()->looks().wireframe);
   const QImage off = grab();
   QCOMPARE(meanDifference(off, plain, model), 0.0);
+}
+
+// Issue 31: at the default display detail (256 samples a side) the wireframe drew a line every
+// two or three pixels and only darkened the model. Now its lines are a coarser level's where the
+// displayed cells are narrow on screen: lines cross the model, and most of it is surface.
+void LooksRenderTest::wireframeAtTheDefaultDetailLeavesTheSurfaceVisible() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->newDocument(core::BaseShape::Sphere, 512, true));
+  QCOMPARE(window_->lodPanel()->displayedSize(), app::LodPanel::kDefaultDisplaySize);
+  const QImage plain = grab();
+  const std::vector<QPoint> model = modelPixels(plain);
+  window_->action("actionWireframe")->trigger();
+  QVERIFY(window_->viewport()->looks().wireframe);
+  const QImage wired = grab();
+  const auto isLine = [&](QPoint p) {
+    return luminance(wired.pixel(p)) < luminance(plain.pixel(p)) - 40;
+  };
+  int lines = 0;
+  for (const QPoint& p : model)
+    lines += isLine(p);
+  const double share = double(lines) / double(model.size());
+  // Rows a little above and below the centre: runs of line pixels between runs of surface.
+  const QPoint centre = window_->viewport()->project({0, 0, 0}).toPoint();
+  int runs = 0, longestSurface = 0;
+  for (int dy : {-7, 7}) {
+    int rowRuns = 0, surface = 0;
+    bool inLine = false;
+    for (int x = centre.x() - 150; x <= centre.x() + 150; ++x) {
+      const bool line = isLine({x, centre.y() + dy});
+      rowRuns += line && !inLine;
+      surface = line ? 0 : surface + 1;
+      longestSurface = std::max(longestSurface, surface);
+      inLine = line;
+    }
+    runs = std::max(runs, rowRuns);
+  }
+  qInfo("wireframe at %d samples a side: %.1f %% of %zu model pixels are line pixels; %d lines "
+        "across 300 px, the widest gap %d px",
+        window_->lodPanel()->displayedSize(), 100.0 * share, model.size(), runs, longestSurface);
+  // Lines about 2 px wide, the displayed cells' or a coarser level's at least 24 px apart
+  // (kMinCellPixels), three families (the grid's two and the diagonals): a fifth of the model
+  // or so (94 % when every displayed edge was drawn); the surface shows between them.
+  QVERIFY2(share > 0.05 && share < 0.3, qPrintable(QString::number(share)));
+  QVERIFY2(runs >= 6, qPrintable(QString::number(runs)));
+  QVERIFY2(longestSurface >= 8, qPrintable(QString::number(longestSurface)));
 }
 
 void LooksRenderTest::backgroundChoiceChangesTheCornersAndIsRestored() {

@@ -2,7 +2,8 @@
 // is one undo step and undoing it brings the previous model back with its own strokes; File ▸
 // Open on a mesh points to Import Mesh; an import error names the file once and fits the status
 // bar; the Level of detail dock forgets the previous model's figures on File ▸ New; save and
-// export dialogs suggest a name beside the document; File ▸ New says "Detail", not "Size N".
+// export dialogs suggest a name beside the document; File ▸ New says "Detail", not "Size N", and
+// starts at the default display detail, whatever the imported model was shown at.
 #include "brush_panel.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
@@ -90,6 +91,7 @@ private slots:
   void lodFiguresGoWithFileNew();
   void saveAndExportSuggestANameBesideTheDocument();
   void newModelDialogSaysDetail();
+  void fileNewGoesBackToTheDefaultDisplayDetail();
 
 private:
   std::unique_ptr<MainWindow> makeWindow();
@@ -267,6 +269,42 @@ void NewcomerRenderTest::newModelDialogSaysDetail() {
   QCOMPARE(items.size(), 7);
   QCOMPARE(items.front(), QStringLiteral("Very coarse (64)"));
   QCOMPARE(chosen, QStringLiteral("Very fine (1024)"));
+}
+
+void NewcomerRenderTest::fileNewGoesBackToTheDefaultDisplayDetail() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  QVERIFY(window_->importMesh(egg_, 64));
+  app::LodPanel* lod = window_->lodPanel();
+  // The imported model shown at Full detail, by choice, and its LOD beside it.
+  QVERIFY(lod->setDivisor(1));
+  lod->setDisplay(app::LodPanel::Display::SideBySide);
+  QCOMPARE(window_->viewport()->levelDivisor(), 1);
+  QVERIFY(window_->saveDocument(dir_.filePath("egg.exr"))); // File ▸ New asks no question
+
+  // File ▸ New through its menu item, a Fine (512) sphere chosen in its dialog.
+  bool accepted = false;
+  QTimer::singleShot(0, window_.get(), [&] {
+    auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    auto* detail = dialog->findChild<QComboBox*>("detailCombo");
+    if (!detail) { // not the New dialog: refuse it rather than wait forever
+      dialog->reject();
+      return;
+    }
+    detail->setCurrentIndex(detail->findData(512));
+    accepted = true;
+    dialog->accept();
+  });
+  window_->action("actionNew")->trigger();
+  QVERIFY(accepted);
+  QCOMPARE(window_->viewport()->modeller().document().size(), 512);
+  // The default level: the largest of at most LodPanel::kDefaultDisplaySize samples a side.
+  const int expected = 512 / app::LodPanel::kDefaultDisplaySize;
+  QCOMPARE(lod->divisor(), expected);
+  QCOMPARE(window_->viewport()->levelDivisor(), expected);
+  QCOMPARE(lod->display(), app::LodPanel::Display::FullResolution);
+  QCOMPARE(window_->viewport()->lodDisplay(), app::LodDisplay::FullResolution);
 }
 
 QTEST_MAIN(NewcomerRenderTest)

@@ -400,6 +400,7 @@ private slots:
   void setRadiusAndStrengthClampAndSignal() {
     BrushPanel panel;
     panel.setBrushes(brushes_, {});
+    panel.setRadiusUnit(RadiusUnit::Scene); // the spin box in percent of the diagonal
     QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
     auto* radiusSpin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radius"));
     QVERIFY(radiusSpin);
@@ -432,6 +433,57 @@ private slots:
     radiusSpin->setValue(30.0);
     QCOMPARE(panel.radius(), 0.3f);
     QCOMPARE(changed.count(), 6);
+  }
+
+  // Issue 31: the radius in view pixels is a new user's unit; the unit is shared by every brush
+  // and kept, each brush keeps its radius in both units, and a user whose brushes already have
+  // stored values keeps the diagonal's unit they had.
+  void radiusUnitIsTheViewForANewUserAndKept() {
+    {
+      BrushPanel panel;
+      panel.setBrushes(brushes_, {});
+      QCOMPARE(panel.radiusUnit(), RadiusUnit::View);
+      QCOMPARE(panel.settings().radiusUnit, RadiusUnit::View);
+      QCOMPARE(panel.settings().radiusPixels, kDefaultRadiusPixels);
+      auto* spin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radius"));
+      auto* unit = panel.findChild<QComboBox*>(QStringLiteral("radiusUnit"));
+      QVERIFY(spin && unit);
+      QCOMPARE(spin->value(), double(kDefaultRadiusPixels));
+      QCOMPARE(spin->suffix(), QStringLiteral(" px"));
+      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      spin->setValue(55.0); // typed: the view radius
+      QCOMPARE(panel.radiusPixels(), 55.0f);
+      QCOMPARE(panel.radius(), 0.05f);
+      panel.setRadiusInUnit(5000.0f); // clamped
+      QCOMPARE(panel.radiusPixels(), kMaxRadiusPixels);
+      panel.setRadiusInUnit(0.0f);
+      QCOMPARE(panel.radiusPixels(), kMinRadiusPixels);
+      panel.setRadiusPixels(55.0f);
+      QCOMPARE(changed.count(), 4);
+      // The unit chosen beside the radius: the spin box then shows percent.
+      unit->setCurrentIndex(unit->findData(static_cast<int>(RadiusUnit::Scene)));
+      QCOMPARE(panel.radiusUnit(), RadiusUnit::Scene);
+      QCOMPARE(changed.count(), 5);
+      QCOMPARE(spin->suffix(), QStringLiteral(" %"));
+      QCOMPARE(spin->value(), 5.0);
+      QCOMPARE(panel.radiusInUnit(), 0.05f);
+      QVERIFY(panel.selectBrush(QStringLiteral("paint"))); // shared by every brush
+      QCOMPARE(panel.settings().radiusUnit, RadiusUnit::Scene);
+    }
+    {
+      BrushPanel panel; // a new start reads both back
+      panel.setBrushes(brushes_, {});
+      QVERIFY(panel.selectBrush(QStringLiteral("push")));
+      QCOMPARE(panel.radiusUnit(), RadiusUnit::Scene);
+      QCOMPARE(panel.radiusPixels(), 55.0f);
+      panel.setRadiusUnit(RadiusUnit::View);
+    }
+    QCOMPARE(BrushValueStore::loadRadiusUnit(), RadiusUnit::View);
+    // A user from before the unit: stored brush values and no unit keep the diagonal's.
+    QSettings().remove(QStringLiteral("brushes/radiusUnit"));
+    QCOMPARE(BrushValueStore::loadRadiusUnit(), RadiusUnit::Scene);
+    QSettings().clear();
+    QCOMPARE(BrushValueStore::loadRadiusUnit(), RadiusUnit::View);
   }
 
   void strokeOptionsAreSharedAndPersisted() {

@@ -1,12 +1,15 @@
 // The viewport under real X input (XTEST through the X server, as a mouse and keyboard give it),
 // not events sent to the widget: its frames are a native GL window's, so the mouse, the keyboard
 // focus and the shortcuts must still reach the widgets through it.
+#include "brush_header.h"
 #include "brush_panel.h"
+#include "camera_control.h"
 #include "canvas_brush_adjust.h"
 #include "history_dialog.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "radius_field.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -15,6 +18,7 @@
 #include <QApplication>
 #include <QFontMetricsF>
 #include <QGuiApplication>
+#include <QLabel>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
@@ -36,6 +40,7 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -122,6 +127,7 @@ private slots:
   void aSparseTipSaysWhyBeforeTheBrushActs();
   void aPressJustOffTheModelWithinTheRingSculpts();
   void preferencesSetTheUndoMemory();
+  void aViewRadiusKeepsItsFootprintOnScreenWhenZoomedIn();
 
 private:
   QTemporaryDir dir_;
@@ -168,7 +174,8 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
 
   // Keys typed with the pointer over the frames reach the window's shortcuts.
   input.press({XK_Control_L, XK_z});
-  QVERIFY(QTest::qWaitFor([&] { return !view->modeller().canUndo() && view->modeller().canRedo(); }, 3000));
+  QVERIFY(QTest::qWaitFor([&] { return !view->modeller().canUndo() && view->modeller().canRedo(); },
+                          3000));
   input.press({XK_Control_L, XK_y});
   QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo(); }, 3000));
   input.press({XK_s});
@@ -714,6 +721,105 @@ void RealInputRenderTest::preferencesSetTheUndoMemory() {
   QVERIFY(next);
   QCOMPARE(next->undoBudgetMiB(), 64);
   QSettings().remove("undo/budgetMiB");
+}
+
+// Issue 31: a crease folded into a curl on a short stroke zoomed in, because the radius was a
+// fraction of the bounding box. With the radius in view pixels (a new user's unit) a short crease
+// stroke, real presses and moves at the view's centre, covers the same span on screen at the
+// default zoom and zoomed in ×4; with the scene radius the span grows with the zoom. The span:
+// the texels the stroke moved (by more than 5 % of its largest move), projected through the
+// stroke's camera, from top to bottom (across the stroke).
+void RealInputRenderTest::aViewRadiusKeepsItsFootprintOnScreenWhenZoomedIn() {
+  FakeInput input;
+  QVERIFY2(input.ready(), "no X display with the XTEST extension");
+  QSettings().remove("brushes");
+  const std::unique_ptr<app::MainWindow> window =
+      app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window);
+  QVERIFY(window->newDocument(core::BaseShape::Sphere, 256, true));
+  app::ViewportWidget* view = window->viewport();
+  app::BrushPanel* panel = window->brushPanel();
+  // A new user's unit is the view's (openTestWindow chose the scene's for the older tests).
+  QSettings().remove("brushes");
+  QCOMPARE(app::BrushValueStore::loadRadiusUnit(), app::RadiusUnit::View);
+  QCOMPARE(app::BrushPanel().radiusUnit(), app::RadiusUnit::View);
+  panel->setRadiusUnit(app::RadiusUnit::View);
+  QVERIFY(panel->selectBrush("crease"));
+  panel->setKeepDetail(false); // its relaxation would move samples beyond the brush
+  panel->setStabilizer(0);
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+
+  const auto strokeSpan = [&](double zoom) -> double {
+    view->resetCamera();
+    const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+    const std::optional<core::PickHit> hit = view->pickAt(centre);
+    if (!hit) return -1;
+    app::zoomCameraAt(*camera, hit->position, zoom);
+    view->update();
+    QTest::qWait(100);
+    const std::vector<float> before = app::testing::positionsOf(*window);
+    const QPoint at = view->mapToGlobal(centre.toPoint());
+    input.moveTo(at - QPoint(12, 0));
+    input.button(1, true);
+    for (int k = 1; k <= 6; ++k)
+      input.moveTo(at - QPoint(12, 0) + QPoint(4 * k, 0));
+    input.button(1, false);
+    if (!QTest::qWaitFor([&] { return view->modeller().canUndo() && !view->stroking(); }, 5000))
+      return -1;
+    const std::vector<float> after = app::testing::positionsOf(*window);
+    float largest = 0;
+    std::vector<float> moved(before.size() / 4);
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      moved[k] = std::hypot(after[4 * k] - before[4 * k], after[4 * k + 1] - before[4 * k + 1],
+                            after[4 * k + 2] - before[4 * k + 2]);
+      largest = std::max(largest, moved[k]);
+    }
+    double top = 1e9, bottom = -1e9;
+    for (std::size_t k = 0; k < moved.size(); ++k)
+      if (moved[k] > 0.05f * largest) {
+        const double y = view->project({before[4 * k], before[4 * k + 1], before[4 * k + 2]}).y();
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    window->action("actionUndo")->trigger();
+    return largest > 0 ? bottom - top : -1;
+  };
+
+  QCOMPARE(panel->radiusPixels(), app::kDefaultRadiusPixels);
+  const double view1 = strokeSpan(1), view4 = strokeSpan(4);
+  panel->setRadiusUnit(app::RadiusUnit::Scene);
+  const double scene1 = strokeSpan(1), scene4 = strokeSpan(4);
+  qInfo("crease span across the stroke on screen: view radius %.0f px: %.1f px at ×1, %.1f px at "
+        "×4 (%.2f); scene radius %.1f %%: %.1f px at ×1, %.1f px at ×4 (%.2f)",
+        double(panel->radiusPixels()), view1, view4, view4 / view1, double(panel->radius()) * 100,
+        scene1, scene4, scene4 / scene1);
+  QVERIFY(view1 > 0 && view4 > 0 && scene1 > 0 && scene4 > 0);
+  // About the ring's diameter in the view unit, at both zooms (within 20 %).
+  QVERIFY2(std::abs(view4 / view1 - 1) < 0.2, qPrintable(QString::number(view4 / view1)));
+  QVERIFY2(view1 > 1.2 * app::kDefaultRadiusPixels && view1 < 2.2 * app::kDefaultRadiusPixels,
+           qPrintable(QString::number(view1)));
+  // The scene radius grows with the zoom (×4 give or take the sphere's curvature).
+  QVERIFY2(scene4 / scene1 > 3.2 && scene4 / scene1 < 4.8,
+           qPrintable(QString::number(scene4 / scene1)));
+
+  // ] steps the view radius in pixels (the scene radius stays), and the header says pixels.
+  panel->setRadiusUnit(app::RadiusUnit::View);
+  QVERIFY(activate(*window));
+  input.moveTo(view->mapToGlobal(QPoint(view->width() / 2, view->height() / 2)));
+  const float pixels = panel->radiusPixels(), fraction = panel->radius();
+  input.press({XK_bracketright});
+  QVERIFY2(QTest::qWaitFor([&] { return std::abs(panel->radiusPixels() - pixels * 1.1f) < 1e-3f; },
+                           2000),
+           qPrintable(QString("%1 px -> %2 px").arg(pixels).arg(panel->radiusPixels())));
+  QCOMPARE(panel->radius(), fraction);
+  auto* header = window->findChild<app::BrushHeader*>(QStringLiteral("BrushHeader"));
+  QVERIFY(header);
+  QStringList labels;
+  for (const QLabel* label : header->findChildren<QLabel*>())
+    labels << label->text();
+  QVERIFY2(labels.contains(app::radiusText(app::RadiusUnit::View, panel->radiusPixels())),
+           qPrintable(labels.join(" | ")));
+  QVERIFY(labels.join(" ").contains(" px"));
 }
 
 QTEST_MAIN(RealInputRenderTest)

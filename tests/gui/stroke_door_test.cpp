@@ -11,6 +11,7 @@
 #include "sculpt_session.h"
 
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/error.h"
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_engine.h"
 #include "octaclay/gpu/gl_context.h"
@@ -18,7 +19,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <array>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -75,6 +78,7 @@ private slots:
   void initTestCase();
   void sameStrokeThroughBothDoors_data();
   void sameStrokeThroughBothDoors();
+  void anObjectRadiusOverridesTheFractionOfTheDiagonal();
 
 private:
   QTemporaryDir dir_;
@@ -211,6 +215,54 @@ void StrokeDoorTest::sameStrokeThroughBothDoors() {
   QVERIFY2(sameBits(cli.feature, viewport.feature), "the feature layer differs");
   QVERIFY2(sameBits(cli.mask, viewport.mask), "the mask differs");
   QCOMPARE(cli.hasMask, viewport.hasMask);
+}
+
+// The viewport's view radius reaches the session as StrokeStart::objectRadius (object units):
+// the fraction × the diagonal given that way strokes bit for bit as the fraction does, whatever
+// settings.radius then says; twice that radius strokes differently; a radius that is not finite
+// and positive is refused before the stroke begins.
+void StrokeDoorTest::anObjectRadiusOverridesTheFractionOfTheDiagonal() {
+  const gpu::BrushManifest& manifest = *catalog_.find("push");
+  const auto strokeWith = [&](float fraction, std::optional<float> objectRadius) {
+    app::SculptSession session;
+    session.setBrushes(*engine_, catalog_);
+    session.loadBrush(manifest);
+    session.setDocument(core::readDocument(sphere_.toStdString()));
+    app::StrokeStart start;
+    start.brushId = start.settings.brushId = "push";
+    start.settings.radius = fraction;
+    start.settings.strength = 1.0f;
+    start.settings.keepDetail = false;
+    if (objectRadius)
+      start.objectRadius = *objectRadius * session.gpuDocument().bounds().diagonal();
+    session.beginStroke(start);
+    for (const auto& uv : {std::array<float, 2>{0.3f, 0.4f}, std::array<float, 2>{0.36f, 0.42f}})
+      session.moveTo(app::StrokeMove::toUv({uv[0], uv[1]}));
+    session.finishStroke();
+    return floatsOf(session.document().positions);
+  };
+  const std::vector<float> scene = strokeWith(0.05f, std::nullopt);
+  QVERIFY(sameBits(scene, strokeWith(0.9f, 0.05f)));
+  QVERIFY(!sameBits(scene, strokeWith(0.05f, 0.1f)));
+
+  app::SculptSession session;
+  session.setBrushes(*engine_, catalog_);
+  session.loadBrush(manifest);
+  session.setDocument(core::readDocument(sphere_.toStdString()));
+  for (const float bad : {0.0f, -0.1f, std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::infinity()}) {
+    app::StrokeStart start;
+    start.brushId = start.settings.brushId = "push";
+    start.objectRadius = bad;
+    try {
+      session.beginStroke(start);
+      QFAIL(qPrintable(QString("radius %1 accepted").arg(bad)));
+    } catch (const core::Error& e) {
+      QCOMPARE(e.kind(), core::ErrorKind::InvalidArgument);
+      QVERIFY2(QString(e.what()).contains("brush radius"), e.what());
+    }
+    QVERIFY(!session.stroking());
+  }
 }
 
 QTEST_GUILESS_MAIN(StrokeDoorTest)

@@ -27,6 +27,9 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
   options.autosaveSeconds = 0;
   options.quickStartOnFirstRun = false;
   auto w = std::make_unique<MainWindow>(options);
+  // The render tests size their brushes as a fraction of the model's diagonal (RadiusUnit::
+  // Scene); a new user's view radius in pixels is tested where it is set (real_input's).
+  w->brushPanel()->setRadiusUnit(RadiusUnit::Scene);
   w->resize(1000, 700);
   w->show();
   if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;

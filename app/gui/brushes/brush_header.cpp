@@ -1,6 +1,7 @@
 #include "brush_header.h"
 
 #include "brush_value_store.h"
+#include "radius_field.h"
 
 #include "octaclay/gpu/stroke.h"
 
@@ -16,6 +17,12 @@ namespace octaclay::app {
 namespace {
 
 constexpr std::array<unsigned, 3> kAxes{gpu::kSymmetryX, gpu::kSymmetryY, gpu::kSymmetryZ};
+
+// The slider's range in unit.
+std::array<double, 2> radiusRange(RadiusUnit unit) {
+  return unit == RadiusUnit::View ? std::array<double, 2>{kMinRadiusPixels, kMaxRadiusPixels}
+                                  : std::array<double, 2>{kMinRadius, kMaxRadius};
+}
 
 QSlider* makeSlider(const QString& name, int maximum, const QString& tip) {
   auto* slider = new QSlider(Qt::Horizontal);
@@ -35,10 +42,10 @@ BrushHeader::BrushHeader(QWidget* parent) : QToolBar(tr("Brush settings"), paren
   toggleViewAction()->setVisible(false);
 
   radius_ = makeSlider(QStringLiteral("headerRadius"), kRadiusSteps,
-                       tr("Brush radius, in percent of the model's size (F, then drag on the "
-                          "model)"));
+                       tr("Brush radius, in pixels of the view or percent of the model's size as "
+                          "the Brushes dock says (F, then drag on the model)"));
   radiusLabel_ = new QLabel;
-  radiusLabel_->setMinimumWidth(radiusLabel_->fontMetrics().horizontalAdvance("100.0 %"));
+  radiusLabel_->setMinimumWidth(radiusLabel_->fontMetrics().horizontalAdvance("1000 px"));
   strength_ = makeSlider(QStringLiteral("headerStrength"), 100,
                          tr("How strongly the brush acts (Shift+F, then drag on the model)"));
   strengthLabel_ = new QLabel;
@@ -68,20 +75,21 @@ BrushHeader::BrushHeader(QWidget* parent) : QToolBar(tr("Brush settings"), paren
   }
 
   connect(radius_, &QSlider::valueChanged, this, [this](int position) {
-    showLabels(positionToRadius(position), static_cast<float>(strength_->value()) / 100.0f);
-    emit radiusEdited(positionToRadius(position));
+    showLabels(positionToRadius(position, unit_), static_cast<float>(strength_->value()) / 100.0f);
+    emit radiusEdited(positionToRadius(position, unit_));
   });
   connect(strength_, &QSlider::valueChanged, this, [this](int percent) {
-    showLabels(positionToRadius(radius_->value()), static_cast<float>(percent) / 100.0f);
+    showLabels(positionToRadius(radius_->value(), unit_), static_cast<float>(percent) / 100.0f);
     emit strengthEdited(static_cast<float>(percent) / 100.0f);
   });
-  setValues(BrushValues{}.radius, BrushValues{}.strength, 0);
+  setValues(RadiusUnit::Scene, BrushValues{}.radius, BrushValues{}.strength, 0);
 }
 
-void BrushHeader::setValues(float radius, float strength, unsigned symmetry) {
+void BrushHeader::setValues(RadiusUnit unit, float radius, float strength, unsigned symmetry) {
+  unit_ = unit;
   {
     const QSignalBlocker blockRadius(radius_), blockStrength(strength_);
-    radius_->setValue(radiusToPosition(radius));
+    radius_->setValue(radiusToPosition(radius, unit));
     strength_->setValue(static_cast<int>(std::lround(strength * 100.0f)));
   }
   for (std::size_t k = 0; k < 3; ++k) {
@@ -91,19 +99,21 @@ void BrushHeader::setValues(float radius, float strength, unsigned symmetry) {
   showLabels(radius, strength);
 }
 
-int BrushHeader::radiusToPosition(float radius) {
-  const float r = std::clamp(radius, kMinRadius, kMaxRadius);
-  const double t = std::log(double(r) / kMinRadius) / std::log(double(kMaxRadius) / kMinRadius);
+int BrushHeader::radiusToPosition(float radius, RadiusUnit unit) {
+  const auto [lo, hi] = radiusRange(unit);
+  const double r = std::clamp(double(radius), lo, hi);
+  const double t = std::log(r / lo) / std::log(hi / lo);
   return static_cast<int>(std::lround(t * kRadiusSteps));
 }
 
-float BrushHeader::positionToRadius(int position) {
+float BrushHeader::positionToRadius(int position, RadiusUnit unit) {
+  const auto [lo, hi] = radiusRange(unit);
   const double t = double(std::clamp(position, 0, kRadiusSteps)) / kRadiusSteps;
-  return static_cast<float>(kMinRadius * std::pow(double(kMaxRadius) / kMinRadius, t));
+  return static_cast<float>(lo * std::pow(hi / lo, t));
 }
 
 void BrushHeader::showLabels(float radius, float strength) {
-  radiusLabel_->setText(QStringLiteral("%1 %").arg(double(radius) * 100.0, 0, 'f', 1));
+  radiusLabel_->setText(radiusText(unit_, radius));
   strengthLabel_->setText(QStringLiteral("%1 %").arg(std::lround(strength * 100.0f)));
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "brush_settings.h"
+
 #include <QToolBar>
 
 #include <array>
@@ -19,17 +21,20 @@ class BrushHeader : public QToolBar {
 public:
   explicit BrushHeader(QWidget* parent = nullptr);
 
-  /// Shows these values without emitting anything. radius: fraction of the bounding-box
-  /// diagonal; strength in [0, 1]; symmetry: gpu::SymmetryAxis bits.
-  void setValues(float radius, float strength, unsigned symmetry);
+  /// Shows these values without emitting anything. radius in unit: pixels (View) or a
+  /// fraction of the bounding-box diagonal (Scene); strength in [0, 1]; symmetry:
+  /// gpu::SymmetryAxis bits.
+  void setValues(RadiusUnit unit, float radius, float strength, unsigned symmetry);
 
   /// The radius slider's scale: position (0 … kRadiusSteps) ↔ radius, logarithmic from
-  /// kMinRadius to kMaxRadius so small brushes get fine steps.
+  /// kMinRadius to kMaxRadius (Scene) or kMinRadiusPixels to kMaxRadiusPixels (View) so small
+  /// brushes get fine steps.
   static constexpr int kRadiusSteps = 1000;
-  static int radiusToPosition(float radius);
-  static float positionToRadius(int position);
+  static int radiusToPosition(float radius, RadiusUnit unit = RadiusUnit::Scene);
+  static float positionToRadius(int position, RadiusUnit unit = RadiusUnit::Scene);
 
 signals:
+  /// In the unit shown (setValues).
   void radiusEdited(float radius);
   void strengthEdited(float strength);
   void symmetryEdited(unsigned axes);
@@ -37,6 +42,7 @@ signals:
 private:
   void showLabels(float radius, float strength);
 
+  RadiusUnit unit_ = RadiusUnit::Scene;
   QSlider* radius_ = nullptr;
   QSlider* strength_ = nullptr;
   QLabel* radiusLabel_ = nullptr;

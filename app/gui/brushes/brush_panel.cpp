@@ -6,6 +6,7 @@
 
 #include "brush_list.h"
 #include "parameter_form.h"
+#include "radius_field.h"
 #include "stroke_options_box.h"
 
 #include <QComboBox>
@@ -58,7 +59,8 @@ QString areaTitle(gpu::AreaMode area) {
 
 // ---------------------------------------------------------------------------------------------
 
-BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
+BrushPanel::BrushPanel(QWidget* parent)
+    : QWidget(parent), radiusUnit_(BrushValueStore::loadRadiusUnit()) {
   brushList_ = new QTreeWidget;
   brushList_->setObjectName(QStringLiteral("brushList"));
   brushList_->setHeaderHidden(true);
@@ -133,6 +135,8 @@ BrushSettings BrushPanel::settings() const {
   BrushSettings s;
   s.brushId = currentId_.toStdString();
   s.radius = v.radius;
+  s.radiusUnit = radiusUnit_;
+  s.radiusPixels = v.radiusPixels;
   s.strength = v.strength;
   s.falloff = v.falloff;
   s.area = v.area;
@@ -185,11 +189,33 @@ void BrushPanel::setRadius(float fractionOfDiagonal) {
   const float r = clampFinite(fractionOfDiagonal, kMinRadius, kMaxRadius, currentValues().radius);
   if (r == currentValues().radius) return;
   currentValues().radius = r;
-  if (radiusSpin_) {
-    const QSignalBlocker block(radiusSpin_);
-    radiusSpin_->setValue(static_cast<double>(r) * 100.0);
-  }
+  if (radiusField_ && radiusUnit_ == RadiusUnit::Scene) radiusField_->setValue(radiusUnit_, r);
   valuesEdited();
+}
+
+void BrushPanel::setRadiusPixels(float pixels) {
+  const float r =
+      clampFinite(pixels, kMinRadiusPixels, kMaxRadiusPixels, currentValues().radiusPixels);
+  if (r == currentValues().radiusPixels) return;
+  currentValues().radiusPixels = r;
+  if (radiusField_ && radiusUnit_ == RadiusUnit::View) radiusField_->setValue(radiusUnit_, r);
+  valuesEdited();
+}
+
+void BrushPanel::setRadiusUnit(RadiusUnit unit) {
+  if (unit == radiusUnit_) return;
+  radiusUnit_ = unit;
+  BrushValueStore::saveRadiusUnit(unit);
+  if (radiusField_) radiusField_->setValue(unit, radiusInUnit());
+  emit settingsChanged();
+}
+
+void BrushPanel::setRadiusInUnit(float value) {
+  radiusUnit_ == RadiusUnit::View ? setRadiusPixels(value) : setRadius(value);
+}
+
+float BrushPanel::radiusInUnit() const {
+  return radiusUnit_ == RadiusUnit::View ? radiusPixels() : radius();
 }
 
 void BrushPanel::setStrength(float s) {
@@ -291,7 +317,7 @@ void BrushPanel::rebuildForm() {
   const gpu::BrushManifest* brush = currentBrush();
   if (!brush) {
     layout->addRow(new QLabel(tr("No brush loaded.")));
-    radiusSpin_ = nullptr;
+    radiusField_ = nullptr;
     strengthSpin_ = nullptr;
     return;
   }
@@ -304,21 +330,16 @@ void BrushPanel::rebuildForm() {
     layout->addRow(description);
   }
 
-  radiusSpin_ = new QDoubleSpinBox;
-  radiusSpin_->setObjectName(QStringLiteral("radius"));
-  radiusSpin_->setDecimals(1);
-  radiusSpin_->setRange(static_cast<double>(kMinRadius) * 100.0,
-                        static_cast<double>(kMaxRadius) * 100.0);
-  radiusSpin_->setSingleStep(0.5);
-  radiusSpin_->setSuffix(QStringLiteral(" %"));
-  radiusSpin_->setValue(static_cast<double>(v.radius) * 100.0);
-  radiusSpin_->setToolTip(tr("Brush radius, in percent of the model's bounding-box diagonal"));
-  connect(radiusSpin_, &QDoubleSpinBox::valueChanged, this, [this](double percent) {
-    currentValues().radius =
-        std::clamp(static_cast<float>(percent / 100.0), kMinRadius, kMaxRadius);
+  radiusField_ = new RadiusField;
+  radiusField_->setValue(radiusUnit_, radiusInUnit());
+  connect(radiusField_, &RadiusField::valueEdited, this, [this](float value) {
+    // Within the unit's limits: the field's range.
+    (radiusUnit_ == RadiusUnit::View ? currentValues().radiusPixels : currentValues().radius) =
+        value;
     valuesEdited();
   });
-  layout->addRow(tr("Radius"), radiusSpin_);
+  connect(radiusField_, &RadiusField::unitChosen, this, &BrushPanel::setRadiusUnit);
+  layout->addRow(tr("Radius"), radiusField_);
 
   strengthSpin_ = new QDoubleSpinBox;
   strengthSpin_->setObjectName(QStringLiteral("strength"));

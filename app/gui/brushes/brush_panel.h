@@ -27,14 +27,17 @@ class QVBoxLayout;
 
 namespace octaclay::app {
 
+class RadiusField;
 class StrokeOptionsBox;
 
 /// The Brushes dock panel: the brush list grouped by category, the brushes that failed to load,
 /// and a form for the current brush (radius, strength, falloff, area mode, then one widget per
 /// manifest parameter) above the stroke options shared by all brushes (pressure, stabilizer,
 /// symmetry, keep detail). Each brush's values are remembered while switching and persisted with
-/// the default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
-/// and parameters/<parameter id>); the stroke options live in group "brushPanel". GUI thread.
+/// the default-constructed QSettings in group "brushes/<id>" (keys radius, radiusPixels, strength,
+/// falloff, area, and parameters/<parameter id>); the radius unit, shared by all brushes, in
+/// key "brushes/radiusUnit" (BrushValueStore::loadRadiusUnit: View for a new user); the stroke
+/// options live in group "brushPanel". GUI thread.
 class BrushPanel : public QWidget {
   Q_OBJECT
 
@@ -77,6 +80,19 @@ public:
   float radius() const;
   float strength() const;
 
+  /// What the radius is measured in, for every brush: pixels of the view (View) or a fraction
+  /// of the diagonal (Scene). Persisted; emits settingsChanged when it changes.
+  void setRadiusUnit(RadiusUnit unit);
+  RadiusUnit radiusUnit() const { return radiusUnit_; }
+  /// The current brush's view radius in logical pixels, clamped to [1, 1000]; emits
+  /// settingsChanged when it changes.
+  void setRadiusPixels(float pixels);
+  float radiusPixels() const { return currentValues().radiusPixels; }
+  /// The radius in the current unit: pixels (View) or a fraction of the diagonal (Scene), what
+  /// the header, F and [ / ] change.
+  void setRadiusInUnit(float value);
+  float radiusInUnit() const;
+
   /// Stroke options shared by all brushes; each emits settingsChanged when the value changes.
   void setPressureTarget(PressureTarget target);
   /// Lazy-mouse strength, clamped to [0, 1] and kept in whole percent like the slider.
@@ -116,7 +132,8 @@ private:
   QVBoxLayout* errorLayout_ = nullptr;
   QScrollArea* formScroll_ = nullptr;
   QLabel* descriptionLabel_ = nullptr;
-  QPointer<QDoubleSpinBox> radiusSpin_;
+  RadiusUnit radiusUnit_ = RadiusUnit::View;
+  QPointer<RadiusField> radiusField_;
   QPointer<QDoubleSpinBox> strengthSpin_;
   std::map<QString, QPointer<QWidget>> parameterWidgets_;
   StrokeOptionsBox* strokeOptions_ = nullptr;

@@ -47,6 +47,8 @@ std::array<float, 4> fitParameter(const gpu::BrushParameter& parameter, std::arr
 
 void fitValues(const gpu::BrushManifest& brush, BrushValues& values) {
   values.radius = clampFinite(values.radius, kMinRadius, kMaxRadius, BrushValues{}.radius);
+  values.radiusPixels =
+      clampFinite(values.radiusPixels, kMinRadiusPixels, kMaxRadiusPixels, kDefaultRadiusPixels);
   values.strength = clampFinite(values.strength, 0.0f, 1.0f, BrushValues{}.strength);
   if (values.falloff == gpu::Falloff::Curve && brush.falloffCurve.empty())
     values.falloff = brush.falloff;
@@ -64,6 +66,20 @@ QString settingsGroup(const QString& id) {
 }
 
 } // namespace
+
+RadiusUnit BrushValueStore::loadRadiusUnit() {
+  QSettings settings;
+  const QString stored = settings.value(QStringLiteral("brushes/radiusUnit")).toString();
+  if (stored == QStringLiteral("view")) return RadiusUnit::View;
+  if (stored == QStringLiteral("scene")) return RadiusUnit::Scene;
+  settings.beginGroup(QStringLiteral("brushes"));
+  return settings.childGroups().isEmpty() ? RadiusUnit::View : RadiusUnit::Scene;
+}
+
+void BrushValueStore::saveRadiusUnit(RadiusUnit unit) {
+  QSettings().setValue(QStringLiteral("brushes/radiusUnit"),
+                       unit == RadiusUnit::View ? QStringLiteral("view") : QStringLiteral("scene"));
+}
 
 float clampFinite(float value, float lo, float hi, float fallback) {
   return std::isfinite(value) ? std::clamp(value, lo, hi) : fallback;
@@ -116,6 +132,8 @@ BrushValues BrushValueStore::load(const gpu::BrushManifest& brush) const {
   settings.beginGroup(settingsGroup(QString::fromStdString(brush.id)));
   bool ok = false;
   if (const float r = settings.value(QStringLiteral("radius")).toFloat(&ok); ok) v.radius = r;
+  if (const float r = settings.value(QStringLiteral("radiusPixels")).toFloat(&ok); ok)
+    v.radiusPixels = r;
   if (const float s = settings.value(QStringLiteral("strength")).toFloat(&ok); ok) v.strength = s;
   if (const auto falloff =
           fromManifestName<gpu::Falloff, 4>(settings.value(QStringLiteral("falloff")).toString()))
@@ -173,6 +191,7 @@ void BrushValueStore::save(const gpu::BrushManifest& brush) const {
   QSettings settings;
   settings.beginGroup(settingsGroup(id));
   settings.setValue(QStringLiteral("radius"), static_cast<double>(v.radius));
+  settings.setValue(QStringLiteral("radiusPixels"), static_cast<double>(v.radiusPixels));
   settings.setValue(QStringLiteral("strength"), static_cast<double>(v.strength));
   settings.setValue(QStringLiteral("falloff"), toQString(gpu::toManifestName(v.falloff)));
   settings.setValue(QStringLiteral("area"), toQString(gpu::toManifestName(v.area)));

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "brush_settings.h"
+
 #include "octaclay/gpu/brush_manifest.h"
 
 #include <QString>
@@ -14,6 +16,11 @@ namespace octaclay::app {
 
 /// Radius limits, as a fraction of the model's bounding-box diagonal.
 inline constexpr float kMinRadius = 0.001f, kMaxRadius = 1.0f;
+/// The view radius's limits and a brush's until the user sets one (RadiusUnit::View), in
+/// logical pixels: near the scene default's 5 % of the diagonal on a model the view frames
+/// (a sphere in a 1000 × 700 window: 26 px).
+inline constexpr float kMinRadiusPixels = 1.0f, kMaxRadiusPixels = 1000.0f,
+                       kDefaultRadiusPixels = 30.0f;
 /// A sculpt brush's strength until the user sets one: a first stroke, one pass, moves the surface
 /// about a quarter of the radius, like a thumb on clay (0.5 dug trenches and raised horns
 /// when a newcomer went back and forth).
@@ -29,7 +36,8 @@ float clampFinite(float value, float lo, float hi, float fallback);
 
 /// What the user set for one brush; survives switching brushes.
 struct BrushValues {
-  float radius = 0.05f;
+  float radius = 0.05f;                      ///< RadiusUnit::Scene's
+  float radiusPixels = kDefaultRadiusPixels; ///< RadiusUnit::View's
   float strength = 0.5f; ///< paint and splats; sculpt brushes start at kDefaultSculptStrength,
                          ///< dragging ones at kDefaultDragStrength
   gpu::Falloff falloff = gpu::Falloff::Smooth;
@@ -38,8 +46,9 @@ struct BrushValues {
 };
 
 /// Each brush's values: remembered while the brushes are replaced, persisted with the
-/// default-constructed QSettings in group "brushes/<id>" (keys radius, strength, falloff, area,
-/// and parameters/<parameter id>; enum options and materials by name). GUI thread.
+/// default-constructed QSettings in group "brushes/<id>" (keys radius, radiusPixels, strength,
+/// falloff, area, and parameters/<parameter id>; enum options and materials by name); the
+/// radius unit all brushes share in key "brushes/radiusUnit". GUI thread.
 class BrushValueStore {
 public:
   /// The installed materials' ids, in the engine's order: a material value is an index into
@@ -56,6 +65,11 @@ public:
   const BrushValues* find(const QString& id) const;
   /// Persists brush's values (nothing if the store has none).
   void save(const gpu::BrushManifest& brush) const;
+
+  /// The radius unit as stored ("view" or "scene"); without one, View for a new user and Scene
+  /// for one whose brushes already have stored values (their radii keep the size they had).
+  static RadiusUnit loadRadiusUnit();
+  static void saveRadiusUnit(RadiusUnit unit);
 
 private:
   BrushValues defaults(const gpu::BrushManifest& brush) const;

@@ -2,6 +2,7 @@
 
 #include "brush_panel.h"
 #include "modeller.h"
+#include "radius_field.h"
 #include "viewport_widget.h"
 
 #include <QApplication>
@@ -64,7 +65,7 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   const QRectF view = viewport_->rect();
   const QPointF cursor = viewport_->mapFromGlobal(QCursor::pos());
   origin_ = view.contains(lastPos_) ? lastPos_ : view.contains(cursor) ? cursor : view.center();
-  start_ = mode == Mode::Radius ? panel_->radius() : panel_->strength();
+  start_ = mode == Mode::Radius ? panel_->radiusInUnit() : panel_->strength();
 
   // How far the ring's edge moves on screen per unit of radius, at the ring's centre.
   const auto hit = viewport_->pickAt(origin_);
@@ -83,6 +84,7 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   pixelsPerRadius_ = std::hypot(b.x() - a.x(), b.y() - a.y()) / 0.1;
   if (!std::isfinite(pixelsPerRadius_) || pixelsPerRadius_ < 1e-3)
     pixelsPerRadius_ = std::max(1, viewport_->height());
+  if (panel_->radiusUnit() == RadiusUnit::View) pixelsPerRadius_ = 1; // a pixel is a pixel
 
   marks_ = Marks{};
   marks_.centre = origin_;
@@ -105,15 +107,15 @@ void CanvasBrushAdjust::moveTo(QPointF p) {
   if (!panel_ || mode_ == Mode::None) return;
   const double dx = p.x() - origin_.x();
   if (mode_ == Mode::Radius) {
-    panel_->setRadius(static_cast<float>(start_ + dx / pixelsPerRadius_));
+    panel_->setRadiusInUnit(static_cast<float>(start_ + dx / pixelsPerRadius_));
     marks_.strength = -1;
-    marks_.text = tr("Radius %1 %").arg(double(panel_->radius()) * 100.0, 0, 'f', 1);
+    marks_.text = tr("Radius %1").arg(radiusText(panel_->radiusUnit(), panel_->radiusInUnit()));
   } else {
     panel_->setStrength(static_cast<float>(start_ + dx / kPixelsPerStrength));
     marks_.strength = panel_->strength();
     marks_.text = tr("Strength %1 %").arg(std::lround(panel_->strength() * 100.0f));
   }
-  marks_.ringPixels = double(panel_->radius()) * pixelsPerRadius_;
+  marks_.ringPixels = double(panel_->radiusInUnit()) * pixelsPerRadius_;
   if (viewport_) viewport_->update();
 }
 
@@ -121,7 +123,7 @@ void CanvasBrushAdjust::end(bool confirmed) {
   const Mode mode = mode_;
   mode_ = Mode::None;
   if (!confirmed && panel_) {
-    if (mode == Mode::Radius) panel_->setRadius(start_);
+    if (mode == Mode::Radius) panel_->setRadiusInUnit(start_);
     if (mode == Mode::Strength) panel_->setStrength(start_);
   }
   if (swallowRelease_ == Qt::NoButton) qApp->removeEventFilter(this);

@@ -36,7 +36,7 @@ public:
   Mode mode() const { return mode_; }
   /// Where (viewport pixels) the adjustment began: the pointer's place then.
   QPointF origin() const { return origin_; }
-  /// The value the adjustment started from.
+  /// The value the adjustment started from (a radius in the panel's unit, or a strength).
   float startValue() const { return start_; }
   /// What the adjustment paints over the viewport's frames (logical pixels): its value in a
   /// box beside centre, and a ring of ringPixels (with a disc of strength × ringPixels inside,
@@ -50,8 +50,8 @@ public:
   };
   /// The marks shown now (meaningful while mode() is not None).
   const Marks& marks() const { return marks_; }
-  /// Pixels of sideways motion per unit of radius (a fraction of the model's diagonal), as
-  /// measured at begin() at the ring's centre.
+  /// Pixels of sideways motion per unit of radius: 1 for a view radius (pixels), else per
+  /// fraction of the model's diagonal as measured at begin() at the ring's centre.
   double pixelsPerRadius() const { return pixelsPerRadius_; }
 
 signals:

@@ -256,6 +256,11 @@ bool LodPanel::setDivisor(int divisor) {
   return true;
 }
 
+void LodPanel::forgetDisplayChoice() {
+  userChose_ = false;
+  setDisplay(Display::FullResolution);
+}
+
 void LodPanel::setTriangleCounts(long long displayed, long long full) {
   displayedLabel_->setText(tr("Displayed: %1 triangles").arg(groupedNumber(displayed)));
   fullLabel_->setText(tr("Full: %1 triangles").arg(groupedNumber(full)));

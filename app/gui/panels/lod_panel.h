@@ -62,6 +62,11 @@ public:
   /// of two in [1, kMaxDivisor] that is a level of the current document (any such power of two
   /// when no document is set yet). Emits levelChanged when the divisor changes.
   bool setDivisor(int divisor);
+  /// Forgets the level the user chose and shows the full resolution (not the LOD): the next
+  /// setDocumentSize picks the default level again (File ▸ New starts from the defaults, not
+  /// from the detail chosen for an imported or opened model). Emits displayChanged when the
+  /// display changes.
+  void forgetDisplayChoice();
 
   /// Shows "Displayed: 131,072 triangles" and "Full: 2,097,152 triangles" (numbers grouped as
   /// the default QLocale writes them). A displayed N-image has 2·N² triangles.

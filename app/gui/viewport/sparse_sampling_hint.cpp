@@ -1,6 +1,7 @@
 #include "sparse_sampling_hint.h"
 
 #include "modeller.h"
+#include "screen_radius.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/measure/brush_sampling.h"
@@ -10,6 +11,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <cmath>
 
 namespace octaclay::app {
 
@@ -34,8 +36,13 @@ SparseSamplingHint::SparseSamplingHint(ViewportWidget* view, QStatusBar* bar, QA
 
 void SparseSamplingHint::check(core::Vec2f uv) {
   if (!view_->modeller().hasDocument()) return;
-  const double radius = double(view_->modeller().brushState().settings().radius) * double(view_->modeller().modelDiagonal());
-  const core::BrushSampling sampling = core::brushSampling(view_->modeller().document().positions, uv, radius);
+  // The radius the press strokes with: in the view's unit, at the depth of the point pressed.
+  const core::GeometryImage& positions = view_->modeller().document().positions;
+  const int n = positions.size();
+  const core::Vec4f at = positions.at(static_cast<int>(std::lround(uv.x * float(n))),
+                                      static_cast<int>(std::lround(uv.y * float(n))));
+  const double radius = viewBrushObjectRadius(*view_, at.xyz());
+  const core::BrushSampling sampling = core::brushSampling(positions, uv, radius);
   lastSamples_ = sampling.samplesAcross;
   if (!sampling.sparse()) return;
   message_ = tr("Few samples here: %1 across the brush's radius (%2 or more shape the surface "

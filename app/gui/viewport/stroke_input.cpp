@@ -2,6 +2,7 @@
 
 #include "camera_control.h"
 #include "modeller.h"
+#include "screen_radius.h"
 #include "viewport_widget.h"
 
 #include <vtkCamera.h>
@@ -28,13 +29,9 @@ std::optional<core::PickHit> StrokeInput::pressPick(QPointF p) const {
   const Modeller& modeller = view_.modeller();
   if (!modeller.session().hasDocument()) return std::nullopt;
   // The ring's radius on screen at the depth of the camera's focal point (the model, as the
-  // views frame it): the brush radius along the view's up.
-  vtkCamera* camera = view_.renderer()->GetActiveCamera();
-  const core::Vec3f centre = toVec(camera->GetFocalPoint());
-  const core::Vec3f up = core::normalize(toVec(camera->GetViewUp()));
-  const float radius = view_.modeller().brushState().settings().radius * modeller.modelDiagonal();
-  const QPointF a = view_.project(centre), b = view_.project(centre + up * radius);
-  const double ring = std::hypot(b.x() - a.x(), b.y() - a.y());
+  // views frame it).
+  const double ring =
+      viewBrushPixelRadius(view_, toVec(view_.renderer()->GetActiveCamera()->GetFocalPoint()));
   // Rings of a third, two thirds and the whole radius, nearest first: the nearest hit wins.
   for (int k = 1; k <= 3; ++k) {
     const double r = ring * k / 3.0;
@@ -58,6 +55,9 @@ bool StrokeInput::begin(QPointF p, const core::PickHit& hit, Qt::KeyboardModifie
   start.paintTarget = brush.paintTarget();
   start.sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
   start.eye = toVec(view_.renderer()->GetActiveCamera()->GetPosition());
+  // The view radius becomes object units at the pressed point's depth, fixed for the stroke.
+  if (start.settings.radiusUnit == RadiusUnit::View)
+    start.objectRadius = viewBrushObjectRadius(view_, hit.position);
   if (!modeller.strokes().begin(start)) return false;
   stabilizer_.setStrength(start.settings.stabilizer);
   stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});

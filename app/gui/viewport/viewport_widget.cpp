@@ -3,6 +3,7 @@
 #include "camera_control.h"
 #include "current_context.h"
 #include "modeller.h"
+#include "screen_radius.h"
 #include "viewport_overlay.h"
 #include "viewport_surface.h"
 
@@ -127,8 +128,7 @@ void ViewportWidget::paintGL() {
 std::optional<BrushRing> ViewportWidget::ring() const {
   const std::optional<core::PickHit>& hover = strokes_.hover();
   if (!hover || drag_ == Drag::Orbit || drag_ == Drag::Pan) return std::nullopt;
-  return BrushRing{hover->position,
-                   modeller_.brushState().settings().radius * modeller_.modelDiagonal(),
+  return BrushRing{hover->position, viewBrushObjectRadius(*this, hover->position),
                    (QGuiApplication::keyboardModifiers() & Qt::ControlModifier) != 0};
 }
 

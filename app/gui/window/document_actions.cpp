@@ -208,6 +208,8 @@ bool DocumentActions::newDocument(core::BaseShape shape, int n) {
     showError(tr("Could not create the model: %1").arg(error));
     return false;
   }
+  // A new model starts from the default display detail, whatever the last one was shown at.
+  parts_.lodPanel->forgetDisplayChoice();
   adoptDocument(std::move(*made), {});
   lastError_.clear();
   return true;

@@ -149,7 +149,7 @@ void MainWindow::connectParts() {
   connect(brushPanel_, &BrushPanel::settingsChanged, this,
           [this] { viewport_->modeller().brushState().setSettings(brushPanel_->settings()); });
   connect(viewport_, &ViewportWidget::radiusStepRequested, this,
-          [this](float f) { brushPanel_->setRadius(brushPanel_->radius() * f); });
+          [this](float f) { brushPanel_->setRadiusInUnit(brushPanel_->radiusInUnit() * f); });
   connect(viewport_, &ViewportWidget::strengthStepRequested, this,
           [this](float f) { brushPanel_->setStrength(brushPanel_->strength() * f); });
   auto applyLayers = [this] {

@@ -38,11 +38,11 @@ void MainWindow::buildToolBars() {
   const auto showValues = [this, brushes, header] {
     brushes->setCurrentBrush(brushPanel_->currentBrushId());
     const BrushSettings s = brushPanel_->settings();
-    header->setValues(s.radius, s.strength, s.symmetry);
+    header->setValues(s.radiusUnit, brushPanel_->radiusInUnit(), s.strength, s.symmetry);
   };
   connect(brushPanel_, &BrushPanel::settingsChanged, this, showValues);
   showValues();
-  connect(header, &BrushHeader::radiusEdited, brushPanel_, &BrushPanel::setRadius);
+  connect(header, &BrushHeader::radiusEdited, brushPanel_, &BrushPanel::setRadiusInUnit);
   connect(header, &BrushHeader::strengthEdited, brushPanel_, &BrushPanel::setStrength);
   connect(header, &BrushHeader::symmetryEdited, brushPanel_, &BrushPanel::setSymmetry);
 
