@@ -3,6 +3,8 @@
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
+#include <epoxy/gl.h>
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -66,8 +68,12 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
 Texture& GpuDocument::scratch(core::EditLayer layer) {
   Texture& twin = scratch_[index(layer)];
   if (twin.id() == 0) {
+    // Made in the middle of a pass whose inputs are bound: the active unit keeps its texture.
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     const int side = document_.positions.side();
     twin = Texture(side, side, formatOf(layer));
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
   }
   return twin;
 }
