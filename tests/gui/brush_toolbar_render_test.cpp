@@ -10,8 +10,8 @@
 #include "brush_toolbar.h"
 #include "canvas_brush_adjust.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -65,11 +65,30 @@ QString treeCurrentId(const MainWindow& w) {
                                      : QString();
 }
 
+// Moves the pointer to p over view and waits until the view has seen it: on xcb the move
+// travels through the X server, and F and the F-drag read where the view last saw the pointer.
+void moveSeen(QWidget* view, QPoint p) {
+  // At the application: during F the canvas adjust takes the moves before the view does.
+  struct LastMove : QObject {
+    QPointF at{-1, -1};
+    bool eventFilter(QObject*, QEvent* e) override {
+      if (e->type() == QEvent::MouseMove) at = static_cast<QMouseEvent*>(e)->globalPosition();
+      return false;
+    }
+  } seen;
+  qApp->installEventFilter(&seen);
+  QTest::mouseMove(view, p);
+  const QPointF global = view->mapToGlobal(QPointF(p));
+  if (!QTest::qWaitFor([&] { return seen.at == global; }, 2000))
+    qWarning("the move to (%d, %d) did not reach the view", p.x(), p.y());
+  qApp->removeEventFilter(&seen);
+}
+
 // Puts the pointer at p over view: from a pixel beside it, since Qt drops a move to where the
 // pointer already is.
 void pointAt(QWidget* view, QPoint p) {
-  QTest::mouseMove(view, p - QPoint(1, 1));
-  QTest::mouseMove(view, p);
+  moveSeen(view, p - QPoint(1, 1));
+  moveSeen(view, p);
 }
 
 // Makes w the active window: shortcuts reach only that, and under Xvfb, with no window manager,
@@ -89,7 +108,8 @@ double ringPixels(const app::ViewportWidget& view, core::Vec3f p, float r) {
   const core::Vec3f right =
       core::normalize(core::cross(core::Vec3f{float(d[0]), float(d[1]), float(d[2])},
                                   core::Vec3f{float(up[0]), float(up[1]), float(up[2])}));
-  const QPointF a = view.project(p), b = view.project(p + right * (r * view.modeller().modelDiagonal()));
+  const QPointF a = view.project(p),
+                b = view.project(p + right * (r * view.modeller().modelDiagonal()));
   return std::hypot(b.x() - a.x(), b.y() - a.y());
 }
 
@@ -202,7 +222,9 @@ void BrushToolBarRenderTest::eachIconSelectsItsBrushAndFollowsTheDock() {
     QTest::mouseClick(button, Qt::LeftButton);
     QCOMPARE(window_->brushPanel()->currentBrushId(), id);
     QCOMPARE(treeCurrentId(*window_), id);
-    QCOMPARE(QString::fromStdString(window_->viewport()->modeller().brushState().settings().brushId), id);
+    QCOMPARE(
+        QString::fromStdString(window_->viewport()->modeller().brushState().settings().brushId),
+        id);
     QVERIFY(action->isChecked());
     // The tooltip names the brush and its shortcut.
     const QKeySequence key = app::brushShortcut(id);
@@ -265,14 +287,15 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   pointAt(view, centre);
   QTest::keyClick(view, Qt::Key_F);
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::Radius);
-  QTest::mouseMove(view, centre + QPoint(20, 3));
-  QTest::mouseMove(view, centre + QPoint(40, 7));
+  moveSeen(view, centre + QPoint(20, 3));
+  moveSeen(view, centre + QPoint(40, 7));
   const float r1 = panel->radius();
   QVERIFY2(
       std::abs(ringPixels(*view, hit->position, r1) - (ring0 + 40)) < 1.0,
       qPrintable(
           QString("ring %1 px -> %2 px").arg(ring0).arg(ringPixels(*view, hit->position, r1))));
-  QCOMPARE(view->modeller().brushState().settings().radius, r1); // the ring is drawn with it already
+  QCOMPARE(view->modeller().brushState().settings().radius,
+           r1); // the ring is drawn with it already
   QCOMPARE(slider->value(), app::BrushHeader::radiusToPosition(r1));
   // Esc puts it back exactly; nothing was sculpted.
   QTest::keyClick(view, Qt::Key_Escape);
@@ -286,7 +309,7 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   QTest::keyClick(view, Qt::Key_F);
   QCOMPARE(adjust->origin(), QPointF(centre));
   const int shrink = int(ring0 / 2);
-  QTest::mouseMove(view, centre - QPoint(shrink, 0));
+  moveSeen(view, centre - QPoint(shrink, 0));
   const float r2 = panel->radius();
   QVERIFY2(std::abs(ringPixels(*view, hit->position, r2) - (ring0 - shrink)) < 1.0,
            qPrintable(QString::number(ringPixels(*view, hit->position, r2))));
@@ -300,10 +323,10 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   // F during a stroke does nothing: the stroke goes on and ends as usual.
   pointAt(view, centre);
   QTest::mousePress(view, Qt::LeftButton, {}, centre);
-  QTest::mouseMove(view, centre + QPoint(10, 0));
+  moveSeen(view, centre + QPoint(10, 0));
   QTest::keyClick(view, Qt::Key_F);
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
-  QTest::mouseMove(view, centre + QPoint(20, 0));
+  moveSeen(view, centre + QPoint(20, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, centre + QPoint(20, 0));
   QTRY_COMPARE(window_->undoStack()->count(), 2);
   QCOMPARE(panel->radius(), r2);
@@ -324,7 +347,7 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   QTest::keyClick(view, Qt::Key_F, Qt::ShiftModifier);
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::Strength);
   QCOMPARE(adjust->origin(), QPointF(centre));
-  QTest::mouseMove(view, centre - QPoint(60, 0));
+  moveSeen(view, centre - QPoint(60, 0));
   const float expected = s0 - float(60 / CanvasBrushAdjust::kPixelsPerStrength);
   QVERIFY2(std::abs(panel->strength() - expected) < 1e-4f,
            qPrintable(QString("%1 vs %2").arg(panel->strength()).arg(expected)));
@@ -334,7 +357,7 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   double eye[3];
   view->renderer()->GetActiveCamera()->GetPosition(eye);
   QTest::mousePress(view, Qt::RightButton, {}, centre - QPoint(60, 0));
-  QTest::mouseMove(view, centre + QPoint(40, 30));
+  moveSeen(view, centre + QPoint(40, 30));
   QTest::mouseRelease(view, Qt::RightButton, {}, centre + QPoint(40, 30));
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
   QCOMPARE(panel->strength(), s0);
@@ -345,7 +368,7 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   QCOMPARE(after[2], eye[2]);
   // Far to the right clamps at 100 %; Enter keeps it.
   QTest::keyClick(view, Qt::Key_F, Qt::ShiftModifier);
-  QTest::mouseMove(view, adjust->origin().toPoint() + QPoint(320, 0)); // 107 % more
+  moveSeen(view, adjust->origin().toPoint() + QPoint(320, 0)); // 107 % more
   QTest::keyClick(view, Qt::Key_Return);
   QCOMPARE(panel->strength(), 1.0f);
 }
@@ -407,7 +430,8 @@ void BrushToolBarRenderTest::defaultStrengthPullLeavesNoCrossingTriangle() {
   QTRY_COMPARE(window_->undoStack()->count(), 1);
   for (const int step : {1, 4}) { // the full resolution and N/4, the level shown at N = 1024
     const core::TriangleMesh before = core::extractMesh(start0, step);
-    const core::TriangleMesh pulled = core::extractMesh(view->modeller().document().positions, step);
+    const core::TriangleMesh pulled =
+        core::extractMesh(view->modeller().document().positions, step);
     const std::vector<bool> changed = testing::changedVertices(before, pulled);
     const auto count = std::count(changed.begin(), changed.end(), true);
     QVERIFY2(count > 100, qPrintable(QString::number(count)));
