@@ -1,5 +1,7 @@
 #include "sculpt_session.h"
 
+#include "keep_detail_run.h"
+
 #include "octaclay/core/document/edit_steps.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/tile_bounds.h"
@@ -15,20 +17,6 @@
 #include <unordered_map>
 
 namespace octaclay::app {
-
-// Keep-detail's state over one stroke: the relaxations made between its dabs.
-struct SculptSession::KeepDetailRun {
-  std::vector<std::array<float, 2>> pinnedPath; ///< a scripted stroke's path points
-  int relaxedAt = 0; ///< the dab count at the last relaxation between dabs
-  /// The samples the dabs changed so far ((N+1)²; empty: none known yet): what each relaxation
-  /// grows its region from. What relaxations moved is not in it (the region would creep outward
-  /// by a margin each time) unless a dab changed it again.
-  std::vector<std::uint8_t> dabChanged;
-  /// Where the relaxations left the samples they moved (index → position), to tell a dab's
-  /// change from theirs.
-  std::unordered_map<std::size_t, core::Vec4f> relaxed;
-  core::EditStep relaxations; ///< what they changed, as one step
-};
 
 struct SculptSession::ActiveStroke {
   StrokeStart start;
@@ -264,7 +252,7 @@ void StrokeEnding::relax() {
   solved_ = true;
   const auto start = std::chrono::steady_clock::now();
   SculptSession::ActiveStroke& st = *parts_->stroke;
-  parts_->relaxation = SculptSession::relaxAfterStroke(*parts_->mirror, parts_->record, st);
+  parts_->relaxation = relaxAfterStroke(st.keep, *parts_->mirror, parts_->record, st.reach);
   parts_->end.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -309,111 +297,17 @@ void SculptSession::abandonStroke() {
   publish(gpu::ChangeKind::Applied);
 }
 
-namespace {
-
-// Calls visit(index) with the texel index ((N+1)², row-major) of every position the step changed.
-template <typename Visit>
-void forEachChangedPosition(const core::EditStep& step, std::size_t side, Visit&& visit) {
-  for (const core::TileChange& t : step.tiles) {
-    if (t.layer != core::EditLayer::Positions) continue;
-    const std::size_t x = static_cast<std::size_t>(t.region.x),
-                      y = static_cast<std::size_t>(t.region.y),
-                      width = static_cast<std::size_t>(t.region.width);
-    std::size_t at = 0;
-    for (std::size_t r = 0; r + 1 < t.runs.size(); r += 2) {
-      at += t.runs[r];
-      for (std::size_t k = 0; k < t.runs[r + 1]; ++k, ++at)
-        visit((y + at / width) * side + x + at % width);
-    }
-  }
-}
-
-// The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
-// relaxation after it reaches keepDetailMargin samples beyond them and no farther.
-std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side) {
-  std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
-                                    0);
-  bool any = false;
-  forEachChangedPosition(record, static_cast<std::size_t>(side), [&](std::size_t index) {
-    changed[index] = 1;
-    any = true;
-  });
-  if (!any) changed.clear();
-  return changed;
-}
-
-// Keep-detail's first relaxation during a dragging stroke (snake hook), after this many dabs.
-constexpr int kFirstRelaxationDab = 4;
-
-core::RelaxOptions pinOptions(const std::vector<std::array<float, 2>>& pinnedPath, int n) {
-  core::RelaxOptions options;
-  for (const auto& uv : pinnedPath)
-    options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
-                              static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
-  return options;
-}
-
-// Adds to dabChanged ((N+1)², allocated on first use) the samples the dabs changed: those
-// `soFar` (the stroke's record so far) changed, except where a relaxation left them (`relaxed`)
-// and no dab moved them since. Returns whether any is marked.
-bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
-                   const std::unordered_map<std::size_t, core::Vec4f>& relaxed,
-                   const core::EditStep& soFar, const core::GeometryImage& positions) {
-  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
-  if (dabChanged.empty()) dabChanged.assign(side * side, 0);
-  forEachChangedPosition(soFar, side, [&](std::size_t index) {
-    if (dabChanged[index]) return;
-    const auto left = relaxed.find(index);
-    if (left == relaxed.end() || !(left->second == positions.texels()[index]))
-      dabChanged[index] = 1;
-  });
-  return std::find(dabChanged.begin(), dabChanged.end(), 1) != dabChanged.end();
-}
-
-// Notes where `step` (a relaxation, applied) left the positions it changed.
-void noteRelaxed(std::unordered_map<std::size_t, core::Vec4f>& relaxed, const core::EditStep& step,
-                 const core::GeometryImage& positions) {
-  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
-  const std::vector<std::uint8_t> moved = changedSamples(step, static_cast<int>(side));
-  for (std::size_t k = 0; k < moved.size(); ++k)
-    if (moved[k]) relaxed[k] = positions.texels()[k];
-}
-
-} // namespace
-
 void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
                                      const gpu::BrushManifest& brush, float radius, int dabs) {
-  // At dab kFirstRelaxationDab, then each time the dab count doubles: a limb pulled in one
-  // stroke takes its samples in steps that each stay within the tolerance (one relaxation at
-  // the end must move them the limb's whole length: the tolerance leaves little of it), and a
-  // stroke of d dabs relaxes about log2(d / kFirstRelaxationDab) + 1 times.
   if (!keepDetail_ || brush.category != gpu::Category::Sculpt ||
-      brush.stroke != gpu::StrokeKind::Drag ||
-      dabs < std::max(kFirstRelaxationDab, 2 * run.relaxedAt))
+      brush.stroke != gpu::StrokeKind::Drag || !run.relaxesAfter(dabs))
     return;
-  run.relaxedAt = dabs;
-  const int n = document_->size();
   const core::Document& document = document_->document();
-  if (!addDabChanges(run.dabChanged, run.relaxed, stroke.recordSoFar(brush.id), document.positions))
-    return;
-  const core::EditStep step = core::relaxChangedStep(
-      document, run.dabChanged, core::keepDetailMargin(document.positions, radius), brush.id,
-      pinOptions(run.pinnedPath, n));
+  const core::EditStep step =
+      relaxDabsSoFar(run, document, stroke.recordSoFar(brush.id), brush.id, radius);
   if (step.tiles.empty()) return;
   stroke.applyBetweenDabs(step);
-  noteRelaxed(run.relaxed, step, document.positions);
-  run.relaxations = run.relaxations.tiles.empty()
-                        ? step
-                        : core::combineSteps(run.relaxations, step, document, brush.id);
-}
-
-core::EditStep SculptSession::relaxAfterStroke(const core::Document& mirror,
-                                               const core::EditStep& record, ActiveStroke& st) {
-  KeepDetailRun& run = st.keep;
-  if (!addDabChanges(run.dabChanged, run.relaxed, record, mirror.positions)) return {};
-  return core::relaxChangedStep(mirror, run.dabChanged,
-                                core::keepDetailMargin(mirror.positions, st.reach), record.label,
-                                pinOptions(run.pinnedPath, mirror.size()));
+  run.applied(step, document, brush.id);
 }
 
 std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,

@@ -2,6 +2,7 @@
 
 #include "brush_settings.h"
 #include "brush_variants.h"
+#include "keep_detail_run.h"
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
@@ -236,7 +237,6 @@ public:
 private:
   friend class StrokeEnding;
   struct ActiveStroke;
-  struct KeepDetailRun;
 
   /// Keep detail as a dragging stroke goes (snake hook): after its 4th dab, then each time its
   /// dab count doubles, the samples near what its dabs changed so far relax
