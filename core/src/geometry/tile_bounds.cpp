@@ -1,6 +1,13 @@
 #include "octaclay/core/geometry/tile_bounds.h"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 #include <tuple>
 
 namespace octaclay::core {
@@ -22,29 +29,39 @@ TexelRect TileBounds::tileRect(int tx, int ty) const {
 }
 
 void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
+  refresh(image, std::span<const TexelRect>(&rect, 1));
+}
+
+void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> rects) {
+  if (rects.empty()) return;
   const int size = std::min(kTileSize, n_);
-  // A tile's box also holds the first sample past it, so a box bounds its cells' triangles: a
-  // changed sample on a tile's first row or column also moves the box of the tile before it.
-  const int tx0 = std::min(std::max(rect.x - 1, 0) / size, tiles_ - 1);
-  const int ty0 = std::min(std::max(rect.y - 1, 0) / size, tiles_ - 1);
-  const int tx1 = std::min((rect.x + rect.width - 1) / size, tiles_ - 1);
-  const int ty1 = std::min((rect.y + rect.height - 1) / size, tiles_ - 1);
+  // The tiles to recompute, each once however many rectangles overlap it. A tile's box also
+  // holds the first sample past it, so a box bounds its cells' triangles: a changed sample on
+  // a tile's first row or column also moves the box of the tile before it.
+  int tx0 = tiles_, ty0 = tiles_, tx1 = -1, ty1 = -1;
+  const auto span = [&](TexelRect rect) {
+    return std::array<int, 4>{std::min(std::max(rect.x - 1, 0) / size, tiles_ - 1),
+                              std::min(std::max(rect.y - 1, 0) / size, tiles_ - 1),
+                              std::min((rect.x + rect.width - 1) / size, tiles_ - 1),
+                              std::min((rect.y + rect.height - 1) / size, tiles_ - 1)};
+  };
+  for (const TexelRect& rect : rects) {
+    const auto [x0, y0, x1, y1] = span(rect);
+    tx0 = std::min(tx0, x0), ty0 = std::min(ty0, y0), tx1 = std::max(tx1, x1),
+    ty1 = std::max(ty1, y1);
+  }
+  const int w = tx1 - tx0 + 1;
+  std::vector<std::uint8_t> stale(static_cast<std::size_t>(w) * (ty1 - ty0 + 1), 0);
+  for (const TexelRect& rect : rects) {
+    const auto [x0, y0, x1, y1] = span(rect);
+    for (int ty = y0; ty <= y1; ++ty)
+      for (int tx = x0; tx <= x1; ++tx)
+        stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)] = 1;
+  }
   for (int ty = ty0; ty <= ty1; ++ty)
-    for (int tx = tx0; tx <= tx1; ++tx) {
-      const TexelRect r = tileRect(tx, ty);
-      // Plain min/max over rows (not BoundingBox::extend) so the compiler vectorizes it: this
-      // runs after every dab.
-      Vec3f lo = image.at(r.x, r.y).xyz(), hi = lo;
-      const int lastI = std::min(r.x + r.width, n_);
-      for (int j = r.y; j <= std::min(r.y + r.height, n_); ++j) {
-        const Vec4f* row = &image.at(0, j);
-        for (int i = r.x; i <= lastI; ++i) {
-          lo = {std::min(lo.x, row[i].x), std::min(lo.y, row[i].y), std::min(lo.z, row[i].z)};
-          hi = {std::max(hi.x, row[i].x), std::max(hi.y, row[i].y), std::max(hi.z, row[i].z)};
-        }
-      }
-      boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = BoundingBox{lo, hi};
-    }
+    for (int tx = tx0; tx <= tx1; ++tx)
+      if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)])
+        boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = tileBox(image, tx, ty);
   for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
     for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
       BoundingBox group;
@@ -55,6 +72,52 @@ void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
         }
       groups_[static_cast<std::size_t>(gy) * groupsPerSide() + gx] = group;
     }
+}
+
+BoundingBox TileBounds::tileBox(const GeometryImage& image, int tx, int ty) const {
+  const TexelRect r = tileRect(tx, ty);
+  const int lastI = std::min(r.x + r.width, n_), lastJ = std::min(r.y + r.height, n_);
+  Vec3f lo, hi;
+#if defined(__SSE__)
+  // Min/max over whole texels (w along, unused), one vector each, since this runs after every
+  // dab; two pairs of running bounds (even and odd texels), so a min waits for the one before
+  // it every second texel only. The order changes no min or max of finite values.
+  __m128 lo4 = _mm_loadu_ps(&image.at(r.x, r.y).x), hi4 = lo4, lo4b = lo4, hi4b = lo4;
+  for (int j = r.y; j <= lastJ; ++j) {
+    const float* row = &image.at(0, j).x;
+    int i = r.x;
+    for (; i + 1 <= lastI; i += 2) {
+      const __m128 v = _mm_loadu_ps(row + 4 * static_cast<std::ptrdiff_t>(i));
+      const __m128 w = _mm_loadu_ps(row + 4 * static_cast<std::ptrdiff_t>(i) + 4);
+      lo4 = _mm_min_ps(v, lo4);
+      hi4 = _mm_max_ps(v, hi4);
+      lo4b = _mm_min_ps(w, lo4b);
+      hi4b = _mm_max_ps(w, hi4b);
+    }
+    if (i <= lastI) {
+      const __m128 v = _mm_loadu_ps(row + 4 * static_cast<std::ptrdiff_t>(i));
+      lo4 = _mm_min_ps(v, lo4);
+      hi4 = _mm_max_ps(v, hi4);
+    }
+  }
+  lo4 = _mm_min_ps(lo4b, lo4);
+  hi4 = _mm_max_ps(hi4b, hi4);
+  alignas(16) float l[4], h[4];
+  _mm_store_ps(l, lo4);
+  _mm_store_ps(h, hi4);
+  lo = {l[0], l[1], l[2]};
+  hi = {h[0], h[1], h[2]};
+#else
+  lo = image.at(r.x, r.y).xyz(), hi = lo;
+  for (int j = r.y; j <= lastJ; ++j) {
+    const Vec4f* row = &image.at(0, j);
+    for (int i = r.x; i <= lastI; ++i) {
+      lo = {std::min(lo.x, row[i].x), std::min(lo.y, row[i].y), std::min(lo.z, row[i].z)};
+      hi = {std::max(hi.x, row[i].x), std::max(hi.y, row[i].y), std::max(hi.z, row[i].z)};
+    }
+  }
+#endif
+  return BoundingBox{lo, hi};
 }
 
 float TileBounds::diagonal() const {

@@ -151,6 +151,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   result.seams = seamRuns(result.tiles, side);
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
+  changedRects.insert(changedRects.end(), result.seams.begin(), result.seams.end());
   if (brush.manifest.needsStrokeStart()) {
     if (!strokeOpen_) strokeStartOf_ = nullptr; // a dab of its own is a stroke of its own
     captureStrokeStart(document);
@@ -192,10 +194,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       detail::seamLayer(seamProgram_, rectPass_, document, layer, result.seams);
     checkGlError("brush " + brushId + " pass");
 
-    for (const core::TexelRect& r : rects)
-      document.changed(layer, r);
-    for (const core::TexelRect& run : result.seams)
-      document.changed(layer, run);
+    document.changed(layer, changedRects);
   };
 
   if (brush.reparameterize()) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,9 @@ public:
   /// are deferred, recorded for syncMirror() (the layer gets its mirror texels now, so it stops
   /// counting as uniform at once).
   void changed(core::EditLayer layer, core::TexelRect rect);
+  /// The same for several rectangles of one pass (tile bounds refreshed once for all); the
+  /// single-rectangle form comes through here, so a pass's changes reach the feed here.
+  void changed(core::EditLayer layer, std::span<const core::TexelRect> rects);
   /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
   void deferPaintPulls(bool on);
   /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
@@ -108,6 +112,8 @@ private:
   static std::size_t index(core::EditLayer layer) { return static_cast<std::size_t>(layer); }
   core::Layer* mirrorLayer(core::EditLayer layer);
   const core::Layer* mirrorLayer(core::EditLayer layer) const;
+  /// pull without the tile bounds' refresh.
+  void readBack(core::EditLayer layer, core::TexelRect rect);
   void writeMirror(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
   /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
   float* mirrorData(core::EditLayer layer);

@@ -4,6 +4,7 @@
 #include "octaclay/core/geometry/texel_rect.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 
+#include <span>
 #include <vector>
 
 namespace octaclay::core {
@@ -26,6 +27,8 @@ public:
   TexelRect tileRect(int tx, int ty) const;
   /// Recomputes the boxes of every tile that overlaps rect.
   void refresh(const GeometryImage& image, TexelRect rect);
+  /// The same for several rectangles (a dab's), each tile once.
+  void refresh(const GeometryImage& image, std::span<const TexelRect> rects);
   /// Tiles (as tx + ty · tilesPerSide) whose box comes within `radius` of `centre`.
   std::vector<int> tilesNearSphere(Vec3f centre, float radius) const;
   /// Bounds of the tile's samples and of the first sample past it in i and j (its cells).
@@ -34,6 +37,8 @@ public:
   float diagonal() const;
 
 private:
+  /// Bounds of tile (tx, ty)'s samples and the first sample past it, read from image.
+  BoundingBox tileBox(const GeometryImage& image, int tx, int ty) const;
   int n_ = 0, tiles_ = 0;
   std::vector<BoundingBox> boxes_, groups_;
 };
