@@ -45,8 +45,9 @@ std::chrono::nanoseconds defaultPassTimeLimit() {
 } // namespace
 
 BrushEngine::BrushEngine()
-    : passTimeLimit_(defaultPassTimeLimit()), seamProgram_(detail::seamProgram()),
-      nearestMaps_(Sampler::repeating(false)), bilinearMaps_(Sampler::repeating(true)) {}
+    : passTimeLimit_(defaultPassTimeLimit()), watchdog_(std::make_unique<detail::PassWatchdog>()),
+      seamProgram_(detail::seamProgram()), nearestMaps_(Sampler::repeating(false)),
+      bilinearMaps_(Sampler::repeating(true)) {}
 
 BrushEngine::~BrushEngine() = default;
 
@@ -123,13 +124,30 @@ const std::string* BrushEngine::brokenReason(const std::string& id) const {
   return it != brushes_.end() && !it->second->broken.empty() ? &it->second->broken : nullptr;
 }
 
-void BrushEngine::awaitPass(LoadedBrush& brush) {
-  if (detail::finishedWithin(passTimeLimit_)) return;
+void BrushEngine::passIssued(const LoadedBrush& brush) {
+  watchdog_->submitted(passTimeLimit_, brush.manifest.id);
+  checkOverrun(watchdog_->keepWithin(1, passTimeLimit_));
+}
+
+void BrushEngine::awaitPasses() {
+  checkOverrun(watchdog_->keepWithin(0, passTimeLimit_));
+}
+
+void BrushEngine::finishPasses() {
+  awaitPasses();
+}
+
+void BrushEngine::checkOverrun(const std::string* overran) {
+  if (!overran) return;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  brush.broken = brush.manifest.shaderPath().string() + ": a pass took longer than " +
-                 detail::describeLimit(passTimeLimit_) + " (brush " + brush.manifest.id +
-                 " is marked broken until it is loaded again)";
-  throw BrushTimeoutError(brush.broken);
+  const auto found = brushes_.find(*overran);
+  const std::string shader =
+      found != brushes_.end() ? found->second->manifest.shaderPath().string() : *overran;
+  std::string reason = shader + ": a pass took longer than " +
+                       detail::describeLimit(passTimeLimit_) + " (brush " + *overran +
+                       " is marked broken until it is loaded again)";
+  if (found != brushes_.end()) found->second->broken = reason;
+  throw BrushTimeoutError(reason);
 }
 
 DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab) {
@@ -182,6 +200,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
   const auto finishLayer = [&](core::EditLayer layer) {
+    // The watchdog before the CPU reads the layer back, and before the copies below: a driver
+    // may run those on the CPU at once, behind the pass.
+    if (document.readsAtOnce(layer)) awaitPasses();
     if (brush.writesInPlace(layer)) {
       // The pass wrote the layer's texture itself.
     } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
@@ -250,7 +271,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
-    awaitPass(brush);
+    passIssued(brush);
     for (core::EditLayer layer : brush.manifest.writes)
       finishLayer(layer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -273,7 +294,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     bindInputs(pass, layer);
     if (inPlace) glTextureBarrier();
     rectPass_.draw(rects, side, side);
-    awaitPass(brush);
+    passIssued(brush);
     finishLayer(layer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -362,7 +383,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
       detail::kOffsetsUnit.bind(offsets_[0].id());
       glActiveTexture(GL_TEXTURE0);
       rectPass_.draw(rects, side, side);
-      awaitPass(brush);
+      passIssued(brush);
       std::swap(offsets_[0], offsets_[1]);
     }
     for (const core::TexelRect& r : rects) // the twin catches up for the stroke's next dab
@@ -394,7 +415,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
     for (GLenum k = 0; k < 4; ++k)
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brush.manifest.id + " resample");
-    awaitPass(brush);
+    passIssued(brush);
   } catch (...) {
     resetOffsets({whole});
     throw;

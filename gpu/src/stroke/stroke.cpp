@@ -598,6 +598,14 @@ core::EditStep StrokeSession::finish(const std::string& label) {
     return nothing;
   }
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
+  try {
+    // The watchdog for passes not waited for yet (a paint brush's last ones), before the
+    // paint layers' pull reads what they wrote.
+    st.engine.finishPasses();
+  } catch (...) { // a pass overran: the stroke is undone, as when a dab fails
+    st.abandon();
+    throw;
+  }
   st.finished = true;
   st.engine.endStroke();
   st.document.deferPaintPulls(false);

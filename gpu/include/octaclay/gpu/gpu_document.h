@@ -75,6 +75,11 @@ public:
   /// The same for several rectangles of one pass (tile bounds refreshed once for all); the
   /// single-rectangle form comes through here, so a pass's changes reach the feed here.
   void changed(core::EditLayer layer, std::span<const core::TexelRect> rects);
+  /// Whether changed() reads this layer back at once (positions always, paint layers unless
+  /// their pulls are deferred): the caller must know the passes that wrote it finished.
+  bool readsAtOnce(core::EditLayer layer) const {
+    return !deferring_ || layer == core::EditLayer::Positions;
+  }
   /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
   void deferPaintPulls(bool on);
   /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
