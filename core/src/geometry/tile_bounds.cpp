@@ -15,7 +15,8 @@ namespace octaclay::core {
 TileBounds::TileBounds(const GeometryImage& image)
     : n_(image.size()), tiles_(std::max(1, image.size() / kTileSize)),
       boxes_(static_cast<std::size_t>(tiles_) * tiles_),
-      groups_(static_cast<std::size_t>(groupsPerSide()) * groupsPerSide()) {
+      groups_(static_cast<std::size_t>(groupsPerSide()) * groupsPerSide()),
+      quarters_(4 * boxes_.size()) {
   refresh(image, {0, 0, image.side(), image.side()});
 }
 
@@ -60,8 +61,17 @@ void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> 
   }
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx)
-      if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)])
-        boxes_[static_cast<std::size_t>(ty) * tiles_ + tx] = tileBox(image, tx, ty);
+      if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)]) {
+        const std::size_t tile = static_cast<std::size_t>(ty) * tiles_ + tx;
+        BoundingBox box;
+        for (int q = 0; q < 4; ++q) {
+          const BoundingBox quarter = rectBox(image, quarterRect(tx, ty, q));
+          quarters_[4 * tile + static_cast<std::size_t>(q)] = quarter;
+          box.extend(quarter.min);
+          box.extend(quarter.max);
+        }
+        boxes_[tile] = box;
+      }
   for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
     for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
       BoundingBox group;
@@ -74,8 +84,21 @@ void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> 
     }
 }
 
-BoundingBox TileBounds::tileBox(const GeometryImage& image, int tx, int ty) const {
-  const TexelRect r = tileRect(tx, ty);
+TexelRect TileBounds::quarterRect(int tx, int ty, int q) const {
+  const TexelRect t = tileRect(tx, ty);
+  // Split at half the tile's size (the last tile's extra sample goes with its far half); a tile
+  // of one sample is its own four quarters.
+  const int half = std::max(1, std::min(kTileSize, n_) / 2);
+  const int splitX = std::min(half, t.width), splitY = std::min(half, t.height);
+  const bool right = q & 1, top = q & 2;
+  const int x = right && splitX < t.width ? t.x + splitX : t.x;
+  const int y = top && splitY < t.height ? t.y + splitY : t.y;
+  const int width = splitX < t.width ? (right ? t.width - splitX : splitX) : t.width;
+  const int height = splitY < t.height ? (top ? t.height - splitY : splitY) : t.height;
+  return {x, y, width, height};
+}
+
+BoundingBox TileBounds::rectBox(const GeometryImage& image, TexelRect r) const {
   const int lastI = std::min(r.x + r.width, n_), lastJ = std::min(r.y + r.height, n_);
   Vec3f lo, hi;
 #if defined(__SSE__)
@@ -128,6 +151,25 @@ float TileBounds::diagonal() const {
       all.extend(b.max);
     }
   return all.diagonal();
+}
+
+std::vector<TexelRect> TileBounds::rectsNearSphere(Vec3f centre, float radius) const {
+  const float r2 = radius * radius;
+  std::vector<TexelRect> rects;
+  for (int t : tilesNearSphere(centre, radius)) {
+    const int tx = t % tiles_, ty = t / tiles_;
+    for (int q = 0; q < 4; ++q) {
+      const BoundingBox& b =
+          quarters_[4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(q)];
+      const float dx = std::max({b.min.x - centre.x, 0.0f, centre.x - b.max.x});
+      const float dy = std::max({b.min.y - centre.y, 0.0f, centre.y - b.max.y});
+      const float dz = std::max({b.min.z - centre.z, 0.0f, centre.z - b.max.z});
+      if (dx * dx + dy * dy + dz * dz <= r2) rects.push_back(quarterRect(tx, ty, q));
+    }
+  }
+  // A tile of one sample has the same rectangle four times.
+  rects.erase(std::unique(rects.begin(), rects.end()), rects.end());
+  return rects;
 }
 
 std::vector<int> TileBounds::tilesNearSphere(Vec3f centre, float radius) const {
