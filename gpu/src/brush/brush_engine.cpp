@@ -8,6 +8,7 @@
 #include "texture_copy.h"
 #include "texture_units.h"
 
+#include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
@@ -122,6 +123,23 @@ bool BrushEngine::has(const std::string& id) const {
 const std::string* BrushEngine::brokenReason(const std::string& id) const {
   const auto it = brushes_.find(id);
   return it != brushes_.end() && !it->second->broken.empty() ? &it->second->broken : nullptr;
+}
+
+bool BrushEngine::usesCentreNormal(const GpuDocument& document, const std::string& brushId,
+                                   const std::map<std::string, std::array<float, 4>>& parameters) {
+  const auto found = brushes_.find(brushId);
+  if (found == brushes_.end())
+    throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brushId + "' is loaded");
+  LoadedBrush& brush = *found->second;
+  const bool maskTexture = !document.document().mask.uniform();
+  const std::vector<int> enums = enumValues(brush.manifest, parameters);
+  for (core::EditLayer layer : brush.manifest.writes) {
+    const Program& pass = program(brush, layer, maskTexture, enums);
+    for (const char* name :
+         {"u_centreNormal", "u_projectionDir", "u_projectionRight", "u_projectionUp"})
+      if (pass.uniform(name) >= 0) return true;
+  }
+  return false;
 }
 
 void BrushEngine::passIssued(const LoadedBrush& brush) {

@@ -25,7 +25,7 @@ class PassWatchdog;
 /// One application of a brush at one place.
 struct Dab {
   core::Vec3f centre;               ///< object space, on the surface
-  core::Vec3f centreNormal;         ///< unit
+  core::Vec3f centreNormal;         ///< unit (a stroke gives the area normal where a pass reads it)
   core::Sample centreTexel;         ///< the sample under the centre (uv area mode measures from it)
   float radius = 0.1f;              ///< object units
   float strength = 0.5f;            ///< fraction of the radius (push 0.5 moves the centre radius/2)
@@ -127,6 +127,14 @@ public:
   /// The index of the material with this id, or -1.
   int materialIndex(std::string_view id) const;
   std::vector<std::string> materialIds() const;
+
+  /// Whether a dab of this brush reads its centre normal (Dab::centreNormal): whether its
+  /// programs for the document's mask kind and these parameters' enum values use u_centreNormal
+  /// or the projection frame made from it (the GLSL compiler's active uniforms). A stroke skips
+  /// computing the area normal for a brush that does not. Compiles those programs if needed;
+  /// throws GlError when one does not compile, core::Error(UnknownId) for an unknown brush.
+  bool usesCentreNormal(const GpuDocument& document, const std::string& brushId,
+                        const std::map<std::string, std::array<float, 4>>& parameters);
 
   /// Waits for every pass issued so far, each at most the time limit after its submission:
   /// before the CPU reads what they wrote (StrokeSession::finish, before the paint layers' pull).
