@@ -267,8 +267,14 @@ void GpuDocument::writeSaliency(std::span<const float> saliency) {
 void GpuDocument::note(core::EditLayer layer, core::TexelRect rect) {
   std::vector<core::TexelRect>& rects = unpublished_[index(layer)];
   rects.push_back(rect);
-  // A long stroke between publications: keep the list short.
-  if (rects.size() > 256) rects = core::mergeRects(std::move(rects));
+  // A long stroke between publications: keep the list short. Merged again only once it has
+  // doubled since the last merge, so a list that merges to more than 256 (a stroke's quarter
+  // tiles) is not sorted again at every rectangle.
+  std::size_t& merged = mergedCount_[index(layer)];
+  if (rects.size() > std::max<std::size_t>(256, 2 * merged)) {
+    rects = core::mergeRects(std::move(rects));
+    merged = rects.size();
+  }
 }
 
 void GpuDocument::markAllChanged() {
@@ -284,6 +290,7 @@ bool GpuDocument::publishChanges(ChangeKind kind) {
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     std::vector<core::TexelRect> rects = std::move(unpublished_[index(layer)]);
     unpublished_[index(layer)].clear();
+    mergedCount_[index(layer)] = 0;
     if (rects.empty()) continue;
     any = true;
     if (follower_) follower_({kind, layer, core::mergeRects(std::move(rects))});

@@ -133,6 +133,7 @@ private:
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
   std::array<std::vector<core::TexelRect>, 4> unpublished_; // changed since publishChanges()
+  std::array<std::size_t, 4> mergedCount_{}; // unpublished_'s size after its last merge
   std::function<void(const DocumentChange&)> follower_;
   /// Notes rect of layer as changed for the next publishChanges().
   void note(core::EditLayer layer, core::TexelRect rect);
