@@ -290,6 +290,8 @@ void SculptSession::abandonStroke() {
     record = ending->stroke->finish(ending->start.brushId);
   } catch (const core::Error&) { // a non-finite result: finish restored the layers itself
     return;
+  } catch (const gpu::BrushTimeoutError&) { // an overrun pass: likewise
+    return;
   }
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (auto t = record.tiles.rbegin(); t != record.tiles.rend(); ++t)

@@ -69,6 +69,7 @@ private slots:
   void nonFiniteSettingsAreRefused_data();
   void nonFiniteSettingsAreRefused();
   void overrunningPassMarksTheBrushBroken();
+  void overrunningPaintPassIsCaughtByTheStrokesEnd();
 
 private:
   // Writes a plugin brush (manifest and body) into the temporary folder, loads it and returns
@@ -228,6 +229,44 @@ void BrushSafetyTest::overrunningPassMarksTheBrushBroken() {
   engine_->load(brush, readFile(brush.shaderPath()));
   QVERIFY(engine_->brokenReason("loop") == nullptr);
   strokeAlongPath(*engine_, document, brush, strokeOf("loop", 0.5f));
+}
+
+void BrushSafetyTest::overrunningPaintPassIsCaughtByTheStrokesEnd() {
+  // A paint layer is not read back after each dab, so the CPU does not wait for its passes as
+  // they are issued: an overrun is caught at the next dab's wait for the pass before last, or
+  // at the stroke's end before the paint layer's read-back, with the limit counted from the
+  // pass's submission. The stroke is undone all the same.
+  const BrushManifest& brush = plugin("paint-loop", "diffuse",
+                                      "vec4 brush(vec4 value, BrushInput b) {\n"
+                                      "  float x = value.x;\n"
+                                      "  while (x == x) x += 1.0;\n"
+                                      "  return vec4(b.weight + x * 1e-30, value.yzw);\n"
+                                      "}\n");
+  GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 32)));
+  const auto before = snapshot(document);
+  const std::string expected =
+      (brush.folder / "brush.glsl").string() + ": a pass took longer than 1 µs";
+  for (const std::vector<std::array<float, 2>>& path :
+       {std::vector<std::array<float, 2>>{{0.5f, 0.5f}},                  // one dab: the end
+        std::vector<std::array<float, 2>>{{0.5f, 0.5f}, {0.6f, 0.5f}}}) { // the next dab
+    engine_->load(brush, readFile(brush.shaderPath()));
+    engine_->setPassTimeLimit(std::chrono::microseconds(1));
+    PathStroke stroke = strokeOf("paint-loop", 0.5f);
+    stroke.path = path;
+    try {
+      strokeAlongPath(*engine_, document, brush, stroke);
+      QFAIL("the overrunning paint pass was not caught");
+    } catch (const BrushTimeoutError& e) {
+      QVERIFY2(std::string(e.what()).starts_with(expected), e.what());
+    }
+    engine_->setPassTimeLimit(std::chrono::seconds(2));
+    QVERIFY(sameBits(snapshot(document), before));
+    QVERIFY(engine_->brokenReason("paint-loop") != nullptr);
+  }
+  // With the limit it needs, the same brush paints.
+  engine_->load(brush, readFile(brush.shaderPath()));
+  strokeAlongPath(*engine_, document, brush, strokeOf("paint-loop", 0.5f));
+  QVERIFY(!sameBits(snapshot(document), before));
 }
 
 QTEST_APPLESS_MAIN(BrushSafetyTest)

@@ -42,6 +42,7 @@ private slots:
   void brokenShaderNamesFileAndLine();
   void uvAreaContinuesAcrossSeamsAndCorners();
   void seamRunsAreTheReachedBorderAndItsPartners();
+  void centreNormalIsSkippedOnlyWhereNoPassReadsIt();
 
 private:
   std::optional<GlContext> context_;
@@ -252,6 +253,32 @@ void BrushesTest::seamRunsAreTheReachedBorderAndItsPartners() {
                                                                     {0, n, 1, 1},
                                                                     {225, 0, 32, 1},
                                                                     {n, n, 1, 1}}));
+}
+
+void BrushesTest::centreNormalIsSkippedOnlyWhereNoPassReadsIt() {
+  // A stroke computes the area normal only for a brush whose passes read the centre normal:
+  // a dab with another normal must then give the same bits (smooth), and must not where the
+  // engine says the normal is read (push).
+  const int n = 64;
+  const core::GeometryImage sphere = core::makeBaseShape(core::BaseShape::Sphere, n);
+  const auto after = [&](const std::string& brush, core::Vec3f normal) {
+    GpuDocument document(core::makeDocument(sphere));
+    Dab dab = dabAt(sphere, {n / 2 + 3, n / 2 - 5}, 0.4f, 0.5f);
+    dab.centreNormal = normal;
+    engine_->dab(document, brush, dab);
+    return snapshot(document);
+  };
+  const core::Vec3f tilted = core::normalize(core::Vec3f{0.3f, -0.2f, 1.0f});
+  for (const std::string brush : {"smooth", "push"})
+    try {
+      GpuDocument document(core::makeDocument(sphere));
+      const bool reads = engine_->usesCentreNormal(document, brush, {});
+      const bool same = sameBits(after(brush, {0, 0, 1}), after(brush, tilted));
+      QVERIFY2(reads == (brush != "smooth"), brush.c_str());
+      QVERIFY2(same == !reads, brush.c_str());
+    } catch (const std::exception& e) {
+      QFAIL((brush + ": " + e.what()).c_str());
+    }
 }
 
 QTEST_APPLESS_MAIN(BrushesTest)

@@ -8,6 +8,7 @@
 #include "texture_copy.h"
 #include "texture_units.h"
 
+#include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
@@ -45,8 +46,9 @@ std::chrono::nanoseconds defaultPassTimeLimit() {
 } // namespace
 
 BrushEngine::BrushEngine()
-    : passTimeLimit_(defaultPassTimeLimit()), seamProgram_(detail::seamProgram()),
-      nearestMaps_(Sampler::repeating(false)), bilinearMaps_(Sampler::repeating(true)) {}
+    : passTimeLimit_(defaultPassTimeLimit()), watchdog_(std::make_unique<detail::PassWatchdog>()),
+      seamProgram_(detail::seamProgram()), nearestMaps_(Sampler::repeating(false)),
+      bilinearMaps_(Sampler::repeating(true)) {}
 
 BrushEngine::~BrushEngine() = default;
 
@@ -123,13 +125,47 @@ const std::string* BrushEngine::brokenReason(const std::string& id) const {
   return it != brushes_.end() && !it->second->broken.empty() ? &it->second->broken : nullptr;
 }
 
-void BrushEngine::awaitPass(LoadedBrush& brush) {
-  if (detail::finishedWithin(passTimeLimit_)) return;
+bool BrushEngine::usesCentreNormal(const GpuDocument& document, const std::string& brushId,
+                                   const std::map<std::string, std::array<float, 4>>& parameters) {
+  const auto found = brushes_.find(brushId);
+  if (found == brushes_.end())
+    throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brushId + "' is loaded");
+  LoadedBrush& brush = *found->second;
+  const bool maskTexture = !document.document().mask.uniform();
+  const std::vector<int> enums = enumValues(brush.manifest, parameters);
+  for (core::EditLayer layer : brush.manifest.writes) {
+    const Program& pass = program(brush, layer, maskTexture, enums);
+    for (const char* name :
+         {"u_centreNormal", "u_projectionDir", "u_projectionRight", "u_projectionUp"})
+      if (pass.uniform(name) >= 0) return true;
+  }
+  return false;
+}
+
+void BrushEngine::passIssued(const LoadedBrush& brush) {
+  watchdog_->submitted(passTimeLimit_, brush.manifest.id);
+  checkOverrun(watchdog_->keepWithin(1, passTimeLimit_));
+}
+
+void BrushEngine::awaitPasses() {
+  checkOverrun(watchdog_->keepWithin(0, passTimeLimit_));
+}
+
+void BrushEngine::finishPasses() {
+  awaitPasses();
+}
+
+void BrushEngine::checkOverrun(const std::string* overran) {
+  if (!overran) return;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  brush.broken = brush.manifest.shaderPath().string() + ": a pass took longer than " +
-                 detail::describeLimit(passTimeLimit_) + " (brush " + brush.manifest.id +
-                 " is marked broken until it is loaded again)";
-  throw BrushTimeoutError(brush.broken);
+  const auto found = brushes_.find(*overran);
+  const std::string shader =
+      found != brushes_.end() ? found->second->manifest.shaderPath().string() : *overran;
+  std::string reason = shader + ": a pass took longer than " +
+                       detail::describeLimit(passTimeLimit_) + " (brush " + *overran +
+                       " is marked broken until it is loaded again)";
+  if (found != brushes_.end()) found->second->broken = reason;
+  throw BrushTimeoutError(reason);
 }
 
 DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, const Dab& dab) {
@@ -151,6 +187,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   result.seams = seamRuns(result.tiles, side);
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
+  changedRects.insert(changedRects.end(), result.seams.begin(), result.seams.end());
   if (brush.manifest.needsStrokeStart()) {
     if (!strokeOpen_) strokeStartOf_ = nullptr; // a dab of its own is a stroke of its own
     captureStrokeStart(document);
@@ -180,6 +218,9 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   // The layer's scratch holds the pass's result over rects: back into the layer's texture,
   // seamed, and into the mirror.
   const auto finishLayer = [&](core::EditLayer layer) {
+    // The watchdog before the CPU reads the layer back, and before the copies below: a driver
+    // may run those on the CPU at once, behind the pass.
+    if (document.readsAtOnce(layer)) awaitPasses();
     if (brush.writesInPlace(layer)) {
       // The pass wrote the layer's texture itself.
     } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
@@ -192,10 +233,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       detail::seamLayer(seamProgram_, rectPass_, document, layer, result.seams);
     checkGlError("brush " + brushId + " pass");
 
-    for (const core::TexelRect& r : rects)
-      document.changed(layer, r);
-    for (const core::TexelRect& run : result.seams)
-      document.changed(layer, run);
+    document.changed(layer, changedRects);
   };
 
   if (brush.reparameterize()) {
@@ -251,7 +289,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
                              GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brushId + " pass");
-    awaitPass(brush);
+    passIssued(brush);
     for (core::EditLayer layer : brush.manifest.writes)
       finishLayer(layer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -274,7 +312,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     bindInputs(pass, layer);
     if (inPlace) glTextureBarrier();
     rectPass_.draw(rects, side, side);
-    awaitPass(brush);
+    passIssued(brush);
     finishLayer(layer);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -363,7 +401,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
       detail::kOffsetsUnit.bind(offsets_[0].id());
       glActiveTexture(GL_TEXTURE0);
       rectPass_.draw(rects, side, side);
-      awaitPass(brush);
+      passIssued(brush);
       std::swap(offsets_[0], offsets_[1]);
     }
     for (const core::TexelRect& r : rects) // the twin catches up for the stroke's next dab
@@ -395,7 +433,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
     for (GLenum k = 0; k < 4; ++k)
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, 0, 0);
     checkGlError("brush " + brush.manifest.id + " resample");
-    awaitPass(brush);
+    passIssued(brush);
   } catch (...) {
     resetOffsets({whole});
     throw;

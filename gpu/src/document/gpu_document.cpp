@@ -159,26 +159,39 @@ void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
 }
 
 void GpuDocument::pull(core::EditLayer layer, core::TexelRect rect) {
+  readBack(layer, rect);
+  if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rect);
+}
+
+void GpuDocument::readBack(core::EditLayer layer, core::TexelRect rect) {
   const int c = channels(layer);
   const int side = document_.positions.side();
   const std::size_t at = (static_cast<std::size_t>(rect.y) * side + rect.x) * c;
   textures_[index(layer)].readInto(rect, editedMirror(layer) + at, side, c);
-  if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rect);
 }
 
 void GpuDocument::changed(core::EditLayer layer, core::TexelRect rect) {
-  note(layer, rect);
+  changed(layer, std::span<const core::TexelRect>(&rect, 1));
+}
+
+void GpuDocument::changed(core::EditLayer layer, std::span<const core::TexelRect> rects) {
+  for (const core::TexelRect& rect : rects)
+    note(layer, rect);
   if (!deferring_ || layer == core::EditLayer::Positions) {
-    pull(layer, rect);
+    for (const core::TexelRect& rect : rects)
+      readBack(layer, rect);
+    // Once for all the rectangles: a dab's merged rows share tiles at their edges.
+    if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rects);
     return;
   }
   editedMirror(layer); // a uniform layer gets texels: brushes see it as painted from now on
   const int blocks = (document_.positions.side() + kStaleBlock - 1) / kStaleBlock;
   std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
   stale.resize(static_cast<std::size_t>(blocks) * blocks, 0);
-  for (int by = rect.y / kStaleBlock; by <= (rect.y + rect.height - 1) / kStaleBlock; ++by)
-    for (int bx = rect.x / kStaleBlock; bx <= (rect.x + rect.width - 1) / kStaleBlock; ++bx)
-      stale[static_cast<std::size_t>(by) * blocks + bx] = 1;
+  for (const core::TexelRect& rect : rects)
+    for (int by = rect.y / kStaleBlock; by <= (rect.y + rect.height - 1) / kStaleBlock; ++by)
+      for (int bx = rect.x / kStaleBlock; bx <= (rect.x + rect.width - 1) / kStaleBlock; ++bx)
+        stale[static_cast<std::size_t>(by) * blocks + bx] = 1;
 }
 
 bool GpuDocument::mirrorStale() const {
@@ -254,8 +267,14 @@ void GpuDocument::writeSaliency(std::span<const float> saliency) {
 void GpuDocument::note(core::EditLayer layer, core::TexelRect rect) {
   std::vector<core::TexelRect>& rects = unpublished_[index(layer)];
   rects.push_back(rect);
-  // A long stroke between publications: keep the list short.
-  if (rects.size() > 256) rects = core::mergeRects(std::move(rects));
+  // A long stroke between publications: keep the list short. Merged again only once it has
+  // doubled since the last merge, so a list that merges to more than 256 (a stroke's quarter
+  // tiles) is not sorted again at every rectangle.
+  std::size_t& merged = mergedCount_[index(layer)];
+  if (rects.size() > std::max<std::size_t>(256, 2 * merged)) {
+    rects = core::mergeRects(std::move(rects));
+    merged = rects.size();
+  }
 }
 
 void GpuDocument::markAllChanged() {
@@ -271,6 +290,7 @@ bool GpuDocument::publishChanges(ChangeKind kind) {
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     std::vector<core::TexelRect> rects = std::move(unpublished_[index(layer)]);
     unpublished_[index(layer)].clear();
+    mergedCount_[index(layer)] = 0;
     if (rects.empty()) continue;
     any = true;
     if (follower_) follower_({kind, layer, core::mergeRects(std::move(rects))});

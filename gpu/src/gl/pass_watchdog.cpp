@@ -4,21 +4,70 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <charconv>
 
 namespace octaclay::gpu::detail {
 
-bool finishedWithin(std::chrono::nanoseconds limit) {
-  if (limit.count() <= 0) return true;
+PassWatchdog::~PassWatchdog() {
+  clear();
+}
+
+void PassWatchdog::submitted(std::chrono::nanoseconds limit, const std::string& owner) {
+  if (limit.count() <= 0) return;
+  // The GPU's clock as the pass is submitted, and as it completes (a timestamp query): a pass
+  // whose fence the check finds signalled may still have overrun, when something in between
+  // waited for it (a driver that copies textures on the CPU).
+  GLint64 at = 0;
+  glGetInteger64v(GL_TIMESTAMP, &at);
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  glQueryCounter(query, GL_TIMESTAMP);
   GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  if (!fence) throw GlError("the brush watchdog cannot create a GL fence");
-  // The flush bit: the fence must reach the GPU, or a wait with a limit may expire on a
-  // pass that was never submitted.
-  const GLenum waited =
-      glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, static_cast<GLuint64>(limit.count()));
-  glDeleteSync(fence);
-  if (waited == GL_WAIT_FAILED) throw GlError("the brush watchdog cannot wait for a GL fence");
-  return waited != GL_TIMEOUT_EXPIRED;
+  if (!fence) {
+    glDeleteQueries(1, &query);
+    throw GlError("the brush watchdog cannot create a GL fence");
+  }
+  pending_.push_back({fence, query, at, std::chrono::steady_clock::now(), owner});
+}
+
+const std::string* PassWatchdog::keepWithin(std::size_t ahead, std::chrono::nanoseconds limit) {
+  while (pending_.size() > ahead) {
+    Pending& oldest = pending_.front();
+    const auto left = limit - (std::chrono::steady_clock::now() - oldest.submitted);
+    // The flush bit: the fence must reach the GPU, or a wait with a limit may expire on a pass
+    // that was never submitted. A limit already spent still polls once.
+    const GLenum waited = glClientWaitSync(
+        static_cast<GLsync>(oldest.fence), GL_SYNC_FLUSH_COMMANDS_BIT,
+        static_cast<GLuint64>(std::max<std::int64_t>(
+            0, std::chrono::duration_cast<std::chrono::nanoseconds>(left).count())));
+    if (waited == GL_WAIT_FAILED) throw GlError("the brush watchdog cannot wait for a GL fence");
+    bool overran = waited == GL_TIMEOUT_EXPIRED;
+    if (!overran) { // finished: the query's result is there, no wait
+      GLuint64 done = 0;
+      glGetQueryObjectui64v(oldest.query, GL_QUERY_RESULT, &done);
+      overran = done > static_cast<GLuint64>(oldest.gpuSubmitted) &&
+                done - static_cast<GLuint64>(oldest.gpuSubmitted) >
+                    static_cast<GLuint64>(std::max<std::int64_t>(0, limit.count()));
+    }
+    if (overran) {
+      overran_ = oldest.owner;
+      clear();
+      return &overran_;
+    }
+    glDeleteSync(static_cast<GLsync>(oldest.fence));
+    glDeleteQueries(1, &oldest.query);
+    pending_.pop_front();
+  }
+  return nullptr;
+}
+
+void PassWatchdog::clear() {
+  for (const Pending& p : pending_) {
+    glDeleteSync(static_cast<GLsync>(p.fence));
+    glDeleteQueries(1, &p.query);
+  }
+  pending_.clear();
 }
 
 std::string describeLimit(std::chrono::nanoseconds limit) {

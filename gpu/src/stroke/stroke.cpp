@@ -158,6 +158,13 @@ struct StrokeSession::State {
   std::vector<Dab> anchors;
   std::vector<std::vector<core::TexelRect>> anchorReach;
 
+  // Whether the brush's passes read the dab's centre normal: the area normal, a sum over every
+  // cell the dab covers on the CPU, is computed only for those (a smooth dab's normal reaches no
+  // pass); the others get the point normal.
+  bool usesCentreNormal() const {
+    return engine.usesCentreNormal(document, brush.id, settings.parameters);
+  }
+
   core::Vec3f dragAt(std::array<double, 2> xy) const {
     core::Vec3f v = startPosition(xy[0], xy[1]) - startPoint;
     return v - dragNormal * core::dot(v, dragNormal);
@@ -297,18 +304,25 @@ struct StrokeSession::State {
     if (brush.stroke == StrokeKind::Anchored && !first) {
       images = anchors; // where the stroke began, measured on the surface as it was then
     } else if (brush.stroke == StrokeKind::Drag && !first) {
+      const bool areaNormals = usesCentreNormal();
       for (std::size_t k = 0; k < images.size(); ++k) {
         Dab& d = images[k];
         d.centre = tips[k];
         d.centreTexel = nearestSample(document, d.centre);
-        d.centreNormal = areaNormal(document, d.centre, kAreaNormalRadius * radius,
-                                    core::vertexNormal(image, d.centreTexel));
+        const core::Vec3f pointNormal = core::vertexNormal(image, d.centreTexel);
+        d.centreNormal =
+            areaNormals ? areaNormal(document, d.centre, kAreaNormalRadius * radius, pointNormal)
+                        : pointNormal;
       }
     } else {
       const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
       const core::Vec3f p = core::interpolatePosition(image, point);
+      const core::Vec3f pointNormal = interpolateNormal(image, point);
+      // The first dab's normal is the stroke's anchor normal (a drag's plane) whatever the brush.
       const core::Vec3f normal =
-          areaNormal(document, p, kAreaNormalRadius * radius, interpolateNormal(image, point));
+          first || usesCentreNormal()
+              ? areaNormal(document, p, kAreaNormalRadius * radius, pointNormal)
+              : pointNormal;
       images[0].centre = p;
       images[0].centreNormal = normal;
       images[0].centreTexel = {std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
@@ -598,6 +612,14 @@ core::EditStep StrokeSession::finish(const std::string& label) {
     return nothing;
   }
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");
+  try {
+    // The watchdog for passes not waited for yet (a paint brush's last ones), before the
+    // paint layers' pull reads what they wrote.
+    st.engine.finishPasses();
+  } catch (...) { // a pass overran: the stroke is undone, as when a dab fails
+    st.abandon();
+    throw;
+  }
   st.finished = true;
   st.engine.endStroke();
   st.document.deferPaintPulls(false);

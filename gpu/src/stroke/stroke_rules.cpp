@@ -49,6 +49,29 @@ core::Vec3f interpolateNormal(const core::GeometryImage& image, const core::Grid
   return core::gridNormal(image, p.corners[static_cast<std::size_t>(nearest)]);
 }
 
+namespace {
+
+// Whether every point of box lies within radius of centre with room to spare for float rounding:
+// then every triangle of the tile's cells (their corners lie in its box, and so do their
+// centroids up to a few ulps of the coordinates) passes areaNormal's centroid test, and the test
+// can be skipped without changing which triangles count.
+bool boxWellInside(const core::BoundingBox& box, core::Vec3f centre, float radius) {
+  double far2 = 0, scale = 0;
+  const float lo[3] = {box.min.x, box.min.y, box.min.z}, hi[3] = {box.max.x, box.max.y, box.max.z};
+  const float c[3] = {centre.x, centre.y, centre.z};
+  for (int k = 0; k < 3; ++k) {
+    const double reach = std::max(std::abs(double(lo[k]) - c[k]), std::abs(double(hi[k]) - c[k]));
+    far2 += reach * reach;
+    scale =
+        std::max({scale, std::abs(double(lo[k])), std::abs(double(hi[k])), std::abs(double(c[k]))});
+  }
+  // 1e-6 of the coordinates' size is some 8 ulps of float: the centroid's rounding and the
+  // test's own; 1e-5 of the radius covers the rounding of its square.
+  return std::sqrt(far2) + 1e-6 * scale <= double(radius) * (1 - 1e-5);
+}
+
+} // namespace
+
 core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
                        core::Vec3f fallback) {
   const core::GeometryImage& image = document.document().positions;
@@ -65,14 +88,31 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
   };
   // Every dab runs this over all the cells its radius covers: rows read in place and the cell's
   // split (core::cellTriangles: anti-diagonal where i and j lie in the same half) inline, the
-  // triangles in cellTriangles' order, so the sum is the same to the bit.
+  // triangles in cellTriangles' order, so the sum is the same to the bit. A tile well inside
+  // the sphere (most of them) adds its triangles without the centroid test.
   for (int t : bounds.tilesNearSphere(centre, radius)) {
     const core::TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
     const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, n);
+    const bool inside = boxWellInside(bounds.box(t), centre, radius);
     for (int j = r.y; j < jEnd; ++j) {
       const core::Vec4f* row = &image.at(0, j);
       const core::Vec4f* below = &image.at(0, j + 1);
       const bool lowJ = j < half;
+      if (inside) {
+        for (int i = r.x; i < iEnd; ++i) {
+          const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
+                            d = below[i].xyz();
+          if ((i < half) == lowJ) { // add()'s triangles, unconditionally
+            sum += core::cross(b - a, d - a);
+            sum += core::cross(c - b, d - b);
+          } else {
+            sum += core::cross(b - a, c - a);
+            sum += core::cross(c - a, d - a);
+          }
+        }
+        triangles += 2 * (iEnd - r.x);
+        continue;
+      }
       for (int i = r.x; i < iEnd; ++i) {
         const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
                           d = below[i].xyz();

@@ -40,6 +40,7 @@ private slots:
   void nearSphereFindsEveryReachableTile();
   void refreshFollowsEdits();
   void mergedRectsCoverTheSameTexelsOnce();
+  void quartersHoldEverySampleWithinTheSphere();
 };
 
 void TileBoundsTest::tilesCoverTheImageExactly() {
@@ -117,6 +118,72 @@ void TileBoundsTest::mergedRectsCoverTheSameTexelsOnce() {
     QVERIFY(std::all_of(after.begin(), after.end(), [](int k) { return k <= 1; }));
     if (rects.size() > 8) QVERIFY(merged.size() < rects.size());
   }
+}
+
+void TileBoundsTest::quartersHoldEverySampleWithinTheSphere() {
+  // A tile's four quarters cover it exactly, at every N (a last tile one sample wider, a tile
+  // of three samples).
+  for (int n : {2, 4, 16, 64, 512}) {
+    const TileBounds bounds(makeBaseShape(BaseShape::Sphere, n));
+    for (int ty = 0; ty < bounds.tilesPerSide(); ++ty)
+      for (int tx = 0; tx < bounds.tilesPerSide(); ++tx) {
+        const TexelRect t = bounds.tileRect(tx, ty);
+        std::set<std::pair<int, int>> seen;
+        int count = 0;
+        for (int q = 0; q < 4; ++q) {
+          const TexelRect r = bounds.quarterRect(tx, ty, q);
+          for (int j = r.y; j < r.y + r.height; ++j)
+            for (int i = r.x; i < r.x + r.width; ++i) {
+              seen.insert({i, j});
+              ++count;
+            }
+        }
+        QCOMPARE(count, t.width * t.height);
+        QCOMPARE(static_cast<int>(seen.size()), t.width * t.height);
+        QCOMPARE(seen.begin()->first, t.x);
+        QCOMPARE(seen.rbegin()->second, t.y + t.height - 1);
+      }
+  }
+  // Every sample within the radius lies in a quarter found (the pass must reach it), and the
+  // quarters hold fewer samples than their whole tiles.
+  GeometryImage image = makeBaseShape(BaseShape::Blob, 512);
+  TileBounds bounds(image);
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> index(0, 512);
+  long long quarterSamples = 0, tileSamples = 0;
+  for (int k = 0; k < 30; ++k) {
+    const Vec3f centre = image.at(index(random), index(random)).xyz();
+    const float radius = 0.02f + 0.3f * float(k) / 30.0f;
+    const std::vector<TexelRect> rects = bounds.rectsNearSphere(centre, radius);
+    std::vector<char> covered(image.texelCount(), 0);
+    for (const TexelRect& r : rects)
+      for (int j = r.y; j < r.y + r.height; ++j)
+        for (int i = r.x; i < r.x + r.width; ++i) {
+          QVERIFY(!covered[static_cast<std::size_t>(j) * image.side() + i]); // each once
+          covered[static_cast<std::size_t>(j) * image.side() + i] = 1;
+          ++quarterSamples;
+        }
+    for (int j = 0; j < image.side(); ++j)
+      for (int i = 0; i < image.side(); ++i)
+        if (length(image.at(i, j).xyz() - centre) <= radius)
+          QVERIFY2(covered[static_cast<std::size_t>(j) * image.side() + i],
+                   qPrintable(QString("sample (%1, %2)").arg(i).arg(j)));
+    for (int t : bounds.tilesNearSphere(centre, radius)) {
+      const TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
+      tileSamples += static_cast<long long>(r.width) * r.height;
+    }
+  }
+  QVERIFY2(
+      quarterSamples < tileSamples * 9 / 10,
+      qPrintable(
+          QString("%1 samples in quarters, %2 in tiles").arg(quarterSamples).arg(tileSamples)));
+  // After an edit, the spike's quarter is found.
+  image.at(100, 40) = {5, 0, 0, 0};
+  bounds.refresh(image, {100, 40, 1, 1});
+  const std::vector<TexelRect> spike = bounds.rectsNearSphere({5, 0, 0}, 0.5f);
+  QVERIFY(std::any_of(spike.begin(), spike.end(), [](const TexelRect& r) {
+    return r.x <= 100 && 100 < r.x + r.width && r.y <= 40 && 40 < r.y + r.height;
+  }));
 }
 
 QTEST_APPLESS_MAIN(TileBoundsTest)

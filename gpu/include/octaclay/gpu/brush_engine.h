@@ -18,11 +18,14 @@
 namespace octaclay::gpu {
 
 class MaterialCatalog;
+namespace detail {
+class PassWatchdog;
+}
 
 /// One application of a brush at one place.
 struct Dab {
   core::Vec3f centre;               ///< object space, on the surface
-  core::Vec3f centreNormal;         ///< unit
+  core::Vec3f centreNormal;         ///< unit (a stroke gives the area normal where a pass reads it)
   core::Sample centreTexel;         ///< the sample under the centre (uv area mode measures from it)
   float radius = 0.1f;              ///< object units
   float strength = 0.5f;            ///< fraction of the radius (push 0.5 moves the centre radius/2)
@@ -58,16 +61,19 @@ public:
 /// Runs brushes as render-to-texture passes over a GpuDocument. Create and use it on the thread
 /// whose GL context is current.
 ///
-/// The watchdog: each pass is fenced (glFenceSync) and waited for at most passTimeLimit(),
-/// where the dab reads its result back anyway. A pass that overruns marks its brush broken
-/// (its dabs throw until it is loaded again) and dab() throws BrushTimeoutError; a stroke
-/// (StrokeSession) then restores the layers from its undo capture. The GPU may still
-/// be running the pass: the restore is queued behind it, so the document ends as it was once
-/// the pass completes. Drivers that recover from a hung shader only by a context reset (a GPU
-/// without preemption; the context reports GL_GUILTY_CONTEXT_RESET through robustness) lose
-/// every texture of the context: the caller then recreates the context, a BrushEngine and a
-/// GpuDocument from the CPU mirror (GpuDocument::document(), which the restore made equal to
-/// the document before the stroke) and reloads the brushes except the broken one.
+/// The watchdog: each pass is fenced (glFenceSync) with its submission time. The CPU does not
+/// wait for a pass as it is issued: before the next one it waits for the pass before last (the
+/// GPU runs one pass ahead), and before it reads what the passes wrote (a dab's positions, the
+/// stroke's end: finishPasses) for all of them, each at most passTimeLimit() after its
+/// submission; a pass the GPU finished meanwhile costs no wait. A pass that overruns marks its
+/// brush broken (its dabs throw until it is loaded again) and the dab (or finishPasses) throws
+/// BrushTimeoutError; a stroke (StrokeSession) then restores the layers from its undo capture.
+/// The GPU may still be running the pass: the restore is queued behind it, so the document ends
+/// as it was once the pass completes. Drivers that recover from a hung shader only by a context
+/// reset (a GPU without preemption; the context reports GL_GUILTY_CONTEXT_RESET through
+/// robustness) lose every texture of the context: the caller then recreates the context, a
+/// BrushEngine and a GpuDocument from the CPU mirror (GpuDocument::document(), which the restore
+/// made equal to the document before the stroke) and reloads the brushes except the broken one.
 class BrushEngine {
 public:
   BrushEngine();
@@ -122,6 +128,19 @@ public:
   int materialIndex(std::string_view id) const;
   std::vector<std::string> materialIds() const;
 
+  /// Whether a dab of this brush reads its centre normal (Dab::centreNormal): whether its
+  /// programs for the document's mask kind and these parameters' enum values use u_centreNormal
+  /// or the projection frame made from it (the GLSL compiler's active uniforms). A stroke skips
+  /// computing the area normal for a brush that does not. Compiles those programs if needed;
+  /// throws GlError when one does not compile, core::Error(UnknownId) for an unknown brush.
+  bool usesCentreNormal(const GpuDocument& document, const std::string& brushId,
+                        const std::map<std::string, std::array<float, 4>>& parameters);
+
+  /// Waits for every pass issued so far, each at most the time limit after its submission:
+  /// before the CPU reads what they wrote (StrokeSession::finish, before the paint layers' pull).
+  /// Throws BrushTimeoutError, and marks the brush broken, when one overran.
+  void finishPasses();
+
   /// The tiles a dab of this brush at this place would run over (no GL work).
   std::vector<core::TexelRect> reach(const GpuDocument& document, const std::string& brushId,
                                      const Dab& dab) const;
@@ -147,9 +166,16 @@ private:
                          const std::vector<int>& enums);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   std::chrono::nanoseconds passTimeLimit_ = std::chrono::seconds(2);
-  /// Waits for the pass just issued (the watchdog); on overrun marks the brush broken, unbinds
-  /// the framebuffer and throws BrushTimeoutError.
-  void awaitPass(LoadedBrush& brush);
+  /// The watchdog's fences, the passes not yet known to be finished.
+  std::unique_ptr<detail::PassWatchdog> watchdog_;
+  /// A pass of brush was just issued: fenced, and the pass before last waited for (the GPU
+  /// runs one pass ahead of the CPU).
+  void passIssued(const LoadedBrush& brush);
+  /// Waits for the passes issued so far, before the CPU reads what they wrote.
+  void awaitPasses();
+  /// What keepWithin returned: nullptr, or the owner of an overrun pass, which is marked broken
+  /// (the framebuffer unbound) and thrown as BrushTimeoutError.
+  void checkOverrun(const std::string* overran);
   Program seamProgram_;
   /// The material maps' filters, bound per texture unit for a dab.
   Sampler nearestMaps_, bilinearMaps_;

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,14 @@ public:
   /// are deferred, recorded for syncMirror() (the layer gets its mirror texels now, so it stops
   /// counting as uniform at once).
   void changed(core::EditLayer layer, core::TexelRect rect);
+  /// The same for several rectangles of one pass (tile bounds refreshed once for all); the
+  /// single-rectangle form comes through here, so a pass's changes reach the feed here.
+  void changed(core::EditLayer layer, std::span<const core::TexelRect> rects);
+  /// Whether changed() reads this layer back at once (positions always, paint layers unless
+  /// their pulls are deferred): the caller must know the passes that wrote it finished.
+  bool readsAtOnce(core::EditLayer layer) const {
+    return !deferring_ || layer == core::EditLayer::Positions;
+  }
   /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
   void deferPaintPulls(bool on);
   /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
@@ -108,6 +117,8 @@ private:
   static std::size_t index(core::EditLayer layer) { return static_cast<std::size_t>(layer); }
   core::Layer* mirrorLayer(core::EditLayer layer);
   const core::Layer* mirrorLayer(core::EditLayer layer) const;
+  /// pull without the tile bounds' refresh.
+  void readBack(core::EditLayer layer, core::TexelRect rect);
   void writeMirror(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
   /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
   float* mirrorData(core::EditLayer layer);
@@ -122,6 +133,7 @@ private:
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
   std::array<std::vector<core::TexelRect>, 4> unpublished_; // changed since publishChanges()
+  std::array<std::size_t, 4> mergedCount_{}; // unpublished_'s size after its last merge
   std::function<void(const DocumentChange&)> follower_;
   /// Notes rect of layer as changed for the next publishChanges().
   void note(core::EditLayer layer, core::TexelRect rect);

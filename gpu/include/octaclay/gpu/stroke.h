@@ -118,7 +118,9 @@ public:
   double engineMs() const;
   /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
   /// layer now holds a non-finite value or a position beyond ±1e15, the layers are restored
-  /// bit for bit and core::Error(InvalidInput) names the sample instead.
+  /// bit for bit and core::Error(InvalidInput) names the sample instead. A pass the watchdog had
+  /// not waited for yet that overran its limit (BrushEngine::finishPasses) restores them too and
+  /// throws BrushTimeoutError.
   core::EditStep finish(const std::string& label);
 
 private:
