@@ -5,8 +5,8 @@
 #include "brush_panel.h"
 #include "limb_document.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -94,7 +94,8 @@ std::unique_ptr<MainWindow> EvenOutRenderTest::makeWindow() {
 }
 
 bool EvenOutRenderTest::openLimb(MainWindow& w) {
-  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->modeller().document().size() == 256;
+  return w.openDocument(dir_.filePath("limb.exr")) &&
+         w.viewport()->modeller().document().size() == 256;
 }
 
 void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
@@ -113,7 +114,8 @@ void EvenOutRenderTest::evenOutGivesTheLimbSamplesBackAsOneUndoStep() {
   QVERIFY(openLimb(*window_));
   QVERIFY(evenOut->isEnabled());
   const std::vector<unsigned char> before = bitsOf(window_->viewport()->modeller().document());
-  const double ratioBefore = longestOverMedian(window_->viewport()->modeller().document().positions);
+  const double ratioBefore =
+      longestOverMedian(window_->viewport()->modeller().document().positions);
   QVERIFY2(ratioBefore > 8, qPrintable(QString::number(ratioBefore)));
   QVERIFY(!window_->isModified());
 

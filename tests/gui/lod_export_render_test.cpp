@@ -5,8 +5,8 @@
 #include "brush_panel.h"
 #include "lod_panel.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"

@@ -6,8 +6,8 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -108,9 +108,11 @@ void LodRenderTest::heatMapIsRedOnASharpBumpAndBlueOnSmoothClay() {
     QVERIFY(view->stroking());
     view->endStroke();
   }
-  view->modeller().setSaliencyOnCpu(false); // the GPU pass, whatever the GL (llvmpipe takes the CPU's)
+  view->modeller().setSaliencyOnCpu(
+      false); // the GPU pass, whatever the GL (llvmpipe takes the CPU's)
   window_->layersPanel()->setPreview(6);
-  QVERIFY(view->modeller().saliencyCurrent()); // computed on the GPU when the heat map was asked for
+  QVERIFY(
+      view->modeller().saliencyCurrent()); // computed on the GPU when the heat map was asked for
   hideBrushOutline(view);
   const QImage image = view->grabFramebuffer();
   // The reddest pixel within 25 px of the bump (its rim and top are where the normal turns).

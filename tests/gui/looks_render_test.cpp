@@ -7,9 +7,9 @@
 #include "lod_panel.h"
 #include "main_window.h"
 #include "matcap_generator.h"
+#include "modeller.h"
 #include "test_window.h"
 #include "viewport_overlay.h"
-#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/image_io.h"

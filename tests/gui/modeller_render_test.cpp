@@ -3,8 +3,8 @@
 #include "brush_panel.h"
 #include "layers_panel.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -288,7 +288,7 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
   const std::vector<float> beforeSmooth = positionsOf(*window_);
   click(Qt::ShiftModifier);
   QTRY_COMPARE(window_->undoStack()->text(window_->undoStack()->count() - 1),
-           QString("Stroke (smooth)"));
+               QString("Stroke (smooth)"));
   QVERIFY(!bitEqual(beforeSmooth, positionsOf(*window_)));
   QVERIFY(radial() <= bumped); // smoothing never lifts a bump's top
 
@@ -683,7 +683,8 @@ void ModellerRenderTest::autosaveSurvivesACrashAndIsRecovered() {
   QVERIFY(window_->pendingRecovery().has_value());
   QVERIFY(window_->recover());
   QVERIFY(bitEqual(positionsOf(*window_), stroked));
-  QVERIFY(!window_->viewport()->modeller().document().diffuse.uniform()); // the paint stroke came back
+  QVERIFY(
+      !window_->viewport()->modeller().document().diffuse.uniform()); // the paint stroke came back
   QVERIFY(window_->isModified());
   QVERIFY(!window_->pendingRecovery());
 }

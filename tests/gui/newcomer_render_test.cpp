@@ -8,8 +8,8 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "main_window.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/geometry/base_shapes.h"

@@ -6,8 +6,8 @@
 #include "limb_document.h"
 #include "main_window.h"
 #include "mesh_size_dialog.h"
-#include "test_window.h"
 #include "modeller.h"
+#include "test_window.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
@@ -119,7 +119,8 @@ void RemeshRenderTest::cleanup() {
 }
 
 bool RemeshRenderTest::openLimb(MainWindow& w) {
-  return w.openDocument(dir_.filePath("limb.exr")) && w.viewport()->modeller().document().size() == 64;
+  return w.openDocument(dir_.filePath("limb.exr")) &&
+         w.viewport()->modeller().document().size() == 64;
 }
 
 void RemeshRenderTest::menuItemsSayWhatTheyWillDo() {

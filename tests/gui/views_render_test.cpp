@@ -6,9 +6,9 @@
 #include "brush_panel.h"
 #include "file_suggestion.h"
 #include "main_window.h"
+#include "modeller.h"
 #include "save_image_dialog.h"
 #include "test_window.h"
-#include "modeller.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document.h"

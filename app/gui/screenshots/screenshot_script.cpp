@@ -3,9 +3,9 @@
 #include "brush_panel.h"
 #include "image_output.h"
 #include "main_window.h"
+#include "modeller.h"
 #include "screenshot_support.h"
 #include "view_looks.h"
-#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QImage>

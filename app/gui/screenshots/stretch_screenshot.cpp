@@ -3,8 +3,8 @@
 #include "image_output.h"
 #include "layers_panel.h"
 #include "main_window.h"
-#include "screenshot_support.h"
 #include "modeller.h"
+#include "screenshot_support.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/measure/stretch.h"

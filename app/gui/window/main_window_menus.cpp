@@ -7,10 +7,10 @@
 #include "lod_panel.h"
 #include "looks_menu.h"
 #include "main_window.h"
+#include "modeller.h"
 #include "save_compressed_dialog.h"
 #include "shortcut_sheet.h"
 #include "view_actions.h"
-#include "modeller.h"
 #include "viewport_widget.h"
 
 #include <QComboBox>

@@ -3,8 +3,8 @@
 #include "document_actions.h"
 #include "main_window.h"
 #include "mesh_size_dialog.h"
-#include "stroke_command.h"
 #include "modeller.h"
+#include "stroke_command.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/resize.h"
@@ -34,7 +34,8 @@ std::optional<MainWindow::MeshOutcome>
 MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
   BackgroundTaskRunner& runner = documents_->runner();
   // On the GPU (GL started), not just pending: the result is applied there.
-  if (!viewport_->glReady() || !viewport_->modeller().hasDocument() || viewport_->stroking() || runner.busy())
+  if (!viewport_->glReady() || !viewport_->modeller().hasDocument() || viewport_->stroking() ||
+      runner.busy())
     return std::nullopt;
   if (!control) control = std::make_shared<TaskControl>();
   // The copy is taken here, on the GUI thread; the worker never touches the viewport.
@@ -43,9 +44,9 @@ MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> contr
   // What tells that the model changed while the task ran (input reaches the viewport in the
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
-    return std::tuple(viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(),
-                      undoStack_->count(),
-                      viewport_->modeller().hasDocument() ? viewport_->modeller().document().size() : 0);
+    return std::tuple(
+        viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(), undoStack_->count(),
+        viewport_->modeller().hasDocument() ? viewport_->modeller().document().size() : 0);
   };
   const auto before = mark();
   // The menu item says how far the task is (the progress dialog appears after 100 ms).
@@ -211,8 +212,8 @@ void MainWindow::openMeshSizeDialog(bool remeshing) {
 }
 
 void MainWindow::updateMeshActions() {
-  const bool ready = viewport_->glReady() && viewport_->modeller().hasDocument() && !viewport_->stroking() &&
-                     !documents_->runner().busy();
+  const bool ready = viewport_->glReady() && viewport_->modeller().hasDocument() &&
+                     !viewport_->stroking() && !documents_->runner().busy();
   for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
     if (QAction* a = action(QString::fromLatin1(name))) a->setEnabled(ready);
 }
