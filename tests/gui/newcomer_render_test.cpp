@@ -12,7 +12,10 @@
 #include "test_window.h"
 #include "viewport_widget.h"
 
+#include "octaclay/core/document/document.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/measure/stretch.h"
 
 #include <QComboBox>
 #include <QDialog>
@@ -92,6 +95,7 @@ private slots:
   void saveAndExportSuggestANameBesideTheDocument();
   void newModelDialogSaysDetail();
   void fileNewGoesBackToTheDefaultDisplayDetail();
+  void fileNewMakesACapsuleForALimb();
 
 private:
   std::unique_ptr<MainWindow> makeWindow();
@@ -305,6 +309,45 @@ void NewcomerRenderTest::fileNewGoesBackToTheDefaultDisplayDetail() {
   QCOMPARE(window_->viewport()->levelDivisor(), expected);
   QCOMPARE(lod->display(), app::LodPanel::Display::FullResolution);
   QCOMPARE(window_->viewport()->lodDisplay(), app::LodDisplay::FullResolution);
+}
+
+// Issue 33: a capsule from File ▸ New, chosen in its dialog: twice as long as it is wide, its
+// edges no longer than a sphere's of the same N (merge_test measures its even sampling).
+void NewcomerRenderTest::fileNewMakesACapsuleForALimb() {
+  window_ = makeWindow();
+  QVERIFY(window_);
+  bool accepted = false;
+  QTimer::singleShot(0, window_.get(), [&] {
+    auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+    if (!dialog) return;
+    auto* shape = dialog->findChild<QComboBox*>("shapeCombo");
+    auto* detail = dialog->findChild<QComboBox*>("detailCombo");
+    if (!shape || !detail || shape->findData("capsule") < 0) {
+      dialog->reject();
+      return;
+    }
+    shape->setCurrentIndex(shape->findData("capsule"));
+    detail->setCurrentIndex(detail->findData(256));
+    accepted = true;
+    dialog->accept();
+  });
+  window_->action("actionNew")->trigger();
+  QVERIFY2(accepted, "the New dialog offers no capsule");
+  const core::Document& made = window_->modeller()->document();
+  QCOMPARE(made.size(), 256);
+  const core::BoundingBox box = core::boundingBox(made.positions);
+  const core::Vec3f extent = box.max - box.min;
+  qInfo("capsule extent %.3f x %.3f x %.3f", double(extent.x), double(extent.y), double(extent.z));
+  QVERIFY(std::abs(extent.z / extent.x - 2.0f) < 0.05f);
+  QVERIFY(std::abs(extent.x - extent.y) < 1e-3f);
+  // No long edges: the longest over the median within 10 % of a sphere's.
+  const double capsule = core::summarizeStretch(made.positions).longestOverMedian;
+  const double sphere =
+      core::summarizeStretch(
+          core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 256)).positions)
+          .longestOverMedian;
+  qInfo("longest edge / median: capsule %.2f, sphere %.2f", capsule, sphere);
+  QVERIFY(capsule <= sphere * 1.1);
 }
 
 QTEST_MAIN(NewcomerRenderTest)

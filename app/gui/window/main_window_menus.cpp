@@ -53,8 +53,14 @@ void MainWindow::buildMenus() {
             dialog.setWindowTitle(tr("New model"));
             auto* form = new QFormLayout(&dialog);
             auto* shape = new QComboBox(&dialog);
-            for (const char* s : {"sphere", "cube", "cylinder", "blob"})
+            shape->setObjectName("shapeCombo");
+            for (const char* s : {"sphere", "cube", "cylinder", "blob", "capsule"})
               shape->addItem(tr(s), QString(s));
+            // A limb to sculpt on, sampled evenly along it (core::makeCapsule).
+            shape->setItemData(4,
+                               tr("A limb: a cylinder with round ends, its samples spread "
+                                  "evenly along it"),
+                               Qt::ToolTipRole);
             auto* size = new QComboBox(&dialog);
             size->setObjectName("detailCombo");
             for (int n : {64, 128, 256, 512, 1024, 2048, 4096}) {
