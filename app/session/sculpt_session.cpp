@@ -60,6 +60,24 @@ void SculptSession::setDocument(core::Document document,
   publish(gpu::ChangeKind::NewDocument);
 }
 
+void SculptSession::show(const core::Document& document) {
+  auto uploaded = std::make_unique<gpu::GpuDocument>(document);
+  stroke_.reset();
+  document_ = std::move(uploaded);
+  document_->setChangeFollower(follower_);
+  document_->markAllChanged();
+  publish(gpu::ChangeKind::NewDocument);
+}
+
+void SculptSession::replaceDocument(core::Document after, const std::string& label) {
+  core::EditStep step;
+  step.label = label;
+  step.replacedBefore = std::make_shared<const core::Document>(document());
+  step.replacedAfter = std::make_shared<const core::Document>(std::move(after));
+  show(*step.replacedAfter);
+  history_.record(std::move(step));
+}
+
 void SculptSession::setChangeFollower(std::function<void(const gpu::DocumentChange&)> follower) {
   follower_ = std::move(follower);
   if (document_) document_->setChangeFollower(follower_);
@@ -331,7 +349,7 @@ const core::EditStep* SculptSession::undo() {
     SculptSession& session;
     ~Report() { session.publish(gpu::ChangeKind::Undo); }
   } report{*this};
-  return history_.undo(gpu::undoApplier(*document_));
+  return history_.undo(gpu::undoApplier(*document_), [this](const core::Document& d) { show(d); });
 }
 
 const core::EditStep* SculptSession::redo() {
@@ -340,7 +358,7 @@ const core::EditStep* SculptSession::redo() {
     SculptSession& session;
     ~Report() { session.publish(gpu::ChangeKind::Redo); }
   } report{*this};
-  return history_.redo(gpu::undoApplier(*document_));
+  return history_.redo(gpu::undoApplier(*document_), [this](const core::Document& d) { show(d); });
 }
 
 std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side) {

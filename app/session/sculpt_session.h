@@ -217,9 +217,15 @@ public:
   /// nothing differed, nothing recorded). Precondition: a document and no stroke.
   std::vector<core::TexelRect> applyChange(const core::Document& after, const std::string& label);
 
+  /// Makes `after` (any N) the document as one history step labelled label (Remesh, Resolution,
+  /// Import): the step holds both documents, so undo and redo bring either back bit for bit.
+  /// Throws what the upload throws; nothing changed then. Precondition: a document, no stroke.
+  void replaceDocument(core::Document after, const std::string& label);
+
   core::EditHistory& history() { return history_; }
   const core::EditHistory& history() const { return history_; }
-  /// Reverts / reapplies the newest stroke on the GPU and the mirror: the stroke stepped, or
+  /// Reverts / reapplies the newest step on the GPU and the mirror (a replacing step uploads the
+  /// document it brings back, published as NewDocument): the step, or
   /// null if there is none (or no document, or a stroke is being made). Throws what the
   /// history's applier throws; the history is then unchanged.
   const core::EditStep* undo();
@@ -249,6 +255,8 @@ private:
   static core::EditStep relaxAfterStroke(const core::Document& mirror, const core::EditStep& record,
                                          ActiveStroke& stroke);
 
+  /// Uploads document in place of the current one, the history kept (a replacing step).
+  void show(const core::Document& document);
   /// moveTo without reporting the change (runQueuedMoves reports once for its run).
   int move(const StrokeMove& move);
   void publish(gpu::ChangeKind kind);

@@ -18,6 +18,7 @@
 
 #include <QAction>
 #include <QImage>
+#include <QListView>
 #include <QPointer>
 #include <QScrollBar>
 #include <QSettings>
@@ -27,7 +28,6 @@
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QUndoStack>
-#include <QUndoView>
 #include <QtTest>
 
 #include <cstring>
@@ -303,7 +303,7 @@ void HelpRenderTest::historyListsTheStepsAndAClickGoesBack() {
   auto* history = window_->findChild<app::HistoryDialog*>();
   QVERIFY(history);
   QVERIFY(QTest::qWaitForWindowExposed(history));
-  QUndoView* view = history->view();
+  QListView* view = history->view();
   // The clean state, then one row per stroke, the newest selected.
   QCOMPARE(view->model()->rowCount(), 4);
   QVERIFY(view->model()->index(1, 0).data().toString().startsWith("Stroke (push)"));

@@ -1,31 +1,34 @@
 #include "history_dialog.h"
 
-#include "stroke_command.h"
+#include "history_list.h"
 
-#include <QUndoStack>
-#include <QUndoView>
+#include <QListView>
 #include <QVBoxLayout>
 
 namespace octaclay::app {
 
-HistoryDialog::HistoryDialog(QUndoStack* stack, QWidget* parent) : QDialog(parent), stack_(stack) {
+HistoryDialog::HistoryDialog(HistoryList* history, QWidget* parent)
+    : QDialog(parent), history_(history) {
   setObjectName(QStringLiteral("historyDialog"));
   setWindowTitle(tr("History"));
-  view_ = new QUndoView(stack, this);
+  view_ = new QListView(this);
   view_->setObjectName(QStringLiteral("historyView"));
-  refresh();
-  connect(stack, &QUndoStack::indexChanged, this, &HistoryDialog::refresh);
+  view_->setModel(history);
+  view_->setSelectionMode(QAbstractItemView::SingleSelection);
+  view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  // Row 0 is the state before the oldest step, row k the state after step k: a click goes there.
+  connect(view_, &QListView::clicked, this,
+          [this](const QModelIndex& at) { history_->setIndex(at.row()); });
+  connect(history, &QAbstractItemModel::modelReset, this, &HistoryDialog::refresh);
   view_->setToolTip(tr("Click a step to go back (or forward) to it"));
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(view_);
   resize(320, 420);
+  refresh();
 }
 
 void HistoryDialog::refresh() {
-  // Clicking the first row undoes every step; with the oldest dropped it reaches the state
-  // before the oldest step kept, not the model as it was opened.
-  view_->setEmptyLabel(oldestStepDropped(*stack_) ? tr("Oldest kept step")
-                                                  : tr("Model as opened or made"));
+  view_->setCurrentIndex(history_->index(history_->index(), 0));
 }
 
 } // namespace octaclay::app

@@ -69,10 +69,37 @@ bool Modeller::setDocument(core::Document document, bool keepView) {
   if (!host_ || !host_->context()) {
     pending_ = std::move(document);
     session_.history().clear();
+    emit historyChanged();
     return true;
   }
   CurrentContext current(*host_);
-  return uploadDocument(std::move(document), keepView);
+  const bool ok = uploadDocument(std::move(document), keepView);
+  emit historyChanged();
+  return ok;
+}
+
+bool Modeller::replaceDocument(core::Document after, const QString& label) {
+  strokes_.settle();
+  if (!session_.hasDocument() || !host_ || session_.stroking()) return false;
+  {
+    CurrentContext current(*host_);
+    try {
+      drainGlErrors();
+      session_.replaceDocument(std::move(after), label.toStdString());
+    } catch (const std::exception& e) {
+      fail(QStringLiteral("Could not load the model onto the GPU: %1").arg(e.what()));
+      return false;
+    }
+  }
+  emit documentReplaced(true);
+  emit historyChanged();
+  emit surfaceChanged();
+  return true;
+}
+
+void Modeller::setHistoryBudget(std::size_t bytes) {
+  session_.history().setBudget(bytes);
+  emit historyChanged();
 }
 
 bool Modeller::uploadDocument(core::Document document, bool keepView) {
@@ -175,6 +202,7 @@ void Modeller::followChanges(std::function<void(const gpu::DocumentChange&)> fol
 void Modeller::strokeSettled(const QString& label) {
   refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
   if (!label.isEmpty()) emit strokeFinished(label);
+  if (!label.isEmpty()) emit historyChanged();
   emit surfaceChanged();
 }
 
@@ -230,8 +258,12 @@ bool Modeller::stepHistory(bool undo) {
     }
   }
   host_->update();
-  if (s) emit surfaceChanged();
-  return s != nullptr;
+  if (!s) return false;
+  if (s->replacesDocument()) emit documentReplaced(true);
+  emit historyStepped(*s, undo);
+  emit historyChanged();
+  emit surfaceChanged();
+  return true;
 }
 
 bool Modeller::applyChange(const core::Document& after, const std::string& label) {
@@ -253,6 +285,7 @@ bool Modeller::applyChange(const core::Document& after, const std::string& label
     }
   }
   host_->update();
+  if (recorded) emit historyChanged();
   if (recorded) emit surfaceChanged();
   return recorded;
 }

@@ -95,6 +95,12 @@ public:
   /// (SculptSession::applyChange). Returns whether a step was recorded. Throws what the session
   /// throws.
   bool applyChange(const core::Document& after, const std::string& label);
+  /// Makes `after` (any N) the document as one history step labelled label (Remesh,
+  /// Resolution, Import), the view kept (documentReplaced(true)); undo brings the one before
+  /// back bit for bit. Returns false with error() set if the upload failed (nothing changed).
+  bool replaceDocument(core::Document after, const QString& label);
+  /// The history's memory budget (Edit ▸ Preferences): older steps that no longer fit drop.
+  void setHistoryBudget(std::size_t bytes);
   /// Whether the last stroke begun relaxed what it stretched (keep detail).
   bool keepsDetail() const { return session_.keepDetail(); }
 
@@ -119,6 +125,10 @@ signals:
   void documentReplaced(bool keepView);
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document, the saliency in).
   void surfaceChanged();
+  /// The history changed: a step recorded, undone or redone, steps dropped, or all cleared.
+  void historyChanged();
+  /// undo or redo stepped through step (a replacing step showed another document).
+  void historyStepped(const core::EditStep& step, bool undo);
 
 private:
   bool uploadDocument(core::Document document, bool keepView);

@@ -1,8 +1,8 @@
 #include "document_actions.h"
 
+#include "history_list.h"
 #include "lod_panel.h"
 #include "modeller.h"
-#include "replace_document_command.h"
 #include "save_compressed_dialog.h"
 #include "user_messages.h"
 #include "viewport_widget.h"
@@ -25,7 +25,6 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
-#include <QUndoStack>
 
 #include <algorithm>
 #include <memory>
@@ -49,12 +48,13 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
       parts_.statusBar->showMessage(tr("Autosave failed: %1").arg(error), 10000);
       return;
     }
-    autosavedIndex_ = autosavingIndex_;
+    autosaved_ = autosaving_;
   });
+  connect(&parts_.viewport->modeller(), &Modeller::historyStepped, this, &DocumentActions::stepped);
 }
 
 bool DocumentActions::isModified() const {
-  return forceModified_ || !parts_.undoStack->isClean();
+  return forceModified_ || !parts_.history->isClean();
 }
 
 void DocumentActions::showError(const QString& message) {
@@ -111,25 +111,17 @@ bool DocumentActions::importMesh(const QString& path, int n) {
               tr("\nThe current model is unchanged."));
     return false;
   }
-  // One undo step: the replaced document (with its own strokes) is held by the step.
-  std::unique_ptr<HeldDocument> previous;
+  // One step of the history: the replaced document (its strokes before it) is held by the step.
+  const QString name = QFileInfo(path).fileName();
+  const FileState imported{{}, QFileInfo(path).absoluteFilePath(), true}; // not saved anywhere yet
   if (parts_.viewport->modeller().hasDocument()) {
-    parts_.viewport->endStroke();
-    previous = std::make_unique<HeldDocument>(HeldDocument{
-        parts_.viewport->modeller().document(), std::move(parts_.viewport->modeller().history()),
-        path_, importedFrom_, forceModified_});
-  }
-  if (!adoptDocument(std::move(*made), {}, /*clearUndo=*/!previous)) {
-    if (previous) parts_.viewport->modeller().history() = std::move(previous->history);
-    return false;
+    if (!replaceWith(std::move(*made), tr("Import %1").arg(name), imported)) return false;
+  } else {
+    if (!adoptDocument(std::move(*made), {})) return false;
+    importedFrom_ = imported.importedFrom;
+    forceModified_ = true;
   }
   parts_.viewport->frameFrom(*facing);
-  importedFrom_ = QFileInfo(path).absoluteFilePath();
-  forceModified_ = true; // not saved anywhere yet
-  if (previous)
-    parts_.undoStack->push(new ReplaceDocumentCommand(
-        tr("Import %1").arg(QFileInfo(path).fileName()), std::move(previous),
-        [this](HeldDocument& held) { return swapDocument(held); }));
   emit titleChanged();
   lastError_.clear();
   parts_.statusBar->showMessage(tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), *report),
@@ -143,12 +135,15 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
     showError(parts_.viewport->error());
     return false;
   }
-  if (clearUndo) parts_.undoStack->clear();
+  if (clearUndo) {
+    parts_.history->setClean(); // setDocument cleared the history: as opened or made
+    replacedStates_.clear();
+  }
   path_ = path;
   importedFrom_.clear();
   forceModified_ = false;
-  autosavedIndex_ = -1;
-  autosavingIndex_ = -1; // an autosave in flight was of the document before
+  autosaved_.reset();
+  autosaving_.reset(); // an autosave in flight was of the document before
   parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
@@ -158,45 +153,49 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
 
 bool DocumentActions::replaceDocument(core::Document document, const QString& label) {
   if (!parts_.viewport->modeller().hasDocument()) return false;
-  parts_.viewport->endStroke();
-  auto previous = std::make_unique<HeldDocument>(
-      HeldDocument{core::Document{}, core::EditHistory{}, path_, importedFrom_, forceModified_});
-  previous->document = std::move(document);
-  // swapDocument shows the held one (the new document, no strokes yet) and keeps the shown one,
-  // with its history, in its place: the step then holds what undo brings back.
-  if (!swapDocument(*previous, /*keepView=*/true)) return false;
-  parts_.undoStack->push(
-      new ReplaceDocumentCommand(label, std::move(previous), [this](HeldDocument& held) {
-        return swapDocument(held, /*keepView=*/true);
-      }));
-  emit titleChanged();
+  if (!replaceWith(std::move(document), label, fileState())) return false;
   lastError_.clear();
   return true;
 }
 
-bool DocumentActions::swapDocument(HeldDocument& held, bool keepView) {
+bool DocumentActions::replaceWith(core::Document document, const QString& label,
+                                  const FileState& after) {
   parts_.viewport->endStroke();
-  HeldDocument shown{parts_.viewport->modeller().document(),
-                     std::move(parts_.viewport->modeller().history()), path_, importedFrom_,
-                     forceModified_};
+  const FileState before = fileState();
   emit aboutToAdopt();
-  if (!parts_.viewport->modeller().setDocument(std::move(held.document), keepView)) {
-    parts_.viewport->modeller().history() = std::move(shown.history);
+  Modeller& modeller = parts_.viewport->modeller();
+  if (!modeller.replaceDocument(std::move(document), label)) {
     showError(parts_.viewport->error());
     return false;
   }
-  parts_.viewport->modeller().history() = std::move(held.history);
-  path_ = held.path;
-  importedFrom_ = held.importedFrom;
-  forceModified_ = held.forceModified;
-  autosavedIndex_ = -1;
-  autosavingIndex_ = -1; // an autosave in flight was of the document before
-  held = std::move(shown);
+  if (const core::EditStep* step = modeller.history().nextUndo())
+    replacedStates_[step->serial] = {before, after};
+  path_ = after.path;
+  importedFrom_ = after.importedFrom;
+  forceModified_ = after.forceModified;
+  shownReplaced();
+  return true;
+}
+
+void DocumentActions::stepped(const core::EditStep& step, bool undo) {
+  const auto states = replacedStates_.find(step.serial);
+  if (!step.replacesDocument()) return;
+  if (states != replacedStates_.end()) {
+    const FileState& state = undo ? states->second.first : states->second.second;
+    path_ = state.path;
+    importedFrom_ = state.importedFrom;
+    forceModified_ = state.forceModified;
+  }
+  shownReplaced();
+}
+
+void DocumentActions::shownReplaced() {
+  autosaved_.reset();
+  autosaving_.reset(); // an autosave in flight was of the document before
   parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
-  return true;
 }
 
 bool DocumentActions::newDocument(core::BaseShape shape, int n) {
@@ -256,7 +255,7 @@ bool DocumentActions::saveDocument(const QString& path) {
     return false;
   }
   path_ = QFileInfo(path).absoluteFilePath();
-  parts_.undoStack->setClean();
+  parts_.history->setClean();
   forceModified_ = false;
   recovery().discard(); // the file now holds everything the recovery did
   addRecentFile(path_);
@@ -375,7 +374,7 @@ bool DocumentActions::exportLod(const QString& path) {
 bool DocumentActions::autosaveNow() {
   if (!parts_.viewport->modeller().hasDocument() || runner_.busy() || autosaver_.busy())
     return false;
-  if (!isModified() || parts_.undoStack->index() == autosavedIndex_) return true;
+  if (!isModified() || parts_.history->position() == autosaved_) return true;
   if (parts_.viewport->stroking()) { // the stroke's end makes the next step: save after it
     QTimer::singleShot(2000, this, [this] { autosaveNow(); });
     return false;
@@ -383,7 +382,7 @@ bool DocumentActions::autosaveNow() {
   // The GUI thread only copies the document; encoding and writing run on a worker while the
   // window goes on (the finished signal records the undo index saved, or says what failed).
   auto snapshot = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
-  autosavingIndex_ = parts_.undoStack->index();
+  autosaving_ = parts_.history->position();
   return autosaver_.start(std::move(snapshot), path_);
 }
 

@@ -11,15 +11,21 @@
 #include <QObject>
 #include <QString>
 
+#include <cstdint>
+#include <map>
 #include <optional>
+#include <utility>
 
 class QStatusBar;
-class QUndoStack;
 class QWidget;
+
+namespace octaclay::core {
+struct EditStep;
+}
 
 namespace octaclay::app {
 
-struct HeldDocument;
+class HistoryList;
 class LodPanel;
 class ViewportWidget;
 
@@ -36,7 +42,7 @@ public:
     QStatusBar* statusBar = nullptr;
     ViewportWidget* viewport = nullptr;
     LodPanel* lodPanel = nullptr;
-    QUndoStack* undoStack = nullptr; ///< its clean state is the document's saved state
+    HistoryList* history = nullptr; ///< its clean state is the document's saved state
   };
   /// recoveryFolder and sessionPid as RecoveryStore's.
   DocumentActions(Parts parts, const QString& recoveryFolder, qint64 sessionPid,
@@ -53,8 +59,9 @@ public:
   bool saveCompressed(const QString& path, const core::CompressOptions& options);
   /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, with a
   /// cancellable progress dialog; on failure or cancel the current document stays. The import
-  /// is one undo step ("Import <name>", a ReplaceDocumentCommand): undo brings the previous
-  /// document back with its own strokes still undoable.
+  /// is one step of the modeller's history ("Import <name>", the previous document held by it):
+  /// undo brings the previous document back, its path and saved state too, with its strokes
+  /// still undoable.
   bool importMesh(const QString& path, int n);
   /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
   bool exportMesh(const QString& path, int divisor);
@@ -64,10 +71,9 @@ public:
   bool exportLod(const QString& path);
 
   /// Makes document (the same surface resampled: Mesh ▸ Remesh, Mesh ▸ Resolution) the current
-  /// one as one undo step labelled label (a ReplaceDocumentCommand holding the replaced document
-  /// with its strokes), keeping the path, the camera and what the model was imported from; undo
-  /// brings the replaced document back bit for bit. False (reported; nothing changes) if the
-  /// viewport refused it.
+  /// one as one step of the modeller's history labelled label (Modeller::replaceDocument),
+  /// keeping the path, the camera and what the model was imported from; undo brings the replaced
+  /// document back bit for bit. False (reported; nothing changes) if the upload failed.
   bool replaceDocument(core::Document document, const QString& label);
 
   QString currentPath() const { return path_; }
@@ -116,21 +122,31 @@ private:
   /// Shows document as the current one (clearing the undo stack when clearUndo); false if the
   /// viewport refused it (reported; the current document stays).
   bool adoptDocument(core::Document document, const QString& path, bool clearUndo = true);
-  /// Shows held (with its history, path and state) and puts the shown document in its place;
-  /// with keepView the camera stays (the same surface), else the model is framed anew.
-  bool swapDocument(HeldDocument& held, bool keepView = false);
+  /// The file state (path, import, forced modified) a replacing step leaves, and the one before.
+  struct FileState {
+    QString path, importedFrom;
+    bool forceModified = false;
+  };
+  /// Replaces the document as one history step, the file state becoming `after`.
+  bool replaceWith(core::Document document, const QString& label, const FileState& after);
+  /// A replacing step was undone or redone: its file state back, the panels told of the size.
+  void stepped(const core::EditStep& step, bool undo);
+  void shownReplaced();
+  FileState fileState() const { return {path_, importedFrom_, forceModified_}; }
   void addRecentFile(const QString& path);
 
   Parts parts_;
   BackgroundTaskRunner runner_;
   RecoveryStore recovery_;
   Autosaver autosaver_{recovery_}; // after recovery_: destroyed (waiting for its save) first
-  int autosavingIndex_ = -1;       // undo index of the autosave in flight
+  std::optional<std::uint64_t> autosaving_; // the history position of the autosave in flight
   std::optional<RecoveryStore::Pending> pending_;
   QString path_;
   QString importedFrom_;
   QString lastError_;
-  int autosavedIndex_ = -1;    // undo index at the last autosave
+  std::optional<std::uint64_t> autosaved_; // the history position at the last autosave
+  /// The file states around each replacing step (by EditStep::serial): before, after.
+  std::map<std::uint64_t, std::pair<FileState, FileState>> replacedStates_;
   bool forceModified_ = false; // a recovered or imported document differs from any file
 };
 

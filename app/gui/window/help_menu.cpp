@@ -52,7 +52,7 @@ void addHelpMenu(QMainWindow& window) {
   QObject::connect(about, &QAction::triggered, &window, [&window] { showAbout(&window); });
 }
 
-void addHistoryAction(QMenu& menu, QUndoStack& stack, QWidget& window) {
+void addHistoryAction(QMenu& menu, HistoryList& stack, QWidget& window) {
   QAction* history = menu.addAction(QObject::tr("&History…"));
   history->setObjectName(QStringLiteral("actionHistory"));
   history->setStatusTip(QObject::tr("Every step you can undo; click one to go back to it"));

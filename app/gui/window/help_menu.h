@@ -2,17 +2,18 @@
 
 class QMainWindow;
 class QMenu;
-class QUndoStack;
 class QWidget;
 
 namespace octaclay::app {
+
+class HistoryList;
 
 /// Adds the Help menu to window's menu bar: Keyboard and Mouse (Ctrl+/, the ShortcutSheet of
 /// window), Quick Start (F1) and About. Each opens a non-modal dialog.
 void addHelpMenu(QMainWindow& window);
 
 /// Adds History… to menu (Edit): a HistoryDialog over stack, one per window, raised when open.
-void addHistoryAction(QMenu& menu, QUndoStack& stack, QWidget& window);
+void addHistoryAction(QMenu& menu, HistoryList& history, QWidget& window);
 
 /// The QSettings key recording that the Quick Start was shown once.
 inline constexpr const char* kQuickStartShownKey = "help/quickStartShown";

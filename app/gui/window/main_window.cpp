@@ -4,6 +4,7 @@
 #include "document_actions.h"
 #include "file_suggestion.h"
 #include "help_menu.h"
+#include "history_list.h"
 #include "layers_panel.h"
 #include "lod_follow.h"
 #include "lod_generator.h"
@@ -11,7 +12,6 @@
 #include "modeller.h"
 #include "save_image_dialog.h"
 #include "sparse_sampling_hint.h"
-#include "stroke_command.h"
 #include "user_messages.h"
 #include "viewport_focus.h"
 #include "viewport_widget.h"
@@ -30,7 +30,6 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
-#include <QUndoStack>
 
 #include <algorithm>
 #include <memory>
@@ -40,13 +39,13 @@ namespace octaclay::app {
 
 MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   setObjectName("MainWindow");
-  undoStack_ = new QUndoStack(this);
   modeller_ = new Modeller(this);
+  history_ = new HistoryList(*modeller_, this);
   viewport_ = new ViewportWidget(*modeller_, this);
   setCentralWidget(viewport_);
   buildDocks();
   documents_ = new DocumentActions(
-      {this, statusBar(), viewport_, lodPanel_, undoStack_},
+      {this, statusBar(), viewport_, lodPanel_, history_},
       options_.recoveryFolder.isEmpty() ? RecoveryStore::defaultFolder() : options_.recoveryFolder,
       options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid(), this);
   connect(documents_, &DocumentActions::aboutToAdopt, this, [this] { lodFollower_.reset(); });
@@ -118,30 +117,19 @@ void MainWindow::buildDocks() {
 }
 
 void MainWindow::connectParts() {
-  connect(&viewport_->modeller(), &Modeller::strokeFinished, this, [this](const QString& label) {
-    undoStack_->push(new StrokeCommand(viewport_, tr("Stroke (%1)").arg(label)));
+  // The first time the history's budget drops steps, the status bar says so (Edit ▸ History
+  // then names its first row truthfully).
+  connect(history_, &HistoryList::stepsStartedToDrop, this, [this] {
+    const core::EditHistory& h = viewport_->modeller().history();
+    showStatusMessage(*statusBar(),
+                      tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
+                         "its %2 MiB")
+                          .arg(h.undoCount())
+                          .arg(double(h.budget()) / double(1 << 20), 0, 'f', 0),
+                      15000);
   });
-  // Steps the history's budget dropped: marked on the stack (Edit ▸ History then names its
-  // first row truthfully); the first time, the status bar says so.
-  connect(undoStack_, &QUndoStack::indexChanged, this, [this] {
-    const int marked = markDroppedSteps(*undoStack_, viewport_->modeller().history());
-    if (marked == 0) return;
-    int dropped = 0;
-    for (int k = 0; k < undoStack_->count(); ++k)
-      if (const auto* step = dynamic_cast<const StrokeCommand*>(undoStack_->command(k)))
-        dropped += step->dropped();
-    if (dropped == marked) {
-      const core::EditHistory& h = viewport_->modeller().history();
-      showStatusMessage(*statusBar(),
-                        tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
-                           "its %2 MiB")
-                            .arg(h.undoCount())
-                            .arg(double(h.budget()) / double(1 << 20), 0, 'f', 0),
-                        15000);
-    }
-  });
-  connect(undoStack_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-  connect(undoStack_, &QUndoStack::indexChanged, this, &MainWindow::updateTitle);
+  connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
+  connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
   connect(&viewport_->modeller(), &Modeller::brushesChanged, this, &MainWindow::refreshBrushes);
   connect(&viewport_->modeller(), &Modeller::errorOccurred, this,
           [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
@@ -350,7 +338,7 @@ void MainWindow::startSession() {
 }
 
 void MainWindow::applyUndoBudget() {
-  viewport_->modeller().history().setBudget(static_cast<std::size_t>(undoBudgetMiB_) << 20);
+  modeller_->setHistoryBudget(static_cast<std::size_t>(undoBudgetMiB_) << 20);
 }
 
 void MainWindow::setUndoBudgetMiB(int mib) {
@@ -360,7 +348,6 @@ void MainWindow::setUndoBudgetMiB(int mib) {
   applyUndoBudget();
   const std::size_t after = viewport_->modeller().history().undoCount();
   if (after == before) return;
-  markDroppedSteps(*undoStack_, viewport_->modeller().history());
   showStatusMessage(*statusBar(),
                     tr("Undo now keeps only the newest %1 steps: %2 older ones did not fit its "
                        "%3 MiB")

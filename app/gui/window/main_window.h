@@ -1,6 +1,7 @@
 #pragma once
 
 #include "document_actions.h"
+#include "history_list.h"
 #include "recovery_store.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -19,13 +20,13 @@ class QAction;
 class QLabel;
 class QMenu;
 class QTimer;
-class QUndoStack;
 
 namespace octaclay::app {
 
 class BrushPanel;
 class LayersPanel;
 class LodFollower;
+class HistoryList;
 class LodGenerator;
 class Modeller;
 class LodPanel;
@@ -63,7 +64,8 @@ public:
   BrushPanel* brushPanel() const { return brushPanel_; }
   LayersPanel* layersPanel() const { return layersPanel_; }
   LodPanel* lodPanel() const { return lodPanel_; }
-  QUndoStack* undoStack() const { return undoStack_; }
+  /// The one history as the window shows it (Edit ▸ Undo, Redo, History; the saved state).
+  HistoryList* undoStack() const { return history_; }
   QAction* action(const QString& objectName) const;
 
   /// Where the file dialog for request opens: for a save or export, a name beside the document
@@ -112,8 +114,8 @@ public:
   bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
   /// Mesh ▸ Remesh…: core::remeshDocument at size n (0: the current N) as evenOutSamples runs
   /// core::evenOut. The result replaces the document as one undo step ("Remesh", or "Remesh at
-  /// N = n"; a ReplaceDocumentCommand holding the replaced document and its strokes, so undo
-  /// brings it back bit for bit); the path, the camera and the saved file stay. When the
+  /// N = n"; a step of the one history holding the replaced document, its strokes before it, so
+  /// undo brings it back bit for bit); the path, the camera and the saved file stay. When the
   /// remesh's own check leaves the model unchanged the status bar says why and no step is made.
   bool remesh(int n = 0, std::shared_ptr<TaskControl> control = nullptr);
   /// Mesh ▸ Resolution…: core::resizeAndCheck to n (unchanged, with the reason, when the result
@@ -205,7 +207,7 @@ private:
   LodPanel* lodPanel_ = nullptr;
   LodGenerator* lodGenerator_ = nullptr;
   std::unique_ptr<LodFollower> lodFollower_; // the newest LOD, moved with the surface each frame
-  QUndoStack* undoStack_ = nullptr;
+  HistoryList* history_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QLabel* fpsLabel_ = nullptr;
   QLabel* dabLabel_ = nullptr;

@@ -4,6 +4,7 @@
 #include "brush_panel.h"
 #include "detail_levels.h"
 #include "help_menu.h"
+#include "history_list.h"
 #include "lod_panel.h"
 #include "looks_menu.h"
 #include "main_window.h"
@@ -25,7 +26,6 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTimer>
-#include <QUndoStack>
 
 #include <cmath>
 
@@ -152,11 +152,22 @@ void MainWindow::buildMenus() {
           &QWidget::close);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = undoStack_->createUndoAction(this, tr("&Undo"));
+  // Edit ▸ Undo and Redo name the step they would take (HistoryList: the modeller's history).
+  QAction* undo = new QAction(tr("&Undo"), this);
+  QAction* redo = new QAction(tr("&Redo"), this);
+  const auto name = [this, undo, redo] {
+    undo->setEnabled(history_->canUndo());
+    undo->setText(history_->canUndo() ? tr("&Undo %1").arg(history_->undoText()) : tr("&Undo"));
+    redo->setEnabled(history_->canRedo());
+    redo->setText(history_->canRedo() ? tr("&Redo %1").arg(history_->redoText()) : tr("&Redo"));
+  };
+  name();
+  connect(history_, &QAbstractItemModel::modelReset, this, name);
+  connect(undo, &QAction::triggered, history_, &HistoryList::undo);
+  connect(redo, &QAction::triggered, history_, &HistoryList::redo);
   undo->setObjectName("actionUndo");
   undo->setProperty(kSheetTextProperty, tr("Undo")); // its text names the step
   undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = undoStack_->createRedoAction(this, tr("&Redo"));
   redo->setObjectName("actionRedo");
   redo->setProperty(kSheetTextProperty, tr("Redo"));
   // Both keys everywhere; QKeySequence::Redo is one of them on each platform, and an action
@@ -164,7 +175,7 @@ void MainWindow::buildMenus() {
   redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
   edit->addAction(undo);
   edit->addAction(redo);
-  addHistoryAction(*edit, *undoStack_, *this);
+  addHistoryAction(*edit, *history_, *this);
   edit->addSeparator();
   connect(add(edit, tr("&Preferences…"), "actionPreferences"), &QAction::triggered, this, [this] {
     QDialog dialog(this);

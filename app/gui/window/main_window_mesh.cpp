@@ -1,10 +1,10 @@
 // The Mesh menu's whole-model operations: Even Out Samples, Remesh… and Resolution…, each run on
 // a copy of the document off the GUI thread (progress and Cancel) and applied as one undo step.
 #include "document_actions.h"
+#include "history_list.h"
 #include "main_window.h"
 #include "mesh_size_dialog.h"
 #include "modeller.h"
-#include "stroke_command.h"
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/resize.h"
@@ -15,7 +15,6 @@
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTimer>
-#include <QUndoStack>
 
 #include <memory>
 #include <stdexcept>
@@ -45,7 +44,7 @@ MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> contr
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
     return std::tuple(
-        viewport_->stroking(), viewport_->stats().dabs, undoStack_->index(), undoStack_->count(),
+        viewport_->stroking(), viewport_->stats().dabs, history_->index(), history_->count(),
         viewport_->modeller().hasDocument() ? viewport_->modeller().document().size() : 0);
   };
   const auto before = mark();
@@ -130,7 +129,6 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
     statusBar()->showMessage(tr("The samples are already even"), 8000);
     return false;
   }
-  undoStack_->push(new StrokeCommand(viewport_, tr("Even Out Samples")));
   statusBar()->showMessage(tr("Samples evened out"), 5000);
   return true;
 }

@@ -4,6 +4,7 @@
 
 #include "document/edit_checks.h"
 
+#include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
 
 #include <string>
@@ -55,34 +56,54 @@ void validateStroke(const EditStep& s) {
 EditHistory::EditHistory(std::size_t budgetBytes) : budget_(budgetBytes) {}
 
 void EditHistory::record(EditStep stroke) {
-  if (stroke.tiles.empty()) return;
-  validateStroke(stroke);
-  if (!steps_.empty() && steps_.front().imageSide != stroke.imageSide)
-    invalidEdit("EditHistory::record: the stroke is for an image of side " +
-                std::to_string(stroke.imageSide) + " but the history holds strokes for side " +
-                std::to_string(steps_.front().imageSide) + "; clear() the history first");
+  const bool replaces = stroke.replacesDocument();
+  if (stroke.tiles.empty() && !replaces) return;
+  if (replaces) {
+    if (!stroke.replacedAfter || !stroke.tiles.empty())
+      invalidEdit("EditHistory::record: a step replacing the document needs both documents and "
+                  "no tiles");
+    const int before = stroke.replacedBefore->size() + 1;
+    if (side_ != 0 && before != side_)
+      invalidEdit("EditHistory::record: the replaced document has side " + std::to_string(before) +
+                  " but the history's document has side " + std::to_string(side_));
+    stroke.imageSide = stroke.replacedAfter->size() + 1;
+  } else {
+    validateStroke(stroke);
+    if (side_ != 0 && side_ != stroke.imageSide)
+      invalidEdit("EditHistory::record: the stroke is for an image of side " +
+                  std::to_string(stroke.imageSide) + " but the history holds strokes for side " +
+                  std::to_string(side_) + "; clear() the history first");
+  }
   stroke.bytes = stroke.computeBytes();
+  stroke.serial = ++serials_;
   while (steps_.size() > cursor_) {
     bytes_ -= steps_.back().bytes;
     steps_.pop_back();
   }
   bytes_ += stroke.bytes;
+  side_ = stroke.imageSide;
   steps_.push_back(std::move(stroke));
   cursor_ = steps_.size();
-  while (bytes_ > budget_ && steps_.size() > 1) {
-    bytes_ -= steps_.front().bytes;
-    steps_.pop_front();
-    --cursor_;
-  }
+  while (bytes_ > budget_ && steps_.size() > 1)
+    dropOldest();
+}
+
+void EditHistory::dropOldest() {
+  bytes_ -= steps_.front().bytes;
+  steps_.pop_front();
+  --cursor_;
+  ++dropped_;
 }
 
 void EditHistory::setBudget(std::size_t budgetBytes) {
   budget_ = budgetBytes;
-  while (bytes_ > budget_ && cursor_ > 1) {
-    bytes_ -= steps_.front().bytes;
-    steps_.pop_front();
-    --cursor_;
-  }
+  while (bytes_ > budget_ && cursor_ > 1)
+    dropOldest();
+}
+
+std::uint64_t EditHistory::position() const {
+  if (cursor_ > 0) return steps_[cursor_ - 1].serial;
+  return dropped_ > 0 ? kUnreachable : 0;
 }
 
 const EditStep* EditHistory::nextUndo() const {
@@ -93,18 +114,28 @@ const EditStep* EditHistory::nextRedo() const {
   return canRedo() ? &steps_[cursor_] : nullptr;
 }
 
-const EditStep* EditHistory::undo(const TileApplier& apply) {
+const EditStep* EditHistory::undo(const TileApplier& apply, const DocumentReplacer& replace) {
   if (!canUndo()) return nullptr;
   const EditStep& s = steps_[cursor_ - 1];
+  if (s.replacesDocument()) {
+    if (!replace) invalidEdit("EditHistory::undo: the step replaced the document: no replacer");
+    replace(*s.replacedBefore);
+    side_ = s.replacedBefore->size() + 1;
+  }
   for (auto it = s.tiles.rbegin(); it != s.tiles.rend(); ++it)
     it->apply(TileState::Before, apply);
   --cursor_;
   return &s;
 }
 
-const EditStep* EditHistory::redo(const TileApplier& apply) {
+const EditStep* EditHistory::redo(const TileApplier& apply, const DocumentReplacer& replace) {
   if (!canRedo()) return nullptr;
   const EditStep& s = steps_[cursor_];
+  if (s.replacesDocument()) {
+    if (!replace) invalidEdit("EditHistory::redo: the step replaced the document: no replacer");
+    replace(*s.replacedAfter);
+    side_ = s.imageSide;
+  }
   for (const TileChange& t : s.tiles)
     t.apply(TileState::After, apply);
   ++cursor_;
@@ -115,6 +146,8 @@ void EditHistory::clear() {
   steps_.clear();
   cursor_ = 0;
   bytes_ = 0;
+  dropped_ = 0;
+  side_ = 0;
 }
 
 } // namespace octaclay::core

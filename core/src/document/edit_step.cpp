@@ -6,6 +6,7 @@
 
 #include "document/edit_checks.h"
 
+#include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
 
 #include <algorithm>
@@ -121,6 +122,12 @@ std::size_t EditStep::computeBytes() const {
       sizeof(EditStep) + label.capacity() + (tiles.capacity() - tiles.size()) * sizeof(TileChange);
   for (const TileChange& t : tiles)
     total += t.bytes();
+  for (const auto& d : {replacedBefore, replacedAfter})
+    if (d)
+      for (const Layer* l : {&d->diffuse, &d->feature, &d->mask})
+        total += l->texels.capacity() * sizeof(float);
+  for (const auto& d : {replacedBefore, replacedAfter})
+    if (d) total += d->positions.texels().size() * sizeof(Vec4f);
   return total;
 }
 

@@ -137,6 +137,7 @@ private slots:
   void nanAndNegativeZeroBitExact();
   void documentLayers();
   void badInputThrows();
+  void replacedDocumentsAreStepsOfTheOneHistory();
 };
 
 void EditHistoryTest::tileGeometry() {
@@ -658,6 +659,57 @@ void EditHistoryTest::badInputThrows() {
   h2.record(far.finish("far"));
   EXPECT_INVALID(h2.undo(applierFor(tiny)));
   QCOMPARE(h2.undoCount(), std::size_t(1));
+}
+
+// Issue 31: one history. A step that replaced the document (Remesh, Resolution, Import: N may
+// change) sits among the strokes; undo and redo hand its documents to the replacer, strokes of
+// either size are checked against the document at the cursor, and position() names every state.
+void EditHistoryTest::replacedDocumentsAreStepsOfTheOneHistory() {
+  std::mt19937 rng(5);
+  GeometryImage shown = randomImage(32, rng);
+  GeometryImage original = shown;
+  EditHistory history;
+  QCOMPARE(history.position(), std::uint64_t(0));
+  history.record(randomStroke(shown, rng, "push", 2, 6, 0)); // on the N 32 document
+  const GeometryImage stroked = shown;
+  const std::uint64_t afterStroke = history.position();
+  QVERIFY(afterStroke != 0);
+
+  EditStep replace;
+  replace.label = "Resolution 32 → 64";
+  replace.replacedBefore = std::make_shared<const Document>(makeDocument(shown));
+  replace.replacedAfter = std::make_shared<const Document>(makeDocument(randomImage(64, rng)));
+  history.record(std::move(replace));
+  QCOMPARE(history.undoCount(), std::size_t(2));
+  shown = history.nextUndo()->replacedAfter->positions;
+  // A stroke for the N 64 document is accepted now, one for N 32 refused.
+  history.record(randomStroke(shown, rng, "crease", 2, 6, 0));
+  GeometryImage small = stroked;
+  EXPECT_INVALID(history.record(randomStroke(small, rng, "x", 2, 6, 0)));
+
+  const auto replacer = [&](const Document& d) { shown = d.positions; };
+  QVERIFY(history.undo(applierFor(shown), replacer)); // the crease
+  QVERIFY(history.undo(applierFor(shown), replacer)); // the resolution: back to N 32
+  QVERIFY(sameBits(shown, stroked));
+  QCOMPARE(history.position(), afterStroke);
+  QVERIFY(history.undo(applierFor(shown), replacer));
+  QVERIFY(sameBits(shown, original));
+  QCOMPARE(history.position(), std::uint64_t(0));
+  // Without a replacer the step is refused and the history stays where it was.
+  QVERIFY(history.redo(applierFor(shown), replacer));
+  EXPECT_INVALID(history.redo(applierFor(shown)));
+  QCOMPARE(history.position(), afterStroke);
+  QVERIFY(history.redo(applierFor(shown), replacer));
+  QCOMPARE(shown.size(), 64);
+  QVERIFY(history.redo(applierFor(shown), replacer));
+  QVERIFY(!history.canRedo());
+  // The two documents count against the budget: a budget below them drops the older steps, and
+  // the state before the oldest kept is no longer reachable.
+  history.setBudget(history.nextUndo()->bytes + 1);
+  QVERIFY(history.dropped() > 0);
+  while (history.canUndo())
+    history.undo(applierFor(shown), replacer);
+  QCOMPARE(history.position(), EditHistory::kUnreachable);
 }
 
 QTEST_APPLESS_MAIN(EditHistoryTest)

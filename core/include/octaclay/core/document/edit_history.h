@@ -10,7 +10,9 @@
 #include "octaclay/core/geometry/geometry_image.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <deque>
+#include <functional>
 
 namespace octaclay::core {
 
@@ -18,12 +20,17 @@ namespace octaclay::core {
 /// thread-safe: call it from the thread that owns the document.
 class EditHistory {
 public:
+  /// Shows a whole document a replacing step brings back (undo: its before, redo: its after).
+  /// Throws to leave the history unchanged.
+  using DocumentReplacer = std::function<void(const Document&)>;
+
   /// budgetBytes: most memory the history may hold (see bytes()); default 256 MiB.
   explicit EditHistory(std::size_t budgetBytes = std::size_t{256} << 20);
 
-  /// Adds step as the newest undo step and clears the redo steps. Then, while bytes() exceeds
-  /// the budget, drops the oldest steps, never step itself (alone over budget, it is kept and
-  /// everything older is dropped). A step with no tiles is ignored. Throws
+  /// Adds step as the newest undo step and clears the redo steps (a step replacing the document,
+  /// EditStep::replacesDocument, counts as one; its before must be the shown document's size).
+  /// Then, while bytes() exceeds the budget, drops the oldest steps, never step itself (alone over
+  /// budget, it is kept and everything older is dropped). A step with no tiles is ignored. Throws
   /// Error(InvalidArgument) if step.imageSide differs from the steps held (clear() first).
   void record(EditStep step);
 
@@ -31,6 +38,8 @@ public:
   bool canRedo() const { return cursor_ < steps_.size(); }
   std::size_t undoCount() const { return cursor_; }
   std::size_t redoCount() const { return steps_.size() - cursor_; }
+  /// Step k of those held (0 the oldest kept), done or undone; nullptr past the end.
+  const EditStep* stepAt(std::size_t k) const { return k < steps_.size() ? &steps_[k] : nullptr; }
   /// The step undo() would revert, or nullptr.
   const EditStep* nextUndo() const;
   /// The step redo() would reapply, or nullptr.
@@ -40,10 +49,10 @@ public:
   /// recording order). The target must hold the step's `after` state. Returns the step (valid
   /// until the next record(), clear() or destruction), or nullptr if there is nothing to undo.
   /// If apply throws, the history is unchanged and the exception propagates.
-  const EditStep* undo(const TileApplier& apply);
+  const EditStep* undo(const TileApplier& apply, const DocumentReplacer& replace = {});
   /// Reapplies the newest undone step: apply receives every changed texel's `after`. Same
   /// contract as undo().
-  const EditStep* redo(const TileApplier& apply);
+  const EditStep* redo(const TileApplier& apply, const DocumentReplacer& replace = {});
 
   /// Memory held in bytes: per step its struct, label and tile array, per tile its struct and
   /// compressed payload (capacities, not sizes).
@@ -54,12 +63,22 @@ public:
   void setBudget(std::size_t budgetBytes);
   /// Drops every step.
   void clear();
+  /// Steps the budget dropped since the last clear().
+  std::size_t dropped() const { return dropped_; }
+  /// The serial of the step undo() would revert (0: none, the document as opened or made;
+  /// kUnreachable: none, older steps dropped): a state to compare with a saved one.
+  std::uint64_t position() const;
+  static constexpr std::uint64_t kUnreachable = ~std::uint64_t{0};
 
 private:
   std::size_t budget_;
   std::size_t bytes_ = 0;
   std::deque<EditStep> steps_; // oldest first; [0, cursor_) undoable, [cursor_, end) redoable
   std::size_t cursor_ = 0;
+  std::size_t dropped_ = 0;
+  std::uint64_t serials_ = 0;
+  int side_ = 0; // N+1 of the document at the cursor (0: not known yet)
+  void dropOldest();
 };
 
 /// A TileApplier writing Positions tiles into image (4 floats per texel, bits copied as they

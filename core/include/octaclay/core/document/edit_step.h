@@ -12,11 +12,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace octaclay::core {
+
+struct Document;
 
 /// Receives texels to write back: region of layer, row-major, region.width × region.height ×
 /// editLayerChannels(layer) floats. The span is only valid during the call.
@@ -62,6 +65,15 @@ struct EditStep {
   std::vector<TileChange> tiles; ///< only tiles with at least one changed texel
   std::size_t changedTexels = 0; ///< sum over tiles
   std::size_t bytes = 0;         ///< memory held, set by EditStepRecorder::finish()
+  /// A step that replaced the whole document (Remesh, Resolution, Import: N may change) holds
+  /// the documents before and after it instead of tiles (EditHistory hands them to a
+  /// DocumentReplacer); imageSide is then the after document's N+1.
+  std::shared_ptr<const Document> replacedBefore, replacedAfter;
+  /// Set by EditHistory::record: unique over the history's life, never 0 (a saved state names
+  /// the step it was saved at).
+  std::uint64_t serial = 0;
+
+  bool replacesDocument() const { return replacedBefore != nullptr; }
 
   /// Recomputes the memory held: the struct, the label, the tile array and every tile's payload.
   std::size_t computeBytes() const;
