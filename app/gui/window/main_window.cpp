@@ -48,6 +48,9 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
       {this, statusBar(), viewport_, lodPanel_, history_},
       options_.recoveryFolder.isEmpty() ? RecoveryStore::defaultFolder() : options_.recoveryFolder,
       options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid(), this);
+  mesh_ = new MeshActions({this, statusBar(), viewport_, documents_, history_,
+                           [this](const QString& name) { return action(name); }},
+                          this);
   connect(documents_, &DocumentActions::aboutToAdopt, this, [this] { lodFollower_.reset(); });
   connect(documents_, &DocumentActions::adopted, this, &MainWindow::updateStatus);
   connect(documents_, &DocumentActions::adopted, this, &MainWindow::applyUndoBudget);
@@ -235,7 +238,7 @@ void MainWindow::updateStatus() {
       tr("%1 / %2 triangles")
           .arg(locale.toString(s.displayedTriangles), locale.toString(s.fullTriangles)));
   lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
-  updateMeshActions();
+  mesh_->updateActions();
   if (viewport_->modeller().hasDocument()) {
     const core::Document& d = viewport_->modeller().document();
     layersPanel_->setLayerState(core::EditLayer::Diffuse, !d.diffuse.uniform());

@@ -2,6 +2,7 @@
 
 #include "document_actions.h"
 #include "history_list.h"
+#include "mesh_actions.h"
 #include "recovery_store.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -111,17 +112,23 @@ public:
   /// status bar says so; on an error a message box says why and nothing changes. Returns whether
   /// a step was made. Refused (false) without a document, during a stroke or while another task
   /// runs.
-  bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
+  bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr) {
+    return mesh_->evenOutSamples(std::move(control));
+  }
   /// Mesh ▸ Remesh…: core::remeshDocument at size n (0: the current N) as evenOutSamples runs
   /// core::evenOut. The result replaces the document as one undo step ("Remesh", or "Remesh at
   /// N = n"; a step of the one history holding the replaced document, its strokes before it, so
   /// undo brings it back bit for bit); the path, the camera and the saved file stay. When the
   /// remesh's own check leaves the model unchanged the status bar says why and no step is made.
-  bool remesh(int n = 0, std::shared_ptr<TaskControl> control = nullptr);
+  bool remesh(int n = 0, std::shared_ptr<TaskControl> control = nullptr) {
+    return mesh_->remesh(n, std::move(control));
+  }
   /// Mesh ▸ Resolution…: core::resizeAndCheck to n (unchanged, with the reason, when the result
   /// would be worse), run and applied as remesh() is ("Resolution N → n"). n equal to the current N
   /// changes nothing and says so.
-  bool changeResolution(int n, std::shared_ptr<TaskControl> control = nullptr);
+  bool changeResolution(int n, std::shared_ptr<TaskControl> control = nullptr) {
+    return mesh_->changeResolution(n, std::move(control));
+  }
   /// Draws the viewport offscreen at size (device pixels) with or without its background
   /// (transparent) and writes it to path as PNG; the status bar says what happened.
   bool saveImage(const QString& path, QSize size, bool background);
@@ -160,33 +167,6 @@ private:
   void buildToolBars();
   void connectParts();
   void updateStatus();
-  /// Enables the Mesh menu's actions when they can run (a document, no stroke, no task).
-  void updateMeshActions();
-  /// What a Mesh menu task made from the document: a new one, or the reason it is unchanged.
-  struct MeshOutcome {
-    core::Document document;
-    bool changed = false;
-    std::string reason;
-  };
-  struct MeshTask {
-    QString action;        ///< the menu item's object name (shows the progress, disabled)
-    QString name;          ///< "Remesh": "<name> left the model unchanged: <reason>"
-    QString verb;          ///< "Remeshing": the menu item's "<verb>… 40 %"
-    QString progressLabel; ///< the progress dialog's text
-    QString cancelled;     ///< the status bar's message on cancel
-    QString failure;       ///< "<failure>: <error>" in a message box on an error
-    /// Runs on a worker thread with a copy of the document; writes control.fraction, polls
-    /// control.cancel.
-    std::function<MeshOutcome(const core::Document&, TaskControl&)> work;
-  };
-  /// Runs task (main_window_mesh.cpp) and reports every ending but a changed model (cancel, the
-  /// model edited meanwhile, an error, unchanged with its reason); the changed model is returned
-  /// for the caller to apply as one undo step.
-  std::optional<MeshOutcome> runMeshTask(const MeshTask& task,
-                                         std::shared_ptr<TaskControl> control);
-  void showMeshError(const QString& failure, const QString& error);
-  /// Mesh ▸ Remesh… (remeshing) or Mesh ▸ Resolution…: the MeshSizeDialog, then the task.
-  void openMeshSizeDialog(bool remeshing);
   void updateTitle();
   void rebuildRecentMenu();
   bool maybeSave();
@@ -208,6 +188,7 @@ private:
   LodGenerator* lodGenerator_ = nullptr;
   std::unique_ptr<LodFollower> lodFollower_; // the newest LOD, moved with the surface each frame
   HistoryList* history_ = nullptr;
+  MeshActions* mesh_ = nullptr; // the Mesh menu's operations
   QMenu* recentMenu_ = nullptr;
   QLabel* fpsLabel_ = nullptr;
   QLabel* dabLabel_ = nullptr;

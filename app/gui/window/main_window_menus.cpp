@@ -232,17 +232,17 @@ void MainWindow::buildMenus() {
          "far to even out. Asks first; progress and Cancel; one Undo brings the model back");
   remeshAction->setToolTip(remeshTip);
   remeshAction->setStatusTip(remeshTip);
-  connect(remeshAction, &QAction::triggered, this, [this] { openMeshSizeDialog(true); });
+  connect(remeshAction, &QAction::triggered, this, [this] { mesh_->openMeshSizeDialog(true); });
   QAction* resolution = add(mesh, tr("Re&solution…"), "actionResolution");
   const QString resolutionTip =
       tr("Resample every layer at a finer or coarser N with the same parameterization: block "
          "out coarse, detail fine. Asks first; one Undo brings the model back");
   resolution->setToolTip(resolutionTip);
   resolution->setStatusTip(resolutionTip);
-  connect(resolution, &QAction::triggered, this, [this] { openMeshSizeDialog(false); });
+  connect(resolution, &QAction::triggered, this, [this] { mesh_->openMeshSizeDialog(false); });
   mesh->setToolTipsVisible(true);
-  connect(mesh, &QMenu::aboutToShow, this, &MainWindow::updateMeshActions);
-  updateMeshActions();
+  connect(mesh, &QMenu::aboutToShow, mesh_, &MeshActions::updateActions);
+  mesh_->updateActions();
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (QDockWidget* dock : findChildren<QDockWidget*>())

@@ -1,8 +1,9 @@
 // The Mesh menu's whole-model operations: Even Out Samples, Remesh… and Resolution…, each run on
 // a copy of the document off the GUI thread (progress and Cancel) and applied as one undo step.
+#include "mesh_actions.h"
+
 #include "document_actions.h"
 #include "history_list.h"
-#include "main_window.h"
 #include "mesh_size_dialog.h"
 #include "modeller.h"
 #include "viewport_widget.h"
@@ -29,27 +30,29 @@ QString percentOf(double fraction) {
 
 } // namespace
 
-std::optional<MainWindow::MeshOutcome>
-MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
-  BackgroundTaskRunner& runner = documents_->runner();
+std::optional<MeshActions::MeshOutcome>
+MeshActions::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
+  BackgroundTaskRunner& runner = parts_.documents->runner();
   // On the GPU (GL started), not just pending: the result is applied there.
-  if (!viewport_->glReady() || !viewport_->modeller().hasDocument() || viewport_->stroking() ||
-      runner.busy())
+  if (!parts_.viewport->glReady() || !parts_.viewport->modeller().hasDocument() ||
+      parts_.viewport->stroking() || runner.busy())
     return std::nullopt;
   if (!control) control = std::make_shared<TaskControl>();
   // The copy is taken here, on the GUI thread; the worker never touches the viewport.
-  auto source = std::make_shared<const core::Document>(viewport_->modeller().document());
+  auto source = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
   auto outcome = std::make_shared<MeshOutcome>();
   // What tells that the model changed while the task ran (input reaches the viewport in the
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
-    return std::tuple(
-        viewport_->stroking(), viewport_->stats().dabs, history_->index(), history_->count(),
-        viewport_->modeller().hasDocument() ? viewport_->modeller().document().size() : 0);
+    return std::tuple(parts_.viewport->stroking(), parts_.viewport->stats().dabs,
+                      parts_.history->index(), parts_.history->count(),
+                      parts_.viewport->modeller().hasDocument()
+                          ? parts_.viewport->modeller().document().size()
+                          : 0);
   };
   const auto before = mark();
   // The menu item says how far the task is (the progress dialog appears after 100 ms).
-  QAction* item = action(task.action);
+  QAction* item = parts_.action(task.action);
   const QString itemText = item ? item->text() : QString();
   QTimer itemProgress;
   if (item) {
@@ -67,13 +70,13 @@ MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> contr
       control);
   itemProgress.stop();
   if (item) item->setText(itemText);
-  updateMeshActions();
+  updateActions();
   if (control->cancel) {
-    statusBar()->showMessage(task.cancelled, 8000);
+    parts_.statusBar->showMessage(task.cancelled, 8000);
     return std::nullopt;
   }
   if (error.isEmpty() && mark() != before) {
-    statusBar()->showMessage(
+    parts_.statusBar->showMessage(
         tr("The model changed while %1; nothing was applied").arg(task.verb.toLower()), 8000);
     return std::nullopt;
   }
@@ -82,24 +85,24 @@ MainWindow::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> contr
     return std::nullopt;
   }
   if (!outcome->changed) {
-    statusBar()->showMessage(tr("%1 left the model unchanged: %2")
-                                 .arg(task.name, QString::fromStdString(outcome->reason)),
-                             15000);
+    parts_.statusBar->showMessage(tr("%1 left the model unchanged: %2")
+                                      .arg(task.name, QString::fromStdString(outcome->reason)),
+                                  15000);
     return std::nullopt;
   }
   return std::move(*outcome);
 }
 
-void MainWindow::showMeshError(const QString& failure, const QString& error) {
+void MeshActions::showMeshError(const QString& failure, const QString& error) {
   const QString message = tr("%1: %2").arg(failure, error);
-  statusBar()->showMessage(message, 15000);
-  auto* box =
-      new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok, this);
+  parts_.statusBar->showMessage(message, 15000);
+  auto* box = new QMessageBox(QMessageBox::Critical, tr("Octaclay"), message, QMessageBox::Ok,
+                              parts_.window);
   box->setAttribute(Qt::WA_DeleteOnClose);
   box->open(); // window-modal, does not block the caller
 }
 
-bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
+bool MeshActions::evenOutSamples(std::shared_ptr<TaskControl> control) {
   MeshTask task;
   task.action = QStringLiteral("actionEvenOutSamples");
   task.name = tr("Even Out");
@@ -120,22 +123,22 @@ bool MainWindow::evenOutSamples(std::shared_ptr<TaskControl> control) {
   if (!outcome) return false;
   bool recorded = false;
   try {
-    recorded = viewport_->modeller().applyChange(outcome->document, "Even Out Samples");
+    recorded = parts_.viewport->modeller().applyChange(outcome->document, "Even Out Samples");
   } catch (const std::exception& e) {
     showMeshError(task.failure, QString::fromUtf8(e.what()));
     return false;
   }
   if (!recorded) {
-    statusBar()->showMessage(tr("The samples are already even"), 8000);
+    parts_.statusBar->showMessage(tr("The samples are already even"), 8000);
     return false;
   }
-  statusBar()->showMessage(tr("Samples evened out"), 5000);
+  parts_.statusBar->showMessage(tr("Samples evened out"), 5000);
   return true;
 }
 
-bool MainWindow::remesh(int n, std::shared_ptr<TaskControl> control) {
-  if (!viewport_->modeller().hasDocument()) return false;
-  const int current = viewport_->modeller().document().size();
+bool MeshActions::remesh(int n, std::shared_ptr<TaskControl> control) {
+  if (!parts_.viewport->modeller().hasDocument()) return false;
+  const int current = parts_.viewport->modeller().document().size();
   if (n == 0) n = current;
   MeshTask task;
   task.action = QStringLiteral("actionRemesh");
@@ -158,18 +161,20 @@ bool MainWindow::remesh(int n, std::shared_ptr<TaskControl> control) {
   };
   std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
   if (!outcome) return false;
-  if (!documents_->replaceDocument(std::move(outcome->document),
-                                   n == current ? tr("Remesh") : tr("Remesh at N = %1").arg(n)))
+  if (!parts_.documents->replaceDocument(std::move(outcome->document),
+                                         n == current ? tr("Remesh")
+                                                      : tr("Remesh at N = %1").arg(n)))
     return false;
-  statusBar()->showMessage(tr("Remeshed at N = %1: %2").arg(n).arg(*summary), 15000);
+  parts_.statusBar->showMessage(tr("Remeshed at N = %1: %2").arg(n).arg(*summary), 15000);
   return true;
 }
 
-bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
-  if (!viewport_->modeller().hasDocument()) return false;
-  const int current = viewport_->modeller().document().size();
+bool MeshActions::changeResolution(int n, std::shared_ptr<TaskControl> control) {
+  if (!parts_.viewport->modeller().hasDocument()) return false;
+  const int current = parts_.viewport->modeller().document().size();
   if (n == current) {
-    statusBar()->showMessage(tr("The model is already N = %1: nothing to resample").arg(n), 8000);
+    parts_.statusBar->showMessage(tr("The model is already N = %1: nothing to resample").arg(n),
+                                  8000);
     return false;
   }
   MeshTask task;
@@ -191,17 +196,17 @@ bool MainWindow::changeResolution(int n, std::shared_ptr<TaskControl> control) {
   };
   std::optional<MeshOutcome> outcome = runMeshTask(task, std::move(control));
   if (!outcome) return false;
-  if (!documents_->replaceDocument(std::move(outcome->document),
-                                   tr("Resolution %1 → %2").arg(current).arg(n)))
+  if (!parts_.documents->replaceDocument(std::move(outcome->document),
+                                         tr("Resolution %1 → %2").arg(current).arg(n)))
     return false;
-  statusBar()->showMessage(tr("Resampled from N = %1 to N = %2").arg(current).arg(n), 8000);
+  parts_.statusBar->showMessage(tr("Resampled from N = %1 to N = %2").arg(current).arg(n), 8000);
   return true;
 }
 
-void MainWindow::openMeshSizeDialog(bool remeshing) {
-  if (!viewport_->modeller().hasDocument()) return;
+void MeshActions::openMeshSizeDialog(bool remeshing) {
+  if (!parts_.viewport->modeller().hasDocument()) return;
   MeshSizeDialog dialog(remeshing ? MeshSizeDialog::Kind::Remesh : MeshSizeDialog::Kind::Resolution,
-                        viewport_->modeller().document().size(), this);
+                        parts_.viewport->modeller().document().size(), parts_.window);
   if (dialog.exec() != QDialog::Accepted) return;
   if (remeshing)
     remesh(dialog.size());
@@ -209,11 +214,11 @@ void MainWindow::openMeshSizeDialog(bool remeshing) {
     changeResolution(dialog.size());
 }
 
-void MainWindow::updateMeshActions() {
-  const bool ready = viewport_->glReady() && viewport_->modeller().hasDocument() &&
-                     !viewport_->stroking() && !documents_->runner().busy();
+void MeshActions::updateActions() {
+  const bool ready = parts_.viewport->glReady() && parts_.viewport->modeller().hasDocument() &&
+                     !parts_.viewport->stroking() && !parts_.documents->runner().busy();
   for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
-    if (QAction* a = action(QString::fromLatin1(name))) a->setEnabled(ready);
+    if (QAction* a = parts_.action(QString::fromLatin1(name))) a->setEnabled(ready);
 }
 
 } // namespace octaclay::app
