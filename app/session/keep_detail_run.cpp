@@ -100,9 +100,4 @@ core::EditStep relaxDabsSoFar(KeepDetailRun& run, const core::Document& mirror,
                                 pinOptions(run.pinnedPath, mirror.size()));
 }
 
-core::EditStep relaxAfterStroke(KeepDetailRun& run, const core::Document& mirror,
-                                const core::EditStep& record, float radius) {
-  return relaxDabsSoFar(run, mirror, record, record.label, radius);
-}
-
 } // namespace octaclay::app

@@ -37,12 +37,9 @@ struct KeepDetailRun {
 
 /// The relaxation of what the stroke's dabs changed so far (soFar: its record), over mirror:
 /// core::relaxChangedStep within core::keepDetailMargin of radius, the pinned path held. No tiles:
-/// nothing to relax.
+/// nothing to relax. No GL and nothing but run and mirror read: after a stroke a worker thread
+/// runs it (StrokeEnding::relax) while nothing writes the mirror.
 core::EditStep relaxDabsSoFar(KeepDetailRun& run, const core::Document& mirror,
                               const core::EditStep& soFar, const std::string& label, float radius);
-/// Keep detail's relaxation after a stroke whose record is given (positions as the dabs left
-/// them in mirror): no GL, nothing but run and mirror read, so a worker thread may run it.
-core::EditStep relaxAfterStroke(KeepDetailRun& run, const core::Document& mirror,
-                                const core::EditStep& record, float radius);
 
 } // namespace octaclay::app

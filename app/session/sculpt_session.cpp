@@ -51,17 +51,12 @@ void SculptSession::brushesReloaded(const std::vector<std::string>& ids) {
 
 void SculptSession::setDocument(core::Document document,
                                 const std::function<void(float)>& progress) {
-  auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document), progress);
-  stroke_.reset();
-  document_ = std::move(uploaded);
+  show(std::move(document), progress);
   history_.clear();
-  document_->setChangeFollower(follower_);
-  document_->markAllChanged();
-  publish(gpu::ChangeKind::NewDocument);
 }
 
-void SculptSession::show(const core::Document& document) {
-  auto uploaded = std::make_unique<gpu::GpuDocument>(document);
+void SculptSession::show(core::Document document, const std::function<void(float)>& progress) {
+  auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document), progress);
   stroke_.reset();
   document_ = std::move(uploaded);
   document_->setChangeFollower(follower_);
@@ -270,7 +265,8 @@ void StrokeEnding::relax() {
   solved_ = true;
   const auto start = std::chrono::steady_clock::now();
   SculptSession::ActiveStroke& st = *parts_->stroke;
-  parts_->relaxation = relaxAfterStroke(st.keep, *parts_->mirror, parts_->record, st.reach);
+  parts_->relaxation =
+      relaxDabsSoFar(st.keep, *parts_->mirror, parts_->record, parts_->record.label, st.reach);
   parts_->end.engineMs +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -330,17 +326,18 @@ void SculptSession::relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& str
   run.applied(step, document, brush.id);
 }
 
-std::vector<core::TexelRect> SculptSession::applyChange(const core::Document& after,
-                                                        const std::string& label) {
+bool SculptSession::applyChange(const core::Document& after, const std::string& label) {
   core::EditStep change = core::recordDifference(document_->document(), after, label);
-  if (change.tiles.empty()) return {};
+  if (change.tiles.empty()) return false;
+  struct Report { // also when a tile fails part-way: what was written is redrawn
+    SculptSession& session;
+    ~Report() { session.publish(gpu::ChangeKind::Applied); }
+  } report{*this};
   const core::TileApplier apply = gpu::undoApplier(*document_);
   for (const core::TileChange& t : change.tiles)
     t.apply(core::TileState::After, apply);
-  std::vector<core::TexelRect> rects = changedRects(change);
   history_.record(std::move(change));
-  publish(gpu::ChangeKind::Applied);
-  return rects;
+  return true;
 }
 
 const core::EditStep* SculptSession::undo() {

@@ -213,9 +213,10 @@ public:
   const core::EditStep& lastRelaxation() const { return lastRelaxation_; }
 
   /// Makes `after` (same size) the document, on the GPU and the mirror, as one undo step
-  /// labelled label (e.g. the global even-out); returns the texel rectangles it changed (empty:
-  /// nothing differed, nothing recorded). Precondition: a document and no stroke.
-  std::vector<core::TexelRect> applyChange(const core::Document& after, const std::string& label);
+  /// labelled label (e.g. the global even-out); returns whether it recorded one (false: nothing
+  /// differed). What it wrote reaches the change feed even when a tile fails. Precondition: a
+  /// document and no stroke.
+  bool applyChange(const core::Document& after, const std::string& label);
 
   /// Makes `after` (any N) the document as one history step labelled label (Remesh, Resolution,
   /// Import): the step holds both documents, so undo and redo bring either back bit for bit.
@@ -250,13 +251,10 @@ private:
   /// so that it stays one undo step. Both doors reach it: beginStroke observes every dab.
   void relaxBetweenDabs(KeepDetailRun& run, gpu::StrokeSession& stroke,
                         const gpu::BrushManifest& brush, float radius, int dabs);
-  /// Keep detail's relaxation after the stroke whose record (positions as the dabs left them in
-  /// mirror) is given: no GL, no session state (StrokeEnding::relax).
-  static core::EditStep relaxAfterStroke(const core::Document& mirror, const core::EditStep& record,
-                                         ActiveStroke& stroke);
 
-  /// Uploads document in place of the current one, the history kept (a replacing step).
-  void show(const core::Document& document);
+  /// Uploads document in place of the current one (published as NewDocument), the history
+  /// kept: setDocument then clears it, a replacing step does not.
+  void show(core::Document document, const std::function<void(float)>& progress = {});
   /// moveTo without reporting the change (runQueuedMoves reports once for its run).
   int move(const StrokeMove& move);
   void publish(gpu::ChangeKind kind);

@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -120,6 +121,9 @@ void ModellerCoreRenderTest::theWindowAnswersWhileAStrokeRelaxes() {
   // The release handed the relaxation to a worker: the stroke is not recorded yet.
   QVERIFY2(window->modeller()->strokes().relaxing(), "the relaxation did not run beside the GUI");
   QCOMPARE(window->undoStack()->count(), 0);
+  // The wait shows: a busy cursor over the view and the status bar saying why.
+  QCOMPARE(view->cursor().shape(), Qt::BusyCursor);
+  QVERIFY(window->statusBar()->currentMessage().startsWith("Keeping detail"));
   // An input event now (a wheel turn zooms): a frame answers it before the relaxation is in.
   swapped.clear();
   QElapsedTimer sinceInput;
@@ -139,6 +143,8 @@ void ModellerCoreRenderTest::theWindowAnswersWhileAStrokeRelaxes() {
   QVERIFY2(answeredMs <= 100, qPrintable(QString("%1 ms").arg(answeredMs)));
   // Then the step arrives, whole: one undo step that gives the sphere back bit for bit.
   QTRY_COMPARE_WITH_TIMEOUT(window->undoStack()->count(), 1, 30000);
+  QCOMPARE(view->cursor().shape(), Qt::ArrowCursor);
+  QVERIFY(window->statusBar()->currentMessage().isEmpty());
   QVERIFY(!app::testing::bitEqual(app::testing::positionsOf(*window), before));
   window->undoStack()->undo();
   QVERIFY(app::testing::bitEqual(app::testing::positionsOf(*window), before));

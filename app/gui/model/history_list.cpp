@@ -105,7 +105,6 @@ QVariant HistoryList::data(const QModelIndex& at, int role) const {
       return dropped() > 0 ? tr("Oldest kept step") : tr("Model as opened or made");
     return text(at.row() - 1);
   }
-  if (role == Qt::FontRole && at.row() > index()) return {}; // undone steps: the view greys
   return {};
 }
 

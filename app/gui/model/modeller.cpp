@@ -187,7 +187,6 @@ void Modeller::documentChanged(const gpu::DocumentChange& change) {
     follow(change);
   switch (change.kind) {
   case gpu::ChangeKind::Dabs:
-  case gpu::ChangeKind::Relaxation:
     break; // the stroke goes on: its end settles (strokeSettled)
   default:
     if (change.layer == core::EditLayer::Positions) refreshSaliency();
@@ -274,11 +273,8 @@ bool Modeller::applyChange(const core::Document& after, const std::string& label
     CurrentContext current(*host_);
     drainGlErrors();
     try {
-      recorded = !session_.applyChange(after, label).empty();
-    } catch (const std::exception&) {
-      // The layers may be partly written: redraw all of it.
-      session_.gpuDocument().markAllChanged();
-      session_.gpuDocument().publishChanges(gpu::ChangeKind::Applied);
+      recorded = session_.applyChange(after, label);
+    } catch (const std::exception&) { // what was written reached the feed
       host_->update();
       emit surfaceChanged();
       throw;

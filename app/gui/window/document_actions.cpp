@@ -129,16 +129,14 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   return true;
 }
 
-bool DocumentActions::adoptDocument(core::Document document, const QString& path, bool clearUndo) {
+bool DocumentActions::adoptDocument(core::Document document, const QString& path) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
   if (!parts_.viewport->modeller().setDocument(std::move(document))) {
     showError(parts_.viewport->error());
     return false;
   }
-  if (clearUndo) {
-    parts_.history->setClean(); // setDocument cleared the history: as opened or made
-    replacedStates_.clear();
-  }
+  parts_.history->setClean(); // setDocument cleared the history: as opened or made
+  replacedStates_.clear();
   path_ = path;
   importedFrom_.clear();
   forceModified_ = false;

@@ -119,9 +119,9 @@ signals:
 
 private:
   void showError(const QString& message);
-  /// Shows document as the current one (clearing the undo stack when clearUndo); false if the
+  /// Shows document as the current one, its history empty and saved; false if the
   /// viewport refused it (reported; the current document stays).
-  bool adoptDocument(core::Document document, const QString& path, bool clearUndo = true);
+  bool adoptDocument(core::Document document, const QString& path);
   /// The file state (path, import, forced modified) a replacing step leaves, and the one before.
   struct FileState {
     QString path, importedFrom;

@@ -131,6 +131,17 @@ void MainWindow::connectParts() {
                           .arg(double(h.budget()) / double(1 << 20), 0, 'f', 0),
                       15000);
   });
+  // Keep detail relaxes a released stroke beside the window: say so, and show the wait.
+  connect(&modeller_->strokes(), &StrokeDriver::relaxingChanged, this, [this](bool relaxing) {
+    const QString relaxingText = tr("Keeping detail: relaxing the stroke's samples…");
+    if (relaxing) {
+      viewport_->setCursor(Qt::BusyCursor);
+      statusBar()->showMessage(relaxingText);
+      return;
+    }
+    viewport_->unsetCursor();
+    if (statusBar()->currentMessage() == relaxingText) statusBar()->clearMessage();
+  });
   connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
   connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
   connect(&viewport_->modeller(), &Modeller::brushesChanged, this, &MainWindow::refreshBrushes);

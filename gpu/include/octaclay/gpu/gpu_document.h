@@ -18,8 +18,7 @@ namespace octaclay::gpu {
 /// What a change of the document was part of, for the followers that act only when an edit
 /// settles (the saliency, the live LOD).
 enum class ChangeKind {
-  Dabs,        ///< a stroke's dabs (more may follow)
-  Relaxation,  ///< keep detail's relaxation during or after a stroke
+  Dabs,        ///< a stroke's dabs, and keep detail's relaxations between them (more may follow)
   StrokeEnd,   ///< a stroke ended (its last dabs and relaxation, or nothing more)
   Undo,        ///< history stepped back
   Redo,        ///< history stepped forward
