@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/topology.h"
 
 #include <array>
 #include <string>
@@ -28,6 +29,8 @@ struct Document {
   Layer feature{"feature", 3, {0.0f, 0.25f, 0.0f, 0.0f}, {}};
   Layer mask{"mask", 1, {1.0f, 0.0f, 0.0f, 0.0f}, {}}; ///< 1 = full brush effect, 0 = blocked
   bool hasMask = false;                                ///< mask.Y is optional in the file
+  /// How the image closes up; every reader and writer of today knows only Octahedral.
+  Topology topology = Topology::Octahedral;
 
   int size() const { return positions.size(); }
 };
