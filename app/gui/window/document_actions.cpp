@@ -1,5 +1,6 @@
 #include "document_actions.h"
 
+#include "export_work.h"
 #include "history_list.h"
 #include "lod_panel.h"
 #include "modeller.h"
@@ -9,16 +10,10 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/export/lod_export.h"
-#include "octaclay/core/export/mesh_io.h"
-#include "octaclay/core/export/textured_export.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/lod/facing.h"
-#include "octaclay/core/lod/normal_map.h"
-#include "octaclay/core/lod/saliency.h"
 
 #include <QFileInfo>
 #include <QMessageBox>
@@ -282,29 +277,13 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
 
 bool DocumentActions::exportMesh(const QString& path, int divisor) {
   if (!parts_.viewport->modeller().hasDocument()) return false;
+  parts_.viewport->endStroke();
   // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  const bool obj = suffix == "obj", glb = suffix == "glb";
-  if (!obj && !glb && !core::meshFormatFromPath(toPath(path))) {
+  const std::function<void()> work =
+      meshExportWork(parts_.viewport->modeller().document(), path, divisor);
+  if (!work) {
     showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
     return false;
-  }
-  std::function<void()> work;
-  if (obj || glb) {
-    parts_.viewport->endStroke();
-    auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
-    work = [snapshot, path, divisor, obj] {
-      if (obj)
-        core::writeTexturedObj(*snapshot, divisor, toPath(path));
-      else
-        core::writeGlb(*snapshot, divisor, toPath(path));
-    };
-  } else {
-    auto snapshot =
-        std::make_shared<core::GeometryImage>(parts_.viewport->modeller().document().positions);
-    work = [snapshot, path, divisor] {
-      core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
-    };
   }
   const QString error = runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
@@ -335,26 +314,9 @@ bool DocumentActions::exportLod(const QString& path) {
   auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
   const core::LodOptions options = parts_.lodPanel->lodOptions();
   auto control = std::make_shared<TaskControl>();
-  const QString error = runner_.run(
-      tr("Exporting %1…").arg(QFileInfo(path).fileName()),
-      [snapshot, options, path, control, computeSaliency] {
-        core::GeometryImage& full = snapshot->positions;
-        if (computeSaliency) core::computeSaliency(full);
-        const core::LodMesh lod = core::generateLod(full, options);
-        control->fraction = 0.3f;
-        if (control->cancel) return; // between steps: nothing written yet
-        // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
-        // the LOD's triangles dropped. Tangent space is what glTF's normalTexture and the OBJ
-        // readers' `norm` / `map_Bump` expect.
-        const int resolution = std::clamp(full.size(), 2, 4096);
-        const core::NormalMap map =
-            core::bakeNormalMap(full, lod, core::NormalMapSpace::Tangent, resolution);
-        control->fraction = 0.8f;
-        if (control->cancel) return;
-        core::writeLodMesh(lod, map, *snapshot, toPath(path));
-        control->fraction = 1.0f;
-      },
-      control);
+  const QString error =
+      runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+                  lodExportWork(snapshot, options, path, control, computeSaliency), control);
   emit saliencyWishChanged();
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not export"), path, error));

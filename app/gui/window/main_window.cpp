@@ -1,18 +1,22 @@
 #include "main_window.h"
 
+#include "brush_bars.h"
 #include "brush_panel.h"
 #include "document_actions.h"
+#include "edit_menu.h"
+#include "file_menu.h"
 #include "file_suggestion.h"
 #include "help_menu.h"
 #include "history_list.h"
+#include "image_output.h"
 #include "layers_panel.h"
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "modeller.h"
-#include "save_image_dialog.h"
 #include "sparse_sampling_hint.h"
 #include "user_messages.h"
+#include "view_actions.h"
 #include "viewport_focus.h"
 #include "viewport_widget.h"
 
@@ -21,7 +25,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
@@ -61,9 +64,13 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connect(documents_, &DocumentActions::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
   connect(documents_, &DocumentActions::saliencyWishChanged, this,
           &MainWindow::updateSaliencyWanted);
-  buildMenus();
+  recentMenu_ = addFileMenu(*this);
+  addEditMenu(*this);
+  mesh_->addMenu(*menuBar());
+  addViewMenu(*this, viewport_);
+  addHelpMenu(*this);
   connectParts();
-  buildToolBars();
+  addBrushBars(*this, *viewport_, modeller_->brushState());
   qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
   new SparseSamplingHint(viewport_, statusBar(), action("actionRemesh"), this);
 
@@ -103,7 +110,7 @@ QAction* MainWindow::action(const QString& objectName) const {
 }
 
 void MainWindow::buildDocks() {
-  brushPanel_ = new BrushPanel(this);
+  brushPanel_ = new BrushPanel(modeller_->brushState(), this);
   layersPanel_ = new LayersPanel(this);
   lodPanel_ = new LodPanel(this);
   auto addDock = [this](QWidget* panel, const QString& title, const QString& name,
@@ -144,16 +151,9 @@ void MainWindow::connectParts() {
   });
   connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
   connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
-  connect(&viewport_->modeller(), &Modeller::brushesChanged, this, &MainWindow::refreshBrushes);
   connect(&viewport_->modeller(), &Modeller::errorOccurred, this,
           [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
-  connect(brushPanel_, &BrushPanel::settingsChanged, this,
-          [this] { viewport_->modeller().brushState().setSettings(brushPanel_->settings()); });
-  connect(viewport_, &ViewportWidget::radiusStepRequested, this,
-          [this](float f) { brushPanel_->setRadiusInUnit(brushPanel_->radiusInUnit() * f); });
-  connect(viewport_, &ViewportWidget::strengthStepRequested, this,
-          [this](float f) { brushPanel_->setStrength(brushPanel_->strength() * f); });
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
     viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
@@ -165,7 +165,6 @@ void MainWindow::connectParts() {
   applyLayers();
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
-  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
   connectLod();
 }
 
@@ -223,18 +222,21 @@ void MainWindow::updateSaliencyWanted() {
       layersPanel_->preview() == LayersPanel::Preview::Saliency || salientLod);
 }
 
-void MainWindow::refreshBrushes() {
-  gpu::BrushLibrary* library = viewport_->modeller().library();
-  if (!library) return;
-  std::vector<gpu::BrushManifest> brushes;
-  for (const gpu::BrushManifest* b : library->brushes())
-    brushes.push_back(*b);
-  std::vector<std::string> errors = library->errors();
-  for (const QString& e : viewport_->modeller().materialErrors())
-    errors.push_back(e.toStdString());
-  brushPanel_->setMaterials(viewport_->modeller().materialIds());
-  brushPanel_->setBrushes(std::move(brushes), std::move(errors));
-  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
+BrushState* MainWindow::brushState() const {
+  return &modeller_->brushState();
+}
+
+bool MainWindow::saveImage(const QString& path, QSize size, bool background) {
+  return saveViewImage(*viewport_, *statusBar(), path, size, background);
+}
+
+void MainWindow::setAutosaveSeconds(int seconds) {
+  options_.autosaveSeconds = std::max(0, seconds);
+  QSettings().setValue("autosave/seconds", options_.autosaveSeconds);
+  if (options_.autosaveSeconds > 0)
+    autosaveTimer_->start(options_.autosaveSeconds * 1000);
+  else
+    autosaveTimer_->stop();
 }
 
 void MainWindow::updateStatus() {
@@ -292,31 +294,7 @@ QString MainWindow::suggestedPath(FileRequest request) const {
 }
 
 QString MainWindow::choose(FileRequest request) {
-  if (chooser_) return chooser_(request);
-  const QString dir = suggestedPath(request);
-  switch (request) {
-  case FileRequest::Open:
-    return QFileDialog::getOpenFileName(this, tr("Open model"), dir,
-                                        tr("Octaclay documents (*.exr *.ocz)"));
-  case FileRequest::SaveCompressed:
-    return QFileDialog::getSaveFileName(this, tr("Save compressed model"), dir,
-                                        tr("Compressed Octaclay documents (*.ocz)"));
-  case FileRequest::SaveAs:
-    return QFileDialog::getSaveFileName(this, tr("Save model"), dir,
-                                        tr("Octaclay documents (*.exr)"));
-  case FileRequest::Import:
-    return QFileDialog::getOpenFileName(this, tr("Import mesh"), dir,
-                                        tr("Meshes (*.obj *.ply *.stl *.off)"));
-  case FileRequest::Export:
-    return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
-                                        tr("Meshes (*.glb *.obj *.ply *.stl *.off)"));
-  case FileRequest::ExportLod:
-    return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
-                                        tr("Meshes with a normal map (*.glb *.obj)"));
-  case FileRequest::SaveImage:
-    return QFileDialog::getSaveFileName(this, tr("Save image"), dir, tr("PNG images (*.png)"));
-  }
-  return {};
+  return chooser_ ? chooser_(request) : askFilePath(*this, request, suggestedPath(request));
 }
 
 bool MainWindow::newDocument(core::BaseShape shape, int n, bool force) {

@@ -13,6 +13,8 @@
 #include "octaclay/core/relax/relax.h"
 
 #include <QAction>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -219,6 +221,41 @@ void MeshActions::updateActions() {
                      !parts_.viewport->stroking() && !parts_.documents->runner().busy();
   for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
     if (QAction* a = parts_.action(QString::fromLatin1(name))) a->setEnabled(ready);
+}
+
+void MeshActions::addMenu(QMenuBar& bar) {
+  const auto add = [](QMenu* menu, const QString& text, const char* name) {
+    QAction* a = menu->addAction(text); // a child of the window's: MainWindow::action finds it
+    a->setObjectName(name);
+    return a;
+  };
+  QMenu* mesh = bar.addMenu(tr("&Mesh"));
+  QAction* evenOut = add(mesh, tr("&Even Out Samples"), "actionEvenOutSamples");
+  const QString evenOutTip =
+      tr("Spread the samples evenly over the surface again, so stretched parts get detail back; "
+         "the shape and paint stay put (if they would not, nothing changes and the status bar "
+         "says why). Runs at once with progress and Cancel; one Undo brings the model back");
+  evenOut->setToolTip(evenOutTip);
+  evenOut->setStatusTip(evenOutTip);
+  connect(evenOut, &QAction::triggered, this, [this] { evenOutSamples(); });
+  QAction* remeshAction = add(mesh, tr("&Remesh…"), "actionRemesh");
+  const QString remeshTip =
+      tr("Give the surface a new, even sampling at a size you choose (the current one at "
+         "first), every painted layer carried to the same surface points: for limbs pulled too "
+         "far to even out. Asks first; progress and Cancel; one Undo brings the model back");
+  remeshAction->setToolTip(remeshTip);
+  remeshAction->setStatusTip(remeshTip);
+  connect(remeshAction, &QAction::triggered, this, [this] { openMeshSizeDialog(true); });
+  QAction* resolution = add(mesh, tr("Re&solution…"), "actionResolution");
+  const QString resolutionTip =
+      tr("Resample every layer at a finer or coarser N with the same parameterization: block "
+         "out coarse, detail fine. Asks first; one Undo brings the model back");
+  resolution->setToolTip(resolutionTip);
+  resolution->setStatusTip(resolutionTip);
+  connect(resolution, &QAction::triggered, this, [this] { openMeshSizeDialog(false); });
+  mesh->setToolTipsVisible(true);
+  connect(mesh, &QMenu::aboutToShow, this, &MeshActions::updateActions);
+  updateActions();
 }
 
 } // namespace octaclay::app

@@ -13,6 +13,7 @@
 #include <string>
 
 class QAction;
+class QMenuBar;
 class QStatusBar;
 class QWidget;
 
@@ -40,6 +41,10 @@ public:
     std::function<QAction*(const QString&)> action; ///< the window's action by object name
   };
   explicit MeshActions(Parts parts, QObject* parent = nullptr) : QObject(parent), parts_(parts) {}
+
+  /// Adds the Mesh menu (after Edit, as in Blender) to bar: Even Out Samples, Remesh…,
+  /// Resolution…, each with its tooltip, enabled as updateActions() says.
+  void addMenu(QMenuBar& bar);
 
   /// Mesh ▸ Even Out Samples (see MainWindow::evenOutSamples).
   bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);
