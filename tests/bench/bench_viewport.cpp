@@ -16,10 +16,10 @@
 #include "octaclay/gpu/stroke_rules.h"
 
 #include <QApplication>
-#include <QStandardPaths>
 #include <QImage>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QStandardPaths>
 #include <QWindow>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
