@@ -98,10 +98,10 @@ void askImport(MainWindow& window) {
 }
 
 void askSaveCompressed(MainWindow& window) {
-  if (!window.viewport()->modeller().hasDocument()) return;
+  if (!window.modeller()->hasDocument()) return;
   window.viewport()->endStroke();
-  SaveCompressedDialog dialog(
-      std::make_shared<const core::Document>(window.viewport()->modeller().document()), &window);
+  SaveCompressedDialog dialog(std::make_shared<const core::Document>(window.modeller()->document()),
+                              &window);
   if (dialog.exec() != QDialog::Accepted) return;
   const QString path = window.choose(MainWindow::FileRequest::SaveCompressed);
   if (!path.isEmpty()) window.saveCompressed(path, dialog.options());
@@ -109,10 +109,10 @@ void askSaveCompressed(MainWindow& window) {
 
 void askExport(MainWindow& window) {
   const QString path = window.choose(MainWindow::FileRequest::Export);
-  if (path.isEmpty() || !window.viewport()->modeller().hasDocument()) return;
+  if (path.isEmpty() || !window.modeller()->hasDocument()) return;
   int divisor = window.lodPanel()->divisor();
   if (!window.hasFileChooser()) { // interactive: ask which level, offering the displayed one
-    const int n = window.viewport()->modeller().document().size();
+    const int n = window.modeller()->document().size();
     QStringList levels;
     for (int d = 1; n / d >= 2 && d <= 64; d *= 2)
       levels << (d == 1 ? MainWindow::tr("Full detail (%2 triangles)")

@@ -48,10 +48,10 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   setCentralWidget(viewport_);
   buildDocks();
   documents_ = new DocumentActions(
-      {this, statusBar(), viewport_, lodPanel_, history_},
+      {this, statusBar(), modeller_, viewport_, lodPanel_, history_},
       options_.recoveryFolder.isEmpty() ? RecoveryStore::defaultFolder() : options_.recoveryFolder,
       options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid(), this);
-  mesh_ = new MeshActions({this, statusBar(), viewport_, documents_, history_,
+  mesh_ = new MeshActions({this, statusBar(), modeller_, viewport_, documents_, history_,
                            [this](const QString& name) { return action(name); }},
                           this);
   connect(documents_, &DocumentActions::aboutToAdopt, this, [this] { lodFollower_.reset(); });
@@ -88,7 +88,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connect(autosaveTimer_, &QTimer::timeout, this, [this] { autosaveNow(); });
   auto* brushPoll = new QTimer(this);
   connect(brushPoll, &QTimer::timeout, this, [this] {
-    for (const QString& failure : viewport_->modeller().reloadBrushes())
+    for (const QString& failure : modeller_->reloadBrushes())
       showStatusMessage(*statusBar(), failure, 8000);
   });
   brushPoll->start(1000);
@@ -130,7 +130,7 @@ void MainWindow::connectParts() {
   // The first time the history's budget drops steps, the status bar says so (Edit ▸ History
   // then names its first row truthfully).
   connect(history_, &HistoryList::stepsStartedToDrop, this, [this] {
-    const core::EditHistory& h = viewport_->modeller().history();
+    const core::EditHistory& h = modeller_->history();
     showStatusMessage(*statusBar(),
                       tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
                          "its %2 MiB")
@@ -151,13 +151,13 @@ void MainWindow::connectParts() {
   });
   connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
   connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
-  connect(&viewport_->modeller(), &Modeller::errorOccurred, this,
+  connect(modeller_, &Modeller::errorOccurred, this,
           [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
     viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
-    viewport_->modeller().brushState().setPaintTarget(layersPanel_->paintTarget());
+    modeller_->brushState().setPaintTarget(layersPanel_->paintTarget());
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
   connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
@@ -169,18 +169,17 @@ void MainWindow::connectParts() {
 }
 
 void MainWindow::connectLod() {
-  lodGenerator_ =
-      new LodGenerator([this] { return viewport_->modeller().positionsSnapshot(); }, this);
+  lodGenerator_ = new LodGenerator([this] { return modeller_->positionsSnapshot(); }, this);
   lodGenerator_->setOptions(lodPanel_->liveLodOptions());
   const auto regenerate = [this] {
     if (lodPanel_->lodShown()) lodGenerator_->request();
   };
   // Each change of the surface: the shown LOD follows it at once (a frame's work), and a new one
   // is generated in the background.
-  connect(&viewport_->modeller(), &Modeller::surfaceChanged, this, [this, regenerate] {
-    if (lodPanel_->lodShown() && lodFollower_ && viewport_->modeller().hasDocument())
+  connect(modeller_, &Modeller::surfaceChanged, this, [this, regenerate] {
+    if (lodPanel_->lodShown() && lodFollower_ && modeller_->hasDocument())
       viewport_->setLodMesh(std::make_shared<const core::LodMesh>(
-          lodFollower_->follow(viewport_->modeller().document().positions)));
+          lodFollower_->follow(modeller_->document().positions)));
     regenerate();
   });
   connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
@@ -203,9 +202,9 @@ void MainWindow::connectLod() {
             lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
             lodFollower_ = std::make_unique<LodFollower>(*lod, *lodGenerator_->lodSource());
             // Made from a snapshot the stroke may have moved on from since.
-            if (viewport_->modeller().hasDocument())
+            if (modeller_->hasDocument())
               lod = std::make_shared<const core::LodMesh>(
-                  lodFollower_->follow(viewport_->modeller().document().positions));
+                  lodFollower_->follow(modeller_->document().positions));
             viewport_->setLodMesh(std::move(lod));
           });
   connect(lodGenerator_, &LodGenerator::measured, this,
@@ -218,8 +217,8 @@ void MainWindow::connectLod() {
 
 void MainWindow::updateSaliencyWanted() {
   const bool salientLod = lodPanel_->lodShown() && lodPanel_->liveLodReadsSaliency();
-  viewport_->modeller().setSaliencyWanted(
-      layersPanel_->preview() == LayersPanel::Preview::Saliency || salientLod);
+  modeller_->setSaliencyWanted(layersPanel_->preview() == LayersPanel::Preview::Saliency ||
+                               salientLod);
 }
 
 BrushState* MainWindow::brushState() const {
@@ -252,8 +251,8 @@ void MainWindow::updateStatus() {
           .arg(locale.toString(s.displayedTriangles), locale.toString(s.fullTriangles)));
   lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
   mesh_->updateActions();
-  if (viewport_->modeller().hasDocument()) {
-    const core::Document& d = viewport_->modeller().document();
+  if (modeller_->hasDocument()) {
+    const core::Document& d = modeller_->document();
     layersPanel_->setLayerState(core::EditLayer::Diffuse, !d.diffuse.uniform());
     layersPanel_->setLayerState(core::EditLayer::Feature, !d.feature.uniform());
     layersPanel_->setLayerState(core::EditLayer::Mask, !d.mask.uniform());
@@ -336,9 +335,9 @@ void MainWindow::applyUndoBudget() {
 void MainWindow::setUndoBudgetMiB(int mib) {
   undoBudgetMiB_ = std::clamp(mib, kMinUndoMiB, kMaxUndoMiB);
   QSettings().setValue("undo/budgetMiB", undoBudgetMiB_);
-  const std::size_t before = viewport_->modeller().history().undoCount();
+  const std::size_t before = modeller_->history().undoCount();
   applyUndoBudget();
-  const std::size_t after = viewport_->modeller().history().undoCount();
+  const std::size_t after = modeller_->history().undoCount();
   if (after == before) return;
   showStatusMessage(*statusBar(),
                     tr("Undo now keeps only the newest %1 steps: %2 older ones did not fit its "

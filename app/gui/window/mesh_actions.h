@@ -21,6 +21,7 @@ namespace octaclay::app {
 
 class DocumentActions;
 class HistoryList;
+class Modeller;
 class ViewportWidget;
 
 /// The Mesh menu's whole-model operations: Even Out Samples, Remesh… and Resolution…, each run
@@ -35,7 +36,8 @@ public:
   struct Parts {
     QWidget* window = nullptr; ///< parent of dialogs and message boxes
     QStatusBar* statusBar = nullptr;
-    ViewportWidget* viewport = nullptr;
+    Modeller* modeller = nullptr;         ///< the document the operations read and replace
+    ViewportWidget* viewport = nullptr;   ///< the stroke under way
     DocumentActions* documents = nullptr; ///< its runner, and replaceDocument
     HistoryList* history = nullptr;
     std::function<QAction*(const QString&)> action; ///< the window's action by object name
