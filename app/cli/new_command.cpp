@@ -122,8 +122,8 @@ Command addNewCommand(CLI::App& app) {
           if (image.topology() == core::Topology::Octahedral)
             report << ", N = " << opt->size;
           else
-            report << " (" << topology << "), " << image.width() << "x" << image.height()
-                   << " cells";
+            report << (opt->shape == topology ? "" : " (" + topology + ")") << ", " << image.width()
+                   << "x" << image.height() << " cells";
           report << " (" << image.side() << "x" << image.rows() << " samples) in " << ms << " ms\n";
         }
         core::writeDocument(document, opt->output);

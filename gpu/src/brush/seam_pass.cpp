@@ -28,6 +28,8 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
   seam.use();
   glUniform1i(seam.uniform("u_source"), 0);
   glUniform1i(seam.uniform("u_size"), document.size());
+  glUniform1i(seam.uniform("u_topology"),
+              static_cast<int>(document.document().positions.topology()));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
   rectPass.draw(runs, side, side);
@@ -39,12 +41,17 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
 
 // Runs along the border lines (the rows whole, the columns without their corners). Elsewhere
 // identified samples are already equal, and the seaming pass would write them back unchanged.
-std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side) {
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
+                                      core::Topology topology) {
+  if (topology == core::Topology::Plane) return {}; // no seams
   const auto onBorder = [side](const core::TexelRect& t) {
     return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
   };
   if (std::none_of(tiles.begin(), tiles.end(), onBorder)) return {}; // most dabs
   const int n = side - 1;
+  if (topology == core::Topology::Torus) // the whole border: 4 (N + 1) samples, a few passes
+    return {core::TexelRect{0, 0, side, 1}, core::TexelRect{0, n, side, 1},
+            core::TexelRect{0, 1, 1, n - 1}, core::TexelRect{n, 1, 1, n - 1}};
   std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
   for (auto& m : marked)
     m.assign(static_cast<std::size_t>(side), 0);
