@@ -236,6 +236,20 @@ private slots:
     QVERIFY(topology.manifold());
   }
 
+  // A tile in the corner of a torus: its border samples and their twins across the image (column
+  // and row 64 are column and row 0), the four corners together; a plane's: none.
+  void seamRunsPairOppositeSides() {
+    const std::vector<core::TexelRect> corner{{0, 0, 16, 16}};
+    const std::vector<core::TexelRect> runs = seamRuns(corner, 65, core::Topology::Torus);
+    const std::vector<core::TexelRect> expected{{0, 0, 16, 1},  {64, 0, 1, 1}, {0, 64, 16, 1},
+                                                {64, 64, 1, 1}, {0, 1, 1, 15}, {64, 1, 1, 15}};
+    QCOMPARE(runs.size(), expected.size());
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      QVERIFY(runs[k] == expected[k]);
+    QVERIFY(seamRuns(corner, 65, core::Topology::Plane).empty());
+    QVERIFY(seamRuns({{16, 16, 16, 16}}, 65, core::Topology::Torus).empty()); // inside
+  }
+
   void aTorusWiderThanHighIsRefusedByTheGpu() {
     try {
       GpuDocument wide(core::makeDocument(core::makeTorus({}, 64, 16)));

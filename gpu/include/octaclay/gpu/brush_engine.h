@@ -215,8 +215,8 @@ private:
 /// The border samples that a pass over tiles (of an image `side` samples wide) may change, and
 /// the samples identified with them (seam.glsl's partners: (N - i, j) along the bottom and top
 /// rows, (i, N - j) along the left and right columns, the four corners together): what the
-/// seaming pass after it rewrites. A torus's is its whole border once a tile touches it (column
-/// and row N are column and row 0), a plane's nothing.
+/// seaming pass after it rewrites. A torus's partners are (i, 0) and (i, N), (0, j) and (N, j)
+/// (column and row N are column and row 0); a plane has none.
 std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
                                       core::Topology topology = core::Topology::Octahedral);
 
