@@ -106,6 +106,7 @@ int runSweep(const CompressOptionsCli& opt) {
   const std::string directory =
       opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
   const core::Document doc = core::readDocument(opt.input, {.layers = false});
+  core::requireOctahedral(doc.positions, "compress", opt.input);
   const RdReference reference = makeRdReference(doc.positions);
   const std::vector<RdPoint> points = sweep(reference, opt.samples);
   const std::string title =
@@ -152,6 +153,7 @@ int runCompress(const CompressOptionsCli& opt) {
   progress.stage("reading");
   const core::Document doc = core::readDocument(opt.input);
   core::requireUsableSize(doc.positions, opt.input);
+  core::requireOctahedral(doc.positions, "compress (the codecs)", opt.input);
   progress.stage("encoding");
   core::CompressOptions options;
   options.codec = opt.codec;

@@ -175,6 +175,7 @@ Command addLodCommand(CLI::App& app) {
         progress.stage("reading");
         core::Document document = core::readDocument(opt->input, {.layers = false});
         core::requireUsableSize(document.positions, opt->input);
+        core::requireOctahedral(document.positions, "lod", opt->input);
         core::GeometryImage& full = document.positions;
         const int n = full.size();
         if (n < 4)

@@ -63,6 +63,7 @@ Command addRemeshCommand(CLI::App& app) {
             progress.stage("reading");
             const core::Document document = core::readDocument(opt->input);
             core::requireUsableSize(document.positions, opt->input);
+            core::requireOctahedral(document.positions, "remesh", opt->input);
             const auto start = std::chrono::steady_clock::now();
             const core::RemeshResult r =
                 core::remeshDocument(document, {.size = opt->size}, [&progress](float f) {

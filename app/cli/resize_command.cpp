@@ -5,6 +5,7 @@
 #include "json_output.h"
 #include "resample_arguments.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/document/resize.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -43,6 +44,7 @@ Command addResizeCommand(CLI::App& app) {
             requireDocumentSize(opt->size);
             requireNewDocumentOutput(opt->input, opt->output);
             const core::Document document = core::readDocument(opt->input);
+            core::requireOctahedral(document.positions, "resize", opt->input);
             const auto start = std::chrono::steady_clock::now();
             const core::ResizeResult r = core::resizeAndCheck(document, {.size = opt->size});
             const double ms =
