@@ -135,6 +135,17 @@ void GpuDocument::restore(core::EditLayer layer, core::TexelRect rect,
   push(layer, rect);
 }
 
+void GpuDocument::restoreCopy(core::EditLayer layer, core::TexelRect rect,
+                              std::span<const float> texels, const Texture& from, int fromX,
+                              int fromY) {
+  syncMirror(); // as restore()
+  writeMirror(layer, rect, texels);
+  note(layer, rect);
+  glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, fromX, fromY, 0, textures_[index(layer)].id(),
+                     GL_TEXTURE_2D, 0, rect.x, rect.y, 0, rect.width, rect.height, 1);
+  checkGlError("restoring a tile from the undo pool");
+}
+
 void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
   note(layer, rect);
   const core::Layer* l = mirrorLayer(layer);

@@ -8,17 +8,23 @@
 namespace octaclay::gpu::detail {
 
 UndoCapture::UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers)
-    : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
+    : document_(document), pool_(document), layers_(std::move(layers)), side_(document.size() + 1),
       tiles_(core::EditStepRecorder::tilesPerSide(side_)) {}
 
+void UndoCapture::capture(core::EditLayer layer, int tx, int ty) {
+  const int slot = pool_.capture(layer, core::EditStepRecorder::tileRegion(side_, tx, ty));
+  before_.push_back({layer, tx, ty, slot});
+}
+
 void UndoCapture::cover(core::TexelRect rect) {
+  pool_.startDownloads(); // earlier dabs' tiles: downloads started, those arrived taken in
   const int size = core::EditStepRecorder::kTileSize;
   for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
     for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
       if (const auto [at, added] = seen_.emplace(ty * tiles_ + tx, -1); added)
         for (core::EditLayer layer : layers_) {
           if (layer == core::EditLayer::Positions) at->second = static_cast<int>(before_.size());
-          before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+          capture(layer, tx, ty);
         }
 }
 
@@ -27,8 +33,7 @@ void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
     cover(core::EditStepRecorder::tileRegion(side_, tx, ty));
     return;
   }
-  if (extra_.insert({static_cast<int>(layer), tx, ty}).second)
-    before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+  if (extra_.insert({static_cast<int>(layer), tx, ty}).second) capture(layer, tx, ty);
 }
 
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
@@ -39,12 +44,13 @@ core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
   const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
   const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
                         static_cast<std::size_t>(GpuDocument::channels(t.layer));
-  return {t.texels[k], t.texels[k + 1], t.texels[k + 2]};
+  const std::vector<float>& texels = pool_.texels(t.slot);
+  return {texels[k], texels[k + 1], texels[k + 2]};
 }
 
 void UndoCapture::restore() {
   for (const Tile& t : before_)
-    document_.restore(t.layer, core::EditStepRecorder::tileRegion(side_, t.x, t.y), t.texels);
+    pool_.restore(t.slot);
 }
 
 core::EditStep UndoCapture::finish(const std::string& label) {
@@ -52,7 +58,8 @@ core::EditStep UndoCapture::finish(const std::string& label) {
   for (const Tile& t : before_) {
     std::vector<float> after = texels(t.layer, t.x, t.y);
     checkFinite(t, after); // on the after-tiles read anyway: no extra readback
-    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels, after);
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
+                     after);
   }
   return recorder.finish(label);
 }
@@ -60,7 +67,7 @@ core::EditStep UndoCapture::finish(const std::string& label) {
 core::EditStep UndoCapture::record(const std::string& label) const {
   core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_)
-    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
                      texels(t.layer, t.x, t.y));
   return recorder.finish(label);
 }

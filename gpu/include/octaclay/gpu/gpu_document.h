@@ -92,6 +92,11 @@ public:
   /// Replaces rect of the mirror with texels (the layout of mirrorTexels) and pushes it.
   void restore(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
 
+  /// restore() with the texture's texels copied on the GPU from `from` at (fromX, fromY) (an
+  /// undo pool's copy of them, equal to texels) instead of uploaded from the CPU.
+  void restoreCopy(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels,
+                   const Texture& from, int fromX, int fromY);
+
   static int channels(core::EditLayer layer);
 
   // The change feed: every texture write that goes through changed(), push() or restore() is
