@@ -3,6 +3,7 @@
 #include "octaclay/core/error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace octaclay::gpu::detail {
@@ -39,7 +40,8 @@ void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
   const int size = core::EditStepRecorder::kTileSize;
   const auto at = seen_.find((s.j / size) * tiles_ + s.i / size);
-  if (at == seen_.end() || at->second < 0) return document_.document().positions.at(s).xyz();
+  // Not captured: nothing the stroke changed, so the mirror holds it even where read-backs wait.
+  if (at == seen_.end() || at->second < 0) return document_.mirror().positions.at(s).xyz();
   const Tile& t = before_[static_cast<std::size_t>(at->second)];
   const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
   const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
@@ -54,10 +56,21 @@ void UndoCapture::restore() {
 }
 
 core::EditStep UndoCapture::finish(const std::string& label) {
+  // The finite check on the GPU, one flag per layer read back; only a stroke it flags is
+  // checked again on the CPU, which names the sample.
+  std::array<std::vector<core::TexelRect>, 4> written;
+  for (const Tile& t : before_)
+    written[static_cast<std::size_t>(t.layer)].push_back(
+        core::EditStepRecorder::tileRegion(side_, t.x, t.y));
+  bool clean = true;
+  for (std::size_t k = 0; k < written.size() && clean; ++k)
+    if (!written[k].empty())
+      clean = document_.holdsOnlyFinite(static_cast<core::EditLayer>(k),
+                                        core::mergeRects(std::move(written[k])));
   core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_) {
     std::vector<float> after = texels(t.layer, t.x, t.y);
-    checkFinite(t, after); // on the after-tiles read anyway: no extra readback
+    if (!clean) checkFinite(t, after);
     recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
                      after);
   }

@@ -38,9 +38,10 @@ public:
   /// Writes every captured tile back to the mirror and the texture (the stroke is undone): the
   /// textures from the pool's copies on the GPU.
   void restore();
-  /// The stroke's undo record, from the captured tiles and the mirror as it is now. When a
-  /// written texel is not finite, or a position lies beyond kMaxCoordinate, restores the
-  /// captured tiles first and throws core::Error(InvalidInput) naming the sample.
+  /// The stroke's undo record, from the captured tiles and the mirror as it is now (synced).
+  /// When a written texel is not finite, or a position lies beyond kMaxCoordinate (a reduction
+  /// on the GPU, read once), restores the captured tiles first and throws
+  /// core::Error(InvalidInput) naming the sample.
   core::EditStep finish(const std::string& label);
   /// The record so far, without the finite check: the stroke goes on.
   core::EditStep record(const std::string& label) const;

@@ -181,6 +181,8 @@ public:
   /// compiler message. Throws GlError with name, stage and the driver's log.
   Program(const std::string& name, const std::string& vertexSource,
           const std::string& fragmentSource);
+  /// A compute program (GL 4.3) of one shader; errors as above.
+  static Program compute(const std::string& name, const std::string& source);
   Program(Program&& other) noexcept;
   Program& operator=(Program&& other) noexcept;
   Program(const Program&) = delete;
