@@ -387,9 +387,22 @@ void StrokesTest::deferredPositionsGiveTheSameStrokes() {
   }
   QVERIFY(!sameBits(snapshot(atOnce), snapshot(GpuDocument(core::makeDocument(
                                           core::makeBaseShape(core::BaseShape::Blob, n))))));
-  // During a stroke the deferred document's positions wait for a reader; the bounds do not.
+  // During a stroke the deferred document's positions wait for a reader; the bounds do not, and
+  // the record so far (keep detail's between dabs) reads what it needs synced.
   StrokeSession session(*engine_, deferred, manifest("push"), strokeOf("push", {}, 0.2f, 0.5f));
-  session.moveToUv({0.5f, 0.5f}, 0.2f * d, 0.5f);
+  StrokeSession twin(*engine_, atOnce, manifest("push"), strokeOf("push", {}, 0.2f, 0.5f));
+  for (StrokeSession* s : {&session, &twin}) {
+    s->moveToUv({0.5f, 0.5f}, 0.2f * d, 0.5f);
+    s->moveToUv({0.6f, 0.55f}, 0.2f * d, 0.5f);
+  }
+  QVERIFY(deferred.mirrorStale());
+  const core::EditStep soFar = session.recordSoFar("push"), twinSoFar = twin.recordSoFar("push");
+  QVERIFY(soFar.changedTexels > 100);
+  QCOMPARE(soFar.changedTexels, twinSoFar.changedTexels);
+  for (std::size_t k = 0; k < soFar.tiles.size(); ++k)
+    QVERIFY(soFar.tiles[k].xorBits == twinSoFar.tiles[k].xorBits);
+  twin.finish("push");
+  session.moveToUv({0.7f, 0.5f}, 0.2f * d, 0.5f);
   QVERIFY(deferred.mirrorStale());
   const core::TileBounds fresh(deferred.document().positions); // synced by document()
   QVERIFY(!deferred.mirrorStale());

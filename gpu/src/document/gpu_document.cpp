@@ -346,6 +346,7 @@ float* GpuDocument::mirrorData(core::EditLayer layer) {
 }
 
 void GpuDocument::writeSaliency(std::span<const float> saliency) {
+  syncMirror(); // the whole mirror goes back to the texture below: nothing may wait in it
   std::span<core::Vec4f> texels = document_.positions.texels();
   if (saliency.size() != texels.size())
     throw core::Error(core::ErrorKind::InvalidArgument,

@@ -87,6 +87,8 @@ core::EditStep UndoCapture::record(const std::string& label) const {
 
 std::vector<float> UndoCapture::texels(core::EditLayer layer, int tx, int ty) const {
   const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, tx, ty);
+  // Mid-stroke (recordSoFar) deferred positions may wait for their read-back.
+  if (layer == core::EditLayer::Positions) document_.syncRegion(std::span(&r, 1));
   return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
 }
 
