@@ -80,7 +80,14 @@ core::Document readModelFile(const QString& path) {
   const std::filesystem::path file(path.toStdString());
   if (QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0)
     return core::readCompressedDocument(file);
-  return core::readDocument(file);
+  core::Document document = core::readDocument(file);
+  // The modeller's stretch, saliency and keep detail know the ball's folds only (issue 33).
+  if (document.topology != core::Topology::Octahedral)
+    throw core::Error(core::ErrorKind::InvalidInput,
+                      "this model is a " + std::string(core::topologyName(document.topology)) +
+                          ": the modeller sculpts octahedral (ball) models only so far; "
+                          "octaclay-cli stroke, info and export work on it");
+  return document;
 }
 
 SaveCompressedDialog::SaveCompressedDialog(std::shared_ptr<const core::Document> doc,
