@@ -38,5 +38,11 @@ Command addDecompressCommand(CLI::App& app);
 Command addRelaxCommand(CLI::App& app);
 Command addResizeCommand(CLI::App& app);
 Command addRemeshCommand(CLI::App& app);
+Command addObjectsCommand(CLI::App& app);
+Command addAddCommand(CLI::App& app);
+Command addTransformCommand(CLI::App& app);
+Command addRemoveCommand(CLI::App& app);
+Command addRenameCommand(CLI::App& app);
+Command addDuplicateCommand(CLI::App& app);
 
 } // namespace octaclay::app

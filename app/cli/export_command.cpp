@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -107,7 +108,7 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
 
 Command addExportCommand(CLI::App& app) {
   struct Options {
-    std::string input, output;
+    std::string input, output, object;
     int lod = 0;
     long long triangles = 0;
     std::string normalMap;
@@ -117,6 +118,7 @@ Command addExportCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "export", "Write a document's surface as textured OBJ or glTF (.glb), or PLY, STL, OFF");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("-o,--output", opt->output,
                   "Mesh to write: .obj (with .mtl and PNG maps of the painted layers beside it), "
                   ".glb (binary glTF, textures embedded), .ply (binary), .stl (binary), .off")
@@ -149,7 +151,10 @@ Command addExportCommand(CLI::App& app) {
             }
             requireNotInput(opt->output, opt->input);
             core::Document document =
-                core::readDocument(opt->input, {.layers = kind != ExportKind::Plain && !collapse});
+                std::move(readChosenObject(opt->input, opt->object,
+                                           {.layers = kind != ExportKind::Plain && !collapse})
+                              .object()
+                              .document);
             const int n = document.size();
             if (collapse && n < 4)
               throw core::Error(core::ErrorKind::InvalidArgument,

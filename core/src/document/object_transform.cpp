@@ -94,7 +94,7 @@ ObjectTransform mirroredTransform(const ObjectTransform& t, int axis) {
   // M · (T + R S p) with M = diag(−1 on axis) is M T + (M R M) · S · (M p): the mirrored
   // rotation M R M is the same Euler angles with the two angles about the other axes negated.
   ObjectTransform result = t;
-  auto flip = [](float& v) { v = -v; };
+  auto flip = [](float& v) { v = 0.0f - v; }; // 0 stays +0
   if (axis == 0) {
     flip(result.translation.x);
     flip(result.rotationDegrees.y);
