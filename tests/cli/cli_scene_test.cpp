@@ -149,7 +149,7 @@ void CliSceneTest::unknownObjectsNameTheObjects() {
 void CliSceneTest::multiObjectDocumentsNeedObject() {
   for (const QStringList& args :
        {QStringList{"info", scene_}, QStringList{"relax", scene_, "-o", path("never.exr")},
-        QStringList{"export", scene_, "-o", path("never.ply")},
+        QStringList{"export", scene_, "--lod", "4", "-o", path("never.ply")},
         QStringList{"transform", scene_, "--scale", "2", "-o", path("never.exr")}}) {
     const Result r = runCli(args);
     QVERIFY2(r.exitCode == kUsage && r.err.contains("--object NAME") && r.err.contains("4 objects"),
@@ -161,6 +161,13 @@ void CliSceneTest::multiObjectDocumentsNeedObject() {
   QCOMPARE(info["euler"].toInt(), 2);
   RUN_JSON(exported, "export", scene_, "--object", "Head", "-o", path("head.ply"), "--json");
   QVERIFY(QFileInfo::exists(path("head.ply")));
+  // Without --object, export writes every visible object, placed: GLB nodes, OBJ groups.
+  RUN_JSON(glb, "export", scene_, "-o", path("scene.glb"), "--json");
+  QCOMPARE(glb["objects"].toInt(), 4);
+  RUN_JSON(obj, "export", scene_, "-o", path("scene.obj"), "--json");
+  QFile text(path("scene.obj"));
+  QVERIFY(text.open(QIODevice::ReadOnly));
+  QCOMPARE(text.readAll().count("\no "), 4);
 }
 
 void CliSceneTest::objectEditsLeaveTheOthersAlone() {
