@@ -44,5 +44,6 @@ Command addTransformCommand(CLI::App& app);
 Command addRemoveCommand(CLI::App& app);
 Command addRenameCommand(CLI::App& app);
 Command addDuplicateCommand(CLI::App& app);
+Command addMergeCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
       app::addDecompressCommand(cli), app::addRelaxCommand(cli),   app::addResizeCommand(cli),
       app::addRemeshCommand(cli),     app::addObjectsCommand(cli), app::addAddCommand(cli),
       app::addTransformCommand(cli),  app::addRemoveCommand(cli),  app::addRenameCommand(cli),
-      app::addDuplicateCommand(cli)};
+      app::addDuplicateCommand(cli),  app::addMergeCommand(cli)};
 
   cli.set_version_flag("--version", std::string("octaclay-cli ") + OCTACLAY_VERSION);
   if (argc >= 2 && argv[1][0] != '-') {

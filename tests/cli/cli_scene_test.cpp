@@ -48,6 +48,7 @@ private slots:
   void refusalsWriteNothing();
   void lyingFilesExitThree();
   void plainDocumentsStayPlain();
+  void mergeMakesOneClosedObject();
 
 private:
   QString path(const QString& name) const { return dir_.filePath(name); }
@@ -251,6 +252,35 @@ void CliSceneTest::plainDocumentsStayPlain() {
   RUN_JSON(listing, "objects", one, "--json");
   QCOMPARE(listing["objects"].toArray().size(), 1);
   QCOMPARE(objectNamed(listing, "Leg")["translation"].toArray()[0].toDouble(), double(0.6f));
+}
+
+void CliSceneTest::mergeMakesOneClosedObject() {
+  // The body and one leg of the creature merge; the far-off head does not touch the legs.
+  const QString merged = path("merged.exr");
+  RUN_JSON(m, "merge", scene_, "--objects", "body,Leg", "--name", "Torso", "--size", "32", "-o",
+           merged, "--json");
+  QCOMPARE(m["objects"].toInt(), 3);
+  RUN_JSON(listing, "objects", merged, "--json");
+  QStringList names;
+  for (const auto& o : listing["objects"].toArray())
+    names << o.toObject()["name"].toString();
+  QCOMPARE(names, (QStringList{"Torso", "Leg.001", "Head"}));
+  RUN_JSON(info, "info", merged, "--object", "Torso", "--json");
+  QCOMPARE(info["euler"].toInt(), 2);
+  QVERIFY(info["closed"].toBool());
+  // The merged surface spans the body and the placed leg (world space, identity transform):
+  // the leg reaches below the body's bottom (z = -1).
+  QVERIFY2(info["bbox"].toObject()["min"].toArray()[2].toDouble() < -1.2,
+           qPrintable(QJsonDocument(info).toJson()));
+  // Objects that do not touch: exit 3, nothing written; a name listed twice or once: exit 2.
+  EXPECT_FAILURE(kInvalidInput, path("apart.exr"), "merge", scene_, "--objects", "Leg,Leg.001",
+                 "-o", path("apart.exr"));
+  EXPECT_FAILURE(kUsage, path("apart.exr"), "merge", scene_, "--objects", "Leg,Leg", "-o",
+                 path("apart.exr"));
+  EXPECT_FAILURE(kUsage, path("apart.exr"), "merge", scene_, "--objects", "Leg", "-o",
+                 path("apart.exr"));
+  EXPECT_FAILURE(kUsage, path("apart.exr"), "merge", scene_, "--objects", "Leg,Tail", "-o",
+                 path("apart.exr"));
 }
 
 QTEST_APPLESS_MAIN(CliSceneTest)
