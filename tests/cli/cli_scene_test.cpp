@@ -11,6 +11,7 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -49,6 +50,7 @@ private slots:
   void lyingFilesExitThree();
   void plainDocumentsStayPlain();
   void mergeMakesOneClosedObject();
+  void importOfSeveralPartsMakesObjects();
 
 private:
   QString path(const QString& name) const { return dir_.filePath(name); }
@@ -281,6 +283,41 @@ void CliSceneTest::mergeMakesOneClosedObject() {
                  path("apart.exr"));
   EXPECT_FAILURE(kUsage, path("apart.exr"), "merge", scene_, "--objects", "Leg,Tail", "-o",
                  path("apart.exr"));
+}
+
+void CliSceneTest::importOfSeveralPartsMakesObjects() {
+  // Three lumps apart, exported as one STL (corners welded on reading), come back as three
+  // objects where they stood.
+  const QString lumps = path("lumps.exr");
+  RUN_JSON(a, "new", "--shape", "sphere", "--size", "16", "-o", lumps, "--json");
+  RUN_JSON(b, "add", lumps, "--shape", "cube", "--translate", "3,0,0", "-o", lumps, "--json");
+  RUN_JSON(c, "add", lumps, "--shape", "capsule", "--translate", "0,0,4", "--rotate", "0,90,0",
+           "-o", lumps, "--json");
+  RUN_JSON(stl, "export", lumps, "-o", path("lumps.stl"), "--json");
+  RUN_JSON(imported, "import", path("lumps.stl"), "--size", "16", "-o", path("parts.exr"),
+           "--json");
+  QCOMPARE(imported["objects"].toInt(), 3);
+  RUN_JSON(listing, "objects", path("parts.exr"), "--json");
+  QCOMPARE(listing["objects"].toArray().size(), 3);
+  for (const char* name : {"Part", "Part.001", "Part.002"}) {
+    RUN_JSON(info, "info", path("parts.exr"), "--object", name, "--json");
+    QVERIFY(info["closed"].toBool());
+    QCOMPARE(info["euler"].toInt(), 2);
+  }
+  // The capsule (the last part), turned to lie along x at z = 4: 2 long, 1 thick.
+  RUN_JSON(capsule, "info", path("parts.exr"), "--object", "Part.002", "--json");
+  const QJsonObject box = capsule["bbox"].toObject();
+  const double dx = box["max"].toArray()[0].toDouble() - box["min"].toArray()[0].toDouble();
+  const double z = box["max"].toArray()[2].toDouble();
+  QVERIFY2(std::abs(dx - 2) < 0.05 && std::abs(z - 4.5) < 0.05,
+           qPrintable(QJsonDocument(capsule).toJson()));
+  // Lumps that touch at a point (the creature's head sits on the body's pole) stay one
+  // refused mesh, with import's own words.
+  RUN_JSON(touching, "export", scene_, "-o", path("touching.stl"), "--json");
+  const Result refused = runCli({"import", path("touching.stl"), "-o", path("never.exr")});
+  QVERIFY2(refused.err.contains("pinch"), refused.err.constData());
+  EXPECT_FAILURE(kInvalidInput, path("never.exr"), "import", path("touching.stl"), "-o",
+                 path("never.exr"));
 }
 
 QTEST_APPLESS_MAIN(CliSceneTest)
