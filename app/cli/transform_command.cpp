@@ -35,9 +35,7 @@ Command addTransformCommand(CLI::App& app) {
               throw core::Error(core::ErrorKind::InvalidArgument,
                                 "transform changes nothing without --translate, --rotate or "
                                 "--scale");
-            // Checked before the pixels are read.
-            const core::ObjectTransform check = appliedTransform({}, opt->transform);
-            (void)check;
+            appliedTransform({}, opt->transform); // the arguments checked before any reading
             ChosenObject chosen = readChosenObject(opt->input, opt->object);
             requireUnlocked(chosen, "move");
             core::SceneObject& object = chosen.object();

@@ -153,7 +153,9 @@ void CliSceneTest::multiObjectDocumentsNeedObject() {
   for (const QStringList& args :
        {QStringList{"info", scene_}, QStringList{"relax", scene_, "-o", path("never.exr")},
         QStringList{"export", scene_, "--lod", "4", "-o", path("never.ply")},
-        QStringList{"transform", scene_, "--scale", "2", "-o", path("never.exr")}}) {
+        QStringList{"transform", scene_, "--scale", "2", "-o", path("never.exr")},
+        QStringList{"resize", scene_, "--size", "8", "-o", path("never.exr")},
+        QStringList{"remesh", scene_, "-o", path("never.exr")}}) {
     const Result r = runCli(args);
     QVERIFY2(r.exitCode == kUsage && r.err.contains("--object NAME") && r.err.contains("4 objects"),
              qPrintable(describe(args, r)));
@@ -190,6 +192,11 @@ void CliSceneTest::objectEditsLeaveTheOthersAlone() {
   RUN_JSON(relaxed, "relax", out, "--object", "Head", "-o", out, "--json");
   const core::Scene again = core::readScene(out.toStdString());
   QVERIFY(samePositions(again.objects[2].document, after.objects[2].document));
+  RUN_JSON(resized, "resize", out, "--object", "Leg", "--size", "16", "-o", path("resized.exr"),
+           "--json");
+  const core::Scene resizedScene = core::readScene(path("resized.exr").toStdString());
+  QCOMPARE(resizedScene.objects[1].document.size(), resized["size"].toInt()); // or kept
+  QVERIFY(samePositions(resizedScene.objects[0].document, again.objects[0].document));
 }
 
 void CliSceneTest::refusalsWriteNothing() {
