@@ -155,7 +155,8 @@ void CliSceneTest::multiObjectDocumentsNeedObject() {
         QStringList{"export", scene_, "--lod", "4", "-o", path("never.ply")},
         QStringList{"transform", scene_, "--scale", "2", "-o", path("never.exr")},
         QStringList{"resize", scene_, "--size", "8", "-o", path("never.exr")},
-        QStringList{"remesh", scene_, "-o", path("never.exr")}}) {
+        QStringList{"remesh", scene_, "-o", path("never.exr")},
+        QStringList{"compare", scene_, scene_}}) {
     const Result r = runCli(args);
     QVERIFY2(r.exitCode == kUsage && r.err.contains("--object NAME") && r.err.contains("4 objects"),
              qPrintable(describe(args, r)));
@@ -164,6 +165,8 @@ void CliSceneTest::multiObjectDocumentsNeedObject() {
   RUN_JSON(info, "info", scene_, "--object", "Leg", "--json");
   QCOMPARE(info["size"].toInt(), 8);
   QCOMPARE(info["euler"].toInt(), 2);
+  RUN_JSON(same, "compare", scene_, scene_, "--object", "Leg.001", "--json");
+  QCOMPARE(same["hausdorff"].toDouble(), 0.0);
   RUN_JSON(exported, "export", scene_, "--object", "Head", "-o", path("head.ply"), "--json");
   QVERIFY(QFileInfo::exists(path("head.ply")));
   // Without --object, export writes every visible object, placed: GLB nodes, OBJ groups.
