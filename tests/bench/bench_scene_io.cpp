@@ -83,5 +83,10 @@ void BM_ReadScene(benchmark::State& state) {
 } // namespace
 
 BENCHMARK(BM_WriteScene)->Args({1, 1024})->Args({16, 256})->UseManualTime()->Iterations(5);
-BENCHMARK(BM_ReadScene)->Args({1, 1024})->Args({16, 256})->Args({1, 256})->UseManualTime()->Iterations(5);
+BENCHMARK(BM_ReadScene)
+    ->Args({1, 1024})
+    ->Args({16, 256})
+    ->Args({1, 256})
+    ->UseManualTime()
+    ->Iterations(5);
 BENCHMARK_MAIN();
