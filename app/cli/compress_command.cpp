@@ -108,6 +108,7 @@ int runSweep(const CompressOptionsCli& opt) {
       opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
   const core::Document doc =
       std::move(readChosenObject(opt.input, opt.object, {.layers = false}).object().document);
+  core::requireOctahedral(doc.positions, "compress", opt.input);
   const RdReference reference = makeRdReference(doc.positions);
   const std::vector<RdPoint> points = sweep(reference, opt.samples);
   const std::string title =
@@ -154,6 +155,7 @@ int runCompress(const CompressOptionsCli& opt) {
   progress.stage("reading");
   const core::Document doc = std::move(readChosenObject(opt.input, opt.object).object().document);
   core::requireUsableSize(doc.positions, opt.input);
+  core::requireOctahedral(doc.positions, "compress (the codecs)", opt.input);
   progress.stage("encoding");
   core::CompressOptions options;
   options.codec = opt.codec;

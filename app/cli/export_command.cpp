@@ -204,6 +204,18 @@ Command addExportCommand(CLI::App& app) {
                               .object()
                               .document);
             const int n = document.size();
+            // A torus or plane exports as PLY, STL or OFF (its own mesh, every level of a square
+            // image); the textured OBJ and GLB, --triangles and the normal map are the ball's.
+            if (document.positions.topology() != core::Topology::Octahedral) {
+              if (kind != ExportKind::Plain)
+                core::requireOctahedral(document.positions, "textured .obj and .glb export",
+                                        opt->input + " (export .ply, .stl or .off)");
+              if (collapse) core::requireOctahedral(document.positions, "--triangles", opt->input);
+              if (!opt->normalMap.empty())
+                core::requireOctahedral(document.positions, "--normal-map", opt->input);
+              if (!document.positions.square() && sub->count("--lod") > 0)
+                core::requireOctahedral(document.positions, "--lod", opt->input);
+            }
             if (collapse && n < 4)
               throw core::Error(core::ErrorKind::InvalidArgument,
                                 "--triangles needs a document of N = 4 or more: this one is N = " +

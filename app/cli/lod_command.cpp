@@ -178,6 +178,7 @@ Command addLodCommand(CLI::App& app) {
         core::Document document = std::move(
             readChosenObject(opt->input, opt->object, {.layers = false}).object().document);
         core::requireUsableSize(document.positions, opt->input);
+        core::requireOctahedral(document.positions, "lod", opt->input);
         core::GeometryImage& full = document.positions;
         const int n = full.size();
         if (n < 4)

@@ -53,7 +53,7 @@ Command addObjectsCommand(CLI::App& app) {
                       << (objects.size() == 1 ? " object\n" : " objects\n");
             for (const auto& o : objects)
               std::cout << "  " << o.name << "  " << core::topologyName(o.topology)
-                        << ", N = " << o.document.size << " (" << o.width << "x" << o.height
+                        << ", N = " << o.document.size << " (" << o.width + 1 << "x" << o.height + 1
                         << " samples), at " << triple(o.transform.translation) << ", rotated "
                         << triple(o.transform.rotationDegrees) << " degrees, scaled "
                         << triple(o.transform.scale) << (o.visible ? "" : ", hidden")

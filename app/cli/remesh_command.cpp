@@ -67,6 +67,7 @@ Command addRemeshCommand(CLI::App& app) {
             requireUnlocked(chosen, "remesh");
             const core::Document document = std::move(chosen.object().document);
             core::requireUsableSize(document.positions, opt->input);
+            core::requireOctahedral(document.positions, "remesh", opt->input);
             const auto start = std::chrono::steady_clock::now();
             const core::RemeshResult r =
                 core::remeshDocument(document, {.size = opt->size}, [&progress](float f) {

@@ -6,6 +6,7 @@
 #include "object_choice.h"
 #include "resample_arguments.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/document/resize.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -47,6 +48,7 @@ Command addResizeCommand(CLI::App& app) {
             ChosenObject chosen = readChosenObject(opt->input, opt->object);
             requireUnlocked(chosen, "resize");
             const core::Document document = std::move(chosen.object().document);
+            core::requireOctahedral(document.positions, "resize", opt->input);
             const auto start = std::chrono::steady_clock::now();
             const core::ResizeResult r = core::resizeAndCheck(document, {.size = opt->size});
             const double ms =

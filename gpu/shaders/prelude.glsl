@@ -17,6 +17,7 @@ uniform vec4 u_featureFill;
 uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
 uniform int u_falloffCurveSize;
 uniform int u_size;            // N: the image has (N+1)^2 samples
+uniform int u_topology;        // 0 octahedral (the default), 1 torus, 2 plane (core::Topology)
 uniform vec3 u_centre;
 uniform vec3 u_centreNormal;
 uniform float u_radius;        // object units
@@ -65,6 +66,18 @@ struct BrushInput {
 // software rasterizer runs integer division lane by lane.
 ivec3 wrapTexelTurn(ivec2 p) {
   int n = u_size;
+  if (u_topology == 1) { // torus: period N in both directions, column and row N are 0 again
+    int i = p.x < 0 ? p.x + 4 * n : p.x;
+    int j = p.y < 0 ? p.y + 4 * n : p.y;
+    i = i >= 2 * n ? i - 2 * n : i;
+    j = j >= 2 * n ? j - 2 * n : j;
+    i = i >= 2 * n ? i - 2 * n : i;
+    j = j >= 2 * n ? j - 2 * n : j;
+    i = i >= n ? i - n : i;
+    j = j >= n ? j - n : j;
+    return ivec3(i, j, 0);
+  }
+  if (u_topology == 2) return ivec3(clamp(p, ivec2(0), ivec2(n)), 0); // plane: its boundary
   int period = 2 * n;
   int i = p.x < 0 ? p.x + 2 * period : p.x;
   int j = p.y < 0 ? p.y + 2 * period : p.y;
@@ -94,7 +107,8 @@ void cellTriangleAt(vec2 q, out ivec2 c0, out ivec2 c1, out ivec2 c2, out vec3 w
   ivec2 a = ivec2(floor(q));
   vec2 f = q - vec2(a);
   int shift = findMSB(max(u_size / 2, 1)); // floorDiv by N/2 (a power of two): arithmetic shift
-  bool antiDiagonal = ((a.x >> shift) & 1) == ((a.y >> shift) & 1);
+  // The torus and plane split every cell along its anti-diagonal.
+  bool antiDiagonal = u_topology != 0 || ((a.x >> shift) & 1) == ((a.y >> shift) & 1);
   if (antiDiagonal) {
     if (f.x + f.y <= 1.0) {
       c0 = a; c1 = a + ivec2(1, 0); c2 = a + ivec2(0, 1);
@@ -216,6 +230,12 @@ float uvDistance(ivec2 t) {
   vec2 p = vec2(t), c = vec2(u_centreTexel);
   float n = float(u_size);
   float d = length(p - c);
+  if (u_topology == 2) return d; // plane: no images
+  if (u_topology == 1) { // torus: the centre's translates by (±N, 0), (0, ±N) and (±N, ±N)
+    vec2 q = abs(p - c);
+    q = min(q, abs(q - vec2(n)));
+    return length(q);
+  }
   d = min(d, length(p - (vec2(0.0, n) - c)));
   d = min(d, length(p - (vec2(2.0 * n, n) - c)));
   d = min(d, length(p - (vec2(n, 0.0) - c)));

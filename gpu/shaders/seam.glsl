@@ -2,6 +2,7 @@
 // (core/src/seaming.cpp), so identified samples are equal again after a dab.
 uniform sampler2D u_source;
 uniform int u_size;
+uniform int u_topology; // 0 octahedral, 1 torus (column and row N are column and row 0), 2 plane
 out vec4 o_value;
 
 void main() {
@@ -14,6 +15,12 @@ void main() {
     // Summed in pairs so four equal corners average to exactly their value.
     value = 0.25 * ((texelFetch(u_source, ivec2(0, 0), 0) + texelFetch(u_source, ivec2(n, 0), 0)) +
                     (texelFetch(u_source, ivec2(0, n), 0) + texelFetch(u_source, ivec2(n, n), 0)));
+  } else if (u_topology == 2) {
+    // a plane has no seams
+  } else if (u_topology == 1 && sideI) {
+    value = 0.5 * (value + texelFetch(u_source, ivec2(n - t.x, t.y), 0));
+  } else if (u_topology == 1 && sideJ) {
+    value = 0.5 * (value + texelFetch(u_source, ivec2(t.x, n - t.y), 0));
   } else if (sideI) {
     value = 0.5 * (value + texelFetch(u_source, ivec2(t.x, n - t.y), 0));
   } else if (sideJ) {

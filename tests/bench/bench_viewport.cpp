@@ -19,6 +19,7 @@
 #include <QImage>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QStandardPaths>
 #include <QWindow>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -314,6 +315,8 @@ DrawFigures vtkCase(app::ViewportWidget& widget, const core::TriangleMesh& mesh,
 
 int main(int argc, char** argv) {
   QApplication application(argc, argv);
+  // The brush values it sets are persisted as a user's are: into Qt's test folder, not theirs.
+  QStandardPaths::setTestModeEnabled(true);
   const auto total = Clock::now();
 
   app::Modeller modeller;
@@ -334,13 +337,19 @@ int main(int argc, char** argv) {
   // Diagnosis only: OCTACLAY_BENCH_MULTISAMPLES=0 measures the viewport without VTK's MSAA.
   if (const char* samples = std::getenv("OCTACLAY_BENCH_MULTISAMPLES"))
     widget.renderWindow()->SetMultiSamples(std::atoi(samples));
-  app::BrushSettings settings;
-  settings.brushId = "push";
-  settings.radius = 0.05f;
-  settings.strength = 0.3f;
-  settings.area = push->area; // as the Brushes panel starts them: the manifest's
-  settings.falloff = push->falloff;
-  widget.modeller().brushState().setSettings(settings);
+  // Whatever values a user of this machine stored: the benchmark's own, the manifest's area and
+  // falloff as a brush starts with, the stroke options' defaults.
+  app::BrushState& brush = widget.modeller().brushState();
+  if (!brush.selectBrush("push")) fail("the push brush is not in the brush state");
+  brush.setRadiusUnit(app::RadiusUnit::Scene);
+  brush.setRadius(0.05f);
+  brush.setStrength(0.3f);
+  brush.setArea(push->area);
+  brush.setFalloff(push->falloff);
+  brush.setPressureTarget(app::BrushSettings{}.pressureTarget);
+  brush.setStabilizer(0.0f);
+  brush.setSymmetry(0);
+  brush.setKeepDetail(app::BrushSettings{}.keepDetail);
 
   widget.makeCurrent();
   const auto* glRenderer =
@@ -353,7 +362,7 @@ int main(int argc, char** argv) {
               widget.renderWindow()->GetMultiSamples());
   std::printf("push brush: radius %.2f of the diagonal, strength %.2f, spacing %.2f x radius; "
               "cursor on a %.0f px circle, %.0f px per frame\n\n",
-              static_cast<double>(settings.radius), static_cast<double>(settings.strength),
+              static_cast<double>(brush.radius()), static_cast<double>(brush.strength()),
               static_cast<double>(push->spacing), kCircleRadius, kStepPixels);
   std::fflush(stdout);
 

@@ -90,7 +90,7 @@ void CliSceneTest::buildAScene() {
   QCOMPARE(at(leg, "rotation", 2), 30.0f);
   QCOMPARE(at(leg, "scale", 2), 0.75f);
   QCOMPARE(leg["size"].toInt(), 8);
-  QCOMPARE(leg["width"].toInt(), 9);
+  QCOMPARE(leg["width"].toInt(), 8); // cells
   QCOMPARE(leg["topology"].toString(), QString("octahedral"));
   // The mirror across the scene's x plane: x moved, the angles about y and z turned back.
   const QJsonObject copy = objectNamed(listing, "Leg.001");

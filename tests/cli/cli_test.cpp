@@ -194,7 +194,7 @@ void CliTest::lodExports() {
 void CliTest::badArguments() {
   const QString doc = makeDoc("sphere", 16);
   const QString out = file("bad-args.exr"), mesh = file("bad-args.obj");
-  EXPECT_FAILURE(kUsage, out, "new", "--shape", "torus", "--size", "16", "-o", out);
+  EXPECT_FAILURE(kUsage, out, "new", "--shape", "klein", "--size", "16", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "3", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "0", "-o", out);
   EXPECT_FAILURE(kUsage, out, "new", "--shape", "sphere", "--size", "16384", "-o", out);

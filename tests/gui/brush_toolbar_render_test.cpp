@@ -7,6 +7,7 @@
 #include "brush_header.h"
 #include "brush_panel.h"
 #include "brush_shortcuts.h"
+#include "brush_state.h"
 #include "brush_toolbar.h"
 #include "canvas_brush_adjust.h"
 #include "main_window.h"
@@ -191,14 +192,14 @@ void BrushToolBarRenderTest::freshWindowIsOneClickAndOneDragFromAChangedSurface(
   QWidget* button = bar->widgetForAction(bar->brushAction(QStringLiteral("inflate")));
   QVERIFY(button && button->isVisible());
   QTest::mouseClick(button, Qt::LeftButton);
-  QCOMPARE(window_->brushPanel()->currentBrushId(), QStringLiteral("inflate"));
+  QCOMPARE(window_->brushState()->currentBrushId(), QStringLiteral("inflate"));
   const QPoint centre(view->width() / 2, view->height() / 2);
   drag(view, centre - QPoint(60, 0), centre + QPoint(60, 0));
   QTRY_COMPARE(window_->undoStack()->count(), 1);
 
   // The surface swelled where the drag went, visibly but like clay: the largest move is a tenth
   // to a half of the default radius (a horn or a trench would be more).
-  const float radius = window_->brushPanel()->radius() * view->modeller().modelDiagonal();
+  const float radius = window_->brushState()->radius() * view->modeller().modelDiagonal();
   const float moved = largestMove(before, positionsOf(*window_));
   qInfo("first stroke: largest move %.4f, %.2f of the radius", double(moved),
         double(moved / radius));
@@ -211,7 +212,7 @@ void BrushToolBarRenderTest::eachIconSelectsItsBrushAndFollowsTheDock() {
   QVERIFY(window_);
   auto* bar = window_->findChild<BrushToolBar*>(QStringLiteral("BrushToolBar"));
   const QStringList ids = bar->brushIds();
-  QCOMPARE(ids, window_->brushPanel()->brushIds()); // the same brushes in the same order
+  QCOMPARE(ids, window_->brushState()->brushIds()); // the same brushes in the same order
   for (const QString& id : ids) {
     QAction* action = bar->brushAction(id);
     QVERIFY(action);
@@ -220,7 +221,7 @@ void BrushToolBarRenderTest::eachIconSelectsItsBrushAndFollowsTheDock() {
     QWidget* button = bar->widgetForAction(action);
     QVERIFY(button);
     QTest::mouseClick(button, Qt::LeftButton);
-    QCOMPARE(window_->brushPanel()->currentBrushId(), id);
+    QCOMPARE(window_->brushState()->currentBrushId(), id);
     QCOMPARE(treeCurrentId(*window_), id);
     QCOMPARE(
         QString::fromStdString(window_->viewport()->modeller().brushState().settings().brushId),
@@ -234,7 +235,7 @@ void BrushToolBarRenderTest::eachIconSelectsItsBrushAndFollowsTheDock() {
                qPrintable(action->toolTip()));
   }
   // The dock leads as well: picking in its list checks the icon.
-  QVERIFY(window_->brushPanel()->selectBrush(QStringLiteral("smooth")));
+  QVERIFY(window_->brushState()->selectBrush(QStringLiteral("smooth")));
   QVERIFY(bar->brushAction(QStringLiteral("smooth"))->isChecked());
   QVERIFY(!bar->brushAction(ids.back())->isChecked());
 }
@@ -252,7 +253,7 @@ void BrushToolBarRenderTest::brushShortcutsPickBrushesAndClashWithNothing() {
   QVERIFY(activate(*window_));
   for (const auto& [key, id] : keys) {
     QTest::keyClick(view, Qt::Key(key));
-    QCOMPARE(window_->brushPanel()->currentBrushId(), id);
+    QCOMPARE(window_->brushState()->currentBrushId(), id);
   }
   // Each brush key, F and Shift+F belong to one action of the window alone.
   std::map<QString, QStringList> owners;
@@ -271,11 +272,11 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   window_ = openWindow(256);
   QVERIFY(window_);
   app::ViewportWidget* view = window_->viewport();
-  app::BrushPanel* panel = window_->brushPanel();
+  app::BrushState* brushes = window_->brushState();
   auto* adjust = window_->findChild<CanvasBrushAdjust*>(QStringLiteral("canvasBrushAdjust"));
   auto* slider = window_->findChild<QSlider*>(QStringLiteral("headerRadius"));
   QVERIFY(adjust && slider);
-  const float r0 = panel->radius();
+  const float r0 = brushes->radius();
   const QPoint centre(view->width() / 2, view->height() / 2);
   const auto hit = view->pickAt(centre);
   QVERIFY(hit);
@@ -289,7 +290,7 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::Radius);
   moveSeen(view, centre + QPoint(20, 3));
   moveSeen(view, centre + QPoint(40, 7));
-  const float r1 = panel->radius();
+  const float r1 = brushes->radius();
   QVERIFY2(
       std::abs(ringPixels(*view, hit->position, r1) - (ring0 + 40)) < 1.0,
       qPrintable(
@@ -300,7 +301,7 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   // Esc puts it back exactly; nothing was sculpted.
   QTest::keyClick(view, Qt::Key_Escape);
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
-  QCOMPARE(panel->radius(), r0);
+  QCOMPARE(brushes->radius(), r0);
   QCOMPARE(view->modeller().brushState().settings().radius, r0);
   QTRY_COMPARE(window_->undoStack()->count(), 0);
 
@@ -310,12 +311,12 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   QCOMPARE(adjust->origin(), QPointF(centre));
   const int shrink = int(ring0 / 2);
   moveSeen(view, centre - QPoint(shrink, 0));
-  const float r2 = panel->radius();
+  const float r2 = brushes->radius();
   QVERIFY2(std::abs(ringPixels(*view, hit->position, r2) - (ring0 - shrink)) < 1.0,
            qPrintable(QString::number(ringPixels(*view, hit->position, r2))));
   QTest::mouseClick(view, Qt::LeftButton, {}, centre - QPoint(shrink, 0));
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
-  QCOMPARE(panel->radius(), r2);
+  QCOMPARE(brushes->radius(), r2);
   QTRY_COMPARE(window_->undoStack()->count(), 0);
   // The next press sculpts again.
   drag(view, centre, centre + QPoint(30, 0));
@@ -329,18 +330,18 @@ void BrushToolBarRenderTest::fDragChangesTheRadiusByTheDraggedAmountAndEscRestor
   moveSeen(view, centre + QPoint(20, 0));
   QTest::mouseRelease(view, Qt::LeftButton, {}, centre + QPoint(20, 0));
   QTRY_COMPARE(window_->undoStack()->count(), 2);
-  QCOMPARE(panel->radius(), r2);
+  QCOMPARE(brushes->radius(), r2);
 }
 
 void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt() {
   window_ = openWindow(256);
   QVERIFY(window_);
   app::ViewportWidget* view = window_->viewport();
-  app::BrushPanel* panel = window_->brushPanel();
+  app::BrushState* brushes = window_->brushState();
   auto* adjust = window_->findChild<CanvasBrushAdjust*>(QStringLiteral("canvasBrushAdjust"));
   auto* slider = window_->findChild<QSlider*>(QStringLiteral("headerStrength"));
   QVERIFY(adjust && slider);
-  const float s0 = panel->strength();
+  const float s0 = brushes->strength();
   const QPoint centre(view->width() / 2, view->height() / 2);
   QVERIFY(activate(*window_));
   pointAt(view, centre);
@@ -349,9 +350,9 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   QCOMPARE(adjust->origin(), QPointF(centre));
   moveSeen(view, centre - QPoint(60, 0));
   const float expected = s0 - float(60 / CanvasBrushAdjust::kPixelsPerStrength);
-  QVERIFY2(std::abs(panel->strength() - expected) < 1e-4f,
-           qPrintable(QString("%1 vs %2").arg(panel->strength()).arg(expected)));
-  QCOMPARE(view->modeller().brushState().settings().strength, panel->strength());
+  QVERIFY2(std::abs(brushes->strength() - expected) < 1e-4f,
+           qPrintable(QString("%1 vs %2").arg(brushes->strength()).arg(expected)));
+  QCOMPARE(view->modeller().brushState().settings().strength, brushes->strength());
   QCOMPARE(slider->value(), int(std::lround(expected * 100)));
   // A right click cancels: the strength comes back and the camera did not orbit.
   double eye[3];
@@ -360,7 +361,7 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   moveSeen(view, centre + QPoint(40, 30));
   QTest::mouseRelease(view, Qt::RightButton, {}, centre + QPoint(40, 30));
   QCOMPARE(adjust->mode(), CanvasBrushAdjust::Mode::None);
-  QCOMPARE(panel->strength(), s0);
+  QCOMPARE(brushes->strength(), s0);
   double after[3];
   view->renderer()->GetActiveCamera()->GetPosition(after);
   QCOMPARE(after[0], eye[0]);
@@ -370,35 +371,35 @@ void BrushToolBarRenderTest::shiftFDragChangesTheStrengthAndRightClickRestoresIt
   QTest::keyClick(view, Qt::Key_F, Qt::ShiftModifier);
   moveSeen(view, adjust->origin().toPoint() + QPoint(320, 0)); // 107 % more
   QTest::keyClick(view, Qt::Key_Return);
-  QCOMPARE(panel->strength(), 1.0f);
+  QCOMPARE(brushes->strength(), 1.0f);
 }
 
 void BrushToolBarRenderTest::headerFollowsTheDockAndStaysWhenDocksClose() {
   window_ = openWindow(64);
   QVERIFY(window_);
-  app::BrushPanel* panel = window_->brushPanel();
+  app::BrushState* brushes = window_->brushState();
   auto* header = window_->findChild<app::BrushHeader*>(QStringLiteral("BrushHeader"));
   auto* radius = window_->findChild<QSlider*>(QStringLiteral("headerRadius"));
   auto* strength = window_->findChild<QSlider*>(QStringLiteral("headerStrength"));
   auto* mirrorX = window_->findChild<QAction*>(QStringLiteral("headerSymmetryX"));
-  auto* dockX = panel->findChild<QCheckBox*>(QStringLiteral("symmetryX"));
+  auto* dockX = window_->brushPanel()->findChild<QCheckBox*>(QStringLiteral("symmetryX"));
   QVERIFY(header && radius && strength && mirrorX && dockX);
   // Header → dock.
   radius->setValue(app::BrushHeader::radiusToPosition(0.1f));
-  QVERIFY(std::abs(panel->radius() - 0.1f) < 0.1f * 0.01f); // within the slider's 0.7 % step
+  QVERIFY(std::abs(brushes->radius() - 0.1f) < 0.1f * 0.01f); // within the slider's 0.7 % step
   strength->setValue(30);
-  QCOMPARE(panel->strength(), 0.3f);
+  QCOMPARE(brushes->strength(), 0.3f);
   mirrorX->trigger();
-  QCOMPARE(panel->settings().symmetry, 1u);
+  QCOMPARE(brushes->settings().symmetry, 1u);
   QVERIFY(dockX->isChecked());
   // Dock → header, also after switching brushes (each brush keeps its own values).
-  panel->setStrength(0.75f);
+  brushes->setStrength(0.75f);
   QCOMPARE(strength->value(), 75);
   dockX->setChecked(false);
   QVERIFY(!mirrorX->isChecked());
-  QVERIFY(panel->selectBrush(QStringLiteral("smooth")));
-  QCOMPARE(strength->value(), int(std::lround(panel->strength() * 100)));
-  QCOMPARE(radius->value(), app::BrushHeader::radiusToPosition(panel->radius()));
+  QVERIFY(brushes->selectBrush(QStringLiteral("smooth")));
+  QCOMPARE(strength->value(), int(std::lround(brushes->strength() * 100)));
+  QCOMPARE(radius->value(), app::BrushHeader::radiusToPosition(brushes->radius()));
   // Every dock closed: the header is still there, and its tool bar menu cannot hide it.
   for (QDockWidget* dock : window_->findChildren<QDockWidget*>())
     dock->close();
@@ -437,7 +438,7 @@ void BrushToolBarRenderTest::defaultStrengthPullLeavesNoCrossingTriangle() {
     QVERIFY2(count > 100, qPrintable(QString::number(count)));
     qInfo("pull, level N/%d: %lld samples moved, deepest %.4f (radius %.4f)", step,
           static_cast<long long>(count), double(largestMove(before.positions, pulled.positions)),
-          double(window_->brushPanel()->radius() * view->modeller().modelDiagonal()));
+          double(window_->brushState()->radius() * view->modeller().modelDiagonal()));
     QCOMPARE(testing::selfIntersections(pulled, changed), 0);
   }
 }

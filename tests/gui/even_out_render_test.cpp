@@ -168,9 +168,9 @@ void EvenOutRenderTest::keepDetailBoxReachesTheSessionForTheNextStroke() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 64, true));
-  QVERIFY(window_->brushPanel()->selectBrush("push"));
-  window_->brushPanel()->setRadius(0.05f);
-  window_->brushPanel()->setStrength(0.2f);
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  window_->brushState()->setRadius(0.05f);
+  window_->brushState()->setStrength(0.2f);
   auto* box = window_->brushPanel()->findChild<QCheckBox*>("keepDetail");
   QVERIFY(box);
   QVERIFY(box->isChecked());

@@ -98,7 +98,7 @@ void HelpRenderTest::cleanup() {
 
 std::unique_ptr<MainWindow> HelpRenderTest::makeWindow() {
   auto w = app::testing::openTestWindow(dir_.filePath("recovery"));
-  if (w) w->brushPanel()->selectBrush("push");
+  if (w) w->brushState()->selectBrush("push");
   return w;
 }
 

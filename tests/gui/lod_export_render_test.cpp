@@ -71,9 +71,9 @@ void LodExportRenderTest::dockExportCarriesThePaintAndATangentNormalMap() {
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   // A paint stroke across the front.
   app::ViewportWidget* view = window->viewport();
-  QVERIFY(window->brushPanel()->selectBrush("paint"));
-  window->brushPanel()->setRadius(0.15f);
-  window->brushPanel()->setStrength(1.0f);
+  QVERIFY(window->brushState()->selectBrush("paint"));
+  window->brushState()->setRadius(0.15f);
+  window->brushState()->setStrength(1.0f);
   const QPointF from(view->width() / 2.0 - 60, view->height() / 2.0);
   const QPointF to(view->width() / 2.0 + 60, view->height() / 2.0);
   QTest::mousePress(view, Qt::LeftButton, {}, from.toPoint());

@@ -99,9 +99,9 @@ void LodRenderTest::heatMapIsRedOnASharpBumpAndBlueOnSmoothClay() {
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
   app::ViewportWidget* view = window_->viewport();
   // A small, sharp bump in front of the camera, a little off centre.
-  QVERIFY(window_->brushPanel()->selectBrush("inflate"));
-  window_->brushPanel()->setRadius(0.03f);
-  window_->brushPanel()->setStrength(1.0f);
+  QVERIFY(window_->brushState()->selectBrush("inflate"));
+  window_->brushState()->setRadius(0.03f);
+  window_->brushState()->setStrength(1.0f);
   const QPointF bump(view->width() / 2.0 + 40, view->height() / 2.0 - 30);
   for (int k = 0; k < 3; ++k) {
     view->beginStrokeAt(bump);
@@ -202,9 +202,9 @@ void LodRenderTest::strokeUpdatesTheLiveLodAtItsTarget() {
   QVERIFY(before);
   const int count = static_cast<int>(generated.count());
   // A push stroke across the front of the sphere.
-  QVERIFY(window_->brushPanel()->selectBrush("push"));
-  window_->brushPanel()->setRadius(0.1f);
-  window_->brushPanel()->setStrength(0.8f);
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  window_->brushState()->setRadius(0.1f);
+  window_->brushState()->setStrength(0.8f);
   const QPointF from(view->width() / 2.0 - 60, view->height() / 2.0);
   const QPointF to(view->width() / 2.0 + 60, view->height() / 2.0);
   QTest::mousePress(view, Qt::LeftButton, {}, from.toPoint());

@@ -28,10 +28,10 @@ namespace {
 // 20 moves, released: a snake hook pulls a limb (relaxed as it goes and at its end), a push
 // raises a ridge (relaxed at its end alone).
 void pullWithTheMouse(MainWindow& w, const QString& brush = "snake_hook") {
-  w.brushPanel()->selectBrush(brush);
-  w.brushPanel()->setRadius(0.08f);
-  w.brushPanel()->setStrength(1.0f);
-  w.brushPanel()->setKeepDetail(true);
+  w.brushState()->selectBrush(brush);
+  w.brushState()->setRadius(0.08f);
+  w.brushState()->setStrength(1.0f);
+  w.brushState()->setKeepDetail(true);
   QWidget* view = w.viewport();
   const QPoint from(view->width() / 2, view->height() / 2);
   const QPoint to = from + QPoint(int(view->width() * 0.45), -view->height() / 10);

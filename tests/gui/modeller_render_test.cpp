@@ -104,16 +104,16 @@ void ModellerRenderTest::cleanup() {
 
 std::unique_ptr<MainWindow> ModellerRenderTest::makeWindow(MainWindow::Options options) {
   auto w = app::testing::openTestWindow(dir_.filePath("recovery"), std::move(options));
-  if (w) w->brushPanel()->selectBrush("push");
+  if (w) w->brushState()->selectBrush("push");
   return w;
 }
 
 // A stroke as the mouse makes it: press, moves in small steps, release.
 void ModellerRenderTest::stroke(MainWindow& w, const QString& brush, float radius, float strength,
                                 QPointF from, QPointF to) {
-  QVERIFY(w.brushPanel()->selectBrush(brush));
-  w.brushPanel()->setRadius(radius);
-  w.brushPanel()->setStrength(strength);
+  QVERIFY(w.brushState()->selectBrush(brush));
+  w.brushState()->setRadius(radius);
+  w.brushState()->setStrength(strength);
   QWidget* view = w.viewport();
   QTest::mousePress(view, Qt::LeftButton, {}, from.toPoint());
   for (int k = 1; k <= 10; ++k)
@@ -217,9 +217,9 @@ void ModellerRenderTest::fineBumpShowsInTheShadingAtLevelEighth() {
   QCOMPARE(view->stats().displayedTriangles, 2LL * 128 * 128);
   const QImage plain = view->grabFramebuffer();
   // One dab of a bump 1 % of the diagonal wide: about 9 samples of N = 1024, 1 displayed cell.
-  QVERIFY(window_->brushPanel()->selectBrush("inflate"));
-  window_->brushPanel()->setRadius(0.01f);
-  window_->brushPanel()->setStrength(1.0f);
+  QVERIFY(window_->brushState()->selectBrush("inflate"));
+  window_->brushState()->setRadius(0.01f);
+  window_->brushState()->setStrength(1.0f);
   const QPointF centre(view->width() / 2.0 + 15, view->height() / 2.0 - 10);
   for (int k = 0; k < 4; ++k) { // four dabs in place: a bump about a third as high as wide
     view->beginStrokeAt(centre);
@@ -266,9 +266,9 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
     const auto p = view->modeller().document().positions.at(hit->sample.i, hit->sample.j);
     return core::length(core::Vec3f{p.x, p.y, p.z});
   };
-  QVERIFY(window_->brushPanel()->selectBrush("push"));
-  window_->brushPanel()->setRadius(0.05f);
-  window_->brushPanel()->setStrength(1.0f);
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  window_->brushState()->setRadius(0.05f);
+  window_->brushState()->setStrength(1.0f);
   auto click = [&](Qt::KeyboardModifiers mods) {
     QTest::mousePress(view, Qt::LeftButton, mods, centre);
     QTest::mouseRelease(view, Qt::LeftButton, mods, centre);
@@ -293,23 +293,23 @@ void ModellerRenderTest::modifiersKeysAndPenPressureShapeTheStroke() {
   QVERIFY(radial() <= bumped); // smoothing never lifts a bump's top
 
   // [ and ] scale the radius, Shift+[ and Shift+] the strength.
-  const float radius = window_->brushPanel()->radius();
+  const float radius = window_->brushState()->radius();
   QTest::keyClick(view, Qt::Key_BracketRight);
-  QVERIFY(std::abs(window_->brushPanel()->radius() - radius * 1.1f) < 1e-3f);
+  QVERIFY(std::abs(window_->brushState()->radius() - radius * 1.1f) < 1e-3f);
   QTest::keyClick(view, Qt::Key_BracketLeft);
   QTest::keyClick(view, Qt::Key_BracketLeft);
-  QVERIFY(window_->brushPanel()->radius() < radius);
-  window_->brushPanel()->setStrength(0.5f);
-  const float strength = window_->brushPanel()->strength();
+  QVERIFY(window_->brushState()->radius() < radius);
+  window_->brushState()->setStrength(0.5f);
+  const float strength = window_->brushState()->strength();
   QTest::keyClick(view, Qt::Key_BraceRight, Qt::ShiftModifier);
-  QVERIFY(std::abs(window_->brushPanel()->strength() - strength * 1.1f) < 1e-3f);
+  QVERIFY(std::abs(window_->brushState()->strength() - strength * 1.1f) < 1e-3f);
   QTest::keyClick(view, Qt::Key_BracketLeft, Qt::ShiftModifier);
-  QVERIFY(std::abs(window_->brushPanel()->strength() - strength) < 1e-3f);
+  QVERIFY(std::abs(window_->brushState()->strength() - strength) < 1e-3f);
 
   // Pen pressure scales strength: a dab at pressure 0.25 moves a quarter as far.
-  window_->brushPanel()->setRadius(0.05f);
-  window_->brushPanel()->setStrength(1.0f);
-  window_->brushPanel()->setPressureTarget(app::PressureTarget::Strength);
+  window_->brushState()->setRadius(0.05f);
+  window_->brushState()->setStrength(1.0f);
+  window_->brushState()->setPressureTarget(app::PressureTarget::Strength);
   auto penDab = [&](qreal pressure) {
     const QPointingDevice* pen = QPointingDevice::primaryPointingDevice();
     QTabletEvent press(QEvent::TabletPress, pen, QPointF(centre), QPointF(centre), pressure, 0, 0,
@@ -348,9 +348,9 @@ void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer(
 
   // More shine: the headlight's highlight at the centre brightens where specular was raised.
   // (radius and strength are remembered per brush: set them after choosing it)
-  QVERIFY(window_->brushPanel()->selectBrush("paint-specular"));
-  window_->brushPanel()->setRadius(0.06f);
-  window_->brushPanel()->setStrength(1.0f);
+  QVERIFY(window_->brushState()->selectBrush("paint-specular"));
+  window_->brushState()->setRadius(0.06f);
+  window_->brushState()->setStrength(1.0f);
   view->beginStrokeAt(centre);
   view->endStroke();
   QVERIFY2(lum(grab(), centre) > lum(plain, centre) + 5,
@@ -359,9 +359,9 @@ void ModellerRenderTest::shineReflectionAndChannelPreviewsFollowTheFeatureLayer(
   QCOMPARE(grab().pixel(centre), plain.pixel(centre));
 
   // Full reflectivity at the centre: the environment shows there, nowhere else.
-  QVERIFY(window_->brushPanel()->selectBrush("paint-reflectivity"));
-  window_->brushPanel()->setRadius(0.06f);
-  window_->brushPanel()->setStrength(1.0f);
+  QVERIFY(window_->brushState()->selectBrush("paint-reflectivity"));
+  window_->brushState()->setRadius(0.06f);
+  window_->brushState()->setStrength(1.0f);
   view->beginStrokeAt(centre);
   view->endStroke();
   const QImage reflective = grab();
@@ -455,9 +455,9 @@ void ModellerRenderTest::otherPressesDuringAStrokeLeaveItWhole() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
-  QVERIFY(window_->brushPanel()->selectBrush("push"));
-  window_->brushPanel()->setRadius(0.1f);
-  window_->brushPanel()->setStrength(0.5f);
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  window_->brushState()->setRadius(0.1f);
+  window_->brushState()->setStrength(0.5f);
   app::ViewportWidget* view = window_->viewport();
   const std::vector<float> before = positionsOf(*window_);
   const QPoint from(view->width() / 2 - 30, view->height() / 2);
@@ -494,14 +494,14 @@ void ModellerRenderTest::splatLaysMaterialInOneStroke() {
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 256, true));
   QVERIFY(window_->viewport()->modeller().materialIds().contains("brick"));
-  QVERIFY(window_->brushPanel()->selectBrush("splat"));
+  QVERIFY(window_->brushState()->selectBrush("splat"));
   QVERIFY(qobject_cast<QComboBox*>(window_->brushPanel()->parameterWidget("material")));
   app::ViewportWidget* view = window_->viewport();
   const std::vector<float> before = positionsOf(*window_);
   // Mid-stroke the paint is only on the GPU (read back at the stroke's end); the document the
   // window saves or autosaves must hold it already.
-  window_->brushPanel()->setRadius(0.08f);
-  window_->brushPanel()->setStrength(1.0f);
+  window_->brushState()->setRadius(0.08f);
+  window_->brushState()->setStrength(1.0f);
   const QPoint from(view->width() / 2 - 40, view->height() / 2);
   QTest::mousePress(view, Qt::LeftButton, {}, from);
   for (int k = 1; k <= 5; ++k)
@@ -534,7 +534,7 @@ void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {
   window_ = makeWindow();
   QVERIFY(window_);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 128, true));
-  QVERIFY(!window_->brushPanel()->brushIds().contains("test-ridge"));
+  QVERIFY(!window_->brushState()->brushIds().contains("test-ridge"));
   const std::filesystem::path source =
       std::filesystem::path(OCTACLAY_SOURCE_DIR) / "plugins/examples/template-brush";
   const std::filesystem::path target = std::filesystem::path(pluginDir_.toStdString()) / "ridge";
@@ -546,12 +546,12 @@ void ModellerRenderTest::pluginDroppedInAtRunTimeAppearsWithItsForm() {
   std::ofstream(target / "manifest.json") << manifest;
 
   // The window polls the brush folders once a second.
-  QTRY_VERIFY_WITH_TIMEOUT(window_->brushPanel()->brushIds().contains("test-ridge"), 8000);
-  QVERIFY(window_->brushPanel()->selectBrush("test-ridge"));
+  QTRY_VERIFY_WITH_TIMEOUT(window_->brushState()->brushIds().contains("test-ridge"), 8000);
+  QVERIFY(window_->brushState()->selectBrush("test-ridge"));
   QWidget* height = window_->brushPanel()->parameterWidget("height");
   QVERIFY(height);
   QCOMPARE(height->metaObject()->className(), "QDoubleSpinBox");
-  QCOMPARE(window_->brushPanel()->settings().brushId, std::string("test-ridge"));
+  QCOMPARE(window_->brushState()->settings().brushId, std::string("test-ridge"));
   // And it sculpts.
   const std::vector<float> before = positionsOf(*window_);
   app::ViewportWidget* view = window_->viewport();
@@ -575,7 +575,7 @@ void ModellerRenderTest::strokeWithANonFiniteResultIsUndoneWithAMessage() {
   std::ofstream(target / "manifest.json")
       << R"({"id": "test-nan", "name": "NaN", "api": 1, "shader": "brush.glsl",
              "writes": ["positions"], "area": "volume", "falloff": "constant"})";
-  QTRY_VERIFY_WITH_TIMEOUT(window_->brushPanel()->brushIds().contains("test-nan"), 8000);
+  QTRY_VERIFY_WITH_TIMEOUT(window_->brushState()->brushIds().contains("test-nan"), 8000);
   const std::vector<float> before = positionsOf(*window_);
   app::ViewportWidget* view = window_->viewport();
   const QPointF centre(view->width() / 2.0, view->height() / 2.0);

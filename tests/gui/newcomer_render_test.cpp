@@ -127,7 +127,7 @@ void NewcomerRenderTest::cleanup() {
 
 std::unique_ptr<MainWindow> NewcomerRenderTest::makeWindow() {
   auto w = app::testing::openTestWindow(dir_.filePath("recovery"));
-  if (w) w->brushPanel()->selectBrush("push");
+  if (w) w->brushState()->selectBrush("push");
   return w;
 }
 

@@ -4,11 +4,15 @@
 // panel (QSettings, redirected to a temporary folder), load errors are shown in full, and the
 // layers and level panels keep and persist their choices.
 
+#include "brush_list.h"
 #include "brush_panel.h"
+#include "brush_state.h"
+#include "color_button.h"
 #include "layers_panel.h"
 #include "lod_panel.h"
 
 #include "octaclay/gpu/brush_manifest.h"
+#include "octaclay/gpu/stroke.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -88,8 +92,8 @@ bool nearlyEqual(const std::array<float, 4>& a, const std::array<float, 4>& b) {
   return true;
 }
 
-std::array<float, 4> parameterOf(const BrushPanel& panel, const std::string& id) {
-  const BrushSettings s = panel.settings();
+std::array<float, 4> parameterOf(const BrushState& state, const std::string& id) {
+  const BrushSettings s = state.settings();
   const auto it = s.parameters.find(id);
   return it != s.parameters.end() ? it->second : std::array<float, 4>{-1, -1, -1, -1};
 }
@@ -127,12 +131,13 @@ private slots:
   }
 
   void listsEveryBrushGroupedByCategory() {
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
     QStringList expected;
     for (const gpu::BrushManifest& b : brushes_)
       expected.append(QString::fromStdString(b.id));
-    QStringList listed = panel.brushIds();
+    QStringList listed = state.brushIds();
     listed.sort();
     expected.sort();
     QCOMPARE(listed, expected);
@@ -153,52 +158,95 @@ private slots:
     QCOMPARE(list->topLevelItem(1)->child(1)->data(0, Qt::UserRole).toString(),
              QStringLiteral("paint"));
 
-    QCOMPARE(panel.currentBrushId(), QStringLiteral("push"));
-    QCOMPARE(panel.settings().brushId, std::string("push"));
+    QCOMPARE(state.currentBrushId(), QStringLiteral("push"));
+    QCOMPARE(state.settings().brushId, std::string("push"));
     QVERIFY(!panel.findChild<QWidget*>(QStringLiteral("brushErrors"))->isVisibleTo(&panel));
 
     // Without push the first listed brush is chosen; a brush that stays keeps its selection.
     std::vector<gpu::BrushManifest> noPush;
     for (const gpu::BrushManifest& b : brushes_)
       if (b.id != "push") noPush.push_back(b);
-    QVERIFY(panel.selectBrush(QStringLiteral("smooth")));
-    panel.setBrushes(noPush, {});
-    QCOMPARE(panel.currentBrushId(), QStringLiteral("smooth"));
-    BrushPanel fresh;
-    fresh.setBrushes(noPush, {});
-    QCOMPARE(fresh.currentBrushId(), fresh.brushIds().front());
-    QCOMPARE(fresh.currentBrushId(), QStringLiteral("clay-strips")); // the first sculpt brush by id
+    QVERIFY(state.selectBrush(QStringLiteral("smooth")));
+    state.setBrushes(noPush, {});
+    QCOMPARE(state.currentBrushId(), QStringLiteral("smooth"));
+    BrushState freshState;
+    BrushPanel fresh(freshState);
+    freshState.setBrushes(noPush, {});
+    QCOMPARE(freshState.currentBrushId(), freshState.brushIds().front());
+    QCOMPARE(freshState.currentBrushId(),
+             QStringLiteral("clay-strips")); // the first sculpt brush by id
+  }
+
+  // The dock holds no values of its own: two docks viewing one state show every edit of either,
+  // and a value set on the state (as the header, F-adjust and [ / ] do) shows in both.
+  void theDockIsAViewOfTheBrushState() {
+    BrushState state;
+    BrushPanel left(state), right(state);
+    state.setRadiusUnit(RadiusUnit::Scene);
+    state.setBrushes(brushes_, {});
+    QVERIFY(state.selectBrush(QStringLiteral("smooth")));
+    const auto strengthOf = [](const BrushPanel& panel) {
+      return panel.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->value();
+    };
+    const auto currentOf = [](const BrushPanel& panel) {
+      const auto* list = panel.findChild<QTreeWidget*>(QStringLiteral("brushList"));
+      return list->currentItem() ? list->currentItem()->data(0, kBrushIdRole).toString()
+                                 : QString();
+    };
+    QCOMPARE(currentOf(left), QStringLiteral("smooth"));
+    QCOMPARE(currentOf(right), QStringLiteral("smooth"));
+
+    left.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->setValue(40.0);
+    QCOMPARE(state.strength(), 0.4f);
+    QCOMPARE(strengthOf(right), 40.0);
+
+    state.setStrength(0.65f);
+    QCOMPARE(strengthOf(left), 65.0);
+    QCOMPARE(strengthOf(right), 65.0);
+
+    right.findChild<QCheckBox*>(QStringLiteral("symmetryY"))->setChecked(true);
+    QCOMPARE(state.settings().symmetry, unsigned(gpu::kSymmetryY));
+    QVERIFY(left.findChild<QCheckBox*>(QStringLiteral("symmetryY"))->isChecked());
+
+    const auto* list = right.findChild<QTreeWidget*>(QStringLiteral("brushList"));
+    for (QTreeWidgetItemIterator it(const_cast<QTreeWidget*>(list)); *it; ++it)
+      if ((*it)->data(0, kBrushIdRole).toString() == QStringLiteral("inflate"))
+        const_cast<QTreeWidget*>(list)->setCurrentItem(*it);
+    QCOMPARE(state.currentBrushId(), QStringLiteral("inflate"));
+    QCOMPARE(currentOf(left), QStringLiteral("inflate"));
   }
 
   void selectingInTheListChangesTheBrush() {
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
-    QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
+    QSignalSpy changed(&state, &BrushState::changed);
     auto* list = panel.findChild<QTreeWidget*>(QStringLiteral("brushList"));
     const QList<QTreeWidgetItem*> items =
         list->findItems(QStringLiteral("Mask"), Qt::MatchExactly | Qt::MatchRecursive);
     QCOMPARE(items.size(), 1);
     list->setCurrentItem(items.front());
-    QCOMPARE(panel.currentBrushId(), QStringLiteral("mask"));
+    QCOMPARE(state.currentBrushId(), QStringLiteral("mask"));
     QCOMPARE(changed.count(), 1);
     QVERIFY(qobject_cast<QComboBox*>(panel.parameterWidget(QStringLiteral("mode"))));
 
-    QVERIFY(!panel.selectBrush(QStringLiteral("no-such-brush")));
-    QCOMPARE(panel.currentBrushId(), QStringLiteral("mask"));
+    QVERIFY(!state.selectBrush(QStringLiteral("no-such-brush")));
+    QCOMPARE(state.currentBrushId(), QStringLiteral("mask"));
     QCOMPARE(changed.count(), 1);
   }
 
   void paintBrushGetsAColourWidget() {
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
     QVERIFY(!panel.parameterWidget(QStringLiteral("color")));
-    QVERIFY(panel.selectBrush(QStringLiteral("paint")));
+    QVERIFY(state.selectBrush(QStringLiteral("paint")));
     auto* button = qobject_cast<ColorButton*>(panel.parameterWidget(QStringLiteral("color")));
     QVERIFY(button);
     QCOMPARE(button->toolTip(), QStringLiteral("The colour laid down at full strength"));
     QVERIFY(std::abs(button->color().redF() - 0.8f) < 1e-3f);
     QVERIFY(std::abs(button->color().greenF() - 0.2f) < 1e-3f);
-    QVERIFY(nearlyEqual(parameterOf(panel, "color"), {0.8f, 0.2f, 0.1f, 1.0f}));
+    QVERIFY(nearlyEqual(parameterOf(state, "color"), {0.8f, 0.2f, 0.1f, 1.0f}));
     // Its row is labelled with the manifest's label.
     bool labelled = false;
     for (const QLabel* label : panel.findChildren<QLabel*>())
@@ -207,11 +255,11 @@ private slots:
     QVERIFY(labelled);
 
     // The manifest's area and falloff are the starting values.
-    QCOMPARE(panel.settings().area, gpu::AreaMode::Volume);
-    QVERIFY(panel.selectBrush(QStringLiteral("flatten")));
-    QCOMPARE(panel.settings().area, gpu::AreaMode::VolumeNormal);
-    QVERIFY(panel.selectBrush(QStringLiteral("sphere-add")));
-    QCOMPARE(panel.settings().falloff, gpu::Falloff::Constant);
+    QCOMPARE(state.settings().area, gpu::AreaMode::Volume);
+    QVERIFY(state.selectBrush(QStringLiteral("flatten")));
+    QCOMPARE(state.settings().area, gpu::AreaMode::VolumeNormal);
+    QVERIFY(state.selectBrush(QStringLiteral("sphere-add")));
+    QCOMPARE(state.settings().falloff, gpu::Falloff::Constant);
     auto* falloff = panel.findChild<QComboBox*>(QStringLiteral("falloff"));
     QVERIFY(falloff);
     QCOMPARE(falloff->count(), 3); // no curve without a falloffCurve
@@ -223,9 +271,10 @@ private slots:
     QVERIFY(dir.isValid());
     std::vector<gpu::BrushManifest> brushes = brushes_;
     brushes.push_back(writeAndParse(dir, kEveryTypeManifest));
-    BrushPanel panel;
-    panel.setBrushes(brushes, {});
-    QVERIFY(panel.selectBrush(QStringLiteral("every-type")));
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes, {});
+    QVERIFY(state.selectBrush(QStringLiteral("every-type")));
 
     auto* depth = qobject_cast<QDoubleSpinBox*>(panel.parameterWidget(QStringLiteral("depth")));
     QVERIFY(depth);
@@ -261,30 +310,31 @@ private slots:
     QCOMPARE(list->topLevelItem(2)->text(0), QStringLiteral("Splat"));
     auto* falloff = panel.findChild<QComboBox*>(QStringLiteral("falloff"));
     QCOMPARE(falloff->count(), 4);
-    QCOMPARE(panel.settings().falloff, gpu::Falloff::Curve);
-    QCOMPARE(panel.settings().area, gpu::AreaMode::Uv);
+    QCOMPARE(state.settings().falloff, gpu::Falloff::Curve);
+    QCOMPARE(state.settings().area, gpu::AreaMode::Uv);
 
     // Each widget writes its parameter.
-    QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+    QSignalSpy changed(&state, &BrushState::changed);
     depth->setValue(-1.25);
-    QCOMPARE(parameterOf(panel, "depth")[0], -1.25f);
+    QCOMPARE(parameterOf(state, "depth")[0], -1.25f);
     count->setValue(7);
-    QCOMPARE(parameterOf(panel, "count")[0], 7.0f);
+    QCOMPARE(parameterOf(state, "count")[0], 7.0f);
     invert->setChecked(false);
-    QCOMPARE(parameterOf(panel, "invert")[0], 0.0f);
+    QCOMPARE(parameterOf(state, "invert")[0], 0.0f);
     tint->setColor(QColor::fromRgbF(0.25f, 0.5f, 0.75f, 0.5f));
-    QVERIFY(nearlyEqual(parameterOf(panel, "tint"), {0.25f, 0.5f, 0.75f, 0.5f}));
+    QVERIFY(nearlyEqual(parameterOf(state, "tint"), {0.25f, 0.5f, 0.75f, 0.5f}));
     mode->setCurrentIndex(2);
-    QCOMPARE(parameterOf(panel, "mode")[0], 2.0f);
+    QCOMPARE(parameterOf(state, "mode")[0], 2.0f);
     falloff->setCurrentIndex(falloff->findData(static_cast<int>(gpu::Falloff::Linear)));
-    QCOMPARE(panel.settings().falloff, gpu::Falloff::Linear);
+    QCOMPARE(state.settings().falloff, gpu::Falloff::Linear);
     QCOMPARE(changed.count(), 6);
 
     // And a new panel reads them all back from QSettings.
-    BrushPanel again;
-    again.setBrushes(brushes, {});
-    QVERIFY(again.selectBrush(QStringLiteral("every-type")));
-    const BrushSettings s = again.settings();
+    BrushState againState;
+    BrushPanel again(againState);
+    againState.setBrushes(brushes, {});
+    QVERIFY(againState.selectBrush(QStringLiteral("every-type")));
+    const BrushSettings s = againState.settings();
     QCOMPARE(s.parameters.at("depth")[0], -1.25f);
     QCOMPARE(s.parameters.at("count")[0], 7.0f);
     QCOMPARE(s.parameters.at("invert")[0], 0.0f);
@@ -304,10 +354,11 @@ private slots:
       settings.setValue(QStringLiteral("brushes/mask/parameters/mode"), QStringLiteral("erase"));
       settings.setValue(QStringLiteral("brushes/mask/parameters/gone"), 3.0);
     }
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
-    QVERIFY(panel.selectBrush(QStringLiteral("mask")));
-    const BrushSettings s = panel.settings();
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
+    QVERIFY(state.selectBrush(QStringLiteral("mask")));
+    const BrushSettings s = state.settings();
     QCOMPARE(s.radius, 1.0f);                  // clamped
     QCOMPARE(s.falloff, gpu::Falloff::Smooth); // no curve in this manifest: its own falloff
     QCOMPARE(s.area, gpu::AreaMode::Uv);
@@ -317,49 +368,52 @@ private slots:
 
   void valuesSurviveSwitchingBrushesAndANewPanel() {
     {
-      BrushPanel panel;
-      panel.setBrushes(brushes_, {});
-      QVERIFY(panel.selectBrush(QStringLiteral("paint")));
+      BrushState state;
+      BrushPanel panel(state);
+      state.setBrushes(brushes_, {});
+      QVERIFY(state.selectBrush(QStringLiteral("paint")));
       qobject_cast<ColorButton*>(panel.parameterWidget(QStringLiteral("color")))
           ->setColor(QColor::fromRgbF(0.1f, 0.9f, 0.3f, 1.0f));
-      panel.setStrength(0.8f);
-      QVERIFY(panel.selectBrush(QStringLiteral("push")));
-      QCOMPARE(panel.strength(), kDefaultSculptStrength); // push keeps its own
-      panel.setRadius(0.2f);
-      QVERIFY(panel.selectBrush(QStringLiteral("paint")));
-      QCOMPARE(panel.strength(), 0.8f);
-      QCOMPARE(panel.radius(), 0.05f);
-      QVERIFY(nearlyEqual(parameterOf(panel, "color"), {0.1f, 0.9f, 0.3f, 1.0f}));
+      state.setStrength(0.8f);
+      QVERIFY(state.selectBrush(QStringLiteral("push")));
+      QCOMPARE(state.strength(), kDefaultSculptStrength); // push keeps its own
+      state.setRadius(0.2f);
+      QVERIFY(state.selectBrush(QStringLiteral("paint")));
+      QCOMPARE(state.strength(), 0.8f);
+      QCOMPARE(state.radius(), 0.05f);
+      QVERIFY(nearlyEqual(parameterOf(state, "color"), {0.1f, 0.9f, 0.3f, 1.0f}));
       auto* button = qobject_cast<ColorButton*>(panel.parameterWidget(QStringLiteral("color")));
       QVERIFY(std::abs(button->color().greenF() - 0.9f) < 1e-3f);
       QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->value(), 80.0);
       // Reloading the same brushes keeps what the panel remembers and the current brush.
-      panel.setBrushes(brushes_, {});
-      QCOMPARE(panel.currentBrushId(), QStringLiteral("paint"));
-      QCOMPARE(panel.strength(), 0.8f);
+      state.setBrushes(brushes_, {});
+      QCOMPARE(state.currentBrushId(), QStringLiteral("paint"));
+      QCOMPARE(state.strength(), 0.8f);
     }
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
-    QCOMPARE(panel.radius(), 0.2f); // push, selected by default
-    QVERIFY(panel.selectBrush(QStringLiteral("paint")));
-    QCOMPARE(panel.strength(), 0.8f);
-    QVERIFY(nearlyEqual(parameterOf(panel, "color"), {0.1f, 0.9f, 0.3f, 1.0f}));
-    QVERIFY(panel.selectBrush(QStringLiteral("smooth")));
-    QCOMPARE(panel.radius(), 0.05f);
-    QCOMPARE(panel.strength(), kDefaultSculptStrength);
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
+    QCOMPARE(state.radius(), 0.2f); // push, selected by default
+    QVERIFY(state.selectBrush(QStringLiteral("paint")));
+    QCOMPARE(state.strength(), 0.8f);
+    QVERIFY(nearlyEqual(parameterOf(state, "color"), {0.1f, 0.9f, 0.3f, 1.0f}));
+    QVERIFY(state.selectBrush(QStringLiteral("smooth")));
+    QCOMPARE(state.radius(), 0.05f);
+    QCOMPARE(state.strength(), kDefaultSculptStrength);
   }
 
   void draggingBrushesStartAtFullStrength() {
     QSettings().clear();
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
     for (const char* id : {"snake-hook", "grab"}) {
-      QVERIFY(panel.selectBrush(QString::fromLatin1(id)));
-      QCOMPARE(panel.strength(), 1.0f);
+      QVERIFY(state.selectBrush(QString::fromLatin1(id)));
+      QCOMPARE(state.strength(), 1.0f);
       QCOMPARE(panel.findChild<QDoubleSpinBox*>(QStringLiteral("strength"))->value(), 100.0);
     }
-    QVERIFY(panel.selectBrush(QStringLiteral("crease")));
-    QCOMPARE(panel.strength(), kDefaultSculptStrength);
+    QVERIFY(state.selectBrush(QStringLiteral("crease")));
+    QCOMPARE(state.strength(), kDefaultSculptStrength);
   }
 
   void errorsAreShownInFull() {
@@ -367,8 +421,9 @@ private slots:
         "/home/someone/.local/share/octaclay/brushes/very-long-folder-name/manifest.json: "
         "parameters[2].type: unknown type \"vector\" (use float, int, bool, color or enum)";
     const std::string otherError = "/x/broken/manifest.json: invalid JSON at byte 17, line 2";
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {longError, otherError});
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {longError, otherError});
     auto* frame = panel.findChild<QWidget*>(QStringLiteral("brushErrors"));
     QVERIFY(frame);
     QVERIFY(frame->isVisibleTo(&panel));
@@ -383,55 +438,56 @@ private slots:
     }
     QCOMPARE(shown,
              (QStringList{QString::fromStdString(longError), QString::fromStdString(otherError)}));
-    QCOMPARE(panel.errors(), shown);
-    QCOMPARE(panel.brushIds().size(), static_cast<qsizetype>(brushes_.size()));
+    QCOMPARE(state.errors(), shown);
+    QCOMPARE(state.brushIds().size(), static_cast<qsizetype>(brushes_.size()));
 
-    panel.setBrushes(brushes_, {});
+    state.setBrushes(brushes_, {});
     QVERIFY(!frame->isVisibleTo(&panel));
     QVERIFY(panel.findChildren<QLabel*>(QStringLiteral("brushError")).isEmpty());
 
     // Only errors: still shown, and the form says there is no brush.
-    panel.setBrushes({}, {otherError});
+    state.setBrushes({}, {otherError});
     QVERIFY(frame->isVisibleTo(&panel));
-    QVERIFY(panel.currentBrushId().isEmpty());
-    QVERIFY(panel.settings().brushId.empty());
+    QVERIFY(state.currentBrushId().isEmpty());
+    QVERIFY(state.settings().brushId.empty());
   }
 
   void setRadiusAndStrengthClampAndSignal() {
-    BrushPanel panel;
-    panel.setBrushes(brushes_, {});
-    panel.setRadiusUnit(RadiusUnit::Scene); // the spin box in percent of the diagonal
-    QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+    BrushState state;
+    BrushPanel panel(state);
+    state.setBrushes(brushes_, {});
+    state.setRadiusUnit(RadiusUnit::Scene); // the spin box in percent of the diagonal
+    QSignalSpy changed(&state, &BrushState::changed);
     auto* radiusSpin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radius"));
     QVERIFY(radiusSpin);
 
-    panel.setRadius(5.0f);
-    QCOMPARE(panel.radius(), 1.0f);
-    QCOMPARE(panel.settings().radius, 1.0f);
+    state.setRadius(5.0f);
+    QCOMPARE(state.radius(), 1.0f);
+    QCOMPARE(state.settings().radius, 1.0f);
     QCOMPARE(radiusSpin->value(), 100.0);
     QCOMPARE(changed.count(), 1);
 
-    panel.setRadius(0.0f);
-    QCOMPARE(panel.radius(), 0.001f);
+    state.setRadius(0.0f);
+    QCOMPARE(state.radius(), 0.001f);
     QCOMPARE(radiusSpin->value(), 0.1);
     QCOMPARE(changed.count(), 2);
 
-    panel.setRadius(0.125f);
-    QCOMPARE(panel.radius(), 0.125f);
+    state.setRadius(0.125f);
+    QCOMPARE(state.radius(), 0.125f);
     QCOMPARE(radiusSpin->value(), 12.5);
     QCOMPARE(changed.count(), 3);
-    panel.setRadius(0.125f); // unchanged: no signal
+    state.setRadius(0.125f); // unchanged: no signal
     QCOMPARE(changed.count(), 3);
 
-    panel.setStrength(-1.0f);
-    QCOMPARE(panel.strength(), 0.0f);
-    panel.setStrength(2.0f);
-    QCOMPARE(panel.strength(), 1.0f);
+    state.setStrength(-1.0f);
+    QCOMPARE(state.strength(), 0.0f);
+    state.setStrength(2.0f);
+    QCOMPARE(state.strength(), 1.0f);
     QCOMPARE(changed.count(), 5);
 
     // Editing the spin box is the same as the setter.
     radiusSpin->setValue(30.0);
-    QCOMPARE(panel.radius(), 0.3f);
+    QCOMPARE(state.radius(), 0.3f);
     QCOMPARE(changed.count(), 6);
   }
 
@@ -440,43 +496,45 @@ private slots:
   // stored values keeps the diagonal's unit they had.
   void radiusUnitIsTheViewForANewUserAndKept() {
     {
-      BrushPanel panel;
-      panel.setBrushes(brushes_, {});
-      QCOMPARE(panel.radiusUnit(), RadiusUnit::View);
-      QCOMPARE(panel.settings().radiusUnit, RadiusUnit::View);
-      QCOMPARE(panel.settings().radiusPixels, kDefaultRadiusPixels);
+      BrushState state;
+      BrushPanel panel(state);
+      state.setBrushes(brushes_, {});
+      QCOMPARE(state.radiusUnit(), RadiusUnit::View);
+      QCOMPARE(state.settings().radiusUnit, RadiusUnit::View);
+      QCOMPARE(state.settings().radiusPixels, kDefaultRadiusPixels);
       auto* spin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("radius"));
       auto* unit = panel.findChild<QComboBox*>(QStringLiteral("radiusUnit"));
       QVERIFY(spin && unit);
       QCOMPARE(spin->value(), double(kDefaultRadiusPixels));
       QCOMPARE(spin->suffix(), QStringLiteral(" px"));
-      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      QSignalSpy changed(&state, &BrushState::changed);
       spin->setValue(55.0); // typed: the view radius
-      QCOMPARE(panel.radiusPixels(), 55.0f);
-      QCOMPARE(panel.radius(), 0.05f);
-      panel.setRadiusInUnit(5000.0f); // clamped
-      QCOMPARE(panel.radiusPixels(), kMaxRadiusPixels);
-      panel.setRadiusInUnit(0.0f);
-      QCOMPARE(panel.radiusPixels(), kMinRadiusPixels);
-      panel.setRadiusPixels(55.0f);
+      QCOMPARE(state.radiusPixels(), 55.0f);
+      QCOMPARE(state.radius(), 0.05f);
+      state.setRadiusInUnit(5000.0f); // clamped
+      QCOMPARE(state.radiusPixels(), kMaxRadiusPixels);
+      state.setRadiusInUnit(0.0f);
+      QCOMPARE(state.radiusPixels(), kMinRadiusPixels);
+      state.setRadiusPixels(55.0f);
       QCOMPARE(changed.count(), 4);
       // The unit chosen beside the radius: the spin box then shows percent.
       unit->setCurrentIndex(unit->findData(static_cast<int>(RadiusUnit::Scene)));
-      QCOMPARE(panel.radiusUnit(), RadiusUnit::Scene);
+      QCOMPARE(state.radiusUnit(), RadiusUnit::Scene);
       QCOMPARE(changed.count(), 5);
       QCOMPARE(spin->suffix(), QStringLiteral(" %"));
       QCOMPARE(spin->value(), 5.0);
-      QCOMPARE(panel.radiusInUnit(), 0.05f);
-      QVERIFY(panel.selectBrush(QStringLiteral("paint"))); // shared by every brush
-      QCOMPARE(panel.settings().radiusUnit, RadiusUnit::Scene);
+      QCOMPARE(state.radiusInUnit(), 0.05f);
+      QVERIFY(state.selectBrush(QStringLiteral("paint"))); // shared by every brush
+      QCOMPARE(state.settings().radiusUnit, RadiusUnit::Scene);
     }
     {
-      BrushPanel panel; // a new start reads both back
-      panel.setBrushes(brushes_, {});
-      QVERIFY(panel.selectBrush(QStringLiteral("push")));
-      QCOMPARE(panel.radiusUnit(), RadiusUnit::Scene);
-      QCOMPARE(panel.radiusPixels(), 55.0f);
-      panel.setRadiusUnit(RadiusUnit::View);
+      BrushState state;
+      BrushPanel panel(state); // a new start reads both back
+      state.setBrushes(brushes_, {});
+      QVERIFY(state.selectBrush(QStringLiteral("push")));
+      QCOMPARE(state.radiusUnit(), RadiusUnit::Scene);
+      QCOMPARE(state.radiusPixels(), 55.0f);
+      state.setRadiusUnit(RadiusUnit::View);
     }
     QCOMPARE(BrushValueStore::loadRadiusUnit(), RadiusUnit::View);
     // A user from before the unit: stored brush values and no unit keep the diagonal's.
@@ -488,62 +546,66 @@ private slots:
 
   void strokeOptionsAreSharedAndPersisted() {
     {
-      BrushPanel panel;
-      panel.setBrushes(brushes_, {});
-      QCOMPARE(panel.settings().pressureTarget, PressureTarget::Strength);
-      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      BrushState state;
+      BrushPanel panel(state);
+      state.setBrushes(brushes_, {});
+      QCOMPARE(state.settings().pressureTarget, PressureTarget::Strength);
+      QSignalSpy changed(&state, &BrushState::changed);
       panel.findChild<QComboBox*>(QStringLiteral("pressureTarget"))->setCurrentIndex(1);
       panel.findChild<QSlider*>(QStringLiteral("stabilizer"))->setValue(40);
       panel.findChild<QCheckBox*>(QStringLiteral("symmetryX"))->setChecked(true);
       panel.findChild<QCheckBox*>(QStringLiteral("symmetryZ"))->setChecked(true);
       QCOMPARE(changed.count(), 4);
-      QVERIFY(panel.selectBrush(QStringLiteral("smooth")));
-      const BrushSettings s = panel.settings();
+      QVERIFY(state.selectBrush(QStringLiteral("smooth")));
+      const BrushSettings s = state.settings();
       QCOMPARE(s.pressureTarget, PressureTarget::Radius);
       QCOMPARE(s.stabilizer, 0.4f);
       QCOMPARE(s.symmetry, 5u);
     }
-    BrushPanel panel;
-    const BrushSettings s = panel.settings();
+    BrushState state;
+    BrushPanel panel(state);
+    const BrushSettings s = state.settings();
     QCOMPARE(s.pressureTarget, PressureTarget::Radius);
     QCOMPARE(s.stabilizer, 0.4f);
     QCOMPARE(s.symmetry, 5u);
     QVERIFY(panel.findChild<QCheckBox*>(QStringLiteral("symmetryZ"))->isChecked());
     QVERIFY(!panel.findChild<QCheckBox*>(QStringLiteral("symmetryY"))->isChecked());
-    panel.setSymmetry(2u | 8u);
-    QCOMPARE(panel.settings().symmetry, 2u);
+    state.setSymmetry(2u | 8u);
+    QCOMPARE(state.settings().symmetry, 2u);
   }
 
   void keepDetailIsOnByDefaultAndPersisted() {
     {
-      BrushPanel panel;
-      panel.setBrushes(brushes_, {});
-      QVERIFY(panel.settings().keepDetail);
+      BrushState state;
+      BrushPanel panel(state);
+      state.setBrushes(brushes_, {});
+      QVERIFY(state.settings().keepDetail);
       auto* box = panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"));
       QVERIFY(box);
       QVERIFY(box->isChecked());
       QVERIFY(box->toolTip().contains(QStringLiteral("keeps its detail")));
       QVERIFY(
           box->toolTip().contains(QStringLiteral("Off: samples stay where the brush put them")));
-      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
+      QSignalSpy changed(&state, &BrushState::changed);
       box->setChecked(false);
       QCOMPARE(changed.count(), 1);
-      QVERIFY(!panel.settings().keepDetail);
-      panel.setKeepDetail(false); // unchanged: no signal
+      QVERIFY(!state.settings().keepDetail);
+      state.setKeepDetail(false); // unchanged: no signal
       QCOMPARE(changed.count(), 1);
-      QVERIFY(panel.selectBrush(QStringLiteral("smooth"))); // shared by every brush
-      QVERIFY(!panel.settings().keepDetail);
+      QVERIFY(state.selectBrush(QStringLiteral("smooth"))); // shared by every brush
+      QVERIFY(!state.settings().keepDetail);
     }
     {
-      BrushPanel panel; // a new session reads it back
-      QVERIFY(!panel.settings().keepDetail);
+      BrushState state;
+      BrushPanel panel(state); // a new session reads it back
+      QVERIFY(!state.settings().keepDetail);
       QVERIFY(!panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"))->isChecked());
-      QSignalSpy changed(&panel, &BrushPanel::settingsChanged);
-      panel.setKeepDetail(true);
+      QSignalSpy changed(&state, &BrushState::changed);
+      state.setKeepDetail(true);
       QCOMPARE(changed.count(), 1);
       QVERIFY(panel.findChild<QCheckBox*>(QStringLiteral("keepDetail"))->isChecked());
     }
-    QVERIFY(BrushPanel().settings().keepDetail);
+    QVERIFY(BrushState().settings().keepDetail);
   }
 
   void layersKeepAndPersistVisibilityAndTarget() {

@@ -3,6 +3,7 @@
 // focus and the shortcuts must still reach the widgets through it.
 #include "brush_header.h"
 #include "brush_panel.h"
+#include "brush_state.h"
 #include "camera_control.h"
 #include "canvas_brush_adjust.h"
 #include "history_dialog.h"
@@ -160,7 +161,7 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
-  QVERIFY(window->brushPanel()->selectBrush("push"));
+  QVERIFY(window->brushState()->selectBrush("push"));
   QVERIFY(!view->modeller().canUndo());
 
   // A left drag across the model sculpts.
@@ -180,7 +181,7 @@ void RealInputRenderTest::strokeUndoRedoShortcutAndWheelThroughTheGlWindow() {
   QVERIFY(QTest::qWaitFor([&] { return view->modeller().canUndo(); }, 3000));
   input.press({XK_s});
   QVERIFY(QTest::qWaitFor(
-      [&] { return window->brushPanel()->currentBrushId() == QString("smooth"); }, 3000));
+      [&] { return window->brushState()->currentBrushId() == QString("smooth"); }, 3000));
 
   // The wheel zooms.
   vtkCamera* camera = view->renderer()->GetActiveCamera();
@@ -315,7 +316,7 @@ void RealInputRenderTest::fAndShiftFAdjustOverTheModelOnScreen() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
-  QVERIFY(window->brushPanel()->selectBrush("push"));
+  QVERIFY(window->brushState()->selectBrush("push"));
   QVERIFY(activate(*window));
   auto* adjust = window->findChild<app::CanvasBrushAdjust*>(QStringLiteral("canvasBrushAdjust"));
   QVERIFY(adjust);
@@ -411,13 +412,14 @@ void RealInputRenderTest::snakeHookAtItsDefaultPullsAlongTheDrag() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
-  app::BrushPanel* panel = window->brushPanel();
+  app::BrushState* brushes = window->brushState();
   const QPoint centre = view->project({0, 0, 0}).toPoint();
   input.moveTo(view->mapToGlobal(centre));
   QVERIFY(activate(*window));
   input.press({XK_k});
-  QVERIFY(QTest::qWaitFor([&] { return panel->currentBrushId() == QString("snake-hook"); }, 2000));
-  QCOMPARE(panel->strength(), 1.0f);
+  QVERIFY(
+      QTest::qWaitFor([&] { return brushes->currentBrushId() == QString("snake-hook"); }, 2000));
+  QCOMPARE(brushes->strength(), 1.0f);
 
   // A 200 px drag from the front of the sphere pulls a hook most of that far.
   const auto hit = view->pickAt(centre);
@@ -453,11 +455,11 @@ void RealInputRenderTest::bracketWorksRightAfterDraggingTheStrengthSlider() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
   QVERIFY(activate(*window));
-  app::BrushPanel* panel = window->brushPanel();
-  QVERIFY(panel->selectBrush("push"));
+  app::BrushState* brushes = window->brushState();
+  QVERIFY(brushes->selectBrush("push"));
   auto* slider = window->findChild<QSlider*>(QStringLiteral("headerStrength"));
   QVERIFY(slider && slider->isVisible());
-  const float strength = panel->strength();
+  const float strength = brushes->strength();
 
   // Press on the slider's handle and drag it 40 px to the right, as a hand on the mouse does.
   const int handle = slider->style()->pixelMetric(QStyle::PM_SliderLength, nullptr, slider);
@@ -470,24 +472,26 @@ void RealInputRenderTest::bracketWorksRightAfterDraggingTheStrengthSlider() {
   for (int k = 1; k <= 8; ++k)
     input.moveTo(start + QPoint(5 * k, 0));
   input.button(1, false);
-  QVERIFY2(QTest::qWaitFor([&] { return panel->strength() > strength + 0.05f; }, 2000),
-           qPrintable(QString("strength %1 -> %2").arg(strength).arg(panel->strength())));
+  QVERIFY2(QTest::qWaitFor([&] { return brushes->strength() > strength + 0.05f; }, 2000),
+           qPrintable(QString("strength %1 -> %2").arg(strength).arg(brushes->strength())));
 
   // ] at once (no Esc, no click on the model) grows the radius by a tenth.
-  const float radius = panel->radius();
+  const float radius = brushes->radius();
   input.press({XK_bracketright});
-  QVERIFY2(QTest::qWaitFor([&] { return std::abs(panel->radius() - radius * 1.1f) < 1e-5f; }, 2000),
-           qPrintable(QString("radius %1 -> %2 (focus: %3)")
-                          .arg(radius)
-                          .arg(panel->radius())
-                          .arg(QApplication::focusWidget()
-                                   ? QApplication::focusWidget()->metaObject()->className()
-                                   : "none")));
+  QVERIFY2(
+      QTest::qWaitFor([&] { return std::abs(brushes->radius() - radius * 1.1f) < 1e-5f; }, 2000),
+      qPrintable(QString("radius %1 -> %2 (focus: %3)")
+                     .arg(radius)
+                     .arg(brushes->radius())
+                     .arg(QApplication::focusWidget()
+                              ? QApplication::focusWidget()->metaObject()->className()
+                              : "none")));
   QCOMPARE(QApplication::focusWidget(), window->viewport());
   // Shift+[ steps the strength the slider set.
-  const float set = panel->strength();
+  const float set = brushes->strength();
   input.press({XK_Shift_L, XK_bracketleft});
-  QVERIFY(QTest::qWaitFor([&] { return std::abs(panel->strength() - set / 1.1f) < 1e-3f; }, 2000));
+  QVERIFY(
+      QTest::qWaitFor([&] { return std::abs(brushes->strength() - set / 1.1f) < 1e-3f; }, 2000));
 }
 
 void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
@@ -499,8 +503,8 @@ void RealInputRenderTest::undoSaysWhenItsBudgetDropsSteps() {
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 64, true));
   QVERIFY(activate(*window));
   app::ViewportWidget* view = window->viewport();
-  QVERIFY(window->brushPanel()->selectBrush("push"));
-  window->brushPanel()->setRadius(0.1f);
+  QVERIFY(window->brushState()->selectBrush("push"));
+  window->brushState()->setRadius(0.1f);
   const QPoint centre = view->mapToGlobal(view->project({0, 0, 0}).toPoint());
   int strokes = 0;
   const auto stroke = [&] {
@@ -574,11 +578,11 @@ void RealInputRenderTest::aSparseTipSaysWhyBeforeTheBrushActs() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
-  app::BrushPanel* panel = window->brushPanel();
+  app::BrushState* brushes = window->brushState();
   const QPoint centre = view->project({0, 0, 0}).toPoint();
   input.moveTo(view->mapToGlobal(centre));
   QVERIFY(activate(*window));
-  QVERIFY(panel->selectBrush("snake-hook"));
+  QVERIFY(brushes->selectBrush("snake-hook"));
   input.moveTo(view->mapToGlobal(centre));
   input.button(1, true);
   for (int k = 1; k <= 20; ++k)
@@ -588,7 +592,7 @@ void RealInputRenderTest::aSparseTipSaysWhyBeforeTheBrushActs() {
 
   auto* button = window->statusBar()->findChild<QPushButton*>("sparseSamplingRemesh");
   QVERIFY(button);
-  QVERIFY(panel->selectBrush("inflate"));
+  QVERIFY(brushes->selectBrush("inflate"));
   // On the ball, away from the limb: dense samples, no hint.
   const QPoint body = view->project({-0.5f, 0.3f, 0.8f}).toPoint();
   QVERIFY(view->pickAt(body));
@@ -645,14 +649,14 @@ void RealInputRenderTest::aPressJustOffTheModelWithinTheRingSculpts() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 128, true));
   app::ViewportWidget* view = window->viewport();
-  QVERIFY(window->brushPanel()->selectBrush("push"));
+  QVERIFY(window->brushState()->selectBrush("push"));
   vtkCamera* camera = view->renderer()->GetActiveCamera();
   // Pixels a side: the unit sphere's outline and the brush ring (radius × the diagonal, 2√3).
   const QPointF centre = view->project({0, 0, 0});
   const core::Vec3f up = upOf(*camera);
   const double sphere =
       std::hypot(view->project(up).x() - centre.x(), view->project(up).y() - centre.y());
-  const float radius = window->brushPanel()->radius() * 2.0f * std::sqrt(3.0f);
+  const float radius = window->brushState()->radius() * 2.0f * std::sqrt(3.0f);
   const double ring = std::hypot(view->project(up * radius).x() - centre.x(),
                                  view->project(up * radius).y() - centre.y());
   qInfo("outline %.0f px, ring %.0f px", sphere, ring);
@@ -743,15 +747,15 @@ void RealInputRenderTest::aViewRadiusKeepsItsFootprintOnScreenWhenZoomedIn() {
   QVERIFY(window);
   QVERIFY(window->newDocument(core::BaseShape::Sphere, 256, true));
   app::ViewportWidget* view = window->viewport();
-  app::BrushPanel* panel = window->brushPanel();
+  app::BrushState* brushes = window->brushState();
   // A new user's unit is the view's (openTestWindow chose the scene's for the older tests).
   QSettings().remove("brushes");
   QCOMPARE(app::BrushValueStore::loadRadiusUnit(), app::RadiusUnit::View);
-  QCOMPARE(app::BrushPanel().radiusUnit(), app::RadiusUnit::View);
-  panel->setRadiusUnit(app::RadiusUnit::View);
-  QVERIFY(panel->selectBrush("crease"));
-  panel->setKeepDetail(false); // its relaxation would move samples beyond the brush
-  panel->setStabilizer(0);
+  QCOMPARE(app::BrushState().radiusUnit(), app::RadiusUnit::View);
+  brushes->setRadiusUnit(app::RadiusUnit::View);
+  QVERIFY(brushes->selectBrush("crease"));
+  brushes->setKeepDetail(false); // its relaxation would move samples beyond the brush
+  brushes->setStabilizer(0);
   vtkCamera* camera = view->renderer()->GetActiveCamera();
 
   const auto strokeSpan = [&](double zoom) -> double {
@@ -790,14 +794,14 @@ void RealInputRenderTest::aViewRadiusKeepsItsFootprintOnScreenWhenZoomedIn() {
     return largest > 0 ? bottom - top : -1;
   };
 
-  QCOMPARE(panel->radiusPixels(), app::kDefaultRadiusPixels);
+  QCOMPARE(brushes->radiusPixels(), app::kDefaultRadiusPixels);
   const double view1 = strokeSpan(1), view4 = strokeSpan(4);
-  panel->setRadiusUnit(app::RadiusUnit::Scene);
+  brushes->setRadiusUnit(app::RadiusUnit::Scene);
   const double scene1 = strokeSpan(1), scene4 = strokeSpan(4);
   qInfo("crease span across the stroke on screen: view radius %.0f px: %.1f px at ×1, %.1f px at "
         "×4 (%.2f); scene radius %.1f %%: %.1f px at ×1, %.1f px at ×4 (%.2f)",
-        double(panel->radiusPixels()), view1, view4, view4 / view1, double(panel->radius()) * 100,
-        scene1, scene4, scene4 / scene1);
+        double(brushes->radiusPixels()), view1, view4, view4 / view1,
+        double(brushes->radius()) * 100, scene1, scene4, scene4 / scene1);
   QVERIFY(view1 > 0 && view4 > 0 && scene1 > 0 && scene4 > 0);
   // About the ring's diameter in the view unit, at both zooms (within 20 %).
   QVERIFY2(std::abs(view4 / view1 - 1) < 0.2, qPrintable(QString::number(view4 / view1)));
@@ -808,21 +812,21 @@ void RealInputRenderTest::aViewRadiusKeepsItsFootprintOnScreenWhenZoomedIn() {
            qPrintable(QString::number(scene4 / scene1)));
 
   // ] steps the view radius in pixels (the scene radius stays), and the header says pixels.
-  panel->setRadiusUnit(app::RadiusUnit::View);
+  brushes->setRadiusUnit(app::RadiusUnit::View);
   QVERIFY(activate(*window));
   input.moveTo(view->mapToGlobal(QPoint(view->width() / 2, view->height() / 2)));
-  const float pixels = panel->radiusPixels(), fraction = panel->radius();
+  const float pixels = brushes->radiusPixels(), fraction = brushes->radius();
   input.press({XK_bracketright});
-  QVERIFY2(QTest::qWaitFor([&] { return std::abs(panel->radiusPixels() - pixels * 1.1f) < 1e-3f; },
-                           2000),
-           qPrintable(QString("%1 px -> %2 px").arg(pixels).arg(panel->radiusPixels())));
-  QCOMPARE(panel->radius(), fraction);
+  QVERIFY2(QTest::qWaitFor(
+               [&] { return std::abs(brushes->radiusPixels() - pixels * 1.1f) < 1e-3f; }, 2000),
+           qPrintable(QString("%1 px -> %2 px").arg(pixels).arg(brushes->radiusPixels())));
+  QCOMPARE(brushes->radius(), fraction);
   auto* header = window->findChild<app::BrushHeader*>(QStringLiteral("BrushHeader"));
   QVERIFY(header);
   QStringList labels;
   for (const QLabel* label : header->findChildren<QLabel*>())
     labels << label->text();
-  QVERIFY2(labels.contains(app::radiusText(app::RadiusUnit::View, panel->radiusPixels())),
+  QVERIFY2(labels.contains(app::radiusText(app::RadiusUnit::View, brushes->radiusPixels())),
            qPrintable(labels.join(" | ")));
   QVERIFY(labels.join(" ").contains(" px"));
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "brush_panel.h"
+#include "brush_state.h"
 #include "main_window.h"
 #include "modeller.h"
 #include "viewport_widget.h"
@@ -29,7 +30,7 @@ inline std::unique_ptr<MainWindow> openTestWindow(const QString& recoveryFolder,
   auto w = std::make_unique<MainWindow>(options);
   // The render tests size their brushes as a fraction of the model's diagonal (RadiusUnit::
   // Scene); a new user's view radius in pixels is tested where it is set (real_input's).
-  w->brushPanel()->setRadiusUnit(RadiusUnit::Scene);
+  w->brushState()->setRadiusUnit(RadiusUnit::Scene);
   w->resize(1000, 700);
   w->show();
   if (!QTest::qWaitForWindowExposed(w.get())) return nullptr;
@@ -78,9 +79,9 @@ inline bool bitEqual(const std::vector<float>& a, const std::vector<float>& b) {
 /// A push stroke (radius 5 %, strength 30 %) dragged 60 px left to right across the viewport's
 /// centre, dy pixels below it, in 10 mouse moves.
 inline void pushStrokeAcross(MainWindow& w, int dy) {
-  w.brushPanel()->selectBrush("push");
-  w.brushPanel()->setRadius(0.05f);
-  w.brushPanel()->setStrength(0.3f);
+  w.brushState()->selectBrush("push");
+  w.brushState()->setRadius(0.05f);
+  w.brushState()->setStrength(0.3f);
   QWidget* view = w.viewport();
   const QPoint from(view->width() / 2 - 30, view->height() / 2 + dy);
   const QPoint to(view->width() / 2 + 30, view->height() / 2 + dy);

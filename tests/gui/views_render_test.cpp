@@ -517,7 +517,7 @@ void ViewsRenderTest::saveImageDialogAsksSizeAndBackground() {
 void ViewsRenderTest::escapeInASpinBoxHandsTheKeysBackWithoutAStroke() {
   window_ = openSphere();
   QVERIFY(window_);
-  window_->brushPanel()->selectBrush("push");
+  window_->brushState()->selectBrush("push");
   app::ViewportWidget* view = window_->viewport();
   auto* radius = window_->brushPanel()->findChild<QDoubleSpinBox*>("radius");
   QVERIFY(radius);

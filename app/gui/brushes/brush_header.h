@@ -14,7 +14,7 @@ namespace octaclay::app {
 
 /// The compact bar above the viewport: the current brush's radius and strength as sliders with
 /// their values, and the symmetry toggles X, Y, Z. It shows values and reports the user's edits;
-/// the Brushes dock owns them (MainWindow keeps the two in step). Object names: headerRadius,
+/// the BrushState owns them (brush_bars keeps the two in step). Object names: headerRadius,
 /// headerStrength (the sliders), headerSymmetryX/Y/Z (checkable actions). GUI thread.
 class BrushHeader : public QToolBar {
   Q_OBJECT

@@ -1,10 +1,11 @@
-// The Brushes dock panel. The panel owns the brushes' values (store_); widgets only
-// show and edit them, so setters never depend on a widget's rounding (a spin box with one
-// decimal still hands back the exact radius given to setRadius).
+// The Brushes dock panel: a view of BrushState. The state owns the brushes' values; widgets only
+// show and edit them, so a value never depends on a widget's rounding (a spin box with one
+// decimal still shows, not changes, the exact radius given to BrushState::setRadius).
 
 #include "brush_panel.h"
 
 #include "brush_list.h"
+#include "brush_state.h"
 #include "parameter_form.h"
 #include "radius_field.h"
 #include "stroke_options_box.h"
@@ -59,8 +60,7 @@ QString areaTitle(gpu::AreaMode area) {
 
 // ---------------------------------------------------------------------------------------------
 
-BrushPanel::BrushPanel(QWidget* parent)
-    : QWidget(parent), radiusUnit_(BrushValueStore::loadRadiusUnit()) {
+BrushPanel::BrushPanel(BrushState& state, QWidget* parent) : QWidget(parent), state_(state) {
   brushList_ = new QTreeWidget;
   brushList_->setObjectName(QStringLiteral("brushList"));
   brushList_->setHeaderHidden(true);
@@ -68,7 +68,7 @@ BrushPanel::BrushPanel(QWidget* parent)
   brushList_->setSelectionMode(QAbstractItemView::SingleSelection);
   connect(brushList_, &QTreeWidget::itemSelectionChanged, this, [this] {
     const QList<QTreeWidgetItem*> selected = brushList_->selectedItems();
-    if (!selected.isEmpty()) onCurrentItemChanged(selected.front());
+    if (!selected.isEmpty()) state_.selectBrush(selected.front()->data(0, kBrushIdRole).toString());
   });
 
   errorFrame_ = new QFrame;
@@ -95,212 +95,54 @@ BrushPanel::BrushPanel(QWidget* parent)
   splitter->setSizes({1000, 2000});
   splitter->setChildrenCollapsible(false);
 
-  // Stroke options: the same for every brush.
-  strokeOptions_ = new StrokeOptionsBox;
-  connect(strokeOptions_, &StrokeOptionsBox::changed, this, &BrushPanel::settingsChanged);
-
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(errorFrame_);
   layout->addWidget(splitter, 1);
-  layout->addWidget(strokeOptions_);
+  layout->addWidget(new StrokeOptionsBox(state_)); // the same for every brush
 
-  rebuildForm();
+  connect(&state_, &BrushState::brushesChanged, this, &BrushPanel::showBrushes);
+  connect(&state_, &BrushState::brushSelected, this, &BrushPanel::showCurrentBrush);
+  connect(&state_, &BrushState::changed, this, &BrushPanel::showValues);
+  showBrushes();
 }
 
 BrushPanel::~BrushPanel() = default;
-
-void BrushPanel::setBrushes(std::vector<gpu::BrushManifest> brushes,
-                            std::vector<std::string> errors) {
-  brushes_ = std::move(brushes);
-  errors_ = std::move(errors);
-  store_.setBrushes(brushes_); // a duplicate id: the first one wins, as in findBrush
-
-  fillBrushTree(*brushList_, brushes_);
-  const QStringList ids = brushIds();
-  if (!ids.contains(currentId_))
-    currentId_ = ids.contains(QStringLiteral("push")) ? QStringLiteral("push") : ids.value(0);
-  {
-    const QSignalBlocker block(brushList_);
-    for (QTreeWidgetItemIterator it(brushList_); *it; ++it)
-      if ((*it)->data(0, kBrushIdRole).toString() == currentId_ && !currentId_.isEmpty())
-        brushList_->setCurrentItem(*it);
-  }
-  showBrushErrors(*errorFrame_, *errorLayout_, errors_);
-  rebuildForm();
-  emit settingsChanged();
-}
-
-BrushSettings BrushPanel::settings() const {
-  const BrushValues& v = currentValues();
-  BrushSettings s;
-  s.brushId = currentId_.toStdString();
-  s.radius = v.radius;
-  s.radiusUnit = radiusUnit_;
-  s.radiusPixels = v.radiusPixels;
-  s.strength = v.strength;
-  s.falloff = v.falloff;
-  s.area = v.area;
-  s.parameters = v.parameters;
-  s.pressureTarget = strokeOptions_->pressureTarget();
-  s.stabilizer = strokeOptions_->stabilizer();
-  s.symmetry = strokeOptions_->symmetry();
-  s.keepDetail = strokeOptions_->keepDetail();
-  return s;
-}
-
-QString BrushPanel::currentBrushId() const {
-  return currentId_;
-}
-
-const gpu::BrushManifest* BrushPanel::currentBrush() const {
-  return findBrush(currentId_);
-}
-
-bool BrushPanel::selectBrush(const QString& id) {
-  for (QTreeWidgetItemIterator it(brushList_); *it; ++it) {
-    if (id.isEmpty() || (*it)->data(0, kBrushIdRole).toString() != id) continue;
-    {
-      const QSignalBlocker block(brushList_);
-      brushList_->setCurrentItem(*it);
-    }
-    makeCurrent(id);
-    return true;
-  }
-  return false;
-}
-
-QStringList BrushPanel::brushIds() const {
-  QStringList ids;
-  for (QTreeWidgetItemIterator it(brushList_); *it; ++it) {
-    const QString id = (*it)->data(0, kBrushIdRole).toString();
-    if (!id.isEmpty()) ids.append(id);
-  }
-  return ids;
-}
-
-QStringList BrushPanel::errors() const {
-  QStringList out;
-  for (const std::string& e : errors_)
-    out.append(QString::fromStdString(e));
-  return out;
-}
-
-void BrushPanel::setRadius(float fractionOfDiagonal) {
-  const float r = clampFinite(fractionOfDiagonal, kMinRadius, kMaxRadius, currentValues().radius);
-  if (r == currentValues().radius) return;
-  currentValues().radius = r;
-  if (radiusField_ && radiusUnit_ == RadiusUnit::Scene) radiusField_->setValue(radiusUnit_, r);
-  valuesEdited();
-}
-
-void BrushPanel::setRadiusPixels(float pixels) {
-  const float r =
-      clampFinite(pixels, kMinRadiusPixels, kMaxRadiusPixels, currentValues().radiusPixels);
-  if (r == currentValues().radiusPixels) return;
-  currentValues().radiusPixels = r;
-  if (radiusField_ && radiusUnit_ == RadiusUnit::View) radiusField_->setValue(radiusUnit_, r);
-  valuesEdited();
-}
-
-void BrushPanel::setRadiusUnit(RadiusUnit unit) {
-  if (unit == radiusUnit_) return;
-  radiusUnit_ = unit;
-  BrushValueStore::saveRadiusUnit(unit);
-  if (radiusField_) radiusField_->setValue(unit, radiusInUnit());
-  emit settingsChanged();
-}
-
-void BrushPanel::setRadiusInUnit(float value) {
-  radiusUnit_ == RadiusUnit::View ? setRadiusPixels(value) : setRadius(value);
-}
-
-float BrushPanel::radiusInUnit() const {
-  return radiusUnit_ == RadiusUnit::View ? radiusPixels() : radius();
-}
-
-void BrushPanel::setStrength(float s) {
-  const float clamped = clampFinite(s, 0.0f, 1.0f, currentValues().strength);
-  if (clamped == currentValues().strength) return;
-  currentValues().strength = clamped;
-  if (strengthSpin_) {
-    const QSignalBlocker block(strengthSpin_);
-    strengthSpin_->setValue(static_cast<double>(clamped) * 100.0);
-  }
-  valuesEdited();
-}
-
-float BrushPanel::radius() const {
-  return currentValues().radius;
-}
-
-float BrushPanel::strength() const {
-  return currentValues().strength;
-}
-
-void BrushPanel::setPressureTarget(PressureTarget target) {
-  strokeOptions_->setPressureTarget(target);
-}
-
-void BrushPanel::setStabilizer(float amount) {
-  strokeOptions_->setStabilizer(amount);
-}
-
-void BrushPanel::setSymmetry(unsigned axes) {
-  strokeOptions_->setSymmetry(axes);
-}
-
-void BrushPanel::setKeepDetail(bool on) {
-  strokeOptions_->setKeepDetail(on);
-}
 
 QWidget* BrushPanel::parameterWidget(const QString& id) const {
   const auto it = parameterWidgets_.find(id);
   return it != parameterWidgets_.end() ? it->second.data() : nullptr;
 }
 
-// ---------------------------------------------------------------------------------------------
-
-const gpu::BrushManifest* BrushPanel::findBrush(const QString& id) const {
-  if (id.isEmpty()) return nullptr;
-  const std::string key = id.toStdString();
-  for (const gpu::BrushManifest& brush : brushes_)
-    if (brush.id == key) return &brush;
-  return nullptr;
+void BrushPanel::showBrushes() {
+  fillBrushTree(*brushList_, state_.brushes());
+  showBrushErrors(*errorFrame_, *errorLayout_, state_.errorTexts());
+  showCurrentBrush();
 }
 
-BrushValues& BrushPanel::currentValues() {
-  BrushValues* values = store_.find(currentId_);
-  return values ? *values : noBrush_;
-}
-
-const BrushValues& BrushPanel::currentValues() const {
-  const BrushValues* values = store_.find(currentId_);
-  return values ? *values : noBrush_;
-}
-
-void BrushPanel::setMaterials(QStringList ids) {
-  if (ids == store_.materials()) return;
-  store_.setMaterials(std::move(ids));
+void BrushPanel::showCurrentBrush() {
+  {
+    const QSignalBlocker block(brushList_);
+    const QString current = state_.currentBrushId();
+    for (QTreeWidgetItemIterator it(brushList_); *it; ++it)
+      if (!current.isEmpty() && (*it)->data(0, kBrushIdRole).toString() == current)
+        brushList_->setCurrentItem(*it);
+  }
   rebuildForm();
 }
 
-// ---------------------------------------------------------------------------------------------
-
-void BrushPanel::onCurrentItemChanged(QTreeWidgetItem* item) {
-  const QString id = item ? item->data(0, kBrushIdRole).toString() : QString();
-  if (!id.isEmpty()) makeCurrent(id);
-}
-
-void BrushPanel::makeCurrent(const QString& id) {
-  if (id == currentId_) return;
-  currentId_ = id;
-  rebuildForm();
-  emit settingsChanged();
-}
-
-void BrushPanel::valuesEdited() {
-  if (const gpu::BrushManifest* brush = currentBrush()) store_.save(*brush);
-  emit settingsChanged();
+// The form shows what the state holds; widgets are updated without echoing their edits back.
+void BrushPanel::showValues() {
+  if (radiusField_) radiusField_->setValue(state_.radiusUnit(), state_.radiusInUnit());
+  if (strengthSpin_) {
+    const QSignalBlocker block(strengthSpin_);
+    strengthSpin_->setValue(static_cast<double>(state_.strength()) * 100.0);
+  }
+  const auto show = [](QComboBox* combo, int value) {
+    const QSignalBlocker block(combo);
+    combo->setCurrentIndex(combo->findData(value));
+  };
+  if (falloffCombo_) show(falloffCombo_, static_cast<int>(state_.values().falloff));
+  if (areaCombo_) show(areaCombo_, static_cast<int>(state_.values().area));
 }
 
 void BrushPanel::rebuildForm() {
@@ -314,14 +156,12 @@ void BrushPanel::rebuildForm() {
   layout->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
   formScroll_->setWidget(form);
 
-  const gpu::BrushManifest* brush = currentBrush();
+  const gpu::BrushManifest* brush = state_.currentBrush();
   if (!brush) {
     layout->addRow(new QLabel(tr("No brush loaded.")));
-    radiusField_ = nullptr;
-    strengthSpin_ = nullptr;
     return;
   }
-  const BrushValues& v = currentValues();
+  const BrushValues& v = state_.values();
 
   if (!brush->description.empty()) {
     auto* description = new QLabel(QString::fromStdString(brush->description));
@@ -331,14 +171,9 @@ void BrushPanel::rebuildForm() {
   }
 
   radiusField_ = new RadiusField;
-  radiusField_->setValue(radiusUnit_, radiusInUnit());
-  connect(radiusField_, &RadiusField::valueEdited, this, [this](float value) {
-    // Within the unit's limits: the field's range.
-    (radiusUnit_ == RadiusUnit::View ? currentValues().radiusPixels : currentValues().radius) =
-        value;
-    valuesEdited();
-  });
-  connect(radiusField_, &RadiusField::unitChosen, this, &BrushPanel::setRadiusUnit);
+  radiusField_->setValue(state_.radiusUnit(), state_.radiusInUnit());
+  connect(radiusField_, &RadiusField::valueEdited, &state_, &BrushState::setRadiusInUnit);
+  connect(radiusField_, &RadiusField::unitChosen, &state_, &BrushState::setRadiusUnit);
   layout->addRow(tr("Radius"), radiusField_);
 
   strengthSpin_ = new QDoubleSpinBox;
@@ -350,10 +185,8 @@ void BrushPanel::rebuildForm() {
   strengthSpin_->setValue(static_cast<double>(v.strength) * 100.0);
   strengthSpin_->setToolTip(tr("How strongly one dab acts, in percent (of the radius for "
                                "brushes that move the surface)"));
-  connect(strengthSpin_, &QDoubleSpinBox::valueChanged, this, [this](double percent) {
-    currentValues().strength = std::clamp(static_cast<float>(percent / 100.0), 0.0f, 1.0f);
-    valuesEdited();
-  });
+  connect(strengthSpin_, &QDoubleSpinBox::valueChanged, this,
+          [this](double percent) { state_.setStrength(static_cast<float>(percent / 100.0)); });
   layout->addRow(tr("Strength"), strengthSpin_);
 
   auto* falloff = makeNarrowCombo();
@@ -367,10 +200,10 @@ void BrushPanel::rebuildForm() {
   falloff->setToolTip(tr("How the effect fades from the centre to the rim"));
   connect(falloff, &QComboBox::currentIndexChanged, this, [this, falloff](int index) {
     if (index < 0) return;
-    currentValues().falloff = static_cast<gpu::Falloff>(falloff->itemData(index).toInt());
-    valuesEdited();
+    state_.setFalloff(static_cast<gpu::Falloff>(falloff->itemData(index).toInt()));
   });
   layout->addRow(tr("Falloff"), falloff);
+  falloffCombo_ = falloff;
 
   auto* area = makeNarrowCombo();
   area->setObjectName(QStringLiteral("area"));
@@ -382,16 +215,14 @@ void BrushPanel::rebuildForm() {
                       "centre, or that sphere limited to surface facing the same way"));
   connect(area, &QComboBox::currentIndexChanged, this, [this, area](int index) {
     if (index < 0) return;
-    currentValues().area = static_cast<gpu::AreaMode>(area->itemData(index).toInt());
-    valuesEdited();
+    state_.setArea(static_cast<gpu::AreaMode>(area->itemData(index).toInt()));
   });
   layout->addRow(tr("Area"), area);
+  areaCombo_ = area;
 
-  parameterWidgets_ = addParameterRows(*layout, *brush, v.parameters, store_.materials(),
+  parameterWidgets_ = addParameterRows(*layout, *brush, v.parameters, state_.materials(),
                                        [this](const std::string& id, std::array<float, 4> value) {
-                                         currentValues().parameters[id] =
-                                             value; // the form is rebuilt when the brush changes
-                                         valuesEdited();
+                                         state_.setParameter(id, value);
                                        });
 }
 

@@ -1,6 +1,6 @@
 #include "canvas_brush_adjust.h"
 
-#include "brush_panel.h"
+#include "brush_state.h"
 #include "modeller.h"
 #include "radius_field.h"
 #include "viewport_widget.h"
@@ -46,8 +46,8 @@ void paintMarks(QPainter& p, const CanvasBrushAdjust::Marks& marks) {
 
 } // namespace
 
-CanvasBrushAdjust::CanvasBrushAdjust(ViewportWidget* viewport, BrushPanel* panel, QObject* parent)
-    : QObject(parent), viewport_(viewport), panel_(panel) {
+CanvasBrushAdjust::CanvasBrushAdjust(ViewportWidget* viewport, BrushState* state, QObject* parent)
+    : QObject(parent), viewport_(viewport), state_(state) {
   viewport->installEventFilter(this);
   lastPos_ = QPointF(-1, -1); // not seen yet
 }
@@ -57,7 +57,7 @@ CanvasBrushAdjust::~CanvasBrushAdjust() {
 }
 
 bool CanvasBrushAdjust::begin(Mode mode) {
-  if (!viewport_ || !panel_ || mode == Mode::None || !panel_->currentBrush()) return false;
+  if (!viewport_ || !state_ || mode == Mode::None || !state_->currentBrush()) return false;
   // Not in the middle of a stroke or an orbit: their release would never reach the viewport.
   if (viewport_->stroking() || QGuiApplication::mouseButtons() != Qt::NoButton) return false;
   if (mode_ != Mode::None) end(false);
@@ -65,7 +65,7 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   const QRectF view = viewport_->rect();
   const QPointF cursor = viewport_->mapFromGlobal(QCursor::pos());
   origin_ = view.contains(lastPos_) ? lastPos_ : view.contains(cursor) ? cursor : view.center();
-  start_ = mode == Mode::Radius ? panel_->radiusInUnit() : panel_->strength();
+  start_ = mode == Mode::Radius ? state_->radiusInUnit() : state_->strength();
 
   // How far the ring's edge moves on screen per unit of radius, at the ring's centre.
   const auto hit = viewport_->pickAt(origin_);
@@ -84,7 +84,7 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   pixelsPerRadius_ = std::hypot(b.x() - a.x(), b.y() - a.y()) / 0.1;
   if (!std::isfinite(pixelsPerRadius_) || pixelsPerRadius_ < 1e-3)
     pixelsPerRadius_ = std::max(1, viewport_->height());
-  if (panel_->radiusUnit() == RadiusUnit::View) pixelsPerRadius_ = 1; // a pixel is a pixel
+  if (state_->radiusUnit() == RadiusUnit::View) pixelsPerRadius_ = 1; // a pixel is a pixel
 
   marks_ = Marks{};
   marks_.centre = origin_;
@@ -104,27 +104,27 @@ void CanvasBrushAdjust::cancel() {
 }
 
 void CanvasBrushAdjust::moveTo(QPointF p) {
-  if (!panel_ || mode_ == Mode::None) return;
+  if (!state_ || mode_ == Mode::None) return;
   const double dx = p.x() - origin_.x();
   if (mode_ == Mode::Radius) {
-    panel_->setRadiusInUnit(static_cast<float>(start_ + dx / pixelsPerRadius_));
+    state_->setRadiusInUnit(static_cast<float>(start_ + dx / pixelsPerRadius_));
     marks_.strength = -1;
-    marks_.text = tr("Radius %1").arg(radiusText(panel_->radiusUnit(), panel_->radiusInUnit()));
+    marks_.text = tr("Radius %1").arg(radiusText(state_->radiusUnit(), state_->radiusInUnit()));
   } else {
-    panel_->setStrength(static_cast<float>(start_ + dx / kPixelsPerStrength));
-    marks_.strength = panel_->strength();
-    marks_.text = tr("Strength %1 %").arg(std::lround(panel_->strength() * 100.0f));
+    state_->setStrength(static_cast<float>(start_ + dx / kPixelsPerStrength));
+    marks_.strength = state_->strength();
+    marks_.text = tr("Strength %1 %").arg(std::lround(state_->strength() * 100.0f));
   }
-  marks_.ringPixels = double(panel_->radiusInUnit()) * pixelsPerRadius_;
+  marks_.ringPixels = double(state_->radiusInUnit()) * pixelsPerRadius_;
   if (viewport_) viewport_->update();
 }
 
 void CanvasBrushAdjust::end(bool confirmed) {
   const Mode mode = mode_;
   mode_ = Mode::None;
-  if (!confirmed && panel_) {
-    if (mode == Mode::Radius) panel_->setRadiusInUnit(start_);
-    if (mode == Mode::Strength) panel_->setStrength(start_);
+  if (!confirmed && state_) {
+    if (mode == Mode::Radius) state_->setRadiusInUnit(start_);
+    if (mode == Mode::Strength) state_->setStrength(start_);
   }
   if (swallowRelease_ == Qt::NoButton) qApp->removeEventFilter(this);
   if (viewport_) {

@@ -9,13 +9,13 @@
 
 namespace octaclay::app {
 
-class BrushPanel;
+class BrushState;
 class ViewportWidget;
 
 /// F / Shift+F on the canvas: begin() at the pointer's last place over the viewport, then moving
 /// the pointer sideways changes the current brush's radius (the ring's edge follows the pointer:
 /// one pixel is one pixel of radius at the ring's centre) or its strength (kPixelsPerStrength
-/// pixels for 0 → 100 %), written to the Brushes dock as it goes so the ring and the header show
+/// pixels for 0 → 100 %), written to the BrushState as it goes so the ring and the header show
 /// it live. A left click (at its release) or Enter confirms; Esc, a right click or another
 /// begin() cancels and restores the value it started from. While it runs it watches the whole
 /// application's input and lets no click through to the viewport. GUI thread.
@@ -25,7 +25,7 @@ public:
   enum class Mode { None, Radius, Strength };
   static constexpr double kPixelsPerStrength = 300.0;
 
-  CanvasBrushAdjust(ViewportWidget* viewport, BrushPanel* panel, QObject* parent = nullptr);
+  CanvasBrushAdjust(ViewportWidget* viewport, BrushState* state, QObject* parent = nullptr);
   ~CanvasBrushAdjust() override;
 
   /// Starts adjusting (cancelling one under way). Refused (false) without a current brush or
@@ -36,7 +36,7 @@ public:
   Mode mode() const { return mode_; }
   /// Where (viewport pixels) the adjustment began: the pointer's place then.
   QPointF origin() const { return origin_; }
-  /// The value the adjustment started from (a radius in the panel's unit, or a strength).
+  /// The value the adjustment started from (a radius in the state's unit, or a strength).
   float startValue() const { return start_; }
   /// What the adjustment paints over the viewport's frames (logical pixels): its value in a
   /// box beside centre, and a ring of ringPixels (with a disc of strength × ringPixels inside,
@@ -66,7 +66,7 @@ private:
   void end(bool confirm);
 
   QPointer<ViewportWidget> viewport_;
-  QPointer<BrushPanel> panel_;
+  QPointer<BrushState> state_;
   Marks marks_;
   Mode mode_ = Mode::None;
   QPointF lastPos_; // the pointer's last place over the viewport

@@ -45,7 +45,7 @@ bool Modeller::glStarted(GlHost& host) {
     return false;
   }
   session_.setBrushes(library_->engine(), library_->catalog());
-  emit brushesChanged();
+  offerBrushes();
   if (pending_) {
     core::Document document = std::move(*pending_);
     pending_.reset();
@@ -163,8 +163,19 @@ QStringList Modeller::reloadBrushes() {
   session_.brushesReloaded(report.reloaded);
   if (!report.reloaded.empty() || !report.failed.empty() || !report.added.empty() ||
       !report.removed.empty())
-    emit brushesChanged();
+    offerBrushes();
   return failed;
+}
+
+void Modeller::offerBrushes() {
+  std::vector<gpu::BrushManifest> brushes;
+  for (const gpu::BrushManifest* b : library_->brushes())
+    brushes.push_back(*b);
+  std::vector<std::string> errors = library_->errors();
+  for (const std::string& e : materials_.errors())
+    errors.push_back(e);
+  brushState_.setMaterials(materialIds());
+  brushState_.setBrushes(std::move(brushes), std::move(errors));
 }
 
 QStringList Modeller::materialIds() const {

@@ -70,8 +70,8 @@ public:
 
   /// The brush library (null until GL started).
   gpu::BrushLibrary* library() { return library_.get(); }
-  /// Polls the brush folders and reloads what changed or appeared; emits brushesChanged() if
-  /// anything did. Returns the messages of failed reloads.
+  /// Polls the brush folders and reloads what changed or appeared; the brush state gets the new
+  /// list if anything did. Returns the messages of failed reloads.
   QStringList reloadBrushes();
   /// The materials splat brushes can use (engine order) and those that failed to load.
   QStringList materialIds() const;
@@ -119,7 +119,6 @@ public:
 signals:
   /// A step was recorded by a stroke (labelled with its brush).
   void strokeFinished(const QString& label);
-  void brushesChanged();
   void errorOccurred(const QString& message);
   /// A new document was uploaded; keepView: the camera should stay.
   void documentReplaced(bool keepView);
@@ -131,6 +130,8 @@ signals:
   void historyStepped(const core::EditStep& step, bool undo);
 
 private:
+  // Hands the library's brushes, their load errors and the materials to brushState_.
+  void offerBrushes();
   bool uploadDocument(core::Document document, bool keepView);
   void documentChanged(const gpu::DocumentChange& change);
   void refreshSaliency();

@@ -1,6 +1,6 @@
 #include "model_screenshot.h"
 
-#include "brush_panel.h"
+#include "brush_state.h"
 #include "image_output.h"
 #include "main_window.h"
 #include "screenshot_support.h"
@@ -15,7 +15,7 @@ namespace octaclay::app {
 bool makeModelScreenshot(MainWindow& window, const QString& brushId, const QString& imagePath) {
   ViewportWidget& view = *window.viewport();
   if (!waitForViewport(view)) return false;
-  if (!window.brushPanel()->selectBrush(brushId)) {
+  if (!window.brushState()->selectBrush(brushId)) {
     std::fprintf(stderr, "octaclay: no brush '%s' for the screenshot\n", qPrintable(brushId));
     return false;
   }

@@ -1,6 +1,6 @@
 #include "screenshot_script.h"
 
-#include "brush_panel.h"
+#include "brush_state.h"
 #include "image_output.h"
 #include "main_window.h"
 #include "modeller.h"
@@ -19,12 +19,11 @@ namespace {
 // A stroke along a screen-space curve through the viewport centre.
 bool stroke(ViewportWidget& view, const QString& brush, float radius, float strength,
             const std::function<QPointF(double)>& curve) {
-  BrushSettings settings = view.modeller().brushState().settings();
-  settings.brushId = brush.toStdString();
-  settings.radius = radius;
-  settings.strength = strength;
-  settings.area = brush == "paint" ? gpu::AreaMode::Volume : settings.area;
-  view.modeller().brushState().setSettings(settings);
+  BrushState& state = view.modeller().brushState();
+  if (!state.selectBrush(brush)) return false;
+  state.setRadius(radius);
+  state.setStrength(strength);
+  if (brush == "paint") state.setArea(gpu::AreaMode::Volume);
   view.beginStrokeAt(curve(0));
   if (!view.stroking()) return false;
   for (int k = 1; k <= 60; ++k) {
@@ -43,7 +42,7 @@ bool makeScreenshot(MainWindow& window, const QString& imagePath) {
   const QPointF c(view.width() / 2.0, view.height() / 2.0);
   const double r = std::min(view.width(), view.height()) * 0.28;
   bool ok = true;
-  window.brushPanel()->selectBrush("push");
+  window.brushState()->selectBrush("push");
   ok = ok && stroke(view, "push", 0.035f, -0.35f, [&](double t) {
          return c + QPointF(-0.8 * r + 1.6 * r * t, 0.3 * r * std::sin(t * 2 * M_PI));
        });

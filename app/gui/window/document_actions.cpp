@@ -1,5 +1,6 @@
 #include "document_actions.h"
 
+#include "export_work.h"
 #include "history_list.h"
 #include "lod_panel.h"
 #include "modeller.h"
@@ -9,16 +10,10 @@
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/export/lod_export.h"
-#include "octaclay/core/export/mesh_io.h"
-#include "octaclay/core/export/textured_export.h"
-#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/lod/facing.h"
-#include "octaclay/core/lod/normal_map.h"
-#include "octaclay/core/lod/saliency.h"
 
 #include <QFileInfo>
 #include <QMessageBox>
@@ -50,7 +45,7 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
     }
     autosaved_ = autosaving_;
   });
-  connect(&parts_.viewport->modeller(), &Modeller::historyStepped, this, &DocumentActions::stepped);
+  connect(parts_.modeller, &Modeller::historyStepped, this, &DocumentActions::stepped);
 }
 
 bool DocumentActions::isModified() const {
@@ -114,7 +109,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   // One step of the history: the replaced document (its strokes before it) is held by the step.
   const QString name = QFileInfo(path).fileName();
   const FileState imported{{}, QFileInfo(path).absoluteFilePath(), true}; // not saved anywhere yet
-  if (parts_.viewport->modeller().hasDocument()) {
+  if (parts_.modeller->hasDocument()) {
     if (!replaceWith(std::move(*made), tr("Import %1").arg(name), imported)) return false;
   } else {
     if (!adoptDocument(std::move(*made), {})) return false;
@@ -131,7 +126,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
 
 bool DocumentActions::adoptDocument(core::Document document, const QString& path) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
-  if (!parts_.viewport->modeller().setDocument(std::move(document))) {
+  if (!parts_.modeller->setDocument(std::move(document))) {
     showError(parts_.viewport->error());
     return false;
   }
@@ -142,7 +137,7 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
   forceModified_ = false;
   autosaved_.reset();
   autosaving_.reset(); // an autosave in flight was of the document before
-  parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
+  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
@@ -150,7 +145,7 @@ bool DocumentActions::adoptDocument(core::Document document, const QString& path
 }
 
 bool DocumentActions::replaceDocument(core::Document document, const QString& label) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
+  if (!parts_.modeller->hasDocument()) return false;
   if (!replaceWith(std::move(document), label, fileState())) return false;
   lastError_.clear();
   return true;
@@ -161,7 +156,7 @@ bool DocumentActions::replaceWith(core::Document document, const QString& label,
   parts_.viewport->endStroke();
   const FileState before = fileState();
   emit aboutToAdopt();
-  Modeller& modeller = parts_.viewport->modeller();
+  Modeller& modeller = *parts_.modeller;
   if (!modeller.replaceDocument(std::move(document), label)) {
     showError(parts_.viewport->error());
     return false;
@@ -190,7 +185,7 @@ void DocumentActions::stepped(const core::EditStep& step, bool undo) {
 void DocumentActions::shownReplaced() {
   autosaved_.reset();
   autosaving_.reset(); // an autosave in flight was of the document before
-  parts_.lodPanel->setDocumentSize(parts_.viewport->modeller().document().size());
+  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
@@ -241,10 +236,10 @@ bool DocumentActions::openDocument(const QString& path) {
 }
 
 bool DocumentActions::saveDocument(const QString& path) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
+  if (!parts_.modeller->hasDocument()) return false;
   parts_.viewport->endStroke();
   // A snapshot: the save runs while the user may keep sculpting.
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
+  auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()),
                   [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
@@ -264,9 +259,9 @@ bool DocumentActions::saveDocument(const QString& path) {
 }
 
 bool DocumentActions::saveCompressed(const QString& path, const core::CompressOptions& options) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
+  if (!parts_.modeller->hasDocument()) return false;
   parts_.viewport->endStroke();
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
+  auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()), [snapshot, path, options] {
         core::writeCompressedDocument(*snapshot, options, toPath(path));
@@ -281,30 +276,13 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
 }
 
 bool DocumentActions::exportMesh(const QString& path, int divisor) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
+  if (!parts_.modeller->hasDocument()) return false;
+  parts_.viewport->endStroke();
   // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
-  const QString suffix = QFileInfo(path).suffix().toLower();
-  const bool obj = suffix == "obj", glb = suffix == "glb";
-  if (!obj && !glb && !core::meshFormatFromPath(toPath(path))) {
+  const std::function<void()> work = meshExportWork(parts_.modeller->document(), path, divisor);
+  if (!work) {
     showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
     return false;
-  }
-  std::function<void()> work;
-  if (obj || glb) {
-    parts_.viewport->endStroke();
-    auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
-    work = [snapshot, path, divisor, obj] {
-      if (obj)
-        core::writeTexturedObj(*snapshot, divisor, toPath(path));
-      else
-        core::writeGlb(*snapshot, divisor, toPath(path));
-    };
-  } else {
-    auto snapshot =
-        std::make_shared<core::GeometryImage>(parts_.viewport->modeller().document().positions);
-    work = [snapshot, path, divisor] {
-      core::writeMesh(core::extractMesh(*snapshot, divisor), toPath(path));
-    };
   }
   const QString error = runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()), work);
   if (!error.isEmpty()) {
@@ -317,7 +295,7 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
 }
 
 bool DocumentActions::exportLod(const QString& path) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
+  if (!parts_.modeller->hasDocument()) return false;
   const QString suffix = QFileInfo(path).suffix().toLower();
   if (suffix != "obj" && suffix != "glb") {
     showError(tr("Cannot export the level of detail to %1: use .obj or .glb").arg(path));
@@ -329,32 +307,15 @@ bool DocumentActions::exportLod(const QString& path) {
   const core::ResampleMethod m = parts_.lodPanel->method();
   const bool salient =
       m == core::ResampleMethod::SalientPoint || m == core::ResampleMethod::SalientAverage;
-  if (salient) parts_.viewport->modeller().setSaliencyWanted(true);
-  const bool computeSaliency = salient && !parts_.viewport->modeller().saliencyCurrent();
+  if (salient) parts_.modeller->setSaliencyWanted(true);
+  const bool computeSaliency = salient && !parts_.modeller->saliencyCurrent();
   // The whole document: the LOD carries the paint as File ▸ Export Mesh does.
-  auto snapshot = std::make_shared<core::Document>(parts_.viewport->modeller().document());
+  auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
   const core::LodOptions options = parts_.lodPanel->lodOptions();
   auto control = std::make_shared<TaskControl>();
-  const QString error = runner_.run(
-      tr("Exporting %1…").arg(QFileInfo(path).fileName()),
-      [snapshot, options, path, control, computeSaliency] {
-        core::GeometryImage& full = snapshot->positions;
-        if (computeSaliency) core::computeSaliency(full);
-        const core::LodMesh lod = core::generateLod(full, options);
-        control->fraction = 0.3f;
-        if (control->cancel) return; // between steps: nothing written yet
-        // One map texel per full-resolution sample (up to 4096²): the map carries all the detail
-        // the LOD's triangles dropped. Tangent space is what glTF's normalTexture and the OBJ
-        // readers' `norm` / `map_Bump` expect.
-        const int resolution = std::clamp(full.size(), 2, 4096);
-        const core::NormalMap map =
-            core::bakeNormalMap(full, lod, core::NormalMapSpace::Tangent, resolution);
-        control->fraction = 0.8f;
-        if (control->cancel) return;
-        core::writeLodMesh(lod, map, *snapshot, toPath(path));
-        control->fraction = 1.0f;
-      },
-      control);
+  const QString error =
+      runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+                  lodExportWork(snapshot, options, path, control, computeSaliency), control);
   emit saliencyWishChanged();
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not export"), path, error));
@@ -370,8 +331,7 @@ bool DocumentActions::exportLod(const QString& path) {
 }
 
 bool DocumentActions::autosaveNow() {
-  if (!parts_.viewport->modeller().hasDocument() || runner_.busy() || autosaver_.busy())
-    return false;
+  if (!parts_.modeller->hasDocument() || runner_.busy() || autosaver_.busy()) return false;
   if (!isModified() || parts_.history->position() == autosaved_) return true;
   if (parts_.viewport->stroking()) { // the stroke's end makes the next step: save after it
     QTimer::singleShot(2000, this, [this] { autosaveNow(); });
@@ -379,7 +339,7 @@ bool DocumentActions::autosaveNow() {
   }
   // The GUI thread only copies the document; encoding and writing run on a worker while the
   // window goes on (the finished signal records the undo index saved, or says what failed).
-  auto snapshot = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
+  auto snapshot = std::make_shared<const core::Document>(parts_.modeller->document());
   autosaving_ = parts_.history->position();
   return autosaver_.start(std::move(snapshot), path_);
 }

@@ -27,6 +27,7 @@ namespace octaclay::app {
 
 class HistoryList;
 class LodPanel;
+class Modeller;
 class ViewportWidget;
 
 /// What the modeller does with document files: new, open, save, save compressed, import,
@@ -40,7 +41,8 @@ public:
   struct Parts {
     QWidget* window = nullptr; ///< parent of dialogs
     QStatusBar* statusBar = nullptr;
-    ViewportWidget* viewport = nullptr;
+    Modeller* modeller = nullptr;       ///< the document the actions read and replace
+    ViewportWidget* viewport = nullptr; ///< its camera and the stroke under way
     LodPanel* lodPanel = nullptr;
     HistoryList* history = nullptr; ///< its clean state is the document's saved state
   };

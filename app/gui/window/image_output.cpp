@@ -1,10 +1,14 @@
 #include "image_output.h"
 
+#include "viewport_widget.h"
+
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
 #include <QBuffer>
 #include <QFile>
+#include <QFileInfo>
+#include <QStatusBar>
 
 #include <cstdint>
 #include <cstdio>
@@ -27,6 +31,29 @@ bool saveImagePng(const QImage& image, const QString& path) {
     std::fprintf(stderr, "octaclay: %s\n", e.what());
     return false;
   }
+  return true;
+}
+
+bool saveViewImage(ViewportWidget& viewport, QStatusBar& statusBar, const QString& path, QSize size,
+                   bool background) {
+  const QImage image = viewport.renderImage(size, background);
+  if (image.isNull()) {
+    statusBar.showMessage(QStatusBar::tr("Could not draw a %1 × %2 picture (at most %3 a side)")
+                              .arg(size.width())
+                              .arg(size.height())
+                              .arg(viewport.maxImageSide()),
+                          10000);
+    return false;
+  }
+  if (!saveImagePng(image, path)) {
+    statusBar.showMessage(QStatusBar::tr("Could not write %1").arg(path), 10000);
+    return false;
+  }
+  statusBar.showMessage(QStatusBar::tr("Saved %1 (%2 × %3)")
+                            .arg(QFileInfo(path).fileName())
+                            .arg(size.width())
+                            .arg(size.height()),
+                        5000);
   return true;
 }
 

@@ -1,18 +1,22 @@
 #include "main_window.h"
 
+#include "brush_bars.h"
 #include "brush_panel.h"
 #include "document_actions.h"
+#include "edit_menu.h"
+#include "file_menu.h"
 #include "file_suggestion.h"
 #include "help_menu.h"
 #include "history_list.h"
+#include "image_output.h"
 #include "layers_panel.h"
 #include "lod_follow.h"
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "modeller.h"
-#include "save_image_dialog.h"
 #include "sparse_sampling_hint.h"
 #include "user_messages.h"
+#include "view_actions.h"
 #include "viewport_focus.h"
 #include "viewport_widget.h"
 
@@ -21,7 +25,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
@@ -45,10 +48,10 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   setCentralWidget(viewport_);
   buildDocks();
   documents_ = new DocumentActions(
-      {this, statusBar(), viewport_, lodPanel_, history_},
+      {this, statusBar(), modeller_, viewport_, lodPanel_, history_},
       options_.recoveryFolder.isEmpty() ? RecoveryStore::defaultFolder() : options_.recoveryFolder,
       options_.sessionPid ? options_.sessionPid : QCoreApplication::applicationPid(), this);
-  mesh_ = new MeshActions({this, statusBar(), viewport_, documents_, history_,
+  mesh_ = new MeshActions({this, statusBar(), modeller_, viewport_, documents_, history_,
                            [this](const QString& name) { return action(name); }},
                           this);
   connect(documents_, &DocumentActions::aboutToAdopt, this, [this] { lodFollower_.reset(); });
@@ -61,9 +64,13 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connect(documents_, &DocumentActions::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
   connect(documents_, &DocumentActions::saliencyWishChanged, this,
           &MainWindow::updateSaliencyWanted);
-  buildMenus();
+  recentMenu_ = addFileMenu(*this);
+  addEditMenu(*this);
+  mesh_->addMenu(*menuBar());
+  addViewMenu(*this, viewport_);
+  addHelpMenu(*this);
   connectParts();
-  buildToolBars();
+  addBrushBars(*this, *viewport_, modeller_->brushState());
   qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
   new SparseSamplingHint(viewport_, statusBar(), action("actionRemesh"), this);
 
@@ -81,7 +88,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connect(autosaveTimer_, &QTimer::timeout, this, [this] { autosaveNow(); });
   auto* brushPoll = new QTimer(this);
   connect(brushPoll, &QTimer::timeout, this, [this] {
-    for (const QString& failure : viewport_->modeller().reloadBrushes())
+    for (const QString& failure : modeller_->reloadBrushes())
       showStatusMessage(*statusBar(), failure, 8000);
   });
   brushPoll->start(1000);
@@ -103,7 +110,7 @@ QAction* MainWindow::action(const QString& objectName) const {
 }
 
 void MainWindow::buildDocks() {
-  brushPanel_ = new BrushPanel(this);
+  brushPanel_ = new BrushPanel(modeller_->brushState(), this);
   layersPanel_ = new LayersPanel(this);
   lodPanel_ = new LodPanel(this);
   auto addDock = [this](QWidget* panel, const QString& title, const QString& name,
@@ -123,7 +130,7 @@ void MainWindow::connectParts() {
   // The first time the history's budget drops steps, the status bar says so (Edit ▸ History
   // then names its first row truthfully).
   connect(history_, &HistoryList::stepsStartedToDrop, this, [this] {
-    const core::EditHistory& h = viewport_->modeller().history();
+    const core::EditHistory& h = modeller_->history();
     showStatusMessage(*statusBar(),
                       tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
                          "its %2 MiB")
@@ -144,20 +151,13 @@ void MainWindow::connectParts() {
   });
   connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
   connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
-  connect(&viewport_->modeller(), &Modeller::brushesChanged, this, &MainWindow::refreshBrushes);
-  connect(&viewport_->modeller(), &Modeller::errorOccurred, this,
+  connect(modeller_, &Modeller::errorOccurred, this,
           [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
-  connect(brushPanel_, &BrushPanel::settingsChanged, this,
-          [this] { viewport_->modeller().brushState().setSettings(brushPanel_->settings()); });
-  connect(viewport_, &ViewportWidget::radiusStepRequested, this,
-          [this](float f) { brushPanel_->setRadiusInUnit(brushPanel_->radiusInUnit() * f); });
-  connect(viewport_, &ViewportWidget::strengthStepRequested, this,
-          [this](float f) { brushPanel_->setStrength(brushPanel_->strength() * f); });
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));
     viewport_->setShowMask(layersPanel_->isVisible(core::EditLayer::Mask));
-    viewport_->modeller().brushState().setPaintTarget(layersPanel_->paintTarget());
+    modeller_->brushState().setPaintTarget(layersPanel_->paintTarget());
   };
   connect(layersPanel_, &LayersPanel::visibilityChanged, this, applyLayers);
   connect(layersPanel_, &LayersPanel::paintTargetChanged, this, applyLayers);
@@ -165,23 +165,21 @@ void MainWindow::connectParts() {
   applyLayers();
   connect(lodPanel_, &LodPanel::levelChanged, viewport_, &ViewportWidget::setLevelDivisor);
   viewport_->setLevelDivisor(lodPanel_->divisor());
-  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
   connectLod();
 }
 
 void MainWindow::connectLod() {
-  lodGenerator_ =
-      new LodGenerator([this] { return viewport_->modeller().positionsSnapshot(); }, this);
+  lodGenerator_ = new LodGenerator([this] { return modeller_->positionsSnapshot(); }, this);
   lodGenerator_->setOptions(lodPanel_->liveLodOptions());
   const auto regenerate = [this] {
     if (lodPanel_->lodShown()) lodGenerator_->request();
   };
   // Each change of the surface: the shown LOD follows it at once (a frame's work), and a new one
   // is generated in the background.
-  connect(&viewport_->modeller(), &Modeller::surfaceChanged, this, [this, regenerate] {
-    if (lodPanel_->lodShown() && lodFollower_ && viewport_->modeller().hasDocument())
+  connect(modeller_, &Modeller::surfaceChanged, this, [this, regenerate] {
+    if (lodPanel_->lodShown() && lodFollower_ && modeller_->hasDocument())
       viewport_->setLodMesh(std::make_shared<const core::LodMesh>(
-          lodFollower_->follow(viewport_->modeller().document().positions)));
+          lodFollower_->follow(modeller_->document().positions)));
     regenerate();
   });
   connect(lodPanel_, &LodPanel::lodOptionsChanged, this, [this, regenerate] {
@@ -204,9 +202,9 @@ void MainWindow::connectLod() {
             lodPanel_->setLodResult(static_cast<long long>(lod->mesh.triangles.size()), ms);
             lodFollower_ = std::make_unique<LodFollower>(*lod, *lodGenerator_->lodSource());
             // Made from a snapshot the stroke may have moved on from since.
-            if (viewport_->modeller().hasDocument())
+            if (modeller_->hasDocument())
               lod = std::make_shared<const core::LodMesh>(
-                  lodFollower_->follow(viewport_->modeller().document().positions));
+                  lodFollower_->follow(modeller_->document().positions));
             viewport_->setLodMesh(std::move(lod));
           });
   connect(lodGenerator_, &LodGenerator::measured, this,
@@ -219,22 +217,25 @@ void MainWindow::connectLod() {
 
 void MainWindow::updateSaliencyWanted() {
   const bool salientLod = lodPanel_->lodShown() && lodPanel_->liveLodReadsSaliency();
-  viewport_->modeller().setSaliencyWanted(
-      layersPanel_->preview() == LayersPanel::Preview::Saliency || salientLod);
+  modeller_->setSaliencyWanted(layersPanel_->preview() == LayersPanel::Preview::Saliency ||
+                               salientLod);
 }
 
-void MainWindow::refreshBrushes() {
-  gpu::BrushLibrary* library = viewport_->modeller().library();
-  if (!library) return;
-  std::vector<gpu::BrushManifest> brushes;
-  for (const gpu::BrushManifest* b : library->brushes())
-    brushes.push_back(*b);
-  std::vector<std::string> errors = library->errors();
-  for (const QString& e : viewport_->modeller().materialErrors())
-    errors.push_back(e.toStdString());
-  brushPanel_->setMaterials(viewport_->modeller().materialIds());
-  brushPanel_->setBrushes(std::move(brushes), std::move(errors));
-  viewport_->modeller().brushState().setSettings(brushPanel_->settings());
+BrushState* MainWindow::brushState() const {
+  return &modeller_->brushState();
+}
+
+bool MainWindow::saveImage(const QString& path, QSize size, bool background) {
+  return saveViewImage(*viewport_, *statusBar(), path, size, background);
+}
+
+void MainWindow::setAutosaveSeconds(int seconds) {
+  options_.autosaveSeconds = std::max(0, seconds);
+  QSettings().setValue("autosave/seconds", options_.autosaveSeconds);
+  if (options_.autosaveSeconds > 0)
+    autosaveTimer_->start(options_.autosaveSeconds * 1000);
+  else
+    autosaveTimer_->stop();
 }
 
 void MainWindow::updateStatus() {
@@ -250,8 +251,8 @@ void MainWindow::updateStatus() {
           .arg(locale.toString(s.displayedTriangles), locale.toString(s.fullTriangles)));
   lodPanel_->setTriangleCounts(s.displayedTriangles, s.fullTriangles);
   mesh_->updateActions();
-  if (viewport_->modeller().hasDocument()) {
-    const core::Document& d = viewport_->modeller().document();
+  if (modeller_->hasDocument()) {
+    const core::Document& d = modeller_->document();
     layersPanel_->setLayerState(core::EditLayer::Diffuse, !d.diffuse.uniform());
     layersPanel_->setLayerState(core::EditLayer::Feature, !d.feature.uniform());
     layersPanel_->setLayerState(core::EditLayer::Mask, !d.mask.uniform());
@@ -292,31 +293,7 @@ QString MainWindow::suggestedPath(FileRequest request) const {
 }
 
 QString MainWindow::choose(FileRequest request) {
-  if (chooser_) return chooser_(request);
-  const QString dir = suggestedPath(request);
-  switch (request) {
-  case FileRequest::Open:
-    return QFileDialog::getOpenFileName(this, tr("Open model"), dir,
-                                        tr("Octaclay documents (*.exr *.ocz)"));
-  case FileRequest::SaveCompressed:
-    return QFileDialog::getSaveFileName(this, tr("Save compressed model"), dir,
-                                        tr("Compressed Octaclay documents (*.ocz)"));
-  case FileRequest::SaveAs:
-    return QFileDialog::getSaveFileName(this, tr("Save model"), dir,
-                                        tr("Octaclay documents (*.exr)"));
-  case FileRequest::Import:
-    return QFileDialog::getOpenFileName(this, tr("Import mesh"), dir,
-                                        tr("Meshes (*.obj *.ply *.stl *.off)"));
-  case FileRequest::Export:
-    return QFileDialog::getSaveFileName(this, tr("Export mesh"), dir,
-                                        tr("Meshes (*.glb *.obj *.ply *.stl *.off)"));
-  case FileRequest::ExportLod:
-    return QFileDialog::getSaveFileName(this, tr("Export level of detail"), dir,
-                                        tr("Meshes with a normal map (*.glb *.obj)"));
-  case FileRequest::SaveImage:
-    return QFileDialog::getSaveFileName(this, tr("Save image"), dir, tr("PNG images (*.png)"));
-  }
-  return {};
+  return chooser_ ? chooser_(request) : askFilePath(*this, request, suggestedPath(request));
 }
 
 bool MainWindow::newDocument(core::BaseShape shape, int n, bool force) {
@@ -358,9 +335,9 @@ void MainWindow::applyUndoBudget() {
 void MainWindow::setUndoBudgetMiB(int mib) {
   undoBudgetMiB_ = std::clamp(mib, kMinUndoMiB, kMaxUndoMiB);
   QSettings().setValue("undo/budgetMiB", undoBudgetMiB_);
-  const std::size_t before = viewport_->modeller().history().undoCount();
+  const std::size_t before = modeller_->history().undoCount();
   applyUndoBudget();
-  const std::size_t after = viewport_->modeller().history().undoCount();
+  const std::size_t after = modeller_->history().undoCount();
   if (after == before) return;
   showStatusMessage(*statusBar(),
                     tr("Undo now keeps only the newest %1 steps: %2 older ones did not fit its "

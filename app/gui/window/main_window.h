@@ -25,6 +25,7 @@ class QTimer;
 namespace octaclay::app {
 
 class BrushPanel;
+class BrushState;
 class LayersPanel;
 class LodFollower;
 class HistoryList;
@@ -57,6 +58,9 @@ public:
   /// every document opened, made or replaced after, and kept in the settings for the next start.
   void setUndoBudgetMiB(int mib);
   int undoBudgetMiB() const { return undoBudgetMiB_; }
+  /// Edit ▸ Preferences' autosave interval (0: off), kept in the settings and applied now.
+  void setAutosaveSeconds(int seconds);
+  int autosaveSeconds() const { return options_.autosaveSeconds; }
   static constexpr int kMinUndoMiB = 16, kMaxUndoMiB = 16384, kDefaultUndoMiB = 256;
 
   ViewportWidget* viewport() const { return viewport_; }
@@ -77,6 +81,13 @@ public:
   void setFileChooser(std::function<QString(FileRequest)> chooser) {
     chooser_ = std::move(chooser);
   }
+  /// Whether a chooser replaces the dialogs: then the menus ask no other questions either.
+  bool hasFileChooser() const { return bool(chooser_); }
+  /// The path request is answered with: the chooser's, else a file dialog's; empty: cancelled.
+  QString choose(FileRequest request);
+  /// Asks whether to save unsaved changes first (Save, Discard, Cancel); false: cancelled or
+  /// the save failed, so the model must stay.
+  bool maybeSave();
 
   /// A new document of this shape and size (made off the GUI thread). Asks about unsaved
   /// changes first unless force.
@@ -132,6 +143,9 @@ public:
   /// Draws the viewport offscreen at size (device pixels) with or without its background
   /// (transparent) and writes it to path as PNG; the status bar says what happened.
   bool saveImage(const QString& path, QSize size, bool background);
+  /// The brush as the user set it (the modeller's): what the Brushes dock, the tool bars and
+  /// the canvas's keys edit.
+  BrushState* brushState() const;
   /// Regenerates the live LOD in the background (while the dock shows it).
   LodGenerator* lodGenerator() const { return lodGenerator_; }
 
@@ -161,19 +175,11 @@ private:
   // the default).
   void applyUndoBudget();
   int undoBudgetMiB_ = kDefaultUndoMiB;
-  void buildMenus();
   void buildDocks();
-  /// The brush tool bar, the header above the viewport and F / Shift+F (main_window_toolbars.cpp).
-  void buildToolBars();
   void connectParts();
   void updateStatus();
   void updateTitle();
   void rebuildRecentMenu();
-  bool maybeSave();
-  QString choose(FileRequest request);
-  /// File ▸ Save Image: asks size and background (unless a file chooser is set), then where.
-  void askAndSaveImage();
-  void refreshBrushes();
   void connectLod();
   /// Saliency is computed while the heat map or a salient LOD method needs it.
   void updateSaliencyWanted();

@@ -13,6 +13,8 @@
 #include "octaclay/core/relax/relax.h"
 
 #include <QAction>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -34,21 +36,19 @@ std::optional<MeshActions::MeshOutcome>
 MeshActions::runMeshTask(const MeshTask& task, std::shared_ptr<TaskControl> control) {
   BackgroundTaskRunner& runner = parts_.documents->runner();
   // On the GPU (GL started), not just pending: the result is applied there.
-  if (!parts_.viewport->glReady() || !parts_.viewport->modeller().hasDocument() ||
+  if (!parts_.viewport->glReady() || !parts_.modeller->hasDocument() ||
       parts_.viewport->stroking() || runner.busy())
     return std::nullopt;
   if (!control) control = std::make_shared<TaskControl>();
   // The copy is taken here, on the GUI thread; the worker never touches the viewport.
-  auto source = std::make_shared<const core::Document>(parts_.viewport->modeller().document());
+  auto source = std::make_shared<const core::Document>(parts_.modeller->document());
   auto outcome = std::make_shared<MeshOutcome>();
   // What tells that the model changed while the task ran (input reaches the viewport in the
   // moment before the progress dialog appears): applying the result would undo that change.
   const auto mark = [this] {
     return std::tuple(parts_.viewport->stroking(), parts_.viewport->stats().dabs,
                       parts_.history->index(), parts_.history->count(),
-                      parts_.viewport->modeller().hasDocument()
-                          ? parts_.viewport->modeller().document().size()
-                          : 0);
+                      parts_.modeller->hasDocument() ? parts_.modeller->document().size() : 0);
   };
   const auto before = mark();
   // The menu item says how far the task is (the progress dialog appears after 100 ms).
@@ -123,7 +123,7 @@ bool MeshActions::evenOutSamples(std::shared_ptr<TaskControl> control) {
   if (!outcome) return false;
   bool recorded = false;
   try {
-    recorded = parts_.viewport->modeller().applyChange(outcome->document, "Even Out Samples");
+    recorded = parts_.modeller->applyChange(outcome->document, "Even Out Samples");
   } catch (const std::exception& e) {
     showMeshError(task.failure, QString::fromUtf8(e.what()));
     return false;
@@ -137,8 +137,8 @@ bool MeshActions::evenOutSamples(std::shared_ptr<TaskControl> control) {
 }
 
 bool MeshActions::remesh(int n, std::shared_ptr<TaskControl> control) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
-  const int current = parts_.viewport->modeller().document().size();
+  if (!parts_.modeller->hasDocument()) return false;
+  const int current = parts_.modeller->document().size();
   if (n == 0) n = current;
   MeshTask task;
   task.action = QStringLiteral("actionRemesh");
@@ -170,8 +170,8 @@ bool MeshActions::remesh(int n, std::shared_ptr<TaskControl> control) {
 }
 
 bool MeshActions::changeResolution(int n, std::shared_ptr<TaskControl> control) {
-  if (!parts_.viewport->modeller().hasDocument()) return false;
-  const int current = parts_.viewport->modeller().document().size();
+  if (!parts_.modeller->hasDocument()) return false;
+  const int current = parts_.modeller->document().size();
   if (n == current) {
     parts_.statusBar->showMessage(tr("The model is already N = %1: nothing to resample").arg(n),
                                   8000);
@@ -204,9 +204,9 @@ bool MeshActions::changeResolution(int n, std::shared_ptr<TaskControl> control) 
 }
 
 void MeshActions::openMeshSizeDialog(bool remeshing) {
-  if (!parts_.viewport->modeller().hasDocument()) return;
+  if (!parts_.modeller->hasDocument()) return;
   MeshSizeDialog dialog(remeshing ? MeshSizeDialog::Kind::Remesh : MeshSizeDialog::Kind::Resolution,
-                        parts_.viewport->modeller().document().size(), parts_.window);
+                        parts_.modeller->document().size(), parts_.window);
   if (dialog.exec() != QDialog::Accepted) return;
   if (remeshing)
     remesh(dialog.size());
@@ -215,10 +215,45 @@ void MeshActions::openMeshSizeDialog(bool remeshing) {
 }
 
 void MeshActions::updateActions() {
-  const bool ready = parts_.viewport->glReady() && parts_.viewport->modeller().hasDocument() &&
+  const bool ready = parts_.viewport->glReady() && parts_.modeller->hasDocument() &&
                      !parts_.viewport->stroking() && !parts_.documents->runner().busy();
   for (const char* name : {"actionEvenOutSamples", "actionRemesh", "actionResolution"})
     if (QAction* a = parts_.action(QString::fromLatin1(name))) a->setEnabled(ready);
+}
+
+void MeshActions::addMenu(QMenuBar& bar) {
+  const auto add = [](QMenu* menu, const QString& text, const char* name) {
+    QAction* a = menu->addAction(text); // a child of the window's: MainWindow::action finds it
+    a->setObjectName(name);
+    return a;
+  };
+  QMenu* mesh = bar.addMenu(tr("&Mesh"));
+  QAction* evenOut = add(mesh, tr("&Even Out Samples"), "actionEvenOutSamples");
+  const QString evenOutTip =
+      tr("Spread the samples evenly over the surface again, so stretched parts get detail back; "
+         "the shape and paint stay put (if they would not, nothing changes and the status bar "
+         "says why). Runs at once with progress and Cancel; one Undo brings the model back");
+  evenOut->setToolTip(evenOutTip);
+  evenOut->setStatusTip(evenOutTip);
+  connect(evenOut, &QAction::triggered, this, [this] { evenOutSamples(); });
+  QAction* remeshAction = add(mesh, tr("&Remesh…"), "actionRemesh");
+  const QString remeshTip =
+      tr("Give the surface a new, even sampling at a size you choose (the current one at "
+         "first), every painted layer carried to the same surface points: for limbs pulled too "
+         "far to even out. Asks first; progress and Cancel; one Undo brings the model back");
+  remeshAction->setToolTip(remeshTip);
+  remeshAction->setStatusTip(remeshTip);
+  connect(remeshAction, &QAction::triggered, this, [this] { openMeshSizeDialog(true); });
+  QAction* resolution = add(mesh, tr("Re&solution…"), "actionResolution");
+  const QString resolutionTip =
+      tr("Resample every layer at a finer or coarser N with the same parameterization: block "
+         "out coarse, detail fine. Asks first; one Undo brings the model back");
+  resolution->setToolTip(resolutionTip);
+  resolution->setStatusTip(resolutionTip);
+  connect(resolution, &QAction::triggered, this, [this] { openMeshSizeDialog(false); });
+  mesh->setToolTipsVisible(true);
+  connect(mesh, &QMenu::aboutToShow, this, &MeshActions::updateActions);
+  updateActions();
 }
 
 } // namespace octaclay::app

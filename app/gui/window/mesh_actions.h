@@ -13,6 +13,7 @@
 #include <string>
 
 class QAction;
+class QMenuBar;
 class QStatusBar;
 class QWidget;
 
@@ -20,6 +21,7 @@ namespace octaclay::app {
 
 class DocumentActions;
 class HistoryList;
+class Modeller;
 class ViewportWidget;
 
 /// The Mesh menu's whole-model operations: Even Out Samples, Remesh… and Resolution…, each run
@@ -34,12 +36,17 @@ public:
   struct Parts {
     QWidget* window = nullptr; ///< parent of dialogs and message boxes
     QStatusBar* statusBar = nullptr;
-    ViewportWidget* viewport = nullptr;
+    Modeller* modeller = nullptr;         ///< the document the operations read and replace
+    ViewportWidget* viewport = nullptr;   ///< the stroke under way
     DocumentActions* documents = nullptr; ///< its runner, and replaceDocument
     HistoryList* history = nullptr;
     std::function<QAction*(const QString&)> action; ///< the window's action by object name
   };
   explicit MeshActions(Parts parts, QObject* parent = nullptr) : QObject(parent), parts_(parts) {}
+
+  /// Adds the Mesh menu (after Edit, as in Blender) to bar: Even Out Samples, Remesh…,
+  /// Resolution…, each with its tooltip, enabled as updateActions() says.
+  void addMenu(QMenuBar& bar);
 
   /// Mesh ▸ Even Out Samples (see MainWindow::evenOutSamples).
   bool evenOutSamples(std::shared_ptr<TaskControl> control = nullptr);

@@ -1,10 +1,14 @@
 #include "view_actions.h"
 
+#include "looks_menu.h"
 #include "viewport_widget.h"
 
 #include <QActionGroup>
+#include <QDockWidget>
 #include <QKeyEvent>
+#include <QMainWindow>
 #include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 
 #include <array>
@@ -132,6 +136,19 @@ void addViewActions(QMenu* view, ViewportWidget* viewport) {
   const bool free = QSettings().value("view/orbit").toString() == "trackball";
   (free ? trackball : turntable)->setChecked(true);
   viewport->setOrbitMode(free ? OrbitMode::Trackball : OrbitMode::Turntable);
+}
+
+void addViewMenu(QMainWindow& window, ViewportWidget* viewport) {
+  QMenu* view = window.menuBar()->addMenu(QMainWindow::tr("&View"));
+  for (QDockWidget* dock : window.findChildren<QDockWidget*>())
+    view->addAction(dock->toggleViewAction());
+  view->addSeparator();
+  QAction* frame = view->addAction(QMainWindow::tr("&Frame Model"));
+  frame->setObjectName("actionFrameModel");
+  frame->setShortcut(QKeySequence(QMainWindow::tr("Home")));
+  QObject::connect(frame, &QAction::triggered, viewport, &ViewportWidget::frameModel);
+  addViewActions(view, viewport);
+  addLookActions(view, viewport);
 }
 
 } // namespace octaclay::app

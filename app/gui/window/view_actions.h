@@ -1,5 +1,6 @@
 #pragma once
 
+class QMainWindow;
 class QMenu;
 
 namespace octaclay::app {
@@ -12,5 +13,9 @@ class ViewportWidget;
 /// Trackball, remembered in QSettings under "view/orbit". Actions are named actionViewFront …
 /// actionViewBottom, actionOrthographic, actionOrbitTurntable and actionOrbitTrackball.
 void addViewActions(QMenu* view, ViewportWidget* viewport);
+
+/// Adds the View menu to window's menu bar: its docks' toggles, Frame Model (Home), the views
+/// (addViewActions) and the looks (addLookActions).
+void addViewMenu(QMainWindow& window, ViewportWidget* viewport);
 
 } // namespace octaclay::app

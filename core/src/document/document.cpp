@@ -10,6 +10,7 @@ std::vector<std::string> Layer::channelNames() const {
 
 Document makeDocument(GeometryImage image) {
   Document document;
+  document.topology = image.topology();
   document.positions = std::move(image);
   return document;
 }

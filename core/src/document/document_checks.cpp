@@ -9,9 +9,9 @@
 namespace octaclay::core {
 
 std::optional<std::string> positionsProblem(const GeometryImage& positions) {
-  const int side = positions.size() + 1;
+  const int side = positions.side();
   float largest = 0;
-  for (int j = 0; j < side; ++j)
+  for (int j = 0; j < positions.rows(); ++j)
     for (int i = 0; i < side; ++i) {
       const Vec4f& t = positions.at(i, j);
       if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
@@ -75,6 +75,16 @@ std::optional<std::string> layerValuesProblem(const Layer& layer, int size) {
 void requireUsableSize(const GeometryImage& positions, const std::string& what) {
   if (const auto problem = sizeProblem(positions))
     throw Error(ErrorKind::InvalidInput, what + ": " + *problem);
+}
+
+void requireOctahedral(const GeometryImage& positions, const std::string& operation,
+                       const std::string& what) {
+  if (positions.topology() == Topology::Octahedral) return;
+  throw Error(ErrorKind::InvalidArgument, operation + " works on octahedral documents only; " +
+                                              what + " is a " +
+                                              std::string(topologyName(positions.topology())) +
+                                              " (" + std::to_string(positions.width()) + "x" +
+                                              std::to_string(positions.height()) + " cells)");
 }
 
 std::optional<std::string> layerChannelsProblem(const std::vector<std::string>& channels) {

@@ -2,15 +2,51 @@
 
 #include "detail/parallel_rows.h"
 
+#include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace octaclay::core {
+namespace {
+
+// A torus or plane: counts from its extracted mesh (it is as large as the image, and these
+// documents are new; the ball's counts follow from its grid below).
+DocumentInfo describeGridDocument(const GeometryImage& image) {
+  DocumentInfo info;
+  info.size = image.size();
+  const MeshTopology topology = analyzeTopology(extractMesh(image));
+  info.vertices = topology.vertices;
+  info.triangles = topology.triangles;
+  info.edges = topology.edges;
+  info.euler = topology.euler;
+  info.degenerateTriangles = topology.degenerateTriangles;
+  for (const Vec4f& t : image.texels()) {
+    const Vec3f p = t.xyz();
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+      info.bbox.extend(p);
+    else
+      ++info.nonFinite;
+  }
+  info.seamGap = maxSeamGap(image);
+  const bool whole = info.seamGap == 0.0f && info.nonFinite == 0;
+  info.closed = whole && topology.closed();
+  info.manifold = whole && topology.manifold() && info.degenerateTriangles == 0;
+  return info;
+}
+
+} // namespace
 
 DocumentInfo describeDocument(const Document& document) {
+  if (document.positions.topology() != Topology::Octahedral) {
+    DocumentInfo info = describeGridDocument(document.positions);
+    info.layers = {"positions", document.diffuse.name, document.feature.name};
+    if (document.hasMask) info.layers.push_back(document.mask.name);
+    return info;
+  }
   const GeometryImage& image = document.positions;
   const int n = image.size();
   DocumentInfo info;

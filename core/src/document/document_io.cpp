@@ -40,6 +40,11 @@ namespace {
 constexpr const char* kFormatAttribute = "octaclay.format";
 constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
 constexpr const char* kSamplingAttribute = "octaclay.sampling";
+// How the image closes up (core::Topology's name); absent in files of the ball alone. The torus's
+// and plane's width and height in cells, which must agree with the data window.
+constexpr const char* kTopologyAttribute = "octaclay.topology";
+constexpr const char* kWidthAttribute = "octaclay.width";
+constexpr const char* kHeightAttribute = "octaclay.height";
 constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
 // Rows per readPixels / writePixels call: enough line buffers for every thread of OpenEXR's pool,
 // while a band of layer texels stays small (8193 × 8 channels × 4 bytes × 128 rows = 34 MB).
@@ -95,17 +100,49 @@ DocumentHeader checkHeader(const fs::path& path, const Imf::Header& header) {
     refuse(path, "document format version " + std::to_string(result.formatVersion) +
                      " is not supported (this Octaclay reads version " +
                      std::to_string(kDocumentFormatVersion) + "); update Octaclay");
+  const auto* topology = header.findTypedAttribute<Imf::StringAttribute>(kTopologyAttribute);
+  if (topology) {
+    const auto parsed = parseTopology(topology->value());
+    if (!parsed)
+      refuse(path,
+             "topology '" + topology->value() + "' is not supported (octahedral, torus or plane)");
+    result.topology = *parsed;
+  }
   const auto* param = header.findTypedAttribute<Imf::StringAttribute>(kParameterizationAttribute);
-  if (param && param->value() != "octahedral")
-    refuse(path, "parameterization '" + param->value() + "' is not supported (only octahedral)");
+  if (param && param->value() != topologyName(result.topology))
+    refuse(path, "parameterization '" + param->value() + "' does not match the topology '" +
+                     std::string(topologyName(result.topology)) + "'");
 
   const Imath::Box2i window = header.dataWindow();
-  const int width = window.max.x - window.min.x + 1;
-  const int height = window.max.y - window.min.y + 1;
-  result.size = sizeFromSide(width);
-  if (width != height || result.size == 0)
-    refuse(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
-                     " is not (2^k+1)x(2^k+1) with 2 <= 2^k <= 8192");
+  const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+  const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+  if (result.topology == Topology::Octahedral) {
+    result.size = width == height && width <= kMaxSize + 1 ? sizeFromSide(int(width)) : 0;
+    if (result.size == 0)
+      refuse(path, "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                       " is not (2^k+1)x(2^k+1) with 2 <= 2^k <= 8192");
+    result.width = result.height = result.size;
+  } else {
+    const auto* w = header.findTypedAttribute<Imf::IntAttribute>(kWidthAttribute);
+    const auto* h = header.findTypedAttribute<Imf::IntAttribute>(kHeightAttribute);
+    if (!w || !h)
+      refuse(path, "a " + std::string(topologyName(result.topology)) +
+                       " document needs octaclay.width and octaclay.height attributes");
+    const SampleGrid grid{result.topology, w->value(), h->value()};
+    if (!isValidGrid(grid))
+      refuse(path, std::string(topologyName(result.topology)) + " image size " +
+                       std::to_string(grid.width) + "x" + std::to_string(grid.height) +
+                       " is not valid (powers of two from 2 to 8192" +
+                       (grid.topology == Topology::Torus ? ", at least 4)" : ")"));
+    if (width != grid.width + 1LL || height != grid.height + 1LL)
+      refuse(path, "the image holds " + std::to_string(width) + "x" + std::to_string(height) +
+                       " samples but its header says " + std::to_string(grid.width) + "x" +
+                       std::to_string(grid.height) + " cells (" + std::to_string(grid.width + 1) +
+                       "x" + std::to_string(grid.height + 1) + " samples)");
+    result.width = grid.width;
+    result.height = grid.height;
+    result.size = grid.width;
+  }
 
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
     result.channels.emplace_back(it.name());
@@ -125,7 +162,7 @@ char* shifted(void* base, const Imath::Box2i& window, std::size_t xStride, std::
 // The position image's P.X, P.Y, P.Z as float slices of frame (the reader's and the writer's).
 void insertPositionSlices(Imf::FrameBuffer& frame, const GeometryImage& positions,
                           const Imath::Box2i& window) {
-  const std::size_t xStride = sizeof(Vec4f), yStride = xStride * (positions.size() + 1);
+  const std::size_t xStride = sizeof(Vec4f), yStride = xStride * positions.side();
   auto* base = const_cast<float*>(&positions.texels()[0].x);
   for (int c = 0; c < 3; ++c)
     frame.insert(
@@ -173,7 +210,9 @@ void addLayerWriteSlices(Imf::FrameBuffer& frame, const Imath::Box2i& window, co
 // held one value: a uniform layer never takes (N+1)² texels of memory, even while being read.
 class LayerReader {
 public:
-  LayerReader(Layer& layer, int side) : layer_(layer), side_(side) { layer_.texels.clear(); }
+  LayerReader(Layer& layer, int side, int rows) : layer_(layer), side_(side), rows_(rows) {
+    layer_.texels.clear();
+  }
 
   const Layer& layer() const { return layer_; }
   /// Every texel read so far holds the first one's value.
@@ -209,7 +248,7 @@ public:
       while (k < band_.size() && band_[k] == fill_[k % channels])
         ++k;
       if (k == band_.size()) return; // still uniform
-      layer_.texels.resize(row * static_cast<std::size_t>(side_));
+      layer_.texels.resize(row * static_cast<std::size_t>(rows_));
       for (std::size_t t = 0; t < row * static_cast<std::size_t>(rowBegin); ++t)
         layer_.texels[t] = fill_[t % channels];
     }
@@ -225,7 +264,7 @@ public:
 
 private:
   Layer& layer_;
-  int side_;
+  int side_, rows_; ///< samples along a row and rows
   std::vector<float> band_;
   std::array<float, 4> fill_{}; ///< the first texel: the layer's fill while every texel equals it
 };
@@ -320,8 +359,9 @@ readDocumentPixels(const fs::path& path, const Imf::Header& fileHeader,
                    const DocumentHeader& header, const DocumentReadOptions& options,
                    const std::function<void(const Imf::FrameBuffer&, int, int)>& readPixels) {
   Document document;
-  document.positions = GeometryImage(header.size);
-  const int side = header.size + 1;
+  document.positions = GeometryImage(header.topology, header.width, header.height);
+  document.topology = header.topology;
+  const int side = header.width + 1, rows = header.height + 1;
   const Imath::Box2i window = fileHeader.dataWindow();
 
   std::vector<Layer*> inFile;
@@ -335,9 +375,9 @@ readDocumentPixels(const fs::path& path, const Imf::Header& fileHeader,
   if (!(detail::rawLinesApply(fileHeader) &&
         detail::readRawLines(path, fileHeader, document.positions, inFile))) {
     for (Layer* layer : inFile)
-      layers.emplace_back(*layer, side);
-    for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
-      const int rowEnd = std::min(side, rowBegin + kBandRows);
+      layers.emplace_back(*layer, side, rows);
+    for (int rowBegin = 0; rowBegin < rows; rowBegin += kBandRows) {
+      const int rowEnd = std::min(rows, rowBegin + kBandRows);
       Imf::FrameBuffer frame;
       insertPositionSlices(frame, document.positions, window);
       for (LayerReader& layer : layers)
@@ -368,13 +408,28 @@ namespace detail {
 
 Imf::Header documentPartHeader(const Document& document, const DocumentWriteOptions& options) {
   const int n = document.size();
-  requireValidSize(n);
-  const int side = n + 1;
-  Imf::Header header(side, side);
+  const GeometryImage& positions = document.positions;
+  requireValidGrid(positions.grid());
+  if (document.topology != positions.topology())
+    throw Error(ErrorKind::InvalidArgument,
+                "the document's topology (" + std::string(topologyName(document.topology)) +
+                    ") is not its image's (" + std::string(topologyName(positions.topology())) +
+                    ")");
+  const int side = positions.side(), rows = positions.rows();
+  Imf::Header header(side, rows);
   header.compression() = exrCompression(options.compression, n);
   header.zipCompressionLevel() = std::clamp(options.zipLevel, 1, 9);
   header.insert(kFormatAttribute, Imf::IntAttribute(kDocumentFormatVersion));
-  header.insert(kParameterizationAttribute, Imf::StringAttribute("octahedral"));
+  // The ball's header stays as it always was, so today's readers open it; a torus or plane names
+  // its topology in the parameterization too, which those readers refuse by name.
+  header.insert(kParameterizationAttribute,
+                Imf::StringAttribute(std::string(topologyName(positions.topology()))));
+  if (positions.topology() != Topology::Octahedral) {
+    header.insert(kTopologyAttribute,
+                  Imf::StringAttribute(std::string(topologyName(positions.topology()))));
+    header.insert(kWidthAttribute, Imf::IntAttribute(positions.width()));
+    header.insert(kHeightAttribute, Imf::IntAttribute(positions.height()));
+  }
   header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
   for (const char* name : kPositionChannels)
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
@@ -387,13 +442,13 @@ Imf::Header documentPartHeader(const Document& document, const DocumentWriteOpti
 
 void writeDocumentPixels(const Document& document, const Imf::Header& header,
                          const std::function<void(const Imf::FrameBuffer&, int)>& writePixels) {
-  const int side = document.size() + 1;
+  const int side = document.positions.side(), rows = document.positions.rows();
   const Imath::Box2i window = header.dataWindow();
   std::vector<const Layer*> layers{&document.diffuse, &document.feature};
   if (document.hasMask) layers.push_back(&document.mask);
   std::array<std::vector<half>, 3> halves;
-  for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
-    const int rowEnd = std::min(side, rowBegin + kBandRows);
+  for (int rowBegin = 0; rowBegin < rows; rowBegin += kBandRows) {
+    const int rowEnd = std::min(rows, rowBegin + kBandRows);
     Imf::FrameBuffer frame;
     insertPositionSlices(frame, document.positions, window);
     for (std::size_t k = 0; k < layers.size(); ++k)

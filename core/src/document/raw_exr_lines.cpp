@@ -169,6 +169,9 @@ bool rawLinesApply(const Imf::Header& header) {
   if (header.compression() != Imf::NO_COMPRESSION || std::endian::native != std::endian::little ||
       header.hasType() || header.hasTileDescription())
     return false;
+  // Lines of a square image only (a torus or plane may be W ≠ H: OpenEXR's frame buffers read it).
+  const Imath::Box2i window = header.dataWindow();
+  if (window.max.x - window.min.x != window.max.y - window.min.y) return false;
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
     const Imf::Channel& c = it.channel();
     if (c.xSampling != 1 || c.ySampling != 1 || (c.type != Imf::HALF && c.type != Imf::FLOAT))

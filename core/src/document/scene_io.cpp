@@ -34,6 +34,7 @@ constexpr const char* kScaleAttribute = "octaclay.scale";
 constexpr const char* kVisibleAttribute = "octaclay.visible";
 constexpr const char* kLockedAttribute = "octaclay.locked";
 constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
+constexpr const char* kTopologyAttribute = "octaclay.topology";
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
   throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);
@@ -47,10 +48,10 @@ Vec3f fromImath(const Imath::V3f& v) {
 }
 
 void addObjectAttributes(Imf::Header& header, const SceneObject& object) {
-  const int side = object.document.positions.side();
   header.insert(kNameAttribute, Imf::StringAttribute(object.name));
-  header.insert(kWidthAttribute, Imf::IntAttribute(side));
-  header.insert(kHeightAttribute, Imf::IntAttribute(side));
+  // In cells, as document_io writes them for a torus or plane: (width+1)×(height+1) samples.
+  header.insert(kWidthAttribute, Imf::IntAttribute(object.document.positions.width()));
+  header.insert(kHeightAttribute, Imf::IntAttribute(object.document.positions.height()));
   header.insert(kTranslationAttribute, Imf::V3fAttribute(toImath(object.transform.translation)));
   header.insert(kRotationAttribute, Imf::V3fAttribute(toImath(object.transform.rotationDegrees)));
   header.insert(kScaleAttribute, Imf::V3fAttribute(toImath(object.transform.scale)));
@@ -100,26 +101,24 @@ SceneObjectHeader describePart(const fs::path& path, const Imf::Header& header, 
   const std::string part = "object " + std::to_string(index + 1) + " ('" + object.name + "')";
   if (const auto problem = objectNameProblem(object.name)) refuse(path, part + ": " + *problem);
 
-  const auto* parameterization =
-      header.findTypedAttribute<Imf::StringAttribute>(kParameterizationAttribute);
-  if (parameterization) {
-    const auto topology = parseTopology(parameterization->value());
-    if (!topology)
-      refuse(path, part + ": unknown topology '" + parameterization->value() +
-                       "' (octahedral, torus or plane)");
-    object.topology = *topology;
-  }
+  for (const char* attribute : {kParameterizationAttribute, kTopologyAttribute})
+    if (const auto* named = header.findTypedAttribute<Imf::StringAttribute>(attribute))
+      if (!parseTopology(named->value()))
+        refuse(path,
+               part + ": unknown topology '" + named->value() + "' (octahedral, torus or plane)");
 
+  // In cells: the data window holds one sample more each way.
   const Imath::Box2i window = header.dataWindow();
-  object.width = window.max.x - window.min.x + 1;
-  object.height = window.max.y - window.min.y + 1;
+  const long long columns = static_cast<long long>(window.max.x) - window.min.x;
+  const long long rows = static_cast<long long>(window.max.y) - window.min.y;
   for (const auto& [attribute, declared] :
-       {std::pair{kWidthAttribute, object.width}, std::pair{kHeightAttribute, object.height}}) {
+       {std::pair{kWidthAttribute, columns}, std::pair{kHeightAttribute, rows}}) {
     const auto* value = header.findTypedAttribute<Imf::IntAttribute>(attribute);
     if (value && value->value() != declared)
       refuse(path, part + ": its header says " + attribute + " = " +
                        std::to_string(value->value()) + " but its image is " +
-                       std::to_string(object.width) + "x" + std::to_string(object.height));
+                       std::to_string(columns + 1) + "x" + std::to_string(rows + 1) + " samples (" +
+                       std::to_string(columns) + "x" + std::to_string(rows) + " cells)");
   }
 
   object.transform.translation = vector(path, header, kTranslationAttribute, {}, part);
@@ -130,6 +129,9 @@ SceneObjectHeader describePart(const fs::path& path, const Imf::Header& header, 
   object.locked = flag(path, header, kLockedAttribute, false, part);
 
   object.document = detail::checkDocumentHeader(path, header);
+  object.topology = object.document.topology;
+  object.width = object.document.width;
+  object.height = object.document.height;
   return object;
 }
 

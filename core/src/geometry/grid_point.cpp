@@ -27,6 +27,23 @@ GridPoint locateGridPoint(int n, double x, double y) {
   return p;
 }
 
+GridPoint locateGridPoint(const SampleGrid& grid, double x, double y) {
+  if (grid.topology == Topology::Octahedral) return locateGridPoint(grid.width, x, y);
+  const double fi = std::floor(x), fj = std::floor(y);
+  const int i = static_cast<int>(fi), j = static_cast<int>(fj);
+  const double u = x - fi, v = y - fj;
+  const Sample a{i, j}, b{i + 1, j}, c{i + 1, j + 1}, d{i, j + 1};
+  GridPoint p;
+  if (u + v <= 1) {
+    p.corners = {wrap(grid, a), wrap(grid, b), wrap(grid, d)};
+    p.weights = {float(1 - u - v), float(u), float(v)};
+  } else {
+    p.corners = {wrap(grid, c), wrap(grid, d), wrap(grid, b)};
+    p.weights = {float(u + v - 1), float(1 - u), float(1 - v)};
+  }
+  return p;
+}
+
 Vec3f interpolatePosition(const GeometryImage& image, const GridPoint& p) {
   Vec3f sum{0, 0, 0};
   for (std::size_t k = 0; k < 3; ++k)

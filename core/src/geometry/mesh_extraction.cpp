@@ -2,7 +2,10 @@
 
 #include "detail/parallel_rows.h"
 
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/vertex_index.h"
+
+#include <string>
 
 namespace octaclay::core {
 namespace {
@@ -31,9 +34,47 @@ void writeTriangleRows(const VertexIndex& index, int rowBegin, int rowEnd,
   }
 }
 
+// The torus's and plane's mesh: Mw × Mh cells each split along its anti-diagonal, vertex (i, j)
+// numbered j · columns + i over the distinct samples (the torus's column Mw and row Mh are its
+// column and row 0 again).
+TriangleMesh extractGridMesh(const GeometryImage& image, int step) {
+  if (step < 1 || (step & (step - 1)) != 0 || image.width() % step != 0 ||
+      image.height() % step != 0)
+    throw Error(ErrorKind::InvalidArgument,
+                "mesh step " + std::to_string(step) + " is not a power of two dividing the image");
+  const int mw = image.width() / step, mh = image.height() / step;
+  const bool torus = image.topology() == Topology::Torus;
+  const int minCells = torus ? kMinTorusSize : 1;
+  if (mw < minCells || mh < minCells)
+    throw Error(ErrorKind::InvalidArgument, "mesh step " + std::to_string(step) +
+                                                " leaves fewer than " + std::to_string(minCells) +
+                                                " cells across the image");
+  const int columns = torus ? mw : mw + 1, rows = torus ? mh : mh + 1;
+  TriangleMesh mesh;
+  mesh.positions.resize(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i)
+      mesh.positions[static_cast<std::size_t>(j) * columns + i] =
+          image.at(i * step, j * step).xyz();
+  const auto vertex = [&](int i, int j) {
+    if (torus) i %= mw, j %= mh;
+    return static_cast<std::uint32_t>(j * columns + i);
+  };
+  mesh.triangles.reserve(2 * static_cast<std::size_t>(mw) * static_cast<std::size_t>(mh));
+  for (int j = 0; j < mh; ++j)
+    for (int i = 0; i < mw; ++i) {
+      const std::uint32_t a = vertex(i, j), b = vertex(i + 1, j);
+      const std::uint32_t c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+      mesh.triangles.push_back({a, b, d});
+      mesh.triangles.push_back({b, c, d});
+    }
+  return mesh;
+}
+
 } // namespace
 
 TriangleMesh extractMesh(const GeometryImage& image, int step) {
+  if (image.topology() != Topology::Octahedral) return extractGridMesh(image, step);
   const VertexIndex index(image.size(), step);
   const int m = index.size();
   TriangleMesh mesh;

@@ -4,7 +4,7 @@ namespace octaclay::core {
 
 Vec3f vertexNormal(const GeometryImage& image, Sample s) {
   std::array<std::array<Sample, 3>, 6> tris;
-  const int count = incidentTriangles(image.size(), s, tris);
+  const int count = incidentTriangles(image.grid(), s, tris);
   const Vec3f p = image.positionWrapped(s);
   Vec3f sum{};
   // Cross products are twice the triangle areas: an area-weighted average.
@@ -24,7 +24,7 @@ Vec3f gridNormal(const GeometryImage& image, Sample s) {
 std::vector<Vec3f> computeNormals(const GeometryImage& image) {
   const int side = image.side();
   std::vector<Vec3f> normals(image.texelCount());
-  for (int j = 0; j < side; ++j)
+  for (int j = 0; j < image.rows(); ++j)
     for (int i = 0; i < side; ++i)
       normals[static_cast<std::size_t>(j) * side + i] = vertexNormal(image, {i, j});
   return normals;

@@ -67,23 +67,24 @@ Ray cameraRay(const Camera& camera, int width, int height, float px, float py) {
 
 std::optional<PickHit> pickRay(const GeometryImage& image, const TileBounds& bounds,
                                const Ray& ray) {
-  const int tiles = bounds.tilesPerSide();
+  const int tiles = bounds.tilesX();
   std::vector<std::pair<float, int>> order;
-  for (int t = 0; t < tiles * tiles; ++t) {
+  for (int t = 0; t < bounds.tileCount(); ++t) {
     const float enter = enterBox(ray, bounds.box(t));
     if (std::isfinite(enter)) order.emplace_back(enter, t);
   }
   std::sort(order.begin(), order.end());
 
   std::optional<PickHit> best;
-  const int n = image.size();
+  const SampleGrid& grid = image.grid();
+  const int w = grid.width, hgt = grid.height;
   for (const auto& [enter, t] : order) {
     if (best && enter > best->distance) break; // every later tile starts beyond the hit
     const TexelRect r = bounds.tileRect(t % tiles, t / tiles);
     // The tile's samples; cells reach one sample further except on the last row or column.
-    for (int j = r.y; j < std::min(r.y + r.height, n); ++j)
-      for (int i = r.x; i < std::min(r.x + r.width, n); ++i)
-        for (const auto& tri : cellTriangles(n, i, j)) {
+    for (int j = r.y; j < std::min(r.y + r.height, hgt); ++j)
+      for (int i = r.x; i < std::min(r.x + r.width, w); ++i)
+        for (const auto& tri : cellTriangles(grid, i, j)) {
           const auto hit = hitTriangle(ray, image.at(tri[0]).xyz(), image.at(tri[1]).xyz(),
                                        image.at(tri[2]).xyz());
           if (!hit || (best && (*hit)[0] >= best->distance)) continue;
@@ -93,8 +94,8 @@ std::optional<PickHit> pickRay(const GeometryImage& image, const TileBounds& bou
           h.position = ray.origin + ray.direction * h.distance;
           const float si = b0 * float(tri[0].i) + b1 * float(tri[1].i) + b2 * float(tri[2].i);
           const float sj = b0 * float(tri[0].j) + b1 * float(tri[1].j) + b2 * float(tri[2].j);
-          h.u = si / float(n);
-          h.v = sj / float(n);
+          h.u = si / float(w);
+          h.v = sj / float(hgt);
           const float weights[3] = {b0, b1, b2};
           h.sample = tri[static_cast<int>(std::max_element(weights, weights + 3) - weights)];
           best = h;

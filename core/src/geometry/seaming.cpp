@@ -16,13 +16,31 @@ template <class F> void forEachSeamVertex(int n, F&& f) {
   }
 }
 
+// The torus's: the corner, then each column-0 and row-0 sample with its twin across the image.
+template <class F> void forEachTorusSeamVertex(const SampleGrid& grid, F&& f) {
+  f(Sample{0, 0});
+  for (int j = 1; j < grid.height; ++j)
+    f(Sample{0, j});
+  for (int i = 1; i < grid.width; ++i)
+    f(Sample{i, 0});
+}
+
+// Calls f(canonical sample) once for every vertex of the image's topology that has more than
+// one sample (none on a plane).
+template <class F> void forEachSeamVertexOf(const SampleGrid& grid, F&& f) {
+  if (grid.topology == Topology::Octahedral)
+    forEachSeamVertex(grid.width, f);
+  else if (grid.topology == Topology::Torus)
+    forEachTorusSeamVertex(grid, f);
+}
+
 } // namespace
 
 void seam(GeometryImage& image) {
-  const int n = image.size();
+  const SampleGrid& grid = image.grid();
   std::array<Sample, 4> same;
-  forEachSeamVertex(n, [&](Sample s) {
-    const int count = identifiedSamples(n, s, same);
+  forEachSeamVertexOf(grid, [&](Sample s) {
+    const int count = identifiedSamples(grid, s, same);
     Vec4f sum{};
     for (int k = 0; k < count; ++k) {
       const Vec4f& t = image.at(same[k]);
@@ -36,11 +54,11 @@ void seam(GeometryImage& image) {
 }
 
 float maxSeamGap(const GeometryImage& image) {
-  const int n = image.size();
+  const SampleGrid& grid = image.grid();
   std::array<Sample, 4> same;
   float gap = 0;
-  forEachSeamVertex(n, [&](Sample s) {
-    const int count = identifiedSamples(n, s, same);
+  forEachSeamVertexOf(grid, [&](Sample s) {
+    const int count = identifiedSamples(grid, s, same);
     for (int k = 1; k < count; ++k)
       gap = std::max(gap, length(image.at(same[k]).xyz() - image.at(same[0]).xyz()));
   });

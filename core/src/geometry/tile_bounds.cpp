@@ -11,21 +11,30 @@
 #include <tuple>
 
 namespace octaclay::core {
+namespace {
+
+// Tiles are square: kTileSize samples, or the image's shorter side when it is smaller.
+int tileSide(const GeometryImage& image) {
+  return std::min({TileBounds::kTileSize, image.width(), image.height()});
+}
+
+} // namespace
 
 TileBounds::TileBounds(const GeometryImage& image)
-    : n_(image.size()), tiles_(std::max(1, image.size() / kTileSize)),
-      boxes_(static_cast<std::size_t>(tiles_) * tiles_),
-      groups_(static_cast<std::size_t>(groupsPerSide()) * groupsPerSide()),
-      quarters_(4 * boxes_.size()) {
-  refresh(image, {0, 0, image.side(), image.side()});
+    : width_(image.width()), height_(image.height()),
+      tilesX_(std::max(1, image.width() / tileSide(image))),
+      tilesY_(std::max(1, image.height() / tileSide(image))),
+      boxes_(static_cast<std::size_t>(tilesX_) * tilesY_),
+      groups_(static_cast<std::size_t>(groupsX()) * groupsY()), quarters_(4 * boxes_.size()) {
+  refresh(image, {0, 0, image.side(), image.rows()});
 }
 
 TexelRect TileBounds::tileRect(int tx, int ty) const {
-  const int size = std::min(kTileSize, n_);
+  const int size = std::min({kTileSize, width_, height_});
   const int x = tx * size, y = ty * size;
-  // The last tile of a row or column also takes sample N.
-  const int width = tx == tiles_ - 1 ? n_ + 1 - x : size;
-  const int height = ty == tiles_ - 1 ? n_ + 1 - y : size;
+  // The last tile of a row or column also takes sample W (or H).
+  const int width = tx == tilesX_ - 1 ? width_ + 1 - x : size;
+  const int height = ty == tilesY_ - 1 ? height_ + 1 - y : size;
   return {x, y, width, height};
 }
 
@@ -35,16 +44,16 @@ void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
 
 void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> rects) {
   if (rects.empty()) return;
-  const int size = std::min(kTileSize, n_);
+  const int size = std::min({kTileSize, width_, height_});
   // The tiles to recompute, each once however many rectangles overlap it. A tile's box also
   // holds the first sample past it, so a box bounds its cells' triangles: a changed sample on
   // a tile's first row or column also moves the box of the tile before it.
-  int tx0 = tiles_, ty0 = tiles_, tx1 = -1, ty1 = -1;
+  int tx0 = tilesX_, ty0 = tilesY_, tx1 = -1, ty1 = -1;
   const auto span = [&](TexelRect rect) {
-    return std::array<int, 4>{std::min(std::max(rect.x - 1, 0) / size, tiles_ - 1),
-                              std::min(std::max(rect.y - 1, 0) / size, tiles_ - 1),
-                              std::min((rect.x + rect.width - 1) / size, tiles_ - 1),
-                              std::min((rect.y + rect.height - 1) / size, tiles_ - 1)};
+    return std::array<int, 4>{std::min(std::max(rect.x - 1, 0) / size, tilesX_ - 1),
+                              std::min(std::max(rect.y - 1, 0) / size, tilesY_ - 1),
+                              std::min((rect.x + rect.width - 1) / size, tilesX_ - 1),
+                              std::min((rect.y + rect.height - 1) / size, tilesY_ - 1)};
   };
   for (const TexelRect& rect : rects) {
     const auto [x0, y0, x1, y1] = span(rect);
@@ -62,7 +71,7 @@ void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> 
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx)
       if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)]) {
-        const std::size_t tile = static_cast<std::size_t>(ty) * tiles_ + tx;
+        const std::size_t tile = static_cast<std::size_t>(ty) * tilesX_ + tx;
         BoundingBox box;
         for (int q = 0; q < 4; ++q) {
           const BoundingBox quarter = rectBox(image, quarterRect(tx, ty, q));
@@ -75,12 +84,12 @@ void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> 
   for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
     for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
       BoundingBox group;
-      for (int ty = gy * kGroup; ty < std::min(tiles_, (gy + 1) * kGroup); ++ty)
-        for (int tx = gx * kGroup; tx < std::min(tiles_, (gx + 1) * kGroup); ++tx) {
-          group.extend(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx].min);
-          group.extend(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx].max);
+      for (int ty = gy * kGroup; ty < std::min(tilesY_, (gy + 1) * kGroup); ++ty)
+        for (int tx = gx * kGroup; tx < std::min(tilesX_, (gx + 1) * kGroup); ++tx) {
+          group.extend(boxes_[static_cast<std::size_t>(ty) * tilesX_ + tx].min);
+          group.extend(boxes_[static_cast<std::size_t>(ty) * tilesX_ + tx].max);
         }
-      groups_[static_cast<std::size_t>(gy) * groupsPerSide() + gx] = group;
+      groups_[static_cast<std::size_t>(gy) * groupsX() + gx] = group;
     }
 }
 
@@ -88,7 +97,7 @@ TexelRect TileBounds::quarterRect(int tx, int ty, int q) const {
   const TexelRect t = tileRect(tx, ty);
   // Split at half the tile's size (the last tile's extra sample goes with its far half); a tile
   // of one sample is its own four quarters.
-  const int half = std::max(1, std::min(kTileSize, n_) / 2);
+  const int half = std::max(1, std::min({kTileSize, width_, height_}) / 2);
   const int splitX = std::min(half, t.width), splitY = std::min(half, t.height);
   const bool right = q & 1, top = q & 2;
   const int x = right && splitX < t.width ? t.x + splitX : t.x;
@@ -99,7 +108,7 @@ TexelRect TileBounds::quarterRect(int tx, int ty, int q) const {
 }
 
 BoundingBox TileBounds::rectBox(const GeometryImage& image, TexelRect r) const {
-  const int lastI = std::min(r.x + r.width, n_), lastJ = std::min(r.y + r.height, n_);
+  const int lastI = std::min(r.x + r.width, width_), lastJ = std::min(r.y + r.height, height_);
   Vec3f lo, hi;
 #if defined(__SSE__)
   // Min/max over whole texels (w along, unused), one vector each, since this runs after every
@@ -157,7 +166,7 @@ std::vector<TexelRect> TileBounds::rectsNearSphere(Vec3f centre, float radius) c
   const float r2 = radius * radius;
   std::vector<TexelRect> rects;
   for (int t : tilesNearSphere(centre, radius)) {
-    const int tx = t % tiles_, ty = t / tiles_;
+    const int tx = t % tilesX_, ty = t / tilesX_;
     for (int q = 0; q < 4; ++q) {
       const BoundingBox& b =
           quarters_[4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(q)];
@@ -181,14 +190,13 @@ std::vector<int> TileBounds::tilesNearSphere(Vec3f centre, float radius) const {
     return dx * dx + dy * dy + dz * dz <= r2;
   };
   std::vector<int> tiles;
-  const int groups = groupsPerSide();
-  for (int gy = 0; gy < groups; ++gy)
-    for (int gx = 0; gx < groups; ++gx) {
-      if (!near(groups_[static_cast<std::size_t>(gy) * groups + gx])) continue;
-      for (int ty = gy * kGroup; ty < std::min(tiles_, (gy + 1) * kGroup); ++ty)
-        for (int tx = gx * kGroup; tx < std::min(tiles_, (gx + 1) * kGroup); ++tx)
-          if (near(boxes_[static_cast<std::size_t>(ty) * tiles_ + tx]))
-            tiles.push_back(ty * tiles_ + tx);
+  for (int gy = 0; gy < groupsY(); ++gy)
+    for (int gx = 0; gx < groupsX(); ++gx) {
+      if (!near(groups_[static_cast<std::size_t>(gy) * groupsX() + gx])) continue;
+      for (int ty = gy * kGroup; ty < std::min(tilesY_, (gy + 1) * kGroup); ++ty)
+        for (int tx = gx * kGroup; tx < std::min(tilesX_, (gx + 1) * kGroup); ++tx)
+          if (near(boxes_[static_cast<std::size_t>(ty) * tilesX_ + tx]))
+            tiles.push_back(ty * tilesX_ + tx);
     }
   std::sort(tiles.begin(), tiles.end());
   return tiles;

@@ -184,7 +184,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const int side = document.size() + 1;
   for (const core::TexelRect& t : result.tiles)
     result.texels += static_cast<std::size_t>(t.width) * t.height;
-  result.seams = seamRuns(result.tiles, side);
+  result.seams = seamRuns(result.tiles, side, document.document().positions.topology());
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
   std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
@@ -416,6 +416,8 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
     for (const detail::BrushUnit& unit : detail::kLayerUnits)
       glUniform1i(resampleProgram_.uniform(unit.sampler), unit.unit);
     glUniform1i(resampleProgram_.uniform("u_size"), document.size());
+    glUniform1i(glGetUniformLocation(resampleProgram_.id(), "u_topology"),
+                static_cast<int>(document.document().positions.topology()));
     bindBase();
     if (!resampleTarget_.id())
       resampleTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));

@@ -47,6 +47,8 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
     glUniform1i(location(program, unit.sampler), unit.unit);
   glUniform1f(location(program, "u_maskFill"), doc.document().mask.fill[0]);
   glUniform1i(location(program, "u_size"), doc.size());
+  glUniform1i(location(program, "u_topology"),
+              static_cast<int>(doc.document().positions.topology()));
   glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
   glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
               dab.centreNormal.z);

@@ -23,15 +23,37 @@ std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
     const float r = dab.radius / std::max(1e-20f, bounds.diagonal()) * float(document.size());
     const float n = float(document.size());
     const float ci = float(dab.centreTexel.i), cj = float(dab.centreTexel.j);
-    const std::array<std::array<float, 2>, 9> images{{{ci, cj},
-                                                      {-ci, n - cj},
-                                                      {2 * n - ci, n - cj},
-                                                      {n - ci, -cj},
-                                                      {n - ci, 2 * n - cj},
-                                                      {ci + n, cj + n},
-                                                      {ci - n, cj - n},
-                                                      {ci + n, cj - n},
-                                                      {ci - n, cj + n}}};
+    // The torus's images are the translates by N in i, j or both; a plane has none.
+    const core::Topology topology = document.document().positions.topology();
+    const std::array<std::array<float, 2>, 9> images =
+        topology == core::Topology::Torus ? std::array<std::array<float, 2>, 9>{{{ci, cj},
+                                                                                 {ci + n, cj},
+                                                                                 {ci - n, cj},
+                                                                                 {ci, cj + n},
+                                                                                 {ci, cj - n},
+                                                                                 {ci + n, cj + n},
+                                                                                 {ci - n, cj - n},
+                                                                                 {ci + n, cj - n},
+                                                                                 {ci - n, cj + n}}}
+        : topology == core::Topology::Plane
+            ? std::array<std::array<float, 2>, 9>{{{ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj},
+                                                   {ci, cj}}}
+            : std::array<std::array<float, 2>, 9>{{{ci, cj},
+                                                   {-ci, n - cj},
+                                                   {2 * n - ci, n - cj},
+                                                   {n - ci, -cj},
+                                                   {n - ci, 2 * n - cj},
+                                                   {ci + n, cj + n},
+                                                   {ci - n, cj - n},
+                                                   {ci + n, cj - n},
+                                                   {ci - n, cj + n}}};
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
         const core::TexelRect t = bounds.tileRect(tx, ty);

@@ -28,6 +28,8 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
   seam.use();
   glUniform1i(seam.uniform("u_source"), 0);
   glUniform1i(seam.uniform("u_size"), document.size());
+  glUniform1i(seam.uniform("u_topology"),
+              static_cast<int>(document.document().positions.topology()));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
   rectPass.draw(runs, side, side);
@@ -39,7 +41,9 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
 
 // Runs along the border lines (the rows whole, the columns without their corners). Elsewhere
 // identified samples are already equal, and the seaming pass would write them back unchanged.
-std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side) {
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
+                                      core::Topology topology) {
+  if (topology == core::Topology::Plane) return {}; // no seams
   const auto onBorder = [side](const core::TexelRect& t) {
     return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
   };
@@ -48,15 +52,24 @@ std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles,
   std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
   for (auto& m : marked)
     m.assign(static_cast<std::size_t>(side), 0);
-  const auto mark = [&](std::vector<std::uint8_t>& line, int begin, int end) {
-    for (int k = begin; k < end; ++k)
-      line[static_cast<std::size_t>(k)] = line[static_cast<std::size_t>(n - k)] = 1;
+  // The ball's partner of border sample k is N - k on the same side; the torus's is k on the
+  // opposite side (row N is row 0, column N is column 0).
+  const bool torus = topology == core::Topology::Torus;
+  const auto mark = [&](std::size_t line, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      const auto at = static_cast<std::size_t>(k);
+      marked[line][at] = 1;
+      if (torus)
+        marked[line ^ 1][at] = 1;
+      else
+        marked[line][static_cast<std::size_t>(n - k)] = 1;
+    }
   };
   for (const core::TexelRect& t : tiles) {
-    if (t.y == 0) mark(marked[0], t.x, t.x + t.width);
-    if (t.y + t.height == side) mark(marked[1], t.x, t.x + t.width);
-    if (t.x == 0) mark(marked[2], t.y, t.y + t.height);
-    if (t.x + t.width == side) mark(marked[3], t.y, t.y + t.height);
+    if (t.y == 0) mark(0, t.x, t.x + t.width);
+    if (t.y + t.height == side) mark(1, t.x, t.x + t.width);
+    if (t.x == 0) mark(2, t.y, t.y + t.height);
+    if (t.x + t.width == side) mark(3, t.y, t.y + t.height);
   }
   const bool corner = marked[0][0] || marked[1][0] || marked[2][0] || marked[3][0];
   for (int k : {0, 1})

@@ -42,6 +42,14 @@ int GpuDocument::channels(core::EditLayer layer) {
 
 GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
     : document_(std::move(document)), bounds_(document_.positions) {
+  // Textures are (N+1)² and every pass measures them by N: a torus or plane on the GPU is square.
+  if (!document_.positions.square())
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "the GPU sculpts square images only; this " +
+                          std::string(core::topologyName(document_.positions.topology())) + " is " +
+                          std::to_string(document_.positions.width()) + "x" +
+                          std::to_string(document_.positions.height()) +
+                          " cells (make it with equal width and height)");
   const int side = document_.positions.side();
   // Row bands: a caller on a GUI thread gets control back (progress) between them, and an
   // unpainted layer's fill needs only one band-sized buffer instead of a full-size one.

@@ -209,6 +209,8 @@ void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::
   bindTexture(0, document.texture(core::EditLayer::Positions));
   glUniform1i(normalProgram_.uniform("u_positions"), 0);
   glUniform1i(normalProgram_.uniform("u_size"), document.size());
+  glUniform1i(glGetUniformLocation(normalProgram_.id(), "u_topology"),
+              static_cast<int>(document.document().positions.topology()));
   glUniform3f(normalProgram_.uniform("u_centreNormal"), 0.0f, 0.0f, 1.0f);
   const std::vector<core::TexelRect> passRects = regions(rects);
   rectPass_.draw(passRects, side, side);
@@ -260,6 +262,8 @@ void ModelRenderer::refreshStretch(GpuDocument& document) {
   bindTexture(0, document.texture(core::EditLayer::Positions));
   glUniform1i(stretchProgram_.uniform("u_positions"), 0);
   glUniform1i(stretchProgram_.uniform("u_size"), document.size());
+  glUniform1i(glGetUniformLocation(stretchProgram_.id(), "u_topology"),
+              static_cast<int>(document.document().positions.topology()));
   rectPass_.draw(rects, side, side);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);

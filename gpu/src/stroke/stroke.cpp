@@ -184,7 +184,7 @@ struct StrokeSession::State {
   // The surface as it was when the stroke began, at image point (x, y) in samples: what the
   // dabs' spacing is measured on, so that a stroke does not stretch its own spacing.
   core::Vec3f startPosition(double x, double y) const {
-    const core::GridPoint p = surfacePointAt(document.size(), x, y);
+    const core::GridPoint p = surfacePointAt(document.document().positions.grid(), x, y);
     core::Vec3f sum;
     for (int k = 0; k < 3; ++k)
       sum += undo.positionBefore(p.corners[k]) * p.weights[k];
@@ -315,7 +315,7 @@ struct StrokeSession::State {
                         : pointNormal;
       }
     } else {
-      const core::GridPoint point = surfacePointAt(n, xy[0], xy[1]);
+      const core::GridPoint point = surfacePointAt(image.grid(), xy[0], xy[1]);
       const core::Vec3f p = core::interpolatePosition(image, point);
       const core::Vec3f pointNormal = interpolateNormal(image, point);
       // The first dab's normal is the stroke's anchor normal (a drag's plane) whatever the brush.
@@ -355,7 +355,9 @@ struct StrokeSession::State {
       }
       for (const core::TexelRect& r : reach)
         undo.cover(r);
-      for (const core::TexelRect& r : seamRuns(reach, n + 1)) // the seaming pass's partners
+      for (const core::TexelRect& r :
+           seamRuns(reach, n + 1,
+                    document.document().positions.topology())) // the seaming pass's partners
         undo.cover(r);
       DabResult done;
       try {

@@ -40,6 +40,11 @@ core::GridPoint surfacePointAt(int n, double x, double y) {
   return core::locateGridPoint(n, std::clamp(x, 0.0, double(n)), std::clamp(y, 0.0, double(n)));
 }
 
+core::GridPoint surfacePointAt(const core::SampleGrid& grid, double x, double y) {
+  return core::locateGridPoint(grid, std::clamp(x, 0.0, double(grid.width)),
+                               std::clamp(y, 0.0, double(grid.height)));
+}
+
 core::Vec3f interpolateNormal(const core::GeometryImage& image, const core::GridPoint& p) {
   core::Vec3f sum;
   for (std::size_t k = 0; k < 3; ++k)

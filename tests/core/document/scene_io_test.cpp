@@ -209,10 +209,10 @@ void SceneIoTest::headersWithoutPixels() {
   const auto headers = readSceneHeaders(path("scene.exr"));
   QCOMPARE(headers.size(), std::size_t{3});
   QCOMPARE(headers[1].name, std::string("Leg"));
-  QCOMPARE(headers[1].width, 17);
-  QCOMPARE(headers[1].height, 17);
+  QCOMPARE(headers[1].width, 16); // cells
+  QCOMPARE(headers[1].height, 16);
   QCOMPARE(headers[1].document.size, 16);
-  QCOMPARE(headers[2].width, 9);
+  QCOMPARE(headers[2].width, 8);
   QVERIFY(!headers[1].visible && headers[1].locked);
   QCOMPARE(headers[1].transform.scale.z, 1.0f / 7);
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "octaclay/core/geometry/topology.h"
 #include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/brush_manifest.h"
 #include "octaclay/gpu/gl_error.h"
@@ -214,7 +215,9 @@ private:
 /// The border samples that a pass over tiles (of an image `side` samples wide) may change, and
 /// the samples identified with them (seam.glsl's partners: (N - i, j) along the bottom and top
 /// rows, (i, N - j) along the left and right columns, the four corners together): what the
-/// seaming pass after it rewrites.
-std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side);
+/// seaming pass after it rewrites. A torus's partners are (i, 0) and (i, N), (0, j) and (N, j)
+/// (column and row N are column and row 0); a plane has none.
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
+                                      core::Topology topology = core::Topology::Octahedral);
 
 } // namespace octaclay::gpu

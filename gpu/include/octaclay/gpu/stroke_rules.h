@@ -44,6 +44,8 @@ void requirePathPoint(core::Vec2f uv);
 /// A point of the image's surface mesh (core::GridPoint) at image coordinates (x, y), in
 /// samples, each clamped to [0, N].
 core::GridPoint surfacePointAt(int n, double x, double y);
+/// The same on the image's own grid (a torus's or plane's cells split as core::locateGridPoint's).
+core::GridPoint surfacePointAt(const core::SampleGrid& grid, double x, double y);
 
 /// The unit normal at p: the corners' grid normals (core::gridNormal) interpolated and
 /// normalised; the nearest corner's when they cancel out.

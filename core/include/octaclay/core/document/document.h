@@ -29,13 +29,14 @@ struct Document {
   Layer feature{"feature", 3, {0.0f, 0.25f, 0.0f, 0.0f}, {}};
   Layer mask{"mask", 1, {1.0f, 0.0f, 0.0f, 0.0f}, {}}; ///< 1 = full brush effect, 0 = blocked
   bool hasMask = false;                                ///< mask.Y is optional in the file
-  /// How the image closes up; every reader and writer of today knows only Octahedral.
+  /// How the image closes up: always positions.topology() (makeDocument and readDocument set it;
+  /// writeDocument refuses a document where they differ).
   Topology topology = Topology::Octahedral;
 
   int size() const { return positions.size(); }
 };
 
-/// A new document holding image, with default layers.
+/// A new document holding image, with default layers and the image's topology.
 Document makeDocument(GeometryImage image);
 
 } // namespace octaclay::core

@@ -40,6 +40,12 @@ std::optional<std::string> layerValuesProblem(const Layer& layer, int size);
 /// Throws Error(InvalidInput) "<what>: <sizeProblem>" when the model has no usable size.
 void requireUsableSize(const GeometryImage& positions, const std::string& what);
 
+/// Throws Error(InvalidArgument) "<operation> works on octahedral documents only; <what> is a
+/// torus (…)" unless the image is the octahedral ball: for operations not yet written for the
+/// torus and plane.
+void requireOctahedral(const GeometryImage& positions, const std::string& operation,
+                       const std::string& what);
+
 /// Why a layer stored in these channels is unusable (some but not all of its channels, e.g.
 /// diffuse.R without diffuse.A), or nothing. The channel names are as in the .exr file.
 std::optional<std::string> layerChannelsProblem(const std::vector<std::string>& channels);

@@ -19,13 +19,14 @@ struct DocumentInfo {
   float seamGap = 0;           ///< largest distance between identified samples
   std::uint64_t nonFinite = 0; ///< samples with NaN or infinite coordinates
   std::uint64_t degenerateTriangles = 0;
-  bool closed = false;   ///< seams coincide and every position is finite
-  bool manifold = false; ///< closed, and no triangle collapsed to zero area
+  bool closed = false;   ///< seams coincide, every position is finite, no boundary (not a plane)
+  bool manifold = false; ///< seams coincide, no edge in three triangles, none of zero area
   BoundingBox bbox;
   std::vector<std::string> layers; ///< "positions", "diffuse", "feature" (+ "mask")
 };
 
-/// Walks the image once; connectivity counts follow from the octahedral grid.
+/// Walks the image once; connectivity counts follow from the octahedral grid (a torus's or
+/// plane's from its extracted mesh).
 DocumentInfo describeDocument(const Document& document);
 
 } // namespace octaclay::core

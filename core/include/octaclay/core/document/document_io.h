@@ -16,7 +16,9 @@ struct DocumentReadOptions {
 
 /// What an Octaclay EXR's header says, readable without loading pixels.
 struct DocumentHeader {
-  int size = 0;
+  int size = 0; ///< N of the ball; a torus's or plane's width
+  Topology topology = Topology::Octahedral;
+  int width = 0, height = 0; ///< in cells: the image has (width+1)×(height+1) samples
   int formatVersion = 0;
   std::vector<std::string> channels;
 };

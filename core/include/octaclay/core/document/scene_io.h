@@ -13,7 +13,7 @@ namespace octaclay::core {
 struct SceneObjectHeader {
   std::string name;
   Topology topology = Topology::Octahedral;
-  int width = 0, height = 0; ///< the image's samples across and down
+  int width = 0, height = 0; ///< in cells: the image has (width+1)×(height+1) samples
   ObjectTransform transform;
   bool visible = true;
   bool locked = false;

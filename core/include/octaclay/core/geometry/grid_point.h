@@ -2,6 +2,7 @@
 
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/sample_grid.h"
 
 #include <array>
 
@@ -17,6 +18,9 @@ struct GridPoint {
 
 /// (x, y) in sample units of an N grid, anywhere in the tiled plane.
 GridPoint locateGridPoint(int n, double x, double y);
+/// The same on a grid of any topology: the torus's and plane's cells split along their
+/// anti-diagonal, corners wrapped by the topology.
+GridPoint locateGridPoint(const SampleGrid& grid, double x, double y);
 
 /// image's position at p, interpolated linearly over its triangle.
 Vec3f interpolatePosition(const GeometryImage& image, const GridPoint& p);

@@ -12,7 +12,7 @@ namespace octaclay::core {
 /// Bounding boxes of the positions per square tile of the image, and of groups of kGroup² tiles
 /// above them (a two-level min/max pyramid), so a brush finds the samples it can reach without
 /// scanning the image. Tiles are kTileSize samples wide; the last row and
-/// column of tiles are one sample wider (the image is (N+1)² and tiles cover it exactly).
+/// column of tiles are one sample wider (the image is (W+1)×(H+1) and tiles cover it exactly).
 class TileBounds {
 public:
   static constexpr int kTileSize = 32;
@@ -21,15 +21,21 @@ public:
   TileBounds() = default;
   explicit TileBounds(const GeometryImage& image);
 
-  int tilesPerSide() const { return tiles_; }
-  int groupsPerSide() const { return (tiles_ + kGroup - 1) / kGroup; }
+  /// Tiles along a row (the image's width) and down a column; equal for a square image.
+  int tilesX() const { return tilesX_; }
+  int tilesY() const { return tilesY_; }
+  int tileCount() const { return tilesX_ * tilesY_; }
+  /// tilesX(): the tiles per side of a square image (tile t is tx + ty · tilesX()).
+  int tilesPerSide() const { return tilesX_; }
+  int groupsX() const { return (tilesX_ + kGroup - 1) / kGroup; }
+  int groupsY() const { return (tilesY_ + kGroup - 1) / kGroup; }
   /// The samples of tile (tx, ty).
   TexelRect tileRect(int tx, int ty) const;
   /// Recomputes the boxes of every tile that overlaps rect.
   void refresh(const GeometryImage& image, TexelRect rect);
   /// The same for several rectangles (a dab's), each tile once.
   void refresh(const GeometryImage& image, std::span<const TexelRect> rects);
-  /// Tiles (as tx + ty · tilesPerSide) whose box comes within `radius` of `centre`.
+  /// Tiles (as tx + ty · tilesX) whose box comes within `radius` of `centre`.
   std::vector<int> tilesNearSphere(Vec3f centre, float radius) const;
   /// Quarter q (0 to 3: +i, +j by bits) of tile (tx, ty): the tile split at half its size.
   TexelRect quarterRect(int tx, int ty, int q) const;
@@ -45,7 +51,7 @@ public:
 private:
   /// Bounds of r's samples and the first sample past it in i and j, read from image.
   BoundingBox rectBox(const GeometryImage& image, TexelRect r) const;
-  int n_ = 0, tiles_ = 0;
+  int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::vector<BoundingBox> boxes_, groups_;
   std::vector<BoundingBox> quarters_; ///< four per tile (quarterRect), as boxes_ for its cells
 };

@@ -70,6 +70,10 @@ public:
   /// for one whose brushes already have stored values (their radii keep the size they had).
   static RadiusUnit loadRadiusUnit();
   static void saveRadiusUnit(RadiusUnit unit);
+  /// The stroke options every brush shares (pressure target, stabilizer, symmetry, keep detail)
+  /// as stored in group "brushPanel", written over settings' (what is not stored stays).
+  static void loadStrokeOptions(BrushSettings& settings);
+  static void saveStrokeOptions(const BrushSettings& settings);
 
 private:
   BrushValues defaults(const gpu::BrushManifest& brush) const;

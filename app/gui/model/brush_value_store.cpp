@@ -1,5 +1,7 @@
 #include "brush_value_store.h"
 
+#include "octaclay/gpu/stroke.h"
+
 #include <QSettings>
 
 #include <algorithm>
@@ -79,6 +81,39 @@ RadiusUnit BrushValueStore::loadRadiusUnit() {
 void BrushValueStore::saveRadiusUnit(RadiusUnit unit) {
   QSettings().setValue(QStringLiteral("brushes/radiusUnit"),
                        unit == RadiusUnit::View ? QStringLiteral("view") : QStringLiteral("scene"));
+}
+
+namespace {
+constexpr std::array kPressureNames{"none", "radius", "strength"};
+constexpr unsigned kSymmetryBits = gpu::kSymmetryX | gpu::kSymmetryY | gpu::kSymmetryZ;
+} // namespace
+
+void BrushValueStore::loadStrokeOptions(BrushSettings& out) {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("brushPanel"));
+  const QString pressure = settings.value(QStringLiteral("pressureTarget")).toString();
+  for (std::size_t k = 0; k < kPressureNames.size(); ++k)
+    if (pressure == QLatin1String(kPressureNames[k]))
+      out.pressureTarget = static_cast<PressureTarget>(k);
+  bool ok = false;
+  if (const int percent = settings.value(QStringLiteral("stabilizer")).toInt(&ok); ok)
+    out.stabilizer = static_cast<float>(std::clamp(percent, 0, 100)) / 100.0f;
+  if (const uint axes = settings.value(QStringLiteral("symmetry")).toUInt(&ok); ok)
+    out.symmetry = axes & kSymmetryBits;
+  if (const QVariant keep = settings.value(QStringLiteral("keepDetail")); keep.isValid())
+    out.keepDetail = keep.toBool();
+}
+
+void BrushValueStore::saveStrokeOptions(const BrushSettings& s) {
+  QSettings settings;
+  settings.beginGroup(QStringLiteral("brushPanel"));
+  settings.setValue(
+      QStringLiteral("pressureTarget"),
+      QString::fromLatin1(kPressureNames[static_cast<std::size_t>(s.pressureTarget)]));
+  settings.setValue(QStringLiteral("stabilizer"),
+                    static_cast<int>(std::lround(s.stabilizer * 100.0f)));
+  settings.setValue(QStringLiteral("symmetry"), s.symmetry);
+  settings.setValue(QStringLiteral("keepDetail"), s.keepDetail);
 }
 
 float clampFinite(float value, float lo, float hi, float fallback) {

@@ -1,0 +1,120 @@
+// octaclay-cli on torus and plane documents (issue 33): `new --shape torus|plane|disc` writes
+// them, `info` describes them (Euler 0 closed, Euler 1 open), `export` writes PLY and OFF and
+// refuses the ball-only textured OBJ and GLB, `lod` refuses them, `stroke` sculpts a square torus
+// across its wrap and a plane to its edge; bad arguments exit 2 and write nothing.
+
+#include "cli_support.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+
+class CliTopologyTest : public QObject {
+  Q_OBJECT
+
+private slots:
+  void newTorusChoosesItsHeightFromTheRadii() {
+    RUN_JSON(made, "new", "--shape", "torus", "--size", "64", "-o", file("torus.exr"), "--json");
+    QCOMPARE(made["topology"].toString(), QString("torus"));
+    QCOMPARE(made["width"].toInt(), 64);
+    QCOMPARE(made["height"].toInt(), 32); // 64 x 0.3 / 0.7 = 27
+    QCOMPARE(made["vertices"].toInt(), 64 * 32);
+    RUN_JSON(info, "info", file("torus.exr"), "--json");
+    QCOMPARE(info["topology"].toString(), QString("torus"));
+    QCOMPARE(info["euler"].toInt(), 0);
+    QVERIFY(info["closed"].toBool());
+    QVERIFY(info["manifold"].toBool());
+    QCOMPARE(info["seam_gap"].toDouble(), 0.0);
+    QCOMPARE(info["vertices"].toInt(), 64 * 32);
+    QCOMPARE(info["samples"].toInt(), 65 * 33);
+    QVERIFY(info["stretch"].isNull());
+    RUN_JSON(thin, "new", "--shape", "torus", "--size", "256", "--major", "0.9", "--minor", "0.1",
+             "-o", file("thin.exr"), "--json");
+    QCOMPARE(thin["height"].toInt(), 32);
+    const Result text = runCli({"info", file("thin.exr")});
+    QCOMPARE(text.exitCode, kOk);
+    QVERIFY(text.out.contains("256x32 cells (257x33 samples)"));
+    QVERIFY(text.out.contains("topology   torus"));
+  }
+
+  void planeAndDiscHaveOneBoundary() {
+    for (const char* shape : {"plane", "disc"}) {
+      const QString path = file(QString(shape) + ".exr");
+      RUN_JSON(made, "new", "--shape", shape, "--size", "32", "-o", path, "--json");
+      QCOMPARE(made["topology"].toString(), QString("plane"));
+      QCOMPARE(made["vertices"].toInt(), 33 * 33);
+      RUN_JSON(info, "info", path, "--json");
+      QCOMPARE(info["euler"].toInt(), 1);
+      QVERIFY(!info["closed"].toBool());
+      QVERIFY(info["manifold"].toBool());
+      QCOMPARE(info["triangles"].toInt(), 2 * 32 * 32);
+    }
+  }
+
+  void exportWritesPlainMeshesAndRefusesTheRest() {
+    RUN_JSON(made, "new", "--shape", "torus", "--size", "32", "-o", file("t.exr"), "--json");
+    RUN_JSON(ply, "export", file("t.exr"), "-o", file("t.ply"), "--json");
+    QCOMPARE(ply["vertices"].toInt(), 32 * 16);
+    QCOMPARE(ply["triangles"].toInt(), 2 * 32 * 16);
+    RUN_JSON(plane, "new", "--shape", "plane", "--size", "16", "-o", file("p.exr"), "--json");
+    RUN_JSON(off, "export", file("p.exr"), "-o", file("p.off"), "--json");
+    QCOMPARE(off["vertices"].toInt(), 17 * 17);
+    EXPECT_FAILURE(kUsage, file("t.obj"), "export", file("t.exr"), "-o", file("t.obj"));
+    EXPECT_FAILURE(kUsage, file("t.glb"), "export", file("t.exr"), "-o", file("t.glb"));
+    EXPECT_FAILURE(kUsage, file("t.lod.obj"), "lod", file("t.exr"), "--size", "8", "-o",
+                   file("t.lod.obj"));
+    // Commands still written for the ball alone say so by name (exit 2), and write nothing.
+    for (const QStringList& args :
+         {QStringList{"lod", file("t.exr"), "--size", "8", "-o", file("t.lod.obj")},
+          QStringList{"compress", file("t.exr"), "--codec", "lossless", "-o", file("t.ocz")},
+          QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
+          QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")},
+          QStringList{"resize", file("t.exr"), "--size", "16", "-o", file("t4.exr")}}) {
+      const Result r = runCli(args);
+      QVERIFY2(r.exitCode == kUsage && r.err.contains("works on octahedral documents only"),
+               qPrintable(describe(args, r)));
+      QVERIFY(!QFileInfo::exists(args.last()));
+    }
+  }
+
+  void strokesAcrossTheWrapAndToTheEdge() {
+    RUN_JSON(made, "new", "--shape", "torus", "--size", "64", "--height", "64", "-o",
+             file("sq.exr"), "--json");
+    RUN_JSON(stroke, "stroke", file("sq.exr"), "--brush", "inflate", "--path", "0.95,0.5;1,0.5",
+             "--radius", "0.1", "-o", file("sq2.exr"), "--json");
+    QVERIFY(stroke["dabs"].toInt() >= 1);
+    RUN_JSON(info, "info", file("sq2.exr"), "--json");
+    QCOMPARE(info["seam_gap"].toDouble(), 0.0);
+    QCOMPARE(info["euler"].toInt(), 0);
+    QVERIFY(info["closed"].toBool());
+    RUN_JSON(plane, "new", "--shape", "disc", "--size", "64", "-o", file("d.exr"), "--json");
+    RUN_JSON(pushed, "stroke", file("d.exr"), "--brush", "push", "--path", "0.8,0.5;1,0.5",
+             "--radius", "0.1", "-o", file("d2.exr"), "--json");
+    RUN_JSON(planeInfo, "info", file("d2.exr"), "--json");
+    QCOMPARE(planeInfo["euler"].toInt(), 1);
+    QVERIFY(planeInfo["bbox"].toObject()["max"].toArray()[2].toDouble() > 0.01); // pushed up
+    // The GPU sculpts square images: a 64x32 torus is refused by name.
+    RUN_JSON(wide, "new", "--shape", "torus", "--size", "64", "-o", file("w.exr"), "--json");
+    EXPECT_FAILURE(kUsage, file("w2.exr"), "stroke", file("w.exr"), "--brush", "push", "--path",
+                   "0.5,0.5", "-o", file("w2.exr"));
+  }
+
+  void badShapesAreUsageErrors() {
+    EXPECT_FAILURE(kUsage, file("x.exr"), "new", "--shape", "sphere", "--major", "1", "-o",
+                   file("x.exr"));
+    EXPECT_FAILURE(kUsage, file("x.exr"), "new", "--shape", "torus", "--major", "0.2", "--minor",
+                   "0.3", "-o", file("x.exr"));
+    EXPECT_FAILURE(kUsage, file("x.exr"), "new", "--shape", "torus", "--size", "2", "-o",
+                   file("x.exr"));
+    EXPECT_FAILURE(kUsage, file("x.exr"), "new", "--shape", "torus", "--size", "64", "--height",
+                   "48", "-o", file("x.exr"));
+    EXPECT_FAILURE(kUsage, file("x.exr"), "new", "--shape", "klein", "-o", file("x.exr"));
+  }
+
+private:
+  QString file(const QString& name) const { return dir_.filePath(name); }
+  QTemporaryDir dir_;
+};
+
+QTEST_GUILESS_MAIN(CliTopologyTest)
+#include "cli_topology_test.moc"
