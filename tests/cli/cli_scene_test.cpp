@@ -51,6 +51,7 @@ private slots:
   void plainDocumentsStayPlain();
   void mergeMakesOneClosedObject();
   void importOfSeveralPartsMakesObjects();
+  void torusAndPlaneObjects();
 
 private:
   QString path(const QString& name) const { return dir_.filePath(name); }
@@ -328,6 +329,26 @@ void CliSceneTest::importOfSeveralPartsMakesObjects() {
   QVERIFY2(refused.err.contains("pinch"), refused.err.constData());
   EXPECT_FAILURE(kInvalidInput, path("never.exr"), "import", path("touching.stl"), "-o",
                  path("never.exr"));
+}
+
+void CliSceneTest::torusAndPlaneObjects() {
+  // A ball, a ring above it, its mirror below, and a disc: each keeps its topology.
+  const QString mixed = path("mixed.exr");
+  RUN_JSON(a, "new", "--shape", "sphere", "--size", "16", "-o", mixed, "--json");
+  RUN_JSON(b, "add", mixed, "--shape", "torus", "--translate", "0,0,2", "-o", mixed, "--json");
+  RUN_JSON(c, "duplicate", mixed, "--object", "Torus", "--mirror", "z", "-o", mixed, "--json");
+  RUN_JSON(d, "add", mixed, "--shape", "plane", "--translate", "0,0,-3", "-o", mixed, "--json");
+  RUN_JSON(listing, "objects", mixed, "--json");
+  QCOMPARE(objectNamed(listing, "Torus")["topology"].toString(), QString("torus"));
+  QCOMPARE(objectNamed(listing, "Torus.001")["topology"].toString(), QString("torus"));
+  QCOMPARE(at(objectNamed(listing, "Torus.001"), "translation", 2), -2.0f);
+  QCOMPARE(objectNamed(listing, "Plane")["topology"].toString(), QString("plane"));
+  RUN_JSON(ring, "info", mixed, "--object", "Torus.001", "--json");
+  QCOMPARE(ring["euler"].toInt(), 0);
+  QVERIFY(ring["closed"].toBool());
+  RUN_JSON(sheet, "info", mixed, "--object", "Plane", "--json");
+  QCOMPARE(sheet["euler"].toInt(), 1);
+  QVERIFY(!sheet["closed"].toBool());
 }
 
 QTEST_APPLESS_MAIN(CliSceneTest)

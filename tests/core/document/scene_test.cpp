@@ -8,6 +8,7 @@
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/capsule.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
+#include "octaclay/core/geometry/torus.h"
 
 #include <QtTest>
 
@@ -64,6 +65,7 @@ private slots:
   void worldBoundsOfAPlacedBall();
   void mirroredDuplicateIsTheWorldMirrorAndFacesOutward_data();
   void mirroredDuplicateIsTheWorldMirrorAndFacesOutward();
+  void mirroredTorusFacesOutward();
 };
 
 void SceneTest::uniqueNamesFollowBlender() {
@@ -267,6 +269,34 @@ void SceneTest::mirroredDuplicateIsTheWorldMirrorAndFacesOutward() {
     if (dot(cross(b - a, c - a), (a + b + c) * (1.0f / 3) - centre) < 0) ++inward;
   }
   QCOMPARE(inward, 0);
+}
+
+void SceneTest::mirroredTorusFacesOutward() {
+  // A 32 x 8 torus: the mirror transposes it to 8 x 32, closed, Euler 0, enclosing the same
+  // positive volume (its cells' diagonals may turn the other way: within 1 %).
+  const Torus ring;
+  const SceneObject torus{"Ring",
+                          makeDocument(makeTorus(ring, 32, 8)),
+                          {{0.5f, -0.2f, 0.3f}, {30, 10, -20}, {1, 1.5f, 0.75f}},
+                          true,
+                          false};
+  const SceneObject copy{"Ring.001", mirrorDocument(torus.document, 1),
+                         mirroredTransform(torus.transform, 1), true, false};
+  QCOMPARE(copy.document.positions.width(), 8);
+  QCOMPARE(copy.document.positions.height(), 32);
+  auto worldMesh = [](const SceneObject& object) {
+    TriangleMesh mesh = extractMesh(object.document.positions);
+    for (Vec3f& p : mesh.positions)
+      p = applyTransform(object.transform, p);
+    return mesh;
+  };
+  const TriangleMesh mirrored = worldMesh(copy);
+  const MeshTopology topology = analyzeTopology(mirrored);
+  QVERIFY(topology.closed());
+  QCOMPARE(topology.euler, 0LL);
+  const double before = signedVolume(worldMesh(torus)), after = signedVolume(mirrored);
+  QVERIFY2(before > 0 && std::abs(after - before) < 0.01 * before,
+           qPrintable(QString("volume %1 against %2").arg(after).arg(before)));
 }
 
 QTEST_APPLESS_MAIN(SceneTest)
