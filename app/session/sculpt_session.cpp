@@ -83,8 +83,8 @@ void SculptSession::publish(gpu::ChangeKind kind) {
 }
 
 const core::Document& SculptSession::document() const {
-  // Mid-stroke (autosave, save): the paint the stroke deferred is read back first.
-  if (document_->mirrorStale()) document_->syncMirror();
+  // Mid-stroke (picking, autosave, save): what the stroke deferred (paint; positions too on a
+  // GPU) is read back first, by the GpuDocument's document().
   return document_->document();
 }
 

@@ -88,7 +88,7 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   std::size_t texels = 0, inside = 0;
   int k = 0;
   // As in a stroke: paint layers are read back once after the dabs (timed apart, sync_ms).
-  document.deferPaintPulls(true);
+  document.deferPulls(true);
   for (auto _ : state) {
     gpu::DabResult result;
     const int at = k++;
@@ -103,7 +103,7 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
     }
   }
   const auto syncStart = std::chrono::steady_clock::now();
-  document.deferPaintPulls(false);
+  document.deferPulls(false);
   state.counters["sync_ms"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - syncStart)
           .count();
@@ -129,8 +129,8 @@ void BM_SplatOverPush(benchmark::State& state) {
   s.current.reset();
   gpu::GpuDocument pushed(core::makeDocument(s.sphere)), splatted(core::makeDocument(s.sphere));
   const float radius = static_cast<float>(state.range(1)) / 1000.0f * pushed.bounds().diagonal();
-  pushed.deferPaintPulls(true);
-  splatted.deferPaintPulls(true);
+  pushed.deferPulls(true);
+  splatted.deferPulls(true);
   double push = 0, splat = 0;
   int k = 0;
   constexpr int kBlock = 8;

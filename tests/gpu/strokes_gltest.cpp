@@ -20,6 +20,7 @@
 #include <QtTest>
 
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <random>
 
@@ -92,10 +93,14 @@ private slots:
   void strokeOverSeamsAndPoleLeavesAClosedSphere();
   void symmetricStrokesAreMirrorEqual_data();
   void symmetricStrokesAreMirrorEqual();
+  void undoRedoIsBitExactOverRandomStrokes_data();
   void undoRedoIsBitExactOverRandomStrokes();
   void sessionTouchedRectsCoverEveryChange();
   void sessionUndoRestoresTheStartBitExactly();
   void sessionRefusesSamplesOutsideTheImage();
+  void gpuTileBoundsEqualTheMirrors();
+  void deferredPositionsGiveTheSameStrokes();
+  void finiteCheckOnTheGpuFindsEachBadValue();
 
 private:
   const BrushManifest& manifest(const std::string& id) const { return manifests_.at(id); }
@@ -109,8 +114,12 @@ void StrokesTest::initTestCase() {
     context_.emplace(GlContext::createHeadless());
     engine_.emplace();
     loadBuiltIns(*engine_);
-    for (const char* id :
-         {"push", "inflate", "smooth", "flatten", "sphere-add", "sphere-subtract", "mask", "paint"})
+    for (const char* id : {"snake-hook", "grab"}) { // a drag, an anchored stroke
+      const BrushManifest extra = builtInManifest(id);
+      engine_->load(extra, readFile(extra.shaderPath()));
+    }
+    for (const char* id : {"push", "inflate", "smooth", "flatten", "sphere-add", "sphere-subtract",
+                           "mask", "paint", "snake-hook", "grab"})
       manifests_.emplace(id, builtInManifest(id));
   } catch (const std::exception& e) {
     QFAIL(e.what());
@@ -206,9 +215,17 @@ void StrokesTest::symmetricStrokesAreMirrorEqual() {
   QVERIFY2(worst < 1e-5f, qPrintable(QString("mirror mismatch %1").arg(worst)));
 }
 
+void StrokesTest::undoRedoIsBitExactOverRandomStrokes_data() {
+  QTest::addColumn<bool>("deferred");
+  QTest::newRow("positions read back at once") << false;
+  QTest::newRow("positions deferred, bounds from the GPU") << true;
+}
+
 void StrokesTest::undoRedoIsBitExactOverRandomStrokes() {
+  QFETCH(bool, deferred);
   const int n = 64;
   GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  document.setPositionsDeferred(deferred);
   core::EditHistory history;
   std::vector<std::vector<std::vector<float>>> states{snapshot(document)};
   std::mt19937 random(11);
@@ -307,6 +324,124 @@ void StrokesTest::sessionUndoRestoresTheStartBitExactly() {
   QVERIFY(history.redo(apply));
   QVERIFY(sameBits(snapshot(document), end));
   QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+}
+
+// The tile bounds after dabs come from a reduction on the GPU: every tile's box must equal the
+// one core::TileBounds computes from the mirror's positions, at two sizes (the last tile of a row
+// holds sample N too: 33 samples wide), with dabs across the seams.
+void StrokesTest::gpuTileBoundsEqualTheMirrors() {
+  for (int n : {64, 128}) {
+    GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+    document.setPositionsDeferred(true); // the bounds come from the GPU's reduction
+    for (const char* brush : {"inflate", "push"}) {
+      PathStroke stroke = strokeOf(brush, {{0.1f, 0.5f}, {0.5f, 0.9f}, {0.98f, 0.02f}}, 0.3f, 0.6f);
+      strokeAlongPath(*engine_, document, manifest(brush), stroke);
+    }
+    const core::TileBounds fresh(document.document().positions);
+    const core::TileBounds& kept = document.bounds();
+    QCOMPARE(kept.tilesPerSide(), fresh.tilesPerSide());
+    int differing = 0;
+    for (int t = 0; t < fresh.tilesPerSide() * fresh.tilesPerSide(); ++t) {
+      const core::BoundingBox a = kept.box(t), b = fresh.box(t);
+      differing += !(a.min == b.min && a.max == b.max);
+    }
+    QCOMPARE(differing, 0);
+    QCOMPARE(kept.diagonal(), fresh.diagonal());
+    QVERIFY(fresh.diagonal() !=
+            core::TileBounds(core::makeBaseShape(core::BaseShape::Blob, n)).diagonal());
+  }
+}
+
+// Where positions are deferred (a real GPU) the dabs read only the mirror's regions they sync:
+// every stroke must come out bit for bit as where each dab's positions are read back at once,
+// whatever the brush reads on the CPU (area normals, mirror images' nearest samples, a drag's
+// tips, an anchored stroke), and the mirror must really lag during the stroke.
+void StrokesTest::deferredPositionsGiveTheSameStrokes() {
+  const int n = 64;
+  GpuDocument atOnce(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  GpuDocument deferred(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  atOnce.setPositionsDeferred(false);
+  deferred.setPositionsDeferred(true);
+  std::vector<PathStroke> strokes;
+  strokes.push_back(strokeOf("push", {{0.2f, 0.5f}, {0.8f, 0.4f}}, 0.2f, 0.5f));
+  strokes.push_back(strokeOf("smooth", {{0.1f, 0.1f}, {0.0f, 0.6f}, {0.5f, 1.0f}}, 0.25f, 0.8f));
+  strokes.push_back(strokeOf("inflate", {{0.3f, 0.3f}, {0.6f, 0.7f}}, 0.2f, 0.4f));
+  strokes.back().symmetry = kSymmetryX | kSymmetryZ;
+  strokes.push_back(strokeOf("paint", {{0.4f, 0.6f}, {0.9f, 0.9f}}, 0.2f, 1.0f));
+  strokes.back().parameters["color"] = {0.9f, 0.2f, 0.1f, 1.0f};
+  strokes.push_back(strokeOf("snake-hook", {{0.5f, 0.5f}}, 0.2f, 1.0f));
+  strokes.push_back(strokeOf("grab", {{0.98f, 0.5f}}, 0.2f, 1.0f));
+  const core::TileBounds& bounds = atOnce.bounds();
+  const float d = bounds.diagonal();
+  const core::Vec3f c = (bounds.box(0).min + bounds.box(0).max) * 0.5f;
+  strokes[4].dragPoints = {c + core::Vec3f{0.1f * d, 0, 0}, c + core::Vec3f{0.3f * d, 0.1f * d, 0}};
+  strokes[5].dragPoints = {c + core::Vec3f{0, 0.2f * d, 0}};
+  for (PathStroke& stroke : strokes) {
+    try {
+      strokeAlongPath(*engine_, atOnce, manifest(stroke.brush), stroke);
+      strokeAlongPath(*engine_, deferred, manifest(stroke.brush), stroke);
+    } catch (const std::exception& e) {
+      QFAIL((stroke.brush + ": " + e.what()).c_str());
+    }
+    QVERIFY2(sameBits(snapshot(deferred), snapshot(atOnce)), stroke.brush.c_str());
+  }
+  QVERIFY(!sameBits(snapshot(atOnce), snapshot(GpuDocument(core::makeDocument(
+                                          core::makeBaseShape(core::BaseShape::Blob, n))))));
+  // During a stroke the deferred document's positions wait for a reader; the bounds do not, and
+  // the record so far (keep detail's between dabs) reads what it needs synced.
+  StrokeSession session(*engine_, deferred, manifest("push"), strokeOf("push", {}, 0.2f, 0.5f));
+  StrokeSession twin(*engine_, atOnce, manifest("push"), strokeOf("push", {}, 0.2f, 0.5f));
+  for (StrokeSession* s : {&session, &twin}) {
+    s->moveToUv({0.5f, 0.5f}, 0.2f * d, 0.5f);
+    s->moveToUv({0.6f, 0.55f}, 0.2f * d, 0.5f);
+  }
+  QVERIFY(deferred.mirrorStale());
+  const core::EditStep soFar = session.recordSoFar("push"), twinSoFar = twin.recordSoFar("push");
+  QVERIFY(soFar.changedTexels > 100);
+  QCOMPARE(soFar.changedTexels, twinSoFar.changedTexels);
+  for (std::size_t k = 0; k < soFar.tiles.size(); ++k)
+    QVERIFY(soFar.tiles[k].xorBits == twinSoFar.tiles[k].xorBits);
+  twin.finish("push");
+  session.moveToUv({0.7f, 0.5f}, 0.2f * d, 0.5f);
+  QVERIFY(deferred.mirrorStale());
+  const core::TileBounds fresh(deferred.document().positions); // synced by document()
+  QVERIFY(!deferred.mirrorStale());
+  int differing = 0;
+  for (int t = 0; t < fresh.tilesPerSide() * fresh.tilesPerSide(); ++t)
+    differing += !(fresh.box(t).min == deferred.bounds().box(t).min &&
+                   fresh.box(t).max == deferred.bounds().box(t).max);
+  QCOMPARE(differing, 0);
+  session.finish("push");
+}
+
+// The stroke's finite check is a reduction on the GPU: it must flag a NaN or an infinity in any
+// checked channel, a position beyond ±1e15 but not its saliency (w), and nothing elsewhere.
+void StrokesTest::finiteCheckOnTheGpuFindsEachBadValue() {
+  const int n = 64;
+  GpuDocument document(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, n)));
+  const core::TexelRect whole{0, 0, n + 1, n + 1}, at{40, 20, 1, 1}, away{0, 0, 30, 65};
+  const std::vector<core::TexelRect> rects{{10, 10, 20, 5}, {33, 17, 12, 9}};
+  QVERIFY(document.holdsOnlyFinite(core::EditLayer::Positions, std::span(&whole, 1)));
+  QVERIFY(document.holdsOnlyFinite(core::EditLayer::Diffuse, std::span(&whole, 1)));
+  const std::vector<float> good = document.mirrorTexels(core::EditLayer::Positions, at);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (int c = 0; c < 4; ++c)
+    for (float bad : {nan, -inf, 2e15f}) {
+      std::vector<float> texel = good;
+      texel[c] = bad;
+      document.restore(core::EditLayer::Positions, at, texel);
+      const bool flagged = !(c == 3 && bad == 2e15f); // the saliency need only be finite
+      QCOMPARE(document.holdsOnlyFinite(core::EditLayer::Positions, rects), !flagged);
+      QVERIFY(document.holdsOnlyFinite(core::EditLayer::Positions, std::span(&away, 1)));
+    }
+  document.restore(core::EditLayer::Positions, at, good);
+  QVERIFY(document.holdsOnlyFinite(core::EditLayer::Positions, rects));
+  document.restore(core::EditLayer::Diffuse, at, std::vector<float>{0.5f, inf, 0.5f, 1.0f});
+  QVERIFY(!document.holdsOnlyFinite(core::EditLayer::Diffuse, rects));
+  document.restore(core::EditLayer::Mask, at, std::vector<float>{nan});
+  QVERIFY(!document.holdsOnlyFinite(core::EditLayer::Mask, rects));
+  QVERIFY(document.holdsOnlyFinite(core::EditLayer::Mask, std::span(&away, 1)));
 }
 
 void StrokesTest::sessionRefusesSamplesOutsideTheImage() {

@@ -140,7 +140,8 @@ const core::Document& Modeller::document() const {
   // While a stroke's relaxation is solved beside the GUI this is the surface as shown (both only
   // read it); its step is recorded, and the document written, when it is in.
   if (!session_.gpuDocument().mirrorStale()) return session_.document();
-  // Mid-stroke (autosave, save): the session reads the deferred paint back, which is GL work.
+  // Mid-stroke (picking, autosave, save): the session reads back what the stroke deferred (paint;
+  // positions too on a GPU), which is GL work.
   CurrentContext current(*host_, CurrentContext::Mode::IfNotCurrent);
   return session_.document();
 }

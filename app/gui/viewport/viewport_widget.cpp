@@ -242,8 +242,9 @@ std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   const QRectF view = modelRect();
   if (p.x() >= view.width()) p.rx() -= view.width();
   const core::Ray ray = viewRay(*renderer()->GetActiveCamera(), view.size(), p);
-  const gpu::GpuDocument& document = session.gpuDocument();
-  return core::pickRay(document.document().positions, document.bounds(), ray);
+  // The modeller's document: mid-stroke on a GPU the positions' read-backs wait, and it syncs
+  // them with the context current.
+  return core::pickRay(modeller_.document().positions, session.gpuDocument().bounds(), ray);
 }
 
 QPointF ViewportWidget::project(core::Vec3f p) const {

@@ -43,11 +43,22 @@ void TileBounds::refresh(const GeometryImage& image, TexelRect rect) {
 }
 
 void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> rects) {
-  if (rects.empty()) return;
+  const std::vector<int> tiles = tilesTouching(rects);
+  std::vector<BoundingBox> quarters(4 * tiles.size());
+  for (std::size_t k = 0; k < tiles.size(); ++k)
+    for (int q = 0; q < 4; ++q)
+      quarters[4 * k + static_cast<std::size_t>(q)] =
+          rectBox(image, quarterRect(tiles[k] % tilesX_, tiles[k] / tilesX_, q));
+  setQuarterBoxes(tiles, quarters);
+}
+
+std::vector<int> TileBounds::tilesTouching(std::span<const TexelRect> rects) const {
+  std::vector<int> tiles;
+  if (rects.empty()) return tiles;
   const int size = std::min({kTileSize, width_, height_});
-  // The tiles to recompute, each once however many rectangles overlap it. A tile's box also
-  // holds the first sample past it, so a box bounds its cells' triangles: a changed sample on
-  // a tile's first row or column also moves the box of the tile before it.
+  // Each tile once however many rectangles overlap it. A tile's box also holds the first sample
+  // past it, so a box bounds its cells' triangles: a changed sample on a tile's first row or
+  // column also moves the box of the tile before it.
   int tx0 = tilesX_, ty0 = tilesY_, tx1 = -1, ty1 = -1;
   const auto span = [&](TexelRect rect) {
     return std::array<int, 4>{std::min(std::max(rect.x - 1, 0) / size, tilesX_ - 1),
@@ -70,17 +81,29 @@ void TileBounds::refresh(const GeometryImage& image, std::span<const TexelRect> 
   }
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx)
-      if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)]) {
-        const std::size_t tile = static_cast<std::size_t>(ty) * tilesX_ + tx;
-        BoundingBox box;
-        for (int q = 0; q < 4; ++q) {
-          const BoundingBox quarter = rectBox(image, quarterRect(tx, ty, q));
-          quarters_[4 * tile + static_cast<std::size_t>(q)] = quarter;
-          box.extend(quarter.min);
-          box.extend(quarter.max);
-        }
-        boxes_[tile] = box;
-      }
+      if (stale[static_cast<std::size_t>(ty - ty0) * w + (tx - tx0)])
+        tiles.push_back(ty * tilesX_ + tx);
+  return tiles;
+}
+
+void TileBounds::setQuarterBoxes(std::span<const int> tiles,
+                                 std::span<const BoundingBox> quarters) {
+  if (tiles.empty()) return;
+  int tx0 = tilesX_, ty0 = tilesY_, tx1 = -1, ty1 = -1;
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const std::size_t tile = static_cast<std::size_t>(tiles[k]);
+    const int tx = tiles[k] % tilesX_, ty = tiles[k] / tilesX_;
+    tx0 = std::min(tx0, tx), ty0 = std::min(ty0, ty), tx1 = std::max(tx1, tx),
+    ty1 = std::max(ty1, ty);
+    BoundingBox box;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const BoundingBox& quarter = quarters[4 * k + q];
+      quarters_[4 * tile + q] = quarter;
+      box.extend(quarter.min);
+      box.extend(quarter.max);
+    }
+    boxes_[tile] = box;
+  }
   for (int gy = ty0 / kGroup; gy <= ty1 / kGroup; ++gy)
     for (int gx = tx0 / kGroup; gx <= tx1 / kGroup; ++gx) {
       BoundingBox group;

@@ -131,7 +131,7 @@ bool BrushEngine::usesCentreNormal(const GpuDocument& document, const std::strin
   if (found == brushes_.end())
     throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brushId + "' is loaded");
   LoadedBrush& brush = *found->second;
-  const bool maskTexture = !document.document().mask.uniform();
+  const bool maskTexture = !document.mirror().mask.uniform();
   const std::vector<int> enums = enumValues(brush.manifest, parameters);
   for (core::EditLayer layer : brush.manifest.writes) {
     const Program& pass = program(brush, layer, maskTexture, enums);
@@ -179,7 +179,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   if (result.tiles.empty()) return result;
   LoadedBrush& brush = *brushes_.at(brushId);
   if (!brush.broken.empty()) throw BrushTimeoutError(brush.broken);
-  const bool maskTexture = !document.document().mask.uniform();
+  const bool maskTexture = !document.mirror().mask.uniform();
   const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
   const int side = document.size() + 1;
   for (const core::TexelRect& t : result.tiles)
@@ -240,7 +240,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     // Positions always; a paint layer only when painted: an unpainted one is its fill everywhere,
     // which resampling keeps (and the mask would stop counting as unpainted).
     std::vector<core::EditLayer> layers{core::EditLayer::Positions};
-    const core::Document& d = document.document();
+    const core::Document& d = document.mirror();
     if (!d.diffuse.uniform()) layers.push_back(core::EditLayer::Diffuse);
     if (!d.feature.uniform()) layers.push_back(core::EditLayer::Feature);
     if (!d.mask.uniform()) layers.push_back(core::EditLayer::Mask);

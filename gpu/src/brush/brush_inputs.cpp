@@ -35,17 +35,17 @@ const core::Layer* documentLayer(const core::Document& d, core::EditLayer layer)
 void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
                  core::EditLayer layer, const Dab& dab) {
   // The layer's base value (what a new document holds): erase modes blend back to it.
-  if (const core::Layer* l = documentLayer(doc.document(), layer))
+  if (const core::Layer* l = documentLayer(doc.mirror(), layer))
     glUniform4f(location(program, "u_layerFill"), l->fill[0], l->fill[1], l->fill[2], l->fill[3]);
   // brushLayers() brushes: every layer's base value.
-  glUniform4f(location(program, "u_diffuseFill"), doc.document().diffuse.fill[0],
-              doc.document().diffuse.fill[1], doc.document().diffuse.fill[2],
-              doc.document().diffuse.fill[3]);
-  glUniform4f(location(program, "u_featureFill"), doc.document().feature.fill[0],
-              doc.document().feature.fill[1], doc.document().feature.fill[2], 0.0f);
+  glUniform4f(location(program, "u_diffuseFill"), doc.mirror().diffuse.fill[0],
+              doc.mirror().diffuse.fill[1], doc.mirror().diffuse.fill[2],
+              doc.mirror().diffuse.fill[3]);
+  glUniform4f(location(program, "u_featureFill"), doc.mirror().feature.fill[0],
+              doc.mirror().feature.fill[1], doc.mirror().feature.fill[2], 0.0f);
   for (const BrushUnit& unit : kLayerUnits)
     glUniform1i(location(program, unit.sampler), unit.unit);
-  glUniform1f(location(program, "u_maskFill"), doc.document().mask.fill[0]);
+  glUniform1f(location(program, "u_maskFill"), doc.mirror().mask.fill[0]);
   glUniform1i(location(program, "u_size"), doc.size());
   glUniform1i(location(program, "u_topology"),
               static_cast<int>(doc.document().positions.topology()));

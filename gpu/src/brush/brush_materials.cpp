@@ -95,9 +95,11 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     // One mip level for the dab per projection, from the sample spacing at its centre: the
     // maps' texels one sample spans (a per-texel level would cost a position fetch and a log per
     // texel). The brush samples the projection it needs.
-    const core::GeometryImage& image = document.document().positions;
     const core::Sample c = dab.centreTexel;
     const core::Sample next{c.i < document.size() ? c.i + 1 : c.i - 1, c.j};
+    const core::TexelRect both{std::min(c.i, next.i), c.j, 2, 1};
+    document.syncRegion(std::span(&both, 1)); // the rest of the mirror may wait for read-backs
+    const core::GeometryImage& image = document.mirror().positions;
     const float spacing = core::length(image.at(next).xyz() - image.at(c).xyz());
     struct Level {
       std::size_t index;

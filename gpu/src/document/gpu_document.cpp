@@ -1,11 +1,17 @@
 #include "octaclay/gpu/gpu_document.h"
 
+#include "finite_check_pass.h"
+#include "tile_bounds_pass.h"
+
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -25,6 +31,28 @@ TextureFormat formatOf(core::EditLayer layer) {
   return TextureFormat::Rgba32f;
 }
 
+// Whether the driver renders on the CPU (its textures in the CPU's memory, a read-back a copy).
+bool softwareRenderer();
+
+// Positions deferred by default where the driver is not a software rasterizer;
+// $OCTACLAY_DEFER_POSITIONS = 1 or 0 overrides it (to run the modeller's tests both ways).
+bool positionsDeferredByDefault() {
+  if (const char* text = std::getenv("OCTACLAY_DEFER_POSITIONS")) {
+    if (std::string(text) == "1") return true;
+    if (std::string(text) == "0") return false;
+  }
+  return !softwareRenderer();
+}
+
+bool softwareRenderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!renderer) return true;
+  const std::string name(renderer);
+  for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer"})
+    if (name.find(soft) != std::string::npos) return true;
+  return false;
+}
+
 } // namespace
 
 int GpuDocument::channels(core::EditLayer layer) {
@@ -41,7 +69,8 @@ int GpuDocument::channels(core::EditLayer layer) {
 }
 
 GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
-    : document_(std::move(document)), bounds_(document_.positions) {
+    : document_(std::move(document)), bounds_(document_.positions),
+      deferPositions_(positionsDeferredByDefault()) {
   // Textures are (N+1)² and every pass measures them by N: a torus or plane on the GPU is square.
   if (!document_.positions.square())
     throw core::Error(core::ErrorKind::InvalidArgument,
@@ -71,6 +100,55 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
         l->fill[k] = texel[k];
     }
   }
+}
+
+GpuDocument::~GpuDocument() = default;
+GpuDocument::GpuDocument(GpuDocument&&) noexcept = default;
+GpuDocument& GpuDocument::operator=(GpuDocument&&) noexcept = default;
+
+const core::Document& GpuDocument::document() const {
+  // The mirror is a cache of the textures: bringing it up to date changes nothing a reader sees.
+  if (mirrorStale()) const_cast<GpuDocument*>(this)->syncMirror();
+  return document_;
+}
+
+void GpuDocument::setPositionsDeferred(bool on) {
+  syncMirror();
+  deferPositions_ = on;
+}
+
+void GpuDocument::syncRegion(std::span<const core::TexelRect> rects) const {
+  auto& self = const_cast<GpuDocument&>(*this); // as document(): the cache, not the document
+  std::vector<std::uint8_t>& stale = self.staleBlocks_[index(core::EditLayer::Positions)];
+  if (stale.empty()) return;
+  const int side = document_.positions.side();
+  const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
+  for (const core::TexelRect& given : rects) {
+    const int x0 = std::max(given.x, 0), y0 = std::max(given.y, 0);
+    const int x1 = std::min(given.x + given.width, side),
+              y1 = std::min(given.y + given.height, side);
+    if (x0 >= x1 || y0 >= y1) continue;
+    for (int by = y0 / kStaleBlock; by <= (y1 - 1) / kStaleBlock; ++by)
+      for (int bx = x0 / kStaleBlock; bx <= (x1 - 1) / kStaleBlock; ++bx) {
+        std::uint8_t& flag = stale[static_cast<std::size_t>(by) * blocks + bx];
+        if (!flag) continue;
+        flag = 0;
+        const int x = bx * kStaleBlock, y = by * kStaleBlock;
+        self.readBack(core::EditLayer::Positions,
+                      {x, y, std::min(kStaleBlock, side - x), std::min(kStaleBlock, side - y)});
+      }
+  }
+}
+
+void GpuDocument::refreshBounds(std::span<const core::TexelRect> rects) {
+  if (!boundsPass_) boundsPass_ = std::make_unique<detail::TileBoundsPass>();
+  boundsPass_->refresh(textures_[index(core::EditLayer::Positions)], bounds_, rects);
+}
+
+bool GpuDocument::holdsOnlyFinite(core::EditLayer layer, std::span<const core::TexelRect> rects) {
+  if (!finitePass_) finitePass_ = std::make_unique<detail::FiniteCheckPass>();
+  return finitePass_->allFinite(textures_[index(layer)], channels(layer),
+                                layer == core::EditLayer::Positions, core::kMaxCoordinate, rects);
 }
 
 Texture& GpuDocument::scratch(core::EditLayer layer) {
@@ -143,6 +221,17 @@ void GpuDocument::restore(core::EditLayer layer, core::TexelRect rect,
   push(layer, rect);
 }
 
+void GpuDocument::restoreCopy(core::EditLayer layer, core::TexelRect rect,
+                              std::span<const float> texels, const Texture& from, int fromX,
+                              int fromY) {
+  syncMirror(); // as restore()
+  writeMirror(layer, rect, texels);
+  note(layer, rect);
+  glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, fromX, fromY, 0, textures_[index(layer)].id(),
+                     GL_TEXTURE_2D, 0, rect.x, rect.y, 0, rect.width, rect.height, 1);
+  checkGlError("restoring a tile from the undo pool");
+}
+
 void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
   note(layer, rect);
   const core::Layer* l = mirrorLayer(layer);
@@ -166,11 +255,6 @@ void GpuDocument::push(core::EditLayer layer, core::TexelRect rect) {
   texture.upload(rect, texels);
 }
 
-void GpuDocument::pull(core::EditLayer layer, core::TexelRect rect) {
-  readBack(layer, rect);
-  if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rect);
-}
-
 void GpuDocument::readBack(core::EditLayer layer, core::TexelRect rect) {
   const int c = channels(layer);
   const int side = document_.positions.side();
@@ -185,14 +269,22 @@ void GpuDocument::changed(core::EditLayer layer, core::TexelRect rect) {
 void GpuDocument::changed(core::EditLayer layer, std::span<const core::TexelRect> rects) {
   for (const core::TexelRect& rect : rects)
     note(layer, rect);
-  if (!deferring_ || layer == core::EditLayer::Positions) {
+  const bool positions = layer == core::EditLayer::Positions;
+  if (!deferring_ || (positions && !deferPositions_)) {
     for (const core::TexelRect& rect : rects)
       readBack(layer, rect);
     // Once for all the rectangles: a dab's merged rows share tiles at their edges.
-    if (layer == core::EditLayer::Positions) bounds_.refresh(document_.positions, rects);
+    if (positions) bounds_.refresh(document_.positions, rects);
     return;
   }
-  editedMirror(layer); // a uniform layer gets texels: brushes see it as painted from now on
+  if (positions)
+    refreshBounds(rects); // the next pick and reach see the new surface; its texels wait
+  else
+    editedMirror(layer); // a uniform layer gets texels: brushes see it as painted from now on
+  markStale(layer, rects);
+}
+
+void GpuDocument::markStale(core::EditLayer layer, std::span<const core::TexelRect> rects) {
   const int blocks = (document_.positions.side() + kStaleBlock - 1) / kStaleBlock;
   std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
   stale.resize(static_cast<std::size_t>(blocks) * blocks, 0);
@@ -207,7 +299,7 @@ bool GpuDocument::mirrorStale() const {
                      [](const std::vector<std::uint8_t>& s) { return !s.empty(); });
 }
 
-void GpuDocument::deferPaintPulls(bool on) {
+void GpuDocument::deferPulls(bool on) {
   deferring_ = on;
   if (!on) syncMirror();
 }
@@ -215,8 +307,8 @@ void GpuDocument::deferPaintPulls(bool on) {
 void GpuDocument::syncMirror() {
   const int side = document_.positions.side();
   const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
-  for (core::EditLayer layer :
-       {core::EditLayer::Diffuse, core::EditLayer::Feature, core::EditLayer::Mask}) {
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask}) {
     std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
     if (stale.empty()) continue;
     // Runs of stale blocks along each block row, one read each.
@@ -230,7 +322,9 @@ void GpuDocument::syncMirror() {
         while (end < blocks && stale[static_cast<std::size_t>(by) * blocks + end])
           ++end;
         const int x = bx * kStaleBlock, y = by * kStaleBlock;
-        pull(layer, {x, y, std::min(end * kStaleBlock, side) - x, std::min(kStaleBlock, side - y)});
+        // The tile bounds are current already (refreshed from the GPU after each pass).
+        readBack(layer,
+                 {x, y, std::min(end * kStaleBlock, side) - x, std::min(kStaleBlock, side - y)});
         bx = end;
       }
     stale.clear();
@@ -260,6 +354,7 @@ float* GpuDocument::mirrorData(core::EditLayer layer) {
 }
 
 void GpuDocument::writeSaliency(std::span<const float> saliency) {
+  syncMirror(); // the whole mirror goes back to the texture below: nothing may wait in it
   std::span<core::Vec4f> texels = document_.positions.texels();
   if (saliency.size() != texels.size())
     throw core::Error(core::ErrorKind::InvalidArgument,

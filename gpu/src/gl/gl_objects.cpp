@@ -1,5 +1,7 @@
 #include "octaclay/gpu/gl_objects.h"
 
+#include "half_float.h"
+
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
@@ -138,21 +140,7 @@ std::vector<float> Texture::read(core::TexelRect region) const {
   return texels;
 }
 
-namespace {
-
-// Exact half → float without branches, so the compiler vectorizes a row of them: the half's
-// exponent and mantissa moved into a float's and scaled by 2^112 (subnormal halves become
-// subnormal floats and scale exactly too); infinities and NaNs keep the all-ones exponent.
-float widenHalf(std::uint16_t h) {
-  const std::uint32_t magnitude = h & 0x7fffu;
-  const float scaled = std::bit_cast<float>(magnitude << 13) * 0x1p112f;
-  const std::uint32_t special = 0u - static_cast<std::uint32_t>(magnitude >= 0x7c00u);
-  const std::uint32_t bits = (((magnitude << 13) | 0x7f800000u) & special) |
-                             (std::bit_cast<std::uint32_t>(scaled) & ~special);
-  return std::bit_cast<float>(bits | (static_cast<std::uint32_t>(h & 0x8000u) << 16));
-}
-
-} // namespace
+using detail::widenHalf;
 
 void Texture::readInto(core::TexelRect region, float* out, int rowLength, int channels) const {
   const GLenum layout = layoutOf(channels);
@@ -187,6 +175,34 @@ void Texture::readInto(core::TexelRect region, float* out, int rowLength, int ch
   glReadPixels(region.x, region.y, region.width, region.height, layout, GL_FLOAT, out);
   glPixelStorei(GL_PACK_ROW_LENGTH, 0);
   checkGlError("texture read-back");
+}
+
+std::size_t Texture::packedTexelBytes() const {
+  switch (format_) {
+  case TextureFormat::Rgba32f:
+    return 16;
+  case TextureFormat::Rgba16f:
+    return 8;
+  case TextureFormat::R32f:
+  case TextureFormat::Rgba8:
+    return 4;
+  }
+  return 16;
+}
+
+void Texture::readToPackBuffer(core::TexelRect region, unsigned buffer, std::size_t offset) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer());
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, buffer);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  const FormatInfo f = info(format_);
+  const GLenum type = format_ == TextureFormat::Rgba16f ? GL_HALF_FLOAT
+                      : format_ == TextureFormat::Rgba8 ? GL_UNSIGNED_BYTE
+                                                        : GL_FLOAT;
+  glReadPixels(region.x, region.y, region.width, region.height, f.layout, type,
+               reinterpret_cast<void*>(static_cast<std::uintptr_t>(offset)));
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  checkGlError("texture read into a pack buffer");
 }
 
 void Texture::uploadFrom(core::TexelRect region, const float* in, int rowLength, int channels) {

@@ -1,4 +1,5 @@
-// Program: compiling and linking a vertex + fragment pair, with the driver's log in the error.
+// Program: compiling and linking a vertex + fragment pair (or one compute shader), with the
+// driver's log in the error.
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/gl_objects.h"
 
@@ -26,7 +27,10 @@ GLuint compileStage(const std::string& name, GLenum stage, const std::string& so
   glDeleteShader(shader);
   while (!log.empty() && (log.back() == '\0' || log.back() == '\n'))
     log.pop_back();
-  throw GlError(name + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+  throw GlError(name + ": " +
+                (stage == GL_VERTEX_SHADER    ? "vertex"
+                 : stage == GL_COMPUTE_SHADER ? "compute"
+                                              : "fragment") +
                 " shader does not compile:\n" + log);
 }
 
@@ -59,6 +63,25 @@ Program::Program(const std::string& name, const std::string& vertexSource,
     id_ = 0;
     throw GlError(name + ": program does not link:\n" + log);
   }
+}
+
+Program Program::compute(const std::string& name, const std::string& source) {
+  const GLuint shader = compileStage(name, GL_COMPUTE_SHADER, source);
+  Program program;
+  program.id_ = glCreateProgram();
+  glAttachShader(program.id_, shader);
+  glLinkProgram(program.id_);
+  glDeleteShader(shader);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.id_, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetProgramiv(program.id_, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program.id_, length, nullptr, log.data());
+    throw GlError(name + ": program does not link:\n" + log);
+  }
+  return program;
 }
 
 Program::Program(Program&& other) noexcept : id_(std::exchange(other.id_, 0)) {}

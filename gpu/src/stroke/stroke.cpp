@@ -17,6 +17,7 @@
 #include <limits>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -89,12 +90,14 @@ std::string shortNumber(double v) {
 
 core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
   const core::TileBounds& bounds = document.bounds();
-  const core::GeometryImage& image = document.document().positions;
+  const core::GeometryImage& image = document.mirror().positions;
   float radius = 1e-3f * std::max(bounds.diagonal(), 1e-6f);
   for (;;) {
     float best = std::numeric_limits<float>::max();
     core::Sample found{};
-    for (int t : bounds.tilesNearSphere(p, radius)) {
+    const std::vector<int> tiles = bounds.tilesNearSphere(p, radius);
+    syncTiles(document, tiles);
+    for (int t : tiles) {
       const core::TexelRect r =
           bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
       for (int j = r.y; j < r.y + r.height; ++j)
@@ -114,14 +117,14 @@ struct StrokeSession::State {
       : engine(e), document(d), brush(b), settings(std::move(s)), undo(d, b.writes) {
     // Paint layers are read back once at the stroke's end, not after every dab: the stroke
     // itself reads only positions (and undo tiles before their first dab).
-    document.deferPaintPulls(true);
+    document.deferPulls(true);
     engine.beginStroke(); // a reparameterize brush resamples once per stroke
   }
   ~State() {
     if (finished) return;
     try {
       engine.endStroke();
-      document.deferPaintPulls(false);
+      document.deferPulls(false);
     } catch (...) { // an abandoned stroke: the textures stay right, only the mirror may lag
     }
   }
@@ -176,7 +179,7 @@ struct StrokeSession::State {
     undo.restore();
     engine.endStroke();
     try {
-      document.deferPaintPulls(false);
+      document.deferPulls(false);
     } catch (...) { // the restored texels are in the mirror and the textures already
     }
   }
@@ -282,7 +285,8 @@ struct StrokeSession::State {
   void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure,
              std::optional<core::Vec3f> cursorDrag = std::nullopt) {
     const int n = document.size();
-    const core::GeometryImage& image = document.document().positions;
+    // The mirror, each region synced before it is read: the rest may wait for its read-back.
+    const core::GeometryImage& image = document.mirror().positions;
     const bool first = dabs == 0;
     if (first) {
       startPoint = startPosition(xy[0], xy[1]);
@@ -309,6 +313,7 @@ struct StrokeSession::State {
         Dab& d = images[k];
         d.centre = tips[k];
         d.centreTexel = nearestSample(document, d.centre);
+        syncAround(document, d.centreTexel.i, d.centreTexel.j);
         const core::Vec3f pointNormal = core::vertexNormal(image, d.centreTexel);
         d.centreNormal =
             areaNormals ? areaNormal(document, d.centre, kAreaNormalRadius * radius, pointNormal)
@@ -316,6 +321,7 @@ struct StrokeSession::State {
       }
     } else {
       const core::GridPoint point = surfacePointAt(image.grid(), xy[0], xy[1]);
+      syncAround(document, xy[0], xy[1]);
       const core::Vec3f p = core::interpolatePosition(image, point);
       const core::Vec3f pointNormal = interpolateNormal(image, point);
       // The first dab's normal is the stroke's anchor normal (a drag's plane) whatever the brush.
@@ -624,7 +630,7 @@ core::EditStep StrokeSession::finish(const std::string& label) {
   }
   st.finished = true;
   st.engine.endStroke();
-  st.document.deferPaintPulls(false);
+  st.document.deferPulls(false);
   return st.undo.finish(label);
 }
 

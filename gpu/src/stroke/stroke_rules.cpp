@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace octaclay::gpu {
 
@@ -77,10 +79,39 @@ bool boxWellInside(const core::BoundingBox& box, core::Vec3f centre, float radiu
 
 } // namespace
 
+void syncTiles(const GpuDocument& document, std::span<const int> tiles) {
+  const core::TileBounds& bounds = document.bounds();
+  std::vector<core::TexelRect> rects;
+  rects.reserve(tiles.size());
+  for (int t : tiles) // a tile's cells reach the first sample past it
+    rects.push_back(bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide()));
+  for (core::TexelRect& r : rects)
+    r.width += 1, r.height += 1;
+  document.syncRegion(rects);
+}
+
+void syncAround(const GpuDocument& document, double x, double y) {
+  const int n = document.size();
+  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+  const int margin = 3;
+  std::vector<core::TexelRect> rects{{i - margin, j - margin, 2 * margin + 2, 2 * margin + 2}};
+  if (i <= margin || j <= margin || i >= n - margin || j >= n - margin) {
+    // Neighbours across a seam (wrap) lie anywhere along the border: its strips, whole.
+    const int w = margin + 1;
+    rects.push_back({0, 0, n + 1, w});
+    rects.push_back({0, n + 1 - w, n + 1, w});
+    rects.push_back({0, 0, w, n + 1});
+    rects.push_back({n + 1 - w, 0, w, n + 1});
+  }
+  document.syncRegion(rects);
+}
+
 core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
                        core::Vec3f fallback) {
-  const core::GeometryImage& image = document.document().positions;
+  const core::GeometryImage& image = document.mirror().positions;
   const core::TileBounds& bounds = document.bounds();
+  const std::vector<int> near = bounds.tilesNearSphere(centre, radius);
+  syncTiles(document, near);
   const int n = document.size(), half = n / 2;
   const float r2 = radius * radius;
   core::Vec3f sum;
@@ -95,7 +126,7 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
   // split (core::cellTriangles: anti-diagonal where i and j lie in the same half) inline, the
   // triangles in cellTriangles' order, so the sum is the same to the bit. A tile well inside
   // the sphere (most of them) adds its triangles without the centroid test.
-  for (int t : bounds.tilesNearSphere(centre, radius)) {
+  for (int t : near) {
     const core::TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
     const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, n);
     const bool inside = boxWellInside(bounds.box(t), centre, radius);

@@ -3,22 +3,29 @@
 #include "octaclay/core/error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace octaclay::gpu::detail {
 
 UndoCapture::UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers)
-    : document_(document), layers_(std::move(layers)), side_(document.size() + 1),
+    : document_(document), pool_(document), layers_(std::move(layers)), side_(document.size() + 1),
       tiles_(core::EditStepRecorder::tilesPerSide(side_)) {}
 
+void UndoCapture::capture(core::EditLayer layer, int tx, int ty) {
+  const int slot = pool_.capture(layer, core::EditStepRecorder::tileRegion(side_, tx, ty));
+  before_.push_back({layer, tx, ty, slot});
+}
+
 void UndoCapture::cover(core::TexelRect rect) {
+  pool_.startDownloads(); // earlier dabs' tiles: downloads started, those arrived taken in
   const int size = core::EditStepRecorder::kTileSize;
   for (int ty = rect.y / size; ty <= (rect.y + rect.height - 1) / size; ++ty)
     for (int tx = rect.x / size; tx <= (rect.x + rect.width - 1) / size; ++tx)
       if (const auto [at, added] = seen_.emplace(ty * tiles_ + tx, -1); added)
         for (core::EditLayer layer : layers_) {
           if (layer == core::EditLayer::Positions) at->second = static_cast<int>(before_.size());
-          before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+          capture(layer, tx, ty);
         }
 }
 
@@ -27,32 +34,45 @@ void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
     cover(core::EditStepRecorder::tileRegion(side_, tx, ty));
     return;
   }
-  if (extra_.insert({static_cast<int>(layer), tx, ty}).second)
-    before_.push_back({layer, tx, ty, texels(layer, tx, ty)});
+  if (extra_.insert({static_cast<int>(layer), tx, ty}).second) capture(layer, tx, ty);
 }
 
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
   const int size = core::EditStepRecorder::kTileSize;
   const auto at = seen_.find((s.j / size) * tiles_ + s.i / size);
-  if (at == seen_.end() || at->second < 0) return document_.document().positions.at(s).xyz();
+  // Not captured: nothing the stroke changed, so the mirror holds it even where read-backs wait.
+  if (at == seen_.end() || at->second < 0) return document_.mirror().positions.at(s).xyz();
   const Tile& t = before_[static_cast<std::size_t>(at->second)];
   const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
   const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
                         static_cast<std::size_t>(GpuDocument::channels(t.layer));
-  return {t.texels[k], t.texels[k + 1], t.texels[k + 2]};
+  const std::vector<float>& texels = pool_.texels(t.slot);
+  return {texels[k], texels[k + 1], texels[k + 2]};
 }
 
 void UndoCapture::restore() {
   for (const Tile& t : before_)
-    document_.restore(t.layer, core::EditStepRecorder::tileRegion(side_, t.x, t.y), t.texels);
+    pool_.restore(t.slot);
 }
 
 core::EditStep UndoCapture::finish(const std::string& label) {
+  // The finite check on the GPU, one flag per layer read back; only a stroke it flags is
+  // checked again on the CPU, which names the sample.
+  std::array<std::vector<core::TexelRect>, 4> written;
+  for (const Tile& t : before_)
+    written[static_cast<std::size_t>(t.layer)].push_back(
+        core::EditStepRecorder::tileRegion(side_, t.x, t.y));
+  bool clean = true;
+  for (std::size_t k = 0; k < written.size() && clean; ++k)
+    if (!written[k].empty())
+      clean = document_.holdsOnlyFinite(static_cast<core::EditLayer>(k),
+                                        core::mergeRects(std::move(written[k])));
   core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_) {
     std::vector<float> after = texels(t.layer, t.x, t.y);
-    checkFinite(t, after); // on the after-tiles read anyway: no extra readback
-    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels, after);
+    if (!clean) checkFinite(t, after);
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
+                     after);
   }
   return recorder.finish(label);
 }
@@ -60,13 +80,15 @@ core::EditStep UndoCapture::finish(const std::string& label) {
 core::EditStep UndoCapture::record(const std::string& label) const {
   core::EditStepRecorder recorder(side_);
   for (const Tile& t : before_)
-    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), t.texels,
+    recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
                      texels(t.layer, t.x, t.y));
   return recorder.finish(label);
 }
 
 std::vector<float> UndoCapture::texels(core::EditLayer layer, int tx, int ty) const {
   const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, tx, ty);
+  // Mid-stroke (recordSoFar) deferred positions may wait for their read-back.
+  if (layer == core::EditLayer::Positions) document_.syncRegion(std::span(&r, 1));
   return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
 }
 

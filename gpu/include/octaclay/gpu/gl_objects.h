@@ -45,6 +45,12 @@ public:
   /// goes, rows are rowLength texels apart, each texel `channels` floats (1, 3 or 4; channels
   /// the texture lacks read as 0, alpha as 1). Avoids a temporary and a copy per dab.
   void readInto(core::TexelRect region, float* out, int rowLength, int channels) const;
+  /// Starts reading region into GL buffer `buffer` (a pixel-pack buffer) at byte offset, rows
+  /// tight, each texel in the format's own layout (packedTexelBytes: RGBA half floats for
+  /// Rgba16f): the read runs on the GPU's time; fence it and map the buffer later.
+  void readToPackBuffer(core::TexelRect region, unsigned buffer, std::size_t offset) const;
+  /// The bytes of one texel as readToPackBuffer writes it.
+  std::size_t packedTexelBytes() const;
   /// Writes region from a larger row-major float image laid out as for readInto.
   void uploadFrom(core::TexelRect region, const float* in, int rowLength, int channels);
 
@@ -175,6 +181,8 @@ public:
   /// compiler message. Throws GlError with name, stage and the driver's log.
   Program(const std::string& name, const std::string& vertexSource,
           const std::string& fragmentSource);
+  /// A compute program (GL 4.3) of one shader; errors as above.
+  static Program compute(const std::string& name, const std::string& source);
   Program(Program&& other) noexcept;
   Program& operator=(Program&& other) noexcept;
   Program(const Program&) = delete;

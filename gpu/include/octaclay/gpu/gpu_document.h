@@ -9,11 +9,17 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
 
 namespace octaclay::gpu {
+
+namespace detail {
+class FiniteCheckPass;
+class TileBoundsPass;
+} // namespace detail
 
 /// What a change of the document was part of, for the followers that act only when an edit
 /// settles (the saliency, the live LOD).
@@ -37,20 +43,41 @@ struct DocumentChange {
 };
 
 /// A document being edited: its layers as GPU textures (each with a scratch twin for
-/// ping-pong passes) and a CPU mirror that the engine keeps equal to them, region by region,
-/// after every dab. The mirror answers tile bounds, picking, undo and saving without reading
-/// the full image back. With deferred paint pulls (a stroke's lifetime) the paint layers'
-/// changed regions are only recorded and read back together by syncMirror(); positions are
-/// always read back at once. All calls need the engine's context current.
+/// ping-pong passes), which hold the truth while editing, and a CPU mirror of them. During a
+/// stroke (deferPulls) a pass's changed regions are only recorded, and read back in bulk when a
+/// reader needs them: document() syncs the mirror first, so every reader outside the dab path
+/// sees the textures' state (saving, exporting, the CPU's LOD, history, picking). Positions are
+/// deferred too where the driver's texture memory is not the CPU's (a real GPU: positionsDeferred)
+/// and then the tile bounds come from a reduction on the GPU (only the tiles' boxes read back);
+/// on a software rasterizer, where a read-back is a copy in the same memory, they are read back
+/// at once and the bounds refreshed from them. The stroke's own reads use mirror() after
+/// syncRegion() of what they read. All calls need the engine's context current.
 class GpuDocument {
 public:
   /// Uploads every layer, in row bands; progress (optional) is called after each with the
   /// fraction done, on this thread (a GUI thread may process events there). Throws GlError.
   explicit GpuDocument(core::Document document, const std::function<void(float)>& progress = {});
+  ~GpuDocument();
+  GpuDocument(GpuDocument&&) noexcept;
+  GpuDocument& operator=(GpuDocument&&) noexcept;
 
   int size() const { return document_.size(); }
-  const core::Document& document() const { return document_; }
+  /// The document as the textures hold it: the mirror, synced first where read-backs wait.
+  const core::Document& document() const;
+  /// The mirror as it is, read-backs still waiting or not: for the dab path, which syncs what it
+  /// reads (syncRegion), and for what the textures do not change (sizes, fills, uniform flags).
+  const core::Document& mirror() const { return document_; }
+  /// Reads back the waiting regions of the positions that meet rects (the mirror is a cache
+  /// of the textures: syncing it changes nothing a reader sees).
+  void syncRegion(std::span<const core::TexelRect> rects) const;
+  /// The tile bounds, always current (refreshed after every pass, from the GPU where positions
+  /// are deferred).
   const core::TileBounds& bounds() const { return bounds_; }
+  /// Whether a stroke's position read-backs wait for a reader (by default where the driver is
+  /// not a software rasterizer; $OCTACLAY_DEFER_POSITIONS = 1 or 0 overrides that). Tests set it
+  /// to run both ways on one machine.
+  bool positionsDeferred() const { return deferPositions_; }
+  void setPositionsDeferred(bool on);
 
   Texture& texture(core::EditLayer layer) { return textures_[index(layer)]; }
   /// The layer's scratch twin, made on first use: a document edited only by brushes that write
@@ -64,24 +91,24 @@ public:
     std::swap(textures_[index(layer)], scratch_[index(layer)]);
   }
 
-  /// Copies rect of the layer's texture into the mirror (and refreshes tile bounds for
-  /// positions). Painted-but-uniform mirror layers get their texels first.
-  void pull(core::EditLayer layer, core::TexelRect rect);
-  /// A pass changed rect of the layer's texture: pulled now, or for a paint layer while pulls
-  /// are deferred, recorded for syncMirror() (the layer gets its mirror texels now, so it stops
-  /// counting as uniform at once).
+  /// A pass changed rect of the layer's texture: read back into the mirror now, or while pulls
+  /// are deferred (a paint layer, or positions where positionsDeferred()) recorded for a sync (a
+  /// paint layer gets its mirror texels now, so it stops counting as uniform at once). The tile
+  /// bounds follow at once either way.
   void changed(core::EditLayer layer, core::TexelRect rect);
   /// The same for several rectangles of one pass (tile bounds refreshed once for all); the
   /// single-rectangle form comes through here, so a pass's changes reach the feed here.
   void changed(core::EditLayer layer, std::span<const core::TexelRect> rects);
-  /// Whether changed() reads this layer back at once (positions always, paint layers unless
-  /// their pulls are deferred): the caller must know the passes that wrote it finished.
+  /// Whether changed() reads from this layer at once (positions always: their texels or their
+  /// tile bounds; paint layers unless their pulls are deferred): the caller must know the passes
+  /// that wrote it finished.
   bool readsAtOnce(core::EditLayer layer) const {
     return !deferring_ || layer == core::EditLayer::Positions;
   }
-  /// While on, changed() defers paint layers' pulls. Turning it off syncs the mirror.
-  void deferPaintPulls(bool on);
-  /// Whether some paint layer's mirror lags its texture (deferred pulls not yet synced).
+  /// While on (a stroke), changed() defers paint layers' pulls, and positions' where
+  /// positionsDeferred(). Turning it off syncs the mirror.
+  void deferPulls(bool on);
+  /// Whether some layer's mirror lags its texture (deferred pulls not yet synced).
   bool mirrorStale() const;
   /// Reads every deferred region back into the mirror, in merged rectangles.
   void syncMirror();
@@ -91,6 +118,15 @@ public:
   std::vector<float> mirrorTexels(core::EditLayer layer, core::TexelRect rect) const;
   /// Replaces rect of the mirror with texels (the layout of mirrorTexels) and pushes it.
   void restore(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
+
+  /// restore() with the texture's texels copied on the GPU from `from` at (fromX, fromY) (an
+  /// undo pool's copy of them, equal to texels) instead of uploaded from the CPU.
+  void restoreCopy(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels,
+                   const Texture& from, int fromX, int fromY);
+
+  /// Whether every texel of rects in the layer's texture is finite (positions: their xyz also
+  /// within ±core::kMaxCoordinate), reduced on the GPU to one flag read back. Throws GlError.
+  bool holdsOnlyFinite(core::EditLayer layer, std::span<const core::TexelRect> rects);
 
   static int channels(core::EditLayer layer);
 
@@ -116,7 +152,8 @@ private:
   static std::size_t index(core::EditLayer layer) { return static_cast<std::size_t>(layer); }
   core::Layer* mirrorLayer(core::EditLayer layer);
   const core::Layer* mirrorLayer(core::EditLayer layer) const;
-  /// pull without the tile bounds' refresh.
+  /// Copies rect of the layer's texture into the mirror (no tile bounds' refresh).
+  /// Painted-but-uniform mirror layers get their texels first.
   void readBack(core::EditLayer layer, core::TexelRect rect);
   void writeMirror(core::EditLayer layer, core::TexelRect rect, std::span<const float> texels);
   /// The mirror layer's floats (row-major, channels(layer) per texel), given texels if uniform.
@@ -128,12 +165,19 @@ private:
   core::TileBounds bounds_;
   std::array<Texture, 4> textures_, scratch_;
   bool deferring_ = false;
+  bool deferPositions_ = false;
   /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred (empty: none).
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
   std::array<std::vector<core::TexelRect>, 4> unpublished_; // changed since publishChanges()
   std::array<std::size_t, 4> mergedCount_{}; // unpublished_'s size after its last merge
   std::function<void(const DocumentChange&)> follower_;
+  /// The tile bounds' refresh after a pass: a reduction on the GPU (made on first use).
+  std::unique_ptr<detail::TileBoundsPass> boundsPass_;
+  std::unique_ptr<detail::FiniteCheckPass> finitePass_; // holdsOnlyFinite's, made on first use
+  void refreshBounds(std::span<const core::TexelRect> rects);
+  /// Marks the kStaleBlock² blocks that rects meet as waiting for a read-back.
+  void markStale(core::EditLayer layer, std::span<const core::TexelRect> rects);
   /// Notes rect of layer as changed for the next publishChanges().
   void note(core::EditLayer layer, core::TexelRect rect);
 };

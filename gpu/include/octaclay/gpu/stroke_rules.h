@@ -18,6 +18,7 @@
 #include "octaclay/gpu/gpu_document.h"
 
 #include <array>
+#include <span>
 
 namespace octaclay::gpu {
 
@@ -55,6 +56,13 @@ core::Vec3f interpolateNormal(const core::GeometryImage& image, const core::Grid
 /// "area normal" of sculpting tools), when at least kAreaNormalTriangles triangles lie there.
 inline constexpr float kAreaNormalRadius = 1.0f;
 inline constexpr int kAreaNormalTriangles = 32;
+
+/// Reads back the positions of tiles (as core::TileBounds numbers them, with the first sample
+/// past each) where their read-back waits, so a dab's rules can read them from the mirror.
+void syncTiles(const GpuDocument& document, std::span<const int> tiles);
+/// The same for the samples around image point (x, y) (in samples) that a centre's position and
+/// normals read, and the border's strips when they reach across a seam.
+void syncAround(const GpuDocument& document, double x, double y);
 
 /// The mean of the area-weighted normals of the triangles whose centroids lie within radius
 /// of centre: the same however the samples are spread there, so a relaxed or an evened-out

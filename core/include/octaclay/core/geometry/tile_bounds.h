@@ -35,6 +35,15 @@ public:
   void refresh(const GeometryImage& image, TexelRect rect);
   /// The same for several rectangles (a dab's), each tile once.
   void refresh(const GeometryImage& image, std::span<const TexelRect> rects);
+  /// The tiles (as tx + ty · tilesX, in row order) whose boxes a change of rects moves:
+  /// those they overlap and the ones before them in i and j (a box holds the first sample past
+  /// its tile).
+  std::vector<int> tilesTouching(std::span<const TexelRect> rects) const;
+  /// Sets the boxes of tiles from their quarters' boxes, computed elsewhere (the GPU's
+  /// reduction): four per tile, quarter q at 4k + q, each the bounds of quarterRect's samples
+  /// and of the first sample past it in i and j, as refresh computes them. The tiles' and their
+  /// groups' boxes follow.
+  void setQuarterBoxes(std::span<const int> tiles, std::span<const BoundingBox> quarters);
   /// Tiles (as tx + ty · tilesX) whose box comes within `radius` of `centre`.
   std::vector<int> tilesNearSphere(Vec3f centre, float radius) const;
   /// Quarter q (0 to 3: +i, +j by bits) of tile (tx, ty): the tile split at half its size.
