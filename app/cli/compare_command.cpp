@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
@@ -17,17 +18,19 @@
 namespace octaclay::app {
 namespace {
 
-// A document's full-resolution surface, or a mesh file's.
-core::TriangleMesh loadSurface(const std::string& path) {
+// A document's full-resolution surface (its object named object, or its only one), or a mesh
+// file's.
+core::TriangleMesh loadSurface(const std::string& path, const std::string& object) {
   if (core::meshFormatFromPath(path)) return core::readMesh(path);
-  return core::extractMesh(core::readDocument(path, {.layers = false}).positions);
+  return core::extractMesh(
+      readChosenObject(path, object, {.layers = false}).object().document.positions);
 }
 
 } // namespace
 
 Command addCompareCommand(CLI::App& app) {
   struct Options {
-    std::string a, b;
+    std::string a, b, object;
     std::size_t samples = 1'000'000;
     bool json = false;
   };
@@ -39,16 +42,19 @@ Command addCompareCommand(CLI::App& app) {
   sub->add_option("a", opt->a, "Reference: document (.exr) or mesh")->required();
   sub->add_option("b", opt->b, "Compared: document (.exr) or mesh (.obj, .ply, .stl, .off)")
       ->required();
+  addObjectOption(*sub, opt->object)
+      ->description("The object compared in each document given (by name; may be left out "
+                    "when a document holds one object)");
   sub->add_option("--samples", opt->samples, "Random points per surface besides its vertices")
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt]() {
-            const core::TriangleMesh a = loadSurface(opt->a);
+            const core::TriangleMesh a = loadSurface(opt->a, opt->object);
             // Distances are fractions of a's size: a has to have one.
             if (const auto problem = core::sizeProblem(core::boundingBox(a)))
               throw core::Error(core::ErrorKind::InvalidInput, opt->a + ": " + *problem);
-            const core::TriangleMesh b = loadSurface(opt->b);
+            const core::TriangleMesh b = loadSurface(opt->b, opt->object);
             const core::SurfaceDistanceOptions options{.samplesPerSurface = opt->samples};
             const core::SurfaceDistance d = core::compareSurfaces(a, b, options);
             if (opt->json) {

@@ -4,6 +4,7 @@
 #include "progress_line.h"
 
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/import/import.h"
@@ -71,7 +72,54 @@ Command addImportCommand(CLI::App& app) {
             core::ValidationOptions validation;
             validation.fillHoles = opt->fillHoles;
             validation.maxHoleEdges = opt->maxHoleEdges;
-            const core::ValidatedMesh validated = core::loadGenus0Mesh(opt->input, validation);
+            std::vector<core::ValidatedMesh> parts =
+                core::loadGenus0Parts(opt->input, validation, core::kMaxSceneObjects);
+            if (parts.size() > 1) {
+              // Several closed lumps (a scene exported as one mesh): one object each, in place.
+              core::Scene scene;
+              nlohmann::json triangles = nlohmann::json::array();
+              for (std::size_t k = 0; k < parts.size(); ++k) {
+                const core::SphericalMap map =
+                    core::parameterizeOnSphere(parts[k].mesh, [&](float fraction) {
+                      progress.report("mapping part " + std::to_string(k + 1) + " of " +
+                                          std::to_string(parts.size()),
+                                      fraction);
+                      return true;
+                    });
+                if (map.flipped > 0)
+                  throw core::Error(core::ErrorKind::InvalidInput,
+                                    opt->input + ": the spherical map of part " +
+                                        std::to_string(k + 1) + " folds over itself (" +
+                                        std::to_string(map.flipped) +
+                                        " flipped triangles); this mesh is not supported yet");
+                scene.objects.push_back({scene.uniqueName("Part"),
+                                         core::importValidatedMesh(parts[k], map, opt->size),
+                                         {},
+                                         true,
+                                         false});
+                triangles.push_back(parts[k].mesh.triangles.size());
+              }
+              std::ostringstream report;
+              if (opt->json)
+                report << app::JsonReply{{"input", opt->input},
+                                         {"output", opt->output},
+                                         {"size", opt->size},
+                                         {"objects", scene.objects.size()},
+                                         {"part_triangles", triangles},
+                                         {"total_ms", millisecondsSince(start)}}
+                              .dump()
+                       << "\n";
+              else
+                report << "imported " << opt->input << " as " << opt->output << ": "
+                       << scene.objects.size()
+                       << " objects (Part, Part.001, ...), N = " << opt->size << " each, in "
+                       << millisecondsSince(start) << " ms\n";
+              progress.stage("writing");
+              core::writeScene(scene, opt->output);
+              std::cout << report.str();
+              return kExitOk;
+            }
+            const core::ValidatedMesh validated = std::move(parts.front());
             const double loadMs = millisecondsSince(start);
 
             const auto mapStart = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "progress_line.h"
 #include "resample_arguments.h"
 
@@ -34,7 +35,7 @@ nlohmann::json carriedJson(const core::CarriedLayer& l) {
 
 Command addRemeshCommand(CLI::App& app) {
   struct Options {
-    std::string input, output;
+    std::string input, output, object;
     int size = 0;
     bool json = false;
   };
@@ -48,6 +49,7 @@ Command addRemeshCommand(CLI::App& app) {
       "much), the document is written unchanged and the reason said (exit 0; --json: "
       "\"changed\": false, \"reason\")");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   CLI::Option* size =
       sub->add_option("--size", opt->size, "The new N: a power of two from 2 to 8192");
   sub->add_option("-o,--output", opt->output, "Document to write (.exr, not the input)")
@@ -61,7 +63,9 @@ Command addRemeshCommand(CLI::App& app) {
             requireNewDocumentOutput(opt->input, opt->output);
             ProgressLine progress("remesh", !opt->json);
             progress.stage("reading");
-            const core::Document document = core::readDocument(opt->input);
+            ChosenObject chosen = readChosenObject(opt->input, opt->object);
+            requireUnlocked(chosen, "remesh");
+            const core::Document document = std::move(chosen.object().document);
             core::requireUsableSize(document.positions, opt->input);
             core::requireOctahedral(document.positions, "remesh", opt->input);
             const auto start = std::chrono::steady_clock::now();
@@ -120,7 +124,7 @@ Command addRemeshCommand(CLI::App& app) {
                        << 100 * r.diffuse.paintedShareWithin
                        << " % of the painted area within ΔE 5\n";
             }
-            core::writeDocument(r.document, opt->output);
+            writeChosenObject(chosen, r.document, opt->output);
             std::cout << report.str();
             return kExitOk;
           }};

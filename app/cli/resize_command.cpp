@@ -3,6 +3,7 @@
 
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "resample_arguments.h"
 
 #include "octaclay/core/document/document_checks.h"
@@ -21,7 +22,7 @@ namespace octaclay::app {
 
 Command addResizeCommand(CLI::App& app) {
   struct Options {
-    std::string input, output;
+    std::string input, output, object;
     int size = 0;
     bool json = false;
   };
@@ -35,6 +36,7 @@ Command addResizeCommand(CLI::App& app) {
                 "written unchanged and the reason said (exit 0; --json: \"changed\": false, "
                 "\"reason\")");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("--size", opt->size, "The new N: a power of two from 2 to 8192")->required();
   sub->add_option("-o,--output", opt->output, "Document to write (.exr, not the input)")
       ->required();
@@ -43,7 +45,9 @@ Command addResizeCommand(CLI::App& app) {
   return {sub, [opt]() {
             requireDocumentSize(opt->size);
             requireNewDocumentOutput(opt->input, opt->output);
-            const core::Document document = core::readDocument(opt->input);
+            ChosenObject chosen = readChosenObject(opt->input, opt->object);
+            requireUnlocked(chosen, "resize");
+            const core::Document document = std::move(chosen.object().document);
             core::requireOctahedral(document.positions, "resize", opt->input);
             const auto start = std::chrono::steady_clock::now();
             const core::ResizeResult r = core::resizeAndCheck(document, {.size = opt->size});
@@ -77,7 +81,7 @@ Command addResizeCommand(CLI::App& app) {
               report << "  surface moved RMS " << 100 * r.moved.rms << " %, Hausdorff "
                      << 100 * r.moved.hausdorff << " % of the diagonal\n";
             }
-            core::writeDocument(r.document, opt->output);
+            writeChosenObject(chosen, r.document, opt->output);
             std::cout << report.str();
             return kExitOk;
           }};

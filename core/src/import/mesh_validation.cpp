@@ -4,6 +4,7 @@
 
 #include "octaclay/core/import/mesh_validation.h"
 
+#include "import/mesh_parts.h"
 #include "import/mesh_readers.h"
 #include "import/mesh_repair.h"
 #include "import/mesh_topology.h"
@@ -297,6 +298,51 @@ ValidatedMesh loadGenus0Mesh(const fs::path& path, const ValidationOptions& opti
     return out;
   } catch (const std::bad_alloc&) {
     // The file, not --size, asked for the memory: say so (main's message is about --size).
+    throw Error(ErrorKind::InvalidInput, path.string() +
+                                             ": not enough memory to read this mesh: it is "
+                                             "larger than this machine can hold");
+  }
+}
+
+std::vector<ValidatedMesh> loadGenus0Parts(const fs::path& path, const ValidationOptions& options,
+                                           std::size_t maxParts) {
+  try {
+    detail::RawMesh raw = detail::readRawMesh(path);
+    std::vector<TriangleMesh> parts =
+        detail::splitConnectedParts(raw.cornersPerFace ? detail::weldExactly(raw.mesh) : raw.mesh);
+    if (parts.size() <= 1) {
+      ValidatedMesh out =
+          validate(std::move(raw.mesh), {std::move(raw.vertexColours), std::move(raw.cornerUv)},
+                   options, path.string() + ": ", raw.cornersPerFace, raw.shortFaces);
+      out.diffuseTexture = std::move(raw.diffuseTexture);
+      out.notes = std::move(raw.notes);
+      std::vector<ValidatedMesh> one;
+      one.push_back(std::move(out));
+      return one;
+    }
+    if (parts.size() > maxParts)
+      throw Error(ErrorKind::InvalidInput,
+                  path.string() + ": " + std::to_string(parts.size()) +
+                      " separate parts; a document holds at most " + std::to_string(maxParts) +
+                      " objects — join or delete parts in a modelling tool");
+    std::vector<ValidatedMesh> result;
+    result.reserve(parts.size());
+    for (TriangleMesh& part : parts) {
+      try {
+        result.push_back(validate(std::move(part), {}, options, std::string(), false, 0));
+      } catch (const Error&) {
+        // A part that is no closed genus-0 lump by itself: the whole mesh's own refusal says
+        // best what to do (pieces that need welding or joining, holes across the parts).
+        validate(std::move(raw.mesh), {}, options, path.string() + ": ", raw.cornersPerFace,
+                 raw.shortFaces);
+        throw;
+      }
+      if (!raw.vertexColours.empty() || !raw.cornerUv.empty())
+        result.back().notes.push_back("colours and texture coordinates are not carried when a "
+                                      "mesh is split into parts");
+    }
+    return result;
+  } catch (const std::bad_alloc&) {
     throw Error(ErrorKind::InvalidInput, path.string() +
                                              ": not enough memory to read this mesh: it is "
                                              "larger than this machine can hold");

@@ -72,6 +72,16 @@ struct ValidationOptions {
 ValidatedMesh loadGenus0Mesh(const std::filesystem::path& path,
                              const ValidationOptions& options = {});
 
+/// loadGenus0Mesh for a file of one or more separate closed genus-0 parts (the parts of a
+/// scene exported as one mesh): parts are the triangles joined through shared vertices (STL's
+/// corners welded by exact position first), in the order of their first triangle, each cleaned
+/// and checked as loadGenus0Mesh checks one mesh. One part: exactly loadGenus0Mesh's result
+/// (attributes kept); several: the parts' geometry, with a note that colours and texture
+/// coordinates are not carried. When a part is no closed genus-0 mesh by itself, throws what
+/// loadGenus0Mesh throws for the whole file (its words for pieces that need welding or
+/// joining); Error(InvalidInput) for more than maxParts parts.
+std::vector<ValidatedMesh> loadGenus0Parts(const std::filesystem::path& path,
+                                           const ValidationOptions& options, std::size_t maxParts);
 /// The same cleaning and checks on an in-memory mesh (any winding, unused vertices allowed);
 /// vertices are not welded. Messages have no path prefix and count vertices and triangles from 1.
 /// Throws Error(InvalidInput) as loadGenus0Mesh does.
