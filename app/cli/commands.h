@@ -38,5 +38,12 @@ Command addDecompressCommand(CLI::App& app);
 Command addRelaxCommand(CLI::App& app);
 Command addResizeCommand(CLI::App& app);
 Command addRemeshCommand(CLI::App& app);
+Command addObjectsCommand(CLI::App& app);
+Command addAddCommand(CLI::App& app);
+Command addTransformCommand(CLI::App& app);
+Command addRemoveCommand(CLI::App& app);
+Command addRenameCommand(CLI::App& app);
+Command addDuplicateCommand(CLI::App& app);
+Command addMergeCommand(CLI::App& app);
 
 } // namespace octaclay::app

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "finite_arguments.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 #include "progress_line.h"
 #include "rd_measure.h"
@@ -66,7 +67,7 @@ nlohmann::json finiteOrNull(double v) {
 }
 
 struct CompressOptionsCli {
-  std::string input, output, codec, mode;
+  std::string input, output, codec, mode, object;
   double quality = -1; // < 0: the codec's default
   bool json = false, sweep = false, noReport = false;
   std::size_t samples = 0;
@@ -105,7 +106,8 @@ std::string sweepReport(const CompressOptionsCli& opt, const core::Document& doc
 int runSweep(const CompressOptionsCli& opt) {
   const std::string directory =
       opt.output.empty() ? std::filesystem::path(opt.input).stem().string() + "-rd" : opt.output;
-  const core::Document doc = core::readDocument(opt.input, {.layers = false});
+  const core::Document doc =
+      std::move(readChosenObject(opt.input, opt.object, {.layers = false}).object().document);
   const RdReference reference = makeRdReference(doc.positions);
   const std::vector<RdPoint> points = sweep(reference, opt.samples);
   const std::string title =
@@ -150,7 +152,7 @@ int runCompress(const CompressOptionsCli& opt) {
 
   ProgressLine progress("compress", !opt.json);
   progress.stage("reading");
-  const core::Document doc = core::readDocument(opt.input);
+  const core::Document doc = std::move(readChosenObject(opt.input, opt.object).object().document);
   core::requireUsableSize(doc.positions, opt.input);
   progress.stage("encoding");
   core::CompressOptions options;
@@ -249,6 +251,7 @@ Command addCompressCommand(CLI::App& app) {
       "compress", "Store a document compressed (.ocz), or with --sweep write the "
                   "rate-distortion report of every codec beside Draco");
   sub->add_option("document", opt->input, "Document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("--codec", opt->codec,
                   "Positions codec: bytepack, dct, exr, wavelet or lossless");
   sub->add_option("--quality", opt->quality,

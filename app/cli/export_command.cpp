@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -8,6 +9,7 @@
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/lod_export.h"
 #include "octaclay/core/export/mesh_io.h"
+#include "octaclay/core/export/scene_export.h"
 #include "octaclay/core/export/textured_export.h"
 #include "octaclay/core/file_extension.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -105,18 +107,60 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
 
 } // namespace
 
+namespace {
+
+struct ExportOptions {
+  std::string input, output, object;
+  int lod = 0;
+  long long triangles = 0;
+  std::string normalMap;
+  bool json = false;
+};
+
+// A document of several objects without --object: every visible object, placed
+// (scene_export.h): GLB nodes, OBJ groups, or one world-space mesh.
+int exportScene(const ExportOptions& opt, ExportKind kind, std::size_t inFile,
+                bool oneObjectOptions) {
+  if (oneObjectOptions)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "--lod, --triangles and --normal-map export one object, and " + opt.input +
+                          " holds " + std::to_string(inFile) +
+                          " objects: name it with --object NAME (see octaclay-cli objects)");
+  const core::Scene scene = core::readScene(opt.input, {.layers = kind == ExportKind::Glb});
+  std::size_t objects = 0, vertices = 0, triangles = 0;
+  for (const core::SceneObject& object : scene.objects)
+    if (object.visible) {
+      const auto n = static_cast<std::size_t>(object.document.size());
+      ++objects;
+      vertices += n * n + 2;
+      triangles += 2 * n * n;
+    }
+  std::ostringstream report;
+  if (opt.json)
+    report << app::JsonReply{{"output", opt.output},
+                             {"files", {opt.output}},
+                             {"objects", objects},
+                             {"vertices", vertices},
+                             {"triangles", triangles}}
+                  .dump()
+           << "\n";
+  else
+    report << "wrote " << opt.output << ": " << objects << " visible objects, " << vertices
+           << " vertices, " << triangles << " triangles, placed in the scene\n";
+  core::writeSceneMeshes(scene, opt.output);
+  std::cout << report.str();
+  return kExitOk;
+}
+
+} // namespace
+
 Command addExportCommand(CLI::App& app) {
-  struct Options {
-    std::string input, output;
-    int lod = 0;
-    long long triangles = 0;
-    std::string normalMap;
-    bool json = false;
-  };
+  using Options = ExportOptions;
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "export", "Write a document's surface as textured OBJ or glTF (.glb), or PLY, STL, OFF");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("-o,--output", opt->output,
                   "Mesh to write: .obj (with .mtl and PNG maps of the painted layers beside it), "
                   ".glb (binary glTF, textures embedded), .ply (binary), .stl (binary), .off")
@@ -134,7 +178,7 @@ Command addExportCommand(CLI::App& app) {
                   "texels over the image coordinates: .png (8-bit) or .exr (float)");
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
-  return {sub, [opt, sub]() {
+  return {sub, [opt, sub]() -> int {
             const ExportKind kind = exportKindFromPath(opt->output);
             const bool collapse = opt->triangles != 0;
             if (opt->triangles < 0 || (collapse && opt->triangles <= 4))
@@ -148,8 +192,17 @@ Command addExportCommand(CLI::App& app) {
               requireNotInput(opt->normalMap, opt->input, "--normal-map");
             }
             requireNotInput(opt->output, opt->input);
+            if (opt->object.empty()) {
+              const std::size_t objects = core::readSceneHeaders(opt->input).size();
+              if (objects > 1)
+                return exportScene(*opt, kind, objects,
+                                   sub->count("--lod") > 0 || collapse || !opt->normalMap.empty());
+            }
             core::Document document =
-                core::readDocument(opt->input, {.layers = kind != ExportKind::Plain && !collapse});
+                std::move(readChosenObject(opt->input, opt->object,
+                                           {.layers = kind != ExportKind::Plain && !collapse})
+                              .object()
+                              .document);
             const int n = document.size();
             if (collapse && n < 4)
               throw core::Error(core::ErrorKind::InvalidArgument,

@@ -1,5 +1,6 @@
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/document_io.h"
@@ -13,19 +14,22 @@ namespace octaclay::app {
 
 Command addInfoCommand(CLI::App& app) {
   struct Options {
-    std::string input;
+    std::string input, object;
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "info", "Describe a document: size, topology, bounding box, layers, stretch");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
   return {sub, [opt]() {
-            const core::DocumentHeader header = core::readDocumentHeader(opt->input);
             // info needs the header's layer list, not the layers' pixels.
-            core::Document document = core::readDocument(opt->input, {.layers = false});
+            ChosenObject chosen = readChosenObject(opt->input, opt->object, {.layers = false});
+            const core::DocumentHeader header =
+                core::readSceneHeaders(opt->input)[chosen.index].document;
+            core::Document document = std::move(chosen.object().document);
             document.hasMask = false;
             core::DocumentInfo info = core::describeDocument(document);
             info.layers = {"positions"};

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "finite_arguments.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 #include "progress_line.h"
 
@@ -54,7 +55,7 @@ bool saliencyIsEmpty(const core::GeometryImage& image) {
 
 Command addLodCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, method = "auto", normalMap, space;
+    std::string input, output, method = "auto", normalMap, space, object;
     long long size = 0, triangles = 0, mapSize = 0, oversample = 1;
     double maxError = 0, maxAspect = 10;
     std::size_t samples = 200'000;
@@ -65,6 +66,7 @@ Command addLodCommand(CLI::App& app) {
       "lod", "Generate a level of detail (resample, then collapse vertices) and write it with a "
              "normal map baked from the full-resolution image (OBJ + MTL + map, or GLB)");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("--size", opt->size,
                   "M: resample to (M+1)^2 samples, a power of two below N. Optional with "
                   "--triangles (then the smallest M whose 2M^2 triangles reach T)");
@@ -173,7 +175,8 @@ Command addLodCommand(CLI::App& app) {
         const auto commandStart = std::chrono::steady_clock::now();
         ProgressLine progress("lod", !opt->json);
         progress.stage("reading");
-        core::Document document = core::readDocument(opt->input, {.layers = false});
+        core::Document document = std::move(
+            readChosenObject(opt->input, opt->object, {.layers = false}).object().document);
         core::requireUsableSize(document.positions, opt->input);
         core::GeometryImage& full = document.positions;
         const int n = full.size();

@@ -78,11 +78,13 @@ int main(int argc, char** argv) {
                "(octahedral geometry images stored as .exr)"};
   cli.require_subcommand(1);
   const app::Command commands[] = {
-      app::addNewCommand(cli),        app::addInfoCommand(cli),   app::addExportCommand(cli),
-      app::addCompareCommand(cli),    app::addStrokeCommand(cli), app::addBrushesCommand(cli),
-      app::addImportCommand(cli),     app::addLodCommand(cli),    app::addCompressCommand(cli),
-      app::addDecompressCommand(cli), app::addRelaxCommand(cli),  app::addResizeCommand(cli),
-      app::addRemeshCommand(cli)};
+      app::addNewCommand(cli),        app::addInfoCommand(cli),    app::addExportCommand(cli),
+      app::addCompareCommand(cli),    app::addStrokeCommand(cli),  app::addBrushesCommand(cli),
+      app::addImportCommand(cli),     app::addLodCommand(cli),     app::addCompressCommand(cli),
+      app::addDecompressCommand(cli), app::addRelaxCommand(cli),   app::addResizeCommand(cli),
+      app::addRemeshCommand(cli),     app::addObjectsCommand(cli), app::addAddCommand(cli),
+      app::addTransformCommand(cli),  app::addRemoveCommand(cli),  app::addRenameCommand(cli),
+      app::addDuplicateCommand(cli),  app::addMergeCommand(cli)};
 
   cli.set_version_flag("--version", std::string("octaclay-cli ") + OCTACLAY_VERSION);
   if (argc >= 2 && argv[1][0] != '-') {

@@ -3,6 +3,7 @@
 
 #include "commands.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 #include "progress_line.h"
 
@@ -26,7 +27,7 @@ constexpr int kMaxIterations = 100;
 
 Command addRelaxCommand(CLI::App& app) {
   struct Options {
-    std::string input, output;
+    std::string input, output, object;
     int iterations = 1;
     bool json = false;
   };
@@ -39,6 +40,7 @@ Command addRelaxCommand(CLI::App& app) {
                "tried, else the document is written unchanged and the reason said (exit 0; "
                "--json: \"changed\": false, \"reason\")");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_option("--iterations", opt->iterations,
                   "Sweeps over the finest level (1 to " + std::to_string(kMaxIterations) +
@@ -57,7 +59,9 @@ Command addRelaxCommand(CLI::App& app) {
                                     "on its output instead)");
             ProgressLine progress("relax", !opt->json);
             progress.stage("reading");
-            const core::Document document = core::readDocument(opt->input);
+            ChosenObject chosen = readChosenObject(opt->input, opt->object);
+            requireUnlocked(chosen, "relax");
+            const core::Document document = std::move(chosen.object().document);
             core::requireUsableSize(document.positions, opt->input);
             // A sweep at N = 256 takes about 54 ms here; say so before a run of minutes.
             const double estimate =
@@ -127,7 +131,7 @@ Command addRelaxCommand(CLI::App& app) {
                      << "  surface moved RMS " << 100 * result.moved.rms << " %, Hausdorff "
                      << 100 * result.moved.hausdorff << " % of the diagonal\n";
             }
-            core::writeDocument(relaxed, opt->output);
+            writeChosenObject(chosen, relaxed, opt->output);
             std::cout << report.str();
             return kExitOk;
           }};

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "finite_arguments.h"
 #include "json_output.h"
+#include "object_choice.h"
 #include "output_rules.h"
 #include "progress_line.h"
 #include "sculpt_session.h"
@@ -162,7 +163,7 @@ unsigned parseSymmetry(const std::string& text) {
 
 Command addStrokeCommand(CLI::App& app) {
   struct Options {
-    std::string input, output, brush, path, symmetry, view, drag, keepDetail = "on";
+    std::string input, output, brush, path, symmetry, view, drag, keepDetail = "on", object;
     std::vector<std::string> params;
     float radius = 0.1f, strength = 0.5f, spacing = 0;
     bool json = false;
@@ -171,6 +172,7 @@ Command addStrokeCommand(CLI::App& app) {
   CLI::App* sub =
       app.add_subcommand("stroke", "Apply a brush stroke along a path of (u, v) points");
   sub->add_option("document", opt->input, "Octaclay document (.exr)")->required();
+  addObjectOption(*sub, opt->object);
   sub->add_option("--brush", opt->brush, "Brush id (see `octaclay-cli brushes`)")->required();
   sub->add_option("--param", opt->params, "Brush parameter id=value (repeatable)");
   sub->add_option("--path", opt->path,
@@ -272,7 +274,9 @@ Command addStrokeCommand(CLI::App& app) {
 
         ProgressLine progress("stroke", !opt->json);
         progress.stage("reading");
-        core::Document document = core::readDocument(opt->input);
+        ChosenObject chosen = readChosenObject(opt->input, opt->object);
+        requireUnlocked(chosen, "sculpt");
+        core::Document document = std::move(chosen.object().document);
         core::requireUsableSize(document.positions, "cannot sculpt " + opt->input);
         const gpu::GlContext context = gpu::GlContext::createHeadless();
         gpu::BrushEngine engine;
@@ -302,7 +306,7 @@ Command addStrokeCommand(CLI::App& app) {
           report << "stroke " << brush->id << ": " << result.dabs << " dabs in " << result.engineMs
                  << " ms (" << perDab << " ms per dab), wrote " << opt->output << "\n";
         progress.stage("writing");
-        core::writeDocument(session.document(), opt->output);
+        writeChosenObject(chosen, session.document(), opt->output);
         std::cout << report.str();
         return kExitOk;
       }};

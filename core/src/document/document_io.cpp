@@ -3,6 +3,7 @@
 #include "detail/exr_memory_stream.h"
 #include "detail/exr_sink_stream.h"
 #include "detail/parallel_rows.h"
+#include "document_parts.h"
 #include "raw_exr_lines.h"
 
 #include "octaclay/core/document/atomic_output.h"
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <new>
 #include <string_view>
@@ -272,48 +274,37 @@ DocumentHeader readDocumentHeader(const fs::path& path) {
 }
 
 Document readDocument(const fs::path& path, const DocumentReadOptions& options) {
-  requireExrMagic(path);
-  Document document;
+  return detail::readDocumentInspecting(path, options, nullptr);
+}
+
+namespace detail {
+
+int exrThreads() {
+  return core::exrThreads();
+}
+
+void requireExrMagic(const fs::path& path) {
+  core::requireExrMagic(path);
+}
+
+DocumentHeader checkDocumentHeader(const fs::path& path, const Imf::Header& header) {
+  return checkHeader(path, header);
+}
+
+Document readDocumentInspecting(const fs::path& path, const DocumentReadOptions& options,
+                                const std::function<void(const Imf::Header&)>& inspect) {
+  core::requireExrMagic(path);
   try {
-    Imf::InputFile file(path.c_str(), exrThreads());
+    Imf::InputFile file(path.c_str(), core::exrThreads());
     const DocumentHeader header = checkHeader(path, file.header());
+    if (inspect) inspect(file.header());
     if (!file.isComplete())
       refuse(path, "truncated: the file ends before all its pixels (an interrupted copy?)");
-    document.positions = GeometryImage(header.size);
-    const int side = header.size + 1;
-    const Imath::Box2i window = file.header().dataWindow();
-
-    std::vector<Layer*> inFile;
-    if (options.layers)
-      for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-        if (layerInFile(header, *layer)) inFile.push_back(layer);
-    std::vector<LayerReader> layers;
-    layers.reserve(3);
-    // Uncompressed lines on every core (raw_exr_lines); else band by band through OpenEXR's frame
-    // buffers: positions straight into the image, layers through a band buffer each.
-    if (!(detail::rawLinesApply(file.header()) &&
-          detail::readRawLines(path, file.header(), document.positions, inFile))) {
-      for (Layer* layer : inFile)
-        layers.emplace_back(*layer, side);
-      for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
-        const int rowEnd = std::min(side, rowBegin + kBandRows);
-        Imf::FrameBuffer frame;
-        insertPositionSlices(frame, document.positions, window);
-        for (LayerReader& layer : layers)
-          layer.addSlices(frame, window, rowBegin, rowEnd);
-        file.setFrameBuffer(frame);
-        file.readPixels(window.min.y + rowBegin, window.min.y + rowEnd - 1);
-        for (LayerReader& layer : layers)
-          layer.takeBand(rowBegin);
-      }
-    }
-    for (LayerReader& layer : layers)
-      layer.finish();
-
-    if (const auto problem = positionsProblem(document.positions)) refuse(path, *problem);
-    for (const Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-      if (const auto problem = layerValuesProblem(*layer, header.size)) refuse(path, *problem);
-    document.hasMask = std::count(header.channels.begin(), header.channels.end(), "mask.Y") > 0;
+    return readDocumentPixels(path, file.header(), header, options,
+                              [&](const Imf::FrameBuffer& frame, int first, int last) {
+                                file.setFrameBuffer(frame);
+                                file.readPixels(first, last);
+                              });
   } catch (const Error&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -322,11 +313,60 @@ Document readDocument(const fs::path& path, const DocumentReadOptions& options) 
   } catch (const std::exception& e) {
     refuse(path, std::string("corrupt or truncated OpenEXR data: ") + e.what());
   }
+}
+
+Document
+readDocumentPixels(const fs::path& path, const Imf::Header& fileHeader,
+                   const DocumentHeader& header, const DocumentReadOptions& options,
+                   const std::function<void(const Imf::FrameBuffer&, int, int)>& readPixels) {
+  Document document;
+  document.positions = GeometryImage(header.size);
+  const int side = header.size + 1;
+  const Imath::Box2i window = fileHeader.dataWindow();
+
+  std::vector<Layer*> inFile;
+  if (options.layers)
+    for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
+      if (layerInFile(header, *layer)) inFile.push_back(layer);
+  std::vector<LayerReader> layers;
+  layers.reserve(3);
+  // Uncompressed lines on every core (raw_exr_lines); else band by band through OpenEXR's frame
+  // buffers: positions straight into the image, layers through a band buffer each.
+  if (!(detail::rawLinesApply(fileHeader) &&
+        detail::readRawLines(path, fileHeader, document.positions, inFile))) {
+    for (Layer* layer : inFile)
+      layers.emplace_back(*layer, side);
+    for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
+      const int rowEnd = std::min(side, rowBegin + kBandRows);
+      Imf::FrameBuffer frame;
+      insertPositionSlices(frame, document.positions, window);
+      for (LayerReader& layer : layers)
+        layer.addSlices(frame, window, rowBegin, rowEnd);
+      readPixels(frame, window.min.y + rowBegin, window.min.y + rowEnd - 1);
+      for (LayerReader& layer : layers)
+        layer.takeBand(rowBegin);
+    }
+  }
+  for (LayerReader& layer : layers)
+    layer.finish();
+
+  if (const auto problem = positionsProblem(document.positions)) refuse(path, *problem);
+  for (const Layer* layer : {&document.diffuse, &document.feature, &document.mask})
+    if (const auto problem = layerValuesProblem(*layer, header.size)) refuse(path, *problem);
+  document.hasMask = std::count(header.channels.begin(), header.channels.end(), "mask.Y") > 0;
   return document;
 }
 
+} // namespace detail
+
 void writeDocument(const Document& document, const fs::path& path,
                    const DocumentWriteOptions& options) {
+  detail::writeDocumentWithAttributes(document, path, options, nullptr);
+}
+
+namespace detail {
+
+Imf::Header documentPartHeader(const Document& document, const DocumentWriteOptions& options) {
   const int n = document.size();
   requireValidSize(n);
   const int side = n + 1;
@@ -338,12 +378,35 @@ void writeDocument(const Document& document, const fs::path& path,
   header.insert(kSamplingAttribute, Imf::StringAttribute("vertex-centred N+1"));
   for (const char* name : kPositionChannels)
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  for (const Layer* layer : {&document.diffuse, &document.feature, &document.mask})
+    if (layer != &document.mask || document.hasMask)
+      for (const auto& c : layer->channelNames())
+        header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
+  return header;
+}
+
+void writeDocumentPixels(const Document& document, const Imf::Header& header,
+                         const std::function<void(const Imf::FrameBuffer&, int)>& writePixels) {
+  const int side = document.size() + 1;
+  const Imath::Box2i window = header.dataWindow();
   std::vector<const Layer*> layers{&document.diffuse, &document.feature};
   if (document.hasMask) layers.push_back(&document.mask);
-  for (const Layer* layer : layers)
-    for (const auto& c : layer->channelNames())
-      header.channels().insert(layer->name + "." + c, Imf::Channel(Imf::HALF));
-  const Imath::Box2i window = header.dataWindow();
+  std::array<std::vector<half>, 3> halves;
+  for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
+    const int rowEnd = std::min(side, rowBegin + kBandRows);
+    Imf::FrameBuffer frame;
+    insertPositionSlices(frame, document.positions, window);
+    for (std::size_t k = 0; k < layers.size(); ++k)
+      addLayerWriteSlices(frame, window, *layers[k], side, rowBegin, rowEnd, halves[k]);
+    writePixels(frame, rowEnd - rowBegin);
+  }
+}
+
+void writeDocumentWithAttributes(const Document& document, const fs::path& path,
+                                 const DocumentWriteOptions& options,
+                                 const std::function<void(Imf::Header&)>& addAttributes) {
+  Imf::Header header = documentPartHeader(document, options);
+  if (addAttributes) addAttributes(header);
 
   if (detail::rawLinesApply(header)) {
     // OpenEXR writes the header (and a zero offset table) into memory; the lines are made and
@@ -357,20 +420,16 @@ void writeDocument(const Document& document, const fs::path& path,
   writeFileAtomically(path, [&](ByteSink& sink) {
     detail::ExrSinkStream stream(sink);
     {
-      Imf::OutputFile file(stream, header, exrThreads());
-      std::array<std::vector<half>, 3> halves;
-      for (int rowBegin = 0; rowBegin < side; rowBegin += kBandRows) {
-        const int rowEnd = std::min(side, rowBegin + kBandRows);
-        Imf::FrameBuffer frame;
-        insertPositionSlices(frame, document.positions, window);
-        for (std::size_t k = 0; k < layers.size(); ++k)
-          addLayerWriteSlices(frame, window, *layers[k], side, rowBegin, rowEnd, halves[k]);
+      Imf::OutputFile file(stream, header, core::exrThreads());
+      writeDocumentPixels(document, header, [&](const Imf::FrameBuffer& frame, int rows) {
         file.setFrameBuffer(frame);
-        file.writePixels(rowEnd - rowBegin);
-      }
+        file.writePixels(rows);
+      });
     }
     stream.finish(); // the offset table OutputFile's destructor wrote, and any error it met
   });
 }
+
+} // namespace detail
 
 } // namespace octaclay::core

@@ -72,12 +72,7 @@ tinygltf::Material gltfMaterial(const GlbMaterial& in) {
   return material;
 }
 
-tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textures,
-                         const GlbMaterial& material) {
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "Octaclay";
-  model.buffers.emplace_back();
+tinygltf::Primitive appendPrimitive(tinygltf::Model& model, const GlbMesh& mesh, int material) {
   const std::size_t count = mesh.positions.size();
   constexpr int kArray = TINYGLTF_TARGET_ARRAY_BUFFER;
   constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
@@ -101,8 +96,19 @@ tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textur
   primitive.indices = appendAccessor(model, mesh.triangles, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER,
                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                                      mesh.triangles.size() * 3);
-  primitive.material = 0;
+  primitive.material = material;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  return primitive;
+}
+
+tinygltf::Model glbModel(std::span<const GlbNode> nodes, std::span<const GlbTexture> textures) {
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "Octaclay";
+  model.buffers.emplace_back();
+  std::vector<tinygltf::Primitive> primitives;
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    primitives.push_back(appendPrimitive(model, nodes[k].mesh, static_cast<int>(k)));
 
   // Clamping keeps the image's border (the octahedral seam) from blending with the opposite
   // side.
@@ -113,18 +119,24 @@ tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textur
   model.samplers.push_back(sampler);
   for (const GlbTexture& texture : textures)
     appendTexture(model, texture);
-  model.materials.push_back(gltfMaterial(material));
+  for (const GlbNode& node : nodes)
+    model.materials.push_back(gltfMaterial(node.material));
 
-  tinygltf::Mesh gltfMesh;
-  gltfMesh.name = material.meshName;
-  gltfMesh.primitives.push_back(primitive);
-  model.meshes.push_back(gltfMesh);
-  tinygltf::Node node;
-  node.name = material.nodeName;
-  node.mesh = 0;
-  model.nodes.push_back(node);
   tinygltf::Scene scene;
-  scene.nodes = {0};
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    tinygltf::Mesh gltfMesh;
+    gltfMesh.name = nodes[k].material.meshName;
+    gltfMesh.primitives.push_back(primitives[k]);
+    model.meshes.push_back(gltfMesh);
+    tinygltf::Node node;
+    node.name = nodes[k].material.nodeName;
+    node.mesh = static_cast<int>(k);
+    node.translation = nodes[k].translation;
+    node.rotation = nodes[k].rotation;
+    node.scale = nodes[k].scale;
+    model.nodes.push_back(node);
+    scene.nodes.push_back(static_cast<int>(k));
+  }
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   return model;
@@ -134,7 +146,13 @@ tinygltf::Model glbModel(const GlbMesh& mesh, std::span<const GlbTexture> textur
 
 void writeGlbFile(const GlbMesh& mesh, std::span<const GlbTexture> textures,
                   const GlbMaterial& material, const fs::path& path, OutputSet& set) {
-  const tinygltf::Model model = glbModel(mesh, textures, material);
+  const GlbNode node{mesh, material, {}, {}, {}};
+  writeGlbNodes(std::span(&node, 1), textures, path, set);
+}
+
+void writeGlbNodes(std::span<const GlbNode> nodes, std::span<const GlbTexture> textures,
+                   const fs::path& path, OutputSet& set) {
+  const tinygltf::Model model = glbModel(nodes, textures);
   // tinygltf writes to a stream: a memory one, handed whole to the one checked writer.
   std::ostringstream out(std::ios::binary);
   tinygltf::TinyGLTF writer;

@@ -45,6 +45,20 @@ struct GlbMaterial {
   int objectSpaceNormalTexture = -1;
 };
 
+/// A node of a scene's .glb: its mesh, its material and where it sits (translation, rotation
+/// quaternion x, y, z, w, scale; each empty for the identity, and then not written).
+struct GlbNode {
+  GlbMesh mesh;
+  GlbMaterial material;
+  std::vector<double> translation, rotation, scale;
+};
+
+/// Stages a .glb of several nodes into `set`: node k has mesh k and material k (named by its
+/// material's nodeName, meshName and name), the textures shared by index; buffer views as
+/// writeGlbFile's, mesh after mesh, then the textures.
+void writeGlbNodes(std::span<const GlbNode> nodes, std::span<const GlbTexture> textures,
+                   const std::filesystem::path& path, OutputSet& set);
+
 /// Stages the .glb into `set` (the caller commits): buffer views 4-byte aligned in the order
 /// positions, normals, tangents, texture coordinates, indices (uint32), then the textures. Throws
 /// Error(Io) when it cannot be written.

@@ -73,7 +73,7 @@ void stageObj(const LodMesh& lod, const NormalMap& map, const Document* paint, c
     texcoords.push_back({uv.x, 1.0f - uv.y});
 
   const detail::ObjMesh mesh{lod.mesh.positions, normals, texcoords, lod.mesh.triangles,
-                             vertices.triangles};
+                             vertices.triangles, {}};
   const detail::ObjHeader header{"Octaclay LOD: " + std::to_string(lod.mesh.positions.size()) +
                                      " vertices, " + std::to_string(lod.mesh.triangles.size()) +
                                      " triangles, resampled to M = " +

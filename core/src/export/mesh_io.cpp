@@ -71,7 +71,7 @@ void stageMesh(const TriangleMesh& mesh, const fs::path& path, OutputSet& set) {
   silenceOpenMesh();
   const OpenMeshTriMesh om = toOpenMesh(mesh); // also refuses non-manifold triangles
   if (*format == MeshFormat::Obj) {            // the exports' one OBJ writer, streamed
-    detail::stageObj({mesh.positions, {}, {}, mesh.triangles, {}},
+    detail::stageObj({mesh.positions, {}, {}, mesh.triangles, {}, {}},
                      {"Octaclay mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
                           std::to_string(mesh.triangles.size()) + " triangles",
                       {},

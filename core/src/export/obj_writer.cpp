@@ -50,7 +50,46 @@ private:
   std::string buffer_;
 };
 
+void writeFace(TextWriter& w, const ObjMesh& mesh, std::size_t t,
+               std::span<const std::array<std::uint32_t, 3>> uvTriangles) {
+  const bool uvs = !mesh.texcoords.empty(), normals = !mesh.normals.empty();
+  w.text("f");
+  for (std::size_t c = 0; c < 3; ++c) {
+    const std::uint64_t v = std::uint64_t{mesh.triangles[t][c]} + 1; // OBJ counts from 1
+    w.text(" ").number(v);
+    if (uvs) w.text("/").number(std::uint64_t{uvTriangles[t][c]} + 1);
+    if (normals) w.text(uvs ? "/" : "//").number(v);
+  }
+  w.endLine();
+}
+
+// One `o` per group: its vertices, then its faces.
+void writeGroupedObjText(const ObjMesh& mesh, const ObjHeader& header, ByteSink& out) {
+  TextWriter w(out);
+  w.text("# ").text(header.comment).endLine();
+  for (std::size_t g = 0; g < mesh.groups.size(); ++g) {
+    const ObjGroup& group = mesh.groups[g];
+    const bool last = g + 1 == mesh.groups.size();
+    const std::size_t positionEnd = last ? mesh.positions.size() : mesh.groups[g + 1].firstPosition;
+    const std::size_t triangleEnd = last ? mesh.triangles.size() : mesh.groups[g + 1].firstTriangle;
+    w.text("o ").text(group.name).endLine();
+    for (std::size_t k = group.firstPosition; k < positionEnd; ++k) {
+      const Vec3f p = mesh.positions[k];
+      w.text("v ").number(p.x).text(" ").number(p.y).text(" ").number(p.z).endLine();
+    }
+    if (!mesh.normals.empty())
+      for (std::size_t k = group.firstPosition; k < positionEnd; ++k) {
+        const Vec3f n = mesh.normals[k];
+        w.text("vn ").number(n.x).text(" ").number(n.y).text(" ").number(n.z).endLine();
+      }
+    for (std::size_t t = group.firstTriangle; t < triangleEnd; ++t)
+      writeFace(w, mesh, t, mesh.triangles);
+  }
+  w.flush();
+}
+
 void writeObjText(const ObjMesh& mesh, const ObjHeader& header, ByteSink& out) {
+  if (!mesh.groups.empty()) return writeGroupedObjText(mesh, header, out);
   const auto& uvTriangles =
       mesh.texcoordTriangles.empty() ? mesh.triangles : mesh.texcoordTriangles;
   const bool uvs = !mesh.texcoords.empty(), normals = !mesh.normals.empty();
@@ -86,6 +125,14 @@ bool indicesBelow(std::span<const std::array<std::uint32_t, 3>> triangles, std::
 
 void requireConsistent(const ObjMesh& mesh, const fs::path& objPath) {
   const bool uvTriangles = !mesh.texcoordTriangles.empty();
+  for (std::size_t g = 0; g < mesh.groups.size(); ++g)
+    if ((g == 0 && (mesh.groups[0].firstPosition != 0 || mesh.groups[0].firstTriangle != 0)) ||
+        (g > 0 && (mesh.groups[g].firstPosition < mesh.groups[g - 1].firstPosition ||
+                   mesh.groups[g].firstTriangle < mesh.groups[g - 1].firstTriangle)) ||
+        mesh.groups[g].firstPosition > mesh.positions.size() ||
+        mesh.groups[g].firstTriangle > mesh.triangles.size() || !mesh.texcoords.empty())
+      throw Error(ErrorKind::InvalidArgument,
+                  "cannot write " + objPath.string() + ": the OBJ's objects are out of order");
   if ((uvTriangles && mesh.texcoordTriangles.size() != mesh.triangles.size()) ||
       (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) ||
       (!uvTriangles && !mesh.texcoords.empty() && mesh.texcoords.size() != mesh.positions.size()))

@@ -19,6 +19,13 @@ class OutputSet;
 
 namespace octaclay::core::detail {
 
+/// A named object of the OBJ (`o NAME`): the positions (and normals) from firstPosition and the
+/// triangles from firstTriangle, up to the next group's.
+struct ObjGroup {
+  std::string name;
+  std::uint32_t firstPosition = 0, firstTriangle = 0;
+};
+
 /// What the OBJ holds. Positions and normals share one index set (`vn` k belongs to `v` k);
 /// texture coordinates have their own, so a vertex can carry several across a seam while its
 /// position is written once (the surface reads back closed).
@@ -29,6 +36,10 @@ struct ObjMesh {
   std::span<const std::array<std::uint32_t, 3>> triangles; ///< into positions and normals
   /// Into texcoords, one per triangle; empty = the same indices as `triangles`.
   std::span<const std::array<std::uint32_t, 3>> texcoordTriangles;
+  /// Named objects in order, the first starting at 0: each written as `o NAME`, its `v` (and
+  /// `vn`), then its faces (indices stay global, as OBJ counts them). Empty: one unnamed mesh.
+  /// Not with texcoords.
+  std::span<const ObjGroup> groups;
 };
 
 /// A file the MTL names, already encoded (a PNG map).

@@ -94,8 +94,8 @@ void stageTexturedObj(const Document& doc, int step, const fs::path& objPath, Ou
   const std::vector<Vec2f> texcoords = detail::gridTexcoords(grid, true);
   const std::vector<std::array<std::uint32_t, 3>> uvTriangles = detail::gridTriangles(grid.m);
   const WeldedGrid welded = weld(grid, uvTriangles);
-  const detail::ObjMesh mesh{welded.positions, welded.normals, texcoords, welded.triangles,
-                             uvTriangles};
+  const detail::ObjMesh mesh{welded.positions, welded.normals, texcoords,
+                             welded.triangles, uvTriangles,    {}};
   const detail::ObjHeader header{
       "Octaclay textured export: M^2 + 2 vertices, (M+1)^2 texture coordinates, M = " +
           std::to_string(static_cast<unsigned>(grid.m)) +

@@ -1,0 +1,274 @@
+#include "octaclay/core/document/scene_io.h"
+
+#include "detail/exr_sink_stream.h"
+#include "document_parts.h"
+#include "exr_part_scan.h"
+
+#include "octaclay/core/document/atomic_output.h"
+#include "octaclay/core/error.h"
+
+#include <ImfInputFile.h>
+#include <ImfInputPart.h>
+#include <ImfIntAttribute.h>
+#include <ImfMultiPartInputFile.h>
+#include <ImfMultiPartOutputFile.h>
+#include <ImfOutputPart.h>
+#include <ImfPartType.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
+
+#include <new>
+#include <set>
+
+namespace octaclay::core {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kNameAttribute = "octaclay.name";
+constexpr const char* kWidthAttribute = "octaclay.width";
+constexpr const char* kHeightAttribute = "octaclay.height";
+constexpr const char* kTranslationAttribute = "octaclay.translation";
+constexpr const char* kRotationAttribute = "octaclay.rotation"; // Euler XYZ, degrees
+constexpr const char* kScaleAttribute = "octaclay.scale";
+constexpr const char* kVisibleAttribute = "octaclay.visible";
+constexpr const char* kLockedAttribute = "octaclay.locked";
+constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& why) {
+  throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);
+}
+
+Imath::V3f toImath(Vec3f v) {
+  return {v.x, v.y, v.z};
+}
+Vec3f fromImath(const Imath::V3f& v) {
+  return {v.x, v.y, v.z};
+}
+
+void addObjectAttributes(Imf::Header& header, const SceneObject& object) {
+  const int side = object.document.positions.side();
+  header.insert(kNameAttribute, Imf::StringAttribute(object.name));
+  header.insert(kWidthAttribute, Imf::IntAttribute(side));
+  header.insert(kHeightAttribute, Imf::IntAttribute(side));
+  header.insert(kTranslationAttribute, Imf::V3fAttribute(toImath(object.transform.translation)));
+  header.insert(kRotationAttribute, Imf::V3fAttribute(toImath(object.transform.rotationDegrees)));
+  header.insert(kScaleAttribute, Imf::V3fAttribute(toImath(object.transform.scale)));
+  header.insert(kVisibleAttribute, Imf::IntAttribute(object.visible ? 1 : 0));
+  header.insert(kLockedAttribute, Imf::IntAttribute(object.locked ? 1 : 0));
+}
+
+std::string defaultName(const fs::path& path) {
+  const std::string stem = path.stem().string();
+  return objectNameProblem(stem) ? "Model" : stem;
+}
+
+// A flag attribute: absent → fallback; 0 or 1; anything else is a lie.
+bool flag(const fs::path& path, const Imf::Header& header, const char* attribute, bool fallback,
+          const std::string& part) {
+  const auto* value = header.findTypedAttribute<Imf::IntAttribute>(attribute);
+  if (!value) {
+    if (header.find(attribute) != header.end())
+      refuse(path, part + ": " + attribute + " is not an int attribute");
+    return fallback;
+  }
+  if (value->value() != 0 && value->value() != 1)
+    refuse(path, part + ": " + attribute + " is " + std::to_string(value->value()) +
+                     " (0 or 1 expected)");
+  return value->value() == 1;
+}
+
+Vec3f vector(const fs::path& path, const Imf::Header& header, const char* attribute, Vec3f fallback,
+             const std::string& part) {
+  const auto* value = header.findTypedAttribute<Imf::V3fAttribute>(attribute);
+  if (!value) {
+    if (header.find(attribute) != header.end())
+      refuse(path, part + ": " + attribute + " is not a v3f attribute");
+    return fallback;
+  }
+  return fromImath(value->value());
+}
+
+// The object a part's header describes, every scene attribute checked, the document header
+// checked last (its messages are readDocumentHeader's). index counts from 0; fallbackName is
+// the name of an object whose header names none.
+SceneObjectHeader describePart(const fs::path& path, const Imf::Header& header, std::size_t index,
+                               const std::string& fallbackName) {
+  SceneObjectHeader object;
+  const auto* name = header.findTypedAttribute<Imf::StringAttribute>(kNameAttribute);
+  object.name = name ? name->value() : fallbackName;
+  const std::string part = "object " + std::to_string(index + 1) + " ('" + object.name + "')";
+  if (const auto problem = objectNameProblem(object.name)) refuse(path, part + ": " + *problem);
+
+  const auto* parameterization =
+      header.findTypedAttribute<Imf::StringAttribute>(kParameterizationAttribute);
+  if (parameterization) {
+    const auto topology = parseTopology(parameterization->value());
+    if (!topology)
+      refuse(path, part + ": unknown topology '" + parameterization->value() +
+                       "' (octahedral, torus or plane)");
+    object.topology = *topology;
+  }
+
+  const Imath::Box2i window = header.dataWindow();
+  object.width = window.max.x - window.min.x + 1;
+  object.height = window.max.y - window.min.y + 1;
+  for (const auto& [attribute, declared] :
+       {std::pair{kWidthAttribute, object.width}, std::pair{kHeightAttribute, object.height}}) {
+    const auto* value = header.findTypedAttribute<Imf::IntAttribute>(attribute);
+    if (value && value->value() != declared)
+      refuse(path, part + ": its header says " + attribute + " = " +
+                       std::to_string(value->value()) + " but its image is " +
+                       std::to_string(object.width) + "x" + std::to_string(object.height));
+  }
+
+  object.transform.translation = vector(path, header, kTranslationAttribute, {}, part);
+  object.transform.rotationDegrees = vector(path, header, kRotationAttribute, {}, part);
+  object.transform.scale = vector(path, header, kScaleAttribute, {1, 1, 1}, part);
+  if (const auto problem = transformProblem(object.transform)) refuse(path, part + ": " + *problem);
+  object.visible = flag(path, header, kVisibleAttribute, true, part);
+  object.locked = flag(path, header, kLockedAttribute, false, part);
+
+  object.document = detail::checkDocumentHeader(path, header);
+  return object;
+}
+
+// Names unique, format versions equal: what the parts must agree on.
+void checkPartsAgree(const fs::path& path, const std::vector<SceneObjectHeader>& objects) {
+  std::set<std::string_view> names;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    if (!names.insert(objects[k].name).second)
+      refuse(path, "objects " + std::to_string(k + 1) + " and another are both named '" +
+                       objects[k].name + "' (names are unique)");
+    if (objects[k].document.formatVersion != objects[0].document.formatVersion)
+      refuse(path, "the parts disagree: object " + std::to_string(k + 1) + " is format version " +
+                       std::to_string(objects[k].document.formatVersion) + ", object 1 version " +
+                       std::to_string(objects[0].document.formatVersion));
+  }
+}
+
+detail::ExrFileOutline scanned(const fs::path& path) {
+  detail::requireExrMagic(path);
+  return detail::scanExrHeaders(path, kMaxSceneObjects);
+}
+
+template <typename Body> auto guarded(const fs::path& path, Body&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    refuse(path, "not enough memory to read it: the document is larger than this machine can "
+                 "hold");
+  } catch (const std::exception& e) {
+    refuse(path, std::string("corrupt or truncated OpenEXR data: ") + e.what());
+  }
+}
+
+std::vector<SceneObjectHeader> multiPartHeaders(const fs::path& path,
+                                                const Imf::MultiPartInputFile& file) {
+  std::vector<SceneObjectHeader> objects;
+  objects.reserve(static_cast<std::size_t>(file.parts()));
+  for (int k = 0; k < file.parts(); ++k) {
+    const Imf::Header& header = file.header(k);
+    objects.push_back(describePart(path, header, static_cast<std::size_t>(k),
+                                   header.hasName() ? header.name() : "Object"));
+  }
+  checkPartsAgree(path, objects);
+  return objects;
+}
+
+} // namespace
+
+std::vector<SceneObjectHeader> readSceneHeaders(const fs::path& path) {
+  const detail::ExrFileOutline outline = scanned(path);
+  return guarded(path, [&] {
+    if (!outline.multiPart) {
+      Imf::InputFile file(path.c_str());
+      return std::vector<SceneObjectHeader>{
+          describePart(path, file.header(), 0, defaultName(path))};
+    }
+    Imf::MultiPartInputFile file(path.c_str(), 1);
+    return multiPartHeaders(path, file);
+  });
+}
+
+Scene readScene(const fs::path& path, const DocumentReadOptions& options) {
+  const detail::ExrFileOutline outline = scanned(path);
+  Scene scene;
+  if (!outline.multiPart) {
+    SceneObjectHeader described;
+    Document document =
+        detail::readDocumentInspecting(path, options, [&](const Imf::Header& header) {
+          described = describePart(path, header, 0, defaultName(path));
+        });
+    scene.objects.push_back({described.name, std::move(document), described.transform,
+                             described.visible, described.locked});
+    scene.objects.back().document.topology = described.topology;
+    return scene;
+  }
+  guarded(path, [&] {
+    Imf::MultiPartInputFile file(path.c_str(), detail::exrThreads());
+    const std::vector<SceneObjectHeader> objects = multiPartHeaders(path, file);
+    for (int k = 0; k < file.parts(); ++k)
+      if (!file.partComplete(k))
+        refuse(path, "truncated: the file ends before all the pixels of object " +
+                         std::to_string(k + 1) + " ('" + objects[k].name +
+                         "') (an interrupted copy?)");
+    scene.objects.reserve(objects.size());
+    for (int k = 0; k < file.parts(); ++k) {
+      const SceneObjectHeader& described = objects[static_cast<std::size_t>(k)];
+      Imf::InputPart part(file, k);
+      Document document =
+          detail::readDocumentPixels(path, part.header(), described.document, options,
+                                     [&](const Imf::FrameBuffer& frame, int first, int last) {
+                                       part.setFrameBuffer(frame);
+                                       part.readPixels(first, last);
+                                     });
+      document.topology = described.topology;
+      scene.objects.push_back({described.name, std::move(document), described.transform,
+                               described.visible, described.locked});
+    }
+  });
+  return scene;
+}
+
+void writeScene(const Scene& scene, const fs::path& path, const DocumentWriteOptions& options) {
+  if (const auto problem = sceneProblem(scene))
+    throw Error(ErrorKind::InvalidArgument, "cannot write " + path.string() + ": " + *problem);
+  if (scene.objects.size() == 1) {
+    const SceneObject& object = scene.objects.front();
+    detail::writeDocumentWithAttributes(object.document, path, options, [&](Imf::Header& header) {
+      addObjectAttributes(header, object);
+    });
+    return;
+  }
+  std::vector<Imf::Header> headers;
+  headers.reserve(scene.objects.size());
+  for (const SceneObject& object : scene.objects) {
+    headers.push_back(detail::documentPartHeader(object.document, options));
+    addObjectAttributes(headers.back(), object);
+    headers.back().setName(object.name);
+    headers.back().setType(Imf::SCANLINEIMAGE);
+  }
+  writeFileAtomically(path, [&](ByteSink& sink) {
+    detail::ExrSinkStream stream(sink);
+    {
+      // The display window is a shared attribute of a multi-part file: parts of other sizes
+      // take the first part's (overrideSharedAttributes); each part's data window is its own.
+      Imf::MultiPartOutputFile file(stream, headers.data(), static_cast<int>(headers.size()), true,
+                                    detail::exrThreads());
+      for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+        Imf::OutputPart part(file, static_cast<int>(k));
+        detail::writeDocumentPixels(scene.objects[k].document, headers[k],
+                                    [&](const Imf::FrameBuffer& frame, int rows) {
+                                      part.setFrameBuffer(frame);
+                                      part.writePixels(rows);
+                                    });
+      }
+    }
+    stream.finish();
+  });
+}
+
+} // namespace octaclay::core
