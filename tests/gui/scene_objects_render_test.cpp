@@ -13,9 +13,14 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
+#include <numbers>
 
 using namespace octaclay;
 using app::MainWindow;
@@ -47,6 +52,49 @@ core::Scene threeObjects() {
   return scene;
 }
 
+// The camera every placement test looks through: from (1, 0, 10) towards -z, +y up, 30°
+// vertically (VTK's default angle), perspective.
+constexpr double kEyeX = 1.0, kEyeZ = 10.0, kViewAngle = 30.0;
+
+void placeCamera(app::ViewportWidget& view) {
+  vtkCamera* camera = view.renderer()->GetActiveCamera();
+  camera->SetParallelProjection(false);
+  camera->SetPosition(kEyeX, 0, kEyeZ);
+  camera->SetFocalPoint(kEyeX, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(kViewAngle);
+  view.renderer()->ResetCameraClippingRange();
+  view.update();
+}
+
+// Where world point p appears in a width × height view through that camera, by hand (pixels, y
+// down).
+QPointF expectedPixel(double x, double y, double z, int width, int height) {
+  const double half = (kEyeZ - z) * std::tan(kViewAngle / 2 * std::numbers::pi / 180);
+  const double aspect = double(width) / height;
+  return {((x - kEyeX) / (half * aspect) * 0.5 + 0.5) * width, (0.5 - y / half * 0.5) * height};
+}
+
+// The box of the pixels that differ from the background (the top-left corner's colour).
+QRect drawnBox(const QImage& image) {
+  const QRgb background = image.pixel(0, 0);
+  int x0 = image.width(), y0 = image.height(), x1 = -1, y1 = -1;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QRgb c = image.pixel(x, y);
+      if (std::max({std::abs(qRed(c) - qRed(background)), std::abs(qGreen(c) - qGreen(background)),
+                    std::abs(qBlue(c) - qBlue(background))}) <= 8)
+        continue;
+      x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    }
+  return x1 < 0 ? QRect() : QRect(QPoint(x0, y0), QPoint(x1, y1));
+}
+
+void hideBrushOutline(QWidget* view) {
+  QEvent leave(QEvent::Leave);
+  QCoreApplication::sendEvent(view, &leave);
+}
+
 } // namespace
 
 class SceneObjectsRenderTest : public QObject {
@@ -57,6 +105,7 @@ private slots:
   void cleanup();
   void openSculptSaveKeepsEveryObject();
   void switchingTheActiveObjectKeepsEachOnesWork();
+  void activeObjectIsDrawnAndSculptedUnderItsTransform();
 
 private:
   QTemporaryDir dir_;
@@ -144,6 +193,85 @@ void SceneObjectsRenderTest::switchingTheActiveObjectKeepsEachOnesWork() {
   QVERIFY(bitEqual(positionsOf(*window_), sculpted));
   QVERIFY(samePositions(modeller.scene().objects[1].document, original.objects[1].document));
   QVERIFY(window_->isModified());
+}
+
+void SceneObjectsRenderTest::activeObjectIsDrawnAndSculptedUnderItsTransform() {
+  // The edited object: a unit sphere moved to (2, 0, 0) and halved; a hidden one at the origin.
+  core::Scene scene =
+      core::sceneOf(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)), "Small");
+  scene.objects[0].transform = {{2.0f, 0.0f, 0.0f}, {}, {0.5f, 0.5f, 0.5f}};
+  scene.objects.push_back({"Hidden",
+                           core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)),
+                           {},
+                           false,
+                           false});
+  const QString path = dir_.filePath("placed.exr");
+  core::writeScene(scene, path.toStdString());
+  window_ = app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window_);
+  QVERIFY(window_->openDocument(path));
+  app::ViewportWidget* view = window_->viewport();
+  placeCamera(*view);
+  hideBrushOutline(view);
+  const QImage image = view->grabFramebuffer();
+  QCOMPARE(image.size(), view->size()); // one device pixel a logical one under Xvfb
+  const int w = image.width(), h = image.height();
+
+  // Its pixels lie around (2, 0, 0)'s projection, as wide as a radius of 0.5 there. A sphere's
+  // outline seen from 10 units is within 0.2 % of the projected radius; 3 pixels allow for the
+  // rasterization of its edge and the displayed level's facets.
+  const QRect box = drawnBox(image);
+  QVERIFY(!box.isNull());
+  const QPointF centre = expectedPixel(2, 0, 0, w, h);
+  const double radius =
+      (expectedPixel(2.5, 0, 0, w, h).x() - expectedPixel(1.5, 0, 0, w, h).x()) / 2;
+  const QPointF drawnCentre = QRectF(box).center();
+  const QString where = QString("drawn %1,%2 %3×%4; expected centre %5,%6 radius %7")
+                            .arg(box.x())
+                            .arg(box.y())
+                            .arg(box.width())
+                            .arg(box.height())
+                            .arg(centre.x())
+                            .arg(centre.y())
+                            .arg(radius);
+  QVERIFY2(std::abs(drawnCentre.x() - centre.x()) < 3 && std::abs(drawnCentre.y() - centre.y()) < 3,
+           qPrintable(where));
+  QVERIFY2(std::abs(box.width() / 2.0 - radius) < 3 && std::abs(box.height() / 2.0 - radius) < 3,
+           qPrintable(where));
+
+  // A stroke made with the mouse over its front, (2, 0, 0.5) in the world, changes the
+  // document there: around (0, 0, 1) of the object's own space.
+  const core::GeometryImage before = view->modeller().document().positions;
+  QVERIFY(window_->brushState()->selectBrush("inflate"));
+  window_->brushState()->setRadius(0.05f);
+  window_->brushState()->setStrength(0.5f);
+  const QPoint press = expectedPixel(2, 0, 0.5, w, h).toPoint();
+  QTest::mousePress(view, Qt::LeftButton, {}, press);
+  for (int k = 1; k <= 5; ++k)
+    QTest::mouseMove(view, press + QPoint(2 * k, 0));
+  QTest::mouseRelease(view, Qt::LeftButton, {}, press + QPoint(10, 0));
+  QTRY_VERIFY_WITH_TIMEOUT(!view->stroking(), 20000);
+  QVERIFY(view->modeller().canUndo());
+  const core::GeometryImage& after = view->modeller().document().positions;
+  int changed = 0;
+  core::Vec3f sum{};
+  for (int j = 0; j <= before.size(); ++j)
+    for (int i = 0; i <= before.size(); ++i) {
+      const core::Vec3f a = before.at(i, j).xyz(), b = after.at(i, j).xyz();
+      if (a.x == b.x && a.y == b.y && a.z == b.z) continue;
+      ++changed;
+      sum = sum + a;
+    }
+  QVERIFY2(changed > 5, qPrintable(QString::number(changed)));
+  // The pointer moved 10 pixels right, about 0.09 object units: the centre of the change lies
+  // within 0.25 object units of the front point (the brush's radius is 0.17).
+  const core::Vec3f mean = sum * (1.0f / float(changed));
+  QVERIFY2(core::length(mean - core::Vec3f{0, 0, 1}) < 0.25f,
+           qPrintable(QString("%1 samples changed around %2, %3, %4")
+                          .arg(changed)
+                          .arg(mean.x)
+                          .arg(mean.y)
+                          .arg(mean.z)));
 }
 
 QTEST_MAIN(SceneObjectsRenderTest)

@@ -241,13 +241,19 @@ std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   // left does.
   const QRectF view = modelRect();
   if (p.x() >= view.width()) p.rx() -= view.width();
-  const core::Ray ray = viewRay(*renderer()->GetActiveCamera(), view.size(), p);
+  const core::Ray ray =
+      placement().rayToLocal(viewRay(*renderer()->GetActiveCamera(), view.size(), p));
   const gpu::GpuDocument& document = session.gpuDocument();
   return core::pickRay(document.document().positions, document.bounds(), ray);
 }
 
 QPointF ViewportWidget::project(core::Vec3f p) const {
-  return projectToView(*renderer()->GetActiveCamera(), modelRect(), p);
+  return projectToView(*renderer()->GetActiveCamera(), modelRect(), placement().toWorld(p));
+}
+
+ObjectPlacement ViewportWidget::placement() const {
+  if (modeller_.objectCount() == 0) return {};
+  return ObjectPlacement(modeller_.objectAt(modeller_.activeObject()).transform);
 }
 
 void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
@@ -335,7 +341,7 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
   vtkCamera* camera = renderer()->GetActiveCamera();
   core::Vec3f anchor;
   if (const auto hit = pickAt(event->position())) {
-    anchor = hit->position;
+    anchor = placement().toWorld(hit->position);
   } else {
     const QRectF view = modelRect();
     QPointF p = event->position();

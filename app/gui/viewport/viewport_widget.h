@@ -4,6 +4,7 @@
 #include "camera_views.h"
 #include "gl_host.h"
 #include "lod_display.h"
+#include "object_placement.h"
 #include "stroke_input.h"
 #include "view_looks.h"
 #include "viewport_frames.h"
@@ -107,11 +108,15 @@ public:
   void setOrbitMode(OrbitMode mode) { orbitMode_ = mode; }
   OrbitMode orbitMode() const { return orbitMode_; }
 
-  /// The surface point under widget position p (logical pixels), if any.
+  /// The surface point under widget position p (logical pixels), if any, in the active
+  /// object's space (the pointer's ray carried there by placement()).
   std::optional<core::PickHit> pickAt(QPointF p) const;
-  /// Where object-space point p appears in the widget (logical pixels; the left half side by
-  /// side).
+  /// Where point p of the active object's space appears in the widget (logical pixels; the
+  /// left half side by side).
   QPointF project(core::Vec3f p) const;
+  /// Where the active object sits (its transform): the camera is in world space, the document,
+  /// its picks and the brush in the object's.
+  ObjectPlacement placement() const;
   /// The part of the widget one model is drawn in (logical pixels): the left half side by side.
   QRectF modelRect() const;
 
