@@ -75,12 +75,14 @@ QPointF expectedPixel(double x, double y, double z, int width, int height) {
   return {((x - kEyeX) / (half * aspect) * 0.5 + 0.5) * width, (0.5 - y / half * 0.5) * height};
 }
 
-// The box of the pixels that differ from the background (the top-left corner's colour).
-QRect drawnBox(const QImage& image) {
+// The box of the pixels that differ from the background (the top-left corner's colour), within
+// columns [fromX, toX).
+QRect drawnBox(const QImage& image, int fromX = 0, int toX = -1) {
   const QRgb background = image.pixel(0, 0);
+  if (toX < 0) toX = image.width();
   int x0 = image.width(), y0 = image.height(), x1 = -1, y1 = -1;
   for (int y = 0; y < image.height(); ++y)
-    for (int x = 0; x < image.width(); ++x) {
+    for (int x = std::max(0, fromX); x < std::min(toX, image.width()); ++x) {
       const QRgb c = image.pixel(x, y);
       if (std::max({std::abs(qRed(c) - qRed(background)), std::abs(qGreen(c) - qGreen(background)),
                     std::abs(qBlue(c) - qBlue(background))}) <= 8)
@@ -106,6 +108,7 @@ private slots:
   void openSculptSaveKeepsEveryObject();
   void switchingTheActiveObjectKeepsEachOnesWork();
   void activeObjectIsDrawnAndSculptedUnderItsTransform();
+  void otherVisibleObjectsAreDrawnUnderTheirTransforms();
 
 private:
   QTemporaryDir dir_;
@@ -272,6 +275,86 @@ void SceneObjectsRenderTest::activeObjectIsDrawnAndSculptedUnderItsTransform() {
                           .arg(mean.x)
                           .arg(mean.y)
                           .arg(mean.z)));
+}
+
+void SceneObjectsRenderTest::otherVisibleObjectsAreDrawnUnderTheirTransforms() {
+  // The edited sphere at (2, 0, 0) halved, and a visible one at (0, 0.5, 0) scaled (0.5, 0.25,
+  // 0.5): drawn in the same frame, flattened, where its transform puts it.
+  core::Scene scene =
+      core::sceneOf(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)), "Small");
+  scene.objects[0].transform = {{2.0f, 0.0f, 0.0f}, {}, {0.5f, 0.5f, 0.5f}};
+  scene.objects.push_back({"Flat",
+                           core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)),
+                           {{0.0f, 0.5f, 0.0f}, {}, {0.5f, 0.25f, 0.5f}},
+                           true,
+                           false});
+  const QString path = dir_.filePath("two.exr");
+  core::writeScene(scene, path.toStdString());
+  window_ = app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window_);
+  QVERIFY(window_->openDocument(path));
+  app::ViewportWidget* view = window_->viewport();
+  app::Modeller& modeller = view->modeller();
+
+  // Each object's pixels, left and right of the view's centre (world x = 1), against their
+  // hand-computed projections: 3 pixels for the edge's rasterization and facets.
+  auto check = [&](const char* when) {
+    placeCamera(*view);
+    hideBrushOutline(view);
+    const QImage image = view->grabFramebuffer();
+    const int w = image.width(), h = image.height();
+    const int middle = qRound(expectedPixel(1, 0, 0, w, h).x());
+    const QRect flat = drawnBox(image, 0, middle), small = drawnBox(image, middle);
+    const QPointF flatLow = expectedPixel(-0.5, 0.25, 0, w, h),
+                  flatHigh = expectedPixel(0.5, 0.75, 0, w, h);
+    const QPointF smallLow = expectedPixel(1.5, -0.5, 0, w, h),
+                  smallHigh = expectedPixel(2.5, 0.5, 0, w, h);
+    auto near = [](const QRect& box, QPointF low, QPointF high) {
+      return !box.isNull() && std::abs(box.left() - low.x()) < 3 &&
+             std::abs(box.right() + 1 - high.x()) < 3 && std::abs(box.top() - high.y()) < 3 &&
+             std::abs(box.bottom() + 1 - low.y()) < 3;
+    };
+    const QString where = QString("%1: flat drawn %2,%3 to %4,%5, expected %6,%7 to %8,%9; small "
+                                  "drawn %10,%11 to %12,%13, expected %14,%15 to %16,%17")
+                              .arg(when)
+                              .arg(flat.left())
+                              .arg(flat.top())
+                              .arg(flat.right() + 1)
+                              .arg(flat.bottom() + 1)
+                              .arg(flatLow.x())
+                              .arg(flatHigh.y())
+                              .arg(flatHigh.x())
+                              .arg(flatLow.y())
+                              .arg(small.left())
+                              .arg(small.top())
+                              .arg(small.right() + 1)
+                              .arg(small.bottom() + 1)
+                              .arg(smallLow.x())
+                              .arg(smallHigh.y())
+                              .arg(smallHigh.x())
+                              .arg(smallLow.y());
+    qInfo().noquote() << where;
+    if (qEnvironmentVariableIsSet("OCTACLAY_TEST_IMAGES"))
+      image.save(qEnvironmentVariable("OCTACLAY_TEST_IMAGES") + "/" + when + ".png");
+    QVERIFY2(near(flat, flatLow, flatHigh), qPrintable(where));
+    QVERIFY2(near(small, smallLow, smallHigh), qPrintable(where));
+  };
+  check("Small edited");
+  if (QTest::currentTestFailed()) return;
+  // The other way round: the flat one edited (the GPU's), the small one a scene actor.
+  QVERIFY(modeller.setActiveObject(1));
+  check("Flat edited");
+  if (QTest::currentTestFailed()) return;
+  // Hidden, it is not drawn: nothing left of the centre.
+  core::Scene hidden = modeller.scene();
+  hidden.objects[0].visible = false;
+  QVERIFY(modeller.setScene(std::move(hidden), 1, true));
+  placeCamera(*view);
+  hideBrushOutline(view);
+  const QImage image = view->grabFramebuffer();
+  const int middle = qRound(expectedPixel(1, 0, 0, image.width(), image.height()).x());
+  QVERIFY(drawnBox(image, middle).isNull());
+  QVERIFY(!drawnBox(image, 0, middle).isNull());
 }
 
 QTEST_MAIN(SceneObjectsRenderTest)

@@ -124,6 +124,8 @@ void ViewportFrames::documentReplaced() {
   model_->refreshAllNormals(document);
   model_->setLodMesh({}); // the previous document's LOD is not this one's
   pendingLod_.reset();
+  // A new scene or another object made active: the others drawn as they now are.
+  others_.rebuild(*renderer_, modeller_);
   updateBounds();
 }
 
