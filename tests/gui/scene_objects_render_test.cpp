@@ -109,6 +109,7 @@ private slots:
   void switchingTheActiveObjectKeepsEachOnesWork();
   void activeObjectIsDrawnAndSculptedUnderItsTransform();
   void otherVisibleObjectsAreDrawnUnderTheirTransforms();
+  void altClickOnAnObjectMakesItTheEditedOne();
 
 private:
   QTemporaryDir dir_;
@@ -355,6 +356,53 @@ void SceneObjectsRenderTest::otherVisibleObjectsAreDrawnUnderTheirTransforms() {
   const int middle = qRound(expectedPixel(1, 0, 0, image.width(), image.height()).x());
   QVERIFY(drawnBox(image, middle).isNull());
   QVERIFY(!drawnBox(image, 0, middle).isNull());
+}
+
+void SceneObjectsRenderTest::altClickOnAnObjectMakesItTheEditedOne() {
+  core::Scene scene =
+      core::sceneOf(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)), "Small");
+  scene.objects[0].transform = {{2.0f, 0.0f, 0.0f}, {}, {0.5f, 0.5f, 0.5f}};
+  scene.objects.push_back({"Flat",
+                           core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 64)),
+                           {{0.0f, 0.5f, 0.0f}, {}, {0.5f, 0.25f, 0.5f}},
+                           true,
+                           false});
+  const QString path = dir_.filePath("alt.exr");
+  core::writeScene(scene, path.toStdString());
+  window_ = app::testing::openTestWindow(dir_.filePath("recovery"));
+  QVERIFY(window_);
+  QVERIFY(window_->openDocument(path));
+  app::ViewportWidget* view = window_->viewport();
+  app::Modeller& modeller = view->modeller();
+  placeCamera(*view);
+  const int w = view->width(), h = view->height();
+  const std::vector<float> small = positionsOf(*window_);
+
+  // Alt+click on the flat one's front: it becomes the edited one, no stroke made.
+  QTest::mouseClick(view, Qt::LeftButton, Qt::AltModifier,
+                    expectedPixel(0, 0.5, 0.25, w, h).toPoint());
+  QCOMPARE(modeller.activeObject(), 1);
+  QVERIFY2(window_->statusBar()->currentMessage().contains("Flat"),
+           qPrintable(window_->statusBar()->currentMessage()));
+  QVERIFY(!modeller.canUndo());
+  // On the background (between the two): nothing changes.
+  QTest::mouseClick(view, Qt::LeftButton, Qt::AltModifier, expectedPixel(1, 0, 0, w, h).toPoint());
+  QCOMPARE(modeller.activeObject(), 1);
+  // Back on the small one: edited again, with its samples as they were.
+  QTest::mouseClick(view, Qt::LeftButton, Qt::AltModifier,
+                    expectedPixel(2, 0, 0.5, w, h).toPoint());
+  QCOMPARE(modeller.activeObject(), 0);
+  QVERIFY(bitEqual(positionsOf(*window_), small));
+  // An Alt+drag still orbits, and selects nothing.
+  vtkCamera* camera = view->renderer()->GetActiveCamera();
+  const QPoint from = expectedPixel(0, 0.5, 0.25, w, h).toPoint();
+  QTest::mousePress(view, Qt::LeftButton, Qt::AltModifier, from);
+  for (int k = 1; k <= 5; ++k)
+    QTest::mouseMove(view, from + QPoint(8 * k, 0));
+  QTest::mouseRelease(view, Qt::LeftButton, Qt::AltModifier, from + QPoint(40, 0));
+  QCOMPARE(modeller.activeObject(), 0);
+  QVERIFY2(std::abs(camera->GetPosition()[0] - kEyeX) > 0.5,
+           qPrintable(QString::number(camera->GetPosition()[0])));
 }
 
 QTEST_MAIN(SceneObjectsRenderTest)

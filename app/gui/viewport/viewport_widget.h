@@ -159,11 +159,16 @@ protected:
   void resizeEvent(QResizeEvent* event) override;
 
 private:
-  enum class Drag { None, Sculpt, Orbit, Pan };
+  // ObjectClick: an Alt+left press that selects the object under it at its release, or orbits
+  // (as an Alt+left drag always did) once the pointer moves more than a few pixels.
+  enum class Drag { None, Sculpt, Orbit, Pan, ObjectClick };
 
   void documentReplaced(bool keepView);
   /// The brush ring at the hovered point, if one is shown.
   std::optional<BrushRing> ring() const;
+  /// Alt+click: makes the visible object under widget position p the edited one
+  /// (Modeller::setActiveObject); nothing when none is there.
+  void selectObjectAt(QPointF p);
 
   Modeller& modeller_;
   ViewportSurface* surface_ = nullptr; // owned by its container, a child of this widget
@@ -174,6 +179,7 @@ private:
   OrbitMode orbitMode_ = OrbitMode::Turntable;
   Qt::MouseButton dragButton_ = Qt::NoButton; ///< the button whose release ends drag_
   QPointF lastPos_;
+  QPointF pressPos_; // where the current drag's button went down
   bool glStarted_ = false, glOk_ = false;
   QString glError_;
   QElapsedTimer clock_;
