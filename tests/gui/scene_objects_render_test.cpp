@@ -160,6 +160,18 @@ void SceneObjectsRenderTest::openSculptSaveKeepsEveryObject() {
   QVERIFY(samePositions(back.objects[1].document, original.objects[1].document));
   QVERIFY(samePositions(back.objects[2].document, original.objects[2].document));
   QVERIFY(bitEqual(positionsOf(*window_), sculpted));
+
+  // Export Mesh writes every visible object: one OBJ group each (the lump is hidden).
+  const QString obj = dir_.filePath("three.obj");
+  QVERIFY(window_->exportMesh(obj, 1));
+  QFile file(obj);
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  QStringList groups;
+  while (!file.atEnd()) {
+    const QByteArray line = file.readLine().trimmed();
+    if (line.startsWith("o ")) groups << QString::fromUtf8(line.mid(2));
+  }
+  QCOMPARE(groups, QStringList({"Body", "Box"}));
 }
 
 void SceneObjectsRenderTest::switchingTheActiveObjectKeepsEachOnesWork() {

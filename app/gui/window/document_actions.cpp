@@ -11,6 +11,7 @@
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/scene_export.h"
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
@@ -313,6 +314,7 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
 bool DocumentActions::exportMesh(const QString& path, int divisor) {
   if (!parts_.modeller->hasDocument()) return false;
   parts_.viewport->endStroke();
+  if (parts_.modeller->objectCount() > 1) return exportScene(path);
   // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
   const std::function<void()> work = meshExportWork(parts_.modeller->document(), path, divisor);
   if (!work) {
@@ -326,6 +328,28 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
   }
   lastError_.clear();
   parts_.statusBar->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool DocumentActions::exportScene(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (!QStringList{"obj", "glb", "ply", "stl", "off"}.contains(suffix)) {
+    showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
+    return false;
+  }
+  auto snapshot = std::make_shared<const core::Scene>(parts_.modeller->scene());
+  const QString error =
+      runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+                  [snapshot, path] { core::writeSceneMeshes(*snapshot, toPath(path)); });
+  if (!error.isEmpty()) {
+    showError(failureMessage(tr("Could not export"), path, error));
+    return false;
+  }
+  lastError_.clear();
+  const auto visible = std::count_if(snapshot->objects.begin(), snapshot->objects.end(),
+                                     [](const core::SceneObject& o) { return o.visible; });
+  parts_.statusBar->showMessage(
+      tr("Exported %1: %2 visible objects at full resolution").arg(path).arg(visible), 5000);
   return true;
 }
 

@@ -69,7 +69,9 @@ public:
   /// undo brings the previous document back, its path and saved state too, with its strokes
   /// still undoable.
   bool importMesh(const QString& path, int n);
-  /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
+  /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension). A scene of
+  /// several objects writes every visible one at full resolution (core::writeSceneMeshes: GLB
+  /// nodes with their transforms, OBJ groups, one world-space PLY/STL/OFF).
   bool exportMesh(const QString& path, int divisor);
   /// Writes the Level of detail dock's LOD of the current surface (OBJ + MTL or GLB) with the
   /// painted layers, as exportMesh writes them, and a tangent-space normal map baked from the
@@ -125,6 +127,8 @@ signals:
 
 private:
   void showError(const QString& message);
+  /// exportMesh for a scene of several objects.
+  bool exportScene(const QString& path);
   /// Shows scene as the current one (its first object active), its history empty and saved;
   /// false if the viewport refused it (reported; the current document stays).
   bool adoptScene(core::Scene scene, const QString& path);
