@@ -358,7 +358,17 @@ void SceneObjectsRenderTest::otherVisibleObjectsAreDrawnUnderTheirTransforms() {
   QVERIFY(modeller.setActiveObject(1));
   check("Flat edited");
   if (QTest::currentTestFailed()) return;
-  // Hidden, it is not drawn: nothing left of the centre.
+  // A file whose first object is hidden opens with the first visible one edited.
+  {
+    core::Scene firstHidden = scene;
+    firstHidden.objects[0].visible = false;
+    const QString hiddenPath = dir_.filePath("first-hidden.exr");
+    core::writeScene(firstHidden, hiddenPath.toStdString());
+    QVERIFY(window_->openDocument(hiddenPath));
+    QCOMPARE(modeller.activeObject(), 1);
+    QCOMPARE(modeller.objectAt(1).name, std::string("Flat"));
+  }
+  // Hidden, it is not drawn: nothing right of the centre.
   core::Scene hidden = modeller.scene();
   hidden.objects[0].visible = false;
   QVERIFY(modeller.setScene(std::move(hidden), 1, true));

@@ -55,8 +55,10 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
     autosaved_ = autosaving_;
   });
   connect(parts_.modeller, &Modeller::historyStepped, this, &DocumentActions::stepped);
-  connect(parts_.modeller, &Modeller::activeObjectAboutToChange, this,
-          [this] { modifiedBeforeSwitch_ = isModified(); });
+  connect(parts_.modeller, &Modeller::activeObjectAboutToChange, this, [this] {
+    modifiedBeforeSwitch_ = isModified();
+    emit aboutToAdopt(); // another document is about to be shown
+  });
   connect(parts_.modeller, &Modeller::activeObjectChanged, this,
           &DocumentActions::activeObjectChanged);
 }
@@ -155,7 +157,12 @@ bool DocumentActions::importMesh(const QString& path, int n) {
 
 bool DocumentActions::adoptScene(core::Scene scene, const QString& path) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
-  if (!parts_.modeller->setScene(std::move(scene))) {
+  // The first visible object is the one edited (a hidden one would still be drawn as edited).
+  const auto visible = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                    [](const core::SceneObject& o) { return o.visible; });
+  const int active =
+      visible == scene.objects.end() ? 0 : static_cast<int>(visible - scene.objects.begin());
+  if (!parts_.modeller->setScene(std::move(scene), active)) {
     showError(parts_.viewport->error());
     return false;
   }

@@ -129,7 +129,7 @@ private:
   void showError(const QString& message);
   /// exportMesh for a scene of several objects.
   bool exportScene(const QString& path);
-  /// Shows scene as the current one (its first object active), its history empty and saved;
+  /// Shows scene as the current one (its first visible object active), its history empty and saved;
   /// false if the viewport refused it (reported; the current document stays).
   bool adoptScene(core::Scene scene, const QString& path);
   /// The modeller switched its active object: its history began anew, the saved state is kept.
