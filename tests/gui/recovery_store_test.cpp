@@ -6,6 +6,7 @@
 #include "recovery_store.h"
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/scene.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 
@@ -35,6 +36,13 @@ constexpr qint64 kRestartedPid = 0x7ffffff1;
 
 core::Document makeTestDocument(core::BaseShape shape = core::BaseShape::Sphere) {
   return core::makeDocument(core::makeBaseShape(shape, 32));
+}
+
+bool positionsBitExact(const core::Document& a, const core::Document& b);
+
+// A recovery of one object holds that object's document.
+bool positionsBitExact(const core::Scene& a, const core::Document& b) {
+  return a.objects.size() == 1 && positionsBitExact(a.objects.front().document, b);
 }
 
 bool positionsBitExact(const core::Document& a, const core::Document& b) {
@@ -94,6 +102,7 @@ private slots:
   void corruptRecoveryThrows();
   void failedSaveKeepsPreviousRecovery();
   void autosaveRunsOnAWorkerAndEndsWhole();
+  void sceneRecoveryKeepsEveryObject();
 
 private:
   QString folder() const { return dir_->path() + "/recovery"; }
@@ -132,8 +141,9 @@ void RecoveryStoreTest::crashLeavesRecovery() {
     RecoveryStore crashed(folder(), kCrashedPid);
     QVERIFY(!crashed.pending());
     QVERIFY(crashed.beginSession());
-    crashed.save(makeTestDocument(core::BaseShape::Cube), original); // an older autosave
-    crashed.save(doc, original);
+    crashed.save(core::sceneOf(makeTestDocument(core::BaseShape::Cube)),
+                 original); // an older autosave
+    crashed.save(core::sceneOf(doc), original);
     // A session's own autosave is not a recovery for itself.
     QVERIFY(!crashed.pending());
     // ... and the process dies here: no endSession().
@@ -149,7 +159,7 @@ void RecoveryStoreTest::crashLeavesRecovery() {
            qPrintable(recovery->savedAt.toString(Qt::ISODateWithMs)));
   core::Document loaded;
   try {
-    loaded = restarted.load(*recovery);
+    loaded = restarted.load(*recovery).objects.at(0).document;
   } catch (const core::Error& e) {
     QFAIL(e.what());
   }
@@ -163,7 +173,7 @@ void RecoveryStoreTest::crashLeavesRecovery() {
   QVERIFY(!RecoveryStore(folder(), kCrashedPid).pending());
 
   // A damaged lock hides nothing: the recovery is offered.
-  restarted.save(doc, QString());
+  restarted.save(core::sceneOf(doc), QString());
   writeGarbage(folder() + "/session.lock", "not a pid");
   const auto untitled = RecoveryStore(folder(), kCrashedPid).pending();
   QVERIFY(untitled);
@@ -179,7 +189,7 @@ void RecoveryStoreTest::crashLeavesRecovery() {
 void RecoveryStoreTest::cleanExitLeavesNothing() {
   RecoveryStore session(folder(), kCrashedPid);
   QVERIFY(session.beginSession());
-  session.save(makeTestDocument(), "/tmp/a.exr");
+  session.save(core::sceneOf(makeTestDocument()), "/tmp/a.exr");
   QVERIFY(QFile::exists(folder() + "/session.lock"));
   QVERIFY(QFile::exists(folder() + "/recovery.exr"));
   QVERIFY(QFile::exists(folder() + "/recovery.json"));
@@ -191,7 +201,7 @@ void RecoveryStoreTest::cleanExitLeavesNothing() {
 
   // discard() (the user saved the document) keeps the lock but nothing to recover.
   QVERIFY(session.beginSession());
-  session.save(makeTestDocument(), "/tmp/a.exr");
+  session.save(core::sceneOf(makeTestDocument()), "/tmp/a.exr");
   session.discard();
   QCOMPARE(listFolder(folder()), QStringList{"session.lock"});
   QVERIFY(!RecoveryStore(folder(), kRestartedPid).pending());
@@ -201,7 +211,7 @@ void RecoveryStoreTest::liveInstanceHidesItsRecovery() {
   // This process is the running instance; the store with a fake PID is a second instance.
   RecoveryStore running(folder());
   QVERIFY(running.beginSession());
-  running.save(makeTestDocument(), "/tmp/live.exr");
+  running.save(core::sceneOf(makeTestDocument()), "/tmp/live.exr");
 
   RecoveryStore second(folder(), kRestartedPid);
   QVERIFY(!second.pending());
@@ -228,7 +238,7 @@ void RecoveryStoreTest::reusedOwnPidCountsAsCrashed() {
   {
     RecoveryStore previous(folder());
     QVERIFY(previous.beginSession());
-    previous.save(doc, "/tmp/reused.exr");
+    previous.save(core::sceneOf(doc), "/tmp/reused.exr");
   }
   RecoveryStore now(folder());
   const auto recovery = now.pending();
@@ -243,7 +253,7 @@ void RecoveryStoreTest::corruptRecoveryThrows() {
   {
     RecoveryStore crashed(folder(), kCrashedPid);
     QVERIFY(crashed.beginSession());
-    crashed.save(makeTestDocument(), "/tmp/corrupt.exr");
+    crashed.save(core::sceneOf(makeTestDocument()), "/tmp/corrupt.exr");
   }
   const QString file = folder() + "/recovery.exr";
   QFile good(file);
@@ -279,18 +289,19 @@ void RecoveryStoreTest::failedSaveKeepsPreviousRecovery() {
   // A folder that cannot be created (its path is a file).
   const QString blocked = dir_->path() + "/blocked";
   writeGarbage(blocked, "a file where the folder should be");
-  EXPECT_ERROR(RecoveryStore(blocked, kCrashedPid).save(first, "/tmp/x.exr"), core::ErrorKind::Io);
+  EXPECT_ERROR(RecoveryStore(blocked, kCrashedPid).save(core::sceneOf(first), "/tmp/x.exr"),
+               core::ErrorKind::Io);
   QVERIFY(QFileInfo(blocked).isFile());
 
   // How big the second document's file is, to fail its write just short of the end.
   const QString measure = dir_->path() + "/measure";
-  RecoveryStore(measure, kCrashedPid).save(second, QString());
+  RecoveryStore(measure, kCrashedPid).save(core::sceneOf(second), QString());
   const qint64 secondSize = QFileInfo(measure + "/recovery.exr").size();
   QVERIFY(secondSize > 1000);
 
   RecoveryStore session(folder(), kCrashedPid);
   QVERIFY(session.beginSession());
-  session.save(first, "/tmp/first.exr");
+  session.save(core::sceneOf(first), "/tmp/first.exr");
   const QStringList before = listFolder(folder());
 
   auto checkFirstIsStillThere = [&](const char* when) {
@@ -307,7 +318,7 @@ void RecoveryStoreTest::failedSaveKeepsPreviousRecovery() {
   // A read-only folder: root ignores permissions, so only where they apply.
   if (::geteuid() != 0) {
     QVERIFY(QFile::setPermissions(folder(), QFile::ReadOwner | QFile::ExeOwner));
-    EXPECT_ERROR(session.save(second, "/tmp/second.exr"), core::ErrorKind::Io);
+    EXPECT_ERROR(session.save(core::sceneOf(second), "/tmp/second.exr"), core::ErrorKind::Io);
     QVERIFY(
         QFile::setPermissions(folder(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner));
     checkFirstIsStillThere("read-only folder");
@@ -322,8 +333,8 @@ void RecoveryStoreTest::failedSaveKeepsPreviousRecovery() {
     rlimit lowered = old;
     lowered.rlim_cur = limit;
     QCOMPARE(::setrlimit(RLIMIT_FSIZE, &lowered), 0);
-    const QString why =
-        expectError([&] { session.save(second, "/tmp/second.exr"); }, core::ErrorKind::Io);
+    const QString why = expectError([&] { session.save(core::sceneOf(second), "/tmp/second.exr"); },
+                                    core::ErrorKind::Io);
     ::setrlimit(RLIMIT_FSIZE, &old);
     QVERIFY2(why.isEmpty(), qPrintable(QString("limit %1: %2").arg(limit).arg(why)));
     checkFirstIsStillThere("file-size limit");
@@ -333,13 +344,13 @@ void RecoveryStoreTest::failedSaveKeepsPreviousRecovery() {
   // The recovery document's name taken by a folder: the rename fails, nothing is replaced.
   session.discard();
   QVERIFY(QDir().mkpath(folder() + "/recovery.exr"));
-  EXPECT_ERROR(session.save(second, "/tmp/second.exr"), core::ErrorKind::Io);
+  EXPECT_ERROR(session.save(core::sceneOf(second), "/tmp/second.exr"), core::ErrorKind::Io);
   QVERIFY(QFileInfo(folder() + "/recovery.exr").isDir());
   QCOMPARE(listFolder(folder()), (QStringList{"recovery.exr", "session.lock"}));
   QVERIFY(QDir(folder() + "/recovery.exr").removeRecursively());
 
   // And once the disk is fine again, saving works.
-  session.save(second, "/tmp/second.exr");
+  session.save(core::sceneOf(second), "/tmp/second.exr");
   const auto recovery = RecoveryStore(folder(), kRestartedPid).pending();
   QVERIFY(recovery);
   QCOMPARE(recovery->originalPath, QString("/tmp/second.exr"));
@@ -356,10 +367,10 @@ void RecoveryStoreTest::autosaveRunsOnAWorkerAndEndsWhole() {
   RecoveryStore store(folder(), kCrashedPid);
   QVERIFY(store.beginSession());
   // N = 2048 (about half a second to write here): long enough to see the loop turn meanwhile.
-  const auto blob = std::make_shared<const core::Document>(
-      core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, 2048)));
-  const auto sphere = std::make_shared<const core::Document>(
-      core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 1024)));
+  const auto blob = std::make_shared<const core::Scene>(
+      core::sceneOf(core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, 2048))));
+  const auto sphere = std::make_shared<const core::Scene>(
+      core::sceneOf(core::makeDocument(core::makeBaseShape(core::BaseShape::Sphere, 1024))));
   int finished = 0, ticksBeforeFinished = 0;
   QString error = "never finished";
   {
@@ -383,7 +394,7 @@ void RecoveryStoreTest::autosaveRunsOnAWorkerAndEndsWhole() {
       const auto pending = reader.pending();
       QVERIFY(pending.has_value());
       QCOMPARE(pending->originalPath, QString("/models/blob.exr"));
-      QVERIFY(positionsBitExact(reader.load(*pending), *blob));
+      QVERIFY(positionsBitExact(reader.load(*pending), blob->objects.front().document));
     }
     // The second save is in flight as the autosaver goes.
     QVERIFY(saver.start(sphere, "/models/sphere.exr"));
@@ -392,10 +403,45 @@ void RecoveryStoreTest::autosaveRunsOnAWorkerAndEndsWhole() {
   const auto pending = restarted.pending();
   QVERIFY(pending.has_value());
   QCOMPARE(pending->originalPath, QString("/models/sphere.exr"));
-  QVERIFY(positionsBitExact(restarted.load(*pending), *sphere));
+  QVERIFY(positionsBitExact(restarted.load(*pending), sphere->objects.front().document));
   for (const QString& name : listFolder(folder()))
     QVERIFY2(!name.contains("tmp"), qPrintable(name)); // no half-written file left
 }
 
 QTEST_GUILESS_MAIN(RecoveryStoreTest)
+void RecoveryStoreTest::sceneRecoveryKeepsEveryObject() {
+  // A modeller scene of three objects: the autosave holds each with its name, transform,
+  // visibility and lock, positions bit for bit.
+  core::Scene scene = core::sceneOf(makeTestDocument(core::BaseShape::Sphere), "Body");
+  scene.objects.push_back({"Hat",
+                           makeTestDocument(core::BaseShape::Cylinder),
+                           {{0.25f, 1.5f, -0.125f}, {10.0f, 0.0f, 30.0f}, {0.5f, 0.75f, 0.5f}},
+                           true,
+                           true});
+  scene.objects.push_back({"Nose",
+                           makeTestDocument(core::BaseShape::Cube),
+                           {{0.0f, 0.5f, 1.0f}, {}, {0.1f, 0.1f, 0.3f}},
+                           false,
+                           false});
+  {
+    RecoveryStore crashed(folder(), kCrashedPid);
+    QVERIFY(crashed.beginSession());
+    crashed.save(scene, "/models/snowman.exr");
+  }
+  RecoveryStore restarted(folder(), kRestartedPid);
+  const auto recovery = restarted.pending();
+  QVERIFY(recovery);
+  const core::Scene loaded = restarted.load(*recovery);
+  QCOMPARE(loaded.objects.size(), std::size_t(3));
+  for (std::size_t k = 0; k < 3; ++k) {
+    const core::SceneObject& a = loaded.objects[k];
+    const core::SceneObject& b = scene.objects[k];
+    QCOMPARE(a.name, b.name);
+    QVERIFY(a.transform == b.transform);
+    QCOMPARE(a.visible, b.visible);
+    QCOMPARE(a.locked, b.locked);
+    QVERIFY(positionsBitExact(a.document, b.document));
+  }
+}
+
 #include "recovery_store_test.moc"

@@ -74,11 +74,14 @@ bool CanvasBrushAdjust::begin(Mode mode) {
   camera->GetDirectionOfProjection(direction);
   camera->GetViewUp(up);
   camera->GetFocalPoint(focal);
-  const core::Vec3f right = core::normalize(
+  // In the edited object's space, as the pick and the radius are.
+  const ObjectPlacement placement = viewport_->placement();
+  const core::Vec3f right = core::normalize(placement.directionToLocal(
       core::cross(core::Vec3f{float(direction[0]), float(direction[1]), float(direction[2])},
-                  core::Vec3f{float(up[0]), float(up[1]), float(up[2])}));
+                  core::Vec3f{float(up[0]), float(up[1]), float(up[2])})));
   const core::Vec3f centre =
-      hit ? hit->position : core::Vec3f{float(focal[0]), float(focal[1]), float(focal[2])};
+      hit ? hit->position
+          : placement.toLocal(core::Vec3f{float(focal[0]), float(focal[1]), float(focal[2])});
   const float step = 0.1f * viewport_->modeller().modelDiagonal();
   const QPointF a = viewport_->project(centre), b = viewport_->project(centre + right * step);
   pixelsPerRadius_ = std::hypot(b.x() - a.x(), b.y() - a.y()) / 0.1;

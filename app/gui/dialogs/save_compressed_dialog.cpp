@@ -2,7 +2,6 @@
 
 #include "octaclay/core/codec/codec.h"
 #include "octaclay/core/document/document_io.h"
-#include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/measure/surface_distance.h"
@@ -81,32 +80,7 @@ core::Document readModelFile(const QString& path) {
   const std::filesystem::path file(path.toStdString());
   if (QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0)
     return core::readCompressedDocument(file);
-  // The modeller edits one object at the identity transform so far (issue 33): a scene it would
-  // save back as one object, dropping the others or the placement, is not opened.
-  const std::vector<core::SceneObjectHeader> objects = core::readSceneHeaders(file);
-  if (objects.size() > 1 ||
-      (objects.size() == 1 && objects[0].transform != core::ObjectTransform{})) {
-    std::string names;
-    for (const core::SceneObjectHeader& o : objects)
-      names += (names.empty() ? "" : ", ") + o.name;
-    throw core::Error(core::ErrorKind::InvalidInput,
-                      objects.size() > 1
-                          ? "this document holds " + std::to_string(objects.size()) + " objects (" +
-                                names +
-                                "): the modeller edits one-object documents only so far; "
-                                "octaclay-cli objects, stroke --object and export work on it"
-                          : "this object (" + names +
-                                ") is placed with a transform: the modeller edits objects at "
-                                "the origin only so far; octaclay-cli transform can reset it");
-  }
-  core::Document document = core::readDocument(file);
-  // The modeller's stretch, saliency and keep detail know the ball's folds only (issue 33).
-  if (document.topology != core::Topology::Octahedral)
-    throw core::Error(core::ErrorKind::InvalidInput,
-                      "this model is a " + std::string(core::topologyName(document.topology)) +
-                          ": the modeller sculpts octahedral (ball) models only so far; "
-                          "octaclay-cli stroke, info and export work on it");
-  return document;
+  return core::readDocument(file);
 }
 
 SaveCompressedDialog::SaveCompressedDialog(std::shared_ptr<const core::Document> doc,

@@ -33,7 +33,6 @@ CompressionPreview previewCompression(const core::Document& doc,
                                       const core::CompressOptions& options);
 
 /// A model file by extension: .ocz through the compressed container, else an Octaclay EXR.
-/// Throws core::Error for a torus or plane model, which the modeller cannot edit yet.
 core::Document readModelFile(const QString& path);
 
 /// File › Save Compressed…: codec, a slider from "Smaller file" to "More exact" over the codec's

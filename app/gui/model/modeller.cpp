@@ -12,6 +12,8 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
+#include <utility>
+
 namespace octaclay::app {
 
 Modeller::Modeller(QObject* parent) : QObject(parent), strokes_(*this) {
@@ -65,17 +67,76 @@ void Modeller::glStopping() {
 }
 
 bool Modeller::setDocument(core::Document document, bool keepView) {
+  return setScene(core::sceneOf(std::move(document)), 0, keepView);
+}
+
+bool Modeller::setScene(core::Scene scene, int active, bool keepView) {
+  if (scene.objects.empty() || active < 0 || active >= static_cast<int>(scene.objects.size())) {
+    fail(QStringLiteral("A scene needs an object to edit"));
+    return false;
+  }
   strokes_.settle();
+  core::Document document = std::move(scene.objects[std::size_t(active)].document);
+  scene.objects[std::size_t(active)].document = {};
   if (!host_ || !host_->context()) {
     pending_ = std::move(document);
     session_.history().clear();
+    scene_ = std::move(scene);
+    active_ = active;
     emit historyChanged();
+    emit sceneChanged();
     return true;
   }
   CurrentContext current(*host_);
+  // The scene is taken before the upload, whose documentReplaced lets the viewport read it.
+  core::Scene before = std::exchange(scene_, std::move(scene));
+  const int activeBefore = std::exchange(active_, active);
   const bool ok = uploadDocument(std::move(document), keepView);
+  if (!ok && session_.hasDocument()) { // the session kept the previous document
+    scene_ = std::move(before);
+    active_ = activeBefore;
+  }
   emit historyChanged();
+  if (ok) emit sceneChanged();
   return ok;
+}
+
+core::Scene Modeller::scene() const {
+  core::Scene whole;
+  if (!hasDocument()) return whole;
+  whole.objects = scene_.objects; // the active object's slot is empty: cheap
+  whole.objects[std::size_t(active_)].document = document();
+  return whole;
+}
+
+bool Modeller::setActiveObject(int k) {
+  if (k < 0 || k >= objectCount() || !hasDocument()) return false;
+  if (k == active_) return true;
+  strokes_.settle();
+  if (session_.stroking()) return false;
+  emit activeObjectAboutToChange();
+  const int before = active_;
+  core::SceneObject& next = scene_.objects[std::size_t(k)];
+  // The edited document goes back first, so that documentReplaced's followers see the scene
+  // as it now is.
+  scene_.objects[std::size_t(before)].document = document();
+  active_ = k;
+  if (!host_ || !host_->context() || !session_.hasDocument()) {
+    pending_ = std::exchange(next.document, {});
+    session_.history().clear();
+  } else {
+    CurrentContext current(*host_);
+    // A copy goes up: if the upload throws, the object keeps its document.
+    if (!uploadDocument(core::Document(next.document), true)) {
+      active_ = before;
+      scene_.objects[std::size_t(before)].document = {};
+      return false;
+    }
+    next.document = {};
+  }
+  emit historyChanged();
+  emit activeObjectChanged(k);
+  return true;
 }
 
 bool Modeller::replaceDocument(core::Document after, const QString& label) {

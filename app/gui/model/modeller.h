@@ -8,6 +8,7 @@
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/edit_history.h"
+#include "octaclay/core/document/scene.h"
 #include "octaclay/gpu/gpu_document.h"
 #include "octaclay/gpu/material_catalog.h"
 
@@ -26,7 +27,8 @@ class GlContext;
 
 namespace octaclay::app {
 
-/// The modeller without its widgets: the edited document (on the GPU, in a SculptSession), the
+/// The modeller without its widgets: the scene of objects (core::Scene) and its active object,
+/// whose document is the edited one (on the GPU, in a SculptSession); the
 /// brushes and materials, the brush state, the strokes (StrokeDriver), the history with undo and
 /// redo, and the followers of the document's one change feed (gpu::DocumentChange: the saliency
 /// here, the renderer's normals and stretch map through followChanges, the live LOD through
@@ -46,14 +48,35 @@ public:
   bool glReady() const { return library_ != nullptr; }
   GlHost* glHost() const { return host_; }
 
-  /// Replaces the document and clears the history (uploaded now if GL is ready, else at GL start).
-  /// Returns false with error() set if the upload failed; the previous document then stays.
-  /// documentReplaced(keepView) tells the viewport.
+  /// Replaces the scene by one object ("Model", identity transform) holding document and clears
+  /// the history (uploaded now if GL is ready, else at GL start). Returns false with error() set
+  /// if the upload failed; the previous scene then stays. documentReplaced(keepView) tells the
+  /// viewport.
   bool setDocument(core::Document document, bool keepView = false);
+  /// Replaces the scene (at least one object) and makes object `active` the edited one, the
+  /// history cleared; as setDocument otherwise. sceneChanged() follows a success.
+  bool setScene(core::Scene scene, int active = 0, bool keepView = false);
   bool hasDocument() const;
-  /// The document as edited so far (the CPU mirror): while a stroke's relaxation is being solved,
-  /// the surface as shown, without it. Only valid if hasDocument().
+  /// The active object's document as edited so far (the CPU mirror): while a stroke's relaxation
+  /// is being solved, the surface as shown, without it. Only valid if hasDocument().
   const core::Document& document() const;
+
+  /// The whole scene, the active object holding its current document() (a copy of every
+  /// object: for saving). Empty without a document.
+  core::Scene scene() const;
+  /// How many objects the scene holds (0 without a document) and which one is edited.
+  int objectCount() const { return static_cast<int>(scene_.objects.size()); }
+  int activeObject() const { return active_; }
+  /// Object k's name, transform, visibility and lock, and for an inactive object its document.
+  /// The active object's `document` is empty here: its current one is document().
+  const core::SceneObject& objectAt(int k) const { return scene_.objects.at(std::size_t(k)); }
+  /// Makes object k the edited one: the active object's current document goes back into the
+  /// scene and object k's is uploaded, the camera kept. The undo history is one document's
+  /// (SculptSession's), so switching clears it: steps of the object left cannot be undone any
+  /// more (activeObjectChanged tells the window, which says so in the status bar). False, with
+  /// nothing changed, for an index out of range, while a stroke is made or when the upload
+  /// fails (error() set); true without work for the active object.
+  bool setActiveObject(int k);
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
   /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
@@ -122,6 +145,13 @@ signals:
   void errorOccurred(const QString& message);
   /// A new document was uploaded; keepView: the camera should stay.
   void documentReplaced(bool keepView);
+  /// The scene was replaced (setDocument, setScene): its objects, their transforms, which is
+  /// active.
+  void sceneChanged();
+  /// setActiveObject is about to switch (the history, still the old object's, is cleared next).
+  void activeObjectAboutToChange();
+  /// setActiveObject made object k the edited one (after documentReplaced(true)).
+  void activeObjectChanged(int k);
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document, the saliency in).
   void surfaceChanged();
   /// The history changed: a step recorded, undone or redone, steps dropped, or all cleared.
@@ -147,6 +177,9 @@ private:
   std::unique_ptr<gpu::BrushLibrary> library_;
   gpu::MaterialCatalog materials_;
   std::optional<core::Document> pending_; // set before GL started (or when it failed)
+  // Every object; the active one's document lives in session_ (or pending_), its slot here empty.
+  core::Scene scene_;
+  int active_ = 0;
   std::vector<std::function<void(const gpu::DocumentChange&)>> followers_;
   bool uploading_ = false;
   QString error_;

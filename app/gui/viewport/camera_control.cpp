@@ -30,6 +30,20 @@ std::array<float, 16> objectToClip(vtkCamera& camera, double aspect) {
   return out;
 }
 
+std::array<float, 16> objectToClip(vtkCamera& camera, double aspect,
+                                   const std::array<double, 16>& objectToWorld) {
+  vtkMatrix4x4* m = camera.GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+  std::array<float, 16> out{};
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col) {
+      double sum = 0; // in double, rounded once
+      for (int k = 0; k < 4; ++k)
+        sum += m->GetElement(row, k) * objectToWorld[static_cast<std::size_t>(k * 4 + col)];
+      out[static_cast<std::size_t>(col * 4 + row)] = static_cast<float>(sum);
+    }
+  return out;
+}
+
 QPointF projectToView(vtkCamera& camera, const QRectF& view, core::Vec3f p) {
   const double aspect = view.height() > 0 ? view.width() / view.height() : 1.0;
   vtkMatrix4x4* m = camera.GetCompositeProjectionTransformMatrix(aspect, -1, 1);

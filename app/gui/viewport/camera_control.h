@@ -17,9 +17,13 @@ namespace octaclay::app {
 core::Vec3f toVec(const double* d);
 /// The camera as core's picking sees it.
 core::Camera pickCamera(vtkCamera& camera);
-/// The column-major object-to-clip matrix of camera for a view of this aspect (width / height).
+/// The column-major object-to-clip matrix of camera for a view of this aspect (width / height),
+/// for an object placed by objectToWorld (row-major 4 × 4, ObjectPlacement's; the identity
+/// when absent).
 std::array<float, 16> objectToClip(vtkCamera& camera, double aspect);
-/// Where object-space point p appears in view (logical pixels, y down).
+std::array<float, 16> objectToClip(vtkCamera& camera, double aspect,
+                                   const std::array<double, 16>& objectToWorld);
+/// Where world-space point p appears in view (logical pixels, y down).
 QPointF projectToView(vtkCamera& camera, const QRectF& view, core::Vec3f p);
 
 /// The ray through widget point p (logical pixels, y down) of a view this size, for a

@@ -17,6 +17,7 @@ QList<Gesture> viewportGestures() {
       {tr("Shift + left-drag"), tr("Smooth")},
       {tr("Right-drag or middle-drag"), tr("Orbit the view")},
       {tr("Left-drag off the model (or Alt + left-drag)"), tr("Orbit the view")},
+      {tr("Alt + click on another object"), tr("Edit that object (its undo history starts anew)")},
       {tr("Shift + middle-drag or Ctrl + right-drag"), tr("Pan the view")},
       {tr("Shift + left-drag off the model"), tr("Pan the view")},
       {tr("Mouse wheel"), tr("Zoom")},

@@ -54,18 +54,26 @@ float brushPixelRadius(const BrushSettings& settings, const ViewScaleCamera& cam
   return perPixel > 0 ? settings.radius * diagonal / perPixel : 0;
 }
 
+// p is in the active object's space, the camera in the world's: the view's scale is taken at p's
+// world position, and world units become object units through the object's mean scale (exact
+// for a uniform scale).
 float viewBrushObjectRadius(const ViewportWidget& view, core::Vec3f p) {
   Modeller& modeller = view.modeller(); // brushState() has no const overload
+  const ObjectPlacement placement = view.placement();
+  const auto scale = static_cast<float>(placement.meanScale());
   return brushObjectRadius(modeller.brushState().settings(),
-                           viewScaleCamera(*view.renderer()->GetActiveCamera(), view.height()), p,
-                           modeller.modelDiagonal());
+                           viewScaleCamera(*view.renderer()->GetActiveCamera(), view.height()),
+                           placement.toWorld(p), modeller.modelDiagonal() * scale) /
+         scale;
 }
 
 float viewBrushPixelRadius(const ViewportWidget& view, core::Vec3f p) {
   Modeller& modeller = view.modeller(); // brushState() has no const overload
+  const ObjectPlacement placement = view.placement();
   return brushPixelRadius(modeller.brushState().settings(),
-                          viewScaleCamera(*view.renderer()->GetActiveCamera(), view.height()), p,
-                          modeller.modelDiagonal());
+                          viewScaleCamera(*view.renderer()->GetActiveCamera(), view.height()),
+                          placement.toWorld(p),
+                          modeller.modelDiagonal() * static_cast<float>(placement.meanScale()));
 }
 
 } // namespace octaclay::app

@@ -38,7 +38,8 @@ float brushPixelRadius(const BrushSettings& settings, const ViewScaleCamera& cam
                        float diagonal);
 
 /// brushObjectRadius and brushPixelRadius for view's brush settings (its modeller's BrushState),
-/// camera and model at p: what the ring, the press's pick and a stroke's start use.
+/// camera and model at p (in the active object's space; the object radius in its units): what
+/// the ring, the press's pick and a stroke's start use.
 float viewBrushObjectRadius(const ViewportWidget& view, core::Vec3f p);
 float viewBrushPixelRadius(const ViewportWidget& view, core::Vec3f p);
 

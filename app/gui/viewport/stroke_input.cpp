@@ -30,8 +30,9 @@ std::optional<core::PickHit> StrokeInput::pressPick(QPointF p) const {
   if (!modeller.session().hasDocument()) return std::nullopt;
   // The ring's radius on screen at the depth of the camera's focal point (the model, as the
   // views frame it).
-  const double ring =
-      viewBrushPixelRadius(view_, toVec(view_.renderer()->GetActiveCamera()->GetFocalPoint()));
+  const double ring = viewBrushPixelRadius(
+      view_,
+      view_.placement().toLocal(toVec(view_.renderer()->GetActiveCamera()->GetFocalPoint())));
   // Rings of a third, two thirds and the whole radius, nearest first: the nearest hit wins.
   for (int k = 1; k <= 3; ++k) {
     const double r = ring * k / 3.0;
@@ -54,7 +55,7 @@ bool StrokeInput::begin(QPointF p, const core::PickHit& hit, Qt::KeyboardModifie
   start.settings = brush.settings();
   start.paintTarget = brush.paintTarget();
   start.sign = (modifiers & Qt::ControlModifier) ? -1.0f : 1.0f;
-  start.eye = toVec(view_.renderer()->GetActiveCamera()->GetPosition());
+  start.eye = view_.placement().toLocal(toVec(view_.renderer()->GetActiveCamera()->GetPosition()));
   // The view radius becomes object units at the pressed point's depth, fixed for the stroke.
   if (start.settings.radiusUnit == RadiusUnit::View)
     start.objectRadius = viewBrushObjectRadius(view_, hit.position);
@@ -79,9 +80,9 @@ void StrokeInput::queuePoint(QPointF p) {
     // A dragging brush follows the pointer's ray, on the model or off it.
     const QRectF view = view_.modelRect();
     if (p.x() >= view.width()) p.rx() -= view.width();
-    const core::Ray ray = core::cameraRay(
+    const core::Ray ray = view_.placement().rayToLocal(core::cameraRay(
         pickCamera(*view_.renderer()->GetActiveCamera()), static_cast<int>(view.width()),
-        static_cast<int>(view.height()), static_cast<float>(p.x()), static_cast<float>(p.y()));
+        static_cast<int>(view.height()), static_cast<float>(p.x()), static_cast<float>(p.y())));
     strokes.queue(StrokeMove::alongRay(ray.origin, ray.direction, pressure()));
     return;
   }

@@ -124,6 +124,8 @@ void ViewportFrames::documentReplaced() {
   model_->refreshAllNormals(document);
   model_->setLodMesh({}); // the previous document's LOD is not this one's
   pendingLod_.reset();
+  // A new scene or another object made active: the others drawn as they now are.
+  others_.rebuild(*renderer_, modeller_);
   updateBounds();
 }
 
@@ -159,11 +161,22 @@ long long ViewportFrames::displayedTriangles() const {
 
 const std::array<double, 6>& ViewportFrames::updateBounds() {
   if (!modeller_.session().hasDocument()) return prop_->bounds;
-  core::BoundingBox box;
+  // The scene's world bounds: the edited object's tile bounds under its transform, and every
+  // other visible object's samples under its own.
+  core::BoundingBox local;
   const core::TileBounds& b = modeller_.session().gpuDocument().bounds();
   for (int t = 0; t < b.tilesPerSide() * b.tilesPerSide(); ++t) {
-    box.extend(b.box(t).min);
-    box.extend(b.box(t).max);
+    local.extend(b.box(t).min);
+    local.extend(b.box(t).max);
+  }
+  core::BoundingBox box = widget_.placement().boxToWorld(local);
+  for (int k = 0; k < modeller_.objectCount(); ++k) {
+    const core::SceneObject& object = modeller_.objectAt(k);
+    if (k == modeller_.activeObject() || !object.visible) continue;
+    const core::BoundingBox other = core::worldBounds(object);
+    if (other.empty()) continue;
+    box.extend(other.min);
+    box.extend(other.max);
   }
   prop_->bounds = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
   return prop_->bounds;
@@ -186,9 +199,12 @@ vtkGenericOpenGLRenderWindow* ViewportFrames::renderWindow() const {
 void ViewportFrames::drawModel(vtkRenderer* r) {
   if (!modeller_.session().hasDocument() || !model_) return;
   vtkCamera* camera = r->GetActiveCamera();
+  // The renderer works in the object's space: its transform folded into the matrix, the eye
+  // (and applyLooks' view axes) brought into that space.
+  const ObjectPlacement placement = widget_.placement();
   gpu::ModelView view;
-  view.objectToClip = objectToClip(*camera, r->GetTiledAspectRatio());
-  view.eye = toVec(camera->GetPosition());
+  view.objectToClip = objectToClip(*camera, r->GetTiledAspectRatio(), placement.objectToWorld());
+  view.eye = placement.toLocal(toVec(camera->GetPosition()));
   view.showDiffuse = showDiffuse_;
   view.showMask = showMask_;
   view.preview = preview_;
@@ -322,12 +338,15 @@ void ViewportFrames::applyLooks(gpu::ModelView& view, vtkRenderer* r) {
     }
   }
   view.matcap = model_->hasMatcap();
-  // The view matrix's first two rows: the camera's right and up axes in object space.
+  // The view matrix's first two rows: the camera's right and up axes in world space, carried
+  // into object space (exact for a rotation and a uniform scale; under a non-uniform scale the
+  // matcap is looked up as if the normal were not renormalized).
   vtkMatrix4x4* m = r->GetActiveCamera()->GetViewTransformMatrix();
-  view.viewRight = {float(m->GetElement(0, 0)), float(m->GetElement(0, 1)),
-                    float(m->GetElement(0, 2))};
-  view.viewUp = {float(m->GetElement(1, 0)), float(m->GetElement(1, 1)),
-                 float(m->GetElement(1, 2))};
+  const ObjectPlacement placement = widget_.placement();
+  view.viewRight = core::normalize(placement.directionToLocal(
+      {float(m->GetElement(0, 0)), float(m->GetElement(0, 1)), float(m->GetElement(0, 2))}));
+  view.viewUp = core::normalize(placement.directionToLocal(
+      {float(m->GetElement(1, 0)), float(m->GetElement(1, 1)), float(m->GetElement(1, 2))}));
 }
 
 int ViewportFrames::maxImageSide() {

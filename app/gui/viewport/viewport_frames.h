@@ -1,6 +1,7 @@
 #pragma once
 
 #include "lod_display.h"
+#include "scene_actors.h"
 #include "view_looks.h"
 
 #include "octaclay/core/geometry/vec.h"
@@ -87,7 +88,8 @@ public:
   vtkRenderer* renderer() const;
   vtkRenderer* lodRenderer() const;
   vtkGenericOpenGLRenderWindow* renderWindow() const;
-  /// The model's bounds from the document's tile boxes (xmin, xmax, ymin, …).
+  /// The scene's world bounds (xmin, xmax, ymin, …): the edited object's tile boxes under its
+  /// transform and every other visible object.
   const std::array<double, 6>& updateBounds();
   const std::array<double, 6>& bounds() const;
   /// The renderer (null before GL started): its normal and stretch maps.
@@ -111,6 +113,7 @@ private:
   vtkNew<vtkRenderer> lodRenderer_; // the right half, side by side
   vtkNew<ModelProp> lodProp_;
   std::unique_ptr<gpu::ModelRenderer> model_;
+  SceneActors others_; // the scene's other visible objects, in renderer_
   std::shared_ptr<const core::LodMesh> pendingLod_; // uploaded at the next frame
   std::optional<BrushRing> ring_;                   // during paint()
   LodDisplay lodDisplay_ = LodDisplay::FullResolution;

@@ -3,6 +3,7 @@
 #include "camera_control.h"
 #include "current_context.h"
 #include "modeller.h"
+#include "object_pick.h"
 #include "screen_radius.h"
 #include "viewport_overlay.h"
 #include "viewport_surface.h"
@@ -241,14 +242,20 @@ std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   // left does.
   const QRectF view = modelRect();
   if (p.x() >= view.width()) p.rx() -= view.width();
-  const core::Ray ray = viewRay(*renderer()->GetActiveCamera(), view.size(), p);
+  const core::Ray ray =
+      placement().rayToLocal(viewRay(*renderer()->GetActiveCamera(), view.size(), p));
   // The modeller's document: mid-stroke on a GPU the positions' read-backs wait, and it syncs
   // them with the context current.
   return core::pickRay(modeller_.document().positions, session.gpuDocument().bounds(), ray);
 }
 
 QPointF ViewportWidget::project(core::Vec3f p) const {
-  return projectToView(*renderer()->GetActiveCamera(), modelRect(), p);
+  return projectToView(*renderer()->GetActiveCamera(), modelRect(), placement().toWorld(p));
+}
+
+ObjectPlacement ViewportWidget::placement() const {
+  if (modeller_.objectCount() == 0) return {};
+  return ObjectPlacement(modeller_.objectAt(modeller_.activeObject()).transform);
 }
 
 void ViewportWidget::beginStrokeAt(QPointF p, Qt::KeyboardModifiers modifiers) {
@@ -285,8 +292,13 @@ void ViewportWidget::mousePressEvent(QMouseEvent* event) {
   // release of the button that began it always ends it.
   if (drag_ != Drag::None) return;
   dragButton_ = event->button();
-  lastPos_ = event->position();
+  lastPos_ = pressPos_ = event->position();
   const Qt::KeyboardModifiers mods = event->modifiers();
+  if (event->button() == Qt::LeftButton && (mods & Qt::AltModifier) &&
+      !(mods & Qt::ShiftModifier) && modeller_.objectCount() > 1) {
+    drag_ = Drag::ObjectClick;
+    return;
+  }
   // One pick a press: on the surface or within the brush ring of it, a left press sculpts.
   std::optional<core::PickHit> hit;
   if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) hit = pressPick(lastPos_);
@@ -308,6 +320,7 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
   const QPointF delta = p - lastPos_;
   lastPos_ = p;
   vtkCamera* camera = renderer()->GetActiveCamera();
+  if (drag_ == Drag::ObjectClick && (p - pressPos_).manhattanLength() > 3) drag_ = Drag::Orbit;
   if (drag_ == Drag::Sculpt) {
     strokes_.moveTo(p);
   } else if (drag_ == Drag::Orbit) {
@@ -326,8 +339,20 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
   if (drag_ != Drag::None && event->button() != dragButton_) return; // another button's
   // The window goes on answering while keep detail relaxes the stroke beside it.
   if (drag_ == Drag::Sculpt) strokes_.end(StrokeDriver::Relax::Background);
+  const bool objectClick = drag_ == Drag::ObjectClick;
   drag_ = Drag::None;
+  if (objectClick) selectObjectAt(event->position());
   strokes_.setHover(pickAt(event->position()));
+}
+
+void ViewportWidget::selectObjectAt(QPointF p) {
+  if (!modeller_.session().hasDocument() || width() <= 0 || height() <= 0) return;
+  const QRectF view = modelRect();
+  if (p.x() >= view.width()) p.rx() -= view.width();
+  const std::optional<int> k =
+      pickObject(modeller_, viewRay(*renderer()->GetActiveCamera(), view.size(), p));
+  if (k && *k != modeller_.activeObject()) modeller_.setActiveObject(*k);
+  update();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
@@ -336,7 +361,7 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
   vtkCamera* camera = renderer()->GetActiveCamera();
   core::Vec3f anchor;
   if (const auto hit = pickAt(event->position())) {
-    anchor = hit->position;
+    anchor = placement().toWorld(hit->position);
   } else {
     const QRectF view = modelRect();
     QPointF p = event->position();

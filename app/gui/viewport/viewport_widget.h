@@ -4,6 +4,7 @@
 #include "camera_views.h"
 #include "gl_host.h"
 #include "lod_display.h"
+#include "object_placement.h"
 #include "stroke_input.h"
 #include "view_looks.h"
 #include "viewport_frames.h"
@@ -107,11 +108,15 @@ public:
   void setOrbitMode(OrbitMode mode) { orbitMode_ = mode; }
   OrbitMode orbitMode() const { return orbitMode_; }
 
-  /// The surface point under widget position p (logical pixels), if any.
+  /// The surface point under widget position p (logical pixels), if any, in the active
+  /// object's space (the pointer's ray carried there by placement()).
   std::optional<core::PickHit> pickAt(QPointF p) const;
-  /// Where object-space point p appears in the widget (logical pixels; the left half side by
-  /// side).
+  /// Where point p of the active object's space appears in the widget (logical pixels; the
+  /// left half side by side).
   QPointF project(core::Vec3f p) const;
+  /// Where the active object sits (its transform): the camera is in world space, the document,
+  /// its picks and the brush in the object's.
+  ObjectPlacement placement() const;
   /// The part of the widget one model is drawn in (logical pixels): the left half side by side.
   QRectF modelRect() const;
 
@@ -154,11 +159,16 @@ protected:
   void resizeEvent(QResizeEvent* event) override;
 
 private:
-  enum class Drag { None, Sculpt, Orbit, Pan };
+  // ObjectClick: an Alt+left press that selects the object under it at its release, or orbits
+  // (as an Alt+left drag always did) once the pointer moves more than a few pixels.
+  enum class Drag { None, Sculpt, Orbit, Pan, ObjectClick };
 
   void documentReplaced(bool keepView);
   /// The brush ring at the hovered point, if one is shown.
   std::optional<BrushRing> ring() const;
+  /// Alt+click: makes the visible object under widget position p the edited one
+  /// (Modeller::setActiveObject); nothing when none is there.
+  void selectObjectAt(QPointF p);
 
   Modeller& modeller_;
   ViewportSurface* surface_ = nullptr; // owned by its container, a child of this widget
@@ -169,6 +179,7 @@ private:
   OrbitMode orbitMode_ = OrbitMode::Turntable;
   Qt::MouseButton dragButton_ = Qt::NoButton; ///< the button whose release ends drag_
   QPointF lastPos_;
+  QPointF pressPos_; // where the current drag's button went down
   bool glStarted_ = false, glOk_ = false;
   QString glError_;
   QElapsedTimer clock_;

@@ -19,7 +19,7 @@ Autosaver::~Autosaver() {
   watcher_.waitForFinished();
 }
 
-bool Autosaver::start(std::shared_ptr<const core::Document> snapshot, const QString& originalPath) {
+bool Autosaver::start(std::shared_ptr<const core::Scene> snapshot, const QString& originalPath) {
   if (running_ || !snapshot) return false;
   running_ = true;
   RecoveryStore* store = &store_;

@@ -9,7 +9,9 @@
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/export/scene_export.h"
 #include "octaclay/core/import/import.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/spherical_parameterization.h"
@@ -33,6 +35,22 @@ std::filesystem::path toPath(const QString& path) {
   return std::filesystem::path(path.toStdString());
 }
 
+// Every object of an .exr; an .ocz holds one document. The modeller's stretch, saliency and
+// keep detail know the ball's folds only so far: a torus or plane object is refused by name.
+core::Scene readSceneFile(const QString& path) {
+  core::Scene scene = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0
+                          ? core::sceneOf(readModelFile(path))
+                          : core::readScene(toPath(path));
+  for (const core::SceneObject& object : scene.objects)
+    if (object.document.topology != core::Topology::Octahedral)
+      throw core::Error(core::ErrorKind::InvalidInput,
+                        "object " + object.name + " is a " +
+                            std::string(core::topologyName(object.document.topology)) +
+                            ": the modeller sculpts octahedral (ball) objects only so far; "
+                            "octaclay-cli stroke, info and export work on it");
+  return scene;
+}
+
 } // namespace
 
 DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qint64 sessionPid,
@@ -46,6 +64,28 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
     autosaved_ = autosaving_;
   });
   connect(parts_.modeller, &Modeller::historyStepped, this, &DocumentActions::stepped);
+  connect(parts_.modeller, &Modeller::activeObjectAboutToChange, this, [this] {
+    modifiedBeforeSwitch_ = isModified();
+    emit aboutToAdopt(); // another document is about to be shown
+  });
+  connect(parts_.modeller, &Modeller::activeObjectChanged, this,
+          &DocumentActions::activeObjectChanged);
+}
+
+void DocumentActions::activeObjectChanged(int k) {
+  // The history is the new object's, empty: the scene is as modified as it was.
+  parts_.history->setClean();
+  replacedStates_.clear();
+  forceModified_ = modifiedBeforeSwitch_;
+  autosaved_.reset();
+  autosaving_.reset();
+  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
+  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  emit titleChanged();
+  emit adopted();
+  parts_.statusBar->showMessage(tr("Editing %1; undo starts anew from here")
+                                    .arg(QString::fromStdString(parts_.modeller->objectAt(k).name)),
+                                8000);
 }
 
 bool DocumentActions::isModified() const {
@@ -112,7 +152,7 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   if (parts_.modeller->hasDocument()) {
     if (!replaceWith(std::move(*made), tr("Import %1").arg(name), imported)) return false;
   } else {
-    if (!adoptDocument(std::move(*made), {})) return false;
+    if (!adoptScene(core::sceneOf(std::move(*made)), {})) return false;
     importedFrom_ = imported.importedFrom;
     forceModified_ = true;
   }
@@ -124,9 +164,14 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   return true;
 }
 
-bool DocumentActions::adoptDocument(core::Document document, const QString& path) {
+bool DocumentActions::adoptScene(core::Scene scene, const QString& path) {
   emit aboutToAdopt(); // before the new document's surfaceChanged
-  if (!parts_.modeller->setDocument(std::move(document))) {
+  // The first visible object is the one edited (a hidden one would still be drawn as edited).
+  const auto visible = std::find_if(scene.objects.begin(), scene.objects.end(),
+                                    [](const core::SceneObject& o) { return o.visible; });
+  const int active =
+      visible == scene.objects.end() ? 0 : static_cast<int>(visible - scene.objects.begin());
+  if (!parts_.modeller->setScene(std::move(scene), active)) {
     showError(parts_.viewport->error());
     return false;
   }
@@ -202,7 +247,7 @@ bool DocumentActions::newDocument(core::BaseShape shape, int n) {
   }
   // A new model starts from the default display detail, whatever the last one was shown at.
   parts_.lodPanel->forgetDisplayChoice();
-  adoptDocument(std::move(*made), {});
+  adoptScene(core::sceneOf(std::move(*made)), {});
   lastError_.clear();
   return true;
 }
@@ -214,12 +259,12 @@ bool DocumentActions::openDocument(const QString& path) {
                   .arg(QFileInfo(path).fileName()));
     return false;
   }
-  auto read = std::make_shared<core::Document>();
+  auto read = std::make_shared<core::Scene>();
   auto facing = std::make_shared<core::Vec3f>();
   const QString error =
       runner_.run(tr("Opening %1…").arg(QFileInfo(path).fileName()), [read, facing, path] {
-        *read = readModelFile(path);
-        *facing = core::guessFacing(read->positions);
+        *read = readSceneFile(path);
+        *facing = core::guessFacing(read->objects.front().document.positions);
       });
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not open"), path, error) +
@@ -228,7 +273,7 @@ bool DocumentActions::openDocument(const QString& path) {
   }
   // A compressed model opens untitled, so Save asks for an .exr instead of overwriting it.
   const bool compressed = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0;
-  if (adoptDocument(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath()))
+  if (adoptScene(std::move(*read), compressed ? QString() : QFileInfo(path).absoluteFilePath()))
     parts_.viewport->frameFrom(*facing);
   addRecentFile(QFileInfo(path).absoluteFilePath());
   lastError_.clear();
@@ -239,10 +284,10 @@ bool DocumentActions::saveDocument(const QString& path) {
   if (!parts_.modeller->hasDocument()) return false;
   parts_.viewport->endStroke();
   // A snapshot: the save runs while the user may keep sculpting.
-  auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
+  auto snapshot = std::make_shared<core::Scene>(parts_.modeller->scene());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()),
-                  [snapshot, path] { core::writeDocument(*snapshot, toPath(path)); });
+                  [snapshot, path] { core::writeScene(*snapshot, toPath(path)); });
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not save"), path, error));
     return false;
@@ -260,6 +305,13 @@ bool DocumentActions::saveDocument(const QString& path) {
 
 bool DocumentActions::saveCompressed(const QString& path, const core::CompressOptions& options) {
   if (!parts_.modeller->hasDocument()) return false;
+  if (parts_.modeller->objectCount() > 1) {
+    showError(tr("%1 was not written: a compressed model holds one object and this scene has "
+                 "%2. Save it as .exr to keep every object.")
+                  .arg(QFileInfo(path).fileName())
+                  .arg(parts_.modeller->objectCount()));
+    return false;
+  }
   parts_.viewport->endStroke();
   auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
   const QString error =
@@ -278,6 +330,7 @@ bool DocumentActions::saveCompressed(const QString& path, const core::CompressOp
 bool DocumentActions::exportMesh(const QString& path, int divisor) {
   if (!parts_.modeller->hasDocument()) return false;
   parts_.viewport->endStroke();
+  if (parts_.modeller->objectCount() > 1) return exportScene(path);
   // .obj and .glb carry the painted layers (maps beside the OBJ, textures inside the GLB).
   const std::function<void()> work = meshExportWork(parts_.modeller->document(), path, divisor);
   if (!work) {
@@ -291,6 +344,28 @@ bool DocumentActions::exportMesh(const QString& path, int divisor) {
   }
   lastError_.clear();
   parts_.statusBar->showMessage(tr("Exported %1").arg(path), 5000);
+  return true;
+}
+
+bool DocumentActions::exportScene(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (!QStringList{"obj", "glb", "ply", "stl", "off"}.contains(suffix)) {
+    showError(tr("Cannot export %1: use .obj, .glb, .ply, .stl or .off").arg(path));
+    return false;
+  }
+  auto snapshot = std::make_shared<const core::Scene>(parts_.modeller->scene());
+  const QString error =
+      runner_.run(tr("Exporting %1…").arg(QFileInfo(path).fileName()),
+                  [snapshot, path] { core::writeSceneMeshes(*snapshot, toPath(path)); });
+  if (!error.isEmpty()) {
+    showError(failureMessage(tr("Could not export"), path, error));
+    return false;
+  }
+  lastError_.clear();
+  const auto visible = std::count_if(snapshot->objects.begin(), snapshot->objects.end(),
+                                     [](const core::SceneObject& o) { return o.visible; });
+  parts_.statusBar->showMessage(
+      tr("Exported %1: %2 visible objects at full resolution").arg(path).arg(visible), 5000);
   return true;
 }
 
@@ -339,23 +414,23 @@ bool DocumentActions::autosaveNow() {
   }
   // The GUI thread only copies the document; encoding and writing run on a worker while the
   // window goes on (the finished signal records the undo index saved, or says what failed).
-  auto snapshot = std::make_shared<const core::Document>(parts_.modeller->document());
+  auto snapshot = std::make_shared<const core::Scene>(parts_.modeller->scene());
   autosaving_ = parts_.history->position();
   return autosaver_.start(std::move(snapshot), path_);
 }
 
 bool DocumentActions::recover() {
   if (!pending_) return false;
-  core::Document document;
+  core::Scene scene;
   const RecoveryStore::Pending pending = *pending_;
   RecoveryStore* store = &recovery();
-  const QString error = runner_.run(
-      tr("Recovering…"), [&document, pending, store] { document = store->load(pending); });
+  const QString error =
+      runner_.run(tr("Recovering…"), [&scene, pending, store] { scene = store->load(pending); });
   if (!error.isEmpty()) {
     showError(tr("Could not recover the autosave: %1").arg(error));
     return false;
   }
-  adoptDocument(std::move(document), pending.originalPath);
+  adoptScene(std::move(scene), pending.originalPath);
   forceModified_ = true; // it differs from the file on disk until saved
   pending_.reset();
   emit titleChanged();

@@ -6,6 +6,7 @@
 
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/scene.h"
 #include "octaclay/core/geometry/base_shapes.h"
 
 #include <QObject>
@@ -52,12 +53,15 @@ public:
 
   /// A new document of this shape and size (made off the GUI thread).
   bool newDocument(core::BaseShape shape, int n);
-  /// Reads path (.exr, or .ocz as an untitled model); on failure reports why and keeps the
-  /// current document. A mesh (.obj, .ply, .stl, .off) is refused with a pointer to Import Mesh.
+  /// Reads path (.exr: every object of its scene, core::readScene; or .ocz as an untitled
+  /// one-object model); on failure reports why and keeps the current document. A mesh (.obj,
+  /// .ply, .stl, .off) is refused with a pointer to Import Mesh.
   bool openDocument(const QString& path);
-  /// Saves atomically off the GUI thread; the document stays editable meanwhile.
+  /// Saves the whole scene (core::writeScene: every object, its name, transform, visibility and
+  /// lock) atomically off the GUI thread; the document stays editable meanwhile.
   bool saveDocument(const QString& path);
-  /// Writes the document compressed (.ocz). The document keeps its path and unsaved state.
+  /// Writes the document compressed (.ocz). The document keeps its path and unsaved state. A
+  /// scene of several objects is refused (reported, nothing written): .ocz holds one.
   bool saveCompressed(const QString& path, const core::CompressOptions& options);
   /// Imports a closed genus-0 mesh (OBJ, PLY, STL, OFF) as a new N document, with a
   /// cancellable progress dialog; on failure or cancel the current document stays. The import
@@ -65,7 +69,9 @@ public:
   /// undo brings the previous document back, its path and saved state too, with its strokes
   /// still undoable.
   bool importMesh(const QString& path, int n);
-  /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension).
+  /// Writes the mesh at level N/divisor (OBJ, GLB, PLY, STL or OFF by extension). A scene of
+  /// several objects writes every visible one at full resolution (core::writeSceneMeshes: GLB
+  /// nodes with their transforms, OBJ groups, one world-space PLY/STL/OFF).
   bool exportMesh(const QString& path, int divisor);
   /// Writes the Level of detail dock's LOD of the current surface (OBJ + MTL or GLB) with the
   /// painted layers, as exportMesh writes them, and a tangent-space normal map baked from the
@@ -121,9 +127,13 @@ signals:
 
 private:
   void showError(const QString& message);
-  /// Shows document as the current one, its history empty and saved; false if the
-  /// viewport refused it (reported; the current document stays).
-  bool adoptDocument(core::Document document, const QString& path);
+  /// exportMesh for a scene of several objects.
+  bool exportScene(const QString& path);
+  /// Shows scene as the current one (its first visible object active), its history empty and saved;
+  /// false if the viewport refused it (reported; the current document stays).
+  bool adoptScene(core::Scene scene, const QString& path);
+  /// The modeller switched its active object: its history began anew, the saved state is kept.
+  void activeObjectChanged(int k);
   /// The file state (path, import, forced modified) a replacing step leaves, and the one before.
   struct FileState {
     QString path, importedFrom;
@@ -149,7 +159,8 @@ private:
   std::optional<std::uint64_t> autosaved_; // the history position at the last autosave
   /// The file states around each replacing step (by EditStep::serial): before, after.
   std::map<std::uint64_t, std::pair<FileState, FileState>> replacedStates_;
-  bool forceModified_ = false; // a recovered or imported document differs from any file
+  bool forceModified_ = false;        // a recovered or imported document differs from any file
+  bool modifiedBeforeSwitch_ = false; // isModified() as setActiveObject began
 };
 
 } // namespace octaclay::app

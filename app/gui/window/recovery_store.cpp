@@ -1,7 +1,7 @@
 #include "recovery_store.h"
 
 #include "octaclay/core/document/atomic_output.h"
-#include "octaclay/core/document/document_io.h"
+#include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
 
 #include <QDir>
@@ -113,10 +113,10 @@ bool RecoveryStore::beginSession() {
   return true;
 }
 
-void RecoveryStore::save(const core::Document& doc, const QString& originalPath) {
+void RecoveryStore::save(const core::Scene& scene, const QString& originalPath) {
   makeFolder(folder_);
   try {
-    core::writeDocument(doc, toPath(documentPath()));
+    core::writeScene(scene, toPath(documentPath()));
   } catch (const core::Error& e) {
     throw core::Error(e.kind(), std::string("cannot autosave: ") + e.what());
   }
@@ -125,14 +125,15 @@ void RecoveryStore::save(const core::Document& doc, const QString& originalPath)
   metadata["originalPath"] = originalPath;
   metadata["savedAt"] = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
   metadata["pid"] = pid_;
-  metadata["size"] = doc.size();
+  metadata["size"] = scene.objects.empty() ? 0 : scene.objects.front().document.size();
+  metadata["objects"] = static_cast<qint64>(scene.objects.size());
   writeFileAtomically(metadataPath(), QJsonDocument(metadata).toJson(), "recovery metadata");
 }
 
-core::Document RecoveryStore::load(const Pending& recovery) const {
+core::Scene RecoveryStore::load(const Pending& recovery) const {
   const std::string name = recovery.recoveryFile.toStdString();
   try {
-    return core::readDocument(toPath(recovery.recoveryFile));
+    return core::readScene(toPath(recovery.recoveryFile));
   } catch (const core::Error& e) {
     throw core::Error(e.kind(), "the recovery file " + name +
                                     " cannot be loaded (discard it to go on): " + e.what());
@@ -148,7 +149,7 @@ void RecoveryStore::discard() {
   // still offered, so this order never leaves a recovery that points at the wrong file.
   QFile::remove(documentPath());
   QFile::remove(metadataPath());
-  // Temporaries a crash left in the middle of writeDocument() (".recovery.tmp-<pid>-<n>.exr").
+  // Temporaries a crash left in the middle of writeScene() (".recovery.tmp-<pid>-<n>.exr").
   const QDir dir(folder_);
   for (const QString& name :
        dir.entryList({".recovery.tmp-*"}, QDir::Files | QDir::Hidden | QDir::System))

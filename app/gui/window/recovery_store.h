@@ -1,6 +1,6 @@
 #pragma once
 
-#include "octaclay/core/document/document.h"
+#include "octaclay/core/document/scene.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -12,8 +12,8 @@ namespace octaclay::app {
 
 /// Autosave and crash recovery. One folder holds, at most, one recovery:
 ///   session.lock   the PID of the running session that owns the folder (text, one line)
-///   recovery.exr   the last autosaved document (core's native format, written atomically)
-///   recovery.json  what it is: the document's original path and when it was saved
+///   recovery.exr   the last autosaved scene (core's native format: every object, written
+///   atomically) recovery.json  what it is: the document's original path and when it was saved
 /// A session that ends cleanly removes all three (endSession()); one that crashes leaves its lock
 /// behind with a PID that no longer runs, and the next session offers its recovery (pending()).
 ///
@@ -57,15 +57,17 @@ public:
   /// folder or lock cannot be written.
   bool beginSession();
 
-  /// Autosaves doc as the recovery of the document at originalPath (empty for a never-saved
-  /// one). The document is written atomically (a temporary file renamed over the old
-  /// recovery), then the metadata the same way, so a crash or failure at any point leaves the
-  /// previous recovery whole and no partial file. Throws core::Error(Io) on failure.
-  void save(const core::Document& doc, const QString& originalPath);
+  /// Autosaves scene (every object: core::writeScene) as the recovery of the document at
+  /// originalPath (empty for a never-saved one). The file is written atomically (a temporary
+  /// file renamed over the old recovery), then the metadata the same way, so a crash or failure
+  /// at any point leaves the previous recovery whole and no partial file. Throws
+  /// core::Error(Io) on failure.
+  void save(const core::Scene& scene, const QString& originalPath);
 
-  /// Reads a pending recovery, positions bit-exact. Throws core::Error(InvalidInput) naming the
-  /// recovery file when it is damaged, Error(Io) when it cannot be opened.
-  core::Document load(const Pending& recovery) const;
+  /// Reads a pending recovery (core::readScene), positions and transforms bit-exact. Throws
+  /// core::Error(InvalidInput) naming the recovery file when it is damaged, Error(Io) when it
+  /// cannot be opened.
+  core::Scene load(const Pending& recovery) const;
 
   /// Removes the recovery document and its metadata (the user declined the recovery, or saved
   /// the document). Keeps the lock. Missing files are not an error.
