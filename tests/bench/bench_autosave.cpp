@@ -6,6 +6,7 @@
 #include "recovery_store.h"
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/scene.h"
 #include "octaclay/core/geometry/base_shapes.h"
 
 #include <QCoreApplication>
@@ -37,7 +38,7 @@ void BM_Autosave(benchmark::State& state) {
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     // What DocumentActions::autosaveNow does on the GUI thread.
-    auto snapshot = std::make_shared<const core::Document>(document);
+    auto snapshot = std::make_shared<const core::Scene>(core::sceneOf(document));
     saver.start(std::move(snapshot), "/models/blob.exr");
     const double onGui = secondsSince(start);
     saver.wait();

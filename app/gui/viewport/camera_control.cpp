@@ -167,4 +167,11 @@ void panCamera(vtkCamera& camera, QPointF delta, int viewHeight) {
   camera.SetFocalPoint(target.x + move.x, target.y + move.y, target.z + move.z);
 }
 
+core::Vec3f focalPlanePoint(vtkCamera& camera, const core::Ray& ray) {
+  const core::Vec3f forward =
+      core::normalize(toVec(camera.GetFocalPoint()) - toVec(camera.GetPosition()));
+  const float along = std::max(core::dot(ray.direction, forward), 1e-3f);
+  return ray.origin + ray.direction * (static_cast<float>(camera.GetDistance()) / along);
+}
+
 } // namespace octaclay::app

@@ -44,5 +44,8 @@ void panCamera(vtkCamera& camera, QPointF delta, int viewHeight);
 /// eye and focal point move towards it (perspective), or sideways while the parallel scale
 /// shrinks (parallel projection, the eye's depth kept so nothing is clipped).
 void zoomCameraAt(vtkCamera& camera, core::Vec3f anchor, double factor);
+/// Where ray (from the camera) meets the plane through the focal point facing the camera: what
+/// a zoom anchors on where no surface is under the pointer.
+core::Vec3f focalPlanePoint(vtkCamera& camera, const core::Ray& ray);
 
 } // namespace octaclay::app

@@ -62,4 +62,15 @@ void setParallelProjection(vtkCamera& camera, bool parallel, double minEyeDistan
   camera.SetParallelProjection(parallel);
 }
 
+void setParallelProjectionAround(vtkCamera& camera, bool parallel, const std::array<double, 6>& b) {
+  const double diagonal = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+  const core::Vec3f centre{static_cast<float>(b[0] + b[1]) / 2, static_cast<float>(b[2] + b[3]) / 2,
+                           static_cast<float>(b[4] + b[5]) / 2};
+  // Far enough back that the whole model lies in front of the eye.
+  const core::Vec3f focal{static_cast<float>(camera.GetFocalPoint()[0]),
+                          static_cast<float>(camera.GetFocalPoint()[1]),
+                          static_cast<float>(camera.GetFocalPoint()[2])};
+  setParallelProjection(camera, parallel, core::length(focal - centre) + diagonal);
+}
+
 } // namespace octaclay::app

@@ -2,6 +2,8 @@
 
 #include "octaclay/core/geometry/vec.h"
 
+#include <array>
+
 class vtkCamera;
 
 namespace octaclay::app {
@@ -28,5 +30,9 @@ void setViewDirection(vtkCamera& camera, ViewDirection direction);
 /// eye moves back to at least minEyeDistance from the focal point so nothing in front of the old
 /// eye is clipped (the picture does not change with the eye's depth then).
 void setParallelProjection(vtkCamera& camera, bool parallel, double minEyeDistance);
+/// setParallelProjection with the reach that keeps every point of bounds (xmin, xmax, ymin, …)
+/// in front of the eye.
+void setParallelProjectionAround(vtkCamera& camera, bool parallel,
+                                 const std::array<double, 6>& bounds);
 
 } // namespace octaclay::app

@@ -219,14 +219,7 @@ bool ViewportWidget::orthographic() const {
 }
 
 void ViewportWidget::setOrthographic(bool orthographic) {
-  const std::array<double, 6>& b = frames_->bounds();
-  const double diagonal = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  const core::Vec3f centre{static_cast<float>(b[0] + b[1]) / 2, static_cast<float>(b[2] + b[3]) / 2,
-                           static_cast<float>(b[4] + b[5]) / 2};
-  // Far enough back that the whole model lies in front of the eye.
-  const double reach = core::length(toVec(camera->GetFocalPoint()) - centre) + diagonal;
-  setParallelProjection(*camera, orthographic, reach);
+  setParallelProjectionAround(*renderer()->GetActiveCamera(), orthographic, frames_->bounds());
   update();
 }
 
@@ -366,11 +359,7 @@ void ViewportWidget::wheelEvent(QWheelEvent* event) {
     const QRectF view = modelRect();
     QPointF p = event->position();
     if (p.x() >= view.width()) p.rx() -= view.width();
-    const core::Ray ray = viewRay(*camera, view.size(), p);
-    const core::Vec3f forward =
-        core::normalize(toVec(camera->GetFocalPoint()) - toVec(camera->GetPosition()));
-    const float along = std::max(core::dot(ray.direction, forward), 1e-3f);
-    anchor = ray.origin + ray.direction * (static_cast<float>(camera->GetDistance()) / along);
+    anchor = focalPlanePoint(*camera, viewRay(*camera, view.size(), p));
   }
   zoomCameraAt(*camera, anchor, std::pow(1.15, steps));
   update();

@@ -1,6 +1,6 @@
 #include "document_actions.h"
 
-#include "export_work.h"
+#include "file_work.h"
 #include "history_list.h"
 #include "lod_panel.h"
 #include "modeller.h"
@@ -8,13 +8,8 @@
 #include "user_messages.h"
 #include "viewport_widget.h"
 
-#include "octaclay/core/document/document_io.h"
 #include "octaclay/core/document/scene_io.h"
-#include "octaclay/core/error.h"
 #include "octaclay/core/export/scene_export.h"
-#include "octaclay/core/import/import.h"
-#include "octaclay/core/import/mesh_validation.h"
-#include "octaclay/core/import/spherical_parameterization.h"
 #include "octaclay/core/lod/facing.h"
 
 #include <QFileInfo>
@@ -33,22 +28,6 @@ constexpr int kMaxRecentFiles = 8;
 
 std::filesystem::path toPath(const QString& path) {
   return std::filesystem::path(path.toStdString());
-}
-
-// Every object of an .exr; an .ocz holds one document. The modeller's stretch, saliency and
-// keep detail know the ball's folds only so far: a torus or plane object is refused by name.
-core::Scene readSceneFile(const QString& path) {
-  core::Scene scene = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0
-                          ? core::sceneOf(readModelFile(path))
-                          : core::readScene(toPath(path));
-  for (const core::SceneObject& object : scene.objects)
-    if (object.document.topology != core::Topology::Octahedral)
-      throw core::Error(core::ErrorKind::InvalidInput,
-                        "object " + object.name + " is a " +
-                            std::string(core::topologyName(object.document.topology)) +
-                            ": the modeller sculpts octahedral (ball) objects only so far; "
-                            "octaclay-cli stroke, info and export work on it");
-  return scene;
 }
 
 } // namespace
@@ -103,40 +82,9 @@ void DocumentActions::showError(const QString& message) {
 
 bool DocumentActions::importMesh(const QString& path, int n) {
   auto control = std::make_shared<TaskControl>();
-  auto made = std::make_shared<core::Document>();
-  auto report = std::make_shared<QString>();
-  auto facing = std::make_shared<core::Vec3f>();
-  const QString error = runner_.run(
-      tr("Importing %1…").arg(QFileInfo(path).fileName()),
-      [made, report, facing, control, path, n] {
-        const core::ValidatedMesh mesh = core::loadGenus0Mesh(toPath(path));
-        const core::SphericalMap map = core::parameterizeOnSphere(mesh.mesh, [control](float f) {
-          control->fraction = 0.9f * f;
-          return !control->cancel.load();
-        });
-        if (map.flipped > 0)
-          throw core::Error(core::ErrorKind::InvalidInput,
-                            "the spherical map folds over itself (" + std::to_string(map.flipped) +
-                                " flipped triangles): this mesh is not supported yet");
-        core::ImportedDiffuse diffuse;
-        *made = core::importValidatedMesh(mesh, map, n, &diffuse);
-        *facing = core::guessFacing(made->positions);
-        control->fraction = 1.0f;
-        QString colour = QObject::tr("no colour");
-        if (diffuse.source == core::DiffuseSource::VertexColours)
-          colour = QObject::tr("vertex colours");
-        else if (diffuse.source == core::DiffuseSource::Texture)
-          colour = QObject::tr("texture %1")
-                       .arg(QString::fromStdString(diffuse.texture.filename().string()));
-        *report = QObject::tr("stretch %1, %2 flipped triangles, %3")
-                      .arg(static_cast<double>(map.stretchL2), 0, 'f', 2)
-                      .arg(map.flipped)
-                      .arg(colour);
-        // Attributes the file names but the import could not use (a missing .mtl or texture).
-        for (const std::string& note : diffuse.notes)
-          *report += QStringLiteral("; ") + QString::fromStdString(note);
-      },
-      control);
+  auto imported = std::make_shared<ImportedMesh>();
+  const QString error = runner_.run(tr("Importing %1…").arg(QFileInfo(path).fileName()),
+                                    importWork(path, n, control, imported), control);
   if (control->cancel) {
     parts_.statusBar->showMessage(tr("Import cancelled; the current model is unchanged"), 8000);
     return false;
@@ -148,19 +96,19 @@ bool DocumentActions::importMesh(const QString& path, int n) {
   }
   // One step of the history: the replaced document (its strokes before it) is held by the step.
   const QString name = QFileInfo(path).fileName();
-  const FileState imported{{}, QFileInfo(path).absoluteFilePath(), true}; // not saved anywhere yet
+  const FileState state{{}, QFileInfo(path).absoluteFilePath(), true}; // not saved anywhere yet
   if (parts_.modeller->hasDocument()) {
-    if (!replaceWith(std::move(*made), tr("Import %1").arg(name), imported)) return false;
+    if (!replaceWith(std::move(imported->document), tr("Import %1").arg(name), state)) return false;
   } else {
-    if (!adoptScene(core::sceneOf(std::move(*made)), {})) return false;
-    importedFrom_ = imported.importedFrom;
+    if (!adoptScene(core::sceneOf(std::move(imported->document)), {})) return false;
+    importedFrom_ = state.importedFrom;
     forceModified_ = true;
   }
-  parts_.viewport->frameFrom(*facing);
+  parts_.viewport->frameFrom(imported->facing);
   emit titleChanged();
   lastError_.clear();
-  parts_.statusBar->showMessage(tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), *report),
-                                8000);
+  parts_.statusBar->showMessage(
+      tr("Imported %1 (%2)").arg(QFileInfo(path).fileName(), imported->report), 8000);
   return true;
 }
 
