@@ -77,6 +77,19 @@ public:
   /// nothing changed, for an index out of range, while a stroke is made or when the upload
   /// fails (error() set); true without work for the active object.
   bool setActiveObject(int k);
+  /// Object k's visibility, lock and name (modeller_objects.cpp): objectsChanged follows a
+  /// change. renameObject returns why a name is refused (empty when it was taken).
+  bool setObjectVisible(int k, bool visible);
+  bool setObjectLocked(int k, bool locked);
+  QString renameObject(int k, const QString& name);
+  /// Whether the edited object is locked: strokes on it are refused (refused() says so).
+  bool activeLocked() const;
+  /// Appends object (named uniquely from its name) and makes it the edited one. False, with
+  /// nothing added, when setActiveObject refuses or fails.
+  bool addObject(core::SceneObject object);
+  /// Removes the edited object; the one before it (or the next) becomes the edited one. Returns
+  /// why it was refused (the last object, a stroke being made), empty on success.
+  QString deleteActiveObject();
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
   /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
@@ -148,6 +161,11 @@ signals:
   /// The scene was replaced (setDocument, setScene): its objects, their transforms, which is
   /// active.
   void sceneChanged();
+  /// An object was added, removed, renamed, shown, hidden, locked or unlocked by the user (the
+  /// scene differs from its file).
+  void objectsChanged();
+  /// Something asked for was refused (a stroke on a locked object): why, for the status bar.
+  void refused(const QString& why);
   /// setActiveObject is about to switch (the history, still the old object's, is cleared next).
   void activeObjectAboutToChange();
   /// setActiveObject made object k the edited one (after documentReplaced(true)).

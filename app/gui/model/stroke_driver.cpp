@@ -23,6 +23,11 @@ StrokeDriver::~StrokeDriver() {
 bool StrokeDriver::begin(const StrokeStart& start) {
   SculptSession& session = modeller_.session();
   if (!modeller_.glReady() || !session.hasDocument()) return false;
+  if (modeller_.activeLocked()) { // a locked object is not sculpted
+    const auto& name = modeller_.objectAt(modeller_.activeObject()).name;
+    emit modeller_.refused(tr("%1 is locked").arg(QString::fromStdString(name)));
+    return false;
+  }
   settle();                             // a second stroke waits for the first's relaxation
   if (session.stroking()) return false; // one at a time
   try {

@@ -57,6 +57,8 @@ public:
   void resize(int width, int height); ///< device pixels
   /// A new document is on the GPU: every normal, the displayed level, no LOD yet.
   void documentReplaced();
+  /// The scene's objects changed (added, removed, shown, hidden): the others drawn anew.
+  void objectsChanged() { others_.rebuild(*renderer_, modeller_); }
   /// Draws a frame into the widget's framebuffer (GL current).
   void paint(QSize size, const std::optional<BrushRing>& ring);
   /// The frame painter's marks over the frame just drawn.

@@ -48,6 +48,10 @@ ViewportWidget::ViewportWidget(Modeller& modeller, QWidget* parent)
   overlay_ = new ViewportOverlay(this);
   connect(&modeller_, &Modeller::documentReplaced, this, &ViewportWidget::documentReplaced);
   connect(&modeller_, &Modeller::surfaceChanged, this, [this] { update(); });
+  connect(&modeller_, &Modeller::objectsChanged, this, [this] {
+    if (frames_->ready()) frames_->objectsChanged();
+    update();
+  });
   connect(&modeller_.brushState(), &BrushState::changed, this, [this] { update(); });
 }
 

@@ -88,6 +88,12 @@ public:
   /// The mesh the current document was imported from (absolute), empty if it was not.
   QString importedFrom() const { return importedFrom_; }
   bool isModified() const;
+  /// The scene changed outside the history (an object added, removed, renamed, shown, hidden,
+  /// locked or unlocked): modified until saved.
+  void markModified() {
+    forceModified_ = true;
+    emit titleChanged();
+  }
   QString lastError() const { return lastError_; }
 
   /// Autosaves now if the document changed since the last autosave: a snapshot copied here, the

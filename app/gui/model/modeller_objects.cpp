@@ -1,0 +1,63 @@
+// The Modeller's scene edits that are not strokes: an object's visibility, lock and name, adding
+// and removing objects (issue 33). Undo does not cover them yet.
+#include "modeller.h"
+
+namespace octaclay::app {
+
+bool Modeller::setObjectVisible(int k, bool visible) {
+  if (k < 0 || k >= objectCount()) return false;
+  core::SceneObject& object = scene_.objects[std::size_t(k)];
+  if (object.visible == visible) return true;
+  object.visible = visible;
+  emit objectsChanged();
+  return true;
+}
+
+bool Modeller::setObjectLocked(int k, bool locked) {
+  if (k < 0 || k >= objectCount()) return false;
+  core::SceneObject& object = scene_.objects[std::size_t(k)];
+  if (object.locked == locked) return true;
+  object.locked = locked;
+  emit objectsChanged();
+  return true;
+}
+
+QString Modeller::renameObject(int k, const QString& name) {
+  if (k < 0 || k >= objectCount()) return tr("There is no object %1").arg(k + 1);
+  const std::string wanted = name.toStdString();
+  core::SceneObject& object = scene_.objects[std::size_t(k)];
+  if (object.name == wanted) return {};
+  if (const auto problem = core::objectNameProblem(wanted)) return QString::fromStdString(*problem);
+  if (scene_.find(wanted)) return tr("Another object is already named %1").arg(name);
+  object.name = wanted;
+  emit objectsChanged();
+  return {};
+}
+
+bool Modeller::activeLocked() const {
+  return active_ >= 0 && active_ < objectCount() && scene_.objects[std::size_t(active_)].locked;
+}
+
+bool Modeller::addObject(core::SceneObject object) {
+  if (!hasDocument()) return false;
+  object.name = scene_.uniqueName(object.name);
+  scene_.objects.push_back(std::move(object));
+  if (!setActiveObject(objectCount() - 1)) {
+    scene_.objects.pop_back();
+    return false;
+  }
+  emit objectsChanged();
+  return true;
+}
+
+QString Modeller::deleteActiveObject() {
+  if (objectCount() <= 1) return tr("The last object cannot be deleted");
+  const int gone = active_;
+  if (!setActiveObject(gone > 0 ? gone - 1 : 1)) return tr("Finish the stroke first");
+  scene_.objects.erase(scene_.objects.begin() + gone);
+  if (active_ > gone) --active_;
+  emit objectsChanged();
+  return {};
+}
+
+} // namespace octaclay::app
