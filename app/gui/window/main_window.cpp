@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "add_menu.h"
 #include "brush_bars.h"
 #include "brush_panel.h"
 #include "document_actions.h"
@@ -14,6 +15,7 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "modeller.h"
+#include "objects_panel.h"
 #include "sparse_sampling_hint.h"
 #include "user_messages.h"
 #include "view_actions.h"
@@ -67,6 +69,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   recentMenu_ = addFileMenu(*this);
   addEditMenu(*this);
   mesh_->addMenu(*menuBar());
+  addAddMenu(*this);
   addViewMenu(*this, viewport_);
   addHelpMenu(*this);
   connectParts();
@@ -113,6 +116,7 @@ void MainWindow::buildDocks() {
   brushPanel_ = new BrushPanel(modeller_->brushState(), this);
   layersPanel_ = new LayersPanel(this);
   lodPanel_ = new LodPanel(this);
+  objectsPanel_ = new ObjectsPanel(*modeller_, this);
   auto addDock = [this](QWidget* panel, const QString& title, const QString& name,
                         Qt::DockWidgetArea area) {
     auto* dock = new QDockWidget(title, this);
@@ -122,7 +126,10 @@ void MainWindow::buildDocks() {
     return dock;
   };
   addDock(brushPanel_, tr("Brushes"), "BrushesDock", Qt::LeftDockWidgetArea);
-  addDock(layersPanel_, tr("Layers"), "LayersDock", Qt::RightDockWidgetArea);
+  QDockWidget* layers = addDock(layersPanel_, tr("Layers"), "LayersDock", Qt::RightDockWidgetArea);
+  tabifyDockWidget(layers, addDock(objectsPanel_, tr("Objects"), "ObjectsDock",
+                                   Qt::RightDockWidgetArea)); // beside Layers, a tab
+  layers->raise();
   addDock(lodPanel_, tr("Level of detail"), "LodDock", Qt::RightDockWidgetArea);
 }
 
@@ -151,8 +158,13 @@ void MainWindow::connectParts() {
   });
   connect(history_, &HistoryList::cleanChanged, this, &MainWindow::updateTitle);
   connect(history_, &HistoryList::indexChanged, this, &MainWindow::updateTitle);
-  connect(modeller_, &Modeller::errorOccurred, this,
-          [this](const QString& message) { showStatusMessage(*statusBar(), message, 10000); });
+  const auto say = [this](const QString& message) {
+    showStatusMessage(*statusBar(), message, 10000);
+  };
+  connect(modeller_, &Modeller::errorOccurred, this, say);
+  connect(modeller_, &Modeller::refused, this, say);
+  connect(objectsPanel_, &ObjectsPanel::message, this, say);
+  connect(modeller_, &Modeller::objectsChanged, documents_, &DocumentActions::markModified);
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));

@@ -32,6 +32,7 @@ class HistoryList;
 class LodGenerator;
 class Modeller;
 class LodPanel;
+class ObjectsPanel;
 class ViewportWidget;
 
 /// The modeller's window: the viewport, the Brushes, Layers and Level of detail docks, the
@@ -69,6 +70,7 @@ public:
   BrushPanel* brushPanel() const { return brushPanel_; }
   LayersPanel* layersPanel() const { return layersPanel_; }
   LodPanel* lodPanel() const { return lodPanel_; }
+  ObjectsPanel* objectsPanel() const { return objectsPanel_; }
   /// The one history as the window shows it (Edit ▸ Undo, Redo, History; the saved state).
   HistoryList* undoStack() const { return history_; }
   QAction* action(const QString& objectName) const;
@@ -191,6 +193,7 @@ private:
   BrushPanel* brushPanel_ = nullptr;
   LayersPanel* layersPanel_ = nullptr;
   LodPanel* lodPanel_ = nullptr;
+  ObjectsPanel* objectsPanel_ = nullptr;
   LodGenerator* lodGenerator_ = nullptr;
   std::unique_ptr<LodFollower> lodFollower_; // the newest LOD, moved with the surface each frame
   HistoryList* history_ = nullptr;

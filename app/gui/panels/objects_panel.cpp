@@ -1,0 +1,88 @@
+#include "objects_panel.h"
+
+#include "modeller.h"
+
+#include <QHeaderView>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace octaclay::app {
+
+ObjectsPanel::ObjectsPanel(Modeller& modeller, QWidget* parent)
+    : QWidget(parent), modeller_(modeller) {
+  list_ = new QTreeWidget(this);
+  list_->setObjectName("objectsList");
+  list_->setColumnCount(3);
+  list_->setHeaderLabels({tr("Object"), tr("Shown"), tr("Locked")});
+  list_->setRootIsDecorated(false);
+  list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+  list_->header()->setSectionResizeMode(Name, QHeaderView::Stretch);
+  list_->header()->setStretchLastSection(false);
+  delete_ = new QPushButton(tr("Delete"), this);
+  delete_->setObjectName("deleteObjectButton");
+  delete_->setToolTip(tr("Removes the edited object (not the last one)"));
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  layout->addWidget(list_);
+  layout->addWidget(delete_);
+
+  connect(list_, &QTreeWidget::itemChanged, this, &ObjectsPanel::itemChanged);
+  connect(list_, &QTreeWidget::currentItemChanged, this, &ObjectsPanel::rowActivated);
+  connect(delete_, &QPushButton::clicked, this, [this] {
+    const QString why = modeller_.deleteActiveObject();
+    if (!why.isEmpty()) emit message(why);
+  });
+  connect(&modeller_, &Modeller::sceneChanged, this, &ObjectsPanel::rebuild);
+  connect(&modeller_, &Modeller::objectsChanged, this, &ObjectsPanel::rebuild);
+  connect(&modeller_, &Modeller::activeObjectChanged, this, &ObjectsPanel::rebuild);
+  rebuild();
+}
+
+void ObjectsPanel::rebuild() {
+  rebuilding_ = true;
+  // Rows are updated in place: this may run inside one of their own itemChanged signals.
+  while (list_->topLevelItemCount() > modeller_.objectCount())
+    delete list_->takeTopLevelItem(list_->topLevelItemCount() - 1);
+  while (list_->topLevelItemCount() < modeller_.objectCount())
+    new QTreeWidgetItem(list_);
+  for (int k = 0; k < modeller_.objectCount(); ++k) {
+    const core::SceneObject& object = modeller_.objectAt(k);
+    QTreeWidgetItem* item = list_->topLevelItem(k);
+    item->setText(Name, QString::fromStdString(object.name));
+    item->setFlags(item->flags() | Qt::ItemIsEditable | Qt::ItemIsUserCheckable);
+    item->setCheckState(Visible, object.visible ? Qt::Checked : Qt::Unchecked);
+    item->setCheckState(Locked, object.locked ? Qt::Checked : Qt::Unchecked);
+    item->setToolTip(Visible, tr("Shown in the view"));
+    item->setToolTip(Locked, tr("Locked: not sculpted"));
+  }
+  if (QTreeWidgetItem* active = list_->topLevelItem(modeller_.activeObject()))
+    list_->setCurrentItem(active);
+  delete_->setEnabled(modeller_.objectCount() > 1);
+  rebuilding_ = false;
+}
+
+void ObjectsPanel::itemChanged(QTreeWidgetItem* item, int column) {
+  if (rebuilding_) return;
+  const int k = list_->indexOfTopLevelItem(item);
+  if (column == Visible) {
+    modeller_.setObjectVisible(k, item->checkState(Visible) == Qt::Checked);
+  } else if (column == Locked) {
+    modeller_.setObjectLocked(k, item->checkState(Locked) == Qt::Checked);
+  } else if (column == Name) {
+    const QString why = modeller_.renameObject(k, item->text(Name));
+    if (!why.isEmpty()) {
+      emit message(tr("Cannot rename: %1").arg(why));
+      rebuild(); // the name it keeps
+    }
+  }
+}
+
+void ObjectsPanel::rowActivated() {
+  if (rebuilding_) return;
+  const int k = list_->indexOfTopLevelItem(list_->currentItem());
+  if (k < 0 || k == modeller_.activeObject()) return;
+  if (!modeller_.setActiveObject(k)) rebuild(); // refused: the edited one stays current
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,81 @@
+#include "add_menu.h"
+
+#include "main_window.h"
+#include "modeller.h"
+#include "user_messages.h"
+#include "viewport_widget.h"
+
+#include "octaclay/core/document/scene.h"
+#include "octaclay/core/geometry/base_shapes.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <string>
+
+namespace octaclay::app {
+namespace {
+
+// Scene units: the new object's bounding-box diagonal against the scene's.
+constexpr float kShareOfScene = 0.25f;
+
+void addShape(MainWindow& window, core::BaseShape shape) {
+  Modeller& modeller = *window.modeller();
+  if (!modeller.hasDocument()) return;
+  const int n = modeller.document().size();
+  core::SceneObject object;
+  std::string name(core::baseShapeName(shape));
+  if (!name.empty()) name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  object.name = name;
+  object.document = core::makeDocument(core::makeBaseShape(shape, n > 1 ? n : 256));
+  const float sceneSize = core::sceneBounds(modeller.scene()).diagonal();
+  const float ownSize = core::boundingBox(object.document.positions).diagonal();
+  const float scale = ownSize > 0 && sceneSize > 0 ? kShareOfScene * sceneSize / ownSize : 1.0f;
+  object.transform.scale = {scale, scale, scale};
+  double focal[3];
+  window.viewport()->renderer()->GetActiveCamera()->GetFocalPoint(focal);
+  object.transform.translation = {float(focal[0]), float(focal[1]), float(focal[2])};
+  if (!modeller.addObject(std::move(object)))
+    showStatusMessage(*window.statusBar(),
+                      MainWindow::tr("Could not add the %1: %2")
+                          .arg(QString::fromStdString(name), modeller.error()),
+                      8000);
+}
+
+} // namespace
+
+void addAddMenu(MainWindow& window) {
+  QMenu* menu = window.menuBar()->addMenu(MainWindow::tr("&Add"));
+  menu->setObjectName("menuAdd");
+  const std::pair<core::BaseShape, QString> shapes[] = {
+      {core::BaseShape::Sphere, MainWindow::tr("&Sphere")},
+      {core::BaseShape::Cube, MainWindow::tr("&Cube")},
+      {core::BaseShape::Cylinder, MainWindow::tr("C&ylinder")},
+      {core::BaseShape::Blob, MainWindow::tr("&Blob")},
+      {core::BaseShape::Capsule, MainWindow::tr("Ca&psule")}};
+  for (const auto& [shape, text] : shapes) {
+    QAction* a = menu->addAction(text);
+    std::string id(core::baseShapeName(shape));
+    if (!id.empty()) id[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(id[0])));
+    a->setObjectName(QString::fromStdString("actionAdd" + id));
+    a->setStatusTip(MainWindow::tr("Adds a new object at the view's centre and edits it"));
+    QObject::connect(a, &QAction::triggered, &window,
+                     [&window, shape] { addShape(window, shape); });
+  }
+  menu->addSeparator();
+  QAction* remove = menu->addAction(MainWindow::tr("&Delete Object"));
+  remove->setObjectName("actionDeleteObject");
+  remove->setShortcut(QKeySequence::Delete);
+  remove->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+  window.viewport()->addAction(remove); // the Delete key where the viewport has the focus
+  QObject::connect(remove, &QAction::triggered, &window, [&window] {
+    const QString why = window.modeller()->deleteActiveObject();
+    if (!why.isEmpty()) showStatusMessage(*window.statusBar(), why, 8000);
+  });
+}
+
+} // namespace octaclay::app
