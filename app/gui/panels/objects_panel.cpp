@@ -16,8 +16,12 @@ ObjectsPanel::ObjectsPanel(Modeller& modeller, QWidget* parent)
   list_->setColumnCount(3);
   list_->setHeaderLabels({tr("Object"), tr("Shown"), tr("Locked")});
   list_->setRootIsDecorated(false);
+  // The dock is as wide as Layers beside it: the list's own wish does not widen the dock area.
+  list_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
   list_->header()->setSectionResizeMode(Name, QHeaderView::Stretch);
+  list_->header()->setSectionResizeMode(Visible, QHeaderView::ResizeToContents);
+  list_->header()->setSectionResizeMode(Locked, QHeaderView::ResizeToContents);
   list_->header()->setStretchLastSection(false);
   delete_ = new QPushButton(tr("Delete"), this);
   delete_->setObjectName("deleteObjectButton");
