@@ -183,9 +183,17 @@ void ObjectsRenderTest::untickingTheEyeHidesTheObject() {
   const QString saved = dir_.filePath("eye-saved.exr");
   QVERIFY(window_->saveDocument(saved));
   QVERIFY(!core::readScene(saved.toStdString()).objects[1].visible);
-  // Shown again: its pixels are back.
+  // Alt+click where the hidden box was does not pick it.
+  const double halfWidth = 20 * std::tan(15 * M_PI / 180) * view->width() / view->height();
+  const QPoint boxCentre(qRound((0.5 + 3 / halfWidth * 0.5) * view->width()), view->height() / 2);
+  QTest::mouseClick(view, Qt::LeftButton, Qt::AltModifier, boxCentre);
+  QCOMPARE(window_->modeller()->activeObject(), 0);
+  // Shown again: its pixels are back, and Alt+click there edits it.
   list->topLevelItem(1)->setCheckState(ObjectsPanel::Visible, Qt::Checked);
   QCOMPARE(boxAndBody().first, boxBefore);
+  QTest::mouseClick(view, Qt::LeftButton, Qt::AltModifier, boxCentre);
+  QCOMPARE(window_->modeller()->activeObject(), 1);
+  QCOMPARE(list->currentItem(), list->topLevelItem(1));
 }
 
 void ObjectsRenderTest::lockedObjectIsNotSculpted() {
