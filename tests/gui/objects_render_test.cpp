@@ -214,6 +214,21 @@ void ObjectsRenderTest::lockedObjectIsNotSculpted() {
   list->topLevelItem(0)->setCheckState(ObjectsPanel::Locked, Qt::Unchecked);
   app::testing::pushStrokeAcross(*window_, 0);
   QVERIFY(!bitEqual(positionsOf(*window_), before));
+  // The edited object's own eye hides it: its pixels go, and a stroke there touches nothing.
+  app::ViewportWidget* view = window_->viewport();
+  QEvent leave(QEvent::Leave); // no brush outline
+  QCoreApplication::sendEvent(view, &leave);
+  const QImage shown = view->grabFramebuffer();
+  const std::vector<float> sculpted = positionsOf(*window_);
+  list->topLevelItem(0)->setCheckState(ObjectsPanel::Visible, Qt::Unchecked);
+  QCOMPARE(window_->modeller()->activeObject(), 0);
+  const QImage hidden = view->grabFramebuffer();
+  const int drawnShown = drawnPixels(shown, 0, shown.width()),
+            drawnHidden = drawnPixels(hidden, 0, hidden.width());
+  QVERIFY2(drawnShown - drawnHidden > 500,
+           qPrintable(QString("%1 then %2").arg(drawnShown).arg(drawnHidden)));
+  app::testing::pushStrokeAcross(*window_, 0);
+  QVERIFY(bitEqual(positionsOf(*window_), sculpted));
 }
 
 void ObjectsRenderTest::addSphereTwiceThenDelete() {

@@ -82,6 +82,11 @@ public:
   bool setObjectVisible(int k, bool visible);
   bool setObjectLocked(int k, bool locked);
   QString renameObject(int k, const QString& name);
+  /// Whether the edited object is shown (the Objects dock's eye): hidden, it is neither drawn
+  /// nor picked. True without a scene.
+  bool activeShown() const {
+    return active_ < 0 || active_ >= objectCount() || objectAt(active_).visible;
+  }
   /// Whether the edited object is locked: strokes on it are refused (refused() says so).
   bool activeLocked() const;
   /// Appends object (named uniquely from its name) and makes it the edited one. False, with

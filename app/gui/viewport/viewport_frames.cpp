@@ -198,6 +198,8 @@ vtkGenericOpenGLRenderWindow* ViewportFrames::renderWindow() const {
 
 void ViewportFrames::drawModel(vtkRenderer* r) {
   if (!modeller_.session().hasDocument() || !model_) return;
+  // The Objects dock's eye hides the edited object too (it stays the one brushes would use).
+  if (!modeller_.activeShown()) return;
   vtkCamera* camera = r->GetActiveCamera();
   // The renderer works in the object's space: its transform folded into the matrix, the eye
   // (and applyLooks' view axes) brought into that space.

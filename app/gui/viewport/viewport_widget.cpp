@@ -234,7 +234,8 @@ QRectF ViewportWidget::modelRect() const {
 
 std::optional<core::PickHit> ViewportWidget::pickAt(QPointF p) const {
   const SculptSession& session = modeller_.session();
-  if (!session.hasDocument() || width() <= 0 || height() <= 0) return std::nullopt;
+  if (!session.hasDocument() || width() <= 0 || height() <= 0 || !modeller_.activeShown())
+    return std::nullopt; // hidden (the Objects dock's eye): nothing to touch
   // Side by side, both halves show the model through one camera: the right half picks as the
   // left does.
   const QRectF view = modelRect();
