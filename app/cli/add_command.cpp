@@ -3,14 +3,12 @@
 #include "json_output.h"
 #include "object_choice.h"
 #include "output_rules.h"
+#include "shape_arguments.h"
 #include "transform_arguments.h"
 
 #include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/capsule.h"
-#include "octaclay/core/geometry/sheet.h"
-#include "octaclay/core/geometry/torus.h"
 
 #include <cctype>
 #include <iostream>
@@ -53,19 +51,7 @@ Command addAddCommand(CLI::App& app) {
   return {
       sub, [opt, radiusOption, lengthOption]() {
         requireOutputExtension(opt->output, {".exr"}, "the document");
-        const auto shape = core::parseBaseShape(opt->shape);
-        const bool torus = opt->shape == "torus";
-        const bool sheet = opt->shape == "plane" || opt->shape == "disc";
-        if (!shape && !torus && !sheet)
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "unknown shape '" + opt->shape +
-                                "'; use sphere, cube, cylinder, blob, capsule, torus, plane "
-                                "or disc");
-        if (shape != core::BaseShape::Capsule &&
-            (radiusOption->count() > 0 || lengthOption->count() > 0))
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "--radius and --length shape a capsule; --shape " + opt->shape +
-                                " takes neither");
+        checkShapeArguments(opt->shape, radiusOption->count() > 0 || lengthOption->count() > 0);
         if (opt->size != 0) core::requireValidSize(opt->size);
         const core::ObjectTransform transform = appliedTransform({}, opt->transform);
         if (!opt->name.empty())
@@ -89,15 +75,7 @@ Command addAddCommand(CLI::App& app) {
                                 scene.uniqueName(name) + ")");
         }
         const int n = opt->size != 0 ? opt->size : scene.objects.front().document.size();
-        if (torus && n < core::kMinTorusSize)
-          throw core::Error(core::ErrorKind::InvalidArgument, "a torus needs --size 4 or more");
-        const core::Torus ring;
-        core::Document document = core::makeDocument(
-            torus ? core::makeTorus(ring, n, core::torusHeight(ring, n))
-            : sheet
-                ? core::makeSheet(opt->shape == "disc" ? core::Sheet::Disc : core::Sheet::Square, n)
-            : *shape == core::BaseShape::Capsule ? core::makeCapsule(n, opt->capsule)
-                                                 : core::makeBaseShape(*shape, n));
+        core::Document document = core::makeDocument(makeShapeImage(opt->shape, n, opt->capsule));
         scene.objects.push_back({name, std::move(document), transform, true, false});
 
         std::ostringstream report; // made before the save, which commits last

@@ -2,6 +2,7 @@
 #include "finite_arguments.h"
 #include "json_output.h"
 #include "output_rules.h"
+#include "shape_arguments.h"
 
 #include "octaclay/core/document/document_io.h"
 #include "octaclay/core/error.h"
@@ -64,72 +65,53 @@ Command addNewCommand(CLI::App& app) {
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
-  return {
-      sub, [opt, radiusOption, lengthOption, majorOption, minorOption, heightOption]() {
-        requireOutputExtension(opt->output, {".exr"}, "the document");
-        const auto shape = core::parseBaseShape(opt->shape);
-        const bool torus = opt->shape == "torus";
-        const bool sheet = opt->shape == "plane" || opt->shape == "disc";
-        if (!shape && !torus && !sheet)
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "unknown shape '" + opt->shape +
-                                "'; use sphere, cube, cylinder, blob, capsule, torus, plane "
-                                "or disc");
-        core::requireValidSize(opt->size);
-        if (shape != core::BaseShape::Capsule &&
-            (radiusOption->count() > 0 || lengthOption->count() > 0))
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "--radius and --length shape a capsule; --shape " + opt->shape +
-                                " takes neither");
-        if (!torus &&
-            (majorOption->count() > 0 || minorOption->count() > 0 || heightOption->count() > 0))
-          throw core::Error(core::ErrorKind::InvalidArgument,
-                            "--major, --minor and --height shape a torus; --shape " + opt->shape +
-                                " takes none of them");
-        if (torus && opt->size < core::kMinTorusSize)
-          throw core::Error(core::ErrorKind::InvalidArgument, "a torus needs --size 4 or more");
-        const auto start = std::chrono::steady_clock::now();
-        const core::Document document = core::makeDocument(
-            torus   ? core::makeTorus(opt->torus, opt->size,
-                                    heightOption->count() > 0
-                                          ? opt->height
-                                          : core::torusHeight(opt->torus, opt->size))
-              : sheet ? core::makeSheet(
-                            opt->shape == "disc" ? core::Sheet::Disc : core::Sheet::Square, opt->size)
-            : *shape == core::BaseShape::Capsule ? core::makeCapsule(opt->size, opt->capsule)
-                                                 : core::makeBaseShape(*shape, opt->size));
-        const core::GeometryImage& image = document.positions;
-        const std::string topology(core::topologyName(image.topology()));
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        std::ostringstream report; // made before the save, which commits last
-        if (opt->json) {
-          report << app::JsonReply{{"output", opt->output},
-                                   {"shape", opt->shape},
-                                   {"size", opt->size},
-                                   {"topology", topology},
-                                   {"width", image.width()},
-                                   {"height", image.height()},
-                                   {"vertices",
-                                    std::uint64_t(core::vertexCount(image.topology(), image.width(),
-                                                                    image.height()))},
-                                   {"ms", ms}}
-                        .dump()
-                 << "\n";
-        } else {
-          report << "created " << opt->output << ": " << opt->shape;
-          if (image.topology() == core::Topology::Octahedral)
-            report << ", N = " << opt->size;
-          else
-            report << (opt->shape == topology ? "" : " (" + topology + ")") << ", " << image.width()
-                   << "x" << image.height() << " cells";
-          report << " (" << image.side() << "x" << image.rows() << " samples) in " << ms << " ms\n";
-        }
-        core::writeDocument(document, opt->output);
-        std::cout << report.str();
-        return kExitOk;
-      }};
+  return {sub, [opt, radiusOption, lengthOption, majorOption, minorOption, heightOption]() {
+            requireOutputExtension(opt->output, {".exr"}, "the document");
+            checkShapeArguments(opt->shape, radiusOption->count() > 0 || lengthOption->count() > 0);
+            const bool torus = opt->shape == "torus";
+            core::requireValidSize(opt->size);
+            if (!torus &&
+                (majorOption->count() > 0 || minorOption->count() > 0 || heightOption->count() > 0))
+              throw core::Error(core::ErrorKind::InvalidArgument,
+                                "--major, --minor and --height shape a torus; --shape " +
+                                    opt->shape + " takes none of them");
+            const auto start = std::chrono::steady_clock::now();
+            const core::Document document =
+                core::makeDocument(makeShapeImage(opt->shape, opt->size, opt->capsule, opt->torus,
+                                                  heightOption->count() > 0 ? opt->height : 0));
+            const core::GeometryImage& image = document.positions;
+            const std::string topology(core::topologyName(image.topology()));
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            std::ostringstream report; // made before the save, which commits last
+            if (opt->json) {
+              report << app::JsonReply{{"output", opt->output},
+                                       {"shape", opt->shape},
+                                       {"size", opt->size},
+                                       {"topology", topology},
+                                       {"width", image.width()},
+                                       {"height", image.height()},
+                                       {"vertices",
+                                        std::uint64_t(core::vertexCount(
+                                            image.topology(), image.width(), image.height()))},
+                                       {"ms", ms}}
+                            .dump()
+                     << "\n";
+            } else {
+              report << "created " << opt->output << ": " << opt->shape;
+              if (image.topology() == core::Topology::Octahedral)
+                report << ", N = " << opt->size;
+              else
+                report << (opt->shape == topology ? "" : " (" + topology + ")") << ", "
+                       << image.width() << "x" << image.height() << " cells";
+              report << " (" << image.side() << "x" << image.rows() << " samples) in " << ms
+                     << " ms\n";
+            }
+            core::writeDocument(document, opt->output);
+            std::cout << report.str();
+            return kExitOk;
+          }};
 }
 
 } // namespace octaclay::app

@@ -36,15 +36,11 @@ namespace octaclay::core {
 namespace fs = std::filesystem;
 
 namespace {
+using detail::kHeightAttribute, detail::kParameterizationAttribute, detail::kTopologyAttribute,
+    detail::kWidthAttribute;
 
 constexpr const char* kFormatAttribute = "octaclay.format";
-constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
 constexpr const char* kSamplingAttribute = "octaclay.sampling";
-// How the image closes up (core::Topology's name); absent in files of the ball alone. The torus's
-// and plane's width and height in cells, which must agree with the data window.
-constexpr const char* kTopologyAttribute = "octaclay.topology";
-constexpr const char* kWidthAttribute = "octaclay.width";
-constexpr const char* kHeightAttribute = "octaclay.height";
 constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
 // Rows per readPixels / writePixels call: enough line buffers for every thread of OpenEXR's pool,
 // while a band of layer texels stays small (8193 × 8 channels × 4 bytes × 128 rows = 34 MB).

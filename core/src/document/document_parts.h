@@ -14,6 +14,15 @@
 
 namespace octaclay::core::detail {
 
+// Header attributes a part of a document carries (docs/documents.md), read and written by
+// document_io (one object's image) and scene_io (the object's name and placement).
+inline constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
+// How the image closes up (core::Topology's name); absent in files of the ball alone. The torus's
+// and plane's width and height in cells, which must agree with the data window.
+inline constexpr const char* kTopologyAttribute = "octaclay.topology";
+inline constexpr const char* kWidthAttribute = "octaclay.width";
+inline constexpr const char* kHeightAttribute = "octaclay.height";
+
 /// OpenEXR's pool, one thread per core, started once: the thread count to hand OpenEXR's files.
 int exrThreads();
 

@@ -24,17 +24,15 @@ namespace octaclay::core {
 namespace fs = std::filesystem;
 
 namespace {
+using detail::kHeightAttribute, detail::kParameterizationAttribute, detail::kTopologyAttribute,
+    detail::kWidthAttribute;
 
 constexpr const char* kNameAttribute = "octaclay.name";
-constexpr const char* kWidthAttribute = "octaclay.width";
-constexpr const char* kHeightAttribute = "octaclay.height";
 constexpr const char* kTranslationAttribute = "octaclay.translation";
 constexpr const char* kRotationAttribute = "octaclay.rotation"; // Euler XYZ, degrees
 constexpr const char* kScaleAttribute = "octaclay.scale";
 constexpr const char* kVisibleAttribute = "octaclay.visible";
 constexpr const char* kLockedAttribute = "octaclay.locked";
-constexpr const char* kParameterizationAttribute = "octaclay.parameterization";
-constexpr const char* kTopologyAttribute = "octaclay.topology";
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
   throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);

@@ -9,6 +9,7 @@
 #include "merge/voxel_union.h"
 
 #include "octaclay/core/document/document_checks.h"
+#include "octaclay/core/document/object_transform.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
@@ -77,25 +78,12 @@ double surfaceArea(const TriangleMesh& mesh) {
 } // namespace
 
 PartTransform PartTransform::fromTrs(Vec3f translate, Vec3f rotateDegrees, Vec3f scale) {
-  const double k = std::numbers::pi / 180.0;
-  const double cx = std::cos(k * rotateDegrees.x), sx = std::sin(k * rotateDegrees.x);
-  const double cy = std::cos(k * rotateDegrees.y), sy = std::sin(k * rotateDegrees.y);
-  const double cz = std::cos(k * rotateDegrees.z), sz = std::sin(k * rotateDegrees.z);
-  // R = Rz · Ry · Rx (x applied first).
-  const double r[9] = {cz * cy,
-                       cz * sy * sx - sz * cx,
-                       cz * sy * cx + sz * sx,
-                       sz * cy,
-                       sz * sy * sx + cz * cx,
-                       sz * sy * cx - cz * sx,
-                       -sy,
-                       cy * sx,
-                       cy * cx};
+  // The scene's one convention (object_transform: R = Rz · Ry · Rx, then the scale per axis).
+  const std::array<double, 9> linear = linearPart({translate, rotateDegrees, scale});
   PartTransform t;
-  const double s[3] = {scale.x, scale.y, scale.z};
-  for (int row = 0; row < 3; ++row)
-    for (int col = 0; col < 3; ++col)
-      t.m[std::size_t(row * 4 + col)] = r[row * 3 + col] * s[col];
+  for (std::size_t row = 0; row < 3; ++row)
+    for (std::size_t col = 0; col < 3; ++col)
+      t.m[row * 4 + col] = linear[row * 3 + col];
   t.m[3] = translate.x, t.m[7] = translate.y, t.m[11] = translate.z;
   return t;
 }
