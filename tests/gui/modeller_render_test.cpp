@@ -709,6 +709,11 @@ void ModellerRenderTest::largeDocumentsLoadAndSaveWithProgressWhileTheWindowResp
   probe.start(20);
   QVERIFY(window_->newDocument(core::BaseShape::Sphere, 4096, true));
   QCOMPARE(window_->viewport()->modeller().document().size(), 4096);
+  // The person sees the model before saving it: its first frame (the one that builds its mesh)
+  // is drawn before the save, as it is when the window is on screen.
+  QSignalSpy painted(window_->viewport(), &app::ViewportWidget::framePainted);
+  window_->viewport()->update();
+  QTRY_VERIFY(painted.count() > 0);
   const QString path = dir_.filePath("large.exr");
   // The GUI thread must keep running through the work (the probe ticks every 20 ms), and work
   // long enough for a person to notice (over 300 ms here) must have shown the dialog.
