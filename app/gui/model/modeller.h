@@ -82,6 +82,14 @@ public:
   bool setObjectVisible(int k, bool visible);
   bool setObjectLocked(int k, bool locked);
   QString renameObject(int k, const QString& name);
+  /// Places object k (the door every move, rotation and scale goes through: the G/R/S mode's
+  /// confirm, the CLI's transform): returns why a transform is refused (transformProblem), empty
+  /// when it was taken; objectsChanged follows a change.
+  QString setObjectTransform(int k, const core::ObjectTransform& transform);
+  /// Shows object k under transform while a G/R/S gesture runs, recording nothing and leaving
+  /// the document unmodified (objectMoved follows); setObjectTransform or a preview of the
+  /// transform before ends it. Returns false for an index out of range or a refused transform.
+  bool previewObjectTransform(int k, const core::ObjectTransform& transform);
   /// Whether the edited object is shown (the Objects dock's eye): hidden, it is neither drawn
   /// nor picked. True without a scene.
   bool activeShown() const {
@@ -169,6 +177,8 @@ signals:
   /// An object was added, removed, renamed, shown, hidden, locked or unlocked by the user (the
   /// scene differs from its file).
   void objectsChanged();
+  /// Object k is shown under a previewed transform (previewObjectTransform): redraw only.
+  void objectMoved(int k);
   /// Something asked for was refused (a stroke on a locked object): why, for the status bar.
   void refused(const QString& why);
   /// setActiveObject is about to switch (the history, still the old object's, is cleared next).

@@ -34,6 +34,22 @@ QString Modeller::renameObject(int k, const QString& name) {
   return {};
 }
 
+QString Modeller::setObjectTransform(int k, const core::ObjectTransform& transform) {
+  if (k < 0 || k >= objectCount()) return tr("There is no object %1").arg(k + 1);
+  if (const auto problem = core::transformProblem(transform))
+    return QString::fromStdString(*problem);
+  scene_.objects[std::size_t(k)].transform = transform;
+  emit objectsChanged();
+  return {};
+}
+
+bool Modeller::previewObjectTransform(int k, const core::ObjectTransform& transform) {
+  if (k < 0 || k >= objectCount() || core::transformProblem(transform)) return false;
+  scene_.objects[std::size_t(k)].transform = transform;
+  emit objectMoved(k);
+  return true;
+}
+
 bool Modeller::activeLocked() const {
   return active_ >= 0 && active_ < objectCount() && scene_.objects[std::size_t(active_)].locked;
 }

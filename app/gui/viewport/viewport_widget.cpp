@@ -48,10 +48,8 @@ ViewportWidget::ViewportWidget(Modeller& modeller, QWidget* parent)
   overlay_ = new ViewportOverlay(this);
   connect(&modeller_, &Modeller::documentReplaced, this, &ViewportWidget::documentReplaced);
   connect(&modeller_, &Modeller::surfaceChanged, this, [this] { update(); });
-  connect(&modeller_, &Modeller::objectsChanged, this, [this] {
-    if (frames_->ready()) frames_->objectsChanged();
-    update();
-  });
+  connect(&modeller_, &Modeller::objectsChanged, this, [this] { objectMoved(-1); });
+  connect(&modeller_, &Modeller::objectMoved, this, &ViewportWidget::objectMoved);
   connect(&modeller_.brushState(), &BrushState::changed, this, [this] { update(); });
 }
 
@@ -341,16 +339,6 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
   drag_ = Drag::None;
   if (objectClick) selectObjectAt(event->position());
   strokes_.setHover(pickAt(event->position()));
-}
-
-void ViewportWidget::selectObjectAt(QPointF p) {
-  if (!modeller_.session().hasDocument() || width() <= 0 || height() <= 0) return;
-  const QRectF view = modelRect();
-  if (p.x() >= view.width()) p.rx() -= view.width();
-  const std::optional<int> k =
-      pickObject(modeller_, viewRay(*renderer()->GetActiveCamera(), view.size(), p));
-  if (k && *k != modeller_.activeObject()) modeller_.setActiveObject(*k);
-  update();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {

@@ -164,6 +164,8 @@ private:
   enum class Drag { None, Sculpt, Orbit, Pan, ObjectClick };
 
   void documentReplaced(bool keepView);
+  // Object k moved (-1: objects changed): the other objects' actors are rebuilt, then a frame.
+  void objectMoved(int k);
   /// The brush ring at the hovered point, if one is shown.
   std::optional<BrushRing> ring() const;
   /// Alt+click: makes the visible object under widget position p the edited one
