@@ -103,6 +103,15 @@ public:
   /// Removes the edited object; the one before it (or the next) becomes the edited one. Returns
   /// why it was refused (the last object, a stroke being made), empty on success.
   QString deleteActiveObject();
+  /// Replaces the objects at `removed` (indices, at least one, the edited one may be among them)
+  /// by `added` (named uniquely), appended and made the edited one: Objects ▸ Merge's door, one
+  /// step labelled label. Returns why it was refused (an index out of range, a stroke being
+  /// made, the upload failed), empty on success.
+  QString replaceObjects(const std::vector<int>& removed, core::SceneObject added,
+                         const QString& label);
+  /// Moves object `from` to position `to` in the scene's order (the Objects dock's drag): the
+  /// edited object stays the edited one. False for an index out of range.
+  bool moveObject(int from, int to);
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
   /// The model's bounding-box diagonal (1 without a document): the unit of the brush radius.
