@@ -174,6 +174,18 @@ public:
   /// A stroke ended (StrokeDriver): label names the step recorded, empty when none was.
   void strokeSettled(const QString& label);
 
+  /// Objects ▸ Duplicate and Mirror Duplicate (modeller_object_commands.cpp): a copy of the
+  /// edited object, its document as edited so far, named from its name ("Body" → "Body.001"),
+  /// shown and unlocked, appended through addObject and made the edited one. mirrorAxis 0, 1 or
+  /// 2: mirrored across the scene's plane through the origin normal to x, y or z
+  /// (core::mirrorDocument with core::mirroredTransform, exact); -1: in place, bit for bit.
+  /// Returns why it was refused (no document, a stroke being made, the scene full, the upload
+  /// failed), empty on success.
+  QString duplicateActiveObject(int mirrorAxis = -1);
+  /// The edited object's samples in world space, boxed (Frame Selected); empty without a
+  /// document.
+  core::BoundingBox activeWorldBounds() const;
+
 signals:
   /// A step was recorded by a stroke (labelled with its brush).
   void strokeFinished(const QString& label);
