@@ -1,6 +1,7 @@
 #include "objects_panel.h"
 
 #include "modeller.h"
+#include "object_list.h"
 
 #include <QHeaderView>
 #include <QPushButton>
@@ -11,7 +12,7 @@ namespace octaclay::app {
 
 ObjectsPanel::ObjectsPanel(Modeller& modeller, QWidget* parent)
     : QWidget(parent), modeller_(modeller) {
-  list_ = new QTreeWidget(this);
+  list_ = new ObjectList(this);
   list_->setObjectName("objectsList");
   list_->setColumnCount(3);
   list_->setHeaderLabels({tr("Object"), tr("Shown"), tr("Locked")});
@@ -33,6 +34,9 @@ ObjectsPanel::ObjectsPanel(Modeller& modeller, QWidget* parent)
 
   connect(list_, &QTreeWidget::itemChanged, this, &ObjectsPanel::itemChanged);
   connect(list_, &QTreeWidget::currentItemChanged, this, &ObjectsPanel::rowActivated);
+  connect(list_, &ObjectList::moveRequested, this, [this](int from, int to) {
+    if (!modeller_.moveObject(from, to)) rebuild();
+  });
   connect(delete_, &QPushButton::clicked, this, [this] {
     const QString why = modeller_.deleteActiveObject();
     if (!why.isEmpty()) emit message(why);
@@ -60,10 +64,19 @@ void ObjectsPanel::rebuild() {
     item->setToolTip(Visible, tr("Shown in the view"));
     item->setToolTip(Locked, tr("Locked: not sculpted"));
   }
-  if (QTreeWidgetItem* active = list_->topLevelItem(modeller_.activeObject()))
+  // The selection stays while the edited object is the current row (a Ctrl+click made it so);
+  // an object made the edited one elsewhere (Alt+click, Add) becomes the one row selected.
+  if (QTreeWidgetItem* active = list_->topLevelItem(modeller_.activeObject());
+      active && list_->currentItem() != active)
     list_->setCurrentItem(active);
   delete_->setEnabled(modeller_.objectCount() > 1);
   rebuilding_ = false;
+}
+
+std::vector<int> ObjectsPanel::selectedObjects() const {
+  std::vector<int> rows = list_->selectedRows();
+  if (rows.empty() && modeller_.objectCount() > 0) rows.push_back(modeller_.activeObject());
+  return rows;
 }
 
 void ObjectsPanel::itemChanged(QTreeWidgetItem* item, int column) {
