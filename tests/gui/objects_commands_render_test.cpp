@@ -29,6 +29,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QtTest>
 #include <vtkCamera.h>
@@ -273,6 +274,15 @@ void ObjectsCommandsRenderTest::mirrorDuplicateIsExactOnEveryAxis() {
   }
   QCOMPARE(objectNames(modeller),
            QStringList({"Body", "Box", "Lump", "Body.001", "Body.002", "Body.003"}));
+  // The tool bar's Mirror X button does the same, and says what it does.
+  auto* button = window_->findChild<QToolButton*>("mirrorDuplicateButton");
+  QVERIFY(button && button->isVisible());
+  QCOMPARE(button->text(), QString("Mirror X"));
+  QVERIFY(modeller.setActiveObject(0));
+  button->click();
+  QCOMPARE(modeller.objectCount(), 7);
+  QVERIFY(samePositions(modeller.document(), core::mirrorDocument(body, 0)));
+  QCOMPARE(button->text(), QString("Mirror X"));
 }
 
 void ObjectsCommandsRenderTest::hKeysHideAndShowWhatIsDrawnAndPicked() {

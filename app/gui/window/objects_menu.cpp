@@ -111,8 +111,11 @@ void addToolBar(MainWindow& window, QMenu* mirror) {
   bar->addAction(window.action("actionDuplicateObject"));
   auto* mirrorButton = new QToolButton(bar);
   mirrorButton->setObjectName(QStringLiteral("mirrorDuplicateButton"));
-  mirrorButton->setDefaultAction(window.action("actionMirrorDuplicateX"));
-  mirrorButton->setText(MainWindow::tr("Mirror X"));
+  QAction* mirrorX = window.action("actionMirrorDuplicateX");
+  // What a tool button shows (and shows again whenever the action changes): "Across X" needs
+  // its menu to be understood.
+  mirrorX->setIconText(MainWindow::tr("Mirror X"));
+  mirrorButton->setDefaultAction(mirrorX);
   mirrorButton->setMenu(mirror);
   mirrorButton->setPopupMode(QToolButton::MenuButtonPopup);
   bar->addWidget(mirrorButton);
