@@ -90,6 +90,21 @@ core::Scene ballsScene(int n) {
   return scene;
 }
 
+// Eight balls of radius 0.5 on a circle of radius 1 about the z axis, each overlapping the next
+// by 0.23: a ring, whose union has genus 1, N = 64.
+core::Scene ringOfBalls() {
+  core::Scene scene;
+  for (int k = 0; k < 8; ++k) {
+    const float a = float(k) * float(M_PI) / 4;
+    scene.objects.push_back({k == 0 ? std::string("Bead") : "Bead." + std::to_string(k),
+                             shape(core::BaseShape::Sphere, 64),
+                             {{std::cos(a), std::sin(a), 0.0f}, {}, {0.5f, 0.5f, 0.5f}},
+                             true,
+                             false});
+  }
+  return scene;
+}
+
 QStringList rowNames(const QTreeWidget& list) {
   QStringList names;
   for (int k = 0; k < list.topLevelItemCount(); ++k)
@@ -143,6 +158,7 @@ private slots:
   void hKeysHideAndShowWhatIsDrawnAndPicked();
   void keypadPeriodFramesTheEditedObject();
   void mergeUnitesTouchingBallsAndRefusesApartOnes();
+  void mergeRefusesARingNamingItsGenus();
   void cancelledMergeChangesNothing();
   void draggingARowReordersTheScene();
 
@@ -465,6 +481,29 @@ void ObjectsCommandsRenderTest::mergeUnitesTouchingBallsAndRefusesApartOnes() {
   QCOMPARE(rowNames(*list), objectNames(modeller));
   QVERIFY(window_->isModified());
   QVERIFY(window_->statusBar()->currentMessage().startsWith("Merged 2 objects"));
+}
+
+void ObjectsCommandsRenderTest::mergeRefusesARingNamingItsGenus() {
+  FakeInput input;
+  app::ViewportWidget* view = open(ringOfBalls(), "ring.exr", input);
+  QVERIFY(view);
+  app::Modeller& modeller = *window_->modeller();
+  const core::Scene before = modeller.scene();
+  // One row selected (the edited one): Merge takes every shown object, the whole ring.
+  window_->action("actionMergeObjects")->trigger();
+  auto* merger = window_->findChild<app::ObjectMerge*>("objectMerge");
+  QVERIFY(merger);
+  QVERIFY2(merger->lastRefusal().contains("genus 1"), qPrintable(merger->lastRefusal()));
+  auto* box = window_->findChild<QMessageBox*>("mergeRefusal");
+  QVERIFY(box && box->text().contains("genus 1"));
+  QCOMPARE(modeller.objectCount(), 8);
+  for (int k = 0; k < 8; ++k) {
+    const core::Document& document =
+        k == modeller.activeObject() ? modeller.document() : modeller.objectAt(k).document;
+    QVERIFY(samePositions(document, before.objects[std::size_t(k)].document));
+    QCOMPARE(modeller.objectAt(k).name, before.objects[std::size_t(k)].name);
+  }
+  QVERIFY(!window_->isModified());
 }
 
 void ObjectsCommandsRenderTest::cancelledMergeChangesNothing() {
