@@ -15,6 +15,7 @@
 #include "lod_generator.h"
 #include "lod_panel.h"
 #include "modeller.h"
+#include "object_transform_actions.h"
 #include "objects_panel.h"
 #include "sparse_sampling_hint.h"
 #include "user_messages.h"
@@ -74,6 +75,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   addHelpMenu(*this);
   connectParts();
   addBrushBars(*this, *viewport_, modeller_->brushState());
+  addObjectTransformActions(*this);
   qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
   new SparseSamplingHint(viewport_, statusBar(), action("actionRemesh"), this);
 
