@@ -397,6 +397,44 @@ void ObjectTransformRenderTest::gizmoArrowsAreOnScreenAndADragMovesAlongOneAxis(
   const QPointF moved = onView(*view, after.translation) - onView(*view, before.translation);
   QVERIFY2(std::abs(QPointF::dotProduct(moved, along) - 60) < 4,
            qPrintable(QString("moved %1 px along").arg(QPointF::dotProduct(moved, along))));
+
+  // The white ring: on screen where the gizmo says, gone with Object Mode off.
+  input.moveTo(QGuiApplication::primaryScreen()->geometry().bottomRight());
+  QTest::qWait(300);
+  const QPointF c0 = (*gizmo->arrows())[0].from;
+  const QPoint onRing =
+      (c0 + QPointF(-1, -1) / std::sqrt(2.0) * app::TransformGizmo::kRingPixels).toPoint();
+  const QColor ring = onScreen(view).pixelColor(onRing);
+  QVERIFY2(std::min({ring.red(), ring.green(), ring.blue()}) > 200, qPrintable(ring.name()));
+  window_->action("actionObjectMode")->setChecked(false);
+  QVERIFY(!gizmo->arrows());
+  QTest::qWait(300);
+  const QColor without = onScreen(view).pixelColor(onRing);
+  QVERIFY2(std::max({std::abs(without.red() - ring.red()), std::abs(without.green() - ring.green()),
+                     std::abs(without.blue() - ring.blue())}) > 20,
+           qPrintable(ring.name() + " " + without.name()));
+  window_->action("actionObjectMode")->setChecked(true);
+
+  // A real drag on the ring, outward: a uniform scale by the pointer's distance to the origin
+  // against the ring's radius, placed at the release; nothing else changes.
+  const QPoint grab = (c0 + QPointF(0, -app::TransformGizmo::kRingPixels)).toPoint();
+  const QPoint release = grab + QPoint(0, -58);
+  const double factor = std::hypot(release.x() - c0.x(), release.y() - c0.y()) /
+                        std::hypot(grab.x() - c0.x(), grab.y() - c0.y());
+  QCOMPARE(gizmo->arrowAt(grab), app::TransformGizmo::kRing);
+  input.moveTo(view->mapToGlobal(grab));
+  input.button(1, true);
+  for (int k = 1; k <= 6; ++k)
+    input.moveTo(view->mapToGlobal(grab + (release - grab) * k / 6));
+  input.button(1, false);
+  QVERIFY(QTest::qWaitFor([&] { return placed.count() == 2; }, 2000));
+  const core::ObjectTransform grown = modeller.objectAt(1).transform;
+  QVERIFY2(std::abs(grown.scale.x / after.scale.x / factor - 1) < 0.02,
+           qPrintable(describe(grown)));
+  QCOMPARE(grown.scale.y, grown.scale.x);
+  QCOMPARE(grown.scale.z, grown.scale.x);
+  QVERIFY(bitSame({grown.translation, grown.rotationDegrees, after.scale}, after));
+  QVERIFY(!modeller.canUndo());
 }
 
 QTEST_MAIN(ObjectTransformRenderTest)

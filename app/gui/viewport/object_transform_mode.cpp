@@ -101,6 +101,16 @@ bool ObjectTransformMode::beginAxisDrag(int axis, QPointF pressPos) {
   return true;
 }
 
+bool ObjectTransformMode::beginScaleDrag(QPointF pressPos) {
+  if (!viewport_ || kind_ != Kind::None || viewport_->stroking()) return false;
+  dragging_ = true;
+  if (!start(Kind::Scale, pressPos)) {
+    dragging_ = false;
+    return false;
+  }
+  return true;
+}
+
 bool ObjectTransformMode::start(Kind kind, QPointF origin) {
   Modeller& modeller = viewport_->modeller();
   if (!modeller.hasDocument() || modeller.objectCount() == 0) return false;

@@ -48,6 +48,8 @@ public:
   /// The gizmo's drag: a move along world axis (0, 1, 2) from pointer position pressPos
   /// (viewport pixels) whose left-button release keeps it. Refused as begin().
   bool beginAxisDrag(int axis, QPointF pressPos);
+  /// The gizmo's ring: a uniform scale from pressPos whose left-button release keeps it.
+  bool beginScaleDrag(QPointF pressPos);
   void confirm();
   void cancel();
 

@@ -12,6 +12,7 @@
 #include <vtkRenderer.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace octaclay::app {
 namespace {
@@ -24,6 +25,19 @@ double distanceToSegment(QPointF p, QPointF a, QPointF b) {
       squared > 0 ? std::clamp(QPointF::dotProduct(p - a, ab) / squared, 0.0, 1.0) : 0.0;
   const QPointF d = p - (a + ab * t);
   return std::hypot(d.x(), d.y());
+}
+
+// A circle as straight segments, each its own line: Qt's GL paint engine on the viewport's
+// native window (no stencil buffer) fills an ellipse's or a multi-line stroke as its bounding
+// box there; one line at a time it draws right.
+void drawCircle(QPainter& p, QPointF centre, double radius, int segments) {
+  QPointF last = centre + QPointF(radius, 0);
+  for (int k = 1; k <= segments; ++k) {
+    const double angle = 2 * std::numbers::pi * k / segments;
+    const QPointF next = centre + QPointF(radius * std::cos(angle), radius * std::sin(angle));
+    p.drawLine(last, next);
+    last = next;
+  }
 }
 
 } // namespace
@@ -94,7 +108,10 @@ int TransformGizmo::arrowAt(QPointF p) const {
       best = k;
     }
   }
-  return best;
+  if (best >= 0) return best;
+  const QPointF c0 = (*drawn)[0].from;
+  const double fromCentre = std::hypot(p.x() - c0.x(), p.y() - c0.y());
+  return std::abs(fromCentre - kRingPixels) <= kGrabPixels ? kRing : -1;
 }
 
 void TransformGizmo::paint(QPainter& p) const {
@@ -120,9 +137,12 @@ void TransformGizmo::paint(QPainter& p) const {
     p.setBrush(colour);
     p.drawPath(head);
   }
+  const QPointF c0 = (*drawn)[0].from;
   p.setPen(QPen(QColor(255, 255, 255, 230), 2));
-  p.setBrush(Qt::NoBrush);
-  p.drawEllipse((*drawn)[0].from, 5, 5);
+  drawCircle(p, c0, 5, 12);
+  const bool scaling = mode_ && mode_->kind() == ObjectTransformMode::Kind::Scale;
+  p.setPen(QPen(QColor(255, 255, 255, scaling ? 255 : 220), scaling ? 4 : 3));
+  drawCircle(p, c0, kRingPixels, 96);
 }
 
 bool TransformGizmo::eventFilter(QObject* watched, QEvent* event) {
@@ -130,9 +150,10 @@ bool TransformGizmo::eventFilter(QObject* watched, QEvent* event) {
   auto* mouse = static_cast<QMouseEvent*>(event);
   if (mouse->button() != Qt::LeftButton || mouse->modifiers() != Qt::NoModifier) return false;
   if (mode_->kind() != ObjectTransformMode::Kind::None) return false;
-  const int axis = arrowAt(mouse->position());
-  if (axis < 0) return false;
-  return mode_->beginAxisDrag(axis, mouse->position());
+  const int handle = arrowAt(mouse->position());
+  if (handle < 0) return false;
+  if (handle == kRing) return mode_->beginScaleDrag(mouse->position());
+  return mode_->beginAxisDrag(handle, mouse->position());
 }
 
 } // namespace octaclay::app
