@@ -102,6 +102,7 @@ private slots:
   void moveFollowsThePointerAndAClickKeepsIt();
   void escAndRightClickPutTheObjectBackBitForBit();
   void lockedObjectIsRefusedWithAMessage();
+  void brushKeysComeBackWhenABrushIsPicked();
   void aStrokeAfterAMoveSculptsTheObjectWhereItNowIs();
   void gizmoArrowsAreOnScreenAndADragMovesAlongOneAxis();
 
@@ -286,6 +287,36 @@ void ObjectTransformRenderTest::lockedObjectIsRefusedWithAMessage() {
   QVERIFY(window_->statusBar()->currentMessage().contains("Body"));
   input.type("0.5");
   input.press({XK_Return});
+  QCOMPARE(modeller.objectAt(0).transform, core::ObjectTransform{});
+}
+
+void ObjectTransformRenderTest::brushKeysComeBackWhenABrushIsPicked() {
+  XTestInput input;
+  QVERIFY2(openScene(input), "no xcb window with XTEST input");
+  app::Modeller& modeller = *window_->modeller();
+  auto* mode = window_->findChild<ObjectTransformMode*>(QStringLiteral("objectTransformMode"));
+  QAction* objectMode = window_->action("actionObjectMode");
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  // Out of Object Mode S picks Smooth and starts nothing.
+  input.press({XK_s});
+  QVERIFY(QTest::qWaitFor(
+      [&] { return window_->brushState()->currentBrushId() == QString("smooth"); }, 2000));
+  QCOMPARE(mode->kind(), ObjectTransformMode::Kind::None);
+  // In it S scales (the brush stays); Esc.
+  objectMode->setChecked(true);
+  QVERIFY(window_->brushState()->selectBrush("push"));
+  input.press({XK_s});
+  QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::Scale; }, 2000));
+  input.press({XK_Escape});
+  QCOMPARE(window_->brushState()->currentBrushId(), QString("push"));
+  // A brush's key (C: Clay Strips) leaves Object Mode; S is Smooth's again.
+  input.press({XK_c});
+  QVERIFY(QTest::qWaitFor([&] { return !objectMode->isChecked(); }, 2000));
+  QCOMPARE(window_->brushState()->currentBrushId(), QString("clay-strips"));
+  input.press({XK_s});
+  QVERIFY(QTest::qWaitFor(
+      [&] { return window_->brushState()->currentBrushId() == QString("smooth"); }, 2000));
+  QCOMPARE(mode->kind(), ObjectTransformMode::Kind::None);
   QCOMPARE(modeller.objectAt(0).transform, core::ObjectTransform{});
 }
 

@@ -1,6 +1,7 @@
 #include "object_transform_actions.h"
 
 #include "brush_state.h"
+#include "brush_toolbar.h"
 #include "main_window.h"
 #include "modeller.h"
 #include "object_transform_mode.h"
@@ -118,6 +119,10 @@ void addObjectTransformActions(MainWindow& window) {
                        if (objectMode->isChecked()) giveKeys(window, true, gestures);
                      });
                    });
+  // A brush picked (its icon or its key) means sculpting again: Object Mode goes off.
+  if (auto* brushes = window.findChild<BrushToolBar*>())
+    QObject::connect(brushes, &BrushToolBar::brushChosen, objectMode,
+                     [objectMode] { objectMode->setChecked(false); });
   // A new object shows its arrows: Add ▸ <shape> turns Object Mode on.
   for (QAction* a : menu->actions())
     if (a->objectName().startsWith(QStringLiteral("actionAdd")))
