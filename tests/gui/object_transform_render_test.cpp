@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <numbers>
 
 using namespace octaclay;
 using app::MainWindow;
@@ -100,6 +101,7 @@ private slots:
   void cleanup();
   void typedAmountsAreKeptExactlyOnAnObjectPickedWithAltClick();
   void moveFollowsThePointerAndAClickKeepsIt();
+  void rotateAndScaleFollowThePointer();
   void escAndRightClickPutTheObjectBackBitForBit();
   void lockedObjectIsRefusedWithAMessage();
   void brushKeysComeBackWhenABrushIsPicked();
@@ -237,6 +239,51 @@ void ObjectTransformRenderTest::moveFollowsThePointerAndAClickKeepsIt() {
   QVERIFY(bitSame(modeller.objectAt(1).transform, shown));
   QVERIFY(!modeller.canUndo());
   QVERIFY(!view->stroking());
+}
+
+void ObjectTransformRenderTest::rotateAndScaleFollowThePointer() {
+  XTestInput input;
+  QVERIFY2(openScene(input), "no xcb window with XTEST input");
+  app::Modeller& modeller = *window_->modeller();
+  app::ViewportWidget* view = window_->viewport();
+  auto* mode = window_->findChild<ObjectTransformMode*>(QStringLiteral("objectTransformMode"));
+  QVERIFY(modeller.setActiveObject(1)); // Left: no rotation
+  window_->action("actionObjectMode")->setChecked(true);
+  const core::ObjectTransform before = modeller.objectAt(1).transform;
+  const QPointF c0 = onView(*view, before.translation);
+  // R, then the pointer a quarter turn counter-clockwise round the origin's place on screen
+  // (right of it to above it): a quarter turn about the axis toward the eye (+z from the front).
+  input.moveTo(view->mapToGlobal((c0 + QPointF(80, 0)).toPoint()));
+  input.press({XK_r});
+  QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::Rotate; }, 2000));
+  for (int k = 1; k <= 9; ++k) {
+    const double a = std::numbers::pi / 2 * k / 9;
+    input.moveTo(view->mapToGlobal((c0 + QPointF(80 * std::cos(a), -80 * std::sin(a))).toPoint()));
+  }
+  QVERIFY2(window_->statusBar()->currentMessage().startsWith("Rotate: "),
+           qPrintable(window_->statusBar()->currentMessage()));
+  input.press({XK_Return});
+  QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::None; }, 2000));
+  const core::ObjectTransform turned = modeller.objectAt(1).transform;
+  QVERIFY2(std::abs(turned.rotationDegrees.z - 90.0f) < 2.0f &&
+               std::abs(turned.rotationDegrees.x) < 0.01f &&
+               std::abs(turned.rotationDegrees.y) < 0.01f,
+           qPrintable(describe(turned)));
+  QCOMPARE(turned.translation, before.translation); // about its origin
+  QCOMPARE(turned.scale, before.scale);
+  // S, the pointer from 50 to 125 pixels from the origin's place: 2.5 times as large.
+  input.moveTo(view->mapToGlobal((c0 + QPointF(0, 50)).toPoint()));
+  input.press({XK_s});
+  QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::Scale; }, 2000));
+  for (int k = 1; k <= 5; ++k)
+    input.moveTo(view->mapToGlobal((c0 + QPointF(0, 50 + 15 * k)).toPoint()));
+  input.press({XK_Return});
+  QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::None; }, 2000));
+  const core::ObjectTransform grown = modeller.objectAt(1).transform;
+  QVERIFY2(std::abs(grown.scale.x / before.scale.x - 2.5f) < 0.08f, qPrintable(describe(grown)));
+  QCOMPARE(grown.scale.y, grown.scale.x);
+  QCOMPARE(grown.scale.z, grown.scale.x);
+  QCOMPARE(grown.translation, before.translation);
 }
 
 void ObjectTransformRenderTest::escAndRightClickPutTheObjectBackBitForBit() {
