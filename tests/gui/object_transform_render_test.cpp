@@ -233,6 +233,12 @@ void ObjectTransformRenderTest::moveFollowsThePointerAndAClickKeepsIt() {
   // In the view's plane: the front view's depth (z) kept.
   QCOMPARE(shown.translation.z, before.translation.z);
   QVERIFY(shown.translation.x > before.translation.x && shown.translation.y < before.translation.y);
+  // Other keys are the gesture's too: Delete and Ctrl+Z do nothing under the preview.
+  input.press({XK_Delete});
+  input.press({XK_Control_L, XK_z});
+  QCOMPARE(modeller.objectCount(), 3);
+  QCOMPARE(mode->kind(), ObjectTransformMode::Kind::Move);
+  QVERIFY(bitSame(modeller.objectAt(1).transform, shown));
   // A left click keeps it, and its release reaches nothing else (no stroke).
   input.click(1);
   QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::None; }, 2000));

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <numbers>
 #include <optional>
 
@@ -356,18 +355,14 @@ bool ObjectTransformMode::eventFilter(QObject* watched, QEvent* event) {
   }
   case QEvent::ShortcutOverride:
   case QEvent::KeyPress: {
+    // Every key is the gesture's while it runs (as in Blender): no shortcut (an undo, a brush,
+    // Delete) acts on the scene under a preview. Only its own keys do something.
     auto* keyEvent = static_cast<QKeyEvent*>(event);
     const int key = keyEvent->key();
-    if (keyEvent->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-      return false;
-    static const int kOwn[] = {Qt::Key_Escape,   Qt::Key_Return, Qt::Key_Enter,  Qt::Key_X,
-                               Qt::Key_Y,        Qt::Key_Z,      Qt::Key_G,      Qt::Key_R,
-                               Qt::Key_S,        Qt::Key_Minus,  Qt::Key_Period, Qt::Key_Comma,
-                               Qt::Key_Backspace};
-    const bool digit = keyEvent->text().size() == 1 && keyEvent->text()[0].isDigit();
-    if (!digit && std::find(std::begin(kOwn), std::end(kOwn), key) == std::end(kOwn)) return false;
     event->accept();
     if (type != QEvent::KeyPress || keyEvent->isAutoRepeat()) return true;
+    if (keyEvent->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
+      return true;
     if (key == Qt::Key_Escape) {
       end(false);
     } else if (key == Qt::Key_Return || key == Qt::Key_Enter) {

@@ -30,7 +30,8 @@ class ViewportWidget;
 /// keeps it: the preview goes back to the transform before and one Modeller::setObjectTransform
 /// places the object (one step). Esc, a right click or a refused transform cancels: the object
 /// is shown under its transform before, bit for bit. While it runs it watches the whole
-/// application's input and lets no click or key it uses through. GUI thread.
+/// application's input and lets no click and no key through (no shortcut, Ctrl+Z included,
+/// acts under a preview). GUI thread.
 class ObjectTransformMode : public QObject {
   Q_OBJECT
 public:
