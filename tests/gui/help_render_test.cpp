@@ -138,7 +138,9 @@ void HelpRenderTest::shortcutSheetListsEveryActionWithAShortcut() {
                  qPrintable(a->text() + ": " + table->item(r, 0)->text()));
     }
     QVERIFY2(listed, qPrintable(a->objectName() + " " + a->text() + " is not in the sheet"));
-    // No key belongs to two actions: Qt would call it ambiguous and run neither.
+    // No key belongs to two actions: Qt would call it ambiguous and run neither. (Move, Rotate
+    // and Scale show G, R and S but answer them only inside their menu out of Object Mode.)
+    if (a->shortcutContext() == Qt::WidgetShortcut) continue;
     for (const QKeySequence& k : a->shortcuts()) {
       QVERIFY2(!owner.count(k), qPrintable(k.toString() + ": " + owner[k] + " and " + a->text()));
       owner[k] = a->text();

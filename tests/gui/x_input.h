@@ -40,6 +40,10 @@ public:
     XTestFakeButtonEvent(display_, button, down, 0);
     settle();
   }
+  void click(unsigned int button) {
+    this->button(button, true);
+    this->button(button, false);
+  }
   /// The key the symbol is on, at whatever level: XK_KP_Decimal is the keypad's ./Delete key,
   /// which gives KP_Delete with NumLock off.
   void key(KeySym symbol, bool down) {
@@ -63,6 +67,15 @@ public:
       key(k, true);
     for (auto k = std::rbegin(chord); k != std::rend(chord); ++k)
       key(*k, false);
+  }
+  /// Each character typed as its own key: digits, '.', '-', lower-case letters.
+  void type(const char* text) {
+    for (const char* c = text; *c; ++c) {
+      const KeySym symbol = *c == '.'   ? XK_period
+                            : *c == '-' ? XK_minus
+                                        : static_cast<KeySym>(static_cast<unsigned char>(*c));
+      press({symbol});
+    }
   }
 
 private:

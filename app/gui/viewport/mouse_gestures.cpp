@@ -18,6 +18,8 @@ QList<Gesture> viewportGestures() {
       {tr("Right-drag or middle-drag"), tr("Orbit the view")},
       {tr("Left-drag off the model (or Alt + left-drag)"), tr("Orbit the view")},
       {tr("Alt + click on another object"), tr("Edit that object (its undo history starts anew)")},
+      {tr("Left-drag an arrow (Object Mode)"), tr("Move the object along that axis")},
+      {tr("Left-drag the white ring (Object Mode)"), tr("Scale the object")},
       {tr("Shift + middle-drag or Ctrl + right-drag"), tr("Pan the view")},
       {tr("Shift + left-drag off the model"), tr("Pan the view")},
       {tr("Mouse wheel"), tr("Zoom")},

@@ -307,11 +307,12 @@ void ViewportFrames::paint(QSize size, const std::optional<BrushRing>& ring) {
 }
 
 void ViewportFrames::paintMarks(QPaintDevice& device) {
-  if (!framePainter_ || !model_ || modeller_.uploading()) return;
+  if ((!framePainter_ && !gizmoPainter_) || !model_ || modeller_.uploading()) return;
   {
     // Qt's GL paint engine sets and resets its own state; VTK's cache of it is stale after.
     QPainter painter(&device);
-    framePainter_(painter);
+    if (gizmoPainter_) gizmoPainter_(painter);
+    if (framePainter_) framePainter_(painter);
   }
   renderWindow_->GetState()->Reset();
 }

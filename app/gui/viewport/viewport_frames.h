@@ -64,6 +64,7 @@ public:
   /// The frame painter's marks over the frame just drawn.
   void paintMarks(QPaintDevice& device);
   void setFramePainter(std::function<void(QPainter&)> paint) { framePainter_ = std::move(paint); }
+  void setGizmoPainter(std::function<void(QPainter&)> paint) { gizmoPainter_ = std::move(paint); }
 
   void setLooks(const ViewLooks& looks);
   const ViewLooks& looks() const { return looks_; }
@@ -126,6 +127,7 @@ private:
   QString loadedMatcap_; // the matcap model_ holds, empty before the first
   QString error_;
   std::function<void(QPainter&)> framePainter_;
+  std::function<void(QPainter&)> gizmoPainter_; // under framePainter_'s marks
 };
 
 } // namespace octaclay::app

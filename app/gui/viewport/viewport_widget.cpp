@@ -177,6 +177,10 @@ void ViewportWidget::setFramePainter(std::function<void(QPainter&)> paint) {
   frames_->setFramePainter(std::move(paint));
   update();
 }
+void ViewportWidget::setGizmoPainter(std::function<void(QPainter&)> paint) {
+  frames_->setGizmoPainter(std::move(paint));
+  update();
+}
 
 void ViewportWidget::setLevelDivisor(int divisor) {
   try {

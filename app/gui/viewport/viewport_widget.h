@@ -92,6 +92,8 @@ public:
   /// 2D marks painted over every frame the GL window shows (the F / Shift+F ring and value): a
   /// widget over the native window would hide the model. Not in renderImage(). Empty: none.
   void setFramePainter(std::function<void(QPainter&)> paint);
+  /// The object gizmo's arrows, painted under the frame painter's marks. Empty: none.
+  void setGizmoPainter(std::function<void(QPainter&)> paint);
   /// The legend and half labels over the view.
   ViewportOverlay* overlay() const { return overlay_; }
 

@@ -16,6 +16,7 @@
 #include "lod_panel.h"
 #include "modeller.h"
 #include "objects_menu.h"
+#include "object_transform_actions.h"
 #include "objects_panel.h"
 #include "sparse_sampling_hint.h"
 #include "user_messages.h"
@@ -76,6 +77,7 @@ MainWindow::MainWindow(Options options) : options_(std::move(options)) {
   connectParts();
   addBrushBars(*this, *viewport_, modeller_->brushState());
   addObjectsMenu(*this); // between Add and View; its tool bar beside the brush header
+  addObjectTransformActions(*this);
   qApp->installEventFilter(new ViewportFocusReturn(viewport_, this));
   new SparseSamplingHint(viewport_, statusBar(), action("actionRemesh"), this);
 
