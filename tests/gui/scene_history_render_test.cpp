@@ -115,6 +115,7 @@ private slots:
   void cleanup();
   void everyObjectChangeUndoesAndRedoesBitExactly();
   void budgetAndRedoSpanEveryObject();
+  void previewsRecordNothingAndUndoEndsThem();
 
 private:
   bool open(const core::Scene& scene, const QString& name);
@@ -306,6 +307,51 @@ void SceneHistoryRenderTest::budgetAndRedoSpanEveryObject() {
   QVERIFY(!modeller.canRedo());
   QVERIFY(!window_->undoStack()->canRedo());
   modeller.setHistoryBudget(std::size_t(256) << 20);
+}
+
+// G/R/S previews (previewObjectTransform) record nothing; a confirmed transform is one step from
+// where the preview began; another change while a preview runs keeps it; an undo ends it.
+void SceneHistoryRenderTest::previewsRecordNothingAndUndoEndsThem() {
+  QVERIFY(open(threeObjects(), "preview.exr"));
+  app::Modeller& modeller = *window_->modeller();
+  const core::ObjectTransform original = modeller.objectAt(1).transform;
+  const core::ObjectTransform dragged{{2.0f, 1.0f, 0.0f}, {}, {0.5f, 0.5f, 0.5f}},
+      placed{{2.5f, 1.0f, 0.0f}, {}, {0.5f, 0.5f, 0.5f}},
+      turned{{3.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 45.0f}, {0.5f, 0.5f, 0.5f}};
+  const auto same = [](const core::ObjectTransform& a, const core::ObjectTransform& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+  };
+  // Dragged and put back (Esc): nothing recorded, nothing modified.
+  QVERIFY(modeller.previewObjectTransform(1, dragged));
+  QVERIFY(modeller.previewObjectTransform(1, original));
+  QCOMPARE(modeller.setObjectTransform(1, original), QString());
+  QVERIFY(!modeller.canUndo());
+  QVERIFY(!window_->isModified());
+  // Dragged, Lump hidden meanwhile (one step, the drag goes on), then placed: "Move Box" from
+  // where it began.
+  QVERIFY(modeller.previewObjectTransform(1, dragged));
+  QVERIFY(modeller.setObjectVisible(2, false));
+  QCOMPARE(modeller.history().undoCount(), std::size_t(1));
+  QVERIFY(same(modeller.objectAt(1).transform, dragged));
+  QCOMPARE(modeller.setObjectTransform(1, placed), QString());
+  QCOMPARE(modeller.history().undoCount(), std::size_t(2));
+  QCOMPARE(window_->undoStack()->undoText(), QString("Move Box"));
+  QVERIFY(modeller.undoStroke());
+  QVERIFY(same(modeller.objectAt(1).transform, original));
+  QVERIFY(!modeller.objectAt(2).visible);
+  QVERIFY(modeller.undoStroke());
+  QVERIFY(modeller.objectAt(2).visible);
+  QVERIFY(!window_->isModified());
+  QVERIFY(modeller.redoStroke() && modeller.redoStroke());
+  QVERIFY(same(modeller.objectAt(1).transform, placed));
+  // A rotation previewed, then an undo: the preview ends, Box back where it was before "Move".
+  QVERIFY(modeller.previewObjectTransform(1, turned));
+  QVERIFY(modeller.undoStroke());
+  QVERIFY(same(modeller.objectAt(1).transform, original));
+  QCOMPARE(modeller.setObjectTransform(1, turned), QString());
+  QCOMPARE(window_->undoStack()->undoText(), QString("Rotate Box"));
+  QVERIFY(modeller.undoStroke());
+  QVERIFY(same(modeller.objectAt(1).transform, original));
 }
 
 QTEST_MAIN(SceneHistoryRenderTest)

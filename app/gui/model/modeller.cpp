@@ -346,7 +346,7 @@ bool Modeller::stepHistory(bool undo) {
   SceneHistory::Entry* entry = undo ? history_.nextUndoEntry() : history_.nextRedoEntry();
   if (!entry) return false;
   const std::uint64_t serial = entry->serial;
-  previewed_.clear(); // a G/R/S preview does not outlive an undo
+  cancelPreviews(); // a G/R/S preview does not outlive an undo
   if (entry->scene) {
     const QString why = showStep(*entry->scene, undo);
     if (!why.isEmpty()) {

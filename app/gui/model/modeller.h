@@ -230,8 +230,10 @@ private:
   QString showStep(SceneStep& step, bool before);
   // Makes step (its after side) and records it; why not, empty on success.
   QString doStep(SceneStep step);
-  // Object k's look changed as one step.
-  QString changeLook(int k, const ObjectLook& after, std::string label);
+  // Object k's look changed as one step; placing: a transform that ends a preview.
+  QString changeLook(int k, const ObjectLook& after, std::string label, bool placing = false);
+  // Previewed objects back where their previews began (an undo or redo ends a G/R/S gesture).
+  void cancelPreviews();
   int indexOf(ObjectId id) const;
   ObjectId newObjectId() { return ++objectIds_; }
 

@@ -51,20 +51,22 @@ QString Modeller::showStep(SceneStep& step, bool before) {
 QString Modeller::doStep(SceneStep step) {
   if (!hasDocument()) return tr("There is no model");
   if (const QString why = showStep(step, false); !why.isEmpty()) return why;
-  previewed_.clear();
   history_.noteLiveStep(); // anything the session recorded comes first
   history_.record(std::move(step));
   emit historyChanged();
   return {};
 }
 
-QString Modeller::changeLook(int k, const ObjectLook& after, std::string label) {
+QString Modeller::changeLook(int k, const ObjectLook& after, std::string label, bool placing) {
   const ObjectId id = ids_[std::size_t(k)];
   ObjectLook before = lookOf(scene_.objects[std::size_t(k)]);
-  if (const auto preview = previewed_.find(id); preview != previewed_.end())
-    before.transform = preview->second; // the step starts where the preview began
-  if (before == after) {                // a preview put back where it began: no step
-    previewed_.erase(id);
+  // A transform set while a preview runs is one step from where the preview began, and ends the
+  // preview; another change (a hide while G runs) keeps the previewed transform on both sides.
+  if (const auto preview = previewed_.find(id); placing && preview != previewed_.end()) {
+    before.transform = preview->second;
+    previewed_.erase(preview);
+  }
+  if (before == after) { // a preview put back where it began: no step
     if (!(lookOf(scene_.objects[std::size_t(k)]) == after)) {
       setLook(scene_.objects[std::size_t(k)], after);
       emit objectsChanged();
@@ -116,7 +118,16 @@ QString Modeller::setObjectTransform(int k, const core::ObjectTransform& transfo
       preview != previewed_.end() ? preview->second : look.transform;
   const std::string label = transformLabel(from, transform, look.name);
   look.transform = transform;
-  return changeLook(k, look, label);
+  return changeLook(k, look, label, true);
+}
+
+void Modeller::cancelPreviews() {
+  for (const auto& [id, transform] : previewed_)
+    if (const int k = indexOf(id); k >= 0) {
+      scene_.objects[std::size_t(k)].transform = transform;
+      emit objectMoved(k);
+    }
+  previewed_.clear();
 }
 
 bool Modeller::previewObjectTransform(int k, const core::ObjectTransform& transform) {
