@@ -195,16 +195,18 @@ signals:
   /// The scene was replaced (setDocument, setScene): its objects, their transforms, which is
   /// active.
   void sceneChanged();
-  /// An object was added, removed, renamed, shown, hidden, locked or unlocked by the user (the
-  /// scene differs from its file).
+  /// Objects were added, removed, renamed, moved, shown, hidden, locked, unlocked, merged or
+  /// reordered, by the user or by undo and redo (each a step of the history, whose saved state
+  /// says whether the scene differs from its file).
   void objectsChanged();
   /// Object k is shown under a previewed transform (previewObjectTransform): redraw only.
   void objectMoved(int k);
   /// Something asked for was refused (a stroke on a locked object): why, for the status bar.
   void refused(const QString& why);
-  /// setActiveObject is about to switch (the history, still the old object's, is cleared next).
+  /// Another object is about to become the edited one (setActiveObject, or an undo or redo that
+  /// goes to another object's step).
   void activeObjectAboutToChange();
-  /// setActiveObject made object k the edited one (after documentReplaced(true)).
+  /// Object k became the edited one (after documentReplaced(true)).
   void activeObjectChanged(int k);
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document, the saliency in).
   void surfaceChanged();
