@@ -84,6 +84,14 @@ void SceneHistoryTest::sidesMoveDocumentsAndLooks() {
   QVERIFY(sameBits(scene.objects[1].document, b));
   QVERIFY(step.held.empty());
   QVERIFY(step.bytes() + b.positions.byteSize() <= heldBytes);
+  // A move holds two looks: a few hundred bytes, whatever the document's size.
+  SceneStep move;
+  move.label = "Move C";
+  move.changes.push_back({3, app::lookOf(scene.objects[2]), app::lookOf(scene.objects[2])});
+  move.changes[0].after.transform.translation.x = 1;
+  QVERIFY(move.bytes() < 1024);
+  qInfo("a move step holds %zu bytes; a delete of an N = 16 ball %zu (its positions %zu)",
+        move.bytes(), heldBytes, b.positions.byteSize());
   // A reorder: the same objects, another order.
   SceneStep reorder;
   reorder.orderBefore = ids;
