@@ -243,8 +243,16 @@ void ObjectTransformRenderTest::moveFollowsThePointerAndAClickKeepsIt() {
   input.click(1);
   QVERIFY(QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::None; }, 2000));
   QVERIFY(bitSame(modeller.objectAt(1).transform, shown));
-  QVERIFY(!modeller.canUndo());
+  // One step, the move; undo puts the object back bit for bit.
+  QVERIFY2(window_->undoStack()->undoText().startsWith("Move "),
+           qPrintable(window_->undoStack()->undoText()));
   QVERIFY(!view->stroking());
+  const int steps = window_->undoStack()->count();
+  window_->undoStack()->undo();
+  QVERIFY(!bitSame(modeller.objectAt(1).transform, shown));
+  window_->undoStack()->redo();
+  QVERIFY(bitSame(modeller.objectAt(1).transform, shown));
+  QCOMPARE(window_->undoStack()->count(), steps);
 }
 
 void ObjectTransformRenderTest::rotateAndScaleFollowThePointer() {
@@ -476,7 +484,9 @@ void ObjectTransformRenderTest::gizmoArrowsAreOnScreenAndADragMovesAlongOneAxis(
   QCOMPARE(after.rotationDegrees, before.rotationDegrees);
   QCOMPARE(after.scale, before.scale);
   QVERIFY(!view->stroking());
-  QVERIFY(!modeller.canUndo()); // no stroke was made on the cube
+  // One step, the move (no stroke was made on the cube).
+  QVERIFY2(window_->undoStack()->undoText().startsWith("Move "),
+           qPrintable(window_->undoStack()->undoText()));
   // The arrow's tip followed: the origin moved about 60 px along the arrow on screen.
   const QPointF moved = onView(*view, after.translation) - onView(*view, before.translation);
   QVERIFY2(std::abs(QPointF::dotProduct(moved, along) - 60) < 4,
@@ -518,7 +528,11 @@ void ObjectTransformRenderTest::gizmoArrowsAreOnScreenAndADragMovesAlongOneAxis(
   QCOMPARE(grown.scale.y, grown.scale.x);
   QCOMPARE(grown.scale.z, grown.scale.x);
   QVERIFY(bitSame({grown.translation, grown.rotationDegrees, after.scale}, after));
-  QVERIFY(!modeller.canUndo());
+  // The ring's drag is one step of its own; undoing it leaves the arrow's move.
+  QVERIFY2(window_->undoStack()->undoText().startsWith("Scale "),
+           qPrintable(window_->undoStack()->undoText()));
+  window_->undoStack()->undo();
+  QVERIFY(bitSame(modeller.objectAt(1).transform, after));
 }
 
 QTEST_MAIN(ObjectTransformRenderTest)

@@ -2,6 +2,7 @@
 // switches, shows, hides, locks and renames its objects; a locked object is not sculpted; Add ▸
 // Sphere adds uniquely named objects that are saved; Delete removes the edited one. Drawn
 // through the real VTK viewport (xcb under Xvfb, llvmpipe).
+#include "history_list.h"
 #include "main_window.h"
 #include "modeller.h"
 #include "objects_panel.h"
@@ -201,10 +202,14 @@ void ObjectsRenderTest::lockedObjectIsNotSculpted() {
   QVERIFY(list);
   list->topLevelItem(0)->setCheckState(ObjectsPanel::Locked, Qt::Checked);
   QVERIFY(window_->modeller()->activeLocked());
+  // The lock is a step; the refused stroke records none.
+  QCOMPARE(window_->modeller()->history().undoCount(), std::size_t(1));
+  QCOMPARE(window_->undoStack()->undoText(), QString("Lock Body"));
   const std::vector<float> before = positionsOf(*window_);
   app::testing::pushStrokeAcross(*window_, 0);
   QVERIFY(bitEqual(positionsOf(*window_), before));
-  QVERIFY(!window_->modeller()->canUndo());
+  QCOMPARE(window_->modeller()->history().undoCount(), std::size_t(1));
+  QCOMPARE(window_->undoStack()->undoText(), QString("Lock Body"));
   QVERIFY2(window_->statusBar()->currentMessage() == "Body is locked",
            qPrintable(window_->statusBar()->currentMessage()));
   const QString saved = dir_.filePath("lock-saved.exr");

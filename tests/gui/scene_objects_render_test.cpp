@@ -1,6 +1,7 @@
 // A scene of several objects in the modeller (issue 33, item 3): File ▸ Open and Save keep every
 // object, the active one is edited and switching it keeps the others' work. Drawn through the
 // real VTK viewport (xcb under Xvfb, llvmpipe).
+#include "history_list.h"
 #include "main_window.h"
 #include "modeller.h"
 #include "test_window.h"
@@ -186,14 +187,15 @@ void SceneObjectsRenderTest::switchingTheActiveObjectKeepsEachOnesWork() {
   QVERIFY(modeller.canUndo());
   const std::vector<float> sculpted = positionsOf(*window_);
 
-  // Switching: the edited body goes back into the scene, the box is uploaded; the history was
-  // the body's, so it starts anew (the status bar says so) and the scene stays modified.
+  // Switching: the edited body goes back into the scene, the box is uploaded; not a step, and
+  // the one history keeps the body's stroke (the status bar names the box), still modified.
   QVERIFY(!modeller.setActiveObject(3));
   QVERIFY(!modeller.setActiveObject(-1));
   QVERIFY(modeller.setActiveObject(1));
   QCOMPARE(modeller.activeObject(), 1);
   QVERIFY(samePositions(modeller.document(), original.objects[1].document));
-  QVERIFY(!modeller.canUndo());
+  QCOMPARE(modeller.history().undoCount(), std::size_t(1));
+  QCOMPARE(window_->undoStack()->undoText(), QString("Stroke (push)"));
   QVERIFY(window_->isModified());
   QVERIFY2(window_->statusBar()->currentMessage().contains("Box"),
            qPrintable(window_->statusBar()->currentMessage()));

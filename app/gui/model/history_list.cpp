@@ -1,22 +1,14 @@
 #include "history_list.h"
 
 #include "modeller.h"
+#include "scene_history.h"
 
 #include "octaclay/core/document/edit_history.h"
 #include "octaclay/gpu/brush_catalog.h"
 #include "octaclay/gpu/brush_library.h"
 
 namespace octaclay::app {
-namespace {
-
-// The step k of history (0 oldest), done or not.
-const core::EditStep* stepAt(const core::EditHistory& history, int k) {
-  const int done = static_cast<int>(history.undoCount());
-  if (k < 0 || k >= done + static_cast<int>(history.redoCount())) return nullptr;
-  return history.stepAt(static_cast<std::size_t>(k));
-}
-
-} // namespace
+namespace {} // namespace
 
 HistoryList::HistoryList(Modeller& modeller, QObject* parent)
     : QAbstractListModel(parent), modeller_(modeller) {
@@ -24,7 +16,7 @@ HistoryList::HistoryList(Modeller& modeller, QObject* parent)
 }
 
 int HistoryList::count() const {
-  const core::EditHistory& h = modeller_.history();
+  const SceneHistory& h = modeller_.history();
   return static_cast<int>(h.undoCount() + h.redoCount());
 }
 
@@ -42,7 +34,12 @@ QString HistoryList::label(const core::EditStep& step) const {
 }
 
 QString HistoryList::text(int k) const {
-  const core::EditStep* step = stepAt(modeller_.history(), k);
+  if (k < 0) return {};
+  const SceneHistory& history = modeller_.history();
+  const SceneHistory::Entry* entry = history.entryAt(static_cast<std::size_t>(k));
+  if (!entry) return {};
+  if (entry->scene) return QString::fromStdString(entry->scene->label);
+  const core::EditStep* step = history.documentStepAt(static_cast<std::size_t>(k));
   return step ? label(*step) : QString();
 }
 

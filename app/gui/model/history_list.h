@@ -14,11 +14,11 @@ namespace octaclay::app {
 
 class Modeller;
 
-/// The one history (the modeller's core::EditHistory: strokes, operations, replaced documents)
-/// as the window shows it: Edit ▸ Undo and Redo with the step's name, Edit ▸ History's list (row
-/// 0 the state before the oldest step, then a row per step) and the saved state behind the
-/// title's "*". It holds no steps of its own; it reads the history and follows
-/// Modeller::historyChanged. GUI thread.
+/// The one history (the modeller's SceneHistory: every object's strokes, operations and replaced
+/// documents, and the scene's own steps) as the window shows it: Edit ▸ Undo and Redo with the
+/// step's name, Edit ▸ History's list (row 0 the state before the oldest step, then a row per step)
+/// and the saved state behind the title's "*". It holds no steps of its own; it reads the history
+/// and follows Modeller::historyChanged. GUI thread.
 class HistoryList : public QAbstractListModel {
   Q_OBJECT
 public:
@@ -28,7 +28,8 @@ public:
   /// Steps held, and how many of them are done (undoable): QUndoStack's count() and index().
   int count() const;
   int index() const;
-  /// What step k (0 oldest) is called: "Stroke (push)", "Even Out Samples", "Remesh", …
+  /// What step k (0 oldest) is called: "Stroke (push)", "Even Out Samples", "Remesh", "Add
+  /// Sphere", "Move Head", …
   QString text(int k) const;
   QString undoText() const;
   QString redoText() const;

@@ -78,11 +78,16 @@ bool Modeller::setScene(core::Scene scene, int active, bool keepView) {
   strokes_.settle();
   core::Document document = std::move(scene.objects[std::size_t(active)].document);
   scene.objects[std::size_t(active)].document = {};
+  std::vector<ObjectId> ids;
+  for (std::size_t k = 0; k < scene.objects.size(); ++k)
+    ids.push_back(newObjectId());
+  previewed_.clear();
   if (!host_ || !host_->context()) {
     pending_ = std::move(document);
-    session_.history().clear();
     scene_ = std::move(scene);
+    ids_ = std::move(ids);
     active_ = active;
+    history_.restart(ids_[std::size_t(active_)]);
     emit historyChanged();
     emit sceneChanged();
     return true;
@@ -90,11 +95,15 @@ bool Modeller::setScene(core::Scene scene, int active, bool keepView) {
   CurrentContext current(*host_);
   // The scene is taken before the upload, whose documentReplaced lets the viewport read it.
   core::Scene before = std::exchange(scene_, std::move(scene));
+  std::vector<ObjectId> idsBefore = std::exchange(ids_, std::move(ids));
   const int activeBefore = std::exchange(active_, active);
   const bool ok = uploadDocument(std::move(document), keepView);
   if (!ok && session_.hasDocument()) { // the session kept the previous document
     scene_ = std::move(before);
+    ids_ = std::move(idsBefore);
     active_ = activeBefore;
+  } else {
+    history_.restart(ids_[std::size_t(active_)]);
   }
   emit historyChanged();
   if (ok) emit sceneChanged();
@@ -116,26 +125,38 @@ bool Modeller::setActiveObject(int k) {
   if (session_.stroking()) return false;
   emit activeObjectAboutToChange();
   const int before = active_;
-  core::SceneObject& next = scene_.objects[std::size_t(k)];
   // The edited document goes back first, so that documentReplaced's followers see the scene
   // as it now is.
   scene_.objects[std::size_t(before)].document = document();
+  if (!enterObject(k)) {
+    active_ = before;
+    scene_.objects[std::size_t(before)].document = {};
+    return false;
+  }
+  emit historyChanged();
+  emit activeObjectChanged(k);
+  return true;
+}
+
+bool Modeller::enterObject(int k) {
+  const int before = active_;
+  const ObjectId leaving = history_.liveObject();
+  core::SceneObject& next = scene_.objects[std::size_t(k)];
+  history_.leave(); // the upload clears the session's history: the object left keeps its own
   active_ = k;
   if (!host_ || !host_->context() || !session_.hasDocument()) {
     pending_ = std::exchange(next.document, {});
-    session_.history().clear();
   } else {
     CurrentContext current(*host_);
     // A copy goes up: if the upload throws, the object keeps its document.
     if (!uploadDocument(core::Document(next.document), true)) {
       active_ = before;
-      scene_.objects[std::size_t(before)].document = {};
+      history_.enter(leaving);
       return false;
     }
     next.document = {};
   }
-  emit historyChanged();
-  emit activeObjectChanged(k);
+  history_.enter(ids_[std::size_t(k)]);
   return true;
 }
 
@@ -152,6 +173,7 @@ bool Modeller::replaceDocument(core::Document after, const QString& label) {
       return false;
     }
   }
+  history_.noteLiveStep();
   emit documentReplaced(true);
   emit historyChanged();
   emit surfaceChanged();
@@ -159,7 +181,7 @@ bool Modeller::replaceDocument(core::Document after, const QString& label) {
 }
 
 void Modeller::setHistoryBudget(std::size_t bytes) {
-  session_.history().setBudget(bytes);
+  history_.setBudget(bytes);
   emit historyChanged();
 }
 
@@ -273,6 +295,7 @@ void Modeller::followChanges(std::function<void(const gpu::DocumentChange&)> fol
 
 void Modeller::strokeSettled(const QString& label) {
   refreshSaliency(); // at stroke end: the whole image's normalisation may have changed
+  history_.noteLiveStep();
   if (!label.isEmpty()) emit strokeFinished(label);
   if (!label.isEmpty()) emit historyChanged();
   emit surfaceChanged();
@@ -318,8 +341,27 @@ bool Modeller::redoStroke() {
 
 bool Modeller::stepHistory(bool undo) {
   strokes_.settle();
-  if (!session_.hasDocument() || !host_ || !(undo ? canUndo() : canRedo()) || session_.stroking())
-    return false;
+  if (!session_.hasDocument() || !host_ || session_.stroking()) return false;
+  history_.noteLiveStep();
+  SceneHistory::Entry* entry = undo ? history_.nextUndoEntry() : history_.nextRedoEntry();
+  if (!entry) return false;
+  const std::uint64_t serial = entry->serial;
+  cancelPreviews(); // a G/R/S preview does not outlive an undo
+  if (entry->scene) {
+    const QString why = showStep(*entry->scene, undo);
+    if (!why.isEmpty()) {
+      emit refused(why);
+      return false;
+    }
+    history_.stepped(undo);
+    host_->update();
+    emit historyStepped(serial, false, undo);
+    emit historyChanged();
+    return true;
+  }
+  // A step of another object's document: that object is edited again first (Nomad's way).
+  const int k = indexOf(entry->object);
+  if (k < 0 || (k != active_ && !setActiveObject(k))) return false;
   const core::EditStep* s = nullptr;
   {
     CurrentContext current(*host_);
@@ -331,8 +373,9 @@ bool Modeller::stepHistory(bool undo) {
   }
   host_->update();
   if (!s) return false;
+  history_.stepped(undo);
   if (s->replacesDocument()) emit documentReplaced(true);
-  emit historyStepped(*s, undo);
+  emit historyStepped(serial, s->replacesDocument(), undo);
   emit historyChanged();
   emit surfaceChanged();
   return true;
@@ -354,6 +397,7 @@ bool Modeller::applyChange(const core::Document& after, const std::string& label
     }
   }
   host_->update();
+  if (recorded) history_.noteLiveStep();
   if (recorded) emit historyChanged();
   if (recorded) emit surfaceChanged();
   return recorded;

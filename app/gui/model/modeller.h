@@ -3,6 +3,8 @@
 #include "brush_state.h"
 #include "gl_host.h"
 #include "saliency_keeper.h"
+#include "scene_history.h"
+#include "scene_step.h"
 #include "sculpt_session.h"
 #include "stroke_driver.h"
 
@@ -16,6 +18,7 @@
 #include <QStringList>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -29,8 +32,9 @@ namespace octaclay::app {
 
 /// The modeller without its widgets: the scene of objects (core::Scene) and its active object,
 /// whose document is the edited one (on the GPU, in a SculptSession); the
-/// brushes and materials, the brush state, the strokes (StrokeDriver), the history with undo and
-/// redo, and the followers of the document's one change feed (gpu::DocumentChange: the saliency
+/// brushes and materials, the brush state, the strokes (StrokeDriver), the scene's one history
+/// with undo and redo (SceneHistory: every object's strokes and operations and the scene's own
+/// steps), and the followers of the document's one change feed (gpu::DocumentChange: the saliency
 /// here, the renderer's normals and stretch map through followChanges, the live LOD through
 /// surfaceChanged). The window, docks, tool bar, header and viewport observe it. GUI thread;
 /// its GL work runs in the GlHost's context (the viewport's), made current by the modeller.
@@ -71,20 +75,22 @@ public:
   /// The active object's `document` is empty here: its current one is document().
   const core::SceneObject& objectAt(int k) const { return scene_.objects.at(std::size_t(k)); }
   /// Makes object k the edited one: the active object's current document goes back into the
-  /// scene and object k's is uploaded, the camera kept. The undo history is one document's
-  /// (SculptSession's), so switching clears it: steps of the object left cannot be undone any
-  /// more (activeObjectChanged tells the window, which says so in the status bar). False, with
+  /// scene and object k's is uploaded, the camera kept. Not a step, and nothing is cleared: each
+  /// object's document history goes with it (SceneHistory), so the steps of the object left
+  /// stay in the one history (undoing one makes that object the edited one again). False, with
   /// nothing changed, for an index out of range, while a stroke is made or when the upload
   /// fails (error() set); true without work for the active object.
   bool setActiveObject(int k);
-  /// Object k's visibility, lock and name (modeller_objects.cpp): objectsChanged follows a
-  /// change. renameObject returns why a name is refused (empty when it was taken).
+  /// Object k's visibility, lock and name (modeller_objects.cpp), each change one step of the
+  /// history ("Hide Hat", "Lock Body", "Rename Ball → Head"): objectsChanged follows a change.
+  /// renameObject returns why a name is refused (empty when it was taken).
   bool setObjectVisible(int k, bool visible);
   bool setObjectLocked(int k, bool locked);
   QString renameObject(int k, const QString& name);
   /// Places object k (the door every move, rotation and scale goes through: the G/R/S mode's
-  /// confirm, the CLI's transform): returns why a transform is refused (transformProblem), empty
-  /// when it was taken; objectsChanged follows a change.
+  /// confirm, the CLI's transform), one step of the history ("Move Head", "Rotate …", "Scale …")
+  /// from the transform before any preview to this one: returns why a transform is refused
+  /// (transformProblem), empty when it was taken; objectsChanged follows a change.
   QString setObjectTransform(int k, const core::ObjectTransform& transform);
   /// Shows object k under transform while a G/R/S gesture runs, recording nothing and leaving
   /// the document unmodified (objectMoved follows); setObjectTransform or a preview of the
@@ -97,11 +103,12 @@ public:
   }
   /// Whether the edited object is locked: strokes on it are refused (refused() says so).
   bool activeLocked() const;
-  /// Appends object (named uniquely from its name) and makes it the edited one. False, with
-  /// nothing added, when setActiveObject refuses or fails.
-  bool addObject(core::SceneObject object);
-  /// Removes the edited object; the one before it (or the next) becomes the edited one. Returns
-  /// why it was refused (the last object, a stroke being made), empty on success.
+  /// Appends object (named uniquely from its name) and makes it the edited one, one step (label,
+  /// by default "Add Sphere"). False, with nothing added, when setActiveObject refuses or fails.
+  bool addObject(core::SceneObject object, const QString& label = {});
+  /// Removes the edited object; the one before it (or the next) becomes the edited one. One step
+  /// ("Delete Cube") that holds the removed object's document. Returns why it was refused (the
+  /// last object, a stroke being made), empty on success.
   QString deleteActiveObject();
   /// Replaces the objects at `removed` (indices, at least one, the edited one may be among them)
   /// by `added` (named uniquely), appended and made the edited one: Objects ▸ Merge's door, one
@@ -109,8 +116,9 @@ public:
   /// made, the upload failed), empty on success.
   QString replaceObjects(const std::vector<int>& removed, core::SceneObject added,
                          const QString& label);
-  /// Moves object `from` to position `to` in the scene's order (the Objects dock's drag): the
-  /// edited object stays the edited one. False for an index out of range.
+  /// Moves object `from` to position `to` in the scene's order (the Objects dock's drag), one
+  /// step ("Reorder Objects"): the edited object stays the edited one. False for an index out of
+  /// range.
   bool moveObject(int from, int to);
   /// A copy of the current positions (xyz and saliency), or null without a document.
   std::shared_ptr<const core::GeometryImage> positionsSnapshot() const;
@@ -143,10 +151,14 @@ public:
   void setSaliencyOnCpu(bool onCpu) { saliency_.setOnCpu(onCpu); }
   bool saliencyOnCpu() const { return saliency_.onCpu(); }
 
-  core::EditHistory& history() { return session_.history(); }
-  bool canUndo() const { return session_.history().canUndo(); }
-  bool canRedo() const { return session_.history().canRedo(); }
-  /// Reverts / reapplies the newest step; false if there is none or a stroke is being made.
+  /// The scene's one history (every object's document steps and the scene's steps).
+  SceneHistory& history() { return history_; }
+  const SceneHistory& history() const { return history_; }
+  bool canUndo() const { return history_.canUndo(); }
+  bool canRedo() const { return history_.canRedo(); }
+  /// Reverts / reapplies the newest step of the one history, whichever object it belongs to (a
+  /// document step of another object makes that object the edited one first, uploading its
+  /// document); false if there is none, a stroke is being made or the upload failed.
   bool undoStroke();
   bool redoStroke();
   /// Makes `after` (same size) the document as one history step labelled label
@@ -195,23 +207,26 @@ signals:
   /// The scene was replaced (setDocument, setScene): its objects, their transforms, which is
   /// active.
   void sceneChanged();
-  /// An object was added, removed, renamed, shown, hidden, locked or unlocked by the user (the
-  /// scene differs from its file).
+  /// Objects were added, removed, renamed, moved, shown, hidden, locked, unlocked, merged or
+  /// reordered, by the user or by undo and redo (each a step of the history, whose saved state
+  /// says whether the scene differs from its file).
   void objectsChanged();
   /// Object k is shown under a previewed transform (previewObjectTransform): redraw only.
   void objectMoved(int k);
   /// Something asked for was refused (a stroke on a locked object): why, for the status bar.
   void refused(const QString& why);
-  /// setActiveObject is about to switch (the history, still the old object's, is cleared next).
+  /// Another object is about to become the edited one (setActiveObject, or an undo or redo that
+  /// goes to another object's step).
   void activeObjectAboutToChange();
-  /// setActiveObject made object k the edited one (after documentReplaced(true)).
+  /// Object k became the edited one (after documentReplaced(true)).
   void activeObjectChanged(int k);
   /// The surface changed (dabs, a finished stroke, undo, redo, a new document, the saliency in).
   void surfaceChanged();
   /// The history changed: a step recorded, undone or redone, steps dropped, or all cleared.
   void historyChanged();
-  /// undo or redo stepped through step (a replacing step showed another document).
-  void historyStepped(const core::EditStep& step, bool undo);
+  /// undo or redo stepped through the entry with this serial (SceneHistory::Entry);
+  /// replacedDocument: a replacing step showed another document.
+  void historyStepped(std::uint64_t serial, bool replacedDocument, bool undo);
 
 private:
   // Hands the library's brushes, their load errors and the materials to brushState_.
@@ -221,9 +236,24 @@ private:
   void refreshSaliency();
   void cpuSaliencyFinished();
   bool stepHistory(bool undo);
+  // Makes object k (its document in its slot) the edited one, the history of the object left
+  // (history_.liveObject()) parked; false with the histories as they were if the upload failed.
+  bool enterObject(int k);
+  // Shows one side of step on the scene (modeller_objects.cpp), switching the edited object
+  // when the step says so; why it could not, empty on success.
+  QString showStep(SceneStep& step, bool before);
+  // Makes step (its after side) and records it; why not, empty on success.
+  QString doStep(SceneStep step);
+  // Object k's look changed as one step; placing: a transform that ends a preview.
+  QString changeLook(int k, const ObjectLook& after, std::string label, bool placing = false);
+  // Previewed objects back where their previews began (an undo or redo ends a G/R/S gesture).
+  void cancelPreviews();
+  int indexOf(ObjectId id) const;
+  ObjectId newObjectId() { return ++objectIds_; }
 
   GlHost* host_ = nullptr;
   SculptSession session_;
+  SceneHistory history_{session_.history()};
   BrushState brushState_;
   StrokeDriver strokes_;
   SaliencyKeeper saliency_;
@@ -233,6 +263,10 @@ private:
   std::optional<core::Document> pending_; // set before GL started (or when it failed)
   // Every object; the active one's document lives in session_ (or pending_), its slot here empty.
   core::Scene scene_;
+  std::vector<ObjectId> ids_; // scene_'s objects' ids, in order
+  ObjectId objectIds_ = 0;    // the last id given
+  // Transforms of objects under a G/R/S preview, as they were before it.
+  std::map<ObjectId, core::ObjectTransform> previewed_;
   int active_ = 0;
   std::vector<std::function<void(const gpu::DocumentChange&)>> followers_;
   bool uploading_ = false;

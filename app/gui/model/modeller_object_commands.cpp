@@ -22,7 +22,12 @@ QString Modeller::duplicateActiveObject(int mirrorAxis) {
       mirrorAxis < 0 ? source.transform : core::mirroredTransform(source.transform, mirrorAxis);
   copy.visible = true;
   copy.locked = false;
-  if (!addObject(std::move(copy)))
+  const std::string from = source.name;
+  const QString label = mirrorAxis < 0 ? tr("Duplicate %1").arg(QString::fromStdString(from))
+                                       : tr("Mirror %1 across %2")
+                                             .arg(QString::fromStdString(from))
+                                             .arg(QChar('X' + mirrorAxis));
+  if (!addObject(std::move(copy), label))
     return error().isEmpty() ? tr("Could not duplicate the object") : error();
   return {};
 }

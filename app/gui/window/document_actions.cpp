@@ -43,28 +43,20 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
     autosaved_ = autosaving_;
   });
   connect(parts_.modeller, &Modeller::historyStepped, this, &DocumentActions::stepped);
-  connect(parts_.modeller, &Modeller::activeObjectAboutToChange, this, [this] {
-    modifiedBeforeSwitch_ = isModified();
-    emit aboutToAdopt(); // another document is about to be shown
-  });
+  connect(parts_.modeller, &Modeller::activeObjectAboutToChange, this,
+          [this] { emit aboutToAdopt(); }); // another document is about to be shown
   connect(parts_.modeller, &Modeller::activeObjectChanged, this,
           &DocumentActions::activeObjectChanged);
 }
 
 void DocumentActions::activeObjectChanged(int k) {
-  // The history is the new object's, empty: the scene is as modified as it was.
-  parts_.history->setClean();
-  replacedStates_.clear();
-  forceModified_ = modifiedBeforeSwitch_;
-  autosaved_.reset();
-  autosaving_.reset();
+  // Not a step: the one history, its saved state and the autosave's position stay.
   parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
   parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
   emit titleChanged();
   emit adopted();
-  parts_.statusBar->showMessage(tr("Editing %1; undo starts anew from here")
-                                    .arg(QString::fromStdString(parts_.modeller->objectAt(k).name)),
-                                8000);
+  parts_.statusBar->showMessage(
+      tr("Editing %1").arg(QString::fromStdString(parts_.modeller->objectAt(k).name)), 8000);
 }
 
 bool DocumentActions::isModified() const {
@@ -154,8 +146,8 @@ bool DocumentActions::replaceWith(core::Document document, const QString& label,
     showError(parts_.viewport->error());
     return false;
   }
-  if (const core::EditStep* step = modeller.history().nextUndo())
-    replacedStates_[step->serial] = {before, after};
+  if (modeller.history().canUndo())
+    replacedStates_[modeller.history().position()] = {before, after};
   path_ = after.path;
   importedFrom_ = after.importedFrom;
   forceModified_ = after.forceModified;
@@ -163,9 +155,9 @@ bool DocumentActions::replaceWith(core::Document document, const QString& label,
   return true;
 }
 
-void DocumentActions::stepped(const core::EditStep& step, bool undo) {
-  const auto states = replacedStates_.find(step.serial);
-  if (!step.replacesDocument()) return;
+void DocumentActions::stepped(std::uint64_t serial, bool replacedDocument, bool undo) {
+  const auto states = replacedStates_.find(serial);
+  if (!replacedDocument) return;
   if (states != replacedStates_.end()) {
     const FileState& state = undo ? states->second.first : states->second.second;
     path_ = state.path;

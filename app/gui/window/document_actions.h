@@ -88,8 +88,8 @@ public:
   /// The mesh the current document was imported from (absolute), empty if it was not.
   QString importedFrom() const { return importedFrom_; }
   bool isModified() const;
-  /// The scene changed outside the history (an object added, removed, renamed, shown, hidden,
-  /// locked or unlocked): modified until saved.
+  /// The scene changed outside the history: modified until saved. (Object edits are steps of
+  /// the history, whose clean state says whether they were saved.)
   void markModified() {
     forceModified_ = true;
     emit titleChanged();
@@ -138,7 +138,7 @@ private:
   /// Shows scene as the current one (its first visible object active), its history empty and saved;
   /// false if the viewport refused it (reported; the current document stays).
   bool adoptScene(core::Scene scene, const QString& path);
-  /// The modeller switched its active object: its history began anew, the saved state is kept.
+  /// The modeller switched its active object (not a step: the history and its saved state stay).
   void activeObjectChanged(int k);
   /// The file state (path, import, forced modified) a replacing step leaves, and the one before.
   struct FileState {
@@ -147,8 +147,9 @@ private:
   };
   /// Replaces the document as one history step, the file state becoming `after`.
   bool replaceWith(core::Document document, const QString& label, const FileState& after);
-  /// A replacing step was undone or redone: its file state back, the panels told of the size.
-  void stepped(const core::EditStep& step, bool undo);
+  /// The history's entry `serial` was undone or redone; a replacing step's file state comes back,
+  /// the panels told of the size.
+  void stepped(std::uint64_t serial, bool replacedDocument, bool undo);
   void shownReplaced();
   FileState fileState() const { return {path_, importedFrom_, forceModified_}; }
   void addRecentFile(const QString& path);
@@ -163,10 +164,9 @@ private:
   QString importedFrom_;
   QString lastError_;
   std::optional<std::uint64_t> autosaved_; // the history position at the last autosave
-  /// The file states around each replacing step (by EditStep::serial): before, after.
+  /// The file states around each replacing step (by its SceneHistory serial): before, after.
   std::map<std::uint64_t, std::pair<FileState, FileState>> replacedStates_;
-  bool forceModified_ = false;        // a recovered or imported document differs from any file
-  bool modifiedBeforeSwitch_ = false; // isModified() as setActiveObject began
+  bool forceModified_ = false; // a recovered or imported document differs from any file
 };
 
 } // namespace octaclay::app

@@ -18,7 +18,7 @@ QString mib(std::size_t bytes) {
 }
 
 void askPreferences(MainWindow& window) {
-  const core::EditHistory& h = window.modeller()->history();
+  const SceneHistory& h = window.modeller()->history();
   PreferencesDialog dialog({window.undoBudgetMiB(), window.autosaveSeconds() / 60},
                            MainWindow::kMinUndoMiB, MainWindow::kMaxUndoMiB,
                            MainWindow::tr("%1 MiB in use now (%2 steps)")

@@ -141,7 +141,7 @@ void MainWindow::connectParts() {
   // The first time the history's budget drops steps, the status bar says so (Edit ▸ History
   // then names its first row truthfully).
   connect(history_, &HistoryList::stepsStartedToDrop, this, [this] {
-    const core::EditHistory& h = modeller_->history();
+    const SceneHistory& h = modeller_->history();
     showStatusMessage(*statusBar(),
                       tr("Undo now keeps only the newest %1 steps: older ones no longer fit "
                          "its %2 MiB")
@@ -168,7 +168,6 @@ void MainWindow::connectParts() {
   connect(modeller_, &Modeller::errorOccurred, this, say);
   connect(modeller_, &Modeller::refused, this, say);
   connect(objectsPanel_, &ObjectsPanel::message, this, say);
-  connect(modeller_, &Modeller::objectsChanged, documents_, &DocumentActions::markModified);
   connect(viewport_, &ViewportWidget::statsChanged, this, &MainWindow::updateStatus);
   auto applyLayers = [this] {
     viewport_->setShowDiffuse(layersPanel_->isVisible(core::EditLayer::Diffuse));

@@ -76,10 +76,7 @@ void EditHistory::record(EditStep stroke) {
   }
   stroke.bytes = stroke.computeBytes();
   stroke.serial = ++serials_;
-  while (steps_.size() > cursor_) {
-    bytes_ -= steps_.back().bytes;
-    steps_.pop_back();
-  }
+  clearRedo();
   bytes_ += stroke.bytes;
   side_ = stroke.imageSide;
   steps_.push_back(std::move(stroke));
@@ -89,10 +86,18 @@ void EditHistory::record(EditStep stroke) {
 }
 
 void EditHistory::dropOldest() {
+  if (cursor_ == 0) return;
   bytes_ -= steps_.front().bytes;
   steps_.pop_front();
   --cursor_;
   ++dropped_;
+}
+
+void EditHistory::clearRedo() {
+  while (steps_.size() > cursor_) {
+    bytes_ -= steps_.back().bytes;
+    steps_.pop_back();
+  }
 }
 
 void EditHistory::setBudget(std::size_t budgetBytes) {

@@ -134,6 +134,7 @@ private slots:
   void budgetDropsOldest();
   void singleHugeStrokeIsKept();
   void loweredBudgetDropsOldestUndoStepsOnly();
+  void dropOldestAndClearRedoOnRequest();
   void nanAndNegativeZeroBitExact();
   void documentLayers();
   void badInputThrows();
@@ -422,6 +423,45 @@ void EditHistoryTest::loweredBudgetDropsOldestUndoStepsOnly() {
   history.setBudget(1);
   QCOMPARE(history.undoCount(), std::size_t(1));
   QCOMPARE(history.nextUndo()->label, std::string("p9"));
+}
+
+// A history of several documents (the modeller's scene) drops a document's oldest step and its
+// redo steps itself: the bytes follow, the rest still undo and redo to the same states.
+void EditHistoryTest::dropOldestAndClearRedoOnRequest() {
+  std::mt19937 rng(11);
+  GeometryImage img = randomImage(128, rng);
+  EditHistory history;
+  std::vector<GeometryImage> states{img};
+  std::vector<std::size_t> sizes;
+  for (int k = 0; k < 6; ++k) {
+    EditStep s = randomStroke(img, rng, "d" + std::to_string(k), 4, 20, 2);
+    sizes.push_back(s.bytes);
+    history.record(std::move(s));
+    states.push_back(img);
+  }
+  const TileApplier apply = applierFor(img);
+  QVERIFY(history.undo(apply) && history.undo(apply)); // d5 and d4 become redo steps
+  history.dropOldest();
+  history.dropOldest();
+  QCOMPARE(history.dropped(), std::size_t(2));
+  QCOMPARE(history.undoCount(), std::size_t(2));
+  QCOMPARE(history.redoCount(), std::size_t(2));
+  QCOMPARE(history.bytes(), sizes[2] + sizes[3] + sizes[4] + sizes[5]);
+  QCOMPARE(history.stepAt(0)->label, std::string("d2"));
+  history.clearRedo();
+  QCOMPARE(history.redoCount(), std::size_t(0));
+  QCOMPARE(history.bytes(), sizes[2] + sizes[3]);
+  QCOMPARE(history.nextUndo()->label, std::string("d3"));
+  while (history.canUndo())
+    history.undo(apply);
+  QVERIFY(sameBits(img, states[2]));
+  // Nothing undoable: nothing to drop, redo steps stay.
+  history.dropOldest();
+  QCOMPARE(history.redoCount(), std::size_t(2));
+  QCOMPARE(history.dropped(), std::size_t(2));
+  while (history.canRedo())
+    history.redo(apply);
+  QVERIFY(sameBits(img, states[4]));
 }
 
 void EditHistoryTest::singleHugeStrokeIsKept() {

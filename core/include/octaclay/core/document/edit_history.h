@@ -63,6 +63,13 @@ public:
   void setBudget(std::size_t budgetBytes);
   /// Drops every step.
   void clear();
+  /// Drops the oldest step, which must be undoable (canUndo()), whatever the budget: a history
+  /// of several documents (the modeller's scene) keeps one budget over all of them and drops
+  /// its oldest step wherever it is. Counts in dropped(). Nothing happens without an undoable
+  /// step.
+  void dropOldest();
+  /// Drops every redo step (a new step somewhere else in a history of several documents).
+  void clearRedo();
   /// Steps the budget dropped since the last clear().
   std::size_t dropped() const { return dropped_; }
   /// The serial of the step undo() would revert (0: none, the document as opened or made;
@@ -78,7 +85,6 @@ private:
   std::size_t dropped_ = 0;
   std::uint64_t serials_ = 0;
   int side_ = 0; // N+1 of the document at the cursor (0: not known yet)
-  void dropOldest();
 };
 
 /// A TileApplier writing Positions tiles into image (4 floats per texel, bits copied as they
