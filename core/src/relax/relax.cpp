@@ -653,19 +653,18 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   const int n = document.size(), side = n + 1;
   if (changed.size() != static_cast<std::size_t>(side) * static_cast<std::size_t>(side))
     throw Error(ErrorKind::InvalidArgument, "the changed samples must cover the (N+1)² image");
-  detail::OffsetField field(n);
   const float median = medianEdge(document.positions);
   const float limit = stretchedEdgeLimit(document.positions, median);
-  if (stretchedAt(document.positions, changed, limit)) {
-    const std::vector<std::uint8_t> region = detail::grownMask(n, changed, margin);
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        if (region[field.index(i, j)] && !isSideMidpoint(n, {i, j}))
-          field.free[field.index(i, j)] = 1;
-  }
+  EditStepRecorder recorder(side);
+  // Nothing stretched: no sample is freed, and no field is made (what most strokes end with).
+  if (!stretchedAt(document.positions, changed, limit)) return recorder.finish(std::move(label));
+  detail::OffsetField field(n);
+  const std::vector<std::uint8_t> grown = detail::grownMask(n, changed, margin);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (grown[field.index(i, j)] && !isSideMidpoint(n, {i, j})) field.free[field.index(i, j)] = 1;
   for (Sample s : options.pinned)
     field.pin(s);
-  EditStepRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
   // Where the full move cuts too deep (the tip of a limb pulled far: its samples are the
