@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <thread>
 
 namespace octaclay::core::detail {
 
@@ -74,31 +75,44 @@ Vec3d closestPointOnTriangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
   return a + ab * (vb / sum) + ac * (vc / sum);
 }
 
+// What the median splits move around: a triangle's box centre and its index (16 bytes, so
+// nth_element moves little); its box stays in Bounds, read where a leaf is made. The splits
+// depend only on the comparisons of centres, so the tree is the one a wider item would give.
 struct AabbTree::BuildItem {
-  std::array<float, 3> min, max, centroid;
+  std::array<float, 3> centroid;
   std::uint32_t id;
 };
 
-AabbTree::AabbTree(const TriangleMesh& mesh) {
+struct AabbTree::Bounds {
+  std::array<float, 3> min, max;
+};
+
+// Below this many triangles a subtree is built on the thread that split it.
+constexpr std::size_t kParallelSubtree = 1 << 15;
+
+AabbTree::AabbTree(const TriangleMesh& mesh, unsigned threads) {
   const std::size_t count = mesh.triangles.size();
   assert(count < noTriangle);
   std::vector<BuildItem> items(count);
+  std::vector<Bounds> bounds(count);
   for (std::size_t t = 0; t < count; ++t) {
     const auto& tri = mesh.triangles[t];
     const Vec3f& a = mesh.positions[tri[0]];
     const Vec3f& b = mesh.positions[tri[1]];
     const Vec3f& c = mesh.positions[tri[2]];
+    Bounds& box = bounds[t];
+    box.min = {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
+    box.max = {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
     BuildItem& item = items[t];
-    item.min = {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
-    item.max = {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
     for (int k = 0; k < 3; ++k)
-      item.centroid[k] = 0.5f * (item.min[k] + item.max[k]);
+      item.centroid[k] = 0.5f * (box.min[k] + box.max[k]);
     item.id = static_cast<std::uint32_t>(t);
   }
   if (count == 0) return;
 
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   nodes_.reserve(count);
-  build(items, 0);
+  build(items, 0, bounds, nodes_, threads);
 
   triangles_.resize(count);
   ids_.resize(count);
@@ -109,21 +123,25 @@ AabbTree::AabbTree(const TriangleMesh& mesh) {
   }
 }
 
-void AabbTree::build(std::span<BuildItem> items, std::uint32_t first) {
-  const std::size_t node = nodes_.size();
-  nodes_.push_back({});
+void AabbTree::build(std::span<BuildItem> items, std::uint32_t first,
+                     std::span<const Bounds> bounds, std::vector<Node>& nodes, unsigned threads) {
+  const std::size_t node = nodes.size();
+  nodes.push_back({});
 
   if (items.size() <= leafSize) {
-    Node leaf{{items[0].min[0], items[0].min[1], items[0].min[2]},
+    const Bounds& b0 = bounds[items[0].id];
+    Node leaf{{b0.min[0], b0.min[1], b0.min[2]},
               static_cast<std::uint32_t>(items.size()),
-              {items[0].max[0], items[0].max[1], items[0].max[2]},
+              {b0.max[0], b0.max[1], b0.max[2]},
               first};
-    for (const BuildItem& item : items)
+    for (const BuildItem& item : items) {
+      const Bounds& b = bounds[item.id];
       for (int k = 0; k < 3; ++k) {
-        leaf.min[k] = std::min(leaf.min[k], item.min[k]);
-        leaf.max[k] = std::max(leaf.max[k], item.max[k]);
+        leaf.min[k] = std::min(leaf.min[k], b.min[k]);
+        leaf.max[k] = std::max(leaf.max[k], b.max[k]);
       }
-    nodes_[node] = leaf;
+    }
+    nodes[node] = leaf;
     return;
   }
 
@@ -144,20 +162,38 @@ void AabbTree::build(std::span<BuildItem> items, std::uint32_t first) {
                    [axis](const BuildItem& l, const BuildItem& r) {
                      return l.centroid[axis] < r.centroid[axis];
                    });
-  build(items.first(middle), first);
-  const std::size_t right = nodes_.size();
-  build(items.subspan(middle), first + static_cast<std::uint32_t>(middle));
+  const std::span<BuildItem> leftItems = items.first(middle), rightItems = items.subspan(middle);
+  const std::uint32_t rightFirst = first + static_cast<std::uint32_t>(middle);
+  std::size_t right = 0;
+  if (threads > 1 && items.size() >= kParallelSubtree) {
+    // The right subtree on its own thread into its own array, appended after the left one
+    // with its child links moved by where it lands: the same array as one thread builds.
+    std::vector<Node> rightNodes;
+    rightNodes.reserve(rightItems.size());
+    std::thread worker(
+        [&] { build(rightItems, rightFirst, bounds, rightNodes, threads - threads / 2); });
+    build(leftItems, first, bounds, nodes, threads / 2);
+    worker.join();
+    right = nodes.size();
+    for (Node& n : rightNodes)
+      if (n.count == 0) n.index += static_cast<std::uint32_t>(right);
+    nodes.insert(nodes.end(), rightNodes.begin(), rightNodes.end());
+  } else {
+    build(leftItems, first, bounds, nodes, 1);
+    right = nodes.size();
+    build(rightItems, rightFirst, bounds, nodes, 1);
+  }
 
   Node parent{};
-  const Node& l = nodes_[node + 1];
-  const Node& r = nodes_[right];
+  const Node& l = nodes[node + 1];
+  const Node& r = nodes[right];
   for (int k = 0; k < 3; ++k) {
     parent.min[k] = std::min(l.min[k], r.min[k]);
     parent.max[k] = std::max(l.max[k], r.max[k]);
   }
   parent.count = 0;
   parent.index = static_cast<std::uint32_t>(right);
-  nodes_[node] = parent;
+  nodes[node] = parent;
 }
 
 double AabbTree::triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const {

@@ -57,10 +57,11 @@ public:
     std::uint32_t leaves = 0; ///< leaves visited: the query's work
   };
 
-  /// Builds the tree over all of mesh's triangles in O(T log T). Precondition: every index is
-  /// below mesh.positions.size() and the referenced positions are finite (compareSurfaces
-  /// checks this and throws before building).
-  explicit AabbTree(const TriangleMesh& mesh);
+  /// Builds the tree over all of mesh's triangles in O(T log T), the subtrees of its first
+  /// splits on up to `threads` threads (0: one per hardware thread); the tree is the same
+  /// whatever the count. Precondition: every index is below mesh.positions.size() and the
+  /// referenced positions are finite (compareSurfaces checks this and throws before building).
+  explicit AabbTree(const TriangleMesh& mesh, unsigned threads = 0);
 
   /// The closest point of the mesh to p, by branch and bound (nearer child first, subtrees
   /// pruned by squared box distance). `hint`, an index into triangles() or noTriangle, seeds
@@ -86,8 +87,12 @@ private:
     std::uint32_t index;
   };
   struct BuildItem;
+  struct Bounds;
 
-  void build(std::span<BuildItem> items, std::uint32_t first);
+  /// Appends to `nodes` the subtree over items (triangles()[first, first + items.size())),
+  /// its right subtrees built on new threads while `threads` > 1.
+  static void build(std::span<BuildItem> items, std::uint32_t first, std::span<const Bounds> bounds,
+                    std::vector<Node>& nodes, unsigned threads);
   double triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const;
 
   std::vector<Node> nodes_;

@@ -5,6 +5,7 @@
 #include "document/tile_texels.h"
 #include "measure/move_tolerance.h"
 #include "relax/offset_field.h"
+#include "relax/sample_masks.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -17,6 +18,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <future>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -126,40 +129,6 @@ bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& ch
   return false;
 }
 
-// The samples within `margin` (Chebyshev distance on the tiled plane, so across the seams) of a
-// changed one: a breadth-first search over the 8 neighbours, every copy of a border sample
-// reached with it.
-std::vector<std::uint8_t> grownMask(int n, const std::vector<std::uint8_t>& changed, int margin) {
-  const std::size_t side = static_cast<std::size_t>(n + 1);
-  auto index = [side](Sample s) {
-    return static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i);
-  };
-  std::vector<std::uint8_t> in(changed.size(), 0);
-  std::vector<Sample> front;
-  auto reach = [&](Sample s, std::vector<Sample>& next) {
-    std::array<Sample, 4> copies;
-    const int k = identifiedSamples(n, wrap(n, s), copies);
-    for (int c = 0; c < k; ++c) {
-      const Sample q = copies[static_cast<std::size_t>(c)];
-      if (in[index(q)]) continue;
-      in[index(q)] = 1;
-      next.push_back(q);
-    }
-  };
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      if (changed[index({i, j})]) reach({i, j}, front);
-  for (int d = 0; d < margin && !front.empty(); ++d) {
-    std::vector<Sample> next;
-    for (const Sample s : front)
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di)
-          if (di != 0 || dj != 0) reach({s.i + di, s.j + dj}, next);
-    front = std::move(next);
-  }
-  return in;
-}
-
 // The even-out's offsets (the whole model free), solved on document's positions.
 detail::OffsetField solveEvenOut(const Document& document, const RelaxOptions& options,
                                  const RelaxProgress& progress) {
@@ -219,52 +188,59 @@ std::string times(double ratio) {
   return text;
 }
 
-// The grid's triangles over the cells with a moved corner (offsets[k] != 0), their vertices at
-// `positions` (wrapped through the seams), compacted: the part of the surface a local relaxation
-// can change.
-TriangleMesh movedCellsMesh(int n, const std::vector<Vec3f>& positions,
-                            const detail::OffsetField& field) {
-  TriangleMesh mesh;
-  std::vector<std::uint32_t> vertex(positions.size(), ~0u);
-  const auto moved = [&](Sample s) {
-    const auto& d = field.offset[field.index(s.i, s.j)];
+// The area of the grid's triangles over the cells with a moved corner (offsets[k] != 0), their
+// vertices at `positions`: the part of the surface a local relaxation can change; none when no
+// cell has one. Summed cell by cell in row order.
+std::optional<double> movedCellsArea(int n, const std::vector<Vec3f>& positions,
+                                     const detail::OffsetField& field) {
+  const auto moved = [&](int i, int j) {
+    const auto& d = field.offset[field.index(i, j)];
     return d[0] != 0.0f || d[1] != 0.0f;
   };
+  bool any = false;
+  double area = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      if (!moved({i, j}) && !moved({i + 1, j}) && !moved({i, j + 1}) && !moved({i + 1, j + 1}))
-        continue;
+      if (!moved(i, j) && !moved(i + 1, j) && !moved(i, j + 1) && !moved(i + 1, j + 1)) continue;
+      any = true;
       for (const auto& tri : cellTriangles(n, i, j)) {
-        std::array<std::uint32_t, 3> t{};
-        for (std::size_t v = 0; v < 3; ++v) {
-          const std::size_t k = field.index(tri[v].i, tri[v].j);
-          if (vertex[k] == ~0u) {
-            vertex[k] = static_cast<std::uint32_t>(mesh.positions.size());
-            mesh.positions.push_back(positions[k]);
-          }
-          t[v] = vertex[k];
-        }
-        mesh.triangles.push_back(t);
+        const Vec3f a = positions[field.index(tri[0].i, tri[0].j)];
+        area += 0.5 * double(length(cross(positions[field.index(tri[1].i, tri[1].j)] - a,
+                                          positions[field.index(tri[2].i, tri[2].j)] - a)));
       }
     }
-  return mesh;
-}
-
-double meshArea(const TriangleMesh& mesh) {
-  double area = 0;
-  for (const auto& t : mesh.triangles)
-    area += 0.5 * double(length(cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                      mesh.positions[t[2]] - mesh.positions[t[0]])));
+  if (!any) return std::nullopt;
   return area;
 }
 
+// The whole surface's area, straight from the grid (no mesh built).
+double surfaceArea(int n, const std::vector<Vec3f>& positions) {
+  const std::size_t side = static_cast<std::size_t>(n) + 1;
+  const auto at = [&](Sample s) {
+    return positions[static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i)];
+  };
+  double total = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      for (const auto& tri : cellTriangles(n, i, j)) {
+        const Vec3f a = at(tri[0]);
+        total += 0.5 * double(length(cross(at(tri[1]) - a, at(tri[2]) - a)));
+      }
+  return total;
+}
+
+// What keep-detail's check measures against, the same for every try of one relaxation.
+struct SurfaceFigures {
+  double diagonal = 0; ///< of the bounding box (every 4th sample)
+  double area = 0;     ///< of the whole surface
+};
+
 // The positions of `image` resampled at the field's parameter points (what resampleDocument
-// writes into the positions), as plain points.
-std::vector<Vec3f> resampledPositions(const Document& document, const detail::OffsetField& field) {
+// writes into the positions), as plain points; `before`: the document's positions as they are.
+std::vector<Vec3f> resampledPositions(const Document& document, const std::vector<Vec3f>& before,
+                                      const detail::OffsetField& field) {
   const int n = document.size();
-  std::vector<Vec3f> out(document.positions.texels().size());
-  for (std::size_t k = 0; k < out.size(); ++k)
-    out[k] = document.positions.texels()[k].xyz();
+  std::vector<Vec3f> out = before;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const auto& d = field.offset[field.index(i, j)];
@@ -491,7 +467,8 @@ CheckSums measureSide(const CheckPoints& from, const CheckSurface& toSide, doubl
 // every cell that may move and the ring around them, its tree built once per relaxation. `far`,
 // when given, gets the samples whose points the full move takes farther than half the Hausdorff
 // tolerance (where it cuts: a pulled limb's tip). Returns the step kept (0: none).
-double keepWithinTolerance(const Document& document, const CheckSurface& old,
+double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& before,
+                           const SurfaceFigures& figures, const CheckSurface& old,
                            detail::OffsetField& field, std::vector<std::size_t>* far = nullptr) {
   // Collecting where the full move cuts: only the full move is tried (the caller holds those
   // samples and solves again rather than scale the move down).
@@ -499,21 +476,10 @@ double keepWithinTolerance(const Document& document, const CheckSurface& old,
       far ? std::vector<double>{1.0} : std::vector<double>{1.0, 0.5, 0.25, 0.125};
   const GeometryImage& image = document.positions;
   const int n = image.size();
-  const double diag = diagonal(image);
-  std::vector<Vec3f> before(image.texels().size());
-  for (std::size_t k = 0; k < before.size(); ++k)
-    before[k] = image.texels()[k].xyz();
-  const TriangleMesh movedMesh = movedCellsMesh(n, before, field);
-  if (movedMesh.triangles.empty()) return 0;
-  double total = 0; // the whole surface's area, straight from the grid (no mesh built)
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      for (const auto& tri : cellTriangles(n, i, j)) {
-        const Vec3f a = image.at(tri[0]).xyz();
-        total +=
-            0.5 * double(length(cross(image.at(tri[1]).xyz() - a, image.at(tri[2]).xyz() - a)));
-      }
-  const double movedArea = meshArea(movedMesh);
+  const double diag = figures.diagonal, total = figures.area;
+  const std::optional<double> moving = movedCellsArea(n, before, field);
+  if (!moving) return 0;
+  const double movedArea = *moving;
   const double share = total > 0 ? std::min(1.0, movedArea / total) : 1.0;
   const double fail = kKeepDetailHausdorff * diag, limit = 0.5 * fail, skip = kCheckSkip * fail;
   const std::size_t side = static_cast<std::size_t>(n) + 1;
@@ -522,10 +488,12 @@ double keepWithinTolerance(const Document& document, const CheckSurface& old,
     for (std::size_t k = 0; k < field.offset.size(); ++k)
       field.offset[k] = {static_cast<float>(step * double(solved.offset[k][0])),
                          static_cast<float>(step * double(solved.offset[k][1]))};
-    const std::vector<Vec3f> after = resampledPositions(document, field);
+    const std::vector<Vec3f> after = resampledPositions(document, before, field);
+    // A sample whose offset is zero keeps its bits: its move is zero.
     std::vector<float> moves(after.size(), 0.0f);
     for (std::size_t k = 0; k < after.size(); ++k)
-      moves[k] = length(after[k] - before[k]);
+      if (field.offset[k][0] != 0.0f || field.offset[k][1] != 0.0f)
+        moves[k] = length(after[k] - before[k]);
     // Only the cells whose surface moved by more than `skip` are measured (a point of a cell
     // lies within its farthest corner's move of the other surface), against them and the cells
     // around them.
@@ -685,19 +653,18 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   const int n = document.size(), side = n + 1;
   if (changed.size() != static_cast<std::size_t>(side) * static_cast<std::size_t>(side))
     throw Error(ErrorKind::InvalidArgument, "the changed samples must cover the (N+1)² image");
-  detail::OffsetField field(n);
   const float median = medianEdge(document.positions);
   const float limit = stretchedEdgeLimit(document.positions, median);
-  if (stretchedAt(document.positions, changed, limit)) {
-    const std::vector<std::uint8_t> region = grownMask(n, changed, margin);
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        if (region[field.index(i, j)] && !isSideMidpoint(n, {i, j}))
-          field.free[field.index(i, j)] = 1;
-  }
+  EditStepRecorder recorder(side);
+  // Nothing stretched: no sample is freed, and no field is made (what most strokes end with).
+  if (!stretchedAt(document.positions, changed, limit)) return recorder.finish(std::move(label));
+  detail::OffsetField field(n);
+  const std::vector<std::uint8_t> grown = detail::grownMask(n, changed, margin);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      if (grown[field.index(i, j)] && !isSideMidpoint(n, {i, j})) field.free[field.index(i, j)] = 1;
   for (Sample s : options.pinned)
     field.pin(s);
-  EditStepRecorder recorder(side);
   if (std::find(field.free.begin(), field.free.end(), 1) == field.free.end())
     return recorder.finish(std::move(label));
   // Where the full move cuts too deep (the tip of a limb pulled far: its samples are the
@@ -707,21 +674,15 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   detail::OffsetField best = field; // nothing moved
   // The old surface over every cell with a corner that may move, and the ring around them (where
   // a moved point's nearest old point may lie): built once for every try.
-  std::vector<std::uint8_t> region(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      bool free = false;
-      for (int dj = -1; dj <= 2 && !free; ++dj)
-        for (int di = -1; di <= 2 && !free; ++di)
-          if (i + di >= 0 && j + dj >= 0 && i + di <= n && j + dj <= n)
-            free = unsolved.free[field.index(i + di, j + dj)] != 0;
-      region[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) +
-             static_cast<std::size_t>(i)] = free;
-    }
+  const std::vector<std::uint8_t> region = detail::cellsNearFree(n, unsolved.free);
   std::vector<Vec3f> was(document.positions.texels().size());
   for (std::size_t k = 0; k < was.size(); ++k)
     was[k] = document.positions.texels()[k].xyz();
-  const CheckSurface old = checkSurface(n, was, region);
+  const SurfaceFigures figures{diagonal(document.positions), surfaceArea(n, was)};
+  // Built on its own thread while the first solve runs (neither reads what the other writes).
+  std::future<CheckSurface> oldSurface =
+      std::async(std::launch::async, [&] { return checkSurface(n, was, region); });
+  std::optional<CheckSurface> old;
   double bestStep = 0;
   std::vector<Sample> held;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
@@ -730,9 +691,10 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
       tried.pin(s);
     detail::solveOffsets(document.positions, tried, fineIterations(options),
                          kKeepDetailDonorEdge * median, true, {});
+    if (!old) old.emplace(oldSurface.get());
     std::vector<std::size_t> far;
-    const double step =
-        keepWithinTolerance(document, old, tried, attempt < kHoldAttempts ? &far : nullptr);
+    const double step = keepWithinTolerance(document, was, figures, *old, tried,
+                                            attempt < kHoldAttempts ? &far : nullptr);
     if (step > bestStep) {
       best = std::move(tried);
       bestStep = step;

@@ -8,6 +8,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -52,6 +53,7 @@ private slots:
   void closestPointRegions();
   void closestPointDegenerate();
   void treeMatchesBruteForce();
+  void treeIsTheSameOnEveryThreadCount();
   void identicalMeshesAreZero();
   void concentricSpheres();
   void translatedCube();
@@ -121,6 +123,33 @@ void SurfaceDistanceTest::treeMatchesBruteForce() {
     hint = warm.triangle;
     QVERIFY(std::abs(cold.distanceSquared - expected) <= 1e-12 * expected);
     QVERIFY(std::abs(warm.distanceSquared - expected) <= 1e-12 * expected);
+  }
+}
+
+void SurfaceDistanceTest::treeIsTheSameOnEveryThreadCount() {
+  // Enough triangles (over 100 000) that the first splits' subtrees are built on their own
+  // threads; a bumpy sphere, so that the median splits meet many near-equal centres.
+  TriangleMesh mesh = sphere(7, 1);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
+  for (Vec3f& p : mesh.positions)
+    p = p * (1 + jitter(random));
+  QVERIFY(mesh.triangles.size() > 100'000);
+  const detail::AabbTree one(mesh, 1);
+  std::uniform_real_distribution<double> coordinate(-1.2, 1.2);
+  for (const unsigned threads : {2u, 3u, 8u}) {
+    const detail::AabbTree many(mesh, threads);
+    QVERIFY(std::ranges::equal(one.triangleIds(), many.triangleIds()));
+    // The same nodes: a query within a small leaf budget visits the same leaves in the same
+    // order, so it stops at the same triangle with the same count.
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
+      const detail::AabbTree::Hit a = one.closest(p, detail::AabbTree::noTriangle, 8);
+      const detail::AabbTree::Hit b = many.closest(p, detail::AabbTree::noTriangle, 8);
+      QCOMPARE(b.triangle, a.triangle);
+      QCOMPARE(b.leaves, a.leaves);
+      QCOMPARE(b.distanceSquared, a.distanceSquared);
+    }
   }
 }
 
