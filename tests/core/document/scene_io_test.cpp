@@ -30,6 +30,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace octaclay::core;
@@ -144,6 +145,7 @@ private slots:
   void threeObjectsRoundTripBitExact();
   void everyCompressionReadsBack();
   void uncompressedPartsReadByOpenExr();
+  void lyingRawChunksRefused();
   void headersWithoutPixels();
   void oneObjectIsAPlainDocument();
   void todaysFileIsOneObject();
@@ -275,6 +277,50 @@ void SceneIoTest::uncompressedPartsReadByOpenExr() {
   std::ifstream one(p, std::ios::binary), two(path("again.exr"), std::ios::binary);
   QVERIFY(std::string(std::istreambuf_iterator<char>(one), {}) ==
           std::string(std::istreambuf_iterator<char>(two), {}));
+}
+
+// An uncompressed multi-part file whose chunk lies (its part number, its line) is refused by the
+// raw reader naming the line, never read into the wrong object.
+void SceneIoTest::lyingRawChunksRefused() {
+  const fs::path good = path("raw.exr");
+  writeScene(threeObjects(), good, {DocumentCompression::None, 1});
+  Imf::MultiPartInputFile file(good.c_str());
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // The lines of every part: the offset tables' length.
+  std::uint64_t tables = 0;
+  for (int k = 0; k < file.parts(); ++k)
+    tables +=
+        std::uint64_t(file.header(k).dataWindow().max.y - file.header(k).dataWindow().min.y + 1);
+  std::uint64_t firstChunk = 0;
+  // The first offset table starts right after the headers: its first entry is the smallest
+  // offset in the file's tables and points just past them.
+  for (std::size_t at = 8; at + 8 <= bytes.size(); ++at) {
+    std::uint64_t v;
+    std::memcpy(&v, bytes.data() + at, 8);
+    if (v == at + 8 * tables) {
+      firstChunk = at; // the table's start
+      break;
+    }
+  }
+  QVERIFY2(firstChunk > 0, "no offset table found");
+  std::uint64_t second; // part 2's first line: the entry after part 1's (33 lines)
+  std::memcpy(&second, bytes.data() + firstChunk + 8 * 33, 8);
+  for (const auto& [offset, value, needle] :
+       {std::tuple{std::uint64_t(0), std::int32_t(2), "of part 2"},
+        std::tuple{std::uint64_t(4), std::int32_t(5), "holds line 5"}}) {
+    std::string lying = bytes;
+    std::memcpy(lying.data() + second + offset, &value, 4);
+    const fs::path p = path("lying-chunk.exr");
+    std::ofstream(p, std::ios::binary).write(lying.data(), std::streamsize(lying.size()));
+    ErrorKind kind = ErrorKind::Io;
+    const QString message = errorOf([&] { (void)readScene(p); }, kind);
+    QCOMPARE(kind, ErrorKind::InvalidInput);
+    QVERIFY2(message.contains(needle) && message.contains("line 0 of part 1"), qPrintable(message));
+  }
 }
 
 void SceneIoTest::headersWithoutPixels() {
