@@ -29,8 +29,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
-constexpr std::size_t kChunkHeader = 8; // int32 y, int32 byte count
-constexpr int kWriteRows = 16;          // lines per pwrite: 3.4 MB at N = 8192
+constexpr std::size_t kChunkHeader = 8;      // int32 y, int32 byte count
+constexpr int kWriteRows = 16;               // lines per pwrite at least: 3.4 MB at N = 8192
+constexpr std::size_t kWriteBytes = 1 << 20; // and as many more as fit in 1 MiB (short lines)
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
   throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);
@@ -361,10 +362,12 @@ public:
   std::size_t chunkBytes() const { return chunk_; }
   std::uint64_t dataStart() const { return dataStart_; }
 
-  /// Writes lines [rowBegin, rowEnd), kWriteRows at a time, through lines (a scratch buffer).
+  /// Writes lines [rowBegin, rowEnd), kWriteRows or 1 MiB of them at a time, through lines (a
+  /// scratch buffer): a scene's short lines take as few pwrites as one large object's.
   void write(int rowBegin, int rowEnd, std::vector<char>& lines, ByteSink& sink) const {
-    for (int j0 = rowBegin; j0 < rowEnd; j0 += kWriteRows) {
-      const int j1 = std::min(rowEnd, j0 + kWriteRows);
+    const int batch = std::max(kWriteRows, static_cast<int>(kWriteBytes / chunk_));
+    for (int j0 = rowBegin; j0 < rowEnd; j0 += batch) {
+      const int j1 = std::min(rowEnd, j0 + batch);
       lines.resize(chunk_ * static_cast<std::size_t>(j1 - j0));
       for (int j = j0; j < j1; ++j)
         makeLine(j, lines.data() + chunk_ * static_cast<std::size_t>(j - j0));
