@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <condition_variable>
 #include <cstring>
 #include <exception>
 #include <mutex>
@@ -187,6 +188,58 @@ std::uint64_t offsetTableStart(const fs::path& path, const ReadOnlyFile& file, i
   return 0;
 }
 
+// OpenEXR's RLE of one line's bytes (ImfRleCompressor: the bytes split into even and odd halves,
+// each byte replaced by its difference from the previous plus 128, then runs of 3 to 128 equal
+// bytes as (count - 1, byte) and other stretches of up to 127 as (-length, bytes)), appended to
+// out. Returns the coded size.
+std::size_t appendRle(const char* in, std::size_t size, std::vector<char>& scratch,
+                      std::vector<char>& out) {
+  scratch.resize(size);
+  char* t1 = scratch.data();
+  char* t2 = scratch.data() + (size + 1) / 2;
+  for (std::size_t k = 0; k < size; k += 2)
+    *t1++ = in[k];
+  for (std::size_t k = 1; k < size; k += 2)
+    *t2++ = in[k];
+  auto* t = reinterpret_cast<unsigned char*>(scratch.data());
+  int previous = size > 0 ? t[0] : 0;
+  for (std::size_t k = 1; k < size; ++k) {
+    const int d = int(t[k]) - previous + (128 + 256);
+    previous = t[k];
+    t[k] = static_cast<unsigned char>(d);
+  }
+  // At worst a count byte for every 127: the buffer is sized once, then cut to what was written.
+  constexpr std::ptrdiff_t kMinRun = 3, kMaxRun = 127;
+  const std::size_t start = out.size();
+  out.resize(start + size + size / 127 + 2);
+  char* write = out.data() + start;
+  const char* end = scratch.data() + size;
+  const char* runStart = scratch.data();
+  const char* runEnd = runStart + 1;
+  while (runStart < end) {
+    while (runEnd < end && *runStart == *runEnd && runEnd - runStart - 1 < kMaxRun)
+      ++runEnd;
+    if (runEnd - runStart >= kMinRun) {
+      *write++ = static_cast<char>((runEnd - runStart) - 1);
+      *write++ = *runStart;
+      runStart = runEnd;
+    } else {
+      while (runEnd < end &&
+             ((runEnd + 1 >= end || *runEnd != *(runEnd + 1)) ||
+              (runEnd + 2 >= end || *(runEnd + 1) != *(runEnd + 2))) &&
+             runEnd - runStart < kMaxRun)
+        ++runEnd;
+      *write++ = static_cast<char>(runStart - runEnd);
+      std::memcpy(write, runStart, static_cast<std::size_t>(runEnd - runStart));
+      write += runEnd - runStart;
+      runStart = runEnd;
+    }
+    ++runEnd;
+  }
+  out.resize(static_cast<std::size_t>(write - out.data()));
+  return out.size() - start;
+}
+
 void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t stride) {
   if (!isHalf) {
     for (int i = 0; i < width; ++i)
@@ -205,9 +258,11 @@ void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t
 
 } // namespace
 
-bool rawLinesApply(const Imf::Header& header) {
+bool rawLinesApply(const Imf::Header& header, bool writing) {
   // A multi-part file's parts name their type: scan lines only.
-  if (header.compression() != Imf::NO_COMPRESSION || std::endian::native != std::endian::little ||
+  const bool coded = writing && header.compression() == Imf::RLE_COMPRESSION;
+  if ((header.compression() != Imf::NO_COMPRESSION && !coded) ||
+      std::endian::native != std::endian::little ||
       (header.hasType() && header.type() != Imf::SCANLINEIMAGE) || header.hasTileDescription())
     return false;
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
@@ -348,7 +403,8 @@ public:
                                                           &part.document.mask},
         layout_(lineLayout(part.header, layers_)),
         chunk_((partNumber < 0 ? kChunkHeader : kChunkHeader + 4) + layout_.bytes),
-        firstY_(part.header.dataWindow().min.y), fills_(layers_.size()) {
+        firstY_(part.header.dataWindow().min.y), fills_(layers_.size()),
+        rle_(part.header.compression() == Imf::RLE_COMPRESSION) {
     // A uniform layer's row is one row of halves, made once.
     for (std::size_t k = 0; k < layers_.size(); ++k)
       if (layers_[k]->uniform()) {
@@ -360,6 +416,26 @@ public:
 
   int rows() const { return document_.positions.rows(); }
   std::size_t chunkBytes() const { return chunk_; }
+  bool rle() const { return rle_; }
+
+  /// Appends line j's chunk to out as OpenEXR writes it: RLE-coded when that is smaller, else
+  /// the line itself. Returns the chunk's size.
+  std::size_t appendChunk(int j, std::vector<char>& line, std::vector<char>& scratch,
+                          std::vector<char>& out) const {
+    line.resize(chunk_);
+    makeLine(j, line.data());
+    const std::size_t prefix = chunk_ - layout_.bytes, start = out.size();
+    out.insert(out.end(), line.begin(), line.begin() + static_cast<std::ptrdiff_t>(prefix));
+    const std::size_t coded =
+        rle_ ? appendRle(line.data() + prefix, layout_.bytes, scratch, out) : layout_.bytes;
+    if (!rle_ || coded >= layout_.bytes) {
+      out.resize(start + prefix);
+      out.insert(out.end(), line.begin() + static_cast<std::ptrdiff_t>(prefix), line.end());
+    }
+    const auto size = static_cast<std::int32_t>(out.size() - start - prefix);
+    std::memcpy(out.data() + start + prefix - 4, &size, 4);
+    return out.size() - start;
+  }
   std::uint64_t dataStart() const { return dataStart_; }
 
   /// Writes lines [rowBegin, rowEnd), kWriteRows or 1 MiB of them at a time, through lines (a
@@ -426,7 +502,84 @@ private:
   std::size_t chunk_;
   std::int32_t firstY_;
   std::vector<std::vector<half>> fills_;
+  bool rle_;
 };
+
+// writeRawParts for files with RLE parts: a chunk's size is known only once it is coded, so the
+// lines go in rounds of about kRoundBytes, each round's bands coded on every core into a buffer
+// each; a band then waits for the band before it to be placed, writes its chunks after them and
+// fills in their offsets, so writing overlaps the coding of the bands after it.
+constexpr std::size_t kRoundBytes = 32 << 20;
+
+void writeCodedParts(const std::vector<PartLines>& plans, int lines, std::uint64_t dataStart,
+                     std::vector<std::uint8_t>& head, std::size_t table, ByteSink& sink) {
+  struct Line {
+    const PartLines* plan;
+    int j;
+  };
+  std::vector<Line> all;
+  all.reserve(static_cast<std::size_t>(lines));
+  for (const PartLines& plan : plans)
+    for (int j = 0; j < plan.rows(); ++j)
+      all.push_back({&plan, j});
+  const bool background = ::gettid() != ::getpid();
+  std::uint64_t at = dataStart; // where the next band's chunks go
+  std::size_t done = 0;
+  while (done < all.size()) {
+    std::size_t end = done, bytes = 0;
+    while (end < all.size() && (end == done || bytes + all[end].plan->chunkBytes() <= kRoundBytes))
+      bytes += all[end++].plan->chunkBytes();
+    std::mutex lock;
+    std::condition_variable placed;
+    int placedUpTo = 0; // the round's lines whose chunks are written, in order
+    const auto code = [&](int begin, int stop) {
+      if (background) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
+      std::vector<char> data, line, scratch;
+      std::vector<std::uint64_t> sizes;
+      for (int k = begin; k < stop; ++k) {
+        const Line& l = all[done + static_cast<std::size_t>(k)];
+        sizes.push_back(l.plan->appendChunk(l.j, line, scratch, data));
+      }
+      std::unique_lock guard(lock);
+      placed.wait(guard, [&] { return placedUpTo == begin; });
+      const std::uint64_t start = at;
+      at += data.size();
+      std::size_t entry = table + 8 * (done + static_cast<std::size_t>(begin));
+      std::uint64_t offset = start;
+      for (const std::uint64_t size : sizes) {
+        std::memcpy(head.data() + entry, &offset, 8);
+        entry += 8;
+        offset += size;
+      }
+      guard.unlock();
+      // Placed: the next band may go on while this one's bytes are written.
+      {
+        const std::lock_guard next(lock);
+        placedUpTo = stop;
+      }
+      placed.notify_all();
+      sink.writeAt(start,
+                   std::span(reinterpret_cast<const std::uint8_t*>(data.data()), data.size()));
+    };
+    const int count = static_cast<int>(end - done);
+    if (background) {
+      std::exception_ptr error;
+      std::thread lowered([&] {
+        try {
+          parallelRowsOrThrow(count, code, 8);
+        } catch (...) {
+          error = std::current_exception();
+        }
+      });
+      lowered.join();
+      if (error) std::rethrow_exception(error);
+    } else {
+      parallelRowsOrThrow(count, code, 8);
+    }
+    done = end;
+  }
+  sink.writeAt(0, head);
+}
 
 } // namespace
 
@@ -442,11 +595,18 @@ void writeRawParts(std::span<const RawPart> parts, bool multiPart,
   if (headerBytes.size() < 8 * static_cast<std::size_t>(lines) + 8)
     throw std::logic_error("OpenEXR wrote no line offset table");
 
-  // The header with its offset tables filled in: each line's place is known before any is made.
   std::vector<std::uint8_t> head = headerBytes;
   std::vector<PartLines> plans;
   plans.reserve(parts.size());
   std::size_t table = headerBytes.size() - 8 * static_cast<std::size_t>(lines);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    if (parts[k].header.compression() == Imf::RLE_COMPRESSION) {
+      for (std::size_t m = 0; m < parts.size(); ++m)
+        plans.emplace_back(parts[m], multiPart ? static_cast<int>(m) : -1, 0);
+      writeCodedParts(plans, lines, dataStart, head, table, sink);
+      return;
+    }
+  // The header with its offset tables filled in: each line's place is known before any is made.
   std::uint64_t at = dataStart;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     plans.emplace_back(parts[k], multiPart ? static_cast<int>(k) : -1, at);

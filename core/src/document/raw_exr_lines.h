@@ -23,8 +23,9 @@ namespace octaclay::core::detail {
 
 /// Whether header's pixels can go this way: no compression, scanlines (a single-part file or a
 /// part of a multi-part one), every channel sampled 1×1, float or half, and this machine
-/// little-endian. Any W × H.
-bool rawLinesApply(const Imf::Header& header);
+/// little-endian. Any W × H. writing: RLE too (writeRawParts codes it as OpenEXR does; reading
+/// RLE stays OpenEXR's).
+bool rawLinesApply(const Imf::Header& header, bool writing = false);
 
 /// Reads the positions (xyz; w stays 0) and, when layers is not empty, the layers the file holds
 /// among them (each kept uniform, a fill value, while every texel equals the first; else full
@@ -54,7 +55,9 @@ struct RawPart {
 /// writeRawLines for several parts: headerBytes is what OpenEXR's MultiPartOutputFile writes
 /// before any pixel (magic number, version, every header, the empty header, then the offset
 /// tables' places, a line each, in part order, not filled). Each chunk starts with its part
-/// number. multiPart false: one part, the single-part layout (writeRawLines).
+/// number. multiPart false: one part, the single-part layout (writeRawLines). RLE parts are coded
+/// on every core as OpenEXR's RleCompressor codes them (a line whose code is no smaller is
+/// stored as it is), in rounds of about 8 MiB whose chunks are placed one after another.
 void writeRawParts(std::span<const RawPart> parts, bool multiPart,
                    const std::vector<std::uint8_t>& headerBytes, ByteSink& sink);
 
