@@ -536,12 +536,23 @@ void writeCodedParts(const std::vector<PartLines>& plans, int lines, std::uint64
       if (background) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
       std::vector<char> data, line, scratch;
       std::vector<std::uint64_t> sizes;
-      for (int k = begin; k < stop; ++k) {
-        const Line& l = all[done + static_cast<std::size_t>(k)];
-        sizes.push_back(l.plan->appendChunk(l.j, line, scratch, data));
+      std::exception_ptr failed; // still takes its turn, so the bands after it never wait forever
+      try {
+        for (int k = begin; k < stop; ++k) {
+          const Line& l = all[done + static_cast<std::size_t>(k)];
+          sizes.push_back(l.plan->appendChunk(l.j, line, scratch, data));
+        }
+      } catch (...) {
+        failed = std::current_exception();
       }
       std::unique_lock guard(lock);
       placed.wait(guard, [&] { return placedUpTo == begin; });
+      if (failed) {
+        placedUpTo = stop;
+        guard.unlock();
+        placed.notify_all();
+        std::rethrow_exception(failed);
+      }
       const std::uint64_t start = at;
       at += data.size();
       std::size_t entry = table + 8 * (done + static_cast<std::size_t>(begin));
