@@ -5,8 +5,8 @@
 // today's one-document format decompresses to the plain document it was; a file that claims 10^6
 // objects is refused (exit 3, nothing written).
 
-#include "cli_support.h"
 #include "../file_test_support.h"
+#include "cli_support.h"
 
 #include "octaclay/core/codec/compressed_document.h"
 #include "octaclay/core/document/document_io.h"
