@@ -21,6 +21,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <string>
 
 using namespace octaclay;
 
@@ -45,6 +48,33 @@ core::Scene threeObjects() {
                            true,
                            true});
   return scene;
+}
+
+// The file's bytes with the value of the occurrence-th attribute called name (its header's, in
+// part order) replaced by value (the same length): a scene whose part header lies.
+std::string withAttribute(std::string bytes, const std::string& name, int occurrence,
+                          const std::string& value) {
+  std::size_t at = 0;
+  for (int k = 0; k <= occurrence; ++k) {
+    at = bytes.find(name + '\0', at == 0 ? 0 : at + 1);
+    if (at == std::string::npos) return {};
+  }
+  at += name.size() + 1;             // past the name
+  at = bytes.find('\0', at) + 1 + 4; // past the type name and the size
+  bytes.replace(at, value.size(), value);
+  return bytes;
+}
+
+std::string fileBytes(const QString& path) {
+  std::ifstream in(path.toStdString(), std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::string floatBytes(std::initializer_list<float> values) {
+  std::string bytes;
+  for (const float v : values)
+    bytes.append(reinterpret_cast<const char*>(&v), 4);
+  return bytes;
 }
 
 bool sameBits(const core::GeometryImage& a, const core::GeometryImage& b) {
@@ -165,6 +195,54 @@ private slots:
     QVERIFY2(r.exitCode == kInvalidInput, qPrintable(r.err));
     QVERIFY2(r.err.contains("declares 1000000 objects"), qPrintable(r.err));
     QVERIFY(!QFileInfo::exists(file("million.exr")));
+  }
+
+  // A scene file whose part header lies (sizes, an unknown topology, a NaN transform) or whose
+  // parts disagree (two objects of one name): every command that reads it exits 3 naming the
+  // problem, and writes nothing.
+  void lyingSceneFilesExitThree_data() {
+    QTest::addColumn<int>("lie");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("width") << 0 << "octaclay.width = 99";
+    QTest::newRow("unknown topology") << 1 << "unknown topology 'octahedrax'";
+    QTest::newRow("NaN translation") << 2 << "not a finite number";
+    // (Format versions cannot disagree yet: a part of another version is refused on its own.)
+    QTest::newRow("parts disagree: one name twice") << 3 << "both named 'Leg'";
+  }
+
+  void lyingSceneFilesExitThree() {
+    QFETCH(int, lie);
+    QFETCH(QString, needle);
+    core::Scene scene = threeObjects();
+    scene.objects[1] = {"Leg",
+                        core::makeDocument(core::makeBaseShape(core::BaseShape::Cube, 16)),
+                        {{0, 1, 0}, {}, {1, 1, 1}},
+                        true,
+                        false};
+    scene.objects[2].document = core::makeDocument(core::makeTorus(core::Torus{0.8f, 0.2f}, 32, 8));
+    scene.objects[2].name = "Lex";
+    core::writeScene(scene, file("good.exr").toStdString());
+    const std::string good = fileBytes(file("good.exr"));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const std::string lying =
+        lie == 0   ? withAttribute(good, "octaclay.width", 0, std::string("\x63\0\0\0", 4))
+        : lie == 1 ? withAttribute(good, "octaclay.parameterization", 1, "octahedrax")
+        : lie == 2 ? withAttribute(good, "octaclay.translation", 2, floatBytes({0, nan, 0}))
+                   : withAttribute(good, "octaclay.name", 2, "Leg");
+    QVERIFY(!lying.empty() && lying != good);
+    std::ofstream(file("lying.exr").toStdString(), std::ios::binary)
+        .write(lying.data(), std::streamsize(lying.size()));
+    const QString out = file("never.ocz"), exr = file("never.exr");
+    for (const QStringList& args :
+         {QStringList{"objects", file("lying.exr")}, QStringList{"info", file("lying.exr")},
+          QStringList{"compress", file("lying.exr"), "--codec", "lossless", "-o", out},
+          QStringList{"transform", file("lying.exr"), "--object", "Body", "--scale", "2", "-o",
+                      exr}}) {
+      const Result r = runCli(args);
+      QVERIFY2(r.exitCode == kInvalidInput && r.err.contains(needle.toUtf8()),
+               qPrintable(describe(args, r)));
+      QVERIFY(!QFileInfo::exists(out) && !QFileInfo::exists(exr));
+    }
   }
 
 private:
