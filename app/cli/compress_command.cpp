@@ -11,9 +11,11 @@
 #include "rd_measure.h"
 
 #include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/codec/compressed_scene.h"
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/document/document_io.h"
+#include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/file_extension.h"
 
@@ -133,6 +135,75 @@ int runSweep(const CompressOptionsCli& opt) {
   return kExitOk;
 }
 
+// A scene (several objects, or one with a name, place, lock or a torus or plane image): every
+// object in one .ocz (version 2), each object's exactness and largest coordinate error reported.
+int runCompressScene(const CompressOptionsCli& opt, const core::Scene& scene,
+                     ProgressLine& progress) {
+  for (const core::SceneObject& object : scene.objects)
+    core::requireUsableSize(object.document.positions,
+                            opt.input + " (object '" + object.name + "')");
+  progress.stage("encoding");
+  core::CompressOptions options;
+  options.codec = opt.codec;
+  options.params.quality = opt.quality;
+  options.params.mode = opt.mode;
+  auto start = Clock::now();
+  const std::vector<std::uint8_t> bytes = core::compressScene(scene, options);
+  const double encodeMs = millisecondsSince(start);
+  progress.stage("decoding");
+  start = Clock::now();
+  const core::Scene decoded = core::decompressScene(bytes);
+  const double decodeMs = millisecondsSince(start);
+
+  nlohmann::json objects = nlohmann::json::array();
+  std::size_t samples = 0;
+  bool exact = true;
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const auto& original = scene.objects[k].document.positions.texels();
+    const auto& back = decoded.objects[k].document.positions.texels();
+    double error = 0;
+    for (std::size_t t = 0; t < original.size(); ++t)
+      for (const float d :
+           {original[t].x - back[t].x, original[t].y - back[t].y, original[t].z - back[t].z})
+        error = std::max(error, double(std::abs(d)));
+    samples += original.size();
+    exact = exact && error == 0;
+    const core::GeometryImage& image = scene.objects[k].document.positions;
+    objects.push_back({{"name", scene.objects[k].name},
+                       {"topology", std::string(core::topologyName(image.topology()))},
+                       {"width", image.width()},
+                       {"height", image.height()},
+                       {"exact", error == 0},
+                       {"max_error", error}});
+  }
+  const core::Codec& codec = requireCodec(opt.codec);
+  const double bitsPerSample = 8.0 * double(bytes.size()) / double(samples);
+  nlohmann::json out{{"input", opt.input},    {"output", opt.output},
+                     {"codec", opt.codec},    {"lossy", codec.info.lossy},
+                     {"bytes", bytes.size()}, {"bits_per_vertex", bitsPerSample},
+                     {"encode_ms", encodeMs}, {"decode_ms", decodeMs},
+                     {"exact", exact},        {"objects", objects}};
+  if (codec.info.lossy) out["quality"] = opt.quality >= 0 ? opt.quality : codec.info.defaultQuality;
+  if (!opt.mode.empty()) out["mode"] = opt.mode;
+  std::ostringstream report; // made before the file is committed
+  if (opt.json) {
+    report << jsonText(out) << "\n";
+  } else {
+    report << opt.output << ": " << scene.objects.size() << " objects, " << bytes.size()
+           << " bytes, " << bitsPerSample << " bits per vertex (" << opt.codec << ")\nencode "
+           << encodeMs << " ms, decode " << decodeMs << " ms\n";
+    for (const nlohmann::json& object : objects)
+      report << "  " << object["name"].get<std::string>() << ": "
+             << (object["exact"].get<bool>()
+                     ? std::string("positions exact")
+                     : "largest coordinate error " + object["max_error"].dump())
+             << "\n";
+  }
+  core::writeBytesAtomically(opt.output, bytes);
+  std::cout << report.str();
+  return kExitOk;
+}
+
 int runCompress(const CompressOptionsCli& opt) {
   if (opt.sweep) return runSweep(opt);
   if (opt.codec.empty())
@@ -153,6 +224,13 @@ int runCompress(const CompressOptionsCli& opt) {
 
   ProgressLine progress("compress", !opt.json);
   progress.stage("reading");
+  // Without --object, a scene (not a plain octahedral document) goes whole into the .ocz.
+  if (opt.object.empty()) {
+    core::Scene scene = core::readScene(opt.input);
+    if (!isPlainDocument(scene, opt.input) ||
+        scene.objects.front().document.topology != core::Topology::Octahedral)
+      return runCompressScene(opt, scene, progress);
+  }
   const core::Document doc = std::move(readChosenObject(opt.input, opt.object).object().document);
   core::requireUsableSize(doc.positions, opt.input);
   core::requireOctahedral(doc.positions, "compress (the codecs)", opt.input);
@@ -250,8 +328,9 @@ int runCompress(const CompressOptionsCli& opt) {
 Command addCompressCommand(CLI::App& app) {
   auto opt = std::make_shared<CompressOptionsCli>();
   CLI::App* sub = app.add_subcommand(
-      "compress", "Store a document compressed (.ocz), or with --sweep write the "
-                  "rate-distortion report of every codec beside Draco");
+      "compress", "Store a document compressed (.ocz): every object of a scene, or the one "
+                  "--object names; or with --sweep write the rate-distortion report of every "
+                  "codec beside Draco");
   sub->add_option("document", opt->input, "Document (.exr)")->required();
   addObjectOption(*sub, opt->object);
   sub->add_option("--codec", opt->codec,
@@ -290,28 +369,35 @@ Command addDecompressCommand(CLI::App& app) {
             requireNotInput(opt->output, opt->input);
             const std::vector<std::uint8_t> bytes = readBytes(opt->input);
             const auto start = Clock::now();
-            const core::Document doc = [&] {
+            // A version-1 file's one object is named as the output's plain document reads, so
+            // it is written as the plain document it was.
+            const std::string stem = std::filesystem::path(opt->output).stem().string();
+            const core::Scene scene = [&] {
               try {
-                return core::decompressDocument(bytes);
+                return core::decompressScene(bytes, core::objectNameProblem(stem) ? "Model" : stem);
               } catch (const core::Error& e) {
                 if (e.kind() != core::ErrorKind::InvalidInput) throw;
                 throw core::Error(e.kind(), opt->input + ": " + e.what());
               }
             }();
             const double decodeMs = millisecondsSince(start);
+            const int n = scene.objects.front().document.size();
             std::ostringstream report; // made before the save, which commits last
             if (opt->json)
               report << app::JsonReply{{"input", opt->input},
                                        {"output", opt->output},
-                                       {"n", doc.size()},
+                                       {"n", n},
+                                       {"objects", scene.objects.size()},
                                        {"bytes", bytes.size()},
                                        {"decode_ms", decodeMs}}
                             .dump()
                      << "\n";
+            else if (scene.objects.size() == 1)
+              report << opt->output << ": N = " << n << ", decoded in " << decodeMs << " ms\n";
             else
-              report << opt->output << ": N = " << doc.size() << ", decoded in " << decodeMs
-                     << " ms\n";
-            core::writeDocument(doc, opt->output);
+              report << opt->output << ": " << scene.objects.size() << " objects, decoded in "
+                     << decodeMs << " ms\n";
+            writeSceneOrDocument(scene, opt->output, opt->output);
             std::cout << report.str();
             return kExitOk;
           }};

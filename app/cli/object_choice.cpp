@@ -15,8 +15,9 @@ std::string listOfNames(const core::Scene& scene) {
   return list;
 }
 
-// What a single-part file without scene attributes reads as, for the file at path.
-bool isPlain(const core::Scene& scene, const std::string& path) {
+} // namespace
+
+bool isPlainDocument(const core::Scene& scene, const std::string& path) {
   if (scene.objects.size() != 1) return false;
   const core::SceneObject& object = scene.objects.front();
   const std::string stem = std::filesystem::path(path).stem().string();
@@ -24,8 +25,6 @@ bool isPlain(const core::Scene& scene, const std::string& path) {
   return object.name == plainName && object.transform == core::ObjectTransform{} &&
          object.visible && !object.locked;
 }
-
-} // namespace
 
 CLI::Option* addObjectOption(CLI::App& sub, std::string& name) {
   return sub.add_option("--object", name,
@@ -64,7 +63,7 @@ void writeChosenObject(ChosenObject& chosen, core::Document result, const std::s
 
 void writeSceneOrDocument(const core::Scene& scene, const std::string& source,
                           const std::string& path) {
-  if (isPlain(scene, source))
+  if (isPlainDocument(scene, source))
     core::writeDocument(scene.objects.front().document, path);
   else
     core::writeScene(scene, path);

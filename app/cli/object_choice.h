@@ -40,6 +40,10 @@ void requireUnlocked(const ChosenObject& chosen, const std::string& what);
 /// writeSceneOrDocument, chosen.source the file it came from).
 void writeChosenObject(ChosenObject& chosen, core::Document result, const std::string& path);
 
+/// Whether scene is what a plain document at path reads as: one object named by path's stem (or
+/// "Model"), at the identity, visible, unlocked.
+bool isPlainDocument(const core::Scene& scene, const std::string& path);
+
 /// Writes scene to path. A plain document (one object as source, a file without scene
 /// attributes, reads: named by source's stem or "Model", at the identity, visible, unlocked) is
 /// written as writeDocument writes it, byte for byte as before scenes; anything else through

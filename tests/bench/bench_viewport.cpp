@@ -1,6 +1,7 @@
 // Frame rates of the modeller's viewport in a 1280 x 800 window (the issue's targets): frames/s
 // while a scripted push stroke runs at N = 1024 (with View ▸ Wireframe off and on) and N = 4096
-// shown at level 256, and the frame
+// shown at level 256, and on one object of a scene of 1, 4 and 16 objects of N = 512 (issue 33:
+// >= 30 frames/s at 16; `bench_viewport --scenes` runs these alone), and the frame
 // time of our level-256 model beside VTK drawing the same sphere as plain vtkPolyData (full
 // resolution and level 256), all measured in one run. A plain program printing a table: every
 // frame is a synchronous paint of the widget followed by glFinish, so the GL work (llvmpipe
@@ -10,6 +11,7 @@
 #include "viewport_widget.h"
 
 #include "octaclay/core/document/document.h"
+#include "octaclay/core/document/scene.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/gpu/brush_library.h"
@@ -124,22 +126,61 @@ struct StrokeFigures {
   double wall = 0, dabsEstimate = 0, lastDabMs = 0, beginMs = 0, endMs = 0, statFps = 0;
   std::size_t changedTexels = 0, recordTexels = 0;
   float maxMove = 0, radiusEnd = 0;
+  double circle = 0; // px
 };
 
+// A scene of `objects` objects of N = n: the sphere at the origin, the one sculpted (object 0),
+// and the others, blobs at a third of its size, on a ring of radius 1.6 around it in the view's
+// plane, clear of the stroke's circle (issue 33: stroking one object of a 16-object scene).
+void loadScene(app::ViewportWidget& widget, const core::GeometryImage& image, int objects,
+               int divisor) {
+  core::Scene scene = core::sceneOf(core::makeDocument(image), "Sphere");
+  const core::Document blob =
+      core::makeDocument(core::makeBaseShape(core::BaseShape::Blob, image.size()));
+  for (int k = 1; k < objects; ++k) {
+    const double angle = 2 * kPi * (k - 1) / (objects - 1);
+    scene.objects.push_back({scene.uniqueName("Blob"),
+                             blob,
+                             {{1.6f * float(std::cos(angle)), 1.6f * float(std::sin(angle)), 0},
+                              {0, 0, float(20 * k)},
+                              {0.33f, 0.33f, 0.33f}},
+                             true,
+                             false});
+  }
+  if (!widget.modeller().setScene(std::move(scene)))
+    fail("setScene failed: " + widget.error().toStdString());
+  widget.setLevelDivisor(divisor);
+  QCoreApplication::processEvents();
+  if (widget.stats().n != image.size() || widget.modeller().objectCount() != objects)
+    fail("the scene did not take (N " + std::to_string(widget.stats().n) + ", " +
+         std::to_string(widget.modeller().objectCount()) + " objects)");
+}
+
 // A push stroke along a circle of kCircleRadius px around the model's centre on screen, the
-// cursor moving kStepPixels per frame.
-StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor) {
+// cursor moving kStepPixels per frame; objects > 0: the model is object 0 of such a scene.
+StrokeFigures strokeCase(app::ViewportWidget& widget, int n, int divisor, int objects = 0) {
   StrokeFigures f;
   f.n = n;
   f.divisor = divisor;
   const core::GeometryImage start = core::makeBaseShape(core::BaseShape::Sphere, n);
-  load(widget, start, divisor);
+  if (objects > 0)
+    loadScene(widget, start, objects, divisor);
+  else
+    load(widget, start, divisor);
   checkShownTriangles(widget);
   const QPointF centre = widget.project({0, 0, 0});
+  // A scene frames all its objects: the sphere is smaller on screen, so the circle is at most
+  // 0.6 of its radius there (the same kStepPixels a frame).
+  const double circle =
+      objects > 0
+          ? std::min(kCircleRadius, 0.6 * std::hypot(widget.project({1, 0, 0}).x() - centre.x(),
+                                                     widget.project({1, 0, 0}).y() - centre.y()))
+          : kCircleRadius;
+  f.circle = circle;
   const auto at = [&](double angle) {
-    return centre + QPointF(kCircleRadius * std::cos(angle), kCircleRadius * std::sin(angle));
+    return centre + QPointF(circle * std::cos(angle), circle * std::sin(angle));
   };
-  const double step = kStepPixels / kCircleRadius;
+  const double step = kStepPixels / circle;
   if (!widget.pickAt(at(0)) || !widget.pickAt(at(kPi)))
     fail("the stroke's circle leaves the model");
 
@@ -366,34 +407,53 @@ int main(int argc, char** argv) {
               static_cast<double>(push->spacing), kCircleRadius, kStepPixels);
   std::fflush(stdout);
 
-  // (a), (b): stroking.
+  // (a), (b): stroking; (s1) to (s16): stroking one object of a scene of 1, 4 and 16 objects of
+  // N = 512 (level 256), the others drawn beside it. --scenes runs those alone.
+  const bool scenesOnly = argc > 1 && std::string(argv[1]) == "--scenes";
   std::printf("%-36s %7s %8s %9s %9s %11s %11s %9s %9s\n", "stroke case", "frames", "wall s",
               "frames/s", "ms/frame", "dabs (est.)", "dabs/s", "dab ms", "target");
   std::vector<StrokeFigures> strokes;
-  for (const auto& [n, divisor, target, wireframe] :
-       {std::tuple{1024, 4, 30.0, false}, std::tuple{1024, 4, 20.0, true},
-        std::tuple{4096, 16, 15.0, false}}) {
+  struct StrokeCase {
+    int n, divisor;
+    double target;
+    bool wireframe;
+    int objects;
+  };
+  std::vector<StrokeCase> cases;
+  if (!scenesOnly)
+    cases = {{1024, 4, 30.0, false, 0}, {1024, 4, 20.0, true, 0}, {4096, 16, 15.0, false, 0}};
+  for (int objects : {1, 4, 16})
+    cases.push_back({512, 2, 30.0, false, objects});
+  for (const StrokeCase& c : cases) {
     app::ViewLooks looks = widget.looks();
-    looks.wireframe = wireframe;
+    looks.wireframe = c.wireframe;
     widget.setLooks(looks);
-    const StrokeFigures f = strokeCase(widget, n, divisor);
+    const StrokeFigures f = strokeCase(widget, c.n, c.divisor, c.objects);
     const double fps = f.frames / f.wall;
-    std::printf("%-36s %7d %8.2f %9.1f %9.2f %11.0f %11.1f %9.3f %6.0f %s\n",
-                (std::string(n == 1024 ? (wireframe ? "(a')" : "(a)") : "(b)") +
-                 " stroke N=" + std::to_string(n) + " level 256 (/" + std::to_string(divisor) +
-                 ")" + (wireframe ? " wireframe" : ""))
-                    .c_str(),
+    const std::string name =
+        c.objects > 0 ? "(s" + std::to_string(c.objects) + ") stroke 1 of " +
+                            std::to_string(c.objects) + " objects N=512 (/2)"
+                      : std::string(c.n == 1024 ? (c.wireframe ? "(a')" : "(a)") : "(b)") +
+                            " stroke N=" + std::to_string(c.n) + " level 256 (/" +
+                            std::to_string(c.divisor) + ")" + (c.wireframe ? " wireframe" : "");
+    std::printf("%-36s %7d %8.2f %9.1f %9.2f %11.0f %11.1f %9.3f %6.0f %s\n", name.c_str(),
                 f.frames, f.wall, fps, f.wall / f.frames * 1e3, f.dabsEstimate,
-                f.dabsEstimate / f.wall, f.lastDabMs, target, fps >= target ? "met" : "MISSED");
+                f.dabsEstimate / f.wall, f.lastDabMs, c.target, fps >= c.target ? "met" : "MISSED");
     std::fflush(stdout);
     strokes.push_back(f);
   }
   widget.setLooks({});
   for (const StrokeFigures& f : strokes)
-    std::printf("  N=%d: %zu texels moved (max %.3f), undo record %zu texels, brush radius at the "
-                "end %.3f, beginStroke %.1f ms, endStroke %.1f ms, stats().framesPerSecond %.0f\n",
-                f.n, f.changedTexels, static_cast<double>(f.maxMove), f.recordTexels,
-                static_cast<double>(f.radiusEnd), f.beginMs, f.endMs, f.statFps);
+    std::printf(
+        "  N=%d: circle %.0f px, %zu texels moved (max %.3f), undo record %zu texels, brush "
+        "radius at the end %.3f, beginStroke %.1f ms, endStroke %.1f ms, "
+        "stats().framesPerSecond %.0f\n",
+        f.n, f.circle, f.changedTexels, static_cast<double>(f.maxMove), f.recordTexels,
+        static_cast<double>(f.radiusEnd), f.beginMs, f.endMs, f.statFps);
+  if (scenesOnly) {
+    std::printf("total run time %.1f s\n", since(total));
+    return 0;
+  }
 
   // (c) to (e): drawing only, N = 1024.
   std::printf("\n%-60s %7s %9s %9s %12s\n", "draw case (no stroke)", "frames", "ms/frame",

@@ -66,7 +66,6 @@ private slots:
     // Commands still written for the ball alone say so by name (exit 2), and write nothing.
     for (const QStringList& args :
          {QStringList{"lod", file("t.exr"), "--size", "8", "-o", file("t.lod.obj")},
-          QStringList{"compress", file("t.exr"), "--codec", "lossless", "-o", file("t.ocz")},
           QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
           QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")},
           QStringList{"resize", file("t.exr"), "--size", "16", "-o", file("t4.exr")}}) {
@@ -75,6 +74,17 @@ private slots:
                qPrintable(describe(args, r)));
       QVERIFY(!QFileInfo::exists(args.last()));
     }
+    // compress codes a torus with an exact codec (its W × H image padded to the square) and
+    // names a lossy codec that cannot (exit 2, nothing written).
+    RUN_JSON(exact, "compress", file("t.exr"), "--codec", "lossless", "-o", file("t.ocz"),
+             "--json");
+    QVERIFY(exact["exact"].toBool());
+    QCOMPARE(exact["objects"].toArray()[0].toObject()["height"].toInt(), 16);
+    const Result lossy =
+        runCli({"compress", file("t.exr"), "--codec", "dct", "-o", file("t-dct.ocz")});
+    QVERIFY2(lossy.exitCode == kUsage && lossy.err.contains("codec 'dct' cannot code object"),
+             qPrintable(lossy.err));
+    QVERIFY(!QFileInfo::exists(file("t-dct.ocz")));
   }
 
   void strokesAcrossTheWrapAndToTheEdge() {

@@ -1,10 +1,10 @@
-// libFuzzer target for every decoder (issue 8): the .ocz container and each codec's stream
-// decoder must refuse any input with core::Error — never crash, read out of bounds, overflow
-// or allocate without bound. Anything else escaping (or a sanitizer report) is a finding.
+// libFuzzer target for every decoder (issue 8): the .ocz container (a document or a scene) and each
+// codec's stream decoder must refuse any input with core::Error — never crash, read out of bounds,
+// overflow or allocate without bound. Anything else escaping (or a sanitizer report) is a finding.
 
 #include "fuzz_input.h"
 
-#include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/codec/compressed_scene.h"
 #include "octaclay/core/codec/wavelet_codec.h"
 #include "octaclay/core/error.h"
 
@@ -26,9 +26,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz_input::Target target;
   if (!fuzz_input::parse({data, size}, target)) return 0;
   if (target.codec == nullptr) {
+    // Both versions: one document (1) and a scene (2, each object a version-1 container).
     refuseOrDecode([&] {
-      const octaclay::core::Document doc = octaclay::core::decompressDocument(target.stream);
-      if (doc.size() <= 0) std::abort(); // a document that decodes has a size
+      const octaclay::core::Scene scene = octaclay::core::decompressScene(target.stream);
+      if (scene.objects.empty()) std::abort(); // a scene that decodes has an object
+      for (const octaclay::core::SceneObject& object : scene.objects)
+        if (object.document.size() <= 0) std::abort(); // and each object a size
     });
     return 0;
   }

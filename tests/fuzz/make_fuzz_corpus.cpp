@@ -1,13 +1,16 @@
 // Writes decode_fuzzer's seed corpus into the folder given: for every codec and setting a
 // valid stream of a small sphere-like image (N = 8, 16; 1, 3 and 4 channels), and valid .ocz
-// documents, each prefixed as fuzz_input.h reads them.
+// documents and scenes, each prefixed as fuzz_input.h reads them.
 
 #include "fuzz_input.h"
 
 #include "octaclay/core/codec/compressed_document.h"
+#include "octaclay/core/codec/compressed_scene.h"
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/sheet.h"
+#include "octaclay/core/geometry/torus.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -78,6 +81,20 @@ int main(int argc, char** argv) {
                                              .layerCodec = "lossless"}));
       ++written;
     }
+    // A scene (.ocz version 2): the ball, a torus of W ≠ H and a plane, placed, one hidden.
+    core::Scene scene = core::sceneOf(doc, "Ball");
+    scene.objects.push_back({"Ring",
+                             core::makeDocument(core::makeTorus({}, n, n / 4 < 4 ? 4 : n / 4)),
+                             {{1, 0, 0}, {90, 0, 0}, {0.5f, 0.5f, 0.5f}},
+                             false,
+                             false});
+    scene.objects.push_back(
+        {"Sheet", core::makeDocument(core::makeSheet(core::Sheet::Square, n)), {}, true, true});
+    const std::uint8_t container[1] = {0};
+    writeSeed(
+        dir, "ocz_scene_" + std::to_string(n), container,
+        core::compressScene(scene, {.codec = "lossless", .params = {}, .layerCodec = "lossless"}));
+    ++written;
   }
   std::printf("%d seeds in %s\n", written, dir.string().c_str());
   return 0;

@@ -3,11 +3,15 @@
 #include "modeller.h"
 #include "object_placement.h"
 
+#include "octaclay/core/document/scene.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
+#include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -18,15 +22,15 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 namespace octaclay::app {
 namespace {
 
-vtkSmartPointer<vtkActor> objectActor(const core::SceneObject& object) {
-  const core::GeometryImage& image = object.document.positions;
-  const int step = std::max(1, image.size() / SceneActors::kMaxSide);
+// The object's surface every step-th sample, smooth-shaded, as a mapper.
+vtkSmartPointer<vtkPolyDataMapper> levelMapper(const core::GeometryImage& image, int step) {
   const core::TriangleMesh mesh = core::extractMesh(image, step);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
@@ -62,36 +66,103 @@ vtkSmartPointer<vtkActor> objectActor(const core::SceneObject& object) {
   surface->SetPoints(points);
   surface->SetPolys(triangles);
   surface->GetPointData()->SetNormals(normals);
-  vtkNew<vtkPolyDataMapper> mapper;
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(surface);
   mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.78, 0.76, 0.72);
-  actor->GetProperty()->SetSpecular(0.1);
-  actor->GetProperty()->BackfaceCullingOn(); // a closed surface, as the model is drawn
-  vtkNew<vtkMatrix4x4> matrix;
-  matrix->DeepCopy(ObjectPlacement(object.transform).objectToWorld().data()); // row-major
-  actor->SetUserMatrix(matrix);
-  return actor;
+  mapper->StaticOn(); // its input never changes: no pipeline check each frame
+  return mapper;
+}
+
+void renderStarts(vtkObject* caller, unsigned long, void* clientData, void*) {
+  static_cast<SceneActors*>(clientData)->chooseLevels(*static_cast<vtkRenderer*>(caller));
 }
 
 } // namespace
+
+SceneActors::~SceneActors() {
+  if (observed_) observed_->RemoveObserver(observer_);
+}
 
 void SceneActors::rebuild(vtkRenderer& renderer, const Modeller& modeller) {
   clear(renderer);
   for (int k = 0; k < modeller.objectCount(); ++k) {
     const core::SceneObject& object = modeller.objectAt(k);
     if (k == modeller.activeObject() || !object.visible || object.document.size() < 2) continue;
-    actors_.push_back(objectActor(object));
-    renderer.AddActor(actors_.back());
+    const core::GeometryImage& image = object.document.positions;
+    Object drawn;
+    for (int side = std::min(image.size(), kMaxSide);; side /= 2) {
+      drawn.levels.push_back(levelMapper(image, std::max(1, image.size() / side)));
+      drawn.sides.push_back(side);
+      if (side / 2 < kMinSide || image.size() % (side / 2) != 0) break;
+    }
+    const core::BoundingBox box = core::worldBounds(object);
+    for (int c = 0; c < 3; ++c)
+      drawn.centre[c] = 0.5 * (double((&box.min.x)[c]) + double((&box.max.x)[c]));
+    drawn.radius = 0.5 * double(box.diagonal());
+    const core::Vec3f extent = box.extent();
+    drawn.breadth = double(std::max({extent.x, extent.y, extent.z}));
+    drawn.actor = vtkSmartPointer<vtkActor>::New();
+    drawn.actor->SetMapper(drawn.levels.front());
+    drawn.actor->GetProperty()->SetColor(0.78, 0.76, 0.72);
+    drawn.actor->GetProperty()->SetSpecular(0.1);
+    drawn.actor->GetProperty()->BackfaceCullingOn(); // a closed surface, as the model is drawn
+    vtkNew<vtkMatrix4x4> matrix;
+    matrix->DeepCopy(ObjectPlacement(object.transform).objectToWorld().data()); // row-major
+    drawn.actor->SetUserMatrix(matrix);
+    renderer.AddActor(drawn.actor);
+    objects_.push_back(std::move(drawn));
   }
+  if (objects_.empty()) return;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(renderStarts);
+  callback->SetClientData(this);
+  observed_ = &renderer;
+  observer_ = renderer.AddObserver(vtkCommand::StartEvent, callback);
 }
 
 void SceneActors::clear(vtkRenderer& renderer) {
-  for (const auto& actor : actors_)
-    renderer.RemoveActor(actor);
-  actors_.clear();
+  for (const Object& object : objects_)
+    renderer.RemoveActor(object.actor);
+  objects_.clear();
+  if (observed_) observed_->RemoveObserver(observer_);
+  observed_ = nullptr;
+}
+
+int SceneActors::shownSide(int k) const {
+  const Object& object = objects_.at(static_cast<std::size_t>(k));
+  return object.sides[static_cast<std::size_t>(object.shown)];
+}
+
+void SceneActors::chooseLevels(vtkRenderer& renderer) {
+  vtkCamera* camera = renderer.GetActiveCamera();
+  const int* size = renderer.GetSize();
+  if (!camera || size[1] <= 0) return;
+  double eye[3];
+  camera->GetPosition(eye);
+  const double halfView = std::tan(camera->GetViewAngle() * 0.5 * vtkMath::Pi() / 180.0);
+  for (Object& object : objects_) {
+    // Pixels a world unit spans at the object's distance (or in the parallel view).
+    const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(eye, object.centre));
+    double pixelsPerUnit = 0;
+    if (camera->GetParallelProjection())
+      pixelsPerUnit = 0.5 * size[1] / std::max(camera->GetParallelScale(), 1e-12);
+    else if (distance > object.radius)
+      pixelsPerUnit = 0.5 * size[1] / (distance * halfView);
+    // A ball of side N shows about 2N edges around its outline, π·d pixels long: the coarsest
+    // level that keeps them within kOutlineSegmentPixels, the finest when the eye is inside
+    // the object's sphere.
+    const bool outside = distance > object.radius || camera->GetParallelProjection();
+    const double wanted =
+        outside ? vtkMath::Pi() * 2 * object.radius * pixelsPerUnit / (2 * kOutlineSegmentPixels)
+                : double(kMaxSide);
+    std::size_t level = 0;
+    while (level + 1 < object.sides.size() && double(object.sides[level + 1]) >= wanted)
+      ++level;
+    if (static_cast<int>(level) != object.shown) {
+      object.shown = static_cast<int>(level);
+      object.actor->SetMapper(object.levels[level]);
+    }
+  }
 }
 
 } // namespace octaclay::app

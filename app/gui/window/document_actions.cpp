@@ -8,6 +8,7 @@
 #include "user_messages.h"
 #include "viewport_widget.h"
 
+#include "octaclay/core/codec/compressed_scene.h"
 #include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/export/scene_export.h"
 #include "octaclay/core/lod/facing.h"
@@ -245,18 +246,12 @@ bool DocumentActions::saveDocument(const QString& path) {
 
 bool DocumentActions::saveCompressed(const QString& path, const core::CompressOptions& options) {
   if (!parts_.modeller->hasDocument()) return false;
-  if (parts_.modeller->objectCount() > 1) {
-    showError(tr("%1 was not written: a compressed model holds one object and this scene has "
-                 "%2. Save it as .exr to keep every object.")
-                  .arg(QFileInfo(path).fileName())
-                  .arg(parts_.modeller->objectCount()));
-    return false;
-  }
   parts_.viewport->endStroke();
-  auto snapshot = std::make_shared<core::Document>(parts_.modeller->document());
+  // Every object (.ocz version 2); a lone object at the identity keeps today's format.
+  auto snapshot = std::make_shared<core::Scene>(parts_.modeller->scene());
   const QString error =
       runner_.run(tr("Saving %1…").arg(QFileInfo(path).fileName()), [snapshot, path, options] {
-        core::writeCompressedDocument(*snapshot, options, toPath(path));
+        core::writeCompressedModel(*snapshot, options, toPath(path));
       });
   if (!error.isEmpty()) {
     showError(failureMessage(tr("Could not save"), path, error));

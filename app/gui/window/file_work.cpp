@@ -2,6 +2,7 @@
 
 #include "save_compressed_dialog.h"
 
+#include "octaclay/core/codec/compressed_scene.h"
 #include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/export/lod_export.h"
@@ -32,7 +33,7 @@ std::filesystem::path toPath(const QString& path) {
 
 core::Scene readSceneFile(const QString& path) {
   core::Scene scene = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0
-                          ? core::sceneOf(readModelFile(path))
+                          ? core::readCompressedScene(toPath(path))
                           : core::readScene(toPath(path));
   for (const core::SceneObject& object : scene.objects)
     if (object.document.topology != core::Topology::Octahedral)

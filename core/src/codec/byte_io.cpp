@@ -2,6 +2,9 @@
 
 #include "octaclay/core/error.h"
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <bit>
 
 namespace octaclay::core::detail {
@@ -88,6 +91,17 @@ std::uint16_t readStreamHeader(ByteReader& in, const CodecInfo& info, int n, int
     in.fail("stream has " + std::to_string(storedChannels) + " channels, expected " +
             std::to_string(channels));
   return version;
+}
+
+std::uint32_t crc32Of(std::span<const std::uint8_t> bytes) {
+  uLong crc = crc32(0L, Z_NULL, 0);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const uInt chunk = static_cast<uInt>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
+    crc = crc32(crc, bytes.data() + done, chunk);
+    done += chunk;
+  }
+  return static_cast<std::uint32_t>(crc);
 }
 
 } // namespace octaclay::core::detail

@@ -73,4 +73,7 @@ void writeStreamHeader(ByteWriter& out, const CodecInfo& info, int n, int channe
 std::uint16_t readStreamHeader(ByteReader& in, const CodecInfo& info, int n, int channels);
 inline constexpr std::size_t kStreamHeaderSize = 1 + 2 + 4 + 1;
 
+/// zlib's CRC-32 of bytes (any length): what ends an .ocz container.
+std::uint32_t crc32Of(std::span<const std::uint8_t> bytes);
+
 } // namespace octaclay::core::detail

@@ -15,8 +15,6 @@
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 
-#include <zlib.h>
-
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -27,22 +25,12 @@ namespace {
 
 using detail::ByteReader;
 using detail::ByteWriter;
+using detail::crc32Of;
 
 constexpr std::array<std::uint8_t, 4> kMagic{'O', 'C', 'Z', '1'};
 constexpr std::uint16_t kFormatVersion = 1;
 constexpr std::uint8_t kLayerCount = 4;
 enum Storage : std::uint8_t { Absent = 0, Uniform = 1, Coded = 2 };
-
-std::uint32_t crc32Of(std::span<const std::uint8_t> bytes) {
-  uLong crc = crc32(0L, Z_NULL, 0);
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const uInt chunk = static_cast<uInt>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
-    crc = crc32(crc, bytes.data() + done, chunk);
-    done += chunk;
-  }
-  return static_cast<std::uint32_t>(crc);
-}
 
 const Codec& requireCodec(std::string_view id) {
   const Codec* codec = findCodec(id);
@@ -173,6 +161,7 @@ Document decompressDocument(std::span<const std::uint8_t> bytes) {
     if (storage == Uniform && k > 0) {
       for (int c = 0; c < channels; ++c)
         layers[k]->fill[c] = in.f32();
+      if (k == 3) doc.hasMask = true; // a mask stored uniform is a mask all the same
     } else if (storage == Absent && k == 3) {
       doc.hasMask = false;
     } else if (storage == Coded) {

@@ -353,7 +353,8 @@ Document readDocumentInspecting(const fs::path& path, const DocumentReadOptions&
 Document
 readDocumentPixels(const fs::path& path, const Imf::Header& fileHeader,
                    const DocumentHeader& header, const DocumentReadOptions& options,
-                   const std::function<void(const Imf::FrameBuffer&, int, int)>& readPixels) {
+                   const std::function<void(const Imf::FrameBuffer&, int, int)>& readPixels,
+                   int part) {
   Document document;
   document.positions = GeometryImage(header.topology, header.width, header.height);
   document.topology = header.topology;
@@ -369,7 +370,7 @@ readDocumentPixels(const fs::path& path, const Imf::Header& fileHeader,
   // Uncompressed lines on every core (raw_exr_lines); else band by band through OpenEXR's frame
   // buffers: positions straight into the image, layers through a band buffer each.
   if (!(detail::rawLinesApply(fileHeader) &&
-        detail::readRawLines(path, fileHeader, document.positions, inFile))) {
+        detail::readRawLines(path, fileHeader, document.positions, inFile, part))) {
     for (Layer* layer : inFile)
       layers.emplace_back(*layer, side, rows);
     for (int rowBegin = 0; rowBegin < rows; rowBegin += kBandRows) {
@@ -459,7 +460,7 @@ void writeDocumentWithAttributes(const Document& document, const fs::path& path,
   Imf::Header header = documentPartHeader(document, options);
   if (addAttributes) addAttributes(header);
 
-  if (detail::rawLinesApply(header)) {
+  if (detail::rawLinesApply(header, true)) {
     // OpenEXR writes the header (and a zero offset table) into memory; the lines are made and
     // written on every core, each at its place (raw_exr_lines).
     detail::ExrMemoryStream head;

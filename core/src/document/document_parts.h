@@ -44,11 +44,14 @@ void writeDocumentPixels(const Document& document, const Imf::Header& header,
 
 /// Reads a document whose header was checked (checkDocumentHeader) band by band through
 /// readPixels(frame, firstRow, lastRow) (data-window rows, inclusive), then checks positions and
-/// layers as readDocument does. OpenEXR's exceptions pass through.
+/// layers as readDocument does. part: the header's part number in a multi-part file (-1: a
+/// single-part file), for the uncompressed lines read straight from the file (raw_exr_lines).
+/// OpenEXR's exceptions pass through.
 Document readDocumentPixels(
     const std::filesystem::path& path, const Imf::Header& header, const DocumentHeader& checked,
     const DocumentReadOptions& options,
-    const std::function<void(const Imf::FrameBuffer&, int firstRow, int lastRow)>& readPixels);
+    const std::function<void(const Imf::FrameBuffer&, int firstRow, int lastRow)>& readPixels,
+    int part = -1);
 
 /// readDocument that shows the checked header to inspect (which may throw) before any pixel
 /// memory is taken.

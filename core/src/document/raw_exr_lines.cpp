@@ -5,6 +5,7 @@
 #include "octaclay/core/error.h"
 
 #include <ImfChannelList.h>
+#include <ImfPartType.h>
 #include <fcntl.h>
 #include <half.h>
 #include <sys/resource.h>
@@ -15,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <condition_variable>
 #include <cstring>
 #include <exception>
 #include <mutex>
@@ -28,8 +30,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::array<const char*, 3> kPositionChannels{"P.X", "P.Y", "P.Z"};
-constexpr std::size_t kChunkHeader = 8; // int32 y, int32 byte count
-constexpr int kWriteRows = 16;          // lines per pwrite: 3.4 MB at N = 8192
+constexpr std::size_t kChunkHeader = 8;      // int32 y, int32 byte count
+constexpr int kWriteRows = 16;               // lines per pwrite at least: 3.4 MB at N = 8192
+constexpr std::size_t kWriteBytes = 1 << 20; // and as many more as fit in 1 MiB (short lines)
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& why) {
   throw Error(ErrorKind::InvalidInput, path.string() + ": " + why);
@@ -120,31 +123,121 @@ private:
   std::uint64_t size_ = 0;
 };
 
-// Where the offset table starts: after the magic number, the version and the attributes (name,
-// type name, int32 size, value), which end with an empty name. 0 when the attributes run past
-// the first MiB (the caller then lets OpenEXR read the pixels).
-std::uint64_t offsetTableStart(const fs::path& path, const ReadOnlyFile& file) {
-  std::vector<char> head(static_cast<std::size_t>(std::min<std::uint64_t>(file.size(), 1 << 20)));
-  if (!file.readAt(0, head)) refuse(path, "truncated: the file ends inside its header");
-  std::size_t at = 8;
-  const auto skipName = [&]() -> std::size_t { // the name's length, at moved past its 0
-    const auto end = std::find(head.begin() + static_cast<std::ptrdiff_t>(at), head.end(), '\0');
-    if (end == head.end()) return std::string::npos;
-    const std::size_t length = static_cast<std::size_t>(end - head.begin()) - at;
-    at += length + 1;
-    return length;
-  };
-  while (at < head.size()) {
-    const std::size_t name = skipName();
-    if (name == std::string::npos) return 0;
-    if (name == 0) return at;
-    if (skipName() == std::string::npos || at + 4 > head.size()) return 0;
-    std::int32_t size;
-    std::memcpy(&size, head.data() + at, 4);
-    if (size < 0) refuse(path, "corrupt OpenEXR header: an attribute of negative size");
-    at += 4 + static_cast<std::size_t>(size);
+// Where part's offset table starts (part -1: a single-part file): after the magic number, the
+// version and the headers' attributes (name, type name, int32 size, value), each header ending
+// with an empty name, a multi-part file's headers with an empty header; a multi-part file's
+// tables follow in part order, each chunkCount lines long. 0 when the headers run past the
+// first MiB (the caller then lets OpenEXR read the pixels).
+std::uint64_t offsetTableStart(const fs::path& path, const ReadOnlyFile& file, int part) {
+  // Most headers fit in the first 64 KiB (16 parts: about 10 KiB); read more only when not.
+  for (const std::uint64_t limit : {std::uint64_t{1} << 16, std::uint64_t{1} << 20}) {
+    std::vector<char> head(static_cast<std::size_t>(std::min<std::uint64_t>(file.size(), limit)));
+    if (!file.readAt(0, head)) refuse(path, "truncated: the file ends inside its header");
+    std::size_t at = 8;
+    const auto skipName = [&]() -> std::size_t { // the name's length, at moved past its 0
+      const auto end = std::find(head.begin() + static_cast<std::ptrdiff_t>(at), head.end(), '\0');
+      if (end == head.end()) return std::string::npos;
+      const std::size_t length = static_cast<std::size_t>(end - head.begin()) - at;
+      at += length + 1;
+      return length;
+    };
+    // One header's attributes; false when they run past what was read. Notes its chunkCount.
+    const auto skipHeader = [&](std::int64_t& chunks) {
+      while (at < head.size()) {
+        const std::size_t nameAt = at;
+        const std::size_t name = skipName();
+        if (name == std::string::npos) return false;
+        if (name == 0) return true;
+        if (skipName() == std::string::npos || at + 4 > head.size()) return false;
+        std::int32_t size;
+        std::memcpy(&size, head.data() + at, 4);
+        if (size < 0) refuse(path, "corrupt OpenEXR header: an attribute of negative size");
+        at += 4;
+        if (name == 10 && std::memcmp(head.data() + nameAt, "chunkCount", 10) == 0 && size == 4 &&
+            at + 4 <= head.size()) {
+          std::int32_t count;
+          std::memcpy(&count, head.data() + at, 4);
+          if (count < 0) refuse(path, "corrupt OpenEXR header: a negative chunkCount");
+          chunks = count;
+        }
+        at += static_cast<std::size_t>(size);
+      }
+      return false;
+    };
+    if (part < 0) {
+      std::int64_t chunks = 0;
+      if (skipHeader(chunks)) return at;
+    } else {
+      std::uint64_t before = 0; // lines of the tables before part's
+      bool complete = false;
+      for (int k = 0; at < head.size(); ++k) {
+        if (head[at] == '\0') { // the empty header that ends a multi-part file's headers
+          ++at;
+          complete = k > part;
+          break;
+        }
+        std::int64_t chunks = -1;
+        if (!skipHeader(chunks)) break;
+        if (chunks < 0) refuse(path, "corrupt OpenEXR header: a part without a chunkCount");
+        if (k < part) before += static_cast<std::uint64_t>(chunks);
+      }
+      if (complete) return at + 8 * before;
+    }
+    if (head.size() == file.size()) return 0;
   }
   return 0;
+}
+
+// OpenEXR's RLE of one line's bytes (ImfRleCompressor: the bytes split into even and odd halves,
+// each byte replaced by its difference from the previous plus 128, then runs of 3 to 128 equal
+// bytes as (count - 1, byte) and other stretches of up to 127 as (-length, bytes)), appended to
+// out. Returns the coded size.
+std::size_t appendRle(const char* in, std::size_t size, std::vector<char>& scratch,
+                      std::vector<char>& out) {
+  scratch.resize(size);
+  char* t1 = scratch.data();
+  char* t2 = scratch.data() + (size + 1) / 2;
+  for (std::size_t k = 0; k < size; k += 2)
+    *t1++ = in[k];
+  for (std::size_t k = 1; k < size; k += 2)
+    *t2++ = in[k];
+  auto* t = reinterpret_cast<unsigned char*>(scratch.data());
+  int previous = size > 0 ? t[0] : 0;
+  for (std::size_t k = 1; k < size; ++k) {
+    const int d = int(t[k]) - previous + (128 + 256);
+    previous = t[k];
+    t[k] = static_cast<unsigned char>(d);
+  }
+  // At worst a count byte for every 127: the buffer is sized once, then cut to what was written.
+  constexpr std::ptrdiff_t kMinRun = 3, kMaxRun = 127;
+  const std::size_t start = out.size();
+  out.resize(start + size + size / 127 + 2);
+  char* write = out.data() + start;
+  const char* end = scratch.data() + size;
+  const char* runStart = scratch.data();
+  const char* runEnd = runStart + 1;
+  while (runStart < end) {
+    while (runEnd < end && *runStart == *runEnd && runEnd - runStart - 1 < kMaxRun)
+      ++runEnd;
+    if (runEnd - runStart >= kMinRun) {
+      *write++ = static_cast<char>((runEnd - runStart) - 1);
+      *write++ = *runStart;
+      runStart = runEnd;
+    } else {
+      while (runEnd < end &&
+             ((runEnd + 1 >= end || *runEnd != *(runEnd + 1)) ||
+              (runEnd + 2 >= end || *(runEnd + 1) != *(runEnd + 2))) &&
+             runEnd - runStart < kMaxRun)
+        ++runEnd;
+      *write++ = static_cast<char>(runStart - runEnd);
+      std::memcpy(write, runStart, static_cast<std::size_t>(runEnd - runStart));
+      write += runEnd - runStart;
+      runStart = runEnd;
+    }
+    ++runEnd;
+  }
+  out.resize(static_cast<std::size_t>(write - out.data()));
+  return out.size() - start;
 }
 
 void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t stride) {
@@ -165,13 +258,13 @@ void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t
 
 } // namespace
 
-bool rawLinesApply(const Imf::Header& header) {
-  if (header.compression() != Imf::NO_COMPRESSION || std::endian::native != std::endian::little ||
-      header.hasType() || header.hasTileDescription())
+bool rawLinesApply(const Imf::Header& header, bool writing) {
+  // A multi-part file's parts name their type: scan lines only.
+  const bool coded = writing && header.compression() == Imf::RLE_COMPRESSION;
+  if ((header.compression() != Imf::NO_COMPRESSION && !coded) ||
+      std::endian::native != std::endian::little ||
+      (header.hasType() && header.type() != Imf::SCANLINEIMAGE) || header.hasTileDescription())
     return false;
-  // Lines of a square image only (a torus or plane may be W ≠ H: OpenEXR's frame buffers read it).
-  const Imath::Box2i window = header.dataWindow();
-  if (window.max.x - window.min.x != window.max.y - window.min.y) return false;
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
     const Imf::Channel& c = it.channel();
     if (c.xSampling != 1 || c.ySampling != 1 || (c.type != Imf::HALF && c.type != Imf::FLOAT))
@@ -181,20 +274,30 @@ bool rawLinesApply(const Imf::Header& header) {
 }
 
 bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage& positions,
-                  const std::vector<Layer*>& layers) {
+                  const std::vector<Layer*>& layers, int part) {
   const ReadOnlyFile file(path);
-  const std::uint64_t tableStart = offsetTableStart(path, file);
+  // OpenEXR's InputFile opens a multi-part file's first part too: its chunks carry part numbers.
+  std::array<char, 8> start{};
+  if (!file.readAt(0, start)) refuse(path, "truncated: the file ends inside its header");
+  std::uint32_t version;
+  std::memcpy(&version, start.data() + 4, 4);
+  constexpr std::uint32_t kMultiPartFlag = 0x1000;
+  if ((version & kMultiPartFlag) == 0 && part > 0) return false;
+  if ((version & kMultiPartFlag) != 0 && part < 0) part = 0;
+  if ((version & kMultiPartFlag) == 0) part = -1;
+  const std::uint64_t tableStart = offsetTableStart(path, file, part);
   if (tableStart == 0) return false;
-  const int side = positions.side();
+  const int side = positions.side(), rows = positions.rows();
+  const std::size_t prefix = part < 0 ? kChunkHeader : kChunkHeader + 4;
   const int firstY = header.dataWindow().min.y;
   const LineLayout layout = lineLayout(header, {layers.begin(), layers.end()});
-  std::vector<std::uint64_t> offsets(static_cast<std::size_t>(side));
+  std::vector<std::uint64_t> offsets(static_cast<std::size_t>(rows));
   if (!file.readAt(tableStart, {reinterpret_cast<char*>(offsets.data()), offsets.size() * 8}))
     refuse(path, "truncated: the file ends inside its line offset table");
-  for (int j = 0; j < side; ++j)
+  for (int j = 0; j < rows; ++j)
     if (offsets[static_cast<std::size_t>(j)] < tableStart + offsets.size() * 8 ||
         offsets[static_cast<std::size_t>(j)] > file.size() ||
-        file.size() - offsets[static_cast<std::size_t>(j)] < kChunkHeader + layout.bytes)
+        file.size() - offsets[static_cast<std::size_t>(j)] < prefix + layout.bytes)
       refuse(path, "corrupt: line " + std::to_string(j) + "'s offset is outside the file");
 
   // The bytes of a line that hold the rows wanted: [0, upTo) of its pixel data.
@@ -203,17 +306,21 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
     if (row.position >= 0)
       positionsEnd = std::max(positionsEnd, row.offset + side * std::size_t(4));
   const auto readLine = [&](int j, std::size_t upTo, std::vector<char>& line) {
-    line.resize(kChunkHeader + upTo);
+    line.resize(prefix + upTo);
     if (!file.readAt(offsets[static_cast<std::size_t>(j)], line))
       refuse(path, "truncated: line " + std::to_string(j) + " ends early");
-    std::int32_t y, bytes;
-    std::memcpy(&y, line.data(), 4);
-    std::memcpy(&bytes, line.data() + 4, 4);
-    if (y != firstY + j || static_cast<std::size_t>(bytes) != layout.bytes)
-      refuse(path, "corrupt: line " + std::to_string(j) + " holds line " + std::to_string(y) +
-                       " of " + std::to_string(bytes) + " bytes where " +
-                       std::to_string(layout.bytes) + " were expected");
-    return line.data() + kChunkHeader;
+    std::int32_t number = part, y, bytes;
+    if (part >= 0) std::memcpy(&number, line.data(), 4);
+    std::memcpy(&y, line.data() + prefix - kChunkHeader, 4);
+    std::memcpy(&bytes, line.data() + prefix - kChunkHeader + 4, 4);
+    if (number != part || y != firstY + j || static_cast<std::size_t>(bytes) != layout.bytes)
+      refuse(path, "corrupt: line " + std::to_string(j) +
+                       (part >= 0 ? " of part " + std::to_string(part) : std::string()) +
+                       " holds line " + std::to_string(y) +
+                       (part >= 0 ? " of part " + std::to_string(number) : std::string()) + " of " +
+                       std::to_string(bytes) + " bytes where " + std::to_string(layout.bytes) +
+                       " were expected");
+    return line.data() + prefix;
   };
 
   // Positions, and whether each layer's rows repeat line 0's first sample (a uniform layer).
@@ -229,7 +336,7 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
   float* positionFloats = reinterpret_cast<float*>(positions.texels().data()); // xyzw per texel
   std::vector<std::atomic<bool>> painted(layers.size());
   parallelRowsOrThrow(
-      side,
+      rows,
       [&](int rowBegin, int rowEnd) {
         std::vector<char> buffer;
         std::vector<bool> differs(layers.size(), false);
@@ -263,9 +370,9 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
                      &layer.fill[static_cast<std::size_t>(row.channel)], 1);
       continue;
     }
-    layer.texels.assign(static_cast<std::size_t>(side) * side * channels, 0.0f);
+    layer.texels.assign(static_cast<std::size_t>(side) * rows * channels, 0.0f);
     parallelRowsOrThrow(
-        side,
+        rows,
         [&](int rowBegin, int rowEnd) {
           std::vector<char> buffer;
           for (int j = rowBegin; j < rowEnd; ++j) {
@@ -283,99 +390,280 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
   return true;
 }
 
-void writeRawLines(const Document& document, const Imf::Header& header,
+namespace {
+
+// One part's lines as they are written: chunk after chunk from dataStart (each chunk: the part
+// number in a multi-part file, int32 y, int32 byte count, the line).
+class PartLines {
+public:
+  PartLines(const RawPart& part, int partNumber, std::uint64_t dataStart)
+      : document_(part.document), partNumber_(partNumber), dataStart_(dataStart),
+        columns_(part.document.positions.side()), layers_{&part.document.diffuse,
+                                                          &part.document.feature,
+                                                          &part.document.mask},
+        layout_(lineLayout(part.header, layers_)),
+        chunk_((partNumber < 0 ? kChunkHeader : kChunkHeader + 4) + layout_.bytes),
+        firstY_(part.header.dataWindow().min.y), fills_(layers_.size()),
+        rle_(part.header.compression() == Imf::RLE_COMPRESSION) {
+    // A uniform layer's row is one row of halves, made once.
+    for (std::size_t k = 0; k < layers_.size(); ++k)
+      if (layers_[k]->uniform()) {
+        fills_[k].resize(static_cast<std::size_t>(columns_) * layers_[k]->channels);
+        for (std::size_t t = 0; t < fills_[k].size(); ++t)
+          fills_[k][t] = half(layers_[k]->fill[t % static_cast<std::size_t>(layers_[k]->channels)]);
+      }
+  }
+
+  int rows() const { return document_.positions.rows(); }
+  std::size_t chunkBytes() const { return chunk_; }
+  bool rle() const { return rle_; }
+
+  /// Appends line j's chunk to out as OpenEXR writes it: RLE-coded when that is smaller, else
+  /// the line itself. Returns the chunk's size.
+  std::size_t appendChunk(int j, std::vector<char>& line, std::vector<char>& scratch,
+                          std::vector<char>& out) const {
+    line.resize(chunk_);
+    makeLine(j, line.data());
+    const std::size_t prefix = chunk_ - layout_.bytes, start = out.size();
+    out.insert(out.end(), line.begin(), line.begin() + static_cast<std::ptrdiff_t>(prefix));
+    const std::size_t coded =
+        rle_ ? appendRle(line.data() + prefix, layout_.bytes, scratch, out) : layout_.bytes;
+    if (!rle_ || coded >= layout_.bytes) {
+      out.resize(start + prefix);
+      out.insert(out.end(), line.begin() + static_cast<std::ptrdiff_t>(prefix), line.end());
+    }
+    const auto size = static_cast<std::int32_t>(out.size() - start - prefix);
+    std::memcpy(out.data() + start + prefix - 4, &size, 4);
+    return out.size() - start;
+  }
+  std::uint64_t dataStart() const { return dataStart_; }
+
+  /// Writes lines [rowBegin, rowEnd), kWriteRows or 1 MiB of them at a time, through lines (a
+  /// scratch buffer): a scene's short lines take as few pwrites as one large object's.
+  void write(int rowBegin, int rowEnd, std::vector<char>& lines, ByteSink& sink) const {
+    const int batch = std::max(kWriteRows, static_cast<int>(kWriteBytes / chunk_));
+    for (int j0 = rowBegin; j0 < rowEnd; j0 += batch) {
+      const int j1 = std::min(rowEnd, j0 + batch);
+      lines.resize(chunk_ * static_cast<std::size_t>(j1 - j0));
+      for (int j = j0; j < j1; ++j)
+        makeLine(j, lines.data() + chunk_ * static_cast<std::size_t>(j - j0));
+      sink.writeAt(dataStart_ + static_cast<std::uint64_t>(j0) * chunk_,
+                   std::span(reinterpret_cast<const std::uint8_t*>(lines.data()), lines.size()));
+    }
+  }
+
+private:
+  void makeLine(int j, char* line) const {
+    const float* positionFloats =
+        reinterpret_cast<const float*>(document_.positions.texels().data()); // xyzw per texel
+    const std::int32_t y = firstY_ + j, bytes = static_cast<std::int32_t>(layout_.bytes);
+    if (partNumber_ >= 0) {
+      const std::int32_t number = partNumber_;
+      std::memcpy(line, &number, 4);
+      line += 4;
+    }
+    std::memcpy(line, &y, 4);
+    std::memcpy(line + 4, &bytes, 4);
+    char* pixels = line + kChunkHeader;
+    for (const ChannelRow& row : layout_.rows) {
+      char* to = pixels + row.offset;
+      if (row.position >= 0) {
+        const float* from = positionFloats + static_cast<std::size_t>(j) * columns_ * 4 +
+                            static_cast<std::size_t>(row.position);
+        for (int i = 0; i < columns_; ++i)
+          std::memcpy(to + 4 * static_cast<std::size_t>(i), from + 4 * i, 4);
+        continue;
+      }
+      const Layer& layer = *layers_[static_cast<std::size_t>(row.layer)];
+      const std::size_t channels = static_cast<std::size_t>(layer.channels);
+      if (layer.uniform()) {
+        const half* fill = fills_[static_cast<std::size_t>(row.layer)].data();
+        for (int i = 0; i < columns_; ++i)
+          std::memcpy(to + 2 * static_cast<std::size_t>(i),
+                      fill + i * channels + static_cast<std::size_t>(row.channel), 2);
+        continue;
+      }
+      const float* from = layer.texels.data() + static_cast<std::size_t>(j) * columns_ * channels +
+                          static_cast<std::size_t>(row.channel);
+      for (int i = 0; i < columns_; ++i) {
+        const half h(from[static_cast<std::size_t>(i) * channels]);
+        const std::uint16_t bits = h.bits();
+        std::memcpy(to + 2 * static_cast<std::size_t>(i), &bits, 2);
+      }
+    }
+  }
+
+  const Document& document_;
+  int partNumber_;
+  std::uint64_t dataStart_;
+  int columns_;
+  std::vector<const Layer*> layers_;
+  LineLayout layout_;
+  std::size_t chunk_;
+  std::int32_t firstY_;
+  std::vector<std::vector<half>> fills_;
+  bool rle_;
+};
+
+// writeRawParts for files with RLE parts: a chunk's size is known only once it is coded, so the
+// lines go in rounds of about kRoundBytes, each round's bands coded on every core into a buffer
+// each; a band then waits for the band before it to be placed, writes its chunks after them and
+// fills in their offsets, so writing overlaps the coding of the bands after it.
+constexpr std::size_t kRoundBytes = 32 << 20;
+
+void writeCodedParts(const std::vector<PartLines>& plans, int lines, std::uint64_t dataStart,
+                     std::vector<std::uint8_t>& head, std::size_t table, ByteSink& sink) {
+  struct Line {
+    const PartLines* plan;
+    int j;
+  };
+  std::vector<Line> all;
+  all.reserve(static_cast<std::size_t>(lines));
+  for (const PartLines& plan : plans)
+    for (int j = 0; j < plan.rows(); ++j)
+      all.push_back({&plan, j});
+  const bool background = ::gettid() != ::getpid();
+  std::uint64_t at = dataStart; // where the next band's chunks go
+  std::size_t done = 0;
+  while (done < all.size()) {
+    std::size_t end = done, bytes = 0;
+    while (end < all.size() && (end == done || bytes + all[end].plan->chunkBytes() <= kRoundBytes))
+      bytes += all[end++].plan->chunkBytes();
+    std::mutex lock;
+    std::condition_variable placed;
+    int placedUpTo = 0; // the round's lines whose chunks are written, in order
+    const auto code = [&](int begin, int stop) {
+      if (background) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
+      std::vector<char> data, line, scratch;
+      std::vector<std::uint64_t> sizes;
+      std::exception_ptr failed; // still takes its turn, so the bands after it never wait forever
+      try {
+        for (int k = begin; k < stop; ++k) {
+          const Line& l = all[done + static_cast<std::size_t>(k)];
+          sizes.push_back(l.plan->appendChunk(l.j, line, scratch, data));
+        }
+      } catch (...) {
+        failed = std::current_exception();
+      }
+      std::unique_lock guard(lock);
+      placed.wait(guard, [&] { return placedUpTo == begin; });
+      if (failed) {
+        placedUpTo = stop;
+        guard.unlock();
+        placed.notify_all();
+        std::rethrow_exception(failed);
+      }
+      const std::uint64_t start = at;
+      at += data.size();
+      std::size_t entry = table + 8 * (done + static_cast<std::size_t>(begin));
+      std::uint64_t offset = start;
+      for (const std::uint64_t size : sizes) {
+        std::memcpy(head.data() + entry, &offset, 8);
+        entry += 8;
+        offset += size;
+      }
+      guard.unlock();
+      // Placed: the next band may go on while this one's bytes are written.
+      {
+        const std::lock_guard next(lock);
+        placedUpTo = stop;
+      }
+      placed.notify_all();
+      sink.writeAt(start,
+                   std::span(reinterpret_cast<const std::uint8_t*>(data.data()), data.size()));
+    };
+    const int count = static_cast<int>(end - done);
+    if (background) {
+      std::exception_ptr error;
+      std::thread lowered([&] {
+        try {
+          parallelRowsOrThrow(count, code, 8);
+        } catch (...) {
+          error = std::current_exception();
+        }
+      });
+      lowered.join();
+      if (error) std::rethrow_exception(error);
+    } else {
+      parallelRowsOrThrow(count, code, 8);
+    }
+    done = end;
+  }
+  sink.writeAt(0, head);
+}
+
+} // namespace
+
+void writeRawParts(std::span<const RawPart> parts, bool multiPart,
                    const std::vector<std::uint8_t>& headerBytes, ByteSink& sink) {
-  const int side = document.positions.side();
-  const std::vector<const Layer*> layers{&document.diffuse, &document.feature, &document.mask};
-  const LineLayout layout = lineLayout(header, layers);
-  const std::size_t chunk = kChunkHeader + layout.bytes;
+  if (parts.empty() || (!multiPart && parts.size() != 1))
+    throw std::logic_error("writeRawParts: one part, or a multi-part file");
+  // The offset tables end OpenEXR's header bytes, one per part in order, a line each.
+  int lines = 0;
+  for (const RawPart& part : parts)
+    lines += part.document.positions.rows();
   const std::uint64_t dataStart = headerBytes.size();
-  const std::int32_t firstY = header.dataWindow().min.y;
-  if (headerBytes.size() < 8 * static_cast<std::size_t>(side) + 8)
+  if (headerBytes.size() < 8 * static_cast<std::size_t>(lines) + 8)
     throw std::logic_error("OpenEXR wrote no line offset table");
 
-  // The header with its offset table filled in: each line's place is known before any is made.
   std::vector<std::uint8_t> head = headerBytes;
-  for (int j = 0; j < side; ++j) {
-    const std::uint64_t offset = dataStart + static_cast<std::uint64_t>(j) * chunk;
-    std::memcpy(head.data() + dataStart - 8 * static_cast<std::size_t>(side - j), &offset, 8);
+  std::vector<PartLines> plans;
+  plans.reserve(parts.size());
+  std::size_t table = headerBytes.size() - 8 * static_cast<std::size_t>(lines);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    if (parts[k].header.compression() == Imf::RLE_COMPRESSION) {
+      for (std::size_t m = 0; m < parts.size(); ++m)
+        plans.emplace_back(parts[m], multiPart ? static_cast<int>(m) : -1, 0);
+      writeCodedParts(plans, lines, dataStart, head, table, sink);
+      return;
+    }
+  // The header with its offset tables filled in: each line's place is known before any is made.
+  std::uint64_t at = dataStart;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    plans.emplace_back(parts[k], multiPart ? static_cast<int>(k) : -1, at);
+    for (int j = 0; j < plans.back().rows(); ++j, at += plans.back().chunkBytes(), table += 8)
+      std::memcpy(head.data() + table, &at, 8);
   }
   sink.writeAt(0, head);
 
-  const float* positionFloats =
-      reinterpret_cast<const float*>(document.positions.texels().data()); // xyzw per texel
-  // A uniform layer's row is one row of halves, made once.
-  std::vector<std::vector<half>> fills(layers.size());
-  for (std::size_t k = 0; k < layers.size(); ++k)
-    if (layers[k]->uniform()) {
-      fills[k].resize(static_cast<std::size_t>(side) * layers[k]->channels);
-      for (std::size_t t = 0; t < fills[k].size(); ++t)
-        fills[k][t] = half(layers[k]->fill[t % static_cast<std::size_t>(layers[k]->channels)]);
-    }
-
+  // Every part's lines in one pass over the cores (one fork and join for the file, so a scene's
+  // small parts cost what one large part does).
   const bool background = ::gettid() != ::getpid();
-  const auto writeLines = [&](int rowBegin, int rowEnd) {
+  const auto writeLines = [&](int lineBegin, int lineEnd) {
     // Called from a worker (the modeller's save and autosave), the writer yields the cores to
     // the threads that draw: the GUI and its GL driver's rasterizer, which otherwise waited
     // for them (modeller_render_test: 2-4 GUI ticks in a 1.1-1.8 s save at N = 4096, 20-42
     // at the lowest priority). From a program's main thread (octaclay-cli) it keeps its own.
     if (background) ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
-    std::vector<char> lines;
-    for (int j0 = rowBegin; j0 < rowEnd; j0 += kWriteRows) {
-      const int j1 = std::min(rowEnd, j0 + kWriteRows);
-      lines.resize(chunk * static_cast<std::size_t>(j1 - j0));
-      for (int j = j0; j < j1; ++j) {
-        char* line = lines.data() + chunk * static_cast<std::size_t>(j - j0);
-        const std::int32_t y = firstY + j, bytes = static_cast<std::int32_t>(layout.bytes);
-        std::memcpy(line, &y, 4);
-        std::memcpy(line + 4, &bytes, 4);
-        char* pixels = line + kChunkHeader;
-        for (const ChannelRow& row : layout.rows) {
-          char* to = pixels + row.offset;
-          if (row.position >= 0) {
-            const float* from = positionFloats + static_cast<std::size_t>(j) * side * 4 +
-                                static_cast<std::size_t>(row.position);
-            for (int i = 0; i < side; ++i)
-              std::memcpy(to + 4 * static_cast<std::size_t>(i), from + 4 * i, 4);
-            continue;
-          }
-          const Layer& layer = *layers[static_cast<std::size_t>(row.layer)];
-          const std::size_t channels = static_cast<std::size_t>(layer.channels);
-          if (layer.uniform()) {
-            const half* fill = fills[static_cast<std::size_t>(row.layer)].data();
-            for (int i = 0; i < side; ++i)
-              std::memcpy(to + 2 * static_cast<std::size_t>(i),
-                          fill + i * channels + static_cast<std::size_t>(row.channel), 2);
-            continue;
-          }
-          const float* from = layer.texels.data() + static_cast<std::size_t>(j) * side * channels +
-                              static_cast<std::size_t>(row.channel);
-          for (int i = 0; i < side; ++i) {
-            const half h(from[static_cast<std::size_t>(i) * channels]);
-            const std::uint16_t bits = h.bits();
-            std::memcpy(to + 2 * static_cast<std::size_t>(i), &bits, 2);
-          }
-        }
-      }
-      sink.writeAt(dataStart + static_cast<std::uint64_t>(j0) * chunk,
-                   std::span(reinterpret_cast<const std::uint8_t*>(lines.data()), lines.size()));
+    std::vector<char> buffer;
+    int first = 0; // the part's first line among all
+    for (const PartLines& plan : plans) {
+      const int begin = std::max(lineBegin, first), end = std::min(lineEnd, first + plan.rows());
+      if (begin < end) plan.write(begin - first, end - first, buffer, sink);
+      first += plan.rows();
     }
   };
   // A worker's writing threads are made for it (so only they are lowered, never the caller).
   if (!background) {
-    parallelRowsOrThrow(side, writeLines, 16);
+    parallelRowsOrThrow(lines, writeLines, 16);
     return;
   }
   std::exception_ptr error;
   std::thread lowered([&] {
     try {
-      parallelRowsOrThrow(side, writeLines, 16);
+      parallelRowsOrThrow(lines, writeLines, 16);
     } catch (...) {
       error = std::current_exception();
     }
   });
   lowered.join();
   if (error) std::rethrow_exception(error);
+}
+
+void writeRawLines(const Document& document, const Imf::Header& header,
+                   const std::vector<std::uint8_t>& headerBytes, ByteSink& sink) {
+  const RawPart part{document, header};
+  writeRawParts(std::span(&part, 1), false, headerBytes, sink);
 }
 
 } // namespace octaclay::core::detail

@@ -16,22 +16,27 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 namespace octaclay::core::detail {
 
-/// Whether header's pixels can go this way: no compression, single part, scanlines, every channel
-/// sampled 1×1, float or half, and this machine little-endian.
-bool rawLinesApply(const Imf::Header& header);
+/// Whether header's pixels can go this way: no compression, scanlines (a single-part file or a
+/// part of a multi-part one), every channel sampled 1×1, float or half, and this machine
+/// little-endian. Any W × H. writing: RLE too (writeRawParts codes it as OpenEXR does; reading
+/// RLE stays OpenEXR's).
+bool rawLinesApply(const Imf::Header& header, bool writing = false);
 
 /// Reads the positions (xyz; w stays 0) and, when layers is not empty, the layers the file holds
 /// among them (each kept uniform, a fill value, while every texel equals the first; else full
-/// texels) of the file OpenEXR opened as header. positions is (N+1)² already. Returns false,
-/// having read nothing, when the header's attributes are too long to find the offset table (1 MiB:
-/// OpenEXR's frame buffers then read it). Throws Error(InvalidInput) naming the line for a short
+/// texels) of the file OpenEXR opened as header, its part number part in a multi-part file (-1:
+/// a single-part file; a multi-part file's part 0 then). positions is (W+1)×(H+1) already.
+/// Returns false, having read nothing, when the headers are too long to find the offset table
+/// (1 MiB: OpenEXR's frame buffers then read it). Every chunk's part number, line and byte
+/// count are checked. Throws Error(InvalidInput) naming the line for a short
 /// read or a chunk that is not the expected line, Error(Io) when the file cannot be opened.
 bool readRawLines(const std::filesystem::path& path, const Imf::Header& header,
-                  GeometryImage& positions, const std::vector<Layer*>& layers);
+                  GeometryImage& positions, const std::vector<Layer*>& layers, int part = -1);
 
 /// Writes document's pixels as header's lines after OpenEXR's header bytes (magic number to the
 /// end of the attributes, the offset table's place included but not filled), then fills the
@@ -39,6 +44,21 @@ bool readRawLines(const std::filesystem::path& path, const Imf::Header& header,
 /// Called from any thread but the process's main one (a modeller's worker), its threads run at
 /// the lowest CPU priority while they write, so the GUI and its GL driver keep the cores.
 void writeRawLines(const Document& document, const Imf::Header& header,
+                   const std::vector<std::uint8_t>& headerBytes, ByteSink& sink);
+
+/// One part to write: its document and the header OpenEXR wrote for it.
+struct RawPart {
+  const Document& document;
+  const Imf::Header& header;
+};
+
+/// writeRawLines for several parts: headerBytes is what OpenEXR's MultiPartOutputFile writes
+/// before any pixel (magic number, version, every header, the empty header, then the offset
+/// tables' places, a line each, in part order, not filled). Each chunk starts with its part
+/// number. multiPart false: one part, the single-part layout (writeRawLines). RLE parts are coded
+/// on every core as OpenEXR's RleCompressor codes them (a line whose code is no smaller is
+/// stored as it is), in rounds of about 8 MiB whose chunks are placed one after another.
+void writeRawParts(std::span<const RawPart> parts, bool multiPart,
                    const std::vector<std::uint8_t>& headerBytes, ByteSink& sink);
 
 } // namespace octaclay::core::detail

@@ -1,8 +1,11 @@
 #include "octaclay/core/document/scene_io.h"
 
+#include "detail/exr_memory_stream.h"
 #include "detail/exr_sink_stream.h"
+#include "detail/parallel_rows.h"
 #include "document_parts.h"
 #include "exr_part_scan.h"
+#include "raw_exr_lines.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
@@ -17,6 +20,9 @@
 #include <ImfStringAttribute.h>
 #include <ImfVecAttribute.h>
 
+#include <algorithm>
+#include <exception>
+#include <mutex>
 #include <new>
 #include <set>
 
@@ -215,20 +221,46 @@ Scene readScene(const fs::path& path, const DocumentReadOptions& options) {
         refuse(path, "truncated: the file ends before all the pixels of object " +
                          std::to_string(k + 1) + " ('" + objects[k].name +
                          "') (an interrupted copy?)");
-    scene.objects.reserve(objects.size());
-    for (int k = 0; k < file.parts(); ++k) {
+    // Every part at once, each on one core (raw_exr_lines reads a part's lines straight from
+    // the file; nested, its rows run serially): the parts cost what one object of their samples
+    // costs, not one fork and join each. OpenEXR's own reading (compressed parts, or headers too
+    // long for the raw reader) goes one part at a time.
+    std::vector<Document> documents(objects.size());
+    std::vector<std::exception_ptr> errors(objects.size());
+    std::mutex exr;
+    const auto readPart = [&](int k) {
       const SceneObjectHeader& described = objects[static_cast<std::size_t>(k)];
-      Imf::InputPart part(file, k);
-      Document document =
-          detail::readDocumentPixels(path, part.header(), described.document, options,
-                                     [&](const Imf::FrameBuffer& frame, int first, int last) {
-                                       part.setFrameBuffer(frame);
-                                       part.readPixels(first, last);
-                                     });
-      document.topology = described.topology;
-      scene.objects.push_back({described.name, std::move(document), described.transform,
-                               described.visible, described.locked});
-    }
+      documents[static_cast<std::size_t>(k)] = detail::readDocumentPixels(
+          path, file.header(k), described.document, options,
+          [&](const Imf::FrameBuffer& frame, int first, int last) {
+            const std::lock_guard lock(exr);
+            Imf::InputPart part(file, k);
+            part.setFrameBuffer(frame);
+            part.readPixels(first, last);
+          },
+          k);
+      documents[static_cast<std::size_t>(k)].topology = described.topology;
+    };
+    bool raw = true;
+    for (int k = 0; k < file.parts(); ++k)
+      raw = raw && detail::rawLinesApply(file.header(k));
+    detail::parallelRows(
+        file.parts(),
+        [&](int begin, int end) {
+          for (int k = begin; k < end; ++k)
+            try {
+              readPart(k);
+            } catch (...) {
+              errors[static_cast<std::size_t>(k)] = std::current_exception();
+            }
+        },
+        raw ? 1 : file.parts());
+    for (const std::exception_ptr& error : errors) // the first object's problem, as read in turn
+      if (error) std::rethrow_exception(error);
+    scene.objects.reserve(objects.size());
+    for (std::size_t k = 0; k < objects.size(); ++k)
+      scene.objects.push_back({objects[k].name, std::move(documents[k]), objects[k].transform,
+                               objects[k].visible, objects[k].locked});
   });
   return scene;
 }
@@ -250,6 +282,23 @@ void writeScene(const Scene& scene, const fs::path& path, const DocumentWriteOpt
     addObjectAttributes(headers.back(), object);
     headers.back().setName(object.name);
     headers.back().setType(Imf::SCANLINEIMAGE);
+  }
+  if (std::all_of(headers.begin(), headers.end(),
+                  [](const Imf::Header& header) { return detail::rawLinesApply(header, true); })) {
+    // OpenEXR writes the headers and the offset tables' places into memory; every part's lines
+    // are made on every core and written at their places (raw_exr_lines), as for one object.
+    detail::ExrMemoryStream head;
+    {
+      Imf::MultiPartOutputFile file(head, headers.data(), static_cast<int>(headers.size()), true,
+                                    1);
+    }
+    std::vector<detail::RawPart> parts;
+    parts.reserve(scene.objects.size());
+    for (std::size_t k = 0; k < scene.objects.size(); ++k)
+      parts.push_back({scene.objects[k].document, headers[k]});
+    writeFileAtomically(
+        path, [&](ByteSink& sink) { detail::writeRawParts(parts, true, head.bytes(), sink); });
+    return;
   }
   writeFileAtomically(path, [&](ByteSink& sink) {
     detail::ExrSinkStream stream(sink);
