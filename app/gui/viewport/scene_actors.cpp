@@ -26,7 +26,12 @@ namespace {
 
 vtkSmartPointer<vtkActor> objectActor(const core::SceneObject& object) {
   const core::GeometryImage& image = object.document.positions;
-  const int step = std::max(1, image.size() / SceneActors::kMaxSide);
+  // At most kMaxSide cells along the longer side; a torus's or plane's W × H keeps at least
+  // the cells extractMesh needs along the shorter one.
+  int step = std::max(1, std::max(image.width(), image.height()) / SceneActors::kMaxSide);
+  while (step > 1 && (image.width() % step != 0 || image.height() % step != 0 ||
+                      std::min(image.width(), image.height()) / step < 4))
+    step /= 2;
   const core::TriangleMesh mesh = core::extractMesh(image, step);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
