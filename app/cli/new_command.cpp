@@ -60,8 +60,7 @@ Command addNewCommand(CLI::App& app) {
   CLI::Option* heightOption = sub->add_option(
       "--height", opt->height,
       "torus: cells around the tube, a power of two from 4 to 8192 (default: chosen from the "
-      "radii so cells are about square; give --height equal to --size for a square image, which "
-      "`stroke` needs)");
+      "radii so cells are about square; give --height equal to --size for a square image)");
   sub->add_option("-o,--output", opt->output, "Document to write (.exr)")->required();
   sub->add_flag("--json", opt->json, "Print one JSON object");
 

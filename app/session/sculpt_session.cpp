@@ -118,7 +118,9 @@ void SculptSession::beginStroke(const StrokeStart& start) {
   if (start.brushId == settings.brushId) s.parameters = settings.parameters;
   s.viewEye = start.eye; // splats project from here, drags move across its view
   stroke->stroke = std::make_unique<gpu::StrokeSession>(*engine_, *document_, stroke->manifest, s);
-  keepDetail_ = settings.keepDetail;
+  // Keep detail's relaxation (core/relax) works in the ball's octahedral domain: a torus or
+  // plane keeps the samples where the brush put them.
+  keepDetail_ = settings.keepDetail && document_->topology() == core::Topology::Octahedral;
   // After each dab: keep detail's relaxation as a dragging stroke goes, then the caller's
   // progress. The viewport's and the CLI's strokes both come through here.
   stroke->stroke->observeDabs([this, active = stroke.get()](int dabs) {
@@ -254,8 +256,7 @@ std::unique_ptr<StrokeEnding> SculptSession::concludeStroke() {
   for (const auto& uv : {st.first, st.last})
     if (uv) st.keep.pinnedPath.push_back(*uv);
   auto ending = std::unique_ptr<StrokeEnding>(new StrokeEnding(std::move(parts)));
-  ending->relaxes_ = st.start.settings.keepDetail &&
-                     st.manifest.category == gpu::Category::Sculpt &&
+  ending->relaxes_ = keepDetail_ && st.manifest.category == gpu::Category::Sculpt &&
                      ending->parts_->end.dabs > 0 && !ending->parts_->record.tiles.empty();
   return ending;
 }
@@ -358,8 +359,10 @@ const core::EditStep* SculptSession::redo() {
   return history_.redo(gpu::undoApplier(*document_), [this](const core::Document& d) { show(d); });
 }
 
-std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side) {
+std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side,
+                                               int rows) {
   if (touched.empty()) return touched;
+  if (rows == 0) rows = side;
   // A texel's normal reads its neighbours up to kNormalReach texels away (normal_map.glsl's
   // wide central differences where the four faces around it disagree): grow by that much.
   constexpr int kNormalReach = 3;
@@ -367,15 +370,15 @@ std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touc
   for (core::TexelRect& r : touched) {
     const int x0 = std::max(0, r.x - kNormalReach), y0 = std::max(0, r.y - kNormalReach);
     const int x1 = std::min(side, r.x + r.width + kNormalReach),
-              y1 = std::min(side, r.y + r.height + kNormalReach);
+              y1 = std::min(rows, r.y + r.height + kNormalReach);
     r = {x0, y0, x1 - x0, y1 - y0};
-    border = border || x0 == 0 || y0 == 0 || x1 == side || y1 == side;
+    border = border || x0 == 0 || y0 == 0 || x1 == side || y1 == rows;
   }
   constexpr int strip = kNormalReach + 1;
   if (border) // neighbours across a seam sit on the opposite border
     for (core::TexelRect r :
-         {core::TexelRect{0, 0, side, strip}, core::TexelRect{0, side - strip, side, strip},
-          core::TexelRect{0, 0, strip, side}, core::TexelRect{side - strip, 0, strip, side}})
+         {core::TexelRect{0, 0, side, strip}, core::TexelRect{0, rows - strip, side, strip},
+          core::TexelRect{0, 0, strip, rows}, core::TexelRect{side - strip, 0, strip, rows}})
       touched.push_back(r);
   return core::mergeRects(touched);
 }

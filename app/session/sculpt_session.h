@@ -275,8 +275,9 @@ private:
 /// The texel rectangles whose normals read the touched texels: each grown by three (the normal
 /// pass's widest reach), plus the
 /// image's borders when one reaches a border (neighbours across a seam sit on the opposite
-/// one). side is N + 1.
-std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side);
+/// one). side is N + 1 (W + 1), rows H + 1 of a W × H image (0: side).
+std::vector<core::TexelRect> normalRectsAround(std::vector<core::TexelRect> touched, int side,
+                                               int rows = 0);
 /// The texel rectangles a recorded stroke changed.
 std::vector<core::TexelRect> changedRects(const core::EditStep& stroke);
 

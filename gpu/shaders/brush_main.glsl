@@ -4,8 +4,8 @@
 // step, at most BRUSH_MAX_STEP samples (a step field that short folds no cell), and its offset
 // becomes the step plus the offset field where the step lands, so that the engine's one resample
 // per dab (resample.glsl) reads the layers from before the dab. A step that is not finite, and
-// any step at the four side midpoints (half-turn centres of the tiling, where the two sides'
-// steps must cancel), counts as none.
+// any step at the ball's four side midpoints (half-turn centres of the tiling, where the two
+// sides' steps must cancel), counts as none; a plane's boundary samples step only along it.
 out vec4 o_offset;
 
 // The least altitude of the grid triangles around texel t as its samples now stand in the image
@@ -38,8 +38,14 @@ void main() {
   vec2 offset = texelFetch(u_offsets, t, 0).xy;
   BrushInput b = brushInputAt(t, fetchPositions(t));
   int n = u_size, h = u_size / 2;
-  bool midpoint = (t.x == 0 || t.x == n) && t.y == h || (t.y == 0 || t.y == n) && t.x == h;
+  bool midpoint = u_topology == 0 && ((t.x == 0 || t.x == n) && t.y == h ||
+                                      (t.y == 0 || t.y == n) && t.x == h);
   vec2 step = b.weight != 0.0 && !midpoint ? brushOffset(b) : vec2(0.0);
+  if (u_topology == 2) { // a plane's boundary sample slides along its boundary, never off it
+    ivec2 c = gridCells();
+    if (t.x == 0 || t.x == c.x) step.x = 0.0;
+    if (t.y == 0 || t.y == c.y) step.y = 0.0;
+  }
   float len = length(step);
   if (!(len <= BRUSH_MAX_STEP)) step = len < 1e30 ? step * (BRUSH_MAX_STEP / len) : vec2(0.0);
   if (step != vec2(0.0)) {

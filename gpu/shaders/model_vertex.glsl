@@ -4,7 +4,8 @@ uniform sampler2D u_positions;
 uniform mat4 u_objectToClip;
 uniform int u_step;
 uniform int u_side; // M + 1
-uniform int u_imageSide; // N + 1
+uniform int u_imageSide; // N + 1 (W + 1)
+uniform ivec2 u_imageSize; // W + 1, H + 1: the image's texels along i and j
 
 out vec3 v_position;
 out vec2 v_uv;
@@ -16,7 +17,7 @@ void main() {
   int row = int((float(gl_VertexID) + 0.5) / float(u_side));
   ivec2 cell = ivec2(gl_VertexID - row * u_side, row) * u_step;
   v_position = texelFetch(u_positions, cell, 0).xyz;
-  v_uv = (vec2(cell) + 0.5) / float(u_imageSide);
+  v_uv = (vec2(cell) + 0.5) / vec2(u_imageSize);
   v_cell = vec2(gl_VertexID - row * u_side, row);
   gl_Position = u_objectToClip * vec4(v_position, 1.0);
 }

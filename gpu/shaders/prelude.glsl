@@ -16,7 +16,8 @@ uniform vec4 u_diffuseFill;    // LAYER_ALL: the diffuse and feature layers' bas
 uniform vec4 u_featureFill;
 uniform float u_falloffCurve[64]; // falloff "curve": values from centre (0) to rim (1)
 uniform int u_falloffCurveSize;
-uniform int u_size;            // N: the image has (N+1)^2 samples
+uniform int u_size;            // N: the image has (N+1)^2 samples (a torus's or plane's W)
+uniform ivec2 u_cells;         // W, H: the image has (W+1) x (H+1) samples (N, N on the ball)
 uniform int u_topology;        // 0 octahedral (the default), 1 torus, 2 plane (core::Topology)
 uniform vec3 u_centre;
 uniform vec3 u_centreNormal;
@@ -50,6 +51,9 @@ uniform float u_tileSamples; // the same, in image samples (uv projection)
 uniform float u_heightScale; // displacement of height 1 - 0.5
 #endif
 
+// The image's cells W × H: u_cells, or N × N from u_size where a host sets only that.
+ivec2 gridCells() { return u_cells.x > 0 ? u_cells : ivec2(u_size); }
+
 struct BrushInput {
   ivec2 texel;
   vec2 uv;
@@ -59,25 +63,27 @@ struct BrushInput {
   float distance; // to the centre, in radii
 };
 
-// The grid sample that integer position p stands for in the octahedral tiling of the plane
-// (core/src/octahedral.cpp's wrap()), for p within 4N of the image (further than any brush
-// reaches), and in z whether the tiling reaches it by a half-turn (1) or a translation (0): a
-// vector at p is the vector at the sample, negated when z is 1. Selects instead of `%`: a
-// software rasterizer runs integer division lane by lane.
+// The grid sample that integer position p stands for (core's wrap(SampleGrid, …)): in the
+// octahedral tiling of the plane (core/src/octahedral.cpp's wrap()), for p within 4N of the image
+// (further than any brush reaches), and in z whether the tiling reaches it by a half-turn (1) or a
+// translation (0): a vector at p is the vector at the sample, negated when z is 1. A torus's
+// period is W along i and H along j (within 4W and 4H); a plane clamps onto its boundary. Selects
+// instead of `%`: a software rasterizer runs integer division lane by lane.
 ivec3 wrapTexelTurn(ivec2 p) {
   int n = u_size;
-  if (u_topology == 1) { // torus: period N in both directions, column and row N are 0 again
-    int i = p.x < 0 ? p.x + 4 * n : p.x;
-    int j = p.y < 0 ? p.y + 4 * n : p.y;
-    i = i >= 2 * n ? i - 2 * n : i;
-    j = j >= 2 * n ? j - 2 * n : j;
-    i = i >= 2 * n ? i - 2 * n : i;
-    j = j >= 2 * n ? j - 2 * n : j;
-    i = i >= n ? i - n : i;
-    j = j >= n ? j - n : j;
+  if (u_topology == 1) { // torus: period W, H; column W and row H are column and row 0 again
+    ivec2 c = gridCells();
+    int i = p.x < 0 ? p.x + 4 * c.x : p.x;
+    int j = p.y < 0 ? p.y + 4 * c.y : p.y;
+    i = i >= 2 * c.x ? i - 2 * c.x : i;
+    j = j >= 2 * c.y ? j - 2 * c.y : j;
+    i = i >= 2 * c.x ? i - 2 * c.x : i;
+    j = j >= 2 * c.y ? j - 2 * c.y : j;
+    i = i >= c.x ? i - c.x : i;
+    j = j >= c.y ? j - c.y : j;
     return ivec3(i, j, 0);
   }
-  if (u_topology == 2) return ivec3(clamp(p, ivec2(0), ivec2(n)), 0); // plane: its boundary
+  if (u_topology == 2) return ivec3(clamp(p, ivec2(0), gridCells()), 0); // plane: its boundary
   int period = 2 * n;
   int i = p.x < 0 ? p.x + 2 * period : p.x;
   int j = p.y < 0 ? p.y + 2 * period : p.y;
@@ -231,9 +237,9 @@ float uvDistance(ivec2 t) {
   float n = float(u_size);
   float d = length(p - c);
   if (u_topology == 2) return d; // plane: no images
-  if (u_topology == 1) { // torus: the centre's translates by (±N, 0), (0, ±N) and (±N, ±N)
+  if (u_topology == 1) { // torus: the centre's translates by (±W, 0), (0, ±H) and (±W, ±H)
     vec2 q = abs(p - c);
-    q = min(q, abs(q - vec2(n)));
+    q = min(q, abs(q - vec2(gridCells())));
     return length(q);
   }
   d = min(d, length(p - (vec2(0.0, n) - c)));
@@ -254,7 +260,7 @@ float uvDistance(ivec2 t) {
 BrushInput brushInputAt(ivec2 t, vec4 value) {
   BrushInput b;
   b.texel = t;
-  b.uv = vec2(t) / float(u_size);
+  b.uv = vec2(t) / vec2(gridCells()); // (0, 0) to (1, 1) over the image
 #if defined(BRUSH_ANCHORED)
   b.position = texelFetch(u_strokeStart, t, 0).xyz; // an anchored dab measures the start surface
 #elif OCTACLAY_LAYER == LAYER_POSITIONS || OCTACLAY_LAYER == LAYER_ALL

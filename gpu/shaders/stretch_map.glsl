@@ -8,6 +8,7 @@ out vec4 o_stretch;
 // core's cellSplit() on the tiled plane: quadrants of N/2 cells form a checkerboard, and those
 // of the square's lower-left and upper-right are split along the anti-diagonal.
 bool antiDiagonal(ivec2 cell) {
+  if (u_topology != 0) return true; // a torus or plane splits every cell so
   int halfSize = u_size / 2;
   ivec2 q = ivec2(cell.x >= 0 ? cell.x / halfSize : -1 - (-1 - cell.x) / halfSize,
                   cell.y >= 0 ? cell.y / halfSize : -1 - (-1 - cell.y) / halfSize);

@@ -7,7 +7,7 @@
 layout(local_size_x = 64) in;
 
 uniform sampler2D u_positions;
-uniform int u_last;  // N: the image's last sample index
+uniform ivec2 u_last; // W, H: the image's last sample index along i and j
 uniform int u_count; // quarters
 
 layout(std430, binding = 2) readonly buffer Quarters {
@@ -21,7 +21,7 @@ void main() {
   int k = int(gl_GlobalInvocationID.x);
   if (k >= u_count) return;
   ivec4 r = quarters[k];
-  int lastI = min(r.x + r.z, u_last), lastJ = min(r.y + r.w, u_last);
+  int lastI = min(r.x + r.z, u_last.x), lastJ = min(r.y + r.w, u_last.y);
   vec3 lo = texelFetch(u_positions, r.xy, 0).xyz, hi = lo;
   for (int j = r.y; j <= lastJ; ++j)
     for (int i = r.x; i <= lastI; ++i) {

@@ -4,7 +4,9 @@
 // same in sample spacings (each shape's mean spacing, sqrt(area / N^2)), so the dabs cover about
 // as many texels (texels_ratio; the ball's pole has more, its cells being smaller there than its
 // mean): the comparison is of the topology's cost, not of the shapes' sizes; per_texel_over_ball
-// divides out the difference. The torus is square (the GPU sculpts square images).
+// divides out the difference. Topologies 1 and 2 are square images (N × N); 3 and 4 are W × H
+// images of the ball's sample count (2N × N/2): a thin torus (major 0.8, minor 0.2: its cells about
+// square) and a flat 4 × 1 plane.
 #include "bench_support.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -49,6 +51,18 @@ Shape makeShape(int kind, int n) {
         core::makeTorus(core::Torus{0.7f, 0.3f}, n, n), 4 * pi * pi * 0.7 * 0.3, {n / 2, n / 4}};
   case 2:
     return {core::makeSheet(core::Sheet::Square, n), 4.0, {n / 2, n / 2}};
+  case 3: // a thin ring, 2N cells around it and N/2 around its tube
+    return {core::makeTorus(core::Torus{0.8f, 0.2f}, 2 * n, n / 2),
+            4 * pi * pi * 0.8 * 0.2,
+            {n, n / 8}};
+  case 4: { // a 4 × 1 plane, 2N × N/2 square cells
+    core::GeometryImage sheet(core::Topology::Plane, 2 * n, n / 2);
+    for (int j = 0; j <= n / 2; ++j)
+      for (int i = 0; i <= 2 * n; ++i)
+        sheet.at(i, j) = {4.0f * float(i) / float(2 * n) - 2.0f, float(j) / float(n / 2) - 0.5f,
+                          0.0f, 0.0f};
+    return {std::move(sheet), 4.0, {n, n / 4}};
+  }
   default:
     return {core::makeBaseShape(core::BaseShape::Sphere, n), 4 * pi, {n / 2, n / 2}};
   }
@@ -73,7 +87,7 @@ double timedDab(gpu::GpuDocument& document, core::Sample centre, float radius, i
 }
 
 // range(0) = N, range(1) = the radius in thousandths of N sample spacings, range(2) = 1 torus,
-// 2 plane.
+// 2 plane (both N × N), 3 torus, 4 plane (both 2N × N/2).
 void BM_DabOverBall(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   session(); // the GL context first: the documents' textures live in it
@@ -121,6 +135,12 @@ BENCHMARK(BM_DabOverBall)
     ->Args({1024, 50, 2})
     ->Args({1024, 150, 1})
     ->Args({1024, 150, 2})
+    ->Args({256, 50, 3})
+    ->Args({256, 50, 4})
+    ->Args({1024, 50, 3})
+    ->Args({1024, 50, 4})
+    ->Args({1024, 150, 3})
+    ->Args({1024, 150, 4})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
 

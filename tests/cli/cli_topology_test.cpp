@@ -103,10 +103,26 @@ private slots:
     RUN_JSON(planeInfo, "info", file("d2.exr"), "--json");
     QCOMPARE(planeInfo["euler"].toInt(), 1);
     QVERIFY(planeInfo["bbox"].toObject()["max"].toArray()[2].toDouble() > 0.01); // pushed up
-    // The GPU sculpts square images: a 64x32 torus is refused by name.
-    RUN_JSON(wide, "new", "--shape", "torus", "--size", "64", "-o", file("w.exr"), "--json");
-    EXPECT_FAILURE(kUsage, file("w2.exr"), "stroke", file("w.exr"), "--brush", "push", "--path",
-                   "0.5,0.5", "-o", file("w2.exr"));
+    // A thin ring sampled evenly (W ≠ H, chosen from the radii) sculpts across both wraps: its
+    // seams stay exact, it stays closed with Euler characteristic 0, and the stroke moved it.
+    RUN_JSON(wide, "new", "--shape", "torus", "--size", "128", "--major", "0.8", "--minor", "0.2",
+             "-o", file("w.exr"), "--json");
+    QCOMPARE(wide["width"].toInt(), 128);
+    QCOMPARE(wide["height"].toInt(), 32);
+    RUN_JSON(wideStroke, "stroke", file("w.exr"), "--brush", "inflate", "--path", "0,0;0.05,0.1",
+             "--radius", "0.1", "-o", file("w2.exr"), "--json");
+    QVERIFY(wideStroke["dabs"].toInt() >= 2);
+    RUN_JSON(wideInfo, "info", file("w2.exr"), "--json");
+    QCOMPARE(wideInfo["seam_gap"].toDouble(), 0.0);
+    QCOMPARE(wideInfo["euler"].toInt(), 0);
+    QVERIFY(wideInfo["closed"].toBool());
+    QVERIFY(wideInfo["bbox"].toObject()["max"].toArray()[2].toDouble() > 0.201); // inflated
+    // A plane of its own W × H through a scene's --object: the stroke reaches its edge.
+    RUN_JSON(scene, "add", file("w.exr"), "--shape", "plane", "--size", "32", "--name", "ground",
+             "-o", file("scene.exr"), "--json");
+    RUN_JSON(ground, "stroke", file("scene.exr"), "--object", "ground", "--brush", "push", "--path",
+             "0.9,0.5;1,0.5", "--radius", "0.1", "-o", file("scene2.exr"), "--json");
+    QVERIFY(ground["dabs"].toInt() >= 1);
   }
 
   void badShapesAreUsageErrors() {

@@ -52,11 +52,10 @@ inline Dab dabAt(const core::GeometryImage& image, core::Sample s, float radius,
 /// Every layer's texels as the document's mirror holds them (fill values expanded), in
 /// EditLayer order: what sameBits compares.
 inline std::vector<std::vector<float>> snapshot(const GpuDocument& document) {
-  const int side = document.size() + 1;
   std::vector<std::vector<float>> layers;
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask})
-    layers.push_back(document.mirrorTexels(layer, {0, 0, side, side}));
+    layers.push_back(document.mirrorTexels(layer, document.whole()));
   return layers;
 }
 

@@ -62,9 +62,9 @@ inline PixelDifference comparePixels(const QImage& a, const QImage& b, int step 
 inline std::vector<float> positionsOf(const MainWindow& w) {
   const core::GeometryImage& image = w.viewport()->modeller().document().positions;
   std::vector<float> out;
-  const int side = image.size() + 1;
-  out.reserve(std::size_t(side) * side * 4);
-  for (int j = 0; j < side; ++j)
+  const int side = image.side();
+  out.reserve(image.texelCount() * 4);
+  for (int j = 0; j < image.rows(); ++j)
     for (int i = 0; i < side; ++i) {
       const auto p = image.at(i, j);
       out.insert(out.end(), {p.x, p.y, p.z, p.w});

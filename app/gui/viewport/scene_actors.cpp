@@ -90,10 +90,20 @@ void SceneActors::rebuild(vtkRenderer& renderer, const Modeller& modeller) {
     if (k == modeller.activeObject() || !object.visible || object.document.size() < 2) continue;
     const core::GeometryImage& image = object.document.positions;
     Object drawn;
-    for (int side = std::min(image.size(), kMaxSide);; side /= 2) {
-      drawn.levels.push_back(levelMapper(image, std::max(1, image.size() / side)));
-      drawn.sides.push_back(side);
-      if (side / 2 < kMinSide || image.size() % (side / 2) != 0) break;
+    // Steps that divide both W and H (a torus's or plane's W × H) and keep at least four cells
+    // along the shorter side: at most kMaxSide cells along the longer one, then coarser.
+    const int longer = std::max(image.width(), image.height());
+    const int shorter = std::min(image.width(), image.height());
+    const auto fits = [&](int step) {
+      return image.width() % step == 0 && image.height() % step == 0 && shorter / step >= 4;
+    };
+    int step = std::max(1, longer / kMaxSide);
+    while (step > 1 && !fits(step))
+      step /= 2;
+    for (;; step *= 2) {
+      drawn.levels.push_back(levelMapper(image, step));
+      drawn.sides.push_back(longer / step);
+      if (longer / (step * 2) < kMinSide || !fits(step * 2)) break;
     }
     const core::BoundingBox box = core::worldBounds(object);
     for (int c = 0; c < 3; ++c)
@@ -105,7 +115,8 @@ void SceneActors::rebuild(vtkRenderer& renderer, const Modeller& modeller) {
     drawn.actor->SetMapper(drawn.levels.front());
     drawn.actor->GetProperty()->SetColor(0.78, 0.76, 0.72);
     drawn.actor->GetProperty()->SetSpecular(0.1);
-    drawn.actor->GetProperty()->BackfaceCullingOn(); // a closed surface, as the model is drawn
+    // A closed surface's back faces are hidden, as the model is drawn; a plane shows both sides.
+    drawn.actor->GetProperty()->SetBackfaceCulling(image.topology() != core::Topology::Plane);
     vtkNew<vtkMatrix4x4> matrix;
     matrix->DeepCopy(ObjectPlacement(object.transform).objectToWorld().data()); // row-major
     drawn.actor->SetUserMatrix(matrix);

@@ -107,7 +107,8 @@ void ViewportFrames::follow(const gpu::DocumentChange& change) {
   gpu::GpuDocument& document = modeller_.session().gpuDocument();
   if (change.kind == gpu::ChangeKind::NewDocument) return; // documentReplaced() redraws all
   try {
-    model_->refreshNormals(document, normalRectsAround(change.rects, document.size() + 1));
+    model_->refreshNormals(document,
+                           normalRectsAround(change.rects, document.side(), document.rows()));
   } catch (const std::exception& e) {
     modeller_.fail(QString::fromUtf8(e.what()));
   }
@@ -116,11 +117,12 @@ void ViewportFrames::follow(const gpu::DocumentChange& change) {
 void ViewportFrames::documentReplaced() {
   if (!model_) return;
   gpu::GpuDocument& document = modeller_.session().gpuDocument();
-  const int n = document.size();
+  const int n = std::max(document.grid().width, document.grid().height);
   // Until the caller picks a level: one of at most 256 a side (N/1 of a 4096 image would build
   // a 33-million-triangle index buffer first).
   divisor_ = std::min(std::max(divisor_, std::max(1, n / 256)), std::max(1, n / 2));
-  model_->setLevel(n, divisor_);
+  divisor_ = gpu::ModelRenderer::fittingDivisor(document.grid(), divisor_);
+  model_->setLevel(document.grid(), divisor_);
   model_->refreshAllNormals(document);
   model_->setLodMesh({}); // the previous document's LOD is not this one's
   pendingLod_.reset();
@@ -132,11 +134,10 @@ void ViewportFrames::documentReplaced() {
 void ViewportFrames::setLevelDivisor(int divisor) {
   divisor_ = std::max(1, divisor);
   if (!modeller_.session().hasDocument() || !model_) return;
-  const int n = modeller_.session().gpuDocument().size();
-  while (divisor_ > 1 && n / divisor_ < 2)
-    divisor_ /= 2;
+  const core::SampleGrid& grid = modeller_.session().gpuDocument().grid();
+  divisor_ = gpu::ModelRenderer::fittingDivisor(grid, divisor_);
   CurrentContext current(widget_);
-  model_->setLevel(n, divisor_);
+  model_->setLevel(grid, divisor_);
 }
 
 void ViewportFrames::setLodDisplay(LodDisplay display) {
@@ -165,7 +166,7 @@ const std::array<double, 6>& ViewportFrames::updateBounds() {
   // other visible object's samples under its own.
   core::BoundingBox local;
   const core::TileBounds& b = modeller_.session().gpuDocument().bounds();
-  for (int t = 0; t < b.tilesPerSide() * b.tilesPerSide(); ++t) {
+  for (int t = 0; t < b.tileCount(); ++t) {
     local.extend(b.box(t).min);
     local.extend(b.box(t).max);
   }
@@ -222,8 +223,12 @@ void ViewportFrames::drawModel(vtkRenderer* r) {
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglDisable(GL_BLEND);
-  // A closed surface never shows its back faces: culling halves what the rasterizer sees.
-  state->vtkglEnable(GL_CULL_FACE);
+  // A closed surface never shows its back faces: culling halves what the rasterizer sees. A
+  // plane is an open sheet, seen from both sides.
+  if (modeller_.session().gpuDocument().topology() == core::Topology::Plane)
+    state->vtkglDisable(GL_CULL_FACE);
+  else
+    state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(GL_BACK);
   try {
     gpu::GpuDocument& document = modeller_.session().gpuDocument();

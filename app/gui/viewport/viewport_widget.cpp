@@ -277,7 +277,8 @@ ViewportStats ViewportWidget::stats() const {
   s.dabs = session.dabs();
   if (session.hasDocument()) {
     s.n = session.gpuDocument().size();
-    s.fullTriangles = 2LL * s.n * s.n;
+    s.fullTriangles =
+        2LL * session.gpuDocument().grid().width * session.gpuDocument().grid().height;
     s.displayedTriangles = frames_->displayedTriangles();
   }
   return s;

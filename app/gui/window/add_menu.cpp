@@ -7,6 +7,8 @@
 
 #include "octaclay/core/document/scene.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/sheet.h"
+#include "octaclay/core/geometry/torus.h"
 
 #include <QAction>
 #include <QMenu>
@@ -23,15 +25,55 @@ namespace {
 // Scene units: the new object's bounding-box diagonal against the scene's.
 constexpr float kShareOfScene = 0.25f;
 
-void addShape(MainWindow& window, core::BaseShape shape) {
+// What the Add menu makes: a ball of a base shape, a torus or a sheet.
+enum class AddedKind { Ball, Torus, Plane, Disc };
+
+struct AddedShape {
+  AddedKind kind = AddedKind::Ball;
+  core::BaseShape ball = core::BaseShape::Sphere;
+};
+
+std::string shapeName(const AddedShape& shape) {
+  switch (shape.kind) {
+  case AddedKind::Torus:
+    return "torus";
+  case AddedKind::Plane:
+    return "plane";
+  case AddedKind::Disc:
+    return "disc";
+  case AddedKind::Ball:
+    break;
+  }
+  return std::string(core::baseShapeName(shape.ball));
+}
+
+// The shape's image at N = n, as `octaclay-cli new` makes it: a torus's height around its
+// tube chosen from its radii (its cells about square: a thin ring sampled evenly).
+core::GeometryImage shapeImage(const AddedShape& shape, int n) {
+  switch (shape.kind) {
+  case AddedKind::Torus: {
+    const core::Torus torus;
+    return core::makeTorus(torus, n, core::torusHeight(torus, n));
+  }
+  case AddedKind::Plane:
+    return core::makeSheet(core::Sheet::Square, n);
+  case AddedKind::Disc:
+    return core::makeSheet(core::Sheet::Disc, n);
+  case AddedKind::Ball:
+    break;
+  }
+  return core::makeBaseShape(shape.ball, n);
+}
+
+void addShape(MainWindow& window, const AddedShape& shape) {
   Modeller& modeller = *window.modeller();
   if (!modeller.hasDocument()) return;
   const int n = modeller.document().size();
   core::SceneObject object;
-  std::string name(core::baseShapeName(shape));
+  std::string name = shapeName(shape);
   if (!name.empty()) name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
   object.name = name;
-  object.document = core::makeDocument(core::makeBaseShape(shape, n > 1 ? n : 256));
+  object.document = core::makeDocument(shapeImage(shape, n > 1 ? n : 256));
   const float sceneSize = core::sceneBounds(modeller.scene()).diagonal();
   const float ownSize = core::boundingBox(object.document.positions).diagonal();
   const float scale = ownSize > 0 && sceneSize > 0 ? kShareOfScene * sceneSize / ownSize : 1.0f;
@@ -51,15 +93,18 @@ void addShape(MainWindow& window, core::BaseShape shape) {
 void addAddMenu(MainWindow& window) {
   QMenu* menu = window.menuBar()->addMenu(MainWindow::tr("&Add"));
   menu->setObjectName("menuAdd");
-  const std::pair<core::BaseShape, QString> shapes[] = {
-      {core::BaseShape::Sphere, MainWindow::tr("&Sphere")},
-      {core::BaseShape::Cube, MainWindow::tr("&Cube")},
-      {core::BaseShape::Cylinder, MainWindow::tr("C&ylinder")},
-      {core::BaseShape::Blob, MainWindow::tr("&Blob")},
-      {core::BaseShape::Capsule, MainWindow::tr("Ca&psule")}};
+  const std::pair<AddedShape, QString> shapes[] = {
+      {{AddedKind::Ball, core::BaseShape::Sphere}, MainWindow::tr("&Sphere")},
+      {{AddedKind::Ball, core::BaseShape::Cube}, MainWindow::tr("&Cube")},
+      {{AddedKind::Ball, core::BaseShape::Cylinder}, MainWindow::tr("C&ylinder")},
+      {{AddedKind::Ball, core::BaseShape::Blob}, MainWindow::tr("&Blob")},
+      {{AddedKind::Ball, core::BaseShape::Capsule}, MainWindow::tr("Ca&psule")},
+      {{AddedKind::Torus}, MainWindow::tr("&Torus")},
+      {{AddedKind::Plane}, MainWindow::tr("P&lane")},
+      {{AddedKind::Disc}, MainWindow::tr("D&isc")}};
   for (const auto& [shape, text] : shapes) {
     QAction* a = menu->addAction(text);
-    std::string id(core::baseShapeName(shape));
+    std::string id = shapeName(shape);
     if (!id.empty()) id[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(id[0])));
     a->setObjectName(QString::fromStdString("actionAdd" + id));
     a->setStatusTip(MainWindow::tr("Adds a new object at the view's centre and edits it"));

@@ -35,14 +35,7 @@ core::Scene readSceneFile(const QString& path) {
   core::Scene scene = QFileInfo(path).suffix().compare("ocz", Qt::CaseInsensitive) == 0
                           ? core::readCompressedScene(toPath(path))
                           : core::readScene(toPath(path));
-  for (const core::SceneObject& object : scene.objects)
-    if (object.document.topology != core::Topology::Octahedral)
-      throw core::Error(core::ErrorKind::InvalidInput,
-                        "object " + object.name + " is a " +
-                            std::string(core::topologyName(object.document.topology)) +
-                            ": the modeller sculpts octahedral (ball) objects only so far; "
-                            "octaclay-cli stroke, info and export work on it");
-  return scene;
+  return scene; // balls, tori and planes alike: the GPU sculpts every topology
 }
 
 std::function<void()> importWork(const QString& path, int n, std::shared_ptr<TaskControl> control,

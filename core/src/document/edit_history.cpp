@@ -28,7 +28,8 @@ void validateStroke(const EditStep& s) {
                 "; build strokes with EditStepRecorder");
   std::size_t changed = 0;
   for (const TileChange& t : s.tiles) {
-    const TexelRect expected = EditStepRecorder::tileRegion(s.imageSide, t.tileX, t.tileY);
+    const TexelRect expected = EditStepRecorder::tileRegion(
+        s.imageSide, s.imageRows == 0 ? s.imageSide : s.imageRows, t.tileX, t.tileY);
     if (t.region != expected || t.channels != editLayerChannels(t.layer))
       invalidEdit("EditHistory::record: tile (" + std::to_string(t.tileX) + ", " +
                   std::to_string(t.tileY) +
@@ -67,6 +68,8 @@ void EditHistory::record(EditStep stroke) {
       invalidEdit("EditHistory::record: the replaced document has side " + std::to_string(before) +
                   " but the history's document has side " + std::to_string(side_));
     stroke.imageSide = stroke.replacedAfter->size() + 1;
+    const int rows = stroke.replacedAfter->positions.rows();
+    stroke.imageRows = rows == stroke.imageSide ? 0 : rows;
   } else {
     validateStroke(stroke);
     if (side_ != 0 && side_ != stroke.imageSide)

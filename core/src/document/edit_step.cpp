@@ -134,13 +134,17 @@ std::size_t EditStep::computeBytes() const {
 // ---------------------------------------------------------------------------------------------
 // EditStepRecorder
 
-EditStepRecorder::EditStepRecorder(int imageSide) : side_(imageSide) {
-  if (imageSide < 2)
-    invalidEdit("EditStepRecorder: image side " + std::to_string(imageSide) +
-                " is too small; pass N+1 of the geometry image (at least 3)");
+EditStepRecorder::EditStepRecorder(int imageSide, int imageRows)
+    : side_(imageSide), rows_(imageRows == 0 ? imageSide : imageRows) {
+  if (imageSide < 2 || rows_ < 2)
+    invalidEdit("EditStepRecorder: image side " + std::to_string(imageSide) + " by " +
+                std::to_string(rows_) +
+                " rows is too small; pass N+1 of the geometry image (at least 3)");
   stroke_.imageSide = side_;
-  const int tiles = tilesPerSide(side_);
-  seen_.assign(4u * static_cast<std::size_t>(tiles) * static_cast<std::size_t>(tiles), 0);
+  stroke_.imageRows = rows_ == side_ ? 0 : rows_;
+  seen_.assign(4u * static_cast<std::size_t>(tilesPerSide(side_)) *
+                   static_cast<std::size_t>(tilesPerSide(rows_)),
+               0);
 }
 
 int EditStepRecorder::tilesPerSide(int imageSide) {
@@ -148,20 +152,24 @@ int EditStepRecorder::tilesPerSide(int imageSide) {
 }
 
 TexelRect EditStepRecorder::tileRegion(int imageSide, int tileX, int tileY) {
-  const int tiles = tilesPerSide(imageSide);
-  if (tileX < 0 || tileY < 0 || tileX >= tiles || tileY >= tiles)
+  return tileRegion(imageSide, imageSide, tileX, tileY);
+}
+
+TexelRect EditStepRecorder::tileRegion(int imageSide, int imageRows, int tileX, int tileY) {
+  const int tilesX = tilesPerSide(imageSide), tilesY = tilesPerSide(imageRows);
+  if (tileX < 0 || tileY < 0 || tileX >= tilesX || tileY >= tilesY)
     invalidEdit("edit history: tile (" + std::to_string(tileX) + ", " + std::to_string(tileY) +
-                ") is outside the image of side " + std::to_string(imageSide) + ", which has " +
-                std::to_string(tiles) + "x" + std::to_string(tiles) + " tiles of " +
-                std::to_string(kTileSize) + " texels");
+                ") is outside the image of " + std::to_string(imageSide) + "x" +
+                std::to_string(imageRows) + " texels, which has " + std::to_string(tilesX) + "x" +
+                std::to_string(tilesY) + " tiles of " + std::to_string(kTileSize) + " texels");
   const int x = tileX * kTileSize, y = tileY * kTileSize;
-  return {x, y, std::min(kTileSize, imageSide - x), std::min(kTileSize, imageSide - y)};
+  return {x, y, std::min(kTileSize, imageSide - x), std::min(kTileSize, imageRows - y)};
 }
 
 void EditStepRecorder::addTile(EditLayer layer, int tileX, int tileY, int channels,
                                std::span<const float> before, std::span<const float> after) {
   const int li = layerIndex(layer);
-  const TexelRect region = tileRegion(side_, tileX, tileY);
+  const TexelRect region = tileRegion(side_, rows_, tileX, tileY);
   if (channels != editLayerChannels(layer))
     invalidEdit(std::string("EditStepRecorder::addTile: the ") + editLayerName(layer) +
                 " layer has " + std::to_string(editLayerChannels(layer)) + " channels, not " +
@@ -175,7 +183,8 @@ void EditStepRecorder::addTile(EditLayer layer, int tileX, int tileY, int channe
                 " channels = " + std::to_string(texelCount * c) + " floats, but before has " +
                 std::to_string(before.size()) + " and after " + std::to_string(after.size()));
   const int tiles = tilesPerSide(side_);
-  std::uint8_t& seen = seen_[static_cast<std::size_t>((li * tiles + tileY) * tiles + tileX)];
+  std::uint8_t& seen =
+      seen_[static_cast<std::size_t>((li * tilesPerSide(rows_) + tileY) * tiles + tileX)];
   if (seen)
     invalidEdit(std::string("EditStepRecorder::addTile: tile (") + std::to_string(tileX) + ", " +
                 std::to_string(tileY) + ") of the " + editLayerName(layer) +
@@ -243,6 +252,7 @@ EditStep EditStepRecorder::finish(std::string label) {
   done.bytes = done.computeBytes();
   stroke_ = EditStep{};
   stroke_.imageSide = side_;
+  stroke_.imageRows = rows_ == side_ ? 0 : rows_;
   std::fill(seen_.begin(), seen_.end(), std::uint8_t{0});
   return done;
 }

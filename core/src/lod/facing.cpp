@@ -16,6 +16,8 @@ constexpr double kMinPull = 0.08; // of the horizontal spread
 } // namespace
 
 Vec3f guessFacing(const GeometryImage& image) {
+  // The saliency is the ball's (octahedral): a torus or plane faces the default front.
+  if (image.topology() != Topology::Octahedral) return {0, 0, 1};
   // The image's level of kGuessSize (every step-th sample), as the point LOD takes it.
   GeometryImage level =
       image.size() > kGuessSize ? resampleImage(image, kGuessSize, ResampleMethod::Point) : image;

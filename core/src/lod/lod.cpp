@@ -8,6 +8,7 @@
 #include "lod/refit.h"
 #include "lod/resampling.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/vertex_index.h"
@@ -359,6 +360,9 @@ GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod me
 }
 
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
+  // Its resampling and collapse follow the ball's octahedral grid (a torus or plane object in
+  // the modeller asks too).
+  requireOctahedral(image, "the level of detail", "this image");
   if (const int e = detail::unitScaleExponent(image); e != 0) {
     checkOptions(image, options);
     LodMesh lod = generateLod(detail::scaledPositions(image, e), options);

@@ -5,6 +5,7 @@
 #include "detail/parallel_rows.h"
 #include "detail/unit_scale.h"
 
+#include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/geometry/normals.h"
 
 #include <algorithm>
@@ -89,6 +90,9 @@ std::vector<float> blur(int n, const std::vector<float>& field, float sigma) {
 } // namespace
 
 void computeSaliency(GeometryImage& image, const SaliencyOptions& options) {
+  // Its blurs and neighbours follow the ball's octahedral grid: a torus or plane would be read
+  // out of bounds.
+  requireOctahedral(image, "saliency", "this image");
   if (const int e = detail::unitScaleExponent(image); e != 0) { // in the model's own units
     GeometryImage scaled = detail::scaledPositions(image, e);
     computeSaliency(scaled, options);

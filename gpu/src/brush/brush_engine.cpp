@@ -181,10 +181,10 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   if (!brush.broken.empty()) throw BrushTimeoutError(brush.broken);
   const bool maskTexture = !document.mirror().mask.uniform();
   const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
-  const int side = document.size() + 1;
+  const int side = document.side(), rows = document.rows();
   for (const core::TexelRect& t : result.tiles)
     result.texels += static_cast<std::size_t>(t.width) * t.height;
-  result.seams = seamRuns(result.tiles, side, document.document().positions.topology());
+  result.seams = seamRuns(result.tiles, side, rows, document.topology());
 
   const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
   std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
@@ -203,7 +203,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
-  glViewport(0, 0, side, side);
+  glViewport(0, 0, side, rows);
   const auto bindInputs = [&](const Program& pass, core::EditLayer layer) {
     pass.use();
     detail::setUniforms(pass, brush.manifest, document, layer, dab);
@@ -223,7 +223,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     if (document.readsAtOnce(layer)) awaitPasses();
     if (brush.writesInPlace(layer)) {
       // The pass wrote the layer's texture itself.
-    } else if (rects.size() == 1 && rects[0] == core::TexelRect{0, 0, side, side}) {
+    } else if (rects.size() == 1 && rects[0] == document.whole()) {
       document.swapScratch(layer);
     } else {
       for (const core::TexelRect& r : rects)
@@ -280,7 +280,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     // u_layer: the positions (brushInputAt's value is the positions texel).
     bindInputs(pass, core::EditLayer::Positions);
     if (brush.readsWhatItWrites()) glTextureBarrier(); // earlier writes are visible
-    rectPass_.draw(rects, side, side);
+    rectPass_.draw(rects, side, rows);
     for (core::EditLayer layer : brush.manifest.mix)
       glDisablei(GL_BLEND, static_cast<GLuint>(layer)); // attachment k holds layer k
     // Detached: the framebuffer must not keep a document's textures alive, nor render into a
@@ -311,7 +311,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();
     bindInputs(pass, layer);
     if (inPlace) glTextureBarrier();
-    rectPass_.draw(rects, side, side);
+    rectPass_.draw(rects, side, rows);
     passIssued(brush);
     finishLayer(layer);
   }
@@ -338,11 +338,12 @@ void BrushEngine::resetOffsets(const std::vector<core::TexelRect>& where) {
 
 void BrushEngine::captureStrokeStart(GpuDocument& document) {
   if (strokeStartOf_ == &document) return;
-  const int side = document.size() + 1;
+  const int side = document.side(), rows = document.rows();
   const Texture& positions = document.texture(core::EditLayer::Positions);
-  if (strokeStart_.width() != side || strokeStart_.format() != positions.format())
-    strokeStart_ = Texture(side, side, positions.format());
-  detail::copyRect(positions, strokeStart_, {0, 0, side, side});
+  if (strokeStart_.width() != side || strokeStart_.height() != rows ||
+      strokeStart_.format() != positions.format())
+    strokeStart_ = Texture(side, rows, positions.format());
+  detail::copyRect(positions, strokeStart_, document.whole());
   strokeStartOf_ = &document;
 }
 
@@ -356,12 +357,12 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
                                  const std::vector<core::TexelRect>& rects, bool maskTexture,
                                  const std::vector<int>& enums,
                                  const std::vector<core::EditLayer>& layers) {
-  const int side = document.size() + 1;
-  const core::TexelRect whole{0, 0, side, side};
+  const int side = document.side(), rows = document.rows();
+  const core::TexelRect whole = document.whole();
   if (baseOf_ && baseOf_ != &document) resetOffsets({whole});
-  if (offsets_[0].width() != side) {
+  if (offsets_[0].width() != side || offsets_[0].height() != rows) {
     for (Texture& t : offsets_)
-      t = Texture(side, side, TextureFormat::Rgba32f);
+      t = Texture(side, rows, TextureFormat::Rgba32f);
     resetOffsets({whole});
   }
   // The layers at the stroke's first dab: every dab of it resamples from them.
@@ -370,8 +371,9 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
     const auto k = static_cast<std::size_t>(layer);
     if (baseTaken_[k]) continue;
     const Texture& current = document.texture(layer);
-    if (base_[k].width() != side || base_[k].format() != current.format())
-      base_[k] = Texture(side, side, current.format());
+    if (base_[k].width() != side || base_[k].height() != rows ||
+        base_[k].format() != current.format())
+      base_[k] = Texture(side, rows, current.format());
     detail::copyRect(current, base_[k], whole);
     baseTaken_[k] = true;
   }
@@ -400,7 +402,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
       offsets_[1].bindAsTarget();
       detail::kOffsetsUnit.bind(offsets_[0].id());
       glActiveTexture(GL_TEXTURE0);
-      rectPass_.draw(rects, side, side);
+      rectPass_.draw(rects, side, rows);
       passIssued(brush);
       std::swap(offsets_[0], offsets_[1]);
     }
@@ -416,8 +418,10 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
     for (const detail::BrushUnit& unit : detail::kLayerUnits)
       glUniform1i(resampleProgram_.uniform(unit.sampler), unit.unit);
     glUniform1i(resampleProgram_.uniform("u_size"), document.size());
+    glUniform2i(glGetUniformLocation(resampleProgram_.id(), "u_cells"), document.grid().width,
+                document.grid().height);
     glUniform1i(glGetUniformLocation(resampleProgram_.id(), "u_topology"),
-                static_cast<int>(document.document().positions.topology()));
+                static_cast<int>(document.topology()));
     bindBase();
     if (!resampleTarget_.id())
       resampleTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));
@@ -430,7 +434,7 @@ void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, cons
       drawBuffers[k] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k);
     }
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
-    rectPass_.draw(rects, side, side);
+    rectPass_.draw(rects, side, rows);
     // Detached, as the brushLayers() target: no document texture stays attached.
     for (GLenum k = 0; k < 4; ++k)
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, 0, 0);

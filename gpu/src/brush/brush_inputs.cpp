@@ -47,16 +47,14 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
     glUniform1i(location(program, unit.sampler), unit.unit);
   glUniform1f(location(program, "u_maskFill"), doc.mirror().mask.fill[0]);
   glUniform1i(location(program, "u_size"), doc.size());
-  glUniform1i(location(program, "u_topology"),
-              static_cast<int>(doc.document().positions.topology()));
+  glUniform2i(location(program, "u_cells"), doc.grid().width, doc.grid().height);
+  glUniform1i(location(program, "u_topology"), static_cast<int>(doc.topology()));
   glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
   glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
               dab.centreNormal.z);
   float radius = dab.radius;
-  if (manifest.area ==
-      AreaMode::Uv) // measured in samples: the same fraction of N as of the diagonal
-    radius =
-        dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * static_cast<float>(doc.size());
+  if (manifest.area == AreaMode::Uv) // in samples: the same fraction of them as of the diagonal
+    radius = dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * doc.samplesAcross();
   glUniform1f(location(program, "u_radius"), radius);
   glUniform1f(location(program, "u_strength"), dab.strength);
   glUniform1f(location(program, "u_pressure"), dab.pressure);

@@ -87,8 +87,8 @@ void BrushEngine::bindMaterial(const Program& program, const BrushManifest& mani
     const GpuMaterial& m = materials_[static_cast<std::size_t>(index)];
     const float diagonal = std::max(document.bounds().diagonal(), 1e-20f);
     const float tileSize = m.tileSize * diagonal;
-    // uv projection measures in samples: the same fraction of N as of the diagonal.
-    const float tileSamples = m.tileSize * static_cast<float>(document.size());
+    // uv projection measures in samples: the same fraction of them as of the diagonal.
+    const float tileSamples = m.tileSize * document.samplesAcross();
     glUniform1f(program.uniform("u_tileSize"), tileSize);
     glUniform1f(program.uniform("u_tileSamples"), tileSamples);
     glUniform1f(program.uniform("u_heightScale"), m.heightScale * tileSize);

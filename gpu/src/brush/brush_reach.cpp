@@ -15,26 +15,25 @@ std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
   if (found == brushes_.end())
     throw core::Error(core::ErrorKind::UnknownId, "no brush named '" + brushId + "' is loaded");
   const core::TileBounds& bounds = document.bounds();
-  const int tiles = bounds.tilesPerSide();
   std::vector<core::TexelRect> rects;
   if (found->second->manifest.area == AreaMode::Uv) {
     // Samples within the radius (in samples) of the centre sample or of one of its images over
     // the tiling (prelude.glsl's uvDistance), so uv brushes continue across seams.
-    const float r = dab.radius / std::max(1e-20f, bounds.diagonal()) * float(document.size());
-    const float n = float(document.size());
+    const float r = dab.radius / std::max(1e-20f, bounds.diagonal()) * document.samplesAcross();
+    const float n = float(document.size()), h = float(document.grid().height);
     const float ci = float(dab.centreTexel.i), cj = float(dab.centreTexel.j);
-    // The torus's images are the translates by N in i, j or both; a plane has none.
-    const core::Topology topology = document.document().positions.topology();
+    // The torus's images are the translates by W in i, H in j or both; a plane has none.
+    const core::Topology topology = document.topology();
     const std::array<std::array<float, 2>, 9> images =
         topology == core::Topology::Torus ? std::array<std::array<float, 2>, 9>{{{ci, cj},
                                                                                  {ci + n, cj},
                                                                                  {ci - n, cj},
-                                                                                 {ci, cj + n},
-                                                                                 {ci, cj - n},
-                                                                                 {ci + n, cj + n},
-                                                                                 {ci - n, cj - n},
-                                                                                 {ci + n, cj - n},
-                                                                                 {ci - n, cj + n}}}
+                                                                                 {ci, cj + h},
+                                                                                 {ci, cj - h},
+                                                                                 {ci + n, cj + h},
+                                                                                 {ci - n, cj - h},
+                                                                                 {ci + n, cj - h},
+                                                                                 {ci - n, cj + h}}}
         : topology == core::Topology::Plane
             ? std::array<std::array<float, 2>, 9>{{{ci, cj},
                                                    {ci, cj},
@@ -54,8 +53,8 @@ std::vector<core::TexelRect> BrushEngine::reach(const GpuDocument& document,
                                                    {ci - n, cj - n},
                                                    {ci + n, cj - n},
                                                    {ci - n, cj + n}}};
-    for (int ty = 0; ty < tiles; ++ty)
-      for (int tx = 0; tx < tiles; ++tx) {
+    for (int ty = 0; ty < bounds.tilesY(); ++ty)
+      for (int tx = 0; tx < bounds.tilesX(); ++tx) {
         const core::TexelRect t = bounds.tileRect(tx, ty);
         for (const auto& c : images) {
           const float dx = std::max({float(t.x) - c[0], 0.0f, c[0] - float(t.x + t.width - 1)});

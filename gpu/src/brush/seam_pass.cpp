@@ -21,18 +21,16 @@ Program seamProgram() {
 
 void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
                core::EditLayer layer, const std::vector<core::TexelRect>& runs) {
-  const int side = document.size() + 1;
   // Into the scratch: after a whole-image swap the scratch is the old texture, free to
   // overwrite, and the seam pass reads the layer's texture.
   document.scratch(layer).bindAsTarget();
   seam.use();
   glUniform1i(seam.uniform("u_source"), 0);
-  glUniform1i(seam.uniform("u_size"), document.size());
-  glUniform1i(seam.uniform("u_topology"),
-              static_cast<int>(document.document().positions.topology()));
+  glUniform2i(seam.uniform("u_cells"), document.grid().width, document.grid().height);
+  glUniform1i(seam.uniform("u_topology"), static_cast<int>(document.topology()));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, document.texture(layer).id());
-  rectPass.draw(runs, side, side);
+  rectPass.draw(runs, document.side(), document.rows());
   for (const core::TexelRect& run : runs)
     copyRect(document.scratch(layer), document.texture(layer), run);
 }
@@ -43,41 +41,50 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
 // identified samples are already equal, and the seaming pass would write them back unchanged.
 std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
                                       core::Topology topology) {
+  return seamRuns(tiles, side, side, topology);
+}
+
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side, int rows,
+                                      core::Topology topology) {
   if (topology == core::Topology::Plane) return {}; // no seams
-  const auto onBorder = [side](const core::TexelRect& t) {
-    return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == side;
+  const auto onBorder = [side, rows](const core::TexelRect& t) {
+    return t.x == 0 || t.y == 0 || t.x + t.width == side || t.y + t.height == rows;
   };
   if (std::none_of(tiles.begin(), tiles.end(), onBorder)) return {}; // most dabs
-  const int n = side - 1;
-  std::array<std::vector<std::uint8_t>, 4> marked; // bottom, top (by i); left, right (by j)
-  for (auto& m : marked)
-    m.assign(static_cast<std::size_t>(side), 0);
+  const int w = side - 1, h = rows - 1;
+  // bottom, top (by i, side long); left, right (by j, rows long)
+  std::array<std::vector<std::uint8_t>, 4> marked;
+  for (int line = 0; line < 4; ++line)
+    marked[static_cast<std::size_t>(line)].assign(static_cast<std::size_t>(line < 2 ? side : rows),
+                                                  0);
   // The ball's partner of border sample k is N - k on the same side; the torus's is k on the
-  // opposite side (row N is row 0, column N is column 0).
+  // opposite side (row H is row 0, column W is column 0).
   const bool torus = topology == core::Topology::Torus;
   const auto mark = [&](std::size_t line, int begin, int end) {
+    const int last = line < 2 ? w : h;
     for (int k = begin; k < end; ++k) {
       const auto at = static_cast<std::size_t>(k);
       marked[line][at] = 1;
       if (torus)
         marked[line ^ 1][at] = 1;
       else
-        marked[line][static_cast<std::size_t>(n - k)] = 1;
+        marked[line][static_cast<std::size_t>(last - k)] = 1;
     }
   };
   for (const core::TexelRect& t : tiles) {
     if (t.y == 0) mark(0, t.x, t.x + t.width);
-    if (t.y + t.height == side) mark(1, t.x, t.x + t.width);
+    if (t.y + t.height == rows) mark(1, t.x, t.x + t.width);
     if (t.x == 0) mark(2, t.y, t.y + t.height);
     if (t.x + t.width == side) mark(3, t.y, t.y + t.height);
   }
   const bool corner = marked[0][0] || marked[1][0] || marked[2][0] || marked[3][0];
   for (int k : {0, 1})
-    marked[k][0] = marked[k][static_cast<std::size_t>(n)] = corner;
+    marked[k][0] = marked[k][static_cast<std::size_t>(w)] = corner;
   std::vector<core::TexelRect> runs;
   for (int line = 0; line < 4; ++line) {
     const bool row = line < 2;
-    const int begin = row ? 0 : 1, end = row ? side : n; // columns leave the corners to rows
+    // columns leave the corners to rows
+    const int begin = row ? 0 : 1, end = row ? side : h;
     for (int k = begin; k < end;) {
       if (!marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(k)]) {
         ++k;
@@ -86,7 +93,7 @@ std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles,
       int stop = k;
       while (stop < end && marked[static_cast<std::size_t>(line)][static_cast<std::size_t>(stop)])
         ++stop;
-      const int at = line % 2 == 0 ? 0 : n;
+      const int at = line % 2 == 0 ? 0 : (row ? h : w);
       runs.push_back(row ? core::TexelRect{k, at, stop - k, 1}
                          : core::TexelRect{at, k, 1, stop - k});
       k = stop;

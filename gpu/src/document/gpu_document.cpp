@@ -71,25 +71,18 @@ int GpuDocument::channels(core::EditLayer layer) {
 GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
     : document_(std::move(document)), bounds_(document_.positions),
       deferPositions_(positionsDeferredByDefault()) {
-  // Textures are (N+1)² and every pass measures them by N: a torus or plane on the GPU is square.
-  if (!document_.positions.square())
-    throw core::Error(core::ErrorKind::InvalidArgument,
-                      "the GPU sculpts square images only; this " +
-                          std::string(core::topologyName(document_.positions.topology())) + " is " +
-                          std::to_string(document_.positions.width()) + "x" +
-                          std::to_string(document_.positions.height()) +
-                          " cells (make it with equal width and height)");
-  const int side = document_.positions.side();
+  // Textures are (W+1) × (H+1): a torus or plane may be W ≠ H (a thin ring sampled evenly).
+  const int side = document_.positions.side(), rows = document_.positions.rows();
   // Row bands: a caller on a GUI thread gets control back (progress) between them, and an
   // unpainted layer's fill needs only one band-sized buffer instead of a full-size one.
   const int band = std::max(1, (1 << 20) / side);
-  const int steps = 4 * ((side + band - 1) / band);
+  const int steps = 4 * ((rows + band - 1) / band);
   int step = 0;
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
-    textures_[index(layer)] = Texture(side, side, formatOf(layer));
-    for (int y = 0; y < side; y += band) {
-      push(layer, {0, y, side, std::min(band, side - y)});
+    textures_[index(layer)] = Texture(side, rows, formatOf(layer));
+    for (int y = 0; y < rows; y += band) {
+      push(layer, {0, y, side, std::min(band, rows - y)});
       if (progress) progress(static_cast<float>(++step) / static_cast<float>(steps));
     }
     // An unpainted layer's fill as the texture holds it (half floats round 0.8 to 0.7998), so
@@ -121,12 +114,12 @@ void GpuDocument::syncRegion(std::span<const core::TexelRect> rects) const {
   auto& self = const_cast<GpuDocument&>(*this); // as document(): the cache, not the document
   std::vector<std::uint8_t>& stale = self.staleBlocks_[index(core::EditLayer::Positions)];
   if (stale.empty()) return;
-  const int side = document_.positions.side();
+  const int side = document_.positions.side(), rows = document_.positions.rows();
   const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
   for (const core::TexelRect& given : rects) {
     const int x0 = std::max(given.x, 0), y0 = std::max(given.y, 0);
     const int x1 = std::min(given.x + given.width, side),
-              y1 = std::min(given.y + given.height, side);
+              y1 = std::min(given.y + given.height, rows);
     if (x0 >= x1 || y0 >= y1) continue;
     for (int by = y0 / kStaleBlock; by <= (y1 - 1) / kStaleBlock; ++by)
       for (int bx = x0 / kStaleBlock; bx <= (x1 - 1) / kStaleBlock; ++bx) {
@@ -135,7 +128,7 @@ void GpuDocument::syncRegion(std::span<const core::TexelRect> rects) const {
         flag = 0;
         const int x = bx * kStaleBlock, y = by * kStaleBlock;
         self.readBack(core::EditLayer::Positions,
-                      {x, y, std::min(kStaleBlock, side - x), std::min(kStaleBlock, side - y)});
+                      {x, y, std::min(kStaleBlock, side - x), std::min(kStaleBlock, rows - y)});
       }
   }
 }
@@ -157,8 +150,7 @@ Texture& GpuDocument::scratch(core::EditLayer layer) {
     // Made in the middle of a pass whose inputs are bound: the active unit keeps its texture.
     GLint bound = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-    const int side = document_.positions.side();
-    twin = Texture(side, side, formatOf(layer));
+    twin = Texture(document_.positions.side(), document_.positions.rows(), formatOf(layer));
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(bound));
   }
   return twin;
@@ -286,8 +278,9 @@ void GpuDocument::changed(core::EditLayer layer, std::span<const core::TexelRect
 
 void GpuDocument::markStale(core::EditLayer layer, std::span<const core::TexelRect> rects) {
   const int blocks = (document_.positions.side() + kStaleBlock - 1) / kStaleBlock;
+  const int blockRows = (document_.positions.rows() + kStaleBlock - 1) / kStaleBlock;
   std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
-  stale.resize(static_cast<std::size_t>(blocks) * blocks, 0);
+  stale.resize(static_cast<std::size_t>(blocks) * blockRows, 0);
   for (const core::TexelRect& rect : rects)
     for (int by = rect.y / kStaleBlock; by <= (rect.y + rect.height - 1) / kStaleBlock; ++by)
       for (int bx = rect.x / kStaleBlock; bx <= (rect.x + rect.width - 1) / kStaleBlock; ++bx)
@@ -305,14 +298,15 @@ void GpuDocument::deferPulls(bool on) {
 }
 
 void GpuDocument::syncMirror() {
-  const int side = document_.positions.side();
+  const int side = document_.positions.side(), rows = document_.positions.rows();
   const int blocks = (side + kStaleBlock - 1) / kStaleBlock;
+  const int blockRows = (rows + kStaleBlock - 1) / kStaleBlock;
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     std::vector<std::uint8_t>& stale = staleBlocks_[index(layer)];
     if (stale.empty()) continue;
     // Runs of stale blocks along each block row, one read each.
-    for (int by = 0; by < blocks; ++by)
+    for (int by = 0; by < blockRows; ++by)
       for (int bx = 0; bx < blocks;) {
         if (!stale[static_cast<std::size_t>(by) * blocks + bx]) {
           ++bx;
@@ -324,7 +318,7 @@ void GpuDocument::syncMirror() {
         const int x = bx * kStaleBlock, y = by * kStaleBlock;
         // The tile bounds are current already (refreshed from the GPU after each pass).
         readBack(layer,
-                 {x, y, std::min(end * kStaleBlock, side) - x, std::min(kStaleBlock, side - y)});
+                 {x, y, std::min(end * kStaleBlock, side) - x, std::min(kStaleBlock, rows - y)});
         bx = end;
       }
     stale.clear();
@@ -341,8 +335,7 @@ float* GpuDocument::mirrorData(core::EditLayer layer) {
   if (!l) return &document_.positions.at(0, 0).x;
   if (l->uniform()) { // the first edit of a layer gives it texels
     const int c = channels(layer);
-    const int side = document_.positions.side();
-    l->texels.resize(static_cast<std::size_t>(side) * side * c);
+    l->texels.resize(document_.positions.texelCount() * static_cast<std::size_t>(c));
     for (std::size_t k = 0; k < static_cast<std::size_t>(c); ++k)
       l->texels[k] = l->fill[k];
     // Doubling copies: a 4096 layer's fill is the first stroke's pause otherwise.
@@ -362,9 +355,7 @@ void GpuDocument::writeSaliency(std::span<const float> saliency) {
                           std::to_string(texels.size()) + " samples");
   for (std::size_t k = 0; k < texels.size(); ++k)
     texels[k].w = saliency[k];
-  const int side = document_.positions.side();
-  push(core::EditLayer::Positions,
-       {0, 0, side, side}); // the mirror's texels, now with the saliency
+  push(core::EditLayer::Positions, whole()); // the mirror's texels, now with the saliency
 }
 
 void GpuDocument::note(core::EditLayer layer, core::TexelRect rect) {
@@ -381,10 +372,9 @@ void GpuDocument::note(core::EditLayer layer, core::TexelRect rect) {
 }
 
 void GpuDocument::markAllChanged() {
-  const int side = document_.positions.side();
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask})
-    unpublished_[index(layer)] = {core::TexelRect{0, 0, side, side}};
+    unpublished_[index(layer)] = {whole()};
 }
 
 bool GpuDocument::publishChanges(ChangeKind kind) {

@@ -25,8 +25,7 @@ void TileBoundsPass::refresh(const Texture& positions, core::TileBounds& bounds,
   quarters.reserve(4 * tiles.size());
   for (int t : tiles)
     for (int q = 0; q < 4; ++q) {
-      const core::TexelRect r =
-          bounds.quarterRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide(), q);
+      const core::TexelRect r = bounds.quarterRect(t % bounds.tilesX(), t / bounds.tilesX(), q);
       quarters.push_back({r.x, r.y, r.width, r.height});
     }
   quarters_.upload(std::as_bytes(std::span(quarters)));
@@ -41,7 +40,7 @@ void TileBoundsPass::refresh(const Texture& positions, core::TileBounds& bounds,
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, boxes_.id());
   program_.use();
   glUniform1i(program_.uniform("u_positions"), 0);
-  glUniform1i(program_.uniform("u_last"), positions.width() - 1);
+  glUniform2i(program_.uniform("u_last"), positions.width() - 1, positions.height() - 1);
   glUniform1i(program_.uniform("u_count"), static_cast<GLint>(quarters.size()));
   GLint bound = 0; // the unit's texture, put back after: a caller's context keeps its state
   glActiveTexture(GL_TEXTURE0);

@@ -4,28 +4,32 @@
 #include <cmath>
 
 namespace octaclay::gpu::detail {
-namespace {
 
-// core::extractMesh's split: diagonals follow the octahedron's faces.
-bool antiDiagonal(int i, int j, int m) {
-  return (i < m / 2) == (j < m / 2);
+bool ModelChunks::antiDiagonal(int i, int j) const {
+  // core::extractMesh's split: on the ball diagonals follow the octahedron's faces.
+  return topology_ != core::Topology::Octahedral || (i < m_ / 2) == (j < m_ / 2);
 }
 
-} // namespace
-
 void ModelChunks::reset(int n, int step) {
-  m_ = n / step;
+  reset(core::SampleGrid{core::Topology::Octahedral, n, n}, step);
+}
+
+void ModelChunks::reset(const core::SampleGrid& grid, int step) {
+  m_ = grid.width / step;
+  mh_ = grid.height / step;
   step_ = step;
-  chunksPerSide_ = (m_ + kCells - 1) / kCells;
-  chunks_.assign(static_cast<std::size_t>(chunksPerSide_) * chunksPerSide_, {});
+  topology_ = grid.topology;
+  chunksX_ = (m_ + kCells - 1) / kCells;
+  chunksY_ = (mh_ + kCells - 1) / kCells;
+  chunks_.assign(static_cast<std::size_t>(chunksX_) * chunksY_, {});
   int first = 0;
-  for (int cy = 0; cy < chunksPerSide_; ++cy)
-    for (int cx = 0; cx < chunksPerSide_; ++cx) {
-      Chunk& c = chunks_[static_cast<std::size_t>(cy * chunksPerSide_ + cx)];
+  for (int cy = 0; cy < chunksY_; ++cy)
+    for (int cx = 0; cx < chunksX_; ++cx) {
+      Chunk& c = chunks_[static_cast<std::size_t>(cy * chunksX_ + cx)];
       c.x0 = cx * kCells;
       c.y0 = cy * kCells;
       c.x1 = std::min(m_, c.x0 + kCells);
-      c.y1 = std::min(m_, c.y0 + kCells);
+      c.y1 = std::min(mh_, c.y0 + kCells);
       c.first = first;
       c.count = 6 * (c.x1 - c.x0) * (c.y1 - c.y0);
       first += c.count;
@@ -34,14 +38,14 @@ void ModelChunks::reset(int n, int step) {
 
 std::vector<std::uint32_t> ModelChunks::indices() const {
   std::vector<std::uint32_t> out;
-  out.reserve(6 * static_cast<std::size_t>(m_) * static_cast<std::size_t>(m_));
+  out.reserve(6 * static_cast<std::size_t>(m_) * static_cast<std::size_t>(mh_));
   const int m = m_;
   auto at = [m](int i, int j) { return static_cast<std::uint32_t>(j * (m + 1) + i); };
   for (const Chunk& c : chunks_)
     for (int j = c.y0; j < c.y1; ++j)
       for (int i = c.x0; i < c.x1; ++i) {
         const std::uint32_t a = at(i, j), b = at(i + 1, j), cc = at(i + 1, j + 1), d = at(i, j + 1);
-        if (antiDiagonal(i, j, m))
+        if (antiDiagonal(i, j))
           out.insert(out.end(), {a, b, d, b, cc, d});
         else
           out.insert(out.end(), {a, b, cc, a, cc, d});
@@ -74,7 +78,7 @@ void ModelChunks::computeCone(const core::GeometryImage& image, Chunk& c) const 
   for (int j = c.y0; j < c.y1; ++j)
     for (int i = c.x0; i < c.x1; ++i) {
       const core::Vec3f a = p(i, j), b = p(i + 1, j), cc = p(i + 1, j + 1), d = p(i, j + 1);
-      if (antiDiagonal(i, j, m_)) {
+      if (antiDiagonal(i, j)) {
         add(a, b, d);
         add(b, cc, d);
       } else {
@@ -83,6 +87,7 @@ void ModelChunks::computeCone(const core::GeometryImage& image, Chunk& c) const 
       }
     }
   c.cutoff = 2;
+  if (topology_ == core::Topology::Plane) return; // an open sheet: both sides are seen
   const float sumLength = core::length(sum);
   if (normals.empty() || !(sumLength > 1e-12f)) return;
   c.axis = sum * (1 / sumLength);

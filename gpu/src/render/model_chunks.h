@@ -1,6 +1,7 @@
 #pragma once
 
 #include "octaclay/core/geometry/geometry_image.h"
+#include "octaclay/core/geometry/sample_grid.h"
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/core/geometry/vec.h"
 
@@ -20,6 +21,10 @@ public:
 
   // The level of an N-image every step samples: m = N/step cells a side.
   void reset(int n, int step);
+  // The level of a W × H image every step samples: W/step × H/step cells, split as the grid's
+  // topology splits them (the ball along its octahedron's faces, a torus or plane along every
+  // cell's anti-diagonal). A plane is seen from both sides: its chunks are never culled.
+  void reset(const core::SampleGrid& grid, int step);
   // Triangle indices in chunk order (chunk k's triangles are [first(k), first(k) + count(k))).
   std::vector<std::uint32_t> indices() const;
   // Recomputes the cones of chunks overlapping rects (texel rectangles), or all when empty.
@@ -28,7 +33,7 @@ public:
   // consecutive chunks merged.
   void visibleRanges(core::Vec3f eye, std::vector<std::intptr_t>& offsets,
                      std::vector<int>& counts) const;
-  int chunkCount() const { return chunksPerSide_ * chunksPerSide_; }
+  int chunkCount() const { return chunksX_ * chunksY_; }
 
 private:
   struct Chunk {
@@ -40,7 +45,11 @@ private:
   };
   void computeCone(const core::GeometryImage& image, Chunk& chunk) const;
 
-  int m_ = 0, step_ = 1, chunksPerSide_ = 0;
+  // The ball's split (along the octahedron's faces), else every cell's anti-diagonal.
+  bool antiDiagonal(int i, int j) const;
+
+  int m_ = 0, mh_ = 0, step_ = 1, chunksX_ = 0, chunksY_ = 0;
+  core::Topology topology_ = core::Topology::Octahedral;
   std::vector<Chunk> chunks_;
 };
 

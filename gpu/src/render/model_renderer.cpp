@@ -116,8 +116,28 @@ void ModelRenderer::setLevel(int n, int divisor) {
     throw core::Error(core::ErrorKind::InvalidArgument,
                       "level N/" + std::to_string(divisor) + " of N = " + std::to_string(n) +
                           " is not a power-of-two level with at least 2 cells a side");
-  if (n == n_ && divisor == divisor_) return;
-  chunks_->reset(n, divisor);
+  setLevel(core::SampleGrid{core::Topology::Octahedral, n, n}, divisor);
+}
+
+int ModelRenderer::fittingDivisor(const core::SampleGrid& grid, int divisor) {
+  divisor = std::max(1, divisor);
+  while (divisor > 1 && (grid.width % divisor != 0 || grid.height % divisor != 0 ||
+                         std::min(grid.width, grid.height) / divisor < 1 ||
+                         std::max(grid.width, grid.height) / divisor < 2))
+    divisor /= 2;
+  return divisor;
+}
+
+void ModelRenderer::setLevel(const core::SampleGrid& grid, int divisor) {
+  const int w = grid.width, h = grid.height;
+  if (divisor < 1 || (divisor & (divisor - 1)) != 0 || w % divisor != 0 || h % divisor != 0 ||
+      std::min(w, h) / divisor < 1 || std::max(w, h) / divisor < 2)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      "level 1/" + std::to_string(divisor) + " of a " + std::to_string(w) + "x" +
+                          std::to_string(h) +
+                          " image is not a power-of-two level with at least 2 cells a side");
+  if (grid == grid_ && divisor == divisor_) return;
+  chunks_->reset(grid, divisor);
   chunksStale_ = true;
   const std::vector<std::uint32_t> indices = chunks_->indices();
   vertexArray_.bind();
@@ -127,7 +147,8 @@ void ModelRenderer::setLevel(int n, int divisor) {
                GL_STATIC_DRAW);
   glBindVertexArray(0);
   checkGlError("uploading the level's triangles");
-  n_ = n;
+  n_ = w;
+  grid_ = grid;
   divisor_ = divisor;
   indexCount_ = static_cast<long long>(indices.size());
 }
@@ -175,7 +196,7 @@ long long ModelRenderer::displayedTriangles() const {
 }
 
 void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects) {
-  const int side = document.size() + 1;
+  const int side = document.side(), rows = document.rows();
   // The stretch preview's map and mean spacing wait for its next draw (refreshStretch).
   meanSpacingStale_ = true;
   if (!stretchAllStale_) {
@@ -185,54 +206,56 @@ void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::
       staleStretch_.clear();
     }
   }
-  if (normals_.width() != side) {
-    normals_ = Texture(side, side, TextureFormat::Rgba8);
+  if (normals_.width() != side || normals_.height() != rows) {
+    normals_ = Texture(side, rows, TextureFormat::Rgba8);
     glBindTexture(GL_TEXTURE_2D, normals_.id());
     // Linear: between the displayed vertices each pixel blends the four nearest full-res normals.
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindTexture(GL_TEXTURE_2D, 0);
-    const core::TexelRect all{0, 0, side, side};
+    const core::TexelRect all = document.whole();
     rects = std::span(&all, 1);
     refreshNormals(document, rects); // the whole map once, then the caller's rects are inside it
     return;
   }
   if (rects.empty()) return;
-  if (!chunksStale_ && n_ == document.size()) chunks_->update(document.document().positions, rects);
+  if (!chunksStale_ && grid_ == document.grid())
+    chunks_->update(document.document().positions, rects);
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
   normals_.bindAsTarget();
-  glViewport(0, 0, side, side);
+  glViewport(0, 0, side, rows);
   normalProgram_.use();
   bindTexture(0, document.texture(core::EditLayer::Positions));
   glUniform1i(normalProgram_.uniform("u_positions"), 0);
   glUniform1i(normalProgram_.uniform("u_size"), document.size());
+  glUniform2i(glGetUniformLocation(normalProgram_.id(), "u_cells"), document.grid().width,
+              document.grid().height);
   glUniform1i(glGetUniformLocation(normalProgram_.id(), "u_topology"),
-              static_cast<int>(document.document().positions.topology()));
+              static_cast<int>(document.topology()));
   glUniform3f(normalProgram_.uniform("u_centreNormal"), 0.0f, 0.0f, 1.0f);
   const std::vector<core::TexelRect> passRects = regions(rects);
-  rectPass_.draw(passRects, side, side);
+  rectPass_.draw(passRects, side, rows);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
   checkGlError("normal map pass");
 }
 
 void ModelRenderer::refreshAllNormals(GpuDocument& document) {
-  const int side = document.size() + 1;
-  const core::TexelRect all{0, 0, side, side};
+  const core::TexelRect all = document.whole();
   refreshNormals(document, std::span(&all, 1));
 }
 
 void ModelRenderer::refreshStretch(GpuDocument& document) {
-  const int side = document.size() + 1;
+  const int side = document.side(), rows = document.rows();
   if (meanSpacingStale_) {
     meanSpacing_ = core::meanSpacing(document.document().positions);
     meanSpacingStale_ = false;
   }
-  if (stretch_.width() != side) {
-    stretch_ = Texture(side, side, TextureFormat::R32f);
+  if (stretch_.width() != side || stretch_.height() != rows) {
+    stretch_ = Texture(side, rows, TextureFormat::R32f);
     glBindTexture(GL_TEXTURE_2D, stretch_.id());
     // Nearest: the figure belongs to a sample, not to the surface between samples.
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -242,7 +265,7 @@ void ModelRenderer::refreshStretch(GpuDocument& document) {
   }
   std::vector<core::TexelRect> rects;
   if (stretchAllStale_)
-    rects.push_back({0, 0, side, side});
+    rects.push_back(document.whole());
   else
     rects = regions(staleStretch_);
   staleStretch_.clear();
@@ -257,14 +280,16 @@ void ModelRenderer::refreshStretch(GpuDocument& document) {
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);
   stretch_.bindAsTarget();
-  glViewport(0, 0, side, side);
+  glViewport(0, 0, side, rows);
   stretchProgram_.use();
   bindTexture(0, document.texture(core::EditLayer::Positions));
   glUniform1i(stretchProgram_.uniform("u_positions"), 0);
   glUniform1i(stretchProgram_.uniform("u_size"), document.size());
+  glUniform2i(glGetUniformLocation(stretchProgram_.id(), "u_cells"), document.grid().width,
+              document.grid().height);
   glUniform1i(glGetUniformLocation(stretchProgram_.id(), "u_topology"),
-              static_cast<int>(document.document().positions.topology()));
-  rectPass_.draw(rects, side, side);
+              static_cast<int>(document.topology()));
+  rectPass_.draw(rects, side, rows);
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
   checkGlError("stretch map pass");
@@ -272,7 +297,7 @@ void ModelRenderer::refreshStretch(GpuDocument& document) {
 
 const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView& view,
                                           bool lodVertices) {
-  if (normals_.width() != document.size() + 1) {
+  if (normals_.width() != document.side() || normals_.height() != document.rows()) {
     const SavedTarget saved;
     refreshAllNormals(document);
   }
@@ -324,7 +349,8 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
     glUniform1i(p.uniform("u_step"), divisor_);
     glUniform1i(p.uniform("u_side"), n_ / divisor_ + 1);
   }
-  glUniform1i(p.uniform("u_imageSide"), document.size() + 1);
+  glUniform1i(p.uniform("u_imageSide"), document.side());
+  glUniform2i(glGetUniformLocation(p.id(), "u_imageSize"), document.side(), document.rows());
   glUniform3f(p.uniform("u_eye"), view.eye.x, view.eye.y, view.eye.z);
   glUniform1i(p.uniform("u_showBrush"), view.showBrush);
   glUniform3f(p.uniform("u_brushCentre"), view.brushCentre.x, view.brushCentre.y,
@@ -336,7 +362,7 @@ const Program& ModelRenderer::prepareDraw(GpuDocument& document, const ModelView
 }
 
 void ModelRenderer::draw(GpuDocument& document, const ModelView& view) {
-  if (indexCount_ == 0 || n_ != document.size())
+  if (indexCount_ == 0 || grid_ != document.grid())
     throw GlError("the model renderer's level was not set for this document");
   prepareDraw(document, view, false);
   if (chunksStale_) {

@@ -2,12 +2,14 @@
 
 #include "shader_sources.h"
 
+#include "octaclay/core/error.h"
 #include "octaclay/gpu/gl_error.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace octaclay::gpu {
 namespace {
@@ -90,6 +92,12 @@ const Texture& SaliencyPass::blurred(float sigma, int side, int n) {
 }
 
 void SaliencyPass::run(GpuDocument& document, const core::SaliencyOptions& options) {
+  // Its blurs and seaming follow the ball's octahedral tiling (core/lod's saliency too).
+  if (document.topology() != core::Topology::Octahedral)
+    throw core::Error(core::ErrorKind::InvalidArgument,
+                      std::string("saliency is measured on octahedral (ball) images only; this is "
+                                  "a ") +
+                          std::string(core::topologyName(document.topology())));
   const int n = document.size(), side = n + 1;
   const core::TexelRect all{0, 0, side, side};
   glDisable(GL_BLEND);
@@ -138,7 +146,8 @@ void SaliencyPass::run(GpuDocument& document, const core::SaliencyOptions& optio
   sums_[static_cast<std::size_t>(1 - current)].bindAsTarget();
   seamProgram_.use();
   glUniform1i(seamProgram_.uniform("u_source"), 0);
-  glUniform1i(seamProgram_.uniform("u_size"), n);
+  glUniform2i(seamProgram_.uniform("u_cells"), n, n);
+  glUniform1i(seamProgram_.uniform("u_topology"), 0);
   bindTexture(0, sums_[static_cast<std::size_t>(current)]);
   rectPass_.draw(std::span(&all, 1), side, side);
   current = 1 - current;

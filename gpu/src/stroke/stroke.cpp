@@ -98,8 +98,7 @@ core::Sample nearestSample(const GpuDocument& document, core::Vec3f p) {
     const std::vector<int> tiles = bounds.tilesNearSphere(p, radius);
     syncTiles(document, tiles);
     for (int t : tiles) {
-      const core::TexelRect r =
-          bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
+      const core::TexelRect r = bounds.tileRect(t % bounds.tilesX(), t / bounds.tilesX());
       for (int j = r.y; j < r.y + r.height; ++j)
         for (int i = r.x; i < r.x + r.width; ++i) {
           const core::Vec3f d = image.at(i, j).xyz() - p;
@@ -284,7 +283,7 @@ struct StrokeSession::State {
   // mirror-equal dabs.
   void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure,
              std::optional<core::Vec3f> cursorDrag = std::nullopt) {
-    const int n = document.size();
+    const int n = document.grid().width, h = document.grid().height;
     // The mirror, each region synced before it is read: the rest may wait for its read-back.
     const core::GeometryImage& image = document.mirror().positions;
     const bool first = dabs == 0;
@@ -332,7 +331,7 @@ struct StrokeSession::State {
       images[0].centre = p;
       images[0].centreNormal = normal;
       images[0].centreTexel = {std::clamp(static_cast<int>(std::lround(xy[0])), 0, n),
-                               std::clamp(static_cast<int>(std::lround(xy[1])), 0, n)};
+                               std::clamp(static_cast<int>(std::lround(xy[1])), 0, h)};
       for (std::size_t k = 1; k < images.size(); ++k) {
         Dab& d = images[k];
         d.centre = mirrored(p, centre, axesOf[k]);
@@ -361,9 +360,8 @@ struct StrokeSession::State {
       }
       for (const core::TexelRect& r : reach)
         undo.cover(r);
-      for (const core::TexelRect& r :
-           seamRuns(reach, n + 1,
-                    document.document().positions.topology())) // the seaming pass's partners
+      for (const core::TexelRect& r : seamRuns(reach, document.side(), document.rows(),
+                                               document.topology())) // the seaming pass's partners
         undo.cover(r);
       DabResult done;
       try {
@@ -481,7 +479,7 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
   state_->share = dabShare(brush, state_->settings.spacing);
   core::BoundingBox box;
   const core::TileBounds& bounds = document.bounds();
-  for (int t = 0; t < bounds.tilesPerSide() * bounds.tilesPerSide(); ++t) {
+  for (int t = 0; t < bounds.tileCount(); ++t) {
     box.extend(bounds.box(t).min);
     box.extend(bounds.box(t).max);
   }
@@ -494,19 +492,20 @@ StrokeSession::StrokeSession(BrushEngine& engine, GpuDocument& document, const B
 StrokeSession::~StrokeSession() = default;
 
 int StrokeSession::moveTo(core::Sample s, float radius, float strength, float pressure) {
-  const int n = state_->document.size();
-  if (s.i < 0 || s.i > n || s.j < 0 || s.j > n)
+  const int n = state_->document.grid().width, h = state_->document.grid().height;
+  if (s.i < 0 || s.i > n || s.j < 0 || s.j > h)
     throw core::Error(core::ErrorKind::InvalidArgument,
                       "sample (" + std::to_string(s.i) + ", " + std::to_string(s.j) +
-                          ") is outside the image (0 to " + std::to_string(n) + " each way)");
+                          ") is outside the image (0 to " + std::to_string(n) + " in i, 0 to " +
+                          std::to_string(h) + " in j)");
   return state_->moveTo({static_cast<double>(s.i), static_cast<double>(s.j)}, radius, strength,
                         pressure);
 }
 
 int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float pressure) {
   requirePathPoint(uv);
-  const double n = state_->document.size();
-  return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * n}, radius,
+  const double n = state_->document.grid().width, h = state_->document.grid().height;
+  return state_->moveTo({static_cast<double>(uv.x) * n, static_cast<double>(uv.y) * h}, radius,
                         strength, pressure);
 }
 
@@ -536,9 +535,9 @@ int StrokeSession::expectDabs(const std::vector<std::array<float, 2>>& path,
   for (const core::Vec3f& p : dragPoints)
     st.requireDragReach(p);
   const double spacing = st.spacingFor(radius);
-  const double n = st.document.size();
-  const auto xy = [n](const std::array<float, 2>& uv) {
-    return std::array<double, 2>{uv[0] * n, uv[1] * n};
+  const double n = st.document.grid().width, h = st.document.grid().height;
+  const auto xy = [n, h](const std::array<float, 2>& uv) {
+    return std::array<double, 2>{uv[0] * n, uv[1] * h};
   };
   double length = 0;
   if (st.brush.stroke != StrokeKind::Anchored)
@@ -616,7 +615,8 @@ core::EditStep StrokeSession::finish(const std::string& label) {
   if (st.abandoned) { // the layers are as before the stroke: nothing to undo
     core::EditStep nothing;
     nothing.label = label;
-    nothing.imageSide = st.document.size() + 1;
+    nothing.imageSide = st.document.side();
+    nothing.imageRows = st.document.rows() == st.document.side() ? 0 : st.document.rows();
     return nothing;
   }
   if (st.finished) throw std::logic_error("StrokeSession::finish called twice");

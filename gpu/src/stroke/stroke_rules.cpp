@@ -84,24 +84,24 @@ void syncTiles(const GpuDocument& document, std::span<const int> tiles) {
   std::vector<core::TexelRect> rects;
   rects.reserve(tiles.size());
   for (int t : tiles) // a tile's cells reach the first sample past it
-    rects.push_back(bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide()));
+    rects.push_back(bounds.tileRect(t % bounds.tilesX(), t / bounds.tilesX()));
   for (core::TexelRect& r : rects)
     r.width += 1, r.height += 1;
   document.syncRegion(rects);
 }
 
 void syncAround(const GpuDocument& document, double x, double y) {
-  const int n = document.size();
+  const int n = document.grid().width, h = document.grid().height;
   const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
   const int margin = 3;
   std::vector<core::TexelRect> rects{{i - margin, j - margin, 2 * margin + 2, 2 * margin + 2}};
-  if (i <= margin || j <= margin || i >= n - margin || j >= n - margin) {
+  if (i <= margin || j <= margin || i >= n - margin || j >= h - margin) {
     // Neighbours across a seam (wrap) lie anywhere along the border: its strips, whole.
     const int w = margin + 1;
     rects.push_back({0, 0, n + 1, w});
-    rects.push_back({0, n + 1 - w, n + 1, w});
-    rects.push_back({0, 0, w, n + 1});
-    rects.push_back({n + 1 - w, 0, w, n + 1});
+    rects.push_back({0, h + 1 - w, n + 1, w});
+    rects.push_back({0, 0, w, h + 1});
+    rects.push_back({n + 1 - w, 0, w, h + 1});
   }
   document.syncRegion(rects);
 }
@@ -112,7 +112,9 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
   const core::TileBounds& bounds = document.bounds();
   const std::vector<int> near = bounds.tilesNearSphere(centre, radius);
   syncTiles(document, near);
-  const int n = document.size(), half = n / 2;
+  const int n = document.grid().width, h = document.grid().height, half = n / 2;
+  // The torus and plane split every cell along its anti-diagonal (core::cellTriangles).
+  const bool ball = document.topology() == core::Topology::Octahedral;
   const float r2 = radius * radius;
   core::Vec3f sum;
   int triangles = 0;
@@ -127,8 +129,8 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
   // triangles in cellTriangles' order, so the sum is the same to the bit. A tile well inside
   // the sphere (most of them) adds its triangles without the centroid test.
   for (int t : near) {
-    const core::TexelRect r = bounds.tileRect(t % bounds.tilesPerSide(), t / bounds.tilesPerSide());
-    const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, n);
+    const core::TexelRect r = bounds.tileRect(t % bounds.tilesX(), t / bounds.tilesX());
+    const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, h);
     const bool inside = boxWellInside(bounds.box(t), centre, radius);
     for (int j = r.y; j < jEnd; ++j) {
       const core::Vec4f* row = &image.at(0, j);
@@ -138,7 +140,7 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
         for (int i = r.x; i < iEnd; ++i) {
           const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
                             d = below[i].xyz();
-          if ((i < half) == lowJ) { // add()'s triangles, unconditionally
+          if (!ball || (i < half) == lowJ) { // add()'s triangles, unconditionally
             sum += core::cross(b - a, d - a);
             sum += core::cross(c - b, d - b);
           } else {
@@ -152,7 +154,7 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
       for (int i = r.x; i < iEnd; ++i) {
         const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
                           d = below[i].xyz();
-        if ((i < half) == lowJ) {
+        if (!ball || (i < half) == lowJ) {
           add(a, b, d);
           add(b, c, d);
         } else {

@@ -9,11 +9,11 @@
 namespace octaclay::gpu::detail {
 
 UndoCapture::UndoCapture(GpuDocument& document, std::vector<core::EditLayer> layers)
-    : document_(document), pool_(document), layers_(std::move(layers)), side_(document.size() + 1),
-      tiles_(core::EditStepRecorder::tilesPerSide(side_)) {}
+    : document_(document), pool_(document), layers_(std::move(layers)), side_(document.side()),
+      rows_(document.rows()), tiles_(core::EditStepRecorder::tilesPerSide(side_)) {}
 
 void UndoCapture::capture(core::EditLayer layer, int tx, int ty) {
-  const int slot = pool_.capture(layer, core::EditStepRecorder::tileRegion(side_, tx, ty));
+  const int slot = pool_.capture(layer, core::EditStepRecorder::tileRegion(side_, rows_, tx, ty));
   before_.push_back({layer, tx, ty, slot});
 }
 
@@ -31,7 +31,7 @@ void UndoCapture::cover(core::TexelRect rect) {
 
 void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
   if (std::find(layers_.begin(), layers_.end(), layer) != layers_.end()) {
-    cover(core::EditStepRecorder::tileRegion(side_, tx, ty));
+    cover(core::EditStepRecorder::tileRegion(side_, rows_, tx, ty));
     return;
   }
   if (extra_.insert({static_cast<int>(layer), tx, ty}).second) capture(layer, tx, ty);
@@ -43,7 +43,7 @@ core::Vec3f UndoCapture::positionBefore(core::Sample s) const {
   // Not captured: nothing the stroke changed, so the mirror holds it even where read-backs wait.
   if (at == seen_.end() || at->second < 0) return document_.mirror().positions.at(s).xyz();
   const Tile& t = before_[static_cast<std::size_t>(at->second)];
-  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
+  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, rows_, t.x, t.y);
   const std::size_t k = static_cast<std::size_t>((s.j - r.y) * r.width + (s.i - r.x)) *
                         static_cast<std::size_t>(GpuDocument::channels(t.layer));
   const std::vector<float>& texels = pool_.texels(t.slot);
@@ -61,13 +61,13 @@ core::EditStep UndoCapture::finish(const std::string& label) {
   std::array<std::vector<core::TexelRect>, 4> written;
   for (const Tile& t : before_)
     written[static_cast<std::size_t>(t.layer)].push_back(
-        core::EditStepRecorder::tileRegion(side_, t.x, t.y));
+        core::EditStepRecorder::tileRegion(side_, rows_, t.x, t.y));
   bool clean = true;
   for (std::size_t k = 0; k < written.size() && clean; ++k)
     if (!written[k].empty())
       clean = document_.holdsOnlyFinite(static_cast<core::EditLayer>(k),
                                         core::mergeRects(std::move(written[k])));
-  core::EditStepRecorder recorder(side_);
+  core::EditStepRecorder recorder(side_, rows_);
   for (const Tile& t : before_) {
     std::vector<float> after = texels(t.layer, t.x, t.y);
     if (!clean) checkFinite(t, after);
@@ -78,7 +78,7 @@ core::EditStep UndoCapture::finish(const std::string& label) {
 }
 
 core::EditStep UndoCapture::record(const std::string& label) const {
-  core::EditStepRecorder recorder(side_);
+  core::EditStepRecorder recorder(side_, rows_);
   for (const Tile& t : before_)
     recorder.addTile(t.layer, t.x, t.y, GpuDocument::channels(t.layer), pool_.texels(t.slot),
                      texels(t.layer, t.x, t.y));
@@ -86,7 +86,7 @@ core::EditStep UndoCapture::record(const std::string& label) const {
 }
 
 std::vector<float> UndoCapture::texels(core::EditLayer layer, int tx, int ty) const {
-  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, tx, ty);
+  const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, rows_, tx, ty);
   // Mid-stroke (recordSoFar) deferred positions may wait for their read-back.
   if (layer == core::EditLayer::Positions) document_.syncRegion(std::span(&r, 1));
   return document_.mirrorTexels(layer, {r.x, r.y, r.width, r.height});
@@ -100,7 +100,7 @@ void UndoCapture::checkFinite(const Tile& t, const std::vector<float>& after) {
     // Positions' xyz are bounded; their w (saliency) and paint channels only need be finite.
     const bool bounded = positions && k % channels < 3;
     if (std::isfinite(v) && (!bounded || std::abs(v) <= kMaxCoordinate)) continue;
-    const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, t.x, t.y);
+    const core::TexelRect r = core::EditStepRecorder::tileRegion(side_, rows_, t.x, t.y);
     const int texel = static_cast<int>(k / channels);
     const std::string sample = "(" + std::to_string(r.x + texel % r.width) + ", " +
                                std::to_string(r.y + texel / r.width) + ")";

@@ -63,7 +63,7 @@ private:
   GpuDocument& document_;
   mutable UndoTilePool pool_; ///< collecting a download changes nothing the capture answers
   std::vector<core::EditLayer> layers_;
-  int side_, tiles_;
+  int side_, rows_, tiles_; ///< the image's W+1 and H+1; tiles along a row
   std::map<int, int> seen_; ///< tile index → its positions tile in before_, or -1
   std::vector<Tile> before_;
   std::set<std::array<int, 3>> extra_; ///< (layer, tx, ty) captured beyond layers_

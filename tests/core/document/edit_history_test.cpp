@@ -139,6 +139,7 @@ private slots:
   void documentLayers();
   void badInputThrows();
   void replacedDocumentsAreStepsOfTheOneHistory();
+  void imagesWiderThanHighAreTiledAndUndone();
 };
 
 void EditHistoryTest::tileGeometry() {
@@ -750,6 +751,39 @@ void EditHistoryTest::replacedDocumentsAreStepsOfTheOneHistory() {
   while (history.canUndo())
     history.undo(applierFor(shown), replacer);
   QCOMPARE(history.position(), EditHistory::kUnreachable);
+}
+
+// A torus or plane image W × H (here 256 × 64 cells: 257 × 65 texels): tiles cover its rows, not
+// its side, and a stroke over its last row undoes and redoes bit for bit.
+void EditHistoryTest::imagesWiderThanHighAreTiledAndUndone() {
+  QCOMPARE(EditStepRecorder::tileRegion(257, 65, 4, 1), (TexelRect{256, 64, 1, 1}));
+  QCOMPARE(EditStepRecorder::tileRegion(257, 65, 2, 0), (TexelRect{128, 0, 64, 64}));
+  EXPECT_INVALID(EditStepRecorder::tileRegion(257, 65, 0, 2)); // past the last row of tiles
+  GeometryImage before(Topology::Torus, 256, 64);
+  std::mt19937 rng(33);
+  std::normal_distribution<float> d(0.0f, 1.0f);
+  for (Vec4f& t : before.texels())
+    t = {d(rng), d(rng), d(rng), 0.0f};
+  GeometryImage after = before;
+  for (int i = 100; i <= 256; ++i)
+    after.at(i, 64).z += 1.0f; // the last row, to the last column
+  EditStepRecorder recorder(257, 65);
+  for (int tx = 1; tx < 5; ++tx) {
+    const TexelRect r = EditStepRecorder::tileRegion(257, 65, tx, 1);
+    recorder.addTile(EditLayer::Positions, tx, 1, 4, readTile(before, r), readTile(after, r));
+  }
+  EditStep step = recorder.finish("wide");
+  QCOMPARE(step.imageSide, 257);
+  QCOMPARE(step.imageRows, 65);
+  QCOMPARE(step.changedTexels, std::size_t(157));
+  EditHistory history(std::size_t(1) << 24);
+  history.record(std::move(step));
+  GeometryImage image = after;
+  const TileApplier apply = applierFor(image);
+  QVERIFY(history.undo(apply));
+  QVERIFY(sameBits(image, before));
+  QVERIFY(history.redo(apply));
+  QVERIFY(sameBits(image, after));
 }
 
 QTEST_APPLESS_MAIN(EditHistoryTest)

@@ -2,8 +2,12 @@
 // the guess to that side, whichever side it is; smooth or symmetric shapes and a feature on top
 // keep the default front, +z.
 
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/sheet.h"
+#include "octaclay/core/geometry/torus.h"
 #include "octaclay/core/lod/facing.h"
+#include "octaclay/core/lod/saliency.h"
 
 #include <QtTest>
 
@@ -60,6 +64,7 @@ private slots:
   void faceOnAnySideIsFound();
   void symmetricShapesKeepTheDefaultFront();
   void featureOnTopKeepsTheDefaultFront();
+  void torusAndPlaneKeepTheDefaultFront();
 };
 
 void FacingTest::faceOnAnySideIsFound_data() {
@@ -96,6 +101,25 @@ void FacingTest::featureOnTopKeepsTheDefaultFront() {
     t = {t.x, t.z, -t.y, 0}; // the face turned from +z to +y
   const Vec3f guess = guessFacing(image);
   QVERIFY2(near(guess, {0, 0, 1}), qPrintable(text(guess)));
+}
+
+// The saliency is the ball's: a torus (W ≠ H) or plane opened in the modeller faces +z, and the
+// saliency itself refuses them by name instead of reading past their rows.
+void FacingTest::torusAndPlaneKeepTheDefaultFront() {
+  for (const GeometryImage& image : {makeTorus(Torus{}, 64, 32), makeSheet(Sheet::Disc, 64)}) {
+    const Vec3f f = guessFacing(image);
+    QCOMPARE(f.x, 0.0f);
+    QCOMPARE(f.y, 0.0f);
+    QCOMPARE(f.z, 1.0f);
+    GeometryImage copy = image;
+    try {
+      computeSaliency(copy);
+      QFAIL("computeSaliency took a torus or plane");
+    } catch (const Error& e) {
+      QCOMPARE(e.kind(), ErrorKind::InvalidArgument);
+      QVERIFY2(std::string(e.what()).find("octahedral") != std::string::npos, e.what());
+    }
+  }
 }
 
 QTEST_APPLESS_MAIN(FacingTest)

@@ -219,5 +219,9 @@ private:
 /// (column and row N are column and row 0); a plane has none.
 std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side,
                                       core::Topology topology = core::Topology::Octahedral);
+/// The same for an image `side` samples wide and `rows` high (a W × H torus: column W is
+/// column 0, row H is row 0).
+std::vector<core::TexelRect> seamRuns(const std::vector<core::TexelRect>& tiles, int side, int rows,
+                                      core::Topology topology);
 
 } // namespace octaclay::gpu

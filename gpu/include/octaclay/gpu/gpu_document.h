@@ -7,6 +7,7 @@
 #include "octaclay/gpu/gl_objects.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -61,7 +62,23 @@ public:
   GpuDocument(GpuDocument&&) noexcept;
   GpuDocument& operator=(GpuDocument&&) noexcept;
 
+  /// N of the ball; W of a W × H torus or plane (as core::GeometryImage::size()).
   int size() const { return document_.size(); }
+  /// The image's shape: topology, W and H in cells.
+  const core::SampleGrid& grid() const { return document_.positions.grid(); }
+  core::Topology topology() const { return document_.positions.topology(); }
+  /// The textures' width W+1 (the row stride of every layer) and height H+1, in texels.
+  int side() const { return document_.positions.side(); }
+  int rows() const { return document_.positions.rows(); }
+  /// The image's samples across, for lengths measured in samples (a uv brush's radius, a
+  /// material's uv tiles): N of the ball, √(W·H) of a W × H image, so a radius covers about the
+  /// same share of the samples on every topology.
+  float samplesAcross() const {
+    return static_cast<float>(
+        std::sqrt(double(document_.positions.width()) * double(document_.positions.height())));
+  }
+  /// Every texel: {0, 0, side(), rows()}.
+  core::TexelRect whole() const { return {0, 0, side(), rows()}; }
   /// The document as the textures hold it: the mirror, synced first where read-backs wait.
   const core::Document& document() const;
   /// The mirror as it is, read-backs still waiting or not: for the dab path, which syncs what it
@@ -144,7 +161,7 @@ public:
   /// Marks every texel of every layer changed (a new upload).
   void markAllChanged();
 
-  /// Writes saliency ((N+1)² values, row-major) into the positions' alpha of the mirror and the
+  /// Writes saliency ((W+1)(H+1) values, row-major) into the positions' alpha of the mirror and the
   /// texture; xyz stay as they are. Throws core::Error(InvalidArgument) for a wrong count.
   void writeSaliency(std::span<const float> saliency);
 

@@ -68,6 +68,12 @@ public:
   /// Shows the model of an N-image every divisor samples (a power of two, N/divisor ≥ 2),
   /// rebuilding the index buffer when either changed. Throws core::Error(InvalidArgument).
   void setLevel(int n, int divisor);
+  /// The same for a W × H image of any topology (W/divisor and H/divisor ≥ 1, at least 2 cells
+  /// along the longer side): a torus's or plane's cells split along their anti-diagonals.
+  void setLevel(const core::SampleGrid& grid, int divisor);
+  /// The level a divisor wanted for grid may show: halved until each side keeps a cell and
+  /// the longer side two.
+  static int fittingDivisor(const core::SampleGrid& grid, int divisor);
   int divisor() const { return divisor_; }
   /// Triangles drawn per frame: 2 (N/divisor)².
   long long displayedTriangles() const;
@@ -141,6 +147,7 @@ private:
   VertexArray vertexArray_;
   Buffer indexBuffer_;
   int n_ = 0, divisor_ = 0;
+  core::SampleGrid grid_; // the level's image
   long long indexCount_ = 0, drawnTriangles_ = 0;
   std::unique_ptr<detail::ModelChunks> chunks_;
   bool chunksStale_ = true;

@@ -61,7 +61,8 @@ struct TileChange {
 /// One undoable step: a label for the UI and the tiles it changed.
 struct EditStep {
   std::string label;
-  int imageSide = 0;             ///< N+1 of the image the tiles belong to
+  int imageSide = 0;             ///< N+1 (W+1) of the image the tiles belong to
+  int imageRows = 0;             ///< H+1 of a W × H image (torus, plane); 0: imageSide (square)
   std::vector<TileChange> tiles; ///< only tiles with at least one changed texel
   std::size_t changedTexels = 0; ///< sum over tiles
   std::size_t bytes = 0;         ///< memory held, set by EditStepRecorder::finish()
@@ -85,15 +86,19 @@ class EditStepRecorder {
 public:
   static constexpr int kTileSize = 64;
 
-  /// Throws Error(InvalidArgument) unless imageSide (N+1, in texels) is at least 2.
-  explicit EditStepRecorder(int imageSide);
+  /// Throws Error(InvalidArgument) unless imageSide (N+1, in texels) is at least 2. imageRows:
+  /// H+1 of a W × H image whose rows are not its side (0: square, the ball's).
+  explicit EditStepRecorder(int imageSide, int imageRows = 0);
 
   /// Tiles per row (and per column) of an image imageSide texels wide: ceil(side / kTileSize).
   static int tilesPerSide(int imageSide);
   /// The texels of tile (tileX, tileY). Throws Error(InvalidArgument) if it is outside.
   static TexelRect tileRegion(int imageSide, int tileX, int tileY);
+  /// The same for an image imageSide texels wide and imageRows high.
+  static TexelRect tileRegion(int imageSide, int imageRows, int tileX, int tileY);
 
   int imageSide() const { return side_; }
+  int imageRows() const { return rows_; }
 
   /// Records tile (tileX, tileY) of layer: before and after are its texels, row-major,
   /// tileRegion().width × height × channels floats. A tile with no changed bit costs nothing.
@@ -105,7 +110,7 @@ public:
   EditStep finish(std::string label);
 
 private:
-  int side_ = 0;
+  int side_ = 0, rows_ = 0;
   EditStep stroke_;
   std::vector<std::uint8_t> seen_; // per layer and tile: already added
 };

@@ -10,7 +10,7 @@ namespace octaclay::core {
 /// front: returns the horizontal unit direction (y = 0) from the area-weighted centre towards
 /// the saliency-weighted one, snapped to the nearest axis (a diagonal within 15° of one), or +z
 /// (the default front) when that pull is under 8 % of the surface's horizontal spread (a sphere, a
-/// symmetric part).
+/// symmetric part). A torus or plane image: +z.
 Vec3f guessFacing(const GeometryImage& image);
 
 } // namespace octaclay::core
