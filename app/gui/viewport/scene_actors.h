@@ -29,8 +29,9 @@ public:
   static constexpr int kMinSide = 16;
   /// Screen pixels a segment of an object's outline may span before a finer level is taken: a
   /// ball of side N has about 2N edges around its equator, so one d pixels across is drawn with
-  /// side ≥ π·d / (2 · 5 px) (at 100 px: 32).
-  static constexpr double kOutlineSegmentPixels = 5;
+  /// side ≥ π·d / (2 · 10 px) (at 100 px: 16). 10 px, not 5: sixteen objects of N = 512 draw at
+  /// 33 frames/s while one is stroked, not 24 (bench_viewport --scenes, llvmpipe, quiet).
+  static constexpr double kOutlineSegmentPixels = 10;
 
   SceneActors() = default;
   SceneActors(const SceneActors&) = delete;
