@@ -12,6 +12,7 @@
 #include "radius_field.h"
 #include "test_window.h"
 #include "viewport_widget.h"
+#include "x_input.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
 
@@ -33,11 +34,6 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
-#include <X11/XKBlib.h>
-#include <X11/Xlib.h>
-#include <X11/extensions/XTest.h>
-#include <X11/keysym.h>
-#undef None // X11's macro, which would hide CanvasBrushAdjust::Mode::None
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
@@ -47,71 +43,8 @@
 
 using namespace octaclay;
 
-namespace {
-
-// An X connection of its own: XTEST input goes through the server to Qt's connection.
-class FakeInput {
-public:
-  FakeInput() : display_(XOpenDisplay(nullptr)) {}
-  ~FakeInput() {
-    if (display_) XCloseDisplay(display_);
-  }
-  FakeInput(const FakeInput&) = delete;
-  FakeInput& operator=(const FakeInput&) = delete;
-
-  bool ready() const {
-    int event = 0, error = 0, major = 0, minor = 0;
-    return display_ && XTestQueryExtension(display_, &event, &error, &major, &minor);
-  }
-  void moveTo(QPoint global) {
-    XTestFakeMotionEvent(display_, -1, global.x(), global.y(), CurrentTime);
-    settle();
-  }
-  void button(unsigned int button, bool down) {
-    XTestFakeButtonEvent(display_, button, down, CurrentTime);
-    settle();
-  }
-  /// The key the symbol is on, at whatever level: XK_KP_1 is the keypad's 1/End key, which
-  /// gives KP_End with NumLock off.
-  void key(KeySym symbol, bool down) {
-    XTestFakeKeyEvent(display_, XKeysymToKeycode(display_, symbol), down, CurrentTime);
-    settle();
-  }
-  bool numLock() {
-    XkbStateRec state;
-    XkbGetState(display_, XkbUseCoreKbd, &state);
-    return state.locked_mods & XkbKeysymToModifiers(display_, XK_Num_Lock);
-  }
-  /// Presses NumLock until it is on (or off), as a user would.
-  bool setNumLock(bool on) {
-    for (int tries = 0; tries < 2 && numLock() != on; ++tries)
-      press({XK_Num_Lock});
-    return numLock() == on;
-  }
-  void press(std::initializer_list<KeySym> chord) {
-    for (KeySym k : chord)
-      key(k, true);
-    for (auto k = std::rbegin(chord); k != std::rend(chord); ++k)
-      key(*k, false);
-  }
-
-private:
-  void settle() {
-    XFlush(display_);
-    QTest::qWait(30);
-  }
-  Display* display_;
-};
-
-/// Makes w the active window as a click on its title would: with no window manager under Xvfb
-/// nothing else gives a new window the X input focus.
-bool activate(QWidget& w) {
-  w.activateWindow();
-  w.raise();
-  return QTest::qWaitForWindowActive(&w);
-}
-
-} // namespace
+using app::testing::activate;
+using app::testing::FakeInput;
 
 class RealInputRenderTest : public QObject {
   Q_OBJECT
