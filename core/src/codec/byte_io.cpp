@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <fstream>
+#include <iterator>
 
 namespace octaclay::core::detail {
 
@@ -102,6 +104,24 @@ std::uint32_t crc32Of(std::span<const std::uint8_t> bytes) {
     done += chunk;
   }
   return static_cast<std::uint32_t>(crc);
+}
+
+std::vector<std::uint8_t> readCompressedFileBytes(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder");
+  // A pipe or device would block or never end: only regular files are read.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw Error(ErrorKind::Io,
+                "cannot open " + path.string() +
+                    (std::filesystem::exists(path) ? ": permission denied" : ": no such file"));
+  std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                  std::istreambuf_iterator<char>()};
+  if (in.bad()) throw Error(ErrorKind::Io, "cannot read " + path.string());
+  return bytes;
 }
 
 } // namespace octaclay::core::detail

@@ -5,6 +5,7 @@
 #include "octaclay/core/codec/codec.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <vector>
@@ -75,5 +76,9 @@ inline constexpr std::size_t kStreamHeaderSize = 1 + 2 + 4 + 1;
 
 /// zlib's CRC-32 of bytes (any length): what ends an .ocz container.
 std::uint32_t crc32Of(std::span<const std::uint8_t> bytes);
+
+/// The whole of an .ocz file: a folder, a pipe or a device is refused (it would block or never
+/// end), as are a missing or unreadable file, each with its path named (Error(Io)).
+std::vector<std::uint8_t> readCompressedFileBytes(const std::filesystem::path& path);
 
 } // namespace octaclay::core::detail

@@ -17,7 +17,6 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <new>
 
 namespace octaclay::core {
@@ -222,20 +221,7 @@ void writeCompressedDocument(const Document& doc, const CompressOptions& options
 }
 
 Document readCompressedDocument(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder");
-  // A pipe or device would block or never end: only regular files are read.
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw Error(ErrorKind::Io,
-                "cannot open " + path.string() +
-                    (std::filesystem::exists(path) ? ": permission denied" : ": no such file"));
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
-                                        std::istreambuf_iterator<char>()};
-  if (in.bad()) throw Error(ErrorKind::Io, "cannot read " + path.string());
+  const std::vector<std::uint8_t> bytes = detail::readCompressedFileBytes(path);
   try {
     return decompressDocument(bytes);
   } catch (const Error& e) {

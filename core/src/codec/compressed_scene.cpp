@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <fstream>
 #include <set>
 
 namespace octaclay::core {
@@ -301,19 +300,7 @@ void writeCompressedModel(const Scene& scene, const CompressOptions& options,
 }
 
 Scene readCompressedScene(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": it is a folder");
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw Error(ErrorKind::Io, "cannot open " + path.string() + ": not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw Error(ErrorKind::Io,
-                "cannot open " + path.string() +
-                    (std::filesystem::exists(path) ? ": permission denied" : ": no such file"));
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in),
-                                        std::istreambuf_iterator<char>()};
-  if (in.bad()) throw Error(ErrorKind::Io, "cannot read " + path.string());
+  const std::vector<std::uint8_t> bytes = detail::readCompressedFileBytes(path);
   const std::string stem = path.stem().string();
   try {
     return decompressScene(bytes, objectNameProblem(stem) ? "Model" : stem);
