@@ -5,6 +5,7 @@
 #include "object_merge.h"
 #include "objects_panel.h"
 #include "user_messages.h"
+#include "viewport_key_actions.h"
 #include "viewport_widget.h"
 
 #include <QAction>
@@ -26,38 +27,15 @@ namespace {
 // KeypadModifier as Period (or Comma, by the layout) with NumLock on and as Delete with NumLock
 // off, which the Delete Object shortcut would otherwise take; Alt+H (Show All) is also the Help
 // menu's mnemonic, so as a window shortcut it would be ambiguous and do nothing.
-class ObjectKeys : public QObject {
-public:
-  ObjectKeys(QWidget* viewport, QAction* frameSelected, QAction* showAll)
-      : QObject(viewport), frameSelected_(frameSelected), showAll_(showAll) {
-    viewport->installEventFilter(this);
-  }
-
-protected:
-  bool eventFilter(QObject*, QEvent* event) override {
-    if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
-      return false;
-    auto* key = static_cast<QKeyEvent*>(event);
-    QAction* action = actionFor(*key);
-    if (!action) return false;
-    event->accept();
-    if (event->type() == QEvent::KeyPress && action->isEnabled()) action->trigger();
-    return true;
-  }
-
-private:
-  QAction* actionFor(const QKeyEvent& key) const {
-    const Qt::KeyboardModifiers mods = key.modifiers();
-    if (mods == Qt::KeypadModifier &&
-        (key.key() == Qt::Key_Period || key.key() == Qt::Key_Comma || key.key() == Qt::Key_Delete))
-      return frameSelected_;
-    if (mods == Qt::AltModifier && key.key() == Qt::Key_H) return showAll_;
-    return nullptr;
-  }
-
-  QAction* frameSelected_;
-  QAction* showAll_;
-};
+// The action the key stands for on the viewport, or null.
+QAction* objectKeyAction(const QKeyEvent& key, QAction* frameSelected, QAction* showAll) {
+  const Qt::KeyboardModifiers mods = key.modifiers();
+  if (mods == Qt::KeypadModifier &&
+      (key.key() == Qt::Key_Period || key.key() == Qt::Key_Comma || key.key() == Qt::Key_Delete))
+    return frameSelected;
+  if (mods == Qt::AltModifier && key.key() == Qt::Key_H) return showAll;
+  return nullptr;
+}
 
 QAction* addAction(QMenu* menu, const QString& text, const char* name, const QString& tip,
                    const QKeySequence& key = {}) {
@@ -171,7 +149,7 @@ void addObjectsMenu(MainWindow& window) {
   QAction* showAll =
       addAction(menu, MainWindow::tr("&Show All"), "actionShowAllObjects",
                 MainWindow::tr("Shows every hidden object"), QKeySequence(Qt::ALT | Qt::Key_H));
-  // Named in the menu; the key itself is taken on the viewport (ObjectKeys).
+  // Named in the menu; the key itself is taken on the viewport (objectKeyAction).
   showAll->setShortcutContext(Qt::WidgetShortcut);
   QObject::connect(showAll, &QAction::triggered, &window, [&window] {
     showObjects(window, true, true);
@@ -190,7 +168,9 @@ void addObjectsMenu(MainWindow& window) {
     const qsizetype at = items.indexOf(frameModel);
     view->insertAction(at >= 0 && at + 1 < items.size() ? items[at + 1] : nullptr, frame);
   }
-  new ObjectKeys(window.viewport(), frame, showAll);
+  new ViewportKeyActions(window.viewport(), [frame, showAll](const QKeyEvent& key) {
+    return objectKeyAction(key, frame, showAll);
+  });
 
   menu->addSeparator();
   auto* merger =

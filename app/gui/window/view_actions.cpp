@@ -1,6 +1,7 @@
 #include "view_actions.h"
 
 #include "looks_menu.h"
+#include "viewport_key_actions.h"
 #include "viewport_widget.h"
 
 #include <QActionGroup>
@@ -22,53 +23,30 @@ namespace {
 // off the keys arrive as End, PgDn, Home and Clear, still with KeypadModifier: that modifier
 // tells keypad 7 (Top) from Home (Frame Model), which the shortcut map would otherwise match
 // without it. Each key triggers its menu action, so the Orthographic check mark follows.
-class KeypadViews : public QObject {
-public:
-  KeypadViews(QWidget* viewport, std::array<QAction*, 7> actions)
-      : QObject(viewport), actions_(actions) {
-    viewport->installEventFilter(this);
+// Actions are Front, Back, Right, Left, Top, Bottom,
+// Orthographic.
+QAction* keypadViewAction(const QKeyEvent& key, const std::array<QAction*, 7>& actions) {
+  const Qt::KeyboardModifiers mods = key.modifiers();
+  if (!(mods & Qt::KeypadModifier) || (mods & ~(Qt::KeypadModifier | Qt::ControlModifier)))
+    return nullptr;
+  const int ctrl = (mods & Qt::ControlModifier) ? 1 : 0;
+  switch (key.key()) {
+  case Qt::Key_1:
+  case Qt::Key_End:
+    return actions[0 + ctrl];
+  case Qt::Key_3:
+  case Qt::Key_PageDown:
+    return actions[2 + ctrl];
+  case Qt::Key_7:
+  case Qt::Key_Home:
+    return actions[4 + ctrl];
+  case Qt::Key_5:
+  case Qt::Key_Clear:
+    return ctrl ? nullptr : actions[6];
+  default:
+    return nullptr;
   }
-
-protected:
-  bool eventFilter(QObject*, QEvent* event) override {
-    if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
-      return false;
-    auto* key = static_cast<QKeyEvent*>(event);
-    QAction* action = actionFor(*key);
-    if (!action) return false;
-    // Accepting the override keeps the window's shortcuts (Home) from taking the key.
-    event->accept();
-    if (event->type() == QEvent::KeyPress && action->isEnabled()) action->trigger();
-    return true;
-  }
-
-private:
-  /// Front, Back, Right, Left, Top, Bottom, Orthographic.
-  QAction* actionFor(const QKeyEvent& key) const {
-    const Qt::KeyboardModifiers mods = key.modifiers();
-    if (!(mods & Qt::KeypadModifier) || (mods & ~(Qt::KeypadModifier | Qt::ControlModifier)))
-      return nullptr;
-    const int ctrl = (mods & Qt::ControlModifier) ? 1 : 0;
-    switch (key.key()) {
-    case Qt::Key_1:
-    case Qt::Key_End:
-      return actions_[0 + ctrl];
-    case Qt::Key_3:
-    case Qt::Key_PageDown:
-      return actions_[2 + ctrl];
-    case Qt::Key_7:
-    case Qt::Key_Home:
-      return actions_[4 + ctrl];
-    case Qt::Key_5:
-    case Qt::Key_Clear:
-      return ctrl ? nullptr : actions_[6];
-    default:
-      return nullptr;
-    }
-  }
-
-  std::array<QAction*, 7> actions_;
-};
+}
 
 } // namespace
 
@@ -108,7 +86,8 @@ void addViewActions(QMenu* view, ViewportWidget* viewport) {
   ortho->setToolTip(QMenu::tr("Parallel projection (no perspective), for checking proportions"));
   QObject::connect(ortho, &QAction::toggled, viewport, &ViewportWidget::setOrthographic);
   keypad[6] = ortho;
-  new KeypadViews(viewport, keypad);
+  new ViewportKeyActions(viewport,
+                         [keypad](const QKeyEvent& key) { return keypadViewAction(key, keypad); });
 
   QMenu* orbit = view->addMenu(QMenu::tr("Or&bit"));
   auto* group = new QActionGroup(orbit);
