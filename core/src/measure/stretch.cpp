@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <span>
 
 namespace octaclay::core {
 namespace {
@@ -57,13 +59,6 @@ inline float triangleArea(Vec3d du, Vec3d dv) {
   const double area = 0.5 * std::sqrt(dotD(n, n));
   if (!std::isfinite(area) || !(area < 3e38)) return 0;
   return float(area);
-}
-
-// A grid edge's length, -1 when it is not finite or overflows a float.
-float edgeLength(const Vec4f& p, const Vec4f& q) {
-  const Vec3d d = difference(q, p);
-  const double l = std::sqrt(dotD(d, d));
-  return std::isfinite(l) && l < 3e38 ? float(l) : -1.0f;
 }
 
 // What measure() gathers per texel: a third of the incident triangles' area and their largest
@@ -114,9 +109,67 @@ std::array<float, 2> cellAreas(const Vec4f* here, const Vec4f* next, int n, int 
           triangleArea(difference(c, d), difference(d, a))};
 }
 
+// The row loops of summarizeStretch, in straight lines a compiler turns into vector code (no
+// call, no branch per element; the file is built without errno from sqrt, see core's
+// CMakeLists). Same figures to the bit as cellAreas() and a grid edge's length (-1 when not
+// finite or over a float): a square root of a sum of squares is never negative, so "finite and
+// below 3e38" is "below 3e38".
+
+// A triangle's doubled-area's square, |du × dv|², and whether a + c (|du|² + |dv|²) leaves
+// triangleArea's quick path.
+inline double crossSquared(double ux, double uy, double uz, double vx, double vy, double vz,
+                           int& slow) {
+  const double a = ux * ux + uy * uy + uz * uz, c = vx * vx + vy * vy + vz * vz;
+  slow += a + c < 1e76 ? 0 : 1;
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  return nx * nx + ny * ny + nz * nz;
+}
+
+inline float areaFromCrossSquared(double q) {
+  const double area = 0.5 * std::sqrt(q);
+  return float(area < 3e38 ? area : 0.0); // chosen before the conversion, which may not trap
+}
+
+// Cells [iBegin, iEnd) between rows here and next, all of one split, into cells[i]; false when
+// a triangle needs triangleArea's slow path (the caller then measures the row with cellAreas).
+template <bool AntiDiagonal>
+bool cellAreaRun(const Vec4f* here, const Vec4f* next, int iBegin, int iEnd,
+                 std::array<float, 2>* cells) {
+  int slow = 0;
+  for (int i = iBegin; i < iEnd; ++i) {
+    const Vec4f &a = here[i], &b = here[i + 1], &c = next[i + 1], &d = next[i];
+    // Anti-diagonal: {a, b, d} (b - a, d - a), {b, c, d} (c - d, c - b); main: {a, b, c}
+    // (b - a, c - b), {a, c, d} (c - d, d - a).
+    const double abx = double(b.x) - a.x, aby = double(b.y) - a.y, abz = double(b.z) - a.z;
+    const double dcx = double(c.x) - d.x, dcy = double(c.y) - d.y, dcz = double(c.z) - d.z;
+    const double adx = double(d.x) - a.x, ady = double(d.y) - a.y, adz = double(d.z) - a.z;
+    const double bcx = double(c.x) - b.x, bcy = double(c.y) - b.y, bcz = double(c.z) - b.z;
+    double q0, q1;
+    if constexpr (AntiDiagonal) {
+      q0 = crossSquared(abx, aby, abz, adx, ady, adz, slow);
+      q1 = crossSquared(dcx, dcy, dcz, bcx, bcy, bcz, slow);
+    } else {
+      q0 = crossSquared(abx, aby, abz, bcx, bcy, bcz, slow);
+      q1 = crossSquared(dcx, dcy, dcz, adx, ady, adz, slow);
+    }
+    cells[i] = {areaFromCrossSquared(q0), areaFromCrossSquared(q1)};
+  }
+  return slow == 0;
+}
+
+// The lengths of the edges p[i] → q[i], i in [0, count), into out.
+void edgeLengthRun(const Vec4f* p, const Vec4f* q, int count, float* out) {
+  for (int i = 0; i < count; ++i) {
+    const double dx = double(q[i].x) - p[i].x, dy = double(q[i].y) - p[i].y,
+                 dz = double(q[i].z) - p[i].z;
+    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+    out[i] = float(l < 3e38 ? l : -1.0);
+  }
+}
+
 // Identified border samples are one vertex: each copy holds part of its ring. Gives every copy
 // the sum of their areas (and the largest of their sigmas, when sigma is given).
-void uniteIdentified(int n, std::vector<float>& area, std::vector<float>* sigma) {
+void uniteIdentified(int n, std::span<float> area, std::vector<float>* sigma) {
   const auto unite = [&](Sample s) {
     if (!(canonical(n, s) == s)) return;
     std::array<Sample, 4> copies;
@@ -262,8 +315,12 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   // areas of the cells of row j (kept for row j+1) and the vertex areas of row j from the cells
   // above and below it: measureVertices' figures without its per-cell and stretch arrays.
   const std::size_t perRow = 2 * static_cast<std::size_t>(n) + 1;
-  std::vector<float> edges(perRow * static_cast<std::size_t>(n + 1));
-  std::vector<float> area(image.texelCount());
+  // Left uninitialized: every value is written below, on the core that first touches its pages
+  // (zero-filling them first was 0.8 GB of single-threaded page faults and memset at N = 8192).
+  const std::size_t edgeCount = perRow * static_cast<std::size_t>(n + 1);
+  auto edges = std::make_unique_for_overwrite<float[]>(edgeCount);
+  const auto areaValues = std::make_unique_for_overwrite<float[]>(image.texelCount());
+  const std::span<float> area(areaValues.get(), image.texelCount());
   std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
   detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
     std::vector<std::array<float, 2>> above(static_cast<std::size_t>(n)),
@@ -272,11 +329,20 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
       double sum = 0;
       const Vec4f* here = &image.at(0, j);
       const Vec4f* next = &image.at(0, j + 1);
-      for (int i = 0; i < n; ++i) {
-        const auto f = cellAreas(here, next, n, i, j);
-        cells[static_cast<std::size_t>(i)] = f;
-        sum += double(f[0]) + double(f[1]);
-      }
+      // Two runs, each of one split (cellSplit: 2i >= n from half on).
+      const int half = (n + 1) / 2;
+      const bool lower = 2 * j >= n;
+      std::array<float, 2>* out = cells.data();
+      const bool quick = lower ? cellAreaRun<false>(here, next, 0, half, out) &&
+                                     cellAreaRun<true>(here, next, half, n, out)
+                               : cellAreaRun<true>(here, next, 0, half, out) &&
+                                     cellAreaRun<false>(here, next, half, n, out);
+      if (!quick)
+        for (int i = 0; i < n; ++i)
+          cells[static_cast<std::size_t>(i)] = cellAreas(here, next, n, i, j);
+      for (int i = 0; i < n; ++i)
+        sum += double(cells[static_cast<std::size_t>(i)][0]) +
+               double(cells[static_cast<std::size_t>(i)][1]);
       return sum;
     };
     if (rowBegin > 0) cellRow(rowBegin - 1, above);
@@ -311,14 +377,11 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
         }
         area[texelIndex(n, i, j)] = a / 3.0f;
       }
-      float* row = edges.data() + perRow * static_cast<std::size_t>(j);
+      float* row = edges.get() + perRow * static_cast<std::size_t>(j);
       const Vec4f* here = &image.at(0, j);
-      for (int i = 0; i < n; ++i)
-        row[i] = edgeLength(here[i], here[i + 1]);
+      edgeLengthRun(here, here + 1, n, row);
       if (j < n) {
-        const Vec4f* next = &image.at(0, j + 1);
-        for (int i = 0; i <= n; ++i)
-          row[n + i] = edgeLength(here[i], next[i]);
+        edgeLengthRun(here, &image.at(0, j + 1), n + 1, row + n);
       } else {
         std::fill(row + n, row + perRow, -1.0f);
       }
@@ -327,9 +390,10 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   });
   uniteIdentified(n, area, nullptr);
 
-  const detail::FloatRanks edgeRanks = detail::selectFloatRanks(edges, [](std::size_t count) {
-    return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
-  });
+  const detail::FloatRanks edgeRanks =
+      detail::selectFloatRanks({edges.get(), edgeCount}, [](std::size_t count) {
+        return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
+      });
   if (edgeRanks.count > 0) {
     summary.longestEdge = edgeRanks.largest;
     summary.medianEdge = edgeRanks.at[0];
@@ -338,7 +402,7 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
       summary.p99OverMedian = edgeRanks.at[1] / summary.medianEdge;
     }
   }
-  edges = {};
+  edges.reset();
 
   double total = 0;
   for (double a : rowArea)
