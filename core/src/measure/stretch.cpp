@@ -115,12 +115,8 @@ std::array<float, 2> cellAreas(const Vec4f* here, const Vec4f* next, int n, int 
 // finite or over a float): a square root of a sum of squares is never negative, so "finite and
 // below 3e38" is "below 3e38".
 
-// A triangle's doubled-area's square, |du × dv|², and whether a + c (|du|² + |dv|²) leaves
-// triangleArea's quick path.
-inline double crossSquared(double ux, double uy, double uz, double vx, double vy, double vz,
-                           int& slow) {
-  const double a = ux * ux + uy * uy + uz * uz, c = vx * vx + vy * vy + vz * vz;
-  slow += a + c < 1e76 ? 0 : 1;
+// A triangle's doubled area, squared: |du × dv|².
+inline double crossSquared(double ux, double uy, double uz, double vx, double vy, double vz) {
   const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
   return nx * nx + ny * ny + nz * nz;
 }
@@ -130,31 +126,55 @@ inline float areaFromCrossSquared(double q) {
   return float(area < 3e38 ? area : 0.0); // chosen before the conversion, which may not trap
 }
 
-// Cells [iBegin, iEnd) between rows here and next, all of one split, into cells[i]; false when
-// a triangle needs triangleArea's slow path (the caller then measures the row with cellAreas).
+// A row of positions as doubles, one array per axis (what vector code loads best). load() tells
+// whether every coordinate is finite and below 1e37 in magnitude: then every squared edge of a
+// cell is below 12e74 and a + c below 1e76, so no triangle leaves triangleArea's quick path.
+struct RowD {
+  std::vector<double> x, y, z;
+  bool load(const Vec4f* row, int count) {
+    x.resize(static_cast<std::size_t>(count));
+    y.resize(static_cast<std::size_t>(count));
+    z.resize(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      x[static_cast<std::size_t>(i)] = row[i].x;
+      y[static_cast<std::size_t>(i)] = row[i].y;
+      z[static_cast<std::size_t>(i)] = row[i].z;
+    }
+    int large = 0; // a count, not a flag, so this loop is vector code too
+    for (int i = 0; i < count; ++i)
+      large += int(!(std::fabs(row[i].x) < 1e37f)) | int(!(std::fabs(row[i].y) < 1e37f)) |
+               int(!(std::fabs(row[i].z) < 1e37f));
+    return large == 0;
+  }
+};
+
+// Cells [iBegin, iEnd) between rows here and next (loaded small), all of one split, into
+// cells[i].
 template <bool AntiDiagonal>
-bool cellAreaRun(const Vec4f* here, const Vec4f* next, int iBegin, int iEnd,
+void cellAreaRun(const RowD& here, const RowD& next, int iBegin, int iEnd,
                  std::array<float, 2>* cells) {
-  int slow = 0;
+  const double *hx = here.x.data(), *hy = here.y.data(), *hz = here.z.data();
+  const double *nx = next.x.data(), *ny = next.y.data(), *nz = next.z.data();
   for (int i = iBegin; i < iEnd; ++i) {
-    const Vec4f &a = here[i], &b = here[i + 1], &c = next[i + 1], &d = next[i];
-    // Anti-diagonal: {a, b, d} (b - a, d - a), {b, c, d} (c - d, c - b); main: {a, b, c}
-    // (b - a, c - b), {a, c, d} (c - d, d - a).
-    const double abx = double(b.x) - a.x, aby = double(b.y) - a.y, abz = double(b.z) - a.z;
-    const double dcx = double(c.x) - d.x, dcy = double(c.y) - d.y, dcz = double(c.z) - d.z;
-    const double adx = double(d.x) - a.x, ady = double(d.y) - a.y, adz = double(d.z) - a.z;
-    const double bcx = double(c.x) - b.x, bcy = double(c.y) - b.y, bcz = double(c.z) - b.z;
+    // a = here[i], b = here[i + 1], c = next[i + 1], d = next[i]. Anti-diagonal: {a, b, d}
+    // (b - a, d - a), {b, c, d} (c - d, c - b); main: {a, b, c} (b - a, c - b), {a, c, d}
+    // (c - d, d - a).
+    const double abx = hx[i + 1] - hx[i], aby = hy[i + 1] - hy[i], abz = hz[i + 1] - hz[i];
+    const double dcx = nx[i + 1] - nx[i], dcy = ny[i + 1] - ny[i], dcz = nz[i + 1] - nz[i];
+    const double adx = nx[i] - hx[i], ady = ny[i] - hy[i], adz = nz[i] - hz[i];
+    const double bcx = nx[i + 1] - hx[i + 1], bcy = ny[i + 1] - hy[i + 1],
+                 bcz = nz[i + 1] - hz[i + 1];
     double q0, q1;
     if constexpr (AntiDiagonal) {
-      q0 = crossSquared(abx, aby, abz, adx, ady, adz, slow);
-      q1 = crossSquared(dcx, dcy, dcz, bcx, bcy, bcz, slow);
+      q0 = crossSquared(abx, aby, abz, adx, ady, adz);
+      q1 = crossSquared(dcx, dcy, dcz, bcx, bcy, bcz);
     } else {
-      q0 = crossSquared(abx, aby, abz, bcx, bcy, bcz, slow);
-      q1 = crossSquared(dcx, dcy, dcz, adx, ady, adz, slow);
+      q0 = crossSquared(abx, aby, abz, bcx, bcy, bcz);
+      q1 = crossSquared(dcx, dcy, dcz, adx, ady, adz);
     }
-    cells[i] = {areaFromCrossSquared(q0), areaFromCrossSquared(q1)};
+    cells[i][0] = areaFromCrossSquared(q0);
+    cells[i][1] = areaFromCrossSquared(q1);
   }
-  return slow == 0;
 }
 
 // The lengths of the edges p[i] → q[i], i in [0, count), into out.
@@ -165,6 +185,42 @@ void edgeLengthRun(const Vec4f* p, const Vec4f* q, int count, float* out) {
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
     out[i] = float(l < 3e38 ? l : -1.0);
   }
+}
+
+// summarizeStretch's vertex areas of an inner row over [iBegin, iEnd) (0 < i < N), where the
+// four cells around each vertex keep one split each: ac, ad, ab, aa for the cells up-left,
+// up-right, down-left and down-right (whether each is split along the anti-diagonal). The same
+// additions in the same order as the per-vertex code.
+template <bool AC, bool AD, bool AB, bool AA>
+void vertexAreaRunOf(const std::array<float, 2>* above, const std::array<float, 2>* below,
+                     int iBegin, int iEnd, float* out) {
+  for (int i = iBegin; i < iEnd; ++i) {
+    float a = 0;
+    if constexpr (!AC) a += above[i - 1][0];
+    a += above[i - 1][1];
+    if constexpr (AD) a += above[i][0];
+    a += above[i][1];
+    a += below[i - 1][0];
+    if constexpr (AB) a += below[i - 1][1];
+    a += below[i][0];
+    if constexpr (!AA) a += below[i][1];
+    out[i] = a / 3.0f;
+  }
+}
+
+void vertexAreaRun(bool ac, bool ad, bool ab, bool aa, const std::array<float, 2>* above,
+                   const std::array<float, 2>* below, int iBegin, int iEnd, float* out) {
+  using Run = void (*)(const std::array<float, 2>*, const std::array<float, 2>*, int, int, float*);
+  static constexpr Run runs[16] = {
+      vertexAreaRunOf<false, false, false, false>, vertexAreaRunOf<false, false, false, true>,
+      vertexAreaRunOf<false, false, true, false>,  vertexAreaRunOf<false, false, true, true>,
+      vertexAreaRunOf<false, true, false, false>,  vertexAreaRunOf<false, true, false, true>,
+      vertexAreaRunOf<false, true, true, false>,   vertexAreaRunOf<false, true, true, true>,
+      vertexAreaRunOf<true, false, false, false>,  vertexAreaRunOf<true, false, false, true>,
+      vertexAreaRunOf<true, false, true, false>,   vertexAreaRunOf<true, false, true, true>,
+      vertexAreaRunOf<true, true, false, false>,   vertexAreaRunOf<true, true, false, true>,
+      vertexAreaRunOf<true, true, true, false>,    vertexAreaRunOf<true, true, true, true>};
+  runs[(ac ? 8 : 0) + (ad ? 4 : 0) + (ab ? 2 : 0) + (aa ? 1 : 0)](above, below, iBegin, iEnd, out);
 }
 
 // Identified border samples are one vertex: each copy holds part of its ring. Gives every copy
@@ -325,21 +381,26 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
     std::vector<std::array<float, 2>> above(static_cast<std::size_t>(n)),
         below(static_cast<std::size_t>(n));
+    RowD hereD, nextD;
     const auto cellRow = [&](int j, std::vector<std::array<float, 2>>& cells) {
       double sum = 0;
       const Vec4f* here = &image.at(0, j);
       const Vec4f* next = &image.at(0, j + 1);
       // Two runs, each of one split (cellSplit: 2i >= n from half on).
+      const bool small = hereD.load(here, n + 1) & nextD.load(next, n + 1);
       const int half = (n + 1) / 2;
       const bool lower = 2 * j >= n;
       std::array<float, 2>* out = cells.data();
-      const bool quick = lower ? cellAreaRun<false>(here, next, 0, half, out) &&
-                                     cellAreaRun<true>(here, next, half, n, out)
-                               : cellAreaRun<true>(here, next, 0, half, out) &&
-                                     cellAreaRun<false>(here, next, half, n, out);
-      if (!quick)
+      if (!small) // a huge or non-finite coordinate: cell by cell, as triangleArea decides
         for (int i = 0; i < n; ++i)
           cells[static_cast<std::size_t>(i)] = cellAreas(here, next, n, i, j);
+      else if (lower) {
+        cellAreaRun<false>(hereD, nextD, 0, half, out);
+        cellAreaRun<true>(hereD, nextD, half, n, out);
+      } else {
+        cellAreaRun<true>(hereD, nextD, 0, half, out);
+        cellAreaRun<false>(hereD, nextD, half, n, out);
+      }
       for (int i = 0; i < n; ++i)
         sum += double(cells[static_cast<std::size_t>(i)][0]) +
                double(cells[static_cast<std::size_t>(i)][1]);
@@ -349,7 +410,7 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
     for (int j = rowBegin; j < rowEnd; ++j) {
       if (j < n) rowArea[static_cast<std::size_t>(j)] = cellRow(j, below);
       // The take() order of measureVertices, so every vertex area is the same float.
-      for (int i = 0; i <= n; ++i) {
+      const auto vertexArea = [&](int i) {
         float a = 0;
         if (j > 0) {
           if (i > 0) {
@@ -376,6 +437,21 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
           }
         }
         area[texelIndex(n, i, j)] = a / 3.0f;
+      };
+      float* areaRow = area.data() + texelIndex(n, 0, j);
+      if (j == 0 || j == n) {
+        for (int i = 0; i <= n; ++i)
+          vertexArea(i);
+      } else { // inner rows: the ends alone, the runs between them of one split each
+        vertexArea(0);
+        const int half = (n + 1) / 2;
+        for (const auto& [iBegin, iEnd] :
+             {std::pair{1, half}, std::pair{half, half + 1}, std::pair{half + 1, n}})
+          if (iBegin < iEnd)
+            vertexAreaRun(antiDiagonal(n, iBegin - 1, j - 1), antiDiagonal(n, iBegin, j - 1),
+                          antiDiagonal(n, iBegin - 1, j), antiDiagonal(n, iBegin, j), above.data(),
+                          below.data(), iBegin, std::min(iEnd, n), areaRow);
+        vertexArea(n);
       }
       float* row = edges.get() + perRow * static_cast<std::size_t>(j);
       const Vec4f* here = &image.at(0, j);
