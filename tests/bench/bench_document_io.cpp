@@ -153,30 +153,53 @@ void BM_ReadPositions(benchmark::State& state) {
 }
 
 // What `octaclay-cli info` does once started: the positions read, the mesh facts and the
-// stretch summary it prints.
+// stretch summary it prints; read_s, describe_s and stretch_s are each phase's best.
 void BM_Info(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   fileToRead(state);
+  std::array<double, 3> phase{1e30, 1e30, 1e30};
+  const auto since = [](std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   const double best = bestSeconds(state, [&] {
+    auto start = std::chrono::steady_clock::now();
     const Document read = readDocument(documentPath(n), {.layers = false});
+    phase[0] = std::min(phase[0], since(start));
+    start = std::chrono::steady_clock::now();
     const DocumentInfo info = describeDocument(read);
+    phase[1] = std::min(phase[1], since(start));
+    start = std::chrono::steady_clock::now();
     const StretchSummary stretch = summarizeStretch(read.positions);
+    phase[2] = std::min(phase[2], since(start));
     benchmark::DoNotOptimize(info.degenerateTriangles);
     benchmark::DoNotOptimize(stretch.p99OverMedian);
   });
   report(state, best, catSeconds(documentPath(n), 3), "x_cat", documentPath(n));
+  state.counters["read_s"] = phase[0];
+  state.counters["describe_s"] = phase[1];
+  state.counters["stretch_s"] = phase[2];
 }
 
 // What `octaclay-cli new --size N` does once started: the sphere made and written (fsync
-// included; cp's copy is not synced).
+// included; cp's copy is not synced); make_s and write_s are each phase's best.
 void BM_New(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const DocumentWriteOptions& options = kCompressions.at(static_cast<std::size_t>(state.range(1)));
+  std::array<double, 2> phase{1e30, 1e30};
+  const auto since = [](std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   const double best = bestSeconds(state, [&] {
+    auto start = std::chrono::steady_clock::now();
     const Document made = makeDocument(makeBaseShape(BaseShape::Sphere, n));
+    phase[0] = std::min(phase[0], since(start));
+    start = std::chrono::steady_clock::now();
     writeDocument(made, documentPath(n), options);
+    phase[1] = std::min(phase[1], since(start));
   });
   report(state, best, copySeconds(documentPath(n), copyPath(n), 3), "x_cp", documentPath(n));
+  state.counters["make_s"] = phase[0];
+  state.counters["write_s"] = phase[1];
 }
 
 } // namespace

@@ -1,24 +1,49 @@
 #include "octaclay/core/document/document_checks.h"
 
+#include "detail/parallel_rows.h"
+
 #include "octaclay/core/error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace octaclay::core {
 
 std::optional<std::string> positionsProblem(const GeometryImage& positions) {
-  const int side = positions.side();
-  float largest = 0;
-  for (int j = 0; j < positions.rows(); ++j)
-    for (int i = 0; i < side; ++i) {
-      const Vec4f& t = positions.at(i, j);
-      if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z))
-        return "position at sample (" + std::to_string(i) + ", " + std::to_string(j) +
-               ") is not a finite number";
-      largest = std::max({largest, std::abs(t.x), std::abs(t.y), std::abs(t.z)});
+  // Bands of rows on every core, each its first non-finite sample and its largest magnitude; the
+  // first band with a non-finite sample names the same sample a row-by-row scan would.
+  const int side = positions.side(), rows = positions.rows();
+  struct Band {
+    int badI = -1, badJ = -1;
+    float largest = 0;
+  };
+  std::vector<Band> bands(static_cast<std::size_t>(rows));
+  detail::parallelRows(rows, [&](int rowBegin, int rowEnd) {
+    Band& band = bands[static_cast<std::size_t>(rowBegin)];
+    float largest = 0;
+    for (int j = rowBegin; j < rowEnd; ++j) {
+      const Vec4f* row = &positions.at(0, j);
+      for (int i = 0; i < side; ++i) {
+        const Vec4f& t = row[i];
+        if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z)) {
+          band.badI = i;
+          band.badJ = j;
+          return;
+        }
+        largest = std::max({largest, std::abs(t.x), std::abs(t.y), std::abs(t.z)});
+      }
     }
+    band.largest = largest;
+  });
+  float largest = 0;
+  for (const Band& band : bands) {
+    if (band.badJ >= 0)
+      return "position at sample (" + std::to_string(band.badI) + ", " + std::to_string(band.badJ) +
+             ") is not a finite number";
+    largest = std::max(largest, band.largest);
+  }
   if (largest > kMaxCoordinate) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", static_cast<double>(largest));

@@ -38,6 +38,31 @@ DocumentInfo describeGridDocument(const GeometryImage& image) {
   return info;
 }
 
+// Degenerate triangles among cells [iBegin, iEnd) of the row between here (row j) and next
+// (row j+1): a cell's two triangles as cellTriangles() gives them, corners in its order, zero
+// area when the cross product's squared length is 0 (length 0, without its square root).
+std::uint64_t degenerateInRow(const Vec4f* here, const Vec4f* next, int iBegin, int iEnd,
+                              bool antiDiagonal) {
+  const auto zeroArea = [](Vec3f a, Vec3f b, Vec3f c) {
+    const Vec3f normal = cross(b - a, c - a);
+    return std::uint64_t(dot(normal, normal) == 0.0f);
+  };
+  std::uint64_t count = 0;
+  if (antiDiagonal) // CellSplit::AntiDiagonal: {a, b, d}, {b, c, d}
+    for (int i = iBegin; i < iEnd; ++i) {
+      const Vec3f a = here[i].xyz(), b = here[i + 1].xyz(), c = next[i + 1].xyz(),
+                  d = next[i].xyz();
+      count += zeroArea(a, b, d) + zeroArea(b, c, d);
+    }
+  else // {a, b, c}, {a, c, d}
+    for (int i = iBegin; i < iEnd; ++i) {
+      const Vec3f a = here[i].xyz(), b = here[i + 1].xyz(), c = next[i + 1].xyz(),
+                  d = next[i].xyz();
+      count += zeroArea(a, b, c) + zeroArea(a, c, d);
+    }
+  return count;
+}
+
 } // namespace
 
 DocumentInfo describeDocument(const Document& document) {
@@ -89,18 +114,12 @@ DocumentInfo describeDocument(const Document& document) {
         band.box.extend(hi);
       }
       if (j == n) continue;
-      const auto zeroArea = [](Vec3f a, Vec3f b, Vec3f c) {
-        const Vec3f normal = cross(b - a, c - a);
-        return dot(normal, normal) == 0.0f; // length(normal) == 0, without its square root
-      };
-      for (int i = 0; i < n; ++i) {
-        const Vec3f a = image.at(i, j).xyz(), b = image.at(i + 1, j).xyz(),
-                    c = image.at(i + 1, j + 1).xyz(), d = image.at(i, j + 1).xyz();
-        if ((2 * i >= n) == (2 * j >= n)) // CellSplit::AntiDiagonal: {a, b, d}, {b, c, d}
-          band.degenerate += std::uint64_t(zeroArea(a, b, d)) + std::uint64_t(zeroArea(b, c, d));
-        else // {a, b, c}, {a, c, d}
-          band.degenerate += std::uint64_t(zeroArea(a, b, c)) + std::uint64_t(zeroArea(a, c, d));
-      }
+      // Row j's cells in two runs, each of one split, so the loop has no branch per cell.
+      const Vec4f* next = &image.at(0, j + 1);
+      const int half = (n + 1) / 2; // 2i >= n from here on
+      const bool lowerHalf = 2 * j >= n;
+      band.degenerate += degenerateInRow(row, next, 0, half, !lowerHalf);
+      band.degenerate += degenerateInRow(row, next, half, n, lowerHalf);
     }
   });
   std::uint64_t degenerate = 0;

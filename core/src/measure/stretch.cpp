@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <span>
 
 namespace octaclay::core {
 namespace {
@@ -57,13 +59,6 @@ inline float triangleArea(Vec3d du, Vec3d dv) {
   const double area = 0.5 * std::sqrt(dotD(n, n));
   if (!std::isfinite(area) || !(area < 3e38)) return 0;
   return float(area);
-}
-
-// A grid edge's length, -1 when it is not finite or overflows a float.
-float edgeLength(const Vec4f& p, const Vec4f& q) {
-  const Vec3d d = difference(q, p);
-  const double l = std::sqrt(dotD(d, d));
-  return std::isfinite(l) && l < 3e38 ? float(l) : -1.0f;
 }
 
 // What measure() gathers per texel: a third of the incident triangles' area and their largest
@@ -114,9 +109,123 @@ std::array<float, 2> cellAreas(const Vec4f* here, const Vec4f* next, int n, int 
           triangleArea(difference(c, d), difference(d, a))};
 }
 
+// The row loops of summarizeStretch, in straight lines a compiler turns into vector code (no
+// call, no branch per element; the file is built without errno from sqrt, see core's
+// CMakeLists). Same figures to the bit as cellAreas() and a grid edge's length (-1 when not
+// finite or over a float): a square root of a sum of squares is never negative, so "finite and
+// below 3e38" is "below 3e38".
+
+// A triangle's doubled area, squared: |du × dv|².
+inline double crossSquared(double ux, double uy, double uz, double vx, double vy, double vz) {
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  return nx * nx + ny * ny + nz * nz;
+}
+
+inline float areaFromCrossSquared(double q) {
+  const double area = 0.5 * std::sqrt(q);
+  return float(area < 3e38 ? area : 0.0); // chosen before the conversion, which may not trap
+}
+
+// A row of positions as doubles, one array per axis (what vector code loads best). load() tells
+// whether every coordinate is finite and below 1e37 in magnitude: then every squared edge of a
+// cell is below 12e74 and a + c below 1e76, so no triangle leaves triangleArea's quick path.
+struct RowD {
+  std::vector<double> x, y, z;
+  bool load(const Vec4f* row, int count) {
+    x.resize(static_cast<std::size_t>(count));
+    y.resize(static_cast<std::size_t>(count));
+    z.resize(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      x[static_cast<std::size_t>(i)] = row[i].x;
+      y[static_cast<std::size_t>(i)] = row[i].y;
+      z[static_cast<std::size_t>(i)] = row[i].z;
+    }
+    int large = 0; // a count, not a flag, so this loop is vector code too
+    for (int i = 0; i < count; ++i)
+      large += int(!(std::fabs(row[i].x) < 1e37f)) | int(!(std::fabs(row[i].y) < 1e37f)) |
+               int(!(std::fabs(row[i].z) < 1e37f));
+    return large == 0;
+  }
+};
+
+// Cells [iBegin, iEnd) between rows here and next (loaded small), all of one split, into
+// cells[i].
+template <bool AntiDiagonal>
+void cellAreaRun(const RowD& here, const RowD& next, int iBegin, int iEnd,
+                 std::array<float, 2>* cells) {
+  const double *hx = here.x.data(), *hy = here.y.data(), *hz = here.z.data();
+  const double *nx = next.x.data(), *ny = next.y.data(), *nz = next.z.data();
+  for (int i = iBegin; i < iEnd; ++i) {
+    // a = here[i], b = here[i + 1], c = next[i + 1], d = next[i]. Anti-diagonal: {a, b, d}
+    // (b - a, d - a), {b, c, d} (c - d, c - b); main: {a, b, c} (b - a, c - b), {a, c, d}
+    // (c - d, d - a).
+    const double abx = hx[i + 1] - hx[i], aby = hy[i + 1] - hy[i], abz = hz[i + 1] - hz[i];
+    const double dcx = nx[i + 1] - nx[i], dcy = ny[i + 1] - ny[i], dcz = nz[i + 1] - nz[i];
+    const double adx = nx[i] - hx[i], ady = ny[i] - hy[i], adz = nz[i] - hz[i];
+    const double bcx = nx[i + 1] - hx[i + 1], bcy = ny[i + 1] - hy[i + 1],
+                 bcz = nz[i + 1] - hz[i + 1];
+    double q0, q1;
+    if constexpr (AntiDiagonal) {
+      q0 = crossSquared(abx, aby, abz, adx, ady, adz);
+      q1 = crossSquared(dcx, dcy, dcz, bcx, bcy, bcz);
+    } else {
+      q0 = crossSquared(abx, aby, abz, bcx, bcy, bcz);
+      q1 = crossSquared(dcx, dcy, dcz, adx, ady, adz);
+    }
+    cells[i][0] = areaFromCrossSquared(q0);
+    cells[i][1] = areaFromCrossSquared(q1);
+  }
+}
+
+// The lengths of the edges p[i] → q[i], i in [0, count), into out.
+void edgeLengthRun(const Vec4f* p, const Vec4f* q, int count, float* out) {
+  for (int i = 0; i < count; ++i) {
+    const double dx = double(q[i].x) - p[i].x, dy = double(q[i].y) - p[i].y,
+                 dz = double(q[i].z) - p[i].z;
+    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+    out[i] = float(l < 3e38 ? l : -1.0);
+  }
+}
+
+// summarizeStretch's vertex areas of an inner row over [iBegin, iEnd) (0 < i < N), where the
+// four cells around each vertex keep one split each: ac, ad, ab, aa for the cells up-left,
+// up-right, down-left and down-right (whether each is split along the anti-diagonal). The same
+// additions in the same order as the per-vertex code.
+template <bool AC, bool AD, bool AB, bool AA>
+void vertexAreaRunOf(const std::array<float, 2>* above, const std::array<float, 2>* below,
+                     int iBegin, int iEnd, float* out) {
+  for (int i = iBegin; i < iEnd; ++i) {
+    float a = 0;
+    if constexpr (!AC) a += above[i - 1][0];
+    a += above[i - 1][1];
+    if constexpr (AD) a += above[i][0];
+    a += above[i][1];
+    a += below[i - 1][0];
+    if constexpr (AB) a += below[i - 1][1];
+    a += below[i][0];
+    if constexpr (!AA) a += below[i][1];
+    out[i] = a / 3.0f;
+  }
+}
+
+void vertexAreaRun(bool ac, bool ad, bool ab, bool aa, const std::array<float, 2>* above,
+                   const std::array<float, 2>* below, int iBegin, int iEnd, float* out) {
+  using Run = void (*)(const std::array<float, 2>*, const std::array<float, 2>*, int, int, float*);
+  static constexpr Run runs[16] = {
+      vertexAreaRunOf<false, false, false, false>, vertexAreaRunOf<false, false, false, true>,
+      vertexAreaRunOf<false, false, true, false>,  vertexAreaRunOf<false, false, true, true>,
+      vertexAreaRunOf<false, true, false, false>,  vertexAreaRunOf<false, true, false, true>,
+      vertexAreaRunOf<false, true, true, false>,   vertexAreaRunOf<false, true, true, true>,
+      vertexAreaRunOf<true, false, false, false>,  vertexAreaRunOf<true, false, false, true>,
+      vertexAreaRunOf<true, false, true, false>,   vertexAreaRunOf<true, false, true, true>,
+      vertexAreaRunOf<true, true, false, false>,   vertexAreaRunOf<true, true, false, true>,
+      vertexAreaRunOf<true, true, true, false>,    vertexAreaRunOf<true, true, true, true>};
+  runs[(ac ? 8 : 0) + (ad ? 4 : 0) + (ab ? 2 : 0) + (aa ? 1 : 0)](above, below, iBegin, iEnd, out);
+}
+
 // Identified border samples are one vertex: each copy holds part of its ring. Gives every copy
 // the sum of their areas (and the largest of their sigmas, when sigma is given).
-void uniteIdentified(int n, std::vector<float>& area, std::vector<float>* sigma) {
+void uniteIdentified(int n, std::span<float> area, std::vector<float>* sigma) {
   const auto unite = [&](Sample s) {
     if (!(canonical(n, s) == s)) return;
     std::array<Sample, 4> copies;
@@ -262,28 +371,46 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   // areas of the cells of row j (kept for row j+1) and the vertex areas of row j from the cells
   // above and below it: measureVertices' figures without its per-cell and stretch arrays.
   const std::size_t perRow = 2 * static_cast<std::size_t>(n) + 1;
-  std::vector<float> edges(perRow * static_cast<std::size_t>(n + 1));
-  std::vector<float> area(image.texelCount());
+  // Left uninitialized: every value is written below, on the core that first touches its pages
+  // (zero-filling them first was 0.8 GB of single-threaded page faults and memset at N = 8192).
+  const std::size_t edgeCount = perRow * static_cast<std::size_t>(n + 1);
+  auto edges = std::make_unique_for_overwrite<float[]>(edgeCount);
+  const auto areaValues = std::make_unique_for_overwrite<float[]>(image.texelCount());
+  const std::span<float> area(areaValues.get(), image.texelCount());
   std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
   detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
     std::vector<std::array<float, 2>> above(static_cast<std::size_t>(n)),
         below(static_cast<std::size_t>(n));
+    RowD hereD, nextD;
     const auto cellRow = [&](int j, std::vector<std::array<float, 2>>& cells) {
       double sum = 0;
       const Vec4f* here = &image.at(0, j);
       const Vec4f* next = &image.at(0, j + 1);
-      for (int i = 0; i < n; ++i) {
-        const auto f = cellAreas(here, next, n, i, j);
-        cells[static_cast<std::size_t>(i)] = f;
-        sum += double(f[0]) + double(f[1]);
+      // Two runs, each of one split (cellSplit: 2i >= n from half on).
+      const bool small = hereD.load(here, n + 1) & nextD.load(next, n + 1);
+      const int half = (n + 1) / 2;
+      const bool lower = 2 * j >= n;
+      std::array<float, 2>* out = cells.data();
+      if (!small) // a huge or non-finite coordinate: cell by cell, as triangleArea decides
+        for (int i = 0; i < n; ++i)
+          cells[static_cast<std::size_t>(i)] = cellAreas(here, next, n, i, j);
+      else if (lower) {
+        cellAreaRun<false>(hereD, nextD, 0, half, out);
+        cellAreaRun<true>(hereD, nextD, half, n, out);
+      } else {
+        cellAreaRun<true>(hereD, nextD, 0, half, out);
+        cellAreaRun<false>(hereD, nextD, half, n, out);
       }
+      for (int i = 0; i < n; ++i)
+        sum += double(cells[static_cast<std::size_t>(i)][0]) +
+               double(cells[static_cast<std::size_t>(i)][1]);
       return sum;
     };
     if (rowBegin > 0) cellRow(rowBegin - 1, above);
     for (int j = rowBegin; j < rowEnd; ++j) {
       if (j < n) rowArea[static_cast<std::size_t>(j)] = cellRow(j, below);
       // The take() order of measureVertices, so every vertex area is the same float.
-      for (int i = 0; i <= n; ++i) {
+      const auto vertexArea = [&](int i) {
         float a = 0;
         if (j > 0) {
           if (i > 0) {
@@ -310,15 +437,27 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
           }
         }
         area[texelIndex(n, i, j)] = a / 3.0f;
-      }
-      float* row = edges.data() + perRow * static_cast<std::size_t>(j);
-      const Vec4f* here = &image.at(0, j);
-      for (int i = 0; i < n; ++i)
-        row[i] = edgeLength(here[i], here[i + 1]);
-      if (j < n) {
-        const Vec4f* next = &image.at(0, j + 1);
+      };
+      float* areaRow = area.data() + texelIndex(n, 0, j);
+      if (j == 0 || j == n) {
         for (int i = 0; i <= n; ++i)
-          row[n + i] = edgeLength(here[i], next[i]);
+          vertexArea(i);
+      } else { // inner rows: the ends alone, the runs between them of one split each
+        vertexArea(0);
+        const int half = (n + 1) / 2;
+        for (const auto& [iBegin, iEnd] :
+             {std::pair{1, half}, std::pair{half, half + 1}, std::pair{half + 1, n}})
+          if (iBegin < iEnd)
+            vertexAreaRun(antiDiagonal(n, iBegin - 1, j - 1), antiDiagonal(n, iBegin, j - 1),
+                          antiDiagonal(n, iBegin - 1, j), antiDiagonal(n, iBegin, j), above.data(),
+                          below.data(), iBegin, std::min(iEnd, n), areaRow);
+        vertexArea(n);
+      }
+      float* row = edges.get() + perRow * static_cast<std::size_t>(j);
+      const Vec4f* here = &image.at(0, j);
+      edgeLengthRun(here, here + 1, n, row);
+      if (j < n) {
+        edgeLengthRun(here, &image.at(0, j + 1), n + 1, row + n);
       } else {
         std::fill(row + n, row + perRow, -1.0f);
       }
@@ -327,9 +466,10 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   });
   uniteIdentified(n, area, nullptr);
 
-  const detail::FloatRanks edgeRanks = detail::selectFloatRanks(edges, [](std::size_t count) {
-    return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
-  });
+  const detail::FloatRanks edgeRanks =
+      detail::selectFloatRanks({edges.get(), edgeCount}, [](std::size_t count) {
+        return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
+      });
   if (edgeRanks.count > 0) {
     summary.longestEdge = edgeRanks.largest;
     summary.medianEdge = edgeRanks.at[0];
@@ -338,7 +478,7 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
       summary.p99OverMedian = edgeRanks.at[1] / summary.medianEdge;
     }
   }
-  edges = {};
+  edges.reset();
 
   double total = 0;
   for (double a : rowArea)

@@ -6,7 +6,9 @@
 #include "octaclay/core/geometry/vec.h"
 
 #include <cstddef>
+#include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace octaclay::core {
@@ -54,8 +56,21 @@ private:
     return static_cast<std::size_t>(j) * static_cast<std::size_t>(grid_.width + 1) +
            static_cast<std::size_t>(i);
   }
+  /// Makes no texel when the vector grows (Vec4f is plain data), so the constructors can zero
+  /// a large image on every core instead of in one thread's memset.
+  template <class T> struct GrowsUninitialized : std::allocator<T> {
+    template <class U> struct rebind { using other = GrowsUninitialized<U>; };
+    GrowsUninitialized() = default;
+    template <class U> GrowsUninitialized(const GrowsUninitialized<U>&) noexcept {}
+    template <class U> void construct(U*) noexcept {}
+    template <class U, class... Args> void construct(U* p, Args&&... args) {
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+  };
+  void zeroTexels(std::size_t count);
+
   SampleGrid grid_;
-  std::vector<Vec4f> texels_;
+  std::vector<Vec4f, GrowsUninitialized<Vec4f>> texels_;
 };
 
 /// The bounding box of every sample's position (xyz).
