@@ -13,9 +13,11 @@
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/geometry/torus.h"
 #include "octaclay/gpu/gl_context.h"
 #include "octaclay/gpu/gl_error.h"
 #include "octaclay/gpu/stroke.h"
+#include "octaclay/gpu/stroke_rules.h"
 
 #include <QtTest>
 
@@ -99,6 +101,7 @@ private slots:
   void sessionUndoRestoresTheStartBitExactly();
   void sessionRefusesSamplesOutsideTheImage();
   void gpuTileBoundsEqualTheMirrors();
+  void areaSumOnTheGpuEqualsTheCpus();
   void deferredPositionsGiveTheSameStrokes();
   void finiteCheckOnTheGpuFindsEachBadValue();
 
@@ -350,6 +353,62 @@ void StrokesTest::gpuTileBoundsEqualTheMirrors() {
     QVERIFY(fresh.diagonal() !=
             core::TileBounds(core::makeBaseShape(core::BaseShape::Blob, n)).diagonal());
   }
+}
+
+// A dab's area normal: the GPU's reduction (where the driver is a real GPU) against the CPU's loop
+// (a software rasterizer's), on a ball at two N and on a torus, each after strokes, around
+// points off-centre, on the image's corners and on its seams, at two radii: the same triangles
+// counted and the same sum up to float rounding (the GPU sums per quarter of a tile).
+void StrokesTest::areaSumOnTheGpuEqualsTheCpus() {
+  struct Case {
+    const char* name;
+    core::GeometryImage image;
+  };
+  std::vector<Case> cases;
+  for (int n : {64, 256})
+    cases.push_back({"ball", core::makeBaseShape(core::BaseShape::Blob, n)});
+  const core::Torus torus;
+  cases.push_back({"torus", core::makeTorus(torus, 128, core::torusHeight(torus, 128))});
+  int compared = 0;
+  for (const Case& c : cases) {
+    GpuDocument document(core::makeDocument(c.image));
+    for (const char* brush : {"inflate", "push"})
+      strokeAlongPath(*engine_, document, manifest(brush),
+                      strokeOf(brush, {{0.1f, 0.5f}, {0.5f, 0.9f}, {0.98f, 0.02f}}, 0.3f, 0.6f));
+    const core::GeometryImage& positions = document.document().positions;
+    const core::TileBounds& bounds = document.bounds();
+    const int w = positions.width(), h = positions.height();
+    const float d = bounds.diagonal();
+    for (const core::Sample s :
+         {core::Sample{w / 2, h / 2}, core::Sample{0, 0}, core::Sample{w, h},
+          core::Sample{w / 3, 0}, core::Sample{7, h - 3}, core::Sample{w - 1, h / 5}})
+      for (const float radius : {0.04f * d, 0.2f * d}) {
+        const core::Vec3f centre = positions.at(s).xyz();
+        const std::vector<int> near = bounds.tilesNearSphere(centre, radius);
+        const AreaSum gpu = document.areaSum(near, centre, radius);
+        const AreaSum cpu = areaSumOnCpu(document, near, centre, radius);
+        const QByteArray where = QString("%1 %2x%3 at (%4, %5), radius %6: %7 and %8 triangles")
+                                     .arg(c.name)
+                                     .arg(w)
+                                     .arg(h)
+                                     .arg(s.i)
+                                     .arg(s.j)
+                                     .arg(double(radius))
+                                     .arg(gpu.triangles)
+                                     .arg(cpu.triangles)
+                                     .toUtf8();
+        QVERIFY2(cpu.triangles > 32, where.constData());
+        // A centroid on the sphere's rim may round to either side.
+        QVERIFY2(std::abs(gpu.triangles - cpu.triangles) <= 2, where.constData());
+        const float off = core::length(gpu.sum - cpu.sum), size = core::length(cpu.sum);
+        QVERIFY2(off <= 1e-4f * size + 1e-7f * d * d,
+                 (where + QByteArray(" sums off by ") + QByteArray::number(double(off)) + " of " +
+                  QByteArray::number(double(size)))
+                     .constData());
+        ++compared;
+      }
+  }
+  QCOMPARE(compared, 36);
 }
 
 // Where positions are deferred (a real GPU) the dabs read only the mirror's regions they sync:

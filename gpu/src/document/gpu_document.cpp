@@ -1,5 +1,6 @@
 #include "octaclay/gpu/gpu_document.h"
 
+#include "area_normal_pass.h"
 #include "finite_check_pass.h"
 #include "tile_bounds_pass.h"
 
@@ -32,7 +33,7 @@ TextureFormat formatOf(core::EditLayer layer) {
 }
 
 // Whether the driver renders on the CPU (its textures in the CPU's memory, a read-back a copy).
-bool softwareRenderer();
+bool driverIsSoftware();
 
 // Positions deferred by default where the driver is not a software rasterizer;
 // $OCTACLAY_DEFER_POSITIONS = 1 or 0 overrides it (to run the modeller's tests both ways).
@@ -41,10 +42,10 @@ bool positionsDeferredByDefault() {
     if (std::string(text) == "1") return true;
     if (std::string(text) == "0") return false;
   }
-  return !softwareRenderer();
+  return !driverIsSoftware();
 }
 
-bool softwareRenderer() {
+bool driverIsSoftware() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (!renderer) return true;
   const std::string name(renderer);
@@ -70,24 +71,34 @@ int GpuDocument::channels(core::EditLayer layer) {
 
 GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
     : document_(std::move(document)), bounds_(document_.positions),
-      deferPositions_(positionsDeferredByDefault()) {
+      deferPositions_(positionsDeferredByDefault()), software_(driverIsSoftware()) {
   // Textures are (W+1) × (H+1): a torus or plane may be W ≠ H (a thin ring sampled evenly).
   const int side = document_.positions.side(), rows = document_.positions.rows();
-  // Row bands: a caller on a GUI thread gets control back (progress) between them, and an
-  // unpainted layer's fill needs only one band-sized buffer instead of a full-size one.
+  // Row bands: a caller on a GUI thread gets control back (progress) between them.
   const int band = std::max(1, (1 << 20) / side);
   const int steps = 4 * ((rows + band - 1) / band);
   int step = 0;
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     textures_[index(layer)] = Texture(side, rows, formatOf(layer));
-    for (int y = 0; y < rows; y += band) {
-      push(layer, {0, y, side, std::min(band, rows - y)});
-      if (progress) progress(static_cast<float>(++step) / static_cast<float>(steps));
+    core::Layer* l = mirrorLayer(layer);
+    if (l && l->uniform()) { // an unpainted layer: cleared on the GPU, nothing uploaded
+      std::array<float, 4> value{};
+      for (int k = 0; k < channels(layer); ++k)
+        value[static_cast<std::size_t>(k)] = l->fill[static_cast<std::size_t>(k)];
+      textures_[index(layer)].fill(value);
+      note(layer, whole());
+      step += (rows + band - 1) / band;
+      if (progress) progress(static_cast<float>(step) / static_cast<float>(steps));
+    } else {
+      for (int y = 0; y < rows; y += band) {
+        push(layer, {0, y, side, std::min(band, rows - y)});
+        if (progress) progress(static_cast<float>(++step) / static_cast<float>(steps));
+      }
     }
     // An unpainted layer's fill as the texture holds it (half floats round 0.8 to 0.7998), so
     // the mirror equals the texture bit for bit from the start.
-    if (core::Layer* l = mirrorLayer(layer); l && l->uniform()) {
+    if (l && l->uniform()) {
       const std::vector<float> texel = textures_[index(layer)].read({0, 0, 1, 1});
       for (int k = 0; k < channels(layer); ++k)
         l->fill[k] = texel[k];
@@ -142,6 +153,14 @@ bool GpuDocument::holdsOnlyFinite(core::EditLayer layer, std::span<const core::T
   if (!finitePass_) finitePass_ = std::make_unique<detail::FiniteCheckPass>();
   return finitePass_->allFinite(textures_[index(layer)], channels(layer),
                                 layer == core::EditLayer::Positions, core::kMaxCoordinate, rects);
+}
+
+AreaSum GpuDocument::areaSum(std::span<const int> tiles, core::Vec3f centre, float radius) const {
+  if (!areaPass_) areaPass_ = std::make_unique<detail::AreaNormalPass>();
+  const core::SampleGrid& g = grid();
+  return areaPass_->sum(textures_[index(core::EditLayer::Positions)], bounds_, tiles,
+                        {g.width, g.height}, topology() == core::Topology::Octahedral, centre,
+                        radius);
 }
 
 Texture& GpuDocument::scratch(core::EditLayer layer) {

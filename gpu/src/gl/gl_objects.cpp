@@ -127,6 +127,18 @@ void Texture::bindAsTarget() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
 }
 
+void Texture::fill(const std::array<float, 4>& value) {
+  GLint previous = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+  const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+  if (scissor) glDisable(GL_SCISSOR_TEST);
+  bindAsTarget();
+  glClearBufferfv(GL_COLOR, 0, value.data());
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+  checkGlError("filling a texture");
+}
+
 void Texture::upload(core::TexelRect region, std::span<const float> texels) {
   if (texels.size() != texelCount(region) * static_cast<std::size_t>(channels()))
     throw GlError("texture upload: " + std::to_string(texels.size()) + " floats for a " +

@@ -186,7 +186,7 @@ struct StrokeSession::State {
   // The surface as it was when the stroke began, at image point (x, y) in samples: what the
   // dabs' spacing is measured on, so that a stroke does not stretch its own spacing.
   core::Vec3f startPosition(double x, double y) const {
-    const core::GridPoint p = surfacePointAt(document.document().positions.grid(), x, y);
+    const core::GridPoint p = surfacePointAt(document.mirror().positions.grid(), x, y);
     core::Vec3f sum;
     for (int k = 0; k < 3; ++k)
       sum += undo.positionBefore(p.corners[k]) * p.weights[k];

@@ -106,11 +106,10 @@ void syncAround(const GpuDocument& document, double x, double y) {
   document.syncRegion(rects);
 }
 
-core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
-                       core::Vec3f fallback) {
+AreaSum areaSumOnCpu(const GpuDocument& document, std::span<const int> near, core::Vec3f centre,
+                     float radius) {
   const core::GeometryImage& image = document.mirror().positions;
   const core::TileBounds& bounds = document.bounds();
-  const std::vector<int> near = bounds.tilesNearSphere(centre, radius);
   syncTiles(document, near);
   const int n = document.grid().width, h = document.grid().height, half = n / 2;
   // The torus and plane split every cell along its anti-diagonal (core::cellTriangles).
@@ -164,6 +163,18 @@ core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float ra
       }
     }
   }
+  return {sum, triangles};
+}
+
+core::Vec3f areaNormal(const GpuDocument& document, core::Vec3f centre, float radius,
+                       core::Vec3f fallback) {
+  const std::vector<int> near = document.bounds().tilesNearSphere(centre, radius);
+  // A GPU reduces it and reads back the quarters' sums, not the texels under the dab; a
+  // software rasterizer runs the loop faster on the CPU than as a compute pass.
+  const AreaSum area = document.softwareRenderer() ? areaSumOnCpu(document, near, centre, radius)
+                                                   : document.areaSum(near, centre, radius);
+  const core::Vec3f sum = area.sum;
+  const int triangles = area.triangles;
   // Too few triangles to average (samples far apart on a stretched tip): the point normal.
   if (triangles < kAreaNormalTriangles || !(core::length(sum) > 1e-20f)) return fallback;
   return core::normalize(sum);

@@ -2,6 +2,7 @@
 
 #include "octaclay/core/geometry/texel_rect.h"
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -63,6 +64,9 @@ public:
   unsigned release();
   /// Binds a framebuffer rendering into this texture (made once, kept with the texture).
   void bindAsTarget() const;
+  /// Sets every texel to value (its first channels()), cleared on the GPU: no upload. The
+  /// bound framebuffer and the scissor test are left as they were. Throws GlError.
+  void fill(const std::array<float, 4>& value);
 
 private:
   Texture(int width, int height, TextureFormat format, int levels);

@@ -18,6 +18,7 @@
 namespace octaclay::gpu {
 
 namespace detail {
+class AreaNormalPass;
 class FiniteCheckPass;
 class TileBoundsPass;
 } // namespace detail
@@ -41,6 +42,12 @@ struct DocumentChange {
   ChangeKind kind = ChangeKind::Dabs;
   core::EditLayer layer = core::EditLayer::Positions;
   std::vector<core::TexelRect> rects; ///< merged (core::mergeRects); empty: nothing of the layer
+};
+
+/// The area vectors (cross products) of the triangles near a point, summed, and how many.
+struct AreaSum {
+  core::Vec3f sum;
+  int triangles = 0;
 };
 
 /// A document being edited: its layers as GPU textures (each with a scratch twin for
@@ -94,6 +101,8 @@ public:
   /// not a software rasterizer; $OCTACLAY_DEFER_POSITIONS = 1 or 0 overrides that). Tests set it
   /// to run both ways on one machine.
   bool positionsDeferred() const { return deferPositions_; }
+  /// Whether the driver renders on the CPU (llvmpipe): its textures in the CPU's memory.
+  bool softwareRenderer() const { return software_; }
   void setPositionsDeferred(bool on);
 
   Texture& texture(core::EditLayer layer) { return textures_[index(layer)]; }
@@ -145,6 +154,10 @@ public:
   /// within ±core::kMaxCoordinate), reduced on the GPU to one flag read back. Throws GlError.
   bool holdsOnlyFinite(core::EditLayer layer, std::span<const core::TexelRect> rects);
 
+  /// The sum of the area vectors of the triangles of tiles (core::TileBounds numbers) whose
+  /// centroid lies within radius of centre, reduced on the GPU from the positions texture:
+  /// only the quarters' sums are read back, not the texels. Throws GlError.
+  AreaSum areaSum(std::span<const int> tiles, core::Vec3f centre, float radius) const;
   static int channels(core::EditLayer layer);
 
   // The change feed: every texture write that goes through changed(), push() or restore() is
@@ -183,6 +196,7 @@ private:
   std::array<Texture, 4> textures_, scratch_;
   bool deferring_ = false;
   bool deferPositions_ = false;
+  bool software_ = false; ///< softwareRenderer()
   /// Per layer, a flag per kStaleBlock² block of texels whose pull is deferred (empty: none).
   static constexpr int kStaleBlock = 32;
   std::array<std::vector<std::uint8_t>, 4> staleBlocks_;
@@ -191,7 +205,8 @@ private:
   std::function<void(const DocumentChange&)> follower_;
   /// The tile bounds' refresh after a pass: a reduction on the GPU (made on first use).
   std::unique_ptr<detail::TileBoundsPass> boundsPass_;
-  std::unique_ptr<detail::FiniteCheckPass> finitePass_; // holdsOnlyFinite's, made on first use
+  std::unique_ptr<detail::FiniteCheckPass> finitePass_;      // holdsOnlyFinite's, made on first use
+  mutable std::unique_ptr<detail::AreaNormalPass> areaPass_; // areaSum's, made on first use
   void refreshBounds(std::span<const core::TexelRect> rects);
   /// Marks the kStaleBlock² blocks that rects meet as waiting for a read-back.
   void markStale(core::EditLayer layer, std::span<const core::TexelRect> rects);

@@ -64,6 +64,12 @@ void syncTiles(const GpuDocument& document, std::span<const int> tiles);
 /// normals read, and the border's strips when they reach across a seam.
 void syncAround(const GpuDocument& document, double x, double y);
 
+/// The area vectors' sum areaNormal averages, over the cells of tiles (core::TileBounds numbers)
+/// read from the mirror (synced first) on the CPU: the same sum as GpuDocument::areaSum up to
+/// float rounding (its order differs). Where the driver is a software rasterizer.
+AreaSum areaSumOnCpu(const GpuDocument& document, std::span<const int> tiles, core::Vec3f centre,
+                     float radius);
+
 /// The mean of the area-weighted normals of the triangles whose centroids lie within radius
 /// of centre: the same however the samples are spread there, so a relaxed or an evened-out
 /// surface is pushed the same way; fallback when fewer than kAreaNormalTriangles lie there.
