@@ -1,8 +1,11 @@
-// Issue 33's newcomer target: a snowman built with the Add menu and the canvas's G / S (and one
-// R, for the hat) in under 20 actions, every one of them real X input (XTEST) as a newcomer's
-// mouse and keyboard give it: menus opened and chosen with clicks, the view panned with
-// Shift+middle drag, objects moved by the pointer and typed amounts. The Add menu offers no
-// torus yet, so the scarf is left out. Drawn through the real VTK viewport (xcb, llvmpipe).
+// Issue 33's newcomer target: a snowman (three balls, a cylinder hat, a capsule nose, two sphere
+// eyes, a torus scarf) built with the Add menu and the canvas's G / S alone in under 20 actions,
+// every one of them real X input (XTEST) as a newcomer's mouse and keyboard give it: menus
+// opened and chosen with clicks (the menu bar's Add, or Shift+A at the pointer), the view panned
+// with Shift+middle drag, objects moved by the pointer and scaled by typed amounts. Add stands
+// a new object upright at the view's centre (the hat, the scarf lying flat), or with Shift+A on
+// the surface under the pointer (the nose out of the face, the eyes on it). Drawn through the
+// real VTK viewport (xcb, llvmpipe).
 #include "camera_control.h"
 #include "main_window.h"
 #include "modeller.h"
@@ -105,6 +108,22 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
     ++actions;
     return QTest::qWaitFor([&] { return modeller.objectCount() == before + 1; }, 5000);
   };
+  // Shift+A with the pointer at `at`: the Add menu pops up there, a click on the shape adds it
+  // standing on the surface under `at`. One action.
+  const auto addAt = [&](QPoint at, const char* actionName) {
+    auto* menu = window->findChild<QMenu*>(QStringLiteral("menuAdd"));
+    QAction* item = window->action(actionName);
+    if (!menu || !item) return false;
+    const int before = modeller.objectCount();
+    input.moveTo(at);
+    input.press({XK_Shift_L, XK_a});
+    if (!QTest::qWaitFor([&] { return menu->isVisible(); }, 3000)) return false;
+    QTest::qWait(100);
+    input.moveTo(menu->mapToGlobal(menu->actionGeometry(item).center()));
+    input.click(1);
+    ++actions;
+    return QTest::qWaitFor([&] { return modeller.objectCount() == before + 1; }, 5000);
+  };
   // A key gesture: the pointer on the object, the key, then the pointer to `to` (when given),
   // then typed keys, then a click (pointer) or Enter (typed): one action.
   const auto gesture = [&](KeySym key, std::optional<QPoint> from, std::optional<QPoint> to,
@@ -166,21 +185,12 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
   QVERIFY(moveTo({0, middleBall.centre.y + middleBall.half.y + head.half.y * 0.8f, 0}));
   head = worldBox(modeller, 2);
 
-  // 6–8. The hat: a cylinder (its axis along z) stood up with R X 90, then on the head with G.
+  // 6–7. The hat: a cylinder, upright as Add stands it, put on the head with G.
   QVERIFY(add("actionAddCylinder"));
-  QVERIFY(gesture(XK_r, std::nullopt, std::nullopt, {XK_x, XK_9, XK_0}));
-  QCOMPARE(modeller.objectAt(3).transform.rotationDegrees.x, 90.0f);
+  QCOMPARE(modeller.objectAt(3).transform.rotationDegrees.x, -90.0f); // its z axis up
   Box hat = worldBox(modeller, 3);
   QVERIFY(moveTo({0, head.centre.y + head.half.y + hat.half.y * 0.7f, 0}));
 
-  // 9–11. The carrot nose: a capsule (along z) moved to the head's centre, then out of its front
-  //       by the head's radius, typed (G Z <r>).
-  QVERIFY(add("actionAddCapsule"));
-  QVERIFY(moveTo(head.centre));
-  const QString radius = QString::number(double(head.half.z), 'f', 2);
-  std::vector<KeySym> keys{XK_z};
-  for (const QChar ch : radius)
-    keys.push_back(ch == u'.' ? XK_period : static_cast<KeySym>(ch.toLatin1()));
   const auto typeGesture = [&](KeySym key, const std::vector<KeySym>& typed) {
     const int k = modeller.activeObject();
     input.moveTo(screenOf(centreOf(k)));
@@ -193,29 +203,51 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
     ++actions;
     return QTest::qWaitFor([&] { return mode->kind() == ObjectTransformMode::Kind::None; }, 2000);
   };
-  QVERIFY(typeGesture(XK_g, keys));
+  const auto digits = [](double value) {
+    std::vector<KeySym> keys;
+    for (const QChar ch : QString::number(value, 'f', 2))
+      keys.push_back(ch == u'.' ? XK_period : static_cast<KeySym>(ch.toLatin1()));
+    return keys;
+  };
 
-  // 12–19. Two eyes: a sphere each, S 0.2, G to beside the nose and a little above, G Z out.
+  // 8–11. Two eyes: Shift+A on the face, a little above its middle and to one side, Sphere,
+  //       then S 0.2.
   for (const float side : {-1.0f, 1.0f}) {
-    QVERIFY(add("actionAddSphere"));
+    QVERIFY(addAt(screenOf({side * 0.35f * head.half.x, head.centre.y + 0.3f * head.half.y, 0}),
+                  "actionAddSphere"));
     QVERIFY(typeGesture(XK_s, {XK_0, XK_period, XK_2}));
-    QVERIFY(moveTo({side * 0.4f * head.half.x, head.centre.y + 0.3f * head.half.y, 0}));
-    QVERIFY(typeGesture(XK_g, keys));
   }
 
-  // The snowman: seven objects named by their shapes, stacked bottom to hat, face in front.
+  // 12–13. The carrot nose: Shift+A on the middle of the face, Capsule: it stands out of the
+  //        face; S 0.5 makes it a carrot's size.
+  QVERIFY(addAt(screenOf(head.centre), "actionAddCapsule"));
+  QVERIFY(typeGesture(XK_s, {XK_0, XK_period, XK_5}));
+
+  // 14–16. The scarf: a torus, lying flat as Add stands it, moved with G to where the head
+  //        meets the middle ball, then S to the neck's size (typed).
+  QVERIFY(add("actionAddTorus"));
+  const float neckY =
+      0.5f * (middleBall.centre.y + middleBall.half.y + head.centre.y - head.half.y);
+  QVERIFY(moveTo({0, neckY, 0}));
+  // Its rim 0.95 of the head's radius: the tube (0.7 to 1 of the rim) half in the neck, whose
+  // radius is about 0.6 of the head's where the head sits 0.8 of its radius into the ball.
+  const float ringRadius = worldBox(modeller, 7).half.x;
+  QVERIFY(typeGesture(XK_s, digits(0.95 * head.half.x / ringRadius)));
+
+  // The snowman: eight objects named by their shapes, stacked bottom to hat, face in front,
+  // the scarf around the neck.
   QVERIFY2(actions < 20, qPrintable(QString("%1 actions").arg(actions)));
-  QCOMPARE(modeller.objectCount(), 7);
+  QCOMPARE(modeller.objectCount(), 8);
   QStringList names;
   for (int k = 0; k < modeller.objectCount(); ++k)
     names << QString::fromStdString(modeller.objectAt(k).name);
-  QCOMPARE(names, QStringList({"Model", "Sphere", "Sphere.001", "Cylinder", "Capsule", "Sphere.002",
-                               "Sphere.003"}));
+  QCOMPARE(names, QStringList({"Model", "Sphere", "Sphere.001", "Cylinder", "Sphere.002",
+                               "Sphere.003", "Capsule", "Torus"}));
   std::vector<Box> boxes;
-  for (int k = 0; k < 7; ++k)
+  for (int k = 0; k < 8; ++k)
     boxes.push_back(worldBox(modeller, k));
   QString layout;
-  for (int k = 0; k < 7; ++k)
+  for (int k = 0; k < 8; ++k)
     layout += QString("%1: (%2, %3, %4) ± (%5, %6, %7)\n")
                   .arg(names[k])
                   .arg(double(boxes[k].centre.x), 0, 'f', 2)
@@ -241,10 +273,20 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
     QVERIFY2(std::abs(boxes[k].centre.y - boxes[2].centre.y) < boxes[2].half.y * 0.5f, why);
     QVERIFY2(boxes[k].centre.z > boxes[2].centre.z + 0.8f * boxes[2].half.z, why);
   }
-  QVERIFY2(boxes[5].centre.x < -0.1f * boxes[2].half.x &&
-               boxes[6].centre.x > 0.1f * boxes[2].half.x,
+  QVERIFY2(boxes[4].centre.x < -0.1f * boxes[2].half.x &&
+               boxes[5].centre.x > 0.1f * boxes[2].half.x,
            why);
-  QVERIFY2(boxes[4].half.z > boxes[4].half.x, why); // the carrot points out of the face
+  QVERIFY2(std::abs(boxes[6].centre.x) < 0.05f * boxes[2].half.x, why);
+  QVERIFY2(boxes[6].half.z > boxes[6].half.x, why); // the carrot points out of the face
+  // The scarf: flat, centred on the neck's axis at its height, its hole narrower than the neck
+  // (0.6 of the head's radius there) and its rim wider: it goes around the neck.
+  const Box& scarf = boxes[7];
+  QVERIFY2(scarf.half.y < 0.5f * scarf.half.x && std::abs(scarf.half.x - scarf.half.z) < 0.01f,
+           why);
+  QVERIFY2(std::abs(scarf.centre.x) < 0.05f && std::abs(scarf.centre.z) < 0.05f, why);
+  QVERIFY2(std::abs(scarf.centre.y - neckY) < 0.2f * head.half.y, why);
+  const float hole = scarf.half.x * 0.4f, neck = 0.6f * boxes[2].half.x;
+  QVERIFY2(hole < neck && scarf.half.x > neck, why);
   qInfo("%s%d actions", why, actions);
 }
 

@@ -52,6 +52,18 @@ core::Vec3f ObjectPlacement::directionToLocal(core::Vec3f world) const {
   return multiply(inverse_, world.x, world.y, world.z);
 }
 
+core::Vec3f ObjectPlacement::normalToWorld(core::Vec3f local) const {
+  const Matrix& m = inverse_; // its transpose times the normal
+  const double x = m[0] * local.x + m[3] * local.y + m[6] * local.z;
+  const double y = m[1] * local.x + m[4] * local.y + m[7] * local.z;
+  const double z = m[2] * local.x + m[5] * local.y + m[8] * local.z;
+  const double sign = determinant(linear_) < 0 ? -1.0 : 1.0;
+  const double length = std::sqrt(x * x + y * y + z * z);
+  if (!(length > 0)) return {};
+  return {static_cast<float>(sign * x / length), static_cast<float>(sign * y / length),
+          static_cast<float>(sign * z / length)};
+}
+
 core::Ray ObjectPlacement::rayToLocal(const core::Ray& ray) const {
   return {toLocal(ray.origin), core::normalize(directionToLocal(ray.direction))};
 }

@@ -24,6 +24,8 @@ public:
   /// A world-space camera axis a dotted with a world normal equals L⁻¹ a dotted with the local
   /// normal (before the normal's own renormalization), so this also carries the view's axes.
   core::Vec3f directionToLocal(core::Vec3f world) const;
+  /// A local surface normal in world space: L⁻ᵀ · n, made unit (a mirroring L keeps the side).
+  core::Vec3f normalToWorld(core::Vec3f local) const;
   /// A world ray in object space, its direction unit (distances along it in object units).
   core::Ray rayToLocal(const core::Ray& ray) const;
   /// The world box holding box's eight transformed corners.

@@ -4,6 +4,7 @@
 #include "camera_views.h"
 #include "gl_host.h"
 #include "lod_display.h"
+#include "object_pick.h"
 #include "object_placement.h"
 #include "stroke_input.h"
 #include "view_looks.h"
@@ -113,6 +114,9 @@ public:
   /// The surface point under widget position p (logical pixels), if any, in the active
   /// object's space (the pointer's ray carried there by placement()).
   std::optional<core::PickHit> pickAt(QPointF p) const;
+  /// The visible surface of any object under widget position p, in world space, its normal
+  /// turned towards the viewer (Shift+A adds there); nothing over the background.
+  std::optional<SurfacePick> surfaceAt(QPointF p) const;
   /// Where point p of the active object's space appears in the widget (logical pixels; the
   /// left half side by side).
   QPointF project(core::Vec3f p) const;
