@@ -9,6 +9,7 @@
 #include "modeller.h"
 #include "object_merge.h"
 #include "objects_panel.h"
+#include "scene_step.h"
 #include "test_window.h"
 #include "viewport_widget.h"
 #include "x_input.h" // last: X11's macros are undefined at its end
@@ -347,10 +348,25 @@ void ObjectsCommandsRenderTest::hKeysHideAndShowWhatIsDrawnAndPicked() {
   QCOMPARE(list->topLevelItem(0)->checkState(ObjectsPanel::Visible), Qt::Unchecked);
   QCOMPARE(list->topLevelItem(1)->checkState(ObjectsPanel::Visible), Qt::Checked);
 
+  const std::size_t steps = modeller.history().undoCount();
   input.press({XK_Alt_L, XK_h});
   QVERIFY(QTest::qWaitFor(
       [&] { return modeller.objectAt(0).visible && modeller.objectAt(2).visible; }, 3000));
   QVERIFY(drawn() == (std::array<bool, 3>{true, true, true}));
+  // Show All was one step, as Hide Others was: one undo hides both again.
+  QCOMPARE(modeller.history().undoCount(), steps + 1);
+  const app::SceneHistory::Entry* shown = modeller.history().nextUndoEntry();
+  QVERIFY(shown && shown->scene);
+  QCOMPARE(shown->scene->label, std::string("Show All"));
+  QCOMPARE(shown->scene->changes.size(), std::size_t{2});
+  QVERIFY(modeller.undoStroke());
+  QVERIFY(!modeller.objectAt(0).visible && !modeller.objectAt(2).visible);
+  QVERIFY(modeller.objectAt(1).visible);
+  const app::SceneHistory::Entry* hidden = modeller.history().nextUndoEntry();
+  QVERIFY(hidden && hidden->scene);
+  QCOMPARE(hidden->scene->label, std::string("Hide Others"));
+  QVERIFY(modeller.redoStroke());
+  QVERIFY(modeller.objectAt(0).visible && modeller.objectAt(2).visible);
   // Alt+H was taken by the viewport, not by the Help menu's mnemonic.
   QVERIFY(!QApplication::activePopupWidget());
 }

@@ -85,6 +85,9 @@ public:
   /// history ("Hide Hat", "Lock Body", "Rename Ball → Head"): objectsChanged follows a change.
   /// renameObject returns why a name is refused (empty when it was taken).
   bool setObjectVisible(int k, bool visible);
+  /// The same for several objects as one step named label (Show All, Hide Others): one undo
+  /// brings them all back. No step when none changes.
+  bool setObjectsVisible(const std::vector<int>& objects, bool visible, const std::string& label);
   bool setObjectLocked(int k, bool locked);
   QString renameObject(int k, const QString& name);
   /// Places object k (the door every move, rotation and scale goes through: the G/R/S mode's

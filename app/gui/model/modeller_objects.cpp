@@ -88,6 +88,23 @@ bool Modeller::setObjectVisible(int k, bool visible) {
   return changeLook(k, look, (visible ? "Show " : "Hide ") + look.name).isEmpty();
 }
 
+bool Modeller::setObjectsVisible(const std::vector<int>& objects, bool visible,
+                                 const std::string& label) {
+  SceneStep step;
+  step.label = label;
+  for (int k : objects) {
+    if (k < 0 || k >= objectCount()) return false;
+    const ObjectLook before = lookOf(scene_.objects[std::size_t(k)]);
+    if (before.visible == visible) continue;
+    ObjectLook after = before;
+    after.visible = visible;
+    step.changes.push_back({ids_[std::size_t(k)], before, after});
+  }
+  if (step.changes.empty()) return true;
+  step.activeBefore = step.activeAfter = ids_[std::size_t(active_)];
+  return doStep(std::move(step)).isEmpty();
+}
+
 bool Modeller::setObjectLocked(int k, bool locked) {
   if (k < 0 || k >= objectCount()) return false;
   ObjectLook look = lookOf(scene_.objects[std::size_t(k)]);

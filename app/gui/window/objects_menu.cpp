@@ -61,10 +61,13 @@ void duplicate(MainWindow& window, int axis) {
 }
 
 // H, Shift+H and Alt+H through the one door for an object's eye (setObjectVisible).
-void showObjects(MainWindow& window, bool others, bool shown) {
+// One step for all of them (Show All, Hide Others): one undo brings them back.
+void showObjects(MainWindow& window, bool all, bool shown, const std::string& label) {
   Modeller& modeller = *window.modeller();
+  std::vector<int> objects;
   for (int k = 0; k < modeller.objectCount(); ++k)
-    if ((k != modeller.activeObject()) == others) modeller.setObjectVisible(k, shown);
+    if (all || k != modeller.activeObject()) objects.push_back(k);
+  modeller.setObjectsVisible(objects, shown, label);
 }
 
 QMenu* viewMenuOf(MainWindow& window) {
@@ -145,16 +148,14 @@ void addObjectsMenu(MainWindow& window) {
                               MainWindow::tr("Hides every object but the edited one"),
                               QKeySequence(Qt::SHIFT | Qt::Key_H));
   QObject::connect(others, &QAction::triggered, &window,
-                   [&window] { showObjects(window, true, false); });
+                   [&window] { showObjects(window, false, false, "Hide Others"); });
   QAction* showAll =
       addAction(menu, MainWindow::tr("&Show All"), "actionShowAllObjects",
                 MainWindow::tr("Shows every hidden object"), QKeySequence(Qt::ALT | Qt::Key_H));
   // Named in the menu; the key itself is taken on the viewport (objectKeyAction).
   showAll->setShortcutContext(Qt::WidgetShortcut);
-  QObject::connect(showAll, &QAction::triggered, &window, [&window] {
-    showObjects(window, true, true);
-    showObjects(window, false, true);
-  });
+  QObject::connect(showAll, &QAction::triggered, &window,
+                   [&window] { showObjects(window, true, true, "Show All"); });
 
   menu->addSeparator();
   QAction* frame = addAction(menu, MainWindow::tr("&Frame Selected"), "actionFrameSelected",
