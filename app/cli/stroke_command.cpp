@@ -291,6 +291,11 @@ Command addStrokeCommand(CLI::App& app) {
           progress.count("dabs", done, expected);
         });
         const double perDab = result.dabs ? result.engineMs / result.dabs : 0.0;
+        // The dabs after the first move: what a long stroke costs per dab, without what the
+        // first dab pays once (programs compiled, scratch textures made).
+        const int laterDabs = result.dabs - result.firstMoveDabs;
+        const double sustained =
+            laterDabs > 0 ? (result.engineMs - result.firstMoveMs) / laterDabs : perDab;
         std::ostringstream report; // made before the save, which commits last
         if (opt->json)
           report << app::JsonReply{{"output", opt->output},
@@ -298,6 +303,13 @@ Command addStrokeCommand(CLI::App& app) {
                                    {"dabs", result.dabs},
                                    {"engine_ms", result.engineMs},
                                    {"ms_per_dab", perDab},
+                                   {"first_dab_ms", result.firstMoveMs},
+                                   {"sustained_ms_per_dab", sustained},
+                                   {"phases_ms",
+                                    {{"centre", result.phases.centreMs},
+                                     {"reach", result.phases.reachMs},
+                                     {"undo", result.phases.undoMs},
+                                     {"passes", result.phases.passesMs}}},
                                    {"changed_tiles", result.changedTiles},
                                    {"undo_bytes", result.stepBytes}}
                         .dump()

@@ -249,6 +249,9 @@ std::unique_ptr<StrokeEnding> SculptSession::concludeStroke() {
   ActiveStroke& st = *parts->stroke;
   parts->end.dabs = st.stroke->dabs();
   parts->end.engineMs = st.stroke->engineMs();
+  parts->end.firstMoveMs = st.stroke->firstMoveMs();
+  parts->end.firstMoveDabs = st.stroke->firstMoveDabs();
+  parts->end.phases = st.stroke->phases();
   lastRelaxation_ = std::move(st.keep.relaxations);
   parts->record = st.stroke->finish(st.start.brushId);
   parts->mirror = &document_->document();

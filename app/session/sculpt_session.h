@@ -82,11 +82,14 @@ struct DabRun {
 
 /// How a stroke ended (SculptSession::finishStroke).
 struct StrokeEnd {
-  std::string label;            ///< the brush id; empty when nothing was recorded
-  int dabs = 0;                 ///< mirrored ones included
-  double engineMs = 0;          ///< the brush engine's time and keep detail's, file I/O excluded
-  std::size_t changedTiles = 0; ///< tiles of the step (the stroke and its relaxation)
-  std::size_t stepBytes = 0;    ///< memory the step holds (core::EditStep::computeBytes)
+  std::string label;      ///< the brush id; empty when nothing was recorded
+  int dabs = 0;           ///< mirrored ones included
+  double engineMs = 0;    ///< the brush engine's time and keep detail's, file I/O excluded
+  double firstMoveMs = 0; ///< of engineMs, the first move's (its first dab): paid once
+  int firstMoveDabs = 0;  ///< the dabs of that move
+  gpu::StrokeSession::Phases phases; ///< where the dabs' time went
+  std::size_t changedTiles = 0;      ///< tiles of the step (the stroke and its relaxation)
+  std::size_t stepBytes = 0;         ///< memory the step holds (core::EditStep::computeBytes)
 };
 
 class SculptSession;

@@ -11,6 +11,8 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 
+#include <cmath>
+
 class CliStrokeTest : public QObject {
   Q_OBJECT
 
@@ -72,6 +74,22 @@ void CliStrokeTest::strokeReportsAndChangesTheDocument() {
   QCOMPARE(stroke["brush"].toString(), QString("push"));
   QVERIFY(stroke["dabs"].toInt() >= 3); // 0.2 of the image at spacing 0.25 × radius
   QVERIFY(stroke["engine_ms"].toDouble() > 0);
+  // The first dab's time and the later dabs' mean make up the engine's time.
+  const double first = stroke["first_dab_ms"].toDouble(),
+               sustained = stroke["sustained_ms_per_dab"].toDouble();
+  QVERIFY2(first > 0 && sustained > 0 && first < stroke["engine_ms"].toDouble(),
+           qPrintable(QString("%1 and %2").arg(first).arg(sustained)));
+  const double total = first + sustained * (stroke["dabs"].toInt() - 1);
+  QVERIFY2(std::abs(total - stroke["engine_ms"].toDouble()) < 1e-6 * total + 1e-9,
+           qPrintable(QString::number(total)));
+  // Where the dabs' time went: each phase took some of it, together not more than all of it.
+  const QJsonObject phases = stroke["phases_ms"].toObject();
+  double phased = 0;
+  for (const char* phase : {"centre", "reach", "undo", "passes"}) {
+    QVERIFY2(phases[phase].toDouble() > 0, phase);
+    phased += phases[phase].toDouble();
+  }
+  QVERIFY2(phased <= stroke["engine_ms"].toDouble(), qPrintable(QString::number(phased)));
   QVERIFY(stroke["changed_tiles"].toInt() > 0);
   QVERIFY(stroke["undo_bytes"].toInt() > 0);
   RUN_JSON(info, "info", out, "--json");

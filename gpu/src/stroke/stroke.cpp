@@ -141,6 +141,9 @@ struct StrokeSession::State {
   double travelled = 0; ///< along the surface as it began, since the last dab
   int dabs = 0;
   double engineMs = 0;
+  std::optional<double> firstMoveMs; ///< set by the first move that dabbed
+  int firstMoveDabs = 0;
+  StrokeSession::Phases phases;
   std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
   std::set<std::array<int, 4>> touchedSeams; ///< border runs seamed since the last takeTouched()
   std::function<void(int)> onDab;            ///< told the dab count after each dab, if set
@@ -283,6 +286,12 @@ struct StrokeSession::State {
   // mirror-equal dabs.
   void dabAt(std::array<double, 2> xy, float radius, float strength, float pressure,
              std::optional<core::Vec3f> cursorDrag = std::nullopt) {
+    const auto began = std::chrono::steady_clock::now();
+    const auto lap = [](std::chrono::steady_clock::time_point& from, double& into) {
+      const auto now = std::chrono::steady_clock::now();
+      into += std::chrono::duration<double, std::milli>(now - from).count();
+      from = now;
+    };
     const int n = document.grid().width, h = document.grid().height;
     // The mirror, each region synced before it is read: the rest may wait for its read-back.
     const core::GeometryImage& image = document.mirror().positions;
@@ -340,6 +349,8 @@ struct StrokeSession::State {
       }
     }
     if (first) anchorNormal = images[0].centreNormal;
+    auto at = began;
+    lap(at, phases.centreMs);
     const bool keepAnchors = brush.stroke == StrokeKind::Anchored && first;
     for (std::size_t k = 0; k < images.size(); ++k) {
       Dab& dab = images[k];
@@ -354,6 +365,7 @@ struct StrokeSession::State {
       std::vector<core::TexelRect> reach = brush.stroke == StrokeKind::Anchored && !first
                                                ? anchorReach[k]
                                                : engine.reach(document, brush.id, dab);
+      lap(at, phases.reachMs);
       if (keepAnchors) {
         anchors.push_back(dab);
         anchorReach.push_back(reach);
@@ -363,6 +375,7 @@ struct StrokeSession::State {
       for (const core::TexelRect& r : seamRuns(reach, document.side(), document.rows(),
                                                document.topology())) // the seaming pass's partners
         undo.cover(r);
+      lap(at, phases.undoMs);
       DabResult done;
       try {
         done = engine.dab(document, brush.id, dab, std::move(reach));
@@ -370,6 +383,7 @@ struct StrokeSession::State {
         abandon();
         throw;
       }
+      lap(at, phases.passesMs);
       for (const core::TexelRect& t : done.tiles)
         touchedTiles.insert({t.x, t.y, t.width, t.height});
       for (const core::TexelRect& t : done.seams)
@@ -400,8 +414,13 @@ struct StrokeSession::State {
     } else {
       walkTo(xy, radius, strength, pressure);
     }
-    engineMs +=
+    const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    engineMs += ms;
+    if (!firstMoveMs && dabs > before) {
+      firstMoveMs = ms;
+      firstMoveDabs = dabs - before;
+    }
     return dabs - before;
   }
 
@@ -608,6 +627,18 @@ int StrokeSession::dabs() const {
 
 double StrokeSession::engineMs() const {
   return state_->engineMs;
+}
+
+double StrokeSession::firstMoveMs() const {
+  return state_->firstMoveMs.value_or(0.0);
+}
+
+int StrokeSession::firstMoveDabs() const {
+  return state_->firstMoveDabs;
+}
+
+StrokeSession::Phases StrokeSession::phases() const {
+  return state_->phases;
 }
 
 core::EditStep StrokeSession::finish(const std::string& label) {

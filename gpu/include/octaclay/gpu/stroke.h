@@ -116,6 +116,20 @@ public:
 
   int dabs() const;
   double engineMs() const;
+  /// The engine time of the stroke's first move and the dabs it made (its first dab, and
+  /// its mirror images): what a stroke pays once (programs compiled on first use, scratch
+  /// textures made), apart from the sustained cost of the dabs after it.
+  double firstMoveMs() const;
+  int firstMoveDabs() const;
+  /// Where the dabs' engine time went so far, summed over the dabs (the rest of engineMs() is
+  /// the path's walk and the stroke's own bookkeeping).
+  struct Phases {
+    double centreMs = 0; ///< each dab's centre, normal (the area normal) and mirror images
+    double reachMs = 0;  ///< the tiles each dab can change (BrushEngine::reach)
+    double undoMs = 0;   ///< the undo capture of tiles not touched before
+    double passesMs = 0; ///< the passes (BrushEngine::dab: brush, seam, tile bounds)
+  };
+  Phases phases() const;
   /// The stroke's undo record, labelled; the session must not be used afterwards. When a written
   /// layer now holds a non-finite value or a position beyond ±1e15, the layers are restored
   /// bit for bit and core::Error(InvalidInput) names the sample instead. A pass the watchdog had
