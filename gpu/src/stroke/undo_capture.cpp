@@ -27,6 +27,7 @@ void UndoCapture::cover(core::TexelRect rect) {
           if (layer == core::EditLayer::Positions) at->second = static_cast<int>(before_.size());
           capture(layer, tx, ty);
         }
+  pool_.flushCopies(); // copied before the dab that follows writes the layers
 }
 
 void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
@@ -34,7 +35,10 @@ void UndoCapture::coverTile(core::EditLayer layer, int tx, int ty) {
     cover(core::EditStepRecorder::tileRegion(side_, rows_, tx, ty));
     return;
   }
-  if (extra_.insert({static_cast<int>(layer), tx, ty}).second) capture(layer, tx, ty);
+  if (extra_.insert({static_cast<int>(layer), tx, ty}).second) {
+    capture(layer, tx, ty);
+    pool_.flushCopies();
+  }
 }
 
 core::Vec3f UndoCapture::positionBefore(core::Sample s) const {

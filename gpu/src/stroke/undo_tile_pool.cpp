@@ -6,8 +6,11 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
+#include <utility>
 
 namespace octaclay::gpu::detail {
 namespace {
@@ -33,33 +36,87 @@ const Texture& UndoTilePool::page(const Slot& s) const {
 
 int UndoTilePool::capture(core::EditLayer layer, core::TexelRect region) {
   const Texture& source = document_.texture(layer);
-  const int k = used_[index(layer)]++;
-  const int perPage = kSlotsPerSide * kSlotsPerSide;
   std::vector<Texture>& pages = pages_[index(layer)];
-  if (k / perPage >= static_cast<int>(pages.size()))
-    pages.emplace_back(kSlotsPerSide * kTile, kSlotsPerSide * kTile, source.format());
+  int& used = used_[index(layer)];
+  int perSide = pages.empty() ? 0 : pages.back().width() / kTile;
+  if (used == perSide * perSide) { // none yet, or the last one full: the next, larger
+    perSide = pages.empty() ? kFirstSlotsPerSide : std::min(2 * perSide, kMostSlotsPerSide);
+    pages.emplace_back(perSide * kTile, perSide * kTile, source.format());
+    used = 0;
+  }
+  const int k = used++;
   Slot slot;
   slot.layer = layer;
   slot.region = region;
-  slot.page = k / perPage;
-  slot.x = (k % perPage % kSlotsPerSide) * kTile;
-  slot.y = (k % perPage / kSlotsPerSide) * kTile;
-  glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, region.x, region.y, 0, page(slot).id(),
-                     GL_TEXTURE_2D, 0, slot.x, slot.y, 0, region.width, region.height, 1);
+  slot.page = static_cast<int>(pages.size()) - 1;
+  slot.x = (k % perSide) * kTile;
+  slot.y = (k / perSide) * kTile;
+  // Joined to the copy held back when it continues it in the source and in the pool (a row
+  // of whole tiles): one copy a row of tiles instead of one a tile.
+  PendingCopy& copy = pending_[index(layer)];
+  if (copy.page == slot.page && copy.toY == slot.y && copy.toX + copy.width == slot.x &&
+      copy.fromY == region.y && copy.fromX + copy.width == region.x &&
+      copy.height == region.height && copy.width % kTile == 0) {
+    copy.width += region.width;
+  } else {
+    issue(layer, copy);
+    copy = {region.x, region.y, slot.page, slot.x, slot.y, region.width, region.height};
+  }
   slots_.push_back(std::move(slot));
   unstarted_.push_back(static_cast<int>(slots_.size()) - 1);
   return static_cast<int>(slots_.size()) - 1;
 }
 
+void UndoTilePool::issue(core::EditLayer layer, PendingCopy& copy) {
+  if (copy.page < 0 || copy.width == 0) return;
+  const Texture& target = pages_[index(layer)][static_cast<std::size_t>(copy.page)];
+  glCopyImageSubData(document_.texture(layer).id(), GL_TEXTURE_2D, 0, copy.fromX, copy.fromY, 0,
+                     target.id(), GL_TEXTURE_2D, 0, copy.toX, copy.toY, 0, copy.width, copy.height,
+                     1);
+  copy = {};
+}
+
+void UndoTilePool::flushCopies() {
+  for (std::size_t k = 0; k < pending_.size(); ++k)
+    issue(static_cast<core::EditLayer>(k), pending_[k]);
+}
+
 void UndoTilePool::startDownloads() {
+  flushCopies();
   if (!unstarted_.empty()) {
+    // Slots side by side in a row of one page are read together: by layer, page, row, column.
+    std::sort(unstarted_.begin(), unstarted_.end(), [this](int a, int b) {
+      const Slot &s = slots_[static_cast<std::size_t>(a)], &t = slots_[static_cast<std::size_t>(b)];
+      return std::tie(s.layer, s.page, s.y, s.x) < std::tie(t.layer, t.page, t.y, t.x);
+    });
     Batch batch;
-    for (int k : unstarted_) {
-      Slot& s = slots_[static_cast<std::size_t>(k)];
-      s.batch = static_cast<int>(batches_.size());
-      s.offset = batch.bytes;
-      batch.bytes +=
-          static_cast<std::size_t>(s.region.width) * s.region.height * page(s).packedTexelBytes();
+    std::vector<std::pair<std::size_t, std::size_t>> runs; // [first, end) of unstarted_
+    for (std::size_t first = 0; first < unstarted_.size();) {
+      std::size_t end = first + 1;
+      while (end < unstarted_.size()) {
+        const Slot& last = slots_[static_cast<std::size_t>(unstarted_[end - 1])];
+        const Slot& next = slots_[static_cast<std::size_t>(unstarted_[end])];
+        if (next.layer != last.layer || next.page != last.page || next.y != last.y ||
+            next.x != last.x + kTile)
+          break;
+        ++end;
+      }
+      const Slot& head = slots_[static_cast<std::size_t>(unstarted_[first])];
+      const Slot& tail = slots_[static_cast<std::size_t>(unstarted_[end - 1])];
+      const int width = tail.x + tail.region.width - head.x;
+      int height = 0;
+      for (std::size_t k = first; k < end; ++k)
+        height = std::max(height, slots_[static_cast<std::size_t>(unstarted_[k])].region.height);
+      const std::size_t texelBytes = page(head).packedTexelBytes();
+      for (std::size_t k = first; k < end; ++k) {
+        Slot& s = slots_[static_cast<std::size_t>(unstarted_[k])];
+        s.batch = static_cast<int>(batches_.size());
+        s.offset = batch.bytes + static_cast<std::size_t>(s.x - head.x) * texelBytes;
+        s.stride = width;
+      }
+      batch.bytes += static_cast<std::size_t>(width) * height * texelBytes;
+      runs.emplace_back(first, end);
+      first = end;
     }
     std::size_t capacity = 0;
     if (!spare_.empty()) {
@@ -78,10 +135,13 @@ void UndoTilePool::startDownloads() {
     } else {
       batch.bytes = capacity; // the buffer's size, for the next reuse
     }
-    for (int k : unstarted_) {
-      const Slot& s = slots_[static_cast<std::size_t>(k)];
-      page(s).readToPackBuffer({s.x, s.y, s.region.width, s.region.height}, batch.buffer.id(),
-                               s.offset);
+    for (const auto& [first, end] : runs) {
+      const Slot& head = slots_[static_cast<std::size_t>(unstarted_[first])];
+      int height = 0;
+      for (std::size_t k = first; k < end; ++k)
+        height = std::max(height, slots_[static_cast<std::size_t>(unstarted_[k])].region.height);
+      page(head).readToPackBuffer({head.x, head.y, head.stride, height}, batch.buffer.id(),
+                                  head.offset);
     }
     batch.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     if (!batch.fence) throw GlError("undo capture: no fence for the tiles' download");
@@ -128,14 +188,22 @@ void UndoTilePool::collect(Batch& b) {
     const std::size_t texels = static_cast<std::size_t>(s.region.width) * s.region.height;
     const int c = GpuDocument::channels(s.layer);
     s.texels.resize(texels * static_cast<std::size_t>(c));
-    if (page(s).format() == TextureFormat::Rgba16f) { // RGBA halves; feature keeps rgb
-      std::vector<std::uint16_t> halves(texels * 4);
-      std::memcpy(halves.data(), mapped + s.offset, halves.size() * sizeof(std::uint16_t));
-      for (std::size_t t = 0; t < texels; ++t)
-        for (int j = 0; j < c; ++j)
-          s.texels[t * c + j] = widenHalf(halves[t * 4 + j]);
-    } else { // float32, as many channels as the layer has
-      std::memcpy(s.texels.data(), mapped + s.offset, s.texels.size() * sizeof(float));
+    const std::size_t texelBytes = page(s).packedTexelBytes();
+    const std::size_t width = static_cast<std::size_t>(s.region.width);
+    for (int y = 0; y < s.region.height; ++y) { // its rows within its run's rows
+      const std::byte* row =
+          mapped + s.offset +
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(s.stride) * texelBytes;
+      float* out = &s.texels[static_cast<std::size_t>(y) * width * static_cast<std::size_t>(c)];
+      if (page(s).format() == TextureFormat::Rgba16f) { // RGBA halves; feature keeps rgb
+        std::vector<std::uint16_t> halves(width * 4);
+        std::memcpy(halves.data(), row, halves.size() * sizeof(std::uint16_t));
+        for (std::size_t t = 0; t < width; ++t)
+          for (int j = 0; j < c; ++j)
+            out[t * c + j] = widenHalf(halves[t * 4 + j]);
+      } else { // float32, as many channels as the layer has
+        std::memcpy(out, row, width * static_cast<std::size_t>(c) * sizeof(float));
+      }
     }
     s.collected = true;
   }
@@ -147,6 +215,7 @@ void UndoTilePool::collect(Batch& b) {
 }
 
 void UndoTilePool::restore(int slot) {
+  flushCopies();
   Slot& s = slots_[static_cast<std::size_t>(slot)];
   if (s.batch < 0) startDownloads();
   Batch& b = batches_[static_cast<std::size_t>(s.batch)];

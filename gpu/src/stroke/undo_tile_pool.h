@@ -27,6 +27,9 @@ public:
   /// pool, on the GPU; returns the slot. Its download starts at the next startDownloads().
   /// Throws GlError.
   int capture(core::EditLayer layer, core::TexelRect region);
+  /// Issues the copies capture() holds back to join side-by-side tiles into one: before the
+  /// layers they come from are written.
+  void flushCopies();
   /// Starts downloading the slots captured since the last call (one buffer, one fence), and
   /// takes in the downloads whose fences have signalled, without waiting for the others.
   void startDownloads();
@@ -38,14 +41,19 @@ public:
   void restore(int slot);
 
 private:
-  /// Pool textures hold kSlotsPerSide² tiles each, in their layer's format.
-  static constexpr int kSlotsPerSide = 4;
+  /// Pool textures hold (slots per side)² tiles each, in their layer's format: the first
+  /// kFirstSlotsPerSide across, each next one twice as many up to kMostSlotsPerSide, so a small
+  /// stroke makes one small texture and a large one few (a texture made costs more than the
+  /// copies into it on a real GPU's driver).
+  static constexpr int kFirstSlotsPerSide = 4;
+  static constexpr int kMostSlotsPerSide = 16;
   struct Slot {
     core::EditLayer layer = core::EditLayer::Positions;
     core::TexelRect region;
     int page = 0, x = 0, y = 0; // the pool page and the slot's corner in it
     int batch = -1;             // its download; -1: not started
-    std::size_t offset = 0;     // of its texels in the batch's buffer
+    std::size_t offset = 0;     // of its first texel in the batch's buffer
+    int stride = 0;             // texels from one of its rows to the next there
     bool collected = false;
     std::vector<float> texels;
   };
@@ -59,9 +67,15 @@ private:
   void collect(Batch& batch);
   bool signalled(const Batch& batch) const;
 
+  /// A copy of side-by-side tiles into side-by-side slots, not issued yet (per layer).
+  struct PendingCopy {
+    int fromX = 0, fromY = 0, page = -1, toX = 0, toY = 0, width = 0, height = 0;
+  };
+  void issue(core::EditLayer layer, PendingCopy& copy);
   GpuDocument& document_;
+  std::array<PendingCopy, 4> pending_;
   std::array<std::vector<Texture>, 4> pages_; // per layer
-  std::array<int, 4> used_{};                 // slots used per layer
+  std::array<int, 4> used_{};                 // slots used in each layer's last page
   std::vector<Slot> slots_;
   std::vector<int> unstarted_; // captured, download not started
   std::vector<Batch> batches_;
