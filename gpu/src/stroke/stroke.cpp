@@ -144,9 +144,10 @@ struct StrokeSession::State {
   std::optional<double> firstMoveMs; ///< set by the first move that dabbed
   int firstMoveDabs = 0;
   StrokeSession::Phases phases;
-  std::set<std::array<int, 4>> touchedTiles; ///< since the last takeTouched(), deduplicated
-  std::set<std::array<int, 4>> touchedSeams; ///< border runs seamed since the last takeTouched()
-  std::function<void(int)> onDab;            ///< told the dab count after each dab, if set
+  // Since the last takeTouched(), which sorts and deduplicates them (a set per dab costs more).
+  std::vector<std::array<int, 4>> touchedTiles;
+  std::vector<std::array<int, 4>> touchedSeams; ///< border runs seamed
+  std::function<void(int)> onDab;               ///< told the dab count after each dab, if set
   bool finished = false;
   bool abandoned = false; ///< a dab failed and the stroke was undone
 
@@ -385,9 +386,9 @@ struct StrokeSession::State {
       }
       lap(at, phases.passesMs);
       for (const core::TexelRect& t : done.tiles)
-        touchedTiles.insert({t.x, t.y, t.width, t.height});
+        touchedTiles.push_back({t.x, t.y, t.width, t.height});
       for (const core::TexelRect& t : done.seams)
-        touchedSeams.insert({t.x, t.y, t.width, t.height});
+        touchedSeams.push_back({t.x, t.y, t.width, t.height});
       if (brush.stroke == StrokeKind::Drag) { // the tip moves as the dab's centre moved
         if (first) tips.push_back(dab.centre);
         tips[k] += dab.strokeDelta * (dab.strength * dab.pressure);
@@ -586,6 +587,10 @@ bool StrokeSession::drags() const {
 
 std::vector<core::TexelRect> StrokeSession::takeTouched() {
   State& st = *state_;
+  for (auto* touched : {&st.touchedTiles, &st.touchedSeams}) {
+    std::sort(touched->begin(), touched->end());
+    touched->erase(std::unique(touched->begin(), touched->end()), touched->end());
+  }
   std::vector<core::TexelRect> tiles;
   tiles.reserve(st.touchedTiles.size());
   for (const auto& t : st.touchedTiles)
@@ -609,7 +614,7 @@ void StrokeSession::applyBetweenDabs(const core::EditStep& change) {
   try {
     for (const core::TileChange& t : change.tiles) {
       t.apply(core::TileState::After, apply);
-      st.touchedTiles.insert({t.region.x, t.region.y, t.region.width, t.region.height});
+      st.touchedTiles.push_back({t.region.x, t.region.y, t.region.width, t.region.height});
     }
   } catch (...) { // all or nothing, as a failed dab
     st.abandon();
