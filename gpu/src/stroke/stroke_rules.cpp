@@ -124,9 +124,9 @@ AreaSum areaSumOnCpu(const GpuDocument& document, std::span<const int> near, cor
     ++triangles;
   };
   // Every dab runs this over all the cells its radius covers: rows read in place and the cell's
-  // split (core::cellTriangles: anti-diagonal where i and j lie in the same half) inline, the
-  // triangles in cellTriangles' order, so the sum is the same to the bit. A tile well inside
-  // the sphere (most of them) adds its triangles without the centroid test.
+  // split (core::cellTriangles: anti-diagonal where i and j lie in the same half) inline. A tile
+  // well inside the sphere (most of them) adds its cells without the centroid test, each as
+  // its quad's area vector (c − a) × (d − b), the sum of its two triangles' whichever the split.
   for (int t : near) {
     const core::TexelRect r = bounds.tileRect(t % bounds.tilesX(), t / bounds.tilesX());
     const int iEnd = std::min(r.x + r.width, n), jEnd = std::min(r.y + r.height, h);
@@ -136,17 +136,11 @@ AreaSum areaSumOnCpu(const GpuDocument& document, std::span<const int> near, cor
       const core::Vec4f* below = &image.at(0, j + 1);
       const bool lowJ = j < half;
       if (inside) {
-        for (int i = r.x; i < iEnd; ++i) {
-          const core::Vec3f a = row[i].xyz(), b = row[i + 1].xyz(), c = below[i + 1].xyz(),
-                            d = below[i].xyz();
-          if (!ball || (i < half) == lowJ) { // add()'s triangles, unconditionally
-            sum += core::cross(b - a, d - a);
-            sum += core::cross(c - b, d - b);
-          } else {
-            sum += core::cross(b - a, c - a);
-            sum += core::cross(c - a, d - a);
-          }
-        }
+        core::Vec3f rowSum;
+        for (int i = r.x; i < iEnd; ++i)
+          rowSum +=
+              core::cross(below[i + 1].xyz() - row[i].xyz(), below[i].xyz() - row[i + 1].xyz());
+        sum += rowSum;
         triangles += 2 * (iEnd - r.x);
         continue;
       }
