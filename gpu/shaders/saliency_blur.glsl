@@ -15,7 +15,8 @@ void main() {
   ivec2 s = ivec2(gl_FragCoord.xy);
   float sum = 0.0;
   int along = u_direction.x != 0 ? s.x : s.y;
-  if (along - u_taps >= 0 && along + u_taps <= u_size) {
+  int last = u_direction.x != 0 ? gridCells().x : gridCells().y; // W or H
+  if (along - u_taps >= 0 && along + u_taps <= last) {
     // Every tap inside the image: no wrap (most texels; a software rasterizer pays for each op).
     for (int d = -u_taps; d <= u_taps; ++d)
       sum += kernel[d + u_taps] * texelFetch(u_source, s + d * u_direction, 0).r;

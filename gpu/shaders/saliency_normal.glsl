@@ -9,6 +9,7 @@ int floorDivide(int a, int b) { return a >= 0 ? a / b : -((b - 1 - a) / b); }
 // core::cellSplit: cells split along the anti-diagonal where both halfSide-side indices have the
 // same parity.
 bool antiDiagonal(ivec2 cell) {
+  if (u_topology != 0) return true; // a torus and a plane split every cell so (cellTriangles)
   int halfSide = u_size / 2;
   return ((floorDivide(cell.x, halfSide) & 1) != 0) == ((floorDivide(cell.y, halfSide) & 1) != 0);
 }
@@ -38,9 +39,12 @@ vec3 cellContribution(ivec2 c, ivec2 s, vec3 p) {
 void main() {
   ivec2 s = ivec2(gl_FragCoord.xy);
   int n = u_size, halfSide = u_size / 2;
-  // Side midpoints are halfSide-turn centres: only the cells on one side of the fold count.
-  bool verticalMidpoint = (s.x == 0 || s.x == n) && s.y == halfSide;
-  bool horizontalMidpoint = s.x == halfSide && (s.y == 0 || s.y == n);
+  // The ball's side midpoints are halfSide-turn centres: only the cells on one side of the
+  // fold count. A torus's neighbours wrap; a plane's cells past its boundary are degenerate
+  // (clamped corners) and add nothing.
+  bool ball = u_topology == 0;
+  bool verticalMidpoint = ball && (s.x == 0 || s.x == n) && s.y == halfSide;
+  bool horizontalMidpoint = ball && s.x == halfSide && (s.y == 0 || s.y == n);
   int diBegin = verticalMidpoint ? 0 : -1;
   int djBegin = horizontalMidpoint ? 0 : -1;
   vec3 p = position(s);

@@ -1,9 +1,13 @@
 // The GPU saliency pass against the CPU reference (core::computeSaliency): the same values
-// within a tolerance on a sphere with bumps and on an imported mesh, identified samples equal,
+// within a tolerance on a sphere with bumps, on an imported mesh and on a torus and a plane with
+// bumps (one across the torus's wrap, one on the plane's edge), identified samples equal,
 // the mirror equal to the texture, xyz untouched, and the bumps salient where the smooth sphere
 // is not.
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/normals.h"
+#include "octaclay/core/geometry/sheet.h"
+#include "octaclay/core/geometry/torus.h"
 #include "octaclay/core/import/mesh_validation.h"
 #include "octaclay/core/import/octahedral_resampling.h"
 #include "octaclay/core/import/spherical_parameterization.h"
@@ -19,6 +23,9 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 using namespace octaclay;
 
@@ -40,6 +47,36 @@ core::GeometryImage bumpySphere(int n) {
     t = {d.x * r, d.y * r, d.z * r, 0};
   }
   return image;
+}
+
+// Gaussian bumps (height 0.12, width 0.08) on a surface, each centred on a sample's position and
+// raised along the surface's normal there, so they are the same bumps on any topology.
+core::GeometryImage withBumps(core::GeometryImage image, const std::vector<core::Sample>& at) {
+  const core::GeometryImage smooth = image;
+  for (const core::Sample c : at) {
+    const core::Vec3f centre = smooth.at(c).xyz(), up = core::vertexNormal(smooth, c);
+    for (int j = 0; j < image.rows(); ++j)
+      for (int i = 0; i < image.side(); ++i) {
+        const core::Vec3f p = smooth.at(i, j).xyz();
+        const float d2 = core::dot(p - centre, p - centre);
+        const core::Vec3f raised = image.at(i, j).xyz() + up * (0.12f * std::exp(-d2 / 0.0128f));
+        image.at(i, j) = {raised.x, raised.y, raised.z, 0};
+      }
+  }
+  return image;
+}
+
+// The mean saliency of the samples within radius of p, and of those farther than far.
+std::pair<double, double> nearAndFar(const core::GeometryImage& image, core::Vec3f p, float radius,
+                                     float far) {
+  double near = 0, away = 0;
+  int nearCount = 0, farCount = 0;
+  for (const core::Vec4f& t : image.texels()) {
+    const float d = core::length(t.xyz() - p);
+    if (d < radius) near += t.w, ++nearCount;
+    if (d > far) away += t.w, ++farCount;
+  }
+  return {near / std::max(1, nearCount), away / std::max(1, farCount)};
 }
 
 struct Comparison {
@@ -68,6 +105,7 @@ private slots:
   void bumpySphereMatchesTheCpuReference();
   void importedMeshMatchesTheCpuReference();
   void smoothSphereIsFlatAndBumpsStandOut();
+  void bumpyTorusAndPlaneMatchTheCpuReference();
 
 private:
   // Runs the pass and checks what every run must hold; returns the document's positions.
@@ -89,10 +127,10 @@ core::GeometryImage SaliencyTest::runOnGpu(const core::GeometryImage& image) {
   gpu::GpuDocument document(core::makeDocument(image));
   pass_->run(document);
   const core::GeometryImage& mirror = document.document().positions;
-  const int n = image.size(), side = n + 1;
+  const core::SampleGrid& grid = image.grid();
   // The texture holds what the mirror holds, and xyz are untouched.
   const std::vector<float> texels =
-      document.texture(core::EditLayer::Positions).read({0, 0, side, side});
+      document.texture(core::EditLayer::Positions).read({0, 0, image.side(), image.rows()});
   bool same = true, xyzKept = true;
   float peak = 0, low = 1;
   for (std::size_t k = 0; k < mirror.texelCount(); ++k) {
@@ -109,13 +147,16 @@ core::GeometryImage SaliencyTest::runOnGpu(const core::GeometryImage& image) {
     QVERIFY(low >= 0.0f);
     // Identified samples are bit-for-bit equal.
     std::array<core::Sample, 4> identified;
-    for (int k = 0; k <= n; ++k)
-      for (const core::Sample s :
-           {core::Sample{k, 0}, core::Sample{k, n}, core::Sample{0, k}, core::Sample{n, k}}) {
-        const int count = core::identifiedSamples(n, s, identified);
-        for (int c = 0; c < count; ++c)
-          QCOMPARE(mirror.at(identified[static_cast<std::size_t>(c)]).w, mirror.at(s).w);
-      }
+    std::vector<core::Sample> border;
+    for (int i = 0; i <= grid.width; ++i)
+      border.insert(border.end(), {core::Sample{i, 0}, core::Sample{i, grid.height}});
+    for (int j = 0; j <= grid.height; ++j)
+      border.insert(border.end(), {core::Sample{0, j}, core::Sample{grid.width, j}});
+    for (const core::Sample s : border) {
+      const int count = core::identifiedSamples(grid, s, identified);
+      for (int c = 0; c < count; ++c)
+        QCOMPARE(mirror.at(identified[static_cast<std::size_t>(c)]).w, mirror.at(s).w);
+    }
   }();
   return mirror;
 }
@@ -175,6 +216,36 @@ void SaliencyTest::smoothSphereIsFlatAndBumpsStandOut() {
   QVERIFY(near > 0.2);
   QVERIFY(far < 0.05);
   QVERIFY(near > 10 * far);
+}
+
+// A torus (a W × H image, wrapping both ways) and a plane (clamped at its boundary): the GPU pass
+// matches the CPU reference as on the ball, and the bumps stand out, the one across the torus's
+// wrap and the one on the plane's edge too.
+void SaliencyTest::bumpyTorusAndPlaneMatchTheCpuReference() {
+  const core::Torus torus;
+  const core::GeometryImage ring = core::makeTorus(torus, 128, core::torusHeight(torus, 128));
+  const int w = ring.grid().width, h = ring.grid().height;
+  const std::vector<core::Sample> ringBumps{{0, 0}, {w / 3, h / 2}};
+  const core::GeometryImage sheet = core::makeSheet(core::Sheet::Square, 128);
+  const std::vector<core::Sample> sheetBumps{{64, 64}, {128, 40}};
+  for (const auto& [name, smooth, bumps] :
+       {std::tuple{"torus", ring, ringBumps}, std::tuple{"plane", sheet, sheetBumps}}) {
+    const core::GeometryImage image = withBumps(smooth, bumps);
+    core::GeometryImage reference = image;
+    core::computeSaliency(reference);
+    const core::GeometryImage gpuResult = runOnGpu(image);
+    if (QTest::currentTestFailed()) return;
+    const Comparison c = compare(gpuResult, reference);
+    qInfo("bumpy %s %dx%d: max |GPU - CPU| = %g, mean %g", name, image.grid().width,
+          image.grid().height, c.maxDifference, c.meanDifference);
+    QVERIFY2(c.maxDifference < 1e-4f, qPrintable(QString::number(c.maxDifference)));
+    QVERIFY2(c.meanDifference < 1e-5f, qPrintable(QString::number(c.meanDifference)));
+    for (const core::Sample b : bumps) {
+      const auto [near, far] = nearAndFar(gpuResult, image.at(b).xyz(), 0.1f, 0.6f);
+      qInfo("  bump at (%d, %d): near %.3f, far %.4f", b.i, b.j, near, far);
+      QVERIFY2(near > 10 * far && near > 0.1, name);
+    }
+  }
 }
 
 QTEST_GUILESS_MAIN(SaliencyTest)

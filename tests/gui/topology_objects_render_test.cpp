@@ -234,6 +234,32 @@ void TopologyObjectsRenderTest::aTorusIsAddedDrawnAndSculptedAcrossItsWrap() {
       inside > 20 && outside == 0,
       qPrintable(
           QString("%1 pixels changed around the stroke, %2 elsewhere").arg(inside).arg(outside)));
+
+  // The saliency preview reads the torus's own grid: normalised, the stroke's ridge across the
+  // wrap standing out, column W equal to column 0.
+  modeller.setSaliencyWanted(true);
+  const auto peak = [&] {
+    float most = 0;
+    for (const core::Vec4f& t : modeller.document().positions.texels())
+      most = std::max(most, t.w);
+    return most;
+  };
+  QTRY_COMPARE_WITH_TIMEOUT(peak(), 1.0f, 20000);
+  const core::GeometryImage& salient = modeller.document().positions;
+  float stroked = 0, rest = 0;
+  int restCount = 0;
+  for (int j = 0; j <= h; ++j) {
+    QCOMPARE(salient.at(w, j).w, salient.at(0, j).w);
+    for (int i = 0; i <= w; ++i) {
+      const bool nearWrap = i < w / 16 || i > w - w / 16;
+      if (nearWrap) stroked = std::max(stroked, salient.at(i, j).w);
+      if (i > w / 4 && i < 3 * w / 4) rest += salient.at(i, j).w, ++restCount;
+    }
+  }
+  QVERIFY2(stroked > 10 * rest / float(restCount),
+           qPrintable(QString("%1 near the stroke, %2 on average elsewhere")
+                          .arg(double(stroked))
+                          .arg(double(rest / float(restCount)))));
 }
 
 void TopologyObjectsRenderTest::aPlaneIsAddedDrawnAndSculptedToItsEdge() {

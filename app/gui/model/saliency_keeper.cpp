@@ -23,12 +23,6 @@ void SaliencyKeeper::surfaceEdited() {
 
 void SaliencyKeeper::refresh(gpu::GpuDocument& document) {
   if (!wanted_ || !stale_) return;
-  // Saliency is measured in the ball's octahedral domain (core/lod, gpu::SaliencyPass): a torus
-  // or plane object shows none.
-  if (document.topology() != core::Topology::Octahedral) {
-    stale_ = false;
-    return;
-  }
   if (onCpu_) {
     if (job_.isRunning()) return; // its end starts the next one
     auto image = std::make_shared<core::GeometryImage>(document.document().positions);

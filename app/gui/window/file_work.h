@@ -14,9 +14,8 @@
 
 namespace octaclay::app {
 
-/// Every object of an .exr scene, or the one document of an .ocz. Throws core::Error for what
-/// cannot be read, and for a torus or plane object by name: the modeller's stretch, saliency
-/// and keep detail know the ball's folds only so far.
+/// Every object of an .exr scene, or the one document of an .ocz, balls, tori and planes alike.
+/// Throws core::Error for what cannot be read.
 core::Scene readSceneFile(const QString& path);
 
 /// What File ▸ Import Mesh made: the document, the side it faces, and a line for the status bar

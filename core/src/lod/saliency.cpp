@@ -16,15 +16,17 @@ namespace octaclay::core {
 namespace {
 
 // Curvature of sample s: the mean over its four axis neighbours q of 1 − n(s)·n(q), the
-// neighbours read through wrap().
+// neighbours read through the grid's wrap() (the ball's octahedral tiling, a torus's periods, a
+// plane's boundary).
 std::vector<float> curvature(const GeometryImage& image, const std::vector<Vec3f>& normals) {
-  const int n = image.size(), side = image.side();
+  const SampleGrid& grid = image.grid();
+  const int side = image.side(), rows = image.rows();
   std::vector<float> out(image.texelCount());
   const auto normalAt = [&](Sample s) {
-    const Sample w = wrap(n, s);
+    const Sample w = wrap(grid, s);
     return normals[static_cast<std::size_t>(w.j) * side + w.i];
   };
-  detail::parallelRows(side, [&](int rowBegin, int rowEnd) {
+  detail::parallelRows(rows, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
       for (int i = 0; i < side; ++i) {
         const Vec3f c = normals[static_cast<std::size_t>(j) * side + i];
@@ -49,27 +51,28 @@ std::vector<float> gaussianKernel(float sigma) {
   return k;
 }
 
-// Gaussian blur of a field over the octahedral tiling of the plane. The tiling's symmetries
-// are half-turns and translations, which map rows to rows, so the 2-D blur of the tiled field
-// is exactly a row pass followed by a column pass, each reading through wrap().
-std::vector<float> blur(int n, const std::vector<float>& field, float sigma) {
+// Gaussian blur of a field over the grid's tiling of the plane. The octahedral tiling's
+// symmetries are half-turns and translations, a torus's translations, and a plane's boundary
+// clamps each axis alone: each maps rows to rows, so the 2-D blur of the tiled field is exactly
+// a row pass followed by a column pass, each reading through wrap().
+std::vector<float> blur(const SampleGrid& grid, const std::vector<float>& field, float sigma) {
   const std::vector<float> kernel = gaussianKernel(sigma);
   const int radius = static_cast<int>(kernel.size() / 2);
-  const int side = n + 1;
+  const int w = grid.width, h = grid.height, side = w + 1;
   const auto at = [&](const std::vector<float>& f, int i, int j) {
-    const Sample w = wrap(n, {i, j});
-    return f[static_cast<std::size_t>(w.j) * side + w.i];
+    const Sample s = wrap(grid, {i, j});
+    return f[static_cast<std::size_t>(s.j) * side + s.i];
   };
   std::vector<float> rows(field.size()), out(field.size());
   for (int pass = 0; pass < 2; ++pass) {
     const std::vector<float>& from = pass == 0 ? field : rows;
     std::vector<float>& to = pass == 0 ? rows : out;
-    detail::parallelRows(side, [&](int rowBegin, int rowEnd) {
+    detail::parallelRows(h + 1, [&](int rowBegin, int rowEnd) {
       for (int j = rowBegin; j < rowEnd; ++j)
         for (int i = 0; i < side; ++i) {
           float sum = 0;
           const bool inside =
-              pass == 0 ? i - radius >= 0 && i + radius <= n : j - radius >= 0 && j + radius <= n;
+              pass == 0 ? i - radius >= 0 && i + radius <= w : j - radius >= 0 && j + radius <= h;
           if (inside) {
             const float* base = pass == 0 ? &from[static_cast<std::size_t>(j) * side + i - radius]
                                           : &from[static_cast<std::size_t>(j - radius) * side + i];
@@ -90,9 +93,6 @@ std::vector<float> blur(int n, const std::vector<float>& field, float sigma) {
 } // namespace
 
 void computeSaliency(GeometryImage& image, const SaliencyOptions& options) {
-  // Its blurs and neighbours follow the ball's octahedral grid: a torus or plane would be read
-  // out of bounds.
-  requireOctahedral(image, "saliency", "this image");
   if (const int e = detail::unitScaleExponent(image); e != 0) { // in the model's own units
     GeometryImage scaled = detail::scaledPositions(image, e);
     computeSaliency(scaled, options);
@@ -100,17 +100,17 @@ void computeSaliency(GeometryImage& image, const SaliencyOptions& options) {
       image.texels()[k].w = scaled.texels()[k].w;
     return;
   }
-  const int n = image.size();
+  const SampleGrid& grid = image.grid();
   std::vector<float> scales = options.scales;
   if (scales.empty())
     for (const float s : {1.0f, 2.0f, 4.0f, 8.0f, 16.0f})
-      scales.push_back(std::max(1.0f, s * static_cast<float>(n) / 256.0f));
+      scales.push_back(std::max(1.0f, s * saliencySamplesAcross(grid) / 256.0f));
   const std::vector<float> curv = curvature(image, computeNormals(image));
 
   std::map<float, std::vector<float>> blurred; // σ → G(curvature, σ), each σ blurred once
   const auto blurredAt = [&](float sigma) -> const std::vector<float>& {
     auto it = blurred.find(sigma);
-    if (it == blurred.end()) it = blurred.emplace(sigma, blur(n, curv, sigma)).first;
+    if (it == blurred.end()) it = blurred.emplace(sigma, blur(grid, curv, sigma)).first;
     return it->second;
   };
   std::vector<float> saliency(curv.size(), 0.0f);
@@ -125,15 +125,27 @@ void computeSaliency(GeometryImage& image, const SaliencyOptions& options) {
   std::span<Vec4f> texels = image.texels();
   for (std::size_t k = 0; k < texels.size(); ++k)
     texels[k].w = saliency[k] * scale;
-  // Identified samples have equal curvature and blurs up to rounding: give them one value.
+  // Identified samples have equal curvature and blurs up to rounding: give them one value, the
+  // canonical sample's (a torus's: the one in columns and rows below W and H).
+  if (grid.topology == Topology::Plane) return; // no sample is another's
+  const bool ball = grid.topology == Topology::Octahedral;
   std::array<Sample, 4> same;
-  for (int k = 0; k <= n; ++k)
-    for (const Sample s : {Sample{k, 0}, Sample{k, n}, Sample{0, k}, Sample{n, k}}) {
-      const int count = identifiedSamples(n, s, same);
-      const float w = image.at(canonical(n, s)).w;
-      for (int c = 0; c < count; ++c)
-        image.at(same[c]).w = w;
-    }
+  const auto unify = [&](Sample s) {
+    const int count = identifiedSamples(grid, s, same);
+    const float w = image.at(ball ? canonical(grid.width, s) : wrap(grid, s)).w;
+    for (int c = 0; c < count; ++c)
+      image.at(same[c]).w = w;
+  };
+  for (int i = 0; i <= grid.width; ++i)
+    for (const int j : {0, grid.height})
+      unify({i, j});
+  for (int j = 0; j <= grid.height; ++j)
+    for (const int i : {0, grid.width})
+      unify({i, j});
+}
+
+float saliencySamplesAcross(const SampleGrid& grid) {
+  return static_cast<float>(std::sqrt(double(grid.width) * double(grid.height)));
 }
 
 } // namespace octaclay::core
