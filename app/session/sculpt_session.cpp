@@ -1,6 +1,7 @@
 #include "sculpt_session.h"
 
 #include "keep_detail_run.h"
+#include "pointer_legs.h"
 
 #include "octaclay/core/document/edit_steps.h"
 #include "octaclay/core/error.h"
@@ -162,9 +163,13 @@ int SculptSession::move(const StrokeMove& move) {
   try {
     switch (move.kind) {
     case StrokeMove::Kind::ImagePoint:
+    case StrokeMove::Kind::PointerPoint:
       // The start is held from the first dab on (keep detail relaxes between a drag's dabs).
       if (!st.first) st.first = {move.uv.x, move.uv.y};
-      made = st.stroke->moveToUv(move.uv, radius, strength, 1.0f);
+      made = move.kind == StrokeMove::Kind::PointerPoint && st.last
+                 ? walkPointer(*st.stroke, document_->topology(), {(*st.last)[0], (*st.last)[1]},
+                               move.uv, radius, strength)
+                 : st.stroke->moveToUv(move.uv, radius, strength, 1.0f);
       st.last = {move.uv.x, move.uv.y};
       break;
     case StrokeMove::Kind::Ray:

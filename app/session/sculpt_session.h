@@ -53,7 +53,7 @@ struct StrokeStart {
 /// (dragging brushes after their first move) or to a point in object space (a dragging brush's
 /// scripted drag), with pen pressure in [0, 1].
 struct StrokeMove {
-  enum class Kind { ImagePoint, Ray, ObjectPoint };
+  enum class Kind { ImagePoint, PointerPoint, Ray, ObjectPoint };
   Kind kind = Kind::ImagePoint;
   core::Vec2f uv;                ///< ImagePoint: (u, v), each in [0, 1]
   core::Vec3f origin, direction; ///< Ray: object space; ObjectPoint: origin is the point
@@ -62,6 +62,11 @@ struct StrokeMove {
   /// To image point uv (a pick's interpolated (u, v) or a path's point).
   static StrokeMove toUv(core::Vec2f uv, float pressure = 1) {
     return {Kind::ImagePoint, uv, {}, {}, pressure};
+  }
+  /// To the image point of a pick under the pointer: consecutive ones are neighbours on the
+  /// surface, so a jump of (u, v) crosses a seam (pointer_legs) instead of a walk across it.
+  static StrokeMove underPointer(core::Vec2f uv, float pressure = 1) {
+    return {Kind::PointerPoint, uv, {}, {}, pressure};
   }
   /// A dragging brush to where the pointer's ray meets the drag plane (gpu::StrokeSession::
   /// dragAlong).

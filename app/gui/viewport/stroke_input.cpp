@@ -62,7 +62,7 @@ bool StrokeInput::begin(QPointF p, const core::PickHit& hit, Qt::KeyboardModifie
   if (!modeller.strokes().begin(start)) return false;
   stabilizer_.setStrength(start.settings.stabilizer);
   stabilizer_.begin({static_cast<float>(p.x()), static_cast<float>(p.y())});
-  modeller.strokes().queue(StrokeMove::toUv(pickedUv(hit), pressure()));
+  modeller.strokes().queue(StrokeMove::underPointer(pickedUv(hit), pressure()));
   hover_ = hit;
   return true;
 }
@@ -89,7 +89,7 @@ void StrokeInput::queuePoint(QPointF p) {
   const std::optional<core::PickHit> hit = view_.pickAt(p);
   if (!hit) return; // off the model: the stroke resumes where the pointer comes back
   hover_ = hit;
-  strokes.queue(StrokeMove::toUv(pickedUv(*hit), pressure()));
+  strokes.queue(StrokeMove::underPointer(pickedUv(*hit), pressure()));
 }
 
 void StrokeInput::end(StrokeDriver::Relax relax) {

@@ -86,10 +86,13 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
       std::array<float, 4> value{};
       for (int k = 0; k < channels(layer); ++k)
         value[static_cast<std::size_t>(k)] = l->fill[static_cast<std::size_t>(k)];
-      textures_[index(layer)].fill(value);
+      for (int y = 0; y < rows; y += band) {
+        textures_[index(layer)].fill(value, {0, y, side, std::min(band, rows - y)});
+        if (!progress) continue;
+        glFinish(); // the band cleared before the caller gets control: no long wait at the end
+        progress(static_cast<float>(++step) / static_cast<float>(steps));
+      }
       note(layer, whole());
-      step += (rows + band - 1) / band;
-      if (progress) progress(static_cast<float>(step) / static_cast<float>(steps));
     } else {
       for (int y = 0; y < rows; y += band) {
         push(layer, {0, y, side, std::min(band, rows - y)});

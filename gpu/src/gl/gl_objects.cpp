@@ -127,14 +127,18 @@ void Texture::bindAsTarget() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
 }
 
-void Texture::fill(const std::array<float, 4>& value) {
+void Texture::fill(const std::array<float, 4>& value, core::TexelRect region) {
   GLint previous = 0;
+  std::array<GLint, 4> box{};
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+  glGetIntegerv(GL_SCISSOR_BOX, box.data());
   const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
-  if (scissor) glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_SCISSOR_TEST); // the clear writes the region only
+  glScissor(region.x, region.y, region.width, region.height);
   bindAsTarget();
   glClearBufferfv(GL_COLOR, 0, value.data());
-  if (scissor) glEnable(GL_SCISSOR_TEST);
+  glScissor(box[0], box[1], box[2], box[3]);
+  if (!scissor) glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
   checkGlError("filling a texture");
 }

@@ -196,6 +196,10 @@ long long ModelRenderer::displayedTriangles() const {
 }
 
 void ModelRenderer::refreshNormals(GpuDocument& document, std::span<const core::TexelRect> rects) {
+  // Called between frames too (the change feed): VTK's cached state must find its framebuffer,
+  // viewport and depth test as it left them, or the next frame draws without its depth test
+  // (a torus's far side showed through its near one after every stroke).
+  const SavedTarget saved;
   const int side = document.side(), rows = document.rows();
   // The stretch preview's map and mean spacing wait for its next draw (refreshStretch).
   meanSpacingStale_ = true;

@@ -529,6 +529,14 @@ int StrokeSession::moveToUv(core::Vec2f uv, float radius, float strength, float 
                         strength, pressure);
 }
 
+void StrokeSession::continueFrom(core::Vec2f uv) {
+  requirePathPoint(uv);
+  State& st = *state_;
+  if (!st.previous || st.brush.stroke == StrokeKind::Anchored) return;
+  st.previous = {static_cast<double>(uv.x) * st.document.grid().width,
+                 static_cast<double>(uv.y) * st.document.grid().height};
+}
+
 int StrokeSession::dragAlong(core::Vec3f origin, core::Vec3f direction, float radius,
                              float strength, float pressure) {
   if (!drags())

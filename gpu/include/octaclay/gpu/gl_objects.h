@@ -64,9 +64,9 @@ public:
   unsigned release();
   /// Binds a framebuffer rendering into this texture (made once, kept with the texture).
   void bindAsTarget() const;
-  /// Sets every texel to value (its first channels()), cleared on the GPU: no upload. The
-  /// bound framebuffer and the scissor test are left as they were. Throws GlError.
-  void fill(const std::array<float, 4>& value);
+  /// Sets the texels of region to value (its first channels()), cleared on the GPU: no upload.
+  /// The bound framebuffer and the scissor test are left as they were. Throws GlError.
+  void fill(const std::array<float, 4>& value, core::TexelRect region);
 
 private:
   Texture(int width, int height, TextureFormat format, int levels);

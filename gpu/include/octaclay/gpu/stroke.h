@@ -76,6 +76,11 @@ public:
   /// capture before the error is rethrown; no move may follow, and finish() returns an empty
   /// record (nothing to undo).
   int moveToUv(core::Vec2f uv, float radius, float strength, float pressure = 1.0f);
+  /// The stroke goes on from image point uv without a dab: the same surface point as the last
+  /// one reached, across a seam (a torus's opposite edge), or a jump over one; the distance
+  /// walked since the last dab is kept. Before the first move it does nothing. Throws
+  /// core::Error(InvalidArgument) for a point outside [0, 1].
+  void continueFrom(core::Vec2f uv);
   /// moveToUv at sample s's image point (s / N). Throws core::Error(InvalidArgument) for a
   /// sample outside the image, and what moveToUv throws.
   int moveTo(core::Sample s, float radius, float strength, float pressure = 1.0f);

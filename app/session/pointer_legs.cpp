@@ -1,0 +1,56 @@
+#include "pointer_legs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace octaclay::app {
+
+std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core::Vec2f b) {
+  const float du = b.x - a.x, dv = b.y - a.y;
+  if (topology == core::Topology::Octahedral) {
+    if (std::abs(du) > 0.25f || std::abs(dv) > 0.25f) return {{true, b, b}};
+    return {{false, a, b}};
+  }
+  if (topology != core::Topology::Torus || (std::abs(du) <= 0.5f && std::abs(dv) <= 0.5f))
+    return {{false, a, b}};
+  // The torus: the end moved by a period where that is nearer, then the straight segment in the
+  // unwrapped plane cut where it crosses u or v = 0 or 1.
+  const core::Vec2f end{b.x + (du > 0.5f    ? -1.0f
+                               : du < -0.5f ? 1.0f
+                                            : 0.0f),
+                        b.y + (dv > 0.5f    ? -1.0f
+                               : dv < -0.5f ? 1.0f
+                                            : 0.0f)};
+  std::vector<float> cuts{0.0f, 1.0f};
+  for (const auto& [from, to] : {std::pair{a.x, end.x}, std::pair{a.y, end.y}})
+    for (const float edge : {0.0f, 1.0f})
+      if ((from - edge) * (to - edge) < 0) cuts.push_back((edge - from) / (to - from));
+  std::sort(cuts.begin(), cuts.end());
+  const auto at = [&](float t) {
+    return core::Vec2f{a.x + t * (end.x - a.x), a.y + t * (end.y - a.y)};
+  };
+  std::vector<PointerLeg> legs;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const core::Vec2f p = at(cuts[k]), q = at(cuts[k + 1]);
+    const core::Vec2f mid = at(0.5f * (cuts[k] + cuts[k + 1]));
+    // The period this leg lies in: its midpoint's.
+    const float su = std::floor(mid.x), sv = std::floor(mid.y);
+    const core::Vec2f from{std::clamp(p.x - su, 0.0f, 1.0f), std::clamp(p.y - sv, 0.0f, 1.0f)};
+    const core::Vec2f to{std::clamp(q.x - su, 0.0f, 1.0f), std::clamp(q.y - sv, 0.0f, 1.0f)};
+    legs.push_back({k > 0, from, to});
+  }
+  return legs;
+}
+
+int walkPointer(gpu::StrokeSession& stroke, core::Topology topology, core::Vec2f a, core::Vec2f b,
+                float radius, float strength) {
+  int made = 0;
+  for (const PointerLeg& leg : pointerLegs(topology, a, b)) {
+    if (leg.jumped) stroke.continueFrom(leg.from);
+    made += stroke.moveToUv(leg.to, radius, strength, 1.0f);
+  }
+  return made;
+}
+
+} // namespace octaclay::app

@@ -1,0 +1,33 @@
+#pragma once
+
+// A pointer's move on the image, as the stroke walks it. Consecutive picks under a pointer lie
+// close together on the surface, so a jump of their image points crosses a seam: a torus's wrap
+// is crossed the short way (walked to the edge, continued from the opposite one, the same
+// surface points), the ball's border is jumped (its two sides are not neighbours in the image);
+// walking the straight image segment instead dabbed across the image, far from the pointer.
+
+#include "octaclay/core/geometry/topology.h"
+#include "octaclay/core/geometry/vec.h"
+#include "octaclay/gpu/stroke.h"
+
+#include <vector>
+
+namespace octaclay::app {
+
+/// One leg: the stroke continues from `from` (when jumped: the same surface point as where the
+/// last leg ended, or a seam's other side) without a dab, then walks to `to`.
+struct PointerLeg {
+  bool jumped = false;
+  core::Vec2f from, to; ///< image points (u, v) in [0, 1]
+};
+
+/// The legs of a pointer's move from image point a to b on an image of the topology: one plain
+/// leg unless it crosses a seam. A move of more than a quarter of the image along u or v on the
+/// ball is a jump across its border.
+std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core::Vec2f b);
+
+/// Walks the stroke along pointerLegs from the last pointer point a to b; returns the dabs made.
+int walkPointer(gpu::StrokeSession& stroke, core::Topology topology, core::Vec2f a, core::Vec2f b,
+                float radius, float strength);
+
+} // namespace octaclay::app
