@@ -6,11 +6,48 @@
 
 namespace octaclay::app {
 
+namespace {
+
+// The ball's border: (u, 0) is (1 − u, 0), (u, 1) is (1 − u, 1), (0, v) is (0, 1 − v) and
+// (1, v) is (1, 1 − v) (core::wrap's octahedral tiling). Past an edge, b stands where the
+// tiling's half-turn about that edge puts it; the edge whose image of b lies nearest a is the
+// one crossed: walked to it, continued from its other side. A pointer that jumped farther
+// (over a corner, or off and back onto the model) jumps.
+std::vector<PointerLeg> ballLegs(core::Vec2f a, core::Vec2f b) {
+  struct Edge {
+    core::Vec2f beyond; // b as seen across the edge
+    bool alongU;        // the edge is v = value (else u = value)
+    float value;
+  };
+  const Edge edges[] = {{{1 - b.x, -b.y}, true, 0.0f},
+                        {{1 - b.x, 2 - b.y}, true, 1.0f},
+                        {{-b.x, 1 - b.y}, false, 0.0f},
+                        {{2 - b.x, 1 - b.y}, false, 1.0f}};
+  const Edge* best = nullptr;
+  float nearest = 0.25f;
+  for (const Edge& e : edges) {
+    const float d = std::max(std::abs(e.beyond.x - a.x), std::abs(e.beyond.y - a.y));
+    if (d < nearest) nearest = d, best = &e;
+  }
+  if (!best) return {{true, b, b}};
+  const float from = best->alongU ? a.y : a.x, to = best->alongU ? best->beyond.y : best->beyond.x;
+  const float t = to != from ? std::clamp((best->value - from) / (to - from), 0.0f, 1.0f) : 0.0f;
+  const core::Vec2f onEdge{std::clamp(a.x + t * (best->beyond.x - a.x), 0.0f, 1.0f),
+                           std::clamp(a.y + t * (best->beyond.y - a.y), 0.0f, 1.0f)};
+  const core::Vec2f across = best->alongU ? core::Vec2f{1 - onEdge.x, best->value}
+                                          : core::Vec2f{best->value, 1 - onEdge.y};
+  const core::Vec2f edgeHere =
+      best->alongU ? core::Vec2f{onEdge.x, best->value} : core::Vec2f{best->value, onEdge.y};
+  return {{false, a, edgeHere}, {true, across, b}};
+}
+
+} // namespace
+
 std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core::Vec2f b) {
   const float du = b.x - a.x, dv = b.y - a.y;
   if (topology == core::Topology::Octahedral) {
-    if (std::abs(du) > 0.25f || std::abs(dv) > 0.25f) return {{true, b, b}};
-    return {{false, a, b}};
+    if (std::abs(du) <= 0.25f && std::abs(dv) <= 0.25f) return {{false, a, b}};
+    return ballLegs(a, b);
   }
   if (topology != core::Topology::Torus || (std::abs(du) <= 0.5f && std::abs(dv) <= 0.5f))
     return {{false, a, b}};

@@ -1,10 +1,10 @@
 #pragma once
 
 // A pointer's move on the image, as the stroke walks it. Consecutive picks under a pointer lie
-// close together on the surface, so a jump of their image points crosses a seam: a torus's wrap
-// is crossed the short way (walked to the edge, continued from the opposite one, the same
-// surface points), the ball's border is jumped (its two sides are not neighbours in the image);
-// walking the straight image segment instead dabbed across the image, far from the pointer.
+// close together on the surface, so a jump of their image points crosses a seam, walked to the
+// edge and continued from its other side (the same surface points): a torus's wrap the short
+// way, the ball's border where it folds ((u, 0) is (1 − u, 0), …). Walking the straight image
+// segment instead dabbed across the image, far from the pointer.
 
 #include "octaclay/core/geometry/topology.h"
 #include "octaclay/core/geometry/vec.h"
@@ -22,8 +22,8 @@ struct PointerLeg {
 };
 
 /// The legs of a pointer's move from image point a to b on an image of the topology: one plain
-/// leg unless it crosses a seam. A move of more than a quarter of the image along u or v on the
-/// ball is a jump across its border.
+/// leg unless it crosses a seam. On the ball, a move of more than a quarter of the image along
+/// u or v crosses the border edge across which b lies nearest a, or, near none, is a jump.
 std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core::Vec2f b);
 
 /// Walks the stroke along pointerLegs from the last pointer point a to b; returns the dabs made.

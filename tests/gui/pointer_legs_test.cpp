@@ -1,7 +1,8 @@
 // A pointer's move as the stroke walks it (app/session/pointer_legs): on a torus a move across the
-// wrap goes the short way, to the edge and on from the opposite one; on the ball a jump of more
-// than a quarter of the image is a jump over its border, not a walk across the image; small
-// moves, and every move on a plane, are one straight leg.
+// wrap goes the short way, to the edge and on from the opposite one; on the ball a move across
+// its border goes to the edge and on from where the border folds it, and a jump far from every
+// edge is a jump, not a walk across the image; small moves, and every move on a plane, are one
+// straight leg.
 #include "pointer_legs.h"
 
 #include <QtTest>
@@ -80,11 +81,23 @@ void PointerLegsTest::aTorusCornerIsCrossedOnBothAxes() {
 }
 
 void PointerLegsTest::aJumpOnTheBallIsNotWalked() {
-  // Across the ball's border (u, 0) is (1 - u, 0): the picks jump from u = 0.2 to u = 0.8.
-  const auto legs = app::pointerLegs(core::Topology::Octahedral, {0.2f, 0.01f}, {0.8f, 0.01f});
-  QVERIFY2(legs.size() == 1 && legs[0].jumped && near(legs[0].from, {0.8f, 0.01f}) &&
-               near(legs[0].to, {0.8f, 0.01f}),
-           qPrintable(text(legs)));
+  // Across the ball's bottom edge (u, 0) is (1 - u, 0): picks at (0.3, 0.02) then (0.68, 0.01)
+  // are 0.03 apart on the surface; walked to (0.3133, 0), on from (0.6867, 0).
+  const auto bottom = app::pointerLegs(core::Topology::Octahedral, {0.3f, 0.02f}, {0.68f, 0.01f});
+  QVERIFY2(bottom.size() == 2 && !bottom[0].jumped &&
+               near(bottom[0].to, {0.3f + 0.02f / 1.5f, 0}) && bottom[1].jumped &&
+               near(bottom[1].from, {0.7f - 0.02f / 1.5f, 0}) && near(bottom[1].to, {0.68f, 0.01f}),
+           qPrintable(text(bottom)));
+  // Across the right edge (1, v) is (1, 1 - v).
+  const auto right = app::pointerLegs(core::Topology::Octahedral, {0.99f, 0.2f}, {0.98f, 0.82f});
+  QVERIFY2(right.size() == 2 && near(right[0].to, {1.0f, 0.2f - 0.02f / 3}) &&
+               near(right[1].from, {1.0f, 0.8f + 0.02f / 3}),
+           qPrintable(text(right)));
+  // Far from every edge: a jump (the pointer left the model and came back), nothing walked.
+  const auto jump = app::pointerLegs(core::Topology::Octahedral, {0.3f, 0.5f}, {0.7f, 0.5f});
+  QVERIFY2(jump.size() == 1 && jump[0].jumped && near(jump[0].from, {0.7f, 0.5f}) &&
+               near(jump[0].to, {0.7f, 0.5f}),
+           qPrintable(text(jump)));
 }
 
 QTEST_APPLESS_MAIN(PointerLegsTest)
