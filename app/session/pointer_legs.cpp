@@ -80,10 +80,12 @@ std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core
   return legs;
 }
 
-int walkPointer(gpu::StrokeSession& stroke, core::Topology topology, core::Vec2f a, core::Vec2f b,
-                float radius, float strength) {
+int walkPointer(gpu::StrokeSession& stroke, core::Topology topology,
+                std::optional<std::array<float, 2>> last, core::Vec2f b, float radius,
+                float strength) {
+  if (!last) return stroke.moveToUv(b, radius, strength, 1.0f);
   int made = 0;
-  for (const PointerLeg& leg : pointerLegs(topology, a, b)) {
+  for (const PointerLeg& leg : pointerLegs(topology, {(*last)[0], (*last)[1]}, b)) {
     if (leg.jumped) stroke.continueFrom(leg.from);
     made += stroke.moveToUv(leg.to, radius, strength, 1.0f);
   }

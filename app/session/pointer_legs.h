@@ -10,6 +10,8 @@
 #include "octaclay/core/geometry/vec.h"
 #include "octaclay/gpu/stroke.h"
 
+#include <array>
+#include <optional>
 #include <vector>
 
 namespace octaclay::app {
@@ -26,8 +28,10 @@ struct PointerLeg {
 /// u or v crosses the border edge across which b lies nearest a, or, near none, is a jump.
 std::vector<PointerLeg> pointerLegs(core::Topology topology, core::Vec2f a, core::Vec2f b);
 
-/// Walks the stroke along pointerLegs from the last pointer point a to b; returns the dabs made.
-int walkPointer(gpu::StrokeSession& stroke, core::Topology topology, core::Vec2f a, core::Vec2f b,
-                float radius, float strength);
+/// Walks the stroke to image point b: along pointerLegs from the last pointer point when there
+/// is one, else (the first point, or a path's point) straight; returns the dabs made.
+int walkPointer(gpu::StrokeSession& stroke, core::Topology topology,
+                std::optional<std::array<float, 2>> last, core::Vec2f b, float radius,
+                float strength);
 
 } // namespace octaclay::app

@@ -166,10 +166,9 @@ int SculptSession::move(const StrokeMove& move) {
     case StrokeMove::Kind::PointerPoint:
       // The start is held from the first dab on (keep detail relaxes between a drag's dabs).
       if (!st.first) st.first = {move.uv.x, move.uv.y};
-      made = move.kind == StrokeMove::Kind::PointerPoint && st.last
-                 ? walkPointer(*st.stroke, document_->topology(), {(*st.last)[0], (*st.last)[1]},
-                               move.uv, radius, strength)
-                 : st.stroke->moveToUv(move.uv, radius, strength, 1.0f);
+      made = walkPointer(*st.stroke, document_->topology(),
+                         move.kind == StrokeMove::Kind::PointerPoint ? st.last : std::nullopt,
+                         move.uv, radius, strength);
       st.last = {move.uv.x, move.uv.y};
       break;
     case StrokeMove::Kind::Ray:
