@@ -82,7 +82,10 @@ GpuDocument::GpuDocument(core::Document document, const std::function<void(float
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
     textures_[index(layer)] = Texture(side, rows, formatOf(layer));
     core::Layer* l = mirrorLayer(layer);
-    if (l && l->uniform()) { // an unpainted layer: cleared on the GPU, nothing uploaded
+    // An unpainted layer on a real GPU: cleared there, nothing converted and sent. A software
+    // rasterizer writes the texels on the CPU either way, and its band uploads are what give
+    // a GUI caller its turns (modeller_render_test's open of an N = 4096 document).
+    if (l && l->uniform() && !software_) {
       std::array<float, 4> value{};
       for (int k = 0; k < channels(layer); ++k)
         value[static_cast<std::size_t>(k)] = l->fill[static_cast<std::size_t>(k)];
