@@ -92,15 +92,21 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
   const auto centreOf = [&](int k) { return modeller.objectAt(k).transform.translation; };
   int actions = 0;
 
-  // Add ▸ <shape>: two clicks, the menu bar's Add and the shape, one action.
-  const auto add = [&](const char* actionName) {
+  // Add ▸ <shape>, one action: the menu bar's Add clicked, or with Shift+A at the pointer over
+  // `at` (the menu pops up there, the shape stands on the surface under `at`), then the shape.
+  const auto addWith = [&](const char* actionName, std::optional<QPoint> at) {
     QMenuBar* bar = window->menuBar();
     auto* menu = window->findChild<QMenu*>(QStringLiteral("menuAdd"));
     QAction* item = window->action(actionName);
     if (!menu || !item) return false;
     const int before = modeller.objectCount();
-    input.moveTo(bar->mapToGlobal(bar->actionGeometry(menu->menuAction()).center()));
-    input.click(1);
+    if (at) {
+      input.moveTo(*at);
+      input.press({XK_Shift_L, XK_a});
+    } else {
+      input.moveTo(bar->mapToGlobal(bar->actionGeometry(menu->menuAction()).center()));
+      input.click(1);
+    }
     if (!QTest::qWaitFor([&] { return menu->isVisible(); }, 3000)) return false;
     QTest::qWait(100);
     input.moveTo(menu->mapToGlobal(menu->actionGeometry(item).center()));
@@ -108,22 +114,8 @@ void SnowmanRenderTest::aNewcomerBuildsASnowmanInUnderTwentyActions() {
     ++actions;
     return QTest::qWaitFor([&] { return modeller.objectCount() == before + 1; }, 5000);
   };
-  // Shift+A with the pointer at `at`: the Add menu pops up there, a click on the shape adds it
-  // standing on the surface under `at`. One action.
-  const auto addAt = [&](QPoint at, const char* actionName) {
-    auto* menu = window->findChild<QMenu*>(QStringLiteral("menuAdd"));
-    QAction* item = window->action(actionName);
-    if (!menu || !item) return false;
-    const int before = modeller.objectCount();
-    input.moveTo(at);
-    input.press({XK_Shift_L, XK_a});
-    if (!QTest::qWaitFor([&] { return menu->isVisible(); }, 3000)) return false;
-    QTest::qWait(100);
-    input.moveTo(menu->mapToGlobal(menu->actionGeometry(item).center()));
-    input.click(1);
-    ++actions;
-    return QTest::qWaitFor([&] { return modeller.objectCount() == before + 1; }, 5000);
-  };
+  const auto add = [&](const char* actionName) { return addWith(actionName, std::nullopt); };
+  const auto addAt = [&](QPoint at, const char* actionName) { return addWith(actionName, at); };
   // A key gesture: the pointer on the object, the key, then the pointer to `to` (when given),
   // then typed keys, then a click (pointer) or Enter (typed): one action.
   const auto gesture = [&](KeySym key, std::optional<QPoint> from, std::optional<QPoint> to,

@@ -4,6 +4,8 @@
 // dab's centre per quarter of the tiles its sphere meets, and only those sums are read back, not
 // the texels under the dab (the CPU loop read them back and walked them every dab).
 
+#include "quarter_pass.h"
+
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/gpu/gl_objects.h"
 #include "octaclay/gpu/gpu_document.h"
@@ -24,9 +26,7 @@ public:
               std::array<int, 2> cells, bool ball, core::Vec3f centre, float radius);
 
 private:
-  Program program_;
-  Buffer quarters_, sums_;
-  std::size_t sumBytes_ = 0; // sums_'s size
+  QuarterPass pass_{"area_normal.glsl"};
 };
 
 } // namespace octaclay::gpu::detail

@@ -4,6 +4,8 @@
 // of each quarter of the tiles a change moved (core::TileBounds's quarters), and only those
 // boxes (24 bytes a quarter) are read back, not the texels.
 
+#include "quarter_pass.h"
+
 #include "octaclay/core/geometry/tile_bounds.h"
 #include "octaclay/gpu/gl_objects.h"
 
@@ -23,9 +25,7 @@ public:
                std::span<const core::TexelRect> rects);
 
 private:
-  Program program_;
-  Buffer quarters_, boxes_;
-  std::size_t boxBytes_ = 0; // boxes_'s size
+  QuarterPass pass_{"tile_bounds.glsl"};
 };
 
 } // namespace octaclay::gpu::detail

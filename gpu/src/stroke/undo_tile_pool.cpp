@@ -90,7 +90,11 @@ void UndoTilePool::startDownloads() {
       return std::tie(s.layer, s.page, s.y, s.x) < std::tie(t.layer, t.page, t.y, t.x);
     });
     Batch batch;
-    std::vector<std::pair<std::size_t, std::size_t>> runs; // [first, end) of unstarted_
+    struct Run {
+      std::size_t first, end; // of unstarted_
+      int height;             // the tallest of its slots' regions
+    };
+    std::vector<Run> runs;
     for (std::size_t first = 0; first < unstarted_.size();) {
       std::size_t end = first + 1;
       while (end < unstarted_.size()) {
@@ -115,7 +119,7 @@ void UndoTilePool::startDownloads() {
         s.stride = width;
       }
       batch.bytes += static_cast<std::size_t>(width) * height * texelBytes;
-      runs.emplace_back(first, end);
+      runs.push_back({first, end, height});
       first = end;
     }
     std::size_t capacity = 0;
@@ -135,12 +139,9 @@ void UndoTilePool::startDownloads() {
     } else {
       batch.bytes = capacity; // the buffer's size, for the next reuse
     }
-    for (const auto& [first, end] : runs) {
-      const Slot& head = slots_[static_cast<std::size_t>(unstarted_[first])];
-      int height = 0;
-      for (std::size_t k = first; k < end; ++k)
-        height = std::max(height, slots_[static_cast<std::size_t>(unstarted_[k])].region.height);
-      page(head).readToPackBuffer({head.x, head.y, head.stride, height}, batch.buffer.id(),
+    for (const Run& run : runs) {
+      const Slot& head = slots_[static_cast<std::size_t>(unstarted_[run.first])];
+      page(head).readToPackBuffer({head.x, head.y, head.stride, run.height}, batch.buffer.id(),
                                   head.offset);
     }
     batch.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
