@@ -7,10 +7,31 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
 namespace octaclay::core::testing {
+
+/// Boundary edges (in one triangle only) joined into loops: the number of loops.
+inline int boundaryLoops(const TriangleMesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++directed[{t[k], t[(k + 1) % 3]}];
+  std::map<std::uint32_t, std::uint32_t> next; // boundary half-edge a → b
+  for (const auto& [e, count] : directed)
+    if (!directed.count({e.second, e.first})) next[e.first] = e.second;
+  std::set<std::uint32_t> seen;
+  int loops = 0;
+  for (const auto& [start, unused] : next) {
+    if (seen.count(start)) continue;
+    ++loops;
+    for (std::uint32_t v = start; !seen.count(v); v = next.at(v))
+      seen.insert(v);
+  }
+  return loops;
+}
 
 /// An octahedron split `levels` times into four and projected onto the unit sphere:
 /// 8·4^levels triangles, outward, extreme vertices on the axes.

@@ -4,6 +4,8 @@
 
 #include "detail/unit_scale.h"
 #include "lod/adaptive.h"
+#include "lod/grid_lod.h"
+#include "lod/lod_corners.h"
 #include "lod/quadric_collapse.h"
 #include "lod/refit.h"
 #include "lod/resampling.h"
@@ -20,30 +22,16 @@
 namespace octaclay::core {
 namespace {
 
-// The collapse method's refit leaves crease vertices (a triangle turned over 45° from their
-// normal) alone: on the fandisk at 1 % of 2N², 71 dB with them moved, 84 dB with them kept;
-// the armadillo keeps most of its refit gain (60.7 dB unrefit, 62.6 dB; bench_lod).
-constexpr float kCollapseRefitCreaseDegrees = 45;
-// The collapse method bounds each collapse's normal turn by 90° against the triangle before it
-// (no fold) rather than 60° against the input triangle: the scorpion at 1 % of 2N² stopped at
-// 7044 triangles, 18.9 dB below meshopt_simplify, and reaches 5242, 0.2 dB above it (bench_lod).
-constexpr float kCollapseNormalTurnDegrees = 90;
-
-// Two Jacobi steps: +4 dB over none at 1 % of 2N², a third adds under 0.2 dB. Where a triangle
-// covers under 4 samples (over 25 % of 2N²) the second adds under 0.05 dB for a quarter of the
-// LOD's time (the sculpted sphere at 25 %; bench_lod).
-int refitIterations(int n, std::size_t triangles) {
-  return 2.0 * double(n) * n < 4.0 * double(triangles) ? 1 : 2;
-}
-
-// The refit reads every stride-th sample: about 16 per LOD triangle or more (the fit is a
-// mean over each triangle, a few samples estimate it well).
-int refitStride(int n, std::size_t triangles) {
-  int stride = 1;
-  while (2.0 * double(n) * n / (4.0 * stride * stride) >= 16.0 * double(triangles))
-    stride *= 2;
-  return stride;
-}
+using detail::collapseOptionsFor;
+using detail::cornerCoordinates;
+using detail::kCollapseNormalTurnDegrees;
+using detail::kCollapseRefitCreaseDegrees;
+using detail::refitIterations;
+using detail::refitStride;
+using detail::saliencyWeights;
+using detail::setCornerCoordinates;
+using detail::takeCollapsed;
+using detail::VertexCopies;
 
 // Where a vertex of the octahedral LOD grid may move when collapsed (see seamVeto).
 enum class SeamClass : std::uint8_t { Interior, Cone, Bottom, Top, Left, Right };
@@ -74,8 +62,10 @@ Sample seamMidpoint(int m, SeamClass c) {
 }
 
 void checkOptions(const GeometryImage& image, const LodOptions& options) {
-  requireValidSize(image.size());
-  if (options.size != 0) detail::requireLodSize(image.size(), options.size);
+  // A torus's or plane's sizes: gridLod checks M against its sides.
+  requireValidGrid(image.grid());
+  if (options.size != 0 && image.topology() == Topology::Octahedral)
+    detail::requireLodSize(image.size(), options.size);
   if (options.targetTriangles > 0 && options.targetTriangles <= 4)
     throw Error(ErrorKind::InvalidArgument,
                 "triangle target " + std::to_string(options.targetTriangles) +
@@ -110,12 +100,6 @@ int chooseSize(int n, const LodOptions& options) {
   return std::min(n / 2, m * options.oversample);
 }
 
-// For each vertex, the image coordinates (x/N, y/N) of its copies (1, 2 or 4).
-struct VertexCopies {
-  std::array<Vec2f, 4> uv;
-  int count = 0;
-};
-
 // The copies of grid sample s of an m grid: its identified samples, each at uvAt(sample).
 template <class UvAt> VertexCopies copiesOf(int m, Sample s, UvAt&& uvAt) {
   std::array<Sample, 4> same;
@@ -143,32 +127,6 @@ std::vector<VertexCopies> vertexCopies(const detail::ResampledImage& resampled,
   return copies;
 }
 
-float squaredDistance(Vec2f a, Vec2f b) {
-  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
-}
-
-// Per triangle, the copies of its corners that lie together: the combination with the
-// smallest perimeter² sum in the image.
-std::array<Vec2f, 3> cornerCoordinates(const std::array<std::uint32_t, 3>& tri,
-                                       const std::vector<VertexCopies>& copies) {
-  const VertexCopies &a = copies[tri[0]], &b = copies[tri[1]], &c = copies[tri[2]];
-  std::array<Vec2f, 3> best{a.uv[0], b.uv[0], c.uv[0]};
-  if (a.count == 1 && b.count == 1 && c.count == 1) return best;
-  float bestSpread = -1;
-  for (int ia = 0; ia < a.count; ++ia)
-    for (int ib = 0; ib < b.count; ++ib)
-      for (int ic = 0; ic < c.count; ++ic) {
-        const float spread = squaredDistance(a.uv[ia], b.uv[ib]) +
-                             squaredDistance(b.uv[ib], c.uv[ic]) +
-                             squaredDistance(c.uv[ic], a.uv[ia]);
-        if (bestSpread < 0 || spread < bestSpread) {
-          bestSpread = spread;
-          best = {a.uv[ia], b.uv[ib], c.uv[ic]};
-        }
-      }
-  return best;
-}
-
 // Collapses lod.mesh (vertex v at grid sample sampleOf[v] of an m grid, image copies
 // copies[v]) to the options' target or error bound, and gives each triangle its corner
 // coordinates. A seam vertex has a copy on each side of its seam; it may only slide along the
@@ -187,35 +145,20 @@ void collapseLod(LodMesh& lod, int m, const std::vector<Sample>& sampleOf,
     for (const SeamClass c : {SeamClass::Bottom, SeamClass::Top, SeamClass::Left, SeamClass::Right})
       if (s == seamMidpoint(m, c)) midpoint[static_cast<int>(c)] = static_cast<std::uint32_t>(v);
   }
-  VertexCollapseOptions collapseOptions;
-  collapseOptions.targetTriangles = options.targetTriangles;
-  collapseOptions.maxError = options.maxError;
-  collapseOptions.engine = options.collapseEngine;
-  collapseOptions.maxNormalTurnDegrees = options.maxNormalTurnDegrees;
-  collapseOptions.maxAspectRatio = options.maxAspectRatio;
-  collapseOptions.normalTurnPerCollapse = normalTurnPerCollapse;
-  collapseOptions.vertexWeights = std::move(vertexWeights);
+  VertexCollapseOptions collapseOptions =
+      collapseOptionsFor(options, copies, normalTurnPerCollapse, std::move(vertexWeights));
   collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
     const SeamClass c = classes[from];
     if (c == SeamClass::Interior) return true;
     if (c == SeamClass::Cone) return false;
     return classes[to] == c || to == corner || to == midpoint[static_cast<int>(c)];
   };
-  collapseOptions.cornerCoordinates = [&](const std::array<std::uint32_t, 3>& tri) {
-    return cornerCoordinates(tri, copies);
-  };
   // The mesh is closed and manifold by construction: the fast engine skips collapseVertices'
   // topology check (a sort as costly as the collapse itself).
   CollapsedMesh collapsed = options.collapseEngine == CollapseEngine::Fast
                                 ? detail::quadricCollapse(lod.mesh, collapseOptions)
                                 : collapseVertices(lod.mesh, collapseOptions);
-  lod.mesh = std::move(collapsed.mesh);
-  std::vector<VertexCopies> kept(collapsed.inputVertex.size());
-  for (std::size_t v = 0; v < kept.size(); ++v)
-    kept[v] = copies[collapsed.inputVertex[v]];
-  lod.cornerUv.resize(lod.mesh.triangles.size());
-  for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-    lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], kept);
+  takeCollapsed(lod, std::move(collapsed), copies);
 }
 
 // Without a target or an error bound, as many triangles as the N/2 grid (or the given M's).
@@ -253,22 +196,10 @@ LodMesh adaptiveLod(const GeometryImage& image, const LodOptions& options) {
     collapseLod(lod, n, triangulation.vertexSample, copies, collapseOptions);
   }
   if (options.refitToSurface)
-    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           refitIterations(n, lod.mesh.triangles.size()));
+    detail::refitToSurface(image, lod.cornerUv, lod.mesh,
+                           refitStride(double(n) * n, lod.mesh.triangles.size()),
+                           refitIterations(double(n) * n, lod.mesh.triangles.size()));
   return lod;
-}
-
-// Per vertex (at sample sampleOf[v]), 1 + weight × its saliency; none when weight is 0 or the
-// image carries no saliency.
-std::vector<float> saliencyWeights(const GeometryImage& image, const std::vector<Sample>& sampleOf,
-                                   float weight) {
-  if (weight == 0 || std::all_of(image.texels().begin(), image.texels().end(),
-                                 [](const Vec4f& t) { return t.w == 0; }))
-    return {};
-  std::vector<float> weights(sampleOf.size());
-  for (std::size_t v = 0; v < sampleOf.size(); ++v)
-    weights[v] = 1 + weight * image.at(sampleOf[v].i, sampleOf[v].j).w;
-  return weights;
 }
 
 // The collapse method: the welded full-resolution mesh collapsed with the grid's seam rules,
@@ -306,14 +237,12 @@ LodMesh fullResolutionCollapse(const GeometryImage& image, const LodOptions& opt
     collapseLod(lod, n, sampleOf, copies, unbounded, true,
                 saliencyWeights(image, sampleOf, options.collapseSaliencyWeight));
   } else {
-    lod.cornerUv.resize(lod.mesh.triangles.size());
-    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
+    setCornerCoordinates(lod, copies);
   }
   if (options.refitToSurface)
-    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           refitIterations(n, lod.mesh.triangles.size()),
-                           kCollapseRefitCreaseDegrees);
+    detail::refitToSurface(
+        image, lod.cornerUv, lod.mesh, refitStride(double(n) * n, lod.mesh.triangles.size()),
+        refitIterations(double(n) * n, lod.mesh.triangles.size()), kCollapseRefitCreaseDegrees);
   return lod;
 }
 
@@ -349,6 +278,7 @@ std::optional<ResampleMethod> parseResampleMethod(std::string_view name) {
 }
 
 GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod method) {
+  requireOctahedral(image, "resampling to an LOD grid", "this image");
   requireValidSize(image.size());
   if (method == ResampleMethod::Adaptive || method == ResampleMethod::Collapse ||
       method == ResampleMethod::Auto)
@@ -360,9 +290,6 @@ GeometryImage resampleImage(const GeometryImage& image, int m, ResampleMethod me
 }
 
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
-  // Its resampling and collapse follow the ball's octahedral grid (a torus or plane object in
-  // the modeller asks too).
-  requireOctahedral(image, "the level of detail", "this image");
   if (const int e = detail::unitScaleExponent(image); e != 0) {
     checkOptions(image, options);
     LodMesh lod = generateLod(detail::scaledPositions(image, e), options);
@@ -370,6 +297,7 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
     return lod;
   }
   checkOptions(image, options);
+  if (image.topology() != Topology::Octahedral) return detail::gridLod(image, options);
   const int n = image.size();
   if (options.method == ResampleMethod::Auto) {
     LodOptions chosen = options;
@@ -401,13 +329,12 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options) {
       sampleOf[index.at(s.i, s.j)] = s;
     collapseLod(lod, m, sampleOf, copies, options);
   } else {
-    lod.cornerUv.resize(lod.mesh.triangles.size());
-    for (std::size_t t = 0; t < lod.mesh.triangles.size(); ++t)
-      lod.cornerUv[t] = cornerCoordinates(lod.mesh.triangles[t], copies);
+    setCornerCoordinates(lod, copies);
   }
   if (options.refitToSurface)
-    detail::refitToSurface(image, lod.cornerUv, lod.mesh, refitStride(n, lod.mesh.triangles.size()),
-                           refitIterations(n, lod.mesh.triangles.size()));
+    detail::refitToSurface(image, lod.cornerUv, lod.mesh,
+                           refitStride(double(n) * n, lod.mesh.triangles.size()),
+                           refitIterations(double(n) * n, lod.mesh.triangles.size()));
   return lod;
 }
 

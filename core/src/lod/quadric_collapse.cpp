@@ -174,9 +174,8 @@ public:
         if ((touched_[a] || touched_[b]) && !(cheapestDirection(a, b, from, to) <= threshold))
           continue;
         if (vertexCount_ <= 4 || !legal(from, to)) continue;
-        collapse(from, to);
+        alive -= collapse(from, to);
         touched_[to] = 1;
-        alive -= 2;
         ++collapsedThisPass;
       }
       if (collapsedThisPass == 0 && k + 1 >= errors.size()) break;
@@ -257,11 +256,15 @@ private:
   }
 
   bool legal(std::uint32_t from, std::uint32_t to) {
-    // Link condition: from and to share exactly the two neighbours opposite their edge.
+    // Link condition: from and to share exactly the neighbours opposite their edge: two, or one
+    // where the edge lies on an open mesh's boundary (a plane's: one triangle has it).
     ++stampValue_;
+    int edgeTriangles = 0;
     forEachTriangle(from, [&](std::uint32_t t) {
-      for (const std::uint32_t c : triangles_[t])
+      for (const std::uint32_t c : triangles_[t]) {
         stamp_[c] = stampValue_;
+        edgeTriangles += c == to;
+      }
     });
     int shared = 0;
     forEachTriangle(to, [&](std::uint32_t t) {
@@ -271,7 +274,7 @@ private:
           ++shared;
         }
     });
-    if (shared != 2) return false;
+    if (edgeTriangles < 1 || shared != edgeTriangles) return false;
 
     const Vec3f p1 = positions_[to];
     const double maxAspect = options_.maxAspectRatio;
@@ -344,11 +347,16 @@ private:
     return ok;
   }
 
-  void collapse(std::uint32_t from, std::uint32_t to) {
+  // Returns the triangles it removed: two, one on an open mesh's boundary.
+  std::size_t collapse(std::uint32_t from, std::uint32_t to) {
     quadrics_[to] += quadrics_[from];
+    std::size_t removed = 0;
     forEachTriangle(from, [&](std::uint32_t t) {
       auto& tri = triangles_[t];
-      if (tri[0] == to || tri[1] == to || tri[2] == to) deleted_[t] = 1;
+      if (tri[0] == to || tri[1] == to || tri[2] == to) {
+        deleted_[t] = 1;
+        ++removed;
+      }
     });
     // to's triangles: its own and from's survivors, listed anew at the end of refs_.
     const auto begin = static_cast<std::uint32_t>(refs_.size());
@@ -362,6 +370,7 @@ private:
     count_[to] = static_cast<std::uint32_t>(refs_.size()) - begin;
     count_[from] = 0;
     --vertexCount_;
+    return removed;
   }
 
   CollapsedMesh result() const {

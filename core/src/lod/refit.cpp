@@ -37,17 +37,17 @@ bool ownsEdge(long long dx, long long dy) {
 // The samples on the stride lattice that each triangle's corner coordinates enclose, each
 // sample in one triangle only: one on a shared edge or corner goes to the triangle whose edge
 // owns it (the rasterizer's fill rule), so vertices are not counted once per triangle around
-// them. Corner coordinates are whole samples (x / N, y / N), so the edge tests are exact.
-void rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::size_t begin,
+// them. Corner coordinates are whole samples (x / W, y / H), so the edge tests are exact.
+void rasterize(int w, int h, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::size_t begin,
                std::size_t end, int stride, std::vector<Covered>& covered) {
   covered.clear(); // the caller reserves: each lattice sample lies in one triangle at most
-  const float scale = float(n);
+  const float scaleX = float(w), scaleY = float(h);
   for (std::size_t t = begin; t < end; ++t) {
     const auto& c = cornerUv[t];
     std::array<long long, 3> x{}, y{};
-    for (int k = 0; k < 3; ++k) { // whole samples in [0, N]: rounding by truncation is exact
-      x[k] = static_cast<long long>(c[k].x * scale + 0.5f);
-      y[k] = static_cast<long long>(c[k].y * scale + 0.5f);
+    for (int k = 0; k < 3; ++k) { // whole samples in [0, W]: rounding by truncation is exact
+      x[k] = static_cast<long long>(c[k].x * scaleX + 0.5f);
+      y[k] = static_cast<long long>(c[k].y * scaleY + 0.5f);
     }
     const long long area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
     if (area <= 0) continue;
@@ -59,14 +59,14 @@ void rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::si
       const int next = (k + 1) % 3;
       return (x[next] - x[k]) * (py - y[k]) - (y[next] - y[k]) * (px - x[k]);
     };
-    const auto lattice = [&](long long v, bool up) {
+    const auto lattice = [&](long long v, bool up, int limit) {
       const long long k = up ? v / stride : (v + stride - 1) / stride; // v ≥ 0
-      return static_cast<int>(std::clamp<long long>(k * stride, 0, n));
+      return static_cast<int>(std::clamp<long long>(k * stride, 0, limit));
     };
-    const int xBegin = lattice(std::min({x[0], x[1], x[2]}), false);
-    const int xEnd = lattice(std::max({x[0], x[1], x[2]}), true);
-    const int yBegin = lattice(std::min({y[0], y[1], y[2]}), false);
-    const int yEnd = lattice(std::max({y[0], y[1], y[2]}), true);
+    const int xBegin = lattice(std::min({x[0], x[1], x[2]}), false, w);
+    const int xEnd = lattice(std::max({x[0], x[1], x[2]}), true, w);
+    const int yBegin = lattice(std::min({y[0], y[1], y[2]}), false, h);
+    const int yEnd = lattice(std::max({y[0], y[1], y[2]}), true, h);
     const float inv = 1.0f / float(area);
     for (int py = yBegin; py <= yEnd; py += stride)
       for (int px = xBegin; px <= xEnd; px += stride) {
@@ -74,7 +74,7 @@ void rasterize(int n, const std::vector<std::array<Vec2f, 3>>& cornerUv, std::si
         if (e0 < 0 || e1 < 0 || e2 < 0) continue;
         if ((e0 == 0 && !owns[0]) || (e1 == 0 && !owns[1]) || (e2 == 0 && !owns[2])) continue;
         // e1 (edge 1 → 2) weighs corner 0, e2 corner 1, e0 corner 2.
-        covered.push_back({static_cast<std::uint32_t>(py * (n + 1) + px),
+        covered.push_back({static_cast<std::uint32_t>(py * (w + 1) + px),
                            static_cast<std::uint32_t>(t), float(e2) * inv, float(e0) * inv});
       }
   }
@@ -98,18 +98,20 @@ void refitToSurface(const GeometryImage& full, const std::vector<std::array<Vec2
   thread_local std::array<std::vector<Covered>, 2> lists;
   std::vector<Covered>& covered = lists[0];
   std::vector<Covered>& second = lists[1]; // a name the other thread reaches through the capture
-  const std::size_t lattice = std::size_t(full.size() / stride + 1);
-  covered.reserve(lattice * lattice); // both halves: each lattice sample in one triangle at most
+  const int width = full.width(), height = full.height();
+  const std::size_t lattice = std::size_t(width / stride + 1) *
+                              std::size_t(height / stride + 1); // every sample in one triangle
+  covered.reserve(lattice);                                     // both halves
   if (cornerUv.size() >= 4096) {
-    second.reserve(lattice * lattice / 2); // about its share; grows once if it covers more
+    second.reserve(lattice / 2); // about its share; grows once if it covers more
     const std::size_t half = cornerUv.size() / 2;
     std::thread other(
-        [&] { rasterize(full.size(), cornerUv, half, cornerUv.size(), stride, second); });
-    rasterize(full.size(), cornerUv, 0, half, stride, covered);
+        [&] { rasterize(width, height, cornerUv, half, cornerUv.size(), stride, second); });
+    rasterize(width, height, cornerUv, 0, half, stride, covered);
     other.join();
     covered.insert(covered.end(), second.begin(), second.end());
   } else {
-    rasterize(full.size(), cornerUv, 0, cornerUv.size(), stride, covered);
+    rasterize(width, height, cornerUv, 0, cornerUv.size(), stride, covered);
   }
   const std::span<const Vec4f> texels = full.texels();
   const std::size_t vertexCount = lod.positions.size();

@@ -1,6 +1,8 @@
 // The torus and plane topologies: wrap, seams, normals, extraction (Euler 0 closed / Euler 1 with
 // one boundary loop), tile bounds and picking, beside the octahedral ball.
 
+#include "test_meshes.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/normals.h"
@@ -22,28 +24,9 @@
 #include <utility>
 
 using namespace octaclay::core;
+using testing::boundaryLoops;
 
 namespace {
-
-// Boundary edges (in one triangle only) joined into loops: the number of loops.
-int boundaryLoops(const TriangleMesh& mesh) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++directed[{t[k], t[(k + 1) % 3]}];
-  std::map<std::uint32_t, std::uint32_t> next; // boundary half-edge a → b
-  for (const auto& [e, count] : directed)
-    if (!directed.count({e.second, e.first})) next[e.first] = e.second;
-  std::set<std::uint32_t> seen;
-  int loops = 0;
-  for (const auto& [start, unused] : next) {
-    if (seen.count(start)) continue;
-    ++loops;
-    for (std::uint32_t v = start; !seen.count(v); v = next.at(v))
-      seen.insert(v);
-  }
-  return loops;
-}
 
 // Every sample moved by a random offset: the seams open until seam() closes them again.
 void scramble(GeometryImage& image, unsigned seed) {

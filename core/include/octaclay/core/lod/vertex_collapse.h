@@ -51,7 +51,9 @@ struct VertexCollapseOptions {
   /// geometry image's thin parts) the collapse keeps room to work. 0 = the bound alone.
   float maxAspectGrowth = 2;
   /// When set, a collapse of vertex `from` into its neighbour `to` (indices into the input)
-  /// is refused unless allowCollapse(from, to) is true.
+  /// is refused unless allowCollapse(from, to) is true. The fast engine also collapses an open
+  /// mesh (a plane's sheet): an edge on its boundary when its ends share one neighbour; the
+  /// veto must keep boundary vertices on the boundary (never into an interior vertex).
   std::function<bool(std::uint32_t from, std::uint32_t to)> allowCollapse;
   /// When set, the texture coordinates of a triangle's corners (vertex indices of the input):
   /// a collapse is refused when any triangle it changes would get corner coordinates that are
