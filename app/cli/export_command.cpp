@@ -45,13 +45,18 @@ ExportKind exportKindFromPath(const std::string& output) {
                         ": unknown mesh format; use .obj, .glb, .ply, .stl or .off");
 }
 
+// N; a torus's or plane's longer side: the normal maps' resolution, the level --lod counts in.
+int longerSide(const core::GeometryImage& image) {
+  return std::max(image.width(), image.height());
+}
+
 // --normal-map: the full-resolution object-space normals over the image coordinates (they do
 // not depend on the mesh), committed with the mesh's files as one set.
 void stageFullNormalMap(const core::GeometryImage& full, const std::string& path,
                         core::OutputSet& set, std::vector<std::string>& files) {
   if (path.empty()) return;
-  core::stageNormalMap(core::bakeNormalMap(full, {}, core::NormalMapSpace::Object, full.size()),
-                       path, set);
+  core::stageNormalMap(
+      core::bakeNormalMap(full, {}, core::NormalMapSpace::Object, longerSide(full)), path, set);
   files.push_back(path);
 }
 
@@ -76,7 +81,7 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
     files.push_back(output);
   } else {
     const core::NormalMap map =
-        core::bakeNormalMap(full, lod, core::NormalMapSpace::Object, full.size());
+        core::bakeNormalMap(full, lod, core::NormalMapSpace::Object, longerSide(full));
     for (const std::filesystem::path& path : core::stageLodMesh(lod, map, output, set))
       files.push_back(path.string());
     fileVertices = core::lodVertices(lod).positions.size();
@@ -96,7 +101,7 @@ ExitCode exportCollapsed(core::GeometryImage& full, ExportKind kind, int lodSize
   } else {
     report << "wrote " << output << ": " << lod.mesh.positions.size() << " vertices, "
            << lod.mesh.triangles.size() << " triangles (resampled to " << lod.resampledSize
-           << " of " << full.size() << ", then collapsed)\n";
+           << " of " << longerSide(full) << ", then collapsed)\n";
     for (std::size_t k = 1; k < files.size(); ++k)
       report << "wrote " << files[k] << "\n";
   }
@@ -130,10 +135,11 @@ int exportScene(const ExportOptions& opt, ExportKind kind, std::size_t inFile,
   std::size_t objects = 0, vertices = 0, triangles = 0;
   for (const core::SceneObject& object : scene.objects)
     if (object.visible) {
-      const auto n = static_cast<std::size_t>(object.document.size());
+      const core::SampleGrid& grid = object.document.positions.grid();
       ++objects;
-      vertices += n * n + 2;
-      triangles += 2 * n * n;
+      vertices +=
+          static_cast<std::size_t>(core::vertexCount(grid.topology, grid.width, grid.height));
+      triangles += 2 * static_cast<std::size_t>(grid.width) * static_cast<std::size_t>(grid.height);
     }
   std::ostringstream report;
   if (opt.json)
@@ -178,118 +184,112 @@ Command addExportCommand(CLI::App& app) {
                   "texels over the image coordinates: .png (8-bit) or .exr (float)");
   sub->add_flag("--json", opt->json, "Print one JSON object");
 
-  return {sub, [opt, sub]() -> int {
-            const ExportKind kind = exportKindFromPath(opt->output);
-            const bool collapse = opt->triangles != 0;
-            if (opt->triangles < 0 || (collapse && opt->triangles <= 4))
-              throw core::Error(core::ErrorKind::InvalidArgument,
-                                "--triangles " + std::to_string(opt->triangles) +
-                                    " is too small: a closed mesh has at least 4 triangles; ask "
-                                    "for more than 4");
-            if (!opt->normalMap.empty()) {
-              requireOutputExtension(opt->normalMap, {".png", ".exr"},
-                                     "the normal map (8-bit .png or float .exr)");
-              requireNotInput(opt->normalMap, opt->input, "--normal-map");
-            }
-            requireNotInput(opt->output, opt->input);
-            if (opt->object.empty()) {
-              const std::size_t objects = core::readSceneHeaders(opt->input).size();
-              if (objects > 1)
-                return exportScene(*opt, kind, objects,
-                                   sub->count("--lod") > 0 || collapse || !opt->normalMap.empty());
-            }
-            core::Document document =
-                std::move(readChosenObject(opt->input, opt->object,
-                                           {.layers = kind != ExportKind::Plain && !collapse})
-                              .object()
-                              .document);
-            const int n = document.size();
-            // A torus or plane exports as PLY, STL or OFF (its own mesh, every level of a square
-            // image); the textured OBJ and GLB, --triangles and the normal map are the ball's.
-            if (document.positions.topology() != core::Topology::Octahedral) {
-              if (kind != ExportKind::Plain)
-                core::requireOctahedral(document.positions, "textured .obj and .glb export",
-                                        opt->input + " (export .ply, .stl or .off)");
-              if (collapse) core::requireOctahedral(document.positions, "--triangles", opt->input);
-              if (!opt->normalMap.empty())
-                core::requireOctahedral(document.positions, "--normal-map", opt->input);
-              if (!document.positions.square() && sub->count("--lod") > 0)
-                core::requireOctahedral(document.positions, "--lod", opt->input);
-            }
-            if (collapse && n < 4)
-              throw core::Error(core::ErrorKind::InvalidArgument,
-                                "--triangles needs a document of N = 4 or more: this one is N = " +
-                                    std::to_string(n) + " (" + std::to_string(2 * n * n) +
-                                    " triangles); export it without --triangles");
-            if (collapse) core::requireUsableSize(document.positions, opt->input);
-            const int m = sub->count("--lod") > 0 ? opt->lod : n;
-            if (m < 2 || m > n || (m & (m - 1)) != 0)
-              throw core::Error(
-                  core::ErrorKind::InvalidArgument,
-                  "--lod " + std::to_string(opt->lod) +
-                      " is not a power of two between 2 and N = " + std::to_string(n));
-            if (collapse) {
-              if (sub->count("--lod") > 0 && m == n)
-                throw core::Error(core::ErrorKind::InvalidArgument,
-                                  "--lod " + std::to_string(m) +
-                                      " with --triangles must be below N = " + std::to_string(n) +
-                                      ": vertex collapse starts from a resampled image");
-              return exportCollapsed(document.positions, kind, sub->count("--lod") > 0 ? m : 0,
-                                     static_cast<std::size_t>(opt->triangles), opt->output,
-                                     opt->normalMap, opt->json);
-            }
-            // vertices and triangles describe the surface (welded, as info counts them); the OBJ
-            // writes each once (its seams split only `vt`), the GLB stores (M+1)^2 samples, seam
-            // samples twice with their own texture coordinates.
-            const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
-            std::size_t vertices = mm + 2, triangles = 2 * mm, fileVertices = vertices;
-            core::OutputSet set;
-            std::vector<std::string> files;
-            switch (kind) {
-            case ExportKind::TexturedObj:
-              core::stageTexturedObj(document, n / m, opt->output, set);
-              for (const std::filesystem::path& path : core::texturedObjFiles(opt->output))
-                files.push_back(path.string());
-              break;
-            case ExportKind::Glb:
-              core::stageGlb(document, n / m, opt->output, set);
-              files.push_back(opt->output);
-              fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
-              break;
-            case ExportKind::Plain: {
-              const core::TriangleMesh mesh = core::extractMesh(document.positions, n / m);
-              core::stageMesh(mesh, opt->output, set);
-              files.push_back(opt->output);
-              vertices = fileVertices = mesh.positions.size();
-              triangles = mesh.triangles.size();
-              break;
-            }
-            }
-            stageFullNormalMap(document.positions, opt->normalMap, set, files);
-            // The report is made before the commit: a failure there leaves the previous files.
-            std::ostringstream report;
-            if (opt->json) {
-              report << app::JsonReply{{"output", opt->output},
-                                       {"files", files},
-                                       {"lod", m},
-                                       {"vertices", vertices},
-                                       {"triangles", triangles},
-                                       {"file_vertices", fileVertices}}
-                            .dump()
-                     << "\n";
-            } else {
-              report << "wrote " << opt->output << ": " << vertices << " vertices, " << triangles
-                     << " triangles (level " << m << " of " << n << ")";
-              if (fileVertices != vertices)
-                report << ", " << fileVertices << " samples with texture coordinates";
-              report << "\n";
-              for (std::size_t k = 1; k < files.size(); ++k)
-                report << "wrote " << files[k] << "\n";
-            }
-            set.commit();
-            std::cout << report.str();
-            return kExitOk;
-          }};
+  return {
+      sub, [opt, sub]() -> int {
+        const ExportKind kind = exportKindFromPath(opt->output);
+        const bool collapse = opt->triangles != 0;
+        if (opt->triangles < 0 || (collapse && opt->triangles <= 4))
+          throw core::Error(core::ErrorKind::InvalidArgument,
+                            "--triangles " + std::to_string(opt->triangles) +
+                                " is too small: a closed mesh has at least 4 triangles; ask "
+                                "for more than 4");
+        if (!opt->normalMap.empty()) {
+          requireOutputExtension(opt->normalMap, {".png", ".exr"},
+                                 "the normal map (8-bit .png or float .exr)");
+          requireNotInput(opt->normalMap, opt->input, "--normal-map");
+        }
+        requireNotInput(opt->output, opt->input);
+        if (opt->object.empty()) {
+          const std::size_t objects = core::readSceneHeaders(opt->input).size();
+          if (objects > 1)
+            return exportScene(*opt, kind, objects,
+                               sub->count("--lod") > 0 || collapse || !opt->normalMap.empty());
+        }
+        core::Document document =
+            std::move(readChosenObject(opt->input, opt->object,
+                                       {.layers = kind != ExportKind::Plain && !collapse})
+                          .object()
+                          .document);
+        const int n = longerSide(document.positions);
+        // A torus or plane exports its full image as PLY, STL or OFF; textured OBJ and GLB
+        // through its LOD (--triangles: the LOD's own corner coordinates and normal map).
+        if (document.positions.topology() != core::Topology::Octahedral && !collapse &&
+            kind != ExportKind::Plain)
+          core::requireOctahedral(document.positions, "textured .obj and .glb export",
+                                  opt->input + " (export .ply, .stl or .off, or add --triangles)");
+        if (collapse && document.positions.topology() == core::Topology::Octahedral && n < 4)
+          throw core::Error(core::ErrorKind::InvalidArgument,
+                            "--triangles needs a document of N = 4 or more: this one is N = " +
+                                std::to_string(n) + " (" + std::to_string(2 * n * n) +
+                                " triangles); export it without --triangles");
+        if (collapse) core::requireUsableSize(document.positions, opt->input);
+        const int m = sub->count("--lod") > 0 ? opt->lod : n;
+        if (m < 2 || m > n || (m & (m - 1)) != 0)
+          throw core::Error(core::ErrorKind::InvalidArgument,
+                            "--lod " + std::to_string(opt->lod) +
+                                " is not a power of two between 2 and N = " + std::to_string(n));
+        if (collapse) {
+          if (sub->count("--lod") > 0 && m == n)
+            throw core::Error(core::ErrorKind::InvalidArgument,
+                              "--lod " + std::to_string(m) +
+                                  " with --triangles must be below N = " + std::to_string(n) +
+                                  ": vertex collapse starts from a resampled image");
+          return exportCollapsed(document.positions, kind, sub->count("--lod") > 0 ? m : 0,
+                                 static_cast<std::size_t>(opt->triangles), opt->output,
+                                 opt->normalMap, opt->json);
+        }
+        // vertices and triangles describe the surface (welded, as info counts them); the OBJ
+        // writes each once (its seams split only `vt`), the GLB stores (M+1)^2 samples, seam
+        // samples twice with their own texture coordinates.
+        const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
+        std::size_t vertices = mm + 2, triangles = 2 * mm, fileVertices = vertices;
+        core::OutputSet set;
+        std::vector<std::string> files;
+        switch (kind) {
+        case ExportKind::TexturedObj:
+          core::stageTexturedObj(document, n / m, opt->output, set);
+          for (const std::filesystem::path& path : core::texturedObjFiles(opt->output))
+            files.push_back(path.string());
+          break;
+        case ExportKind::Glb:
+          core::stageGlb(document, n / m, opt->output, set);
+          files.push_back(opt->output);
+          fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
+          break;
+        case ExportKind::Plain: {
+          const core::TriangleMesh mesh = core::extractMesh(document.positions, n / m);
+          core::stageMesh(mesh, opt->output, set);
+          files.push_back(opt->output);
+          vertices = fileVertices = mesh.positions.size();
+          triangles = mesh.triangles.size();
+          break;
+        }
+        }
+        stageFullNormalMap(document.positions, opt->normalMap, set, files);
+        // The report is made before the commit: a failure there leaves the previous files.
+        std::ostringstream report;
+        if (opt->json) {
+          report << app::JsonReply{{"output", opt->output},
+                                   {"files", files},
+                                   {"lod", m},
+                                   {"vertices", vertices},
+                                   {"triangles", triangles},
+                                   {"file_vertices", fileVertices}}
+                        .dump()
+                 << "\n";
+        } else {
+          report << "wrote " << opt->output << ": " << vertices << " vertices, " << triangles
+                 << " triangles (level " << m << " of " << n << ")";
+          if (fileVertices != vertices)
+            report << ", " << fileVertices << " samples with texture coordinates";
+          report << "\n";
+          for (std::size_t k = 1; k < files.size(); ++k)
+            report << "wrote " << files[k] << "\n";
+        }
+        set.commit();
+        std::cout << report.str();
+        return kExitOk;
+      }};
 }
 
 } // namespace octaclay::app

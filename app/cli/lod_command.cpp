@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -178,10 +179,12 @@ Command addLodCommand(CLI::App& app) {
         core::Document document = std::move(
             readChosenObject(opt->input, opt->object, {.layers = false}).object().document);
         core::requireUsableSize(document.positions, opt->input);
-        core::requireOctahedral(document.positions, "lod", opt->input);
         core::GeometryImage& full = document.positions;
-        const int n = full.size();
-        if (n < 4)
+        // N; a torus's or plane's longer side (--size is M of that side, gridLod checks the other).
+        const int n = std::max(full.width(), full.height());
+        const std::size_t fullTriangles =
+            2 * std::size_t(full.width()) * std::size_t(full.height());
+        if (full.topology() == core::Topology::Octahedral && n < 4)
           throw Error(
               ErrorKind::InvalidArgument,
               "an LOD needs a document of N = 4 or more: this one is N = " + std::to_string(n) +
@@ -270,7 +273,8 @@ Command addLodCommand(CLI::App& app) {
                                    {"triangles", lod.mesh.triangles.size()},
                                    {"vertices", lod.mesh.positions.size()},
                                    {"file_vertices", fileVertices},
-                                   {"full_triangles", 2 * std::size_t(n) * std::size_t(n)},
+                                   {"full_triangles", fullTriangles},
+                                   {"topology", core::topologyName(full.topology())},
                                    {"normal_space", core::normalMapSpaceName(*space)},
                                    {"map_size", mapSize},
                                    {"saliency_computed", computeSaliency},

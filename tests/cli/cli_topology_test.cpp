@@ -1,6 +1,7 @@
 // octaclay-cli on torus and plane documents (issue 33): `new --shape torus|plane|disc` writes
 // them, `info` describes them (Euler 0 closed, Euler 1 open), `export` writes PLY and OFF and
-// refuses the ball-only textured OBJ and GLB, `lod` refuses them, `stroke` sculpts a square torus
+// refuses the ball-only textured OBJ and GLB of the full image, `lod` makes their LODs (and the
+// textured files through them), `stroke` sculpts a square torus
 // across its wrap and a plane to its edge; bad arguments exit 2 and write nothing.
 
 #include "cli_support.h"
@@ -61,12 +62,9 @@ private slots:
     QCOMPARE(off["vertices"].toInt(), 17 * 17);
     EXPECT_FAILURE(kUsage, file("t.obj"), "export", file("t.exr"), "-o", file("t.obj"));
     EXPECT_FAILURE(kUsage, file("t.glb"), "export", file("t.exr"), "-o", file("t.glb"));
-    EXPECT_FAILURE(kUsage, file("t.lod.obj"), "lod", file("t.exr"), "--size", "8", "-o",
-                   file("t.lod.obj"));
     // Commands still written for the ball alone say so by name (exit 2), and write nothing.
     for (const QStringList& args :
-         {QStringList{"lod", file("t.exr"), "--size", "8", "-o", file("t.lod.obj")},
-          QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
+         {QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
           QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")},
           QStringList{"resize", file("t.exr"), "--size", "16", "-o", file("t4.exr")}}) {
       const Result r = runCli(args);
@@ -85,6 +83,33 @@ private slots:
     QVERIFY2(lossy.exitCode == kUsage && lossy.err.contains("codec 'dct' cannot code object"),
              qPrintable(lossy.err));
     QVERIFY(!QFileInfo::exists(file("t-dct.ocz")));
+  }
+
+  // The LOD of a torus and a disc: M counts the longer side's cells, the mesh keeps the
+  // topology (closed with Euler 0; one boundary), the textured OBJ and GLB come through it.
+  void lodAndCollapsedExportOfTorusAndDisc() {
+    RUN_JSON(made, "new", "--shape", "torus", "--size", "64", "-o", file("t.exr"), "--json");
+    RUN_JSON(lod, "lod", file("t.exr"), "--size", "16", "--method", "point", "-o",
+             file("t.lod.obj"), "--json");
+    QCOMPARE(lod["topology"].toString(), QString("torus"));
+    QCOMPARE(lod["size"].toInt(), 16);
+    QCOMPARE(lod["triangles"].toInt(), 2 * 16 * 8); // 64 x 32 cells, every fourth
+    QCOMPARE(lod["full_triangles"].toInt(), 2 * 64 * 32);
+    QVERIFY(lod["hausdorff"].toDouble() < 0.02);
+    EXPECT_FAILURE(kUsage, file("t.big.obj"), "lod", file("t.exr"), "--size", "64", "-o",
+                   file("t.big.obj"));
+    RUN_JSON(collapsed, "export", file("t.exr"), "--triangles", "500", "-o", file("t.glb"),
+             "--normal-map", file("t.normals.png"), "--json");
+    QVERIFY(collapsed["triangles"].toInt() <= 502);
+    QVERIFY(QFileInfo(file("t.glb")).size() > 1000);
+    QVERIFY(QFileInfo(file("t.normals.png")).size() > 100);
+    RUN_JSON(disc, "new", "--shape", "disc", "--size", "64", "-o", file("d.exr"), "--json");
+    RUN_JSON(discLod, "lod", file("d.exr"), "--triangles", "1500", "-o", file("d.lod.obj"),
+             "--json");
+    QCOMPARE(discLod["topology"].toString(), QString("plane"));
+    QCOMPARE(discLod["method_used"].toString(), QString("collapse"));
+    QVERIFY(discLod["triangles"].toInt() <= 1502);
+    QVERIFY(discLod["hausdorff"].toDouble() < 0.001); // a flat sheet, its circle kept
   }
 
   void strokesAcrossTheWrapAndToTheEdge() {

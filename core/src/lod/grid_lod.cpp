@@ -231,6 +231,7 @@ LodMesh gridLod(const GeometryImage& image, const LodOptions& options) {
         collapseWith, copies, fullCollapse,
         fullCollapse ? saliencyWeights(image, sampleOf, options.collapseSaliencyWeight)
                      : std::vector<float>{});
+    collapseOptions.openBoundary = grid.topology == Topology::Plane;
     collapseOptions.allowCollapse = [&](std::uint32_t from, std::uint32_t to) {
       const LineClass c = classes[from];
       if (c == LineClass::Interior) return true;

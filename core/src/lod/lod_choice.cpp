@@ -32,6 +32,8 @@ bool imageStretches(const StretchSummary& s) {
 
 ResampleMethod chooseLodMethod(const GeometryImage& image, const LodOptions& options) {
   if (!options.autoMayCollapse) return ResampleMethod::SalientPoint;
+  // A torus or plane has no adaptive hierarchy: its collapse (gridLod), wherever it stretches.
+  if (image.topology() != Topology::Octahedral) return ResampleMethod::Collapse;
   if (const int e = detail::unitScaleExponent(image); e != 0)
     return chooseLodMethod(detail::scaledPositions(image, e), options);
   return imageStretches(coarseStretch(image)) || imageRoughness(image) > kSmoothRoughness

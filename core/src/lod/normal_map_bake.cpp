@@ -19,15 +19,16 @@ namespace {
 
 constexpr int kMaxResolution = 8192;
 
-// The full mesh's interpolated vertex normal at sample coordinates (s, t) in [0, N]²: the
-// barycentric blend over the full-resolution triangle holding the point, split as extractMesh
-// splits its cell.
+// The full mesh's interpolated vertex normal at sample coordinates (s, t) in [0, W] × [0, H]:
+// the barycentric blend over the full-resolution triangle holding the point, split as
+// extractMesh splits its cell (a torus's or plane's cells all along the anti-diagonal).
 class FullNormals {
 public:
   explicit FullNormals(const GeometryImage& image)
-      : n_(image.size()), normals_(image.texelCount()) {
+      : width_(image.width()), height_(image.height()),
+        octahedral_(image.topology() == Topology::Octahedral), normals_(image.texelCount()) {
     const int side = image.side();
-    detail::parallelRows(side, [&](int j0, int j1) {
+    detail::parallelRows(image.rows(), [&](int j0, int j1) {
       for (int j = j0; j < j1; ++j)
         for (int i = 0; i < side; ++i) {
           const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
@@ -40,14 +41,14 @@ public:
   }
 
   Vec3f at(float s, float t) const {
-    const int i = std::clamp(static_cast<int>(std::floor(s)), 0, n_ - 1);
-    const int j = std::clamp(static_cast<int>(std::floor(t)), 0, n_ - 1);
+    const int i = std::clamp(static_cast<int>(std::floor(s)), 0, width_ - 1);
+    const int j = std::clamp(static_cast<int>(std::floor(t)), 0, height_ - 1);
     const float fx = std::clamp(s - static_cast<float>(i), 0.0f, 1.0f);
     const float fy = std::clamp(t - static_cast<float>(j), 0.0f, 1.0f);
     const Vec3f a = normal(i, j), b = normal(i + 1, j), c = normal(i + 1, j + 1),
                 d = normal(i, j + 1);
     Vec3f blend;
-    if (cellSplit(n_, i, j) == CellSplit::AntiDiagonal) {
+    if (!octahedral_ || cellSplit(width_, i, j) == CellSplit::AntiDiagonal) {
       // Triangles (a, b, d) and (b, c, d), split along b–d.
       blend = fx + fy <= 1 ? a * (1 - fx - fy) + b * fx + d * fy
                            : b * (1 - fy) + c * (fx + fy - 1) + d * (1 - fx);
@@ -62,10 +63,11 @@ public:
 
 private:
   Vec3f normal(int i, int j) const {
-    return normals_[static_cast<std::size_t>(j) * static_cast<std::size_t>(n_ + 1) +
+    return normals_[static_cast<std::size_t>(j) * static_cast<std::size_t>(width_ + 1) +
                     static_cast<std::size_t>(i)];
   }
-  int n_;
+  int width_, height_;
+  bool octahedral_;
   std::vector<Vec3f> normals_;
 };
 
@@ -174,15 +176,15 @@ NormalMap bakeNormalMap(const GeometryImage& full, const LodMesh& lod, NormalMap
     throw Error(ErrorKind::InvalidArgument, "normal map resolution " + std::to_string(resolution) +
                                                 " is out of range: use 2 to " +
                                                 std::to_string(kMaxResolution));
-  requireValidSize(full.size());
+  requireValidGrid(full.grid());
   NormalMap map;
   map.space = space;
   map.resolution = resolution;
   map.texels.resize(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution));
   const FullNormals normals(full);
-  const float n = static_cast<float>(full.size());
+  const float across = static_cast<float>(full.width()), down = static_cast<float>(full.height());
   const auto fullNormal = [&](int x, int y) {
-    return normals.at(texelToImage(x, resolution) * n, texelToImage(y, resolution) * n);
+    return normals.at(texelToImage(x, resolution) * across, texelToImage(y, resolution) * down);
   };
 
   if (space == NormalMapSpace::Object) {

@@ -90,6 +90,7 @@ public:
       for (const std::uint32_t c : tri)
         quadrics_[c] += q;
     }
+    if (options.openBoundary) addBoundaryPlanes(areaScale);
     minCos_ = std::cos(double(options.maxNormalTurnDegrees) * M_PI / 180.0);
     if (std::abs(minCos_) < 1e-12) minCos_ = 0; // 90°: cos gives 6e-17, the turn test's sign
     vertexCount_ = 0;
@@ -170,8 +171,11 @@ public:
         const std::uint32_t b = triangles_[t][(edge % 3 + 1) % 3];
         std::uint32_t from = edgeTo_[edge] ? a : b, to = edgeTo_[edge] ? b : a;
         // Earlier collapses of this pass may have changed the edge or its quadrics (they
-        // touched an end): recompute.
-        if ((touched_[a] || touched_[b]) && !(cheapestDirection(a, b, from, to) <= threshold))
+        // touched an end): recompute. An open mesh waits for the next pass: where a flat sheet
+        // makes every collapse cost the same, one pass would otherwise run chains of collapses
+        // into one vertex along its outline (a disc's side gone into one edge).
+        if ((touched_[a] || touched_[b]) &&
+            (options_.openBoundary || !(cheapestDirection(a, b, from, to) <= threshold)))
           continue;
         if (vertexCount_ <= 4 || !legal(from, to)) continue;
         alive -= collapse(from, to);
@@ -185,6 +189,34 @@ public:
   }
 
 private:
+  // Each boundary edge (no triangle runs it the other way) adds to its ends the plane through
+  // it that stands on its triangle, weighted far above the faces' (Garland and Heckbert's
+  // boundary constraint): a flat sheet's outline then costs what its bends cost, instead of
+  // nothing, and keeps its shape (a disc's circle).
+  void addBoundaryPlanes(double areaScale) {
+    constexpr double kBoundaryWeight = 100;
+    std::vector<std::uint64_t> halfEdges;
+    halfEdges.reserve(triangles_.size() * 3);
+    const auto key = [](std::uint32_t a, std::uint32_t b) { return std::uint64_t(a) << 32 | b; };
+    for (const auto& tri : triangles_)
+      for (int k = 0; k < 3; ++k)
+        halfEdges.push_back(key(tri[k], tri[(k + 1) % 3]));
+    std::sort(halfEdges.begin(), halfEdges.end());
+    for (std::size_t t = 0; t < triangles_.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
+        if (std::binary_search(halfEdges.begin(), halfEdges.end(), key(b, a))) continue;
+        const Vec3f edge = positions_[b] - positions_[a];
+        const Vec3f u = normalize(cross(edge, normals_[t]));
+        if (!(length(u) > 0)) continue;
+        const double d = -double(dot(u, positions_[a]));
+        Quadric q;
+        q.addPlane(u.x, u.y, u.z, d, kBoundaryWeight * double(dot(edge, edge)) * areaScale);
+        quadrics_[a] += q;
+        quadrics_[b] += q;
+      }
+  }
+
   // The quadric error of collapsing edge (a, b) the cheaper allowed way, that way in from → to;
   // infinity when neither is allowed.
   double cheapestDirection(std::uint32_t a, std::uint32_t b, std::uint32_t& from,

@@ -97,7 +97,8 @@ struct LodOptions {
 };
 
 struct LodMesh {
-  /// Welded, closed, manifold, genus 0, counter-clockwise seen from outside.
+  /// Welded, manifold, counter-clockwise seen from outside; of the image's topology: closed
+  /// genus 0 (the ball), closed genus 1 (a torus), one boundary loop (a plane).
   TriangleMesh mesh;
   /// Per triangle, the image coordinates of its three corners, in the same order as
   /// mesh.triangles. Vertices on the octahedral seams have several image positions; each
@@ -123,6 +124,10 @@ struct LodMesh {
 /// power of two, maxNormalTurnDegrees is outside (0, 180] or collapseSaliencyWeight < 0. Needs the
 /// image's saliency in alpha for the salient methods (computeSaliency in saliency.h, or the GPU
 /// pass).
+/// A torus or plane image (W × H) is resampled by a power of two d to (W/d) × (H/d) cells, M
+/// = max(W, H)/d; its wrap lines and boundary are kept as the ball's seams are (salient samples
+/// and collapses move along them only), a plane's boundary samples average along it; adaptive
+/// is its collapse (methodUsed says so).
 LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
 
 /// Auto's choice for this image and these options (cheap: a stretch summary over a coarse
@@ -130,7 +135,8 @@ LodMesh generateLod(const GeometryImage& image, const LodOptions& options);
 /// image-based adaptive method where the image samples a smooth surface evenly
 /// (imageStretches false, imageRoughness at most kSmoothRoughness), the full-resolution
 /// collapse elsewhere (docs/lod.md gives the benchmark behind the thresholds). With
-/// options.autoMayCollapse false (the live LOD): salient-point, whatever the image.
+/// options.autoMayCollapse false (the live LOD): salient-point, whatever the image. A torus or
+/// plane: the collapse (its grid has no adaptive hierarchy).
 ResampleMethod chooseLodMethod(const GeometryImage& image, const LodOptions& options);
 /// The stretch summary chooseLodMethod judges by: summarizeStretch of the image point-sampled
 /// to a 64 grid (the image itself below N = 4).

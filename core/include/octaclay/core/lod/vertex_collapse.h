@@ -50,10 +50,14 @@ struct VertexCollapseOptions {
   /// triangle (CollapsedMesh::inputTriangle) was: where the input is already stretched (a
   /// geometry image's thin parts) the collapse keeps room to work. 0 = the bound alone.
   float maxAspectGrowth = 2;
+  /// The mesh may be open (a plane's sheet; fast engine only): each boundary edge adds a plane
+  /// through it, standing on its triangle, to its ends' quadrics (weighted 100× a face's), so
+  /// the outline keeps its shape where the sheet is flat. An edge on the boundary collapses
+  /// when its ends share one neighbour; allowCollapse must keep boundary vertices on the
+  /// boundary (never into an interior vertex).
+  bool openBoundary = false;
   /// When set, a collapse of vertex `from` into its neighbour `to` (indices into the input)
-  /// is refused unless allowCollapse(from, to) is true. The fast engine also collapses an open
-  /// mesh (a plane's sheet): an edge on its boundary when its ends share one neighbour; the
-  /// veto must keep boundary vertices on the boundary (never into an interior vertex).
+  /// is refused unless allowCollapse(from, to) is true.
   std::function<bool(std::uint32_t from, std::uint32_t to)> allowCollapse;
   /// When set, the texture coordinates of a triangle's corners (vertex indices of the input):
   /// a collapse is refused when any triangle it changes would get corner coordinates that are
