@@ -2,9 +2,12 @@
 // torus's W × H from its radii, W ≠ H), the GPU renderer draws the edited one, and a stroke made
 // with the mouse sculpts it: across the torus's wrap its seams stay exact (column W is column 0,
 // row H is row 0) and both sides of the wrap move; on a plane the samples up to its edge move.
-// The pixels change where the stroke went and nowhere far from it. Drawn through the real VTK
-// viewport (xcb under Xvfb, llvmpipe).
+// The pixels change where the stroke went and nowhere far from it. The LOD view shows a torus's
+// and a plane's level of detail (a closed ring; a sheet with one boundary) at its target. Drawn
+// through the real VTK viewport (xcb under Xvfb, llvmpipe).
 #include "camera_control.h"
+#include "lod_generator.h"
+#include "lod_panel.h"
 #include "main_window.h"
 #include "modeller.h"
 #include "test_window.h"
@@ -16,6 +19,7 @@
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <QAction>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -100,6 +104,7 @@ private slots:
   void aTorusIsAddedDrawnAndSculptedAcrossItsWrap();
   void aPlaneIsAddedDrawnAndSculptedToItsEdge();
   void aStrokeAcrossTheBallsBorderStaysUnderThePointer();
+  void theLodViewShowsATorusAndAPlane();
 
 private:
   // Opens a scene of one sphere (N = 64) far to the side, the one the Add menu adds beside.
@@ -353,6 +358,69 @@ void TopologyObjectsRenderTest::aStrokeAcrossTheBallsBorderStaysUnderThePointer(
     for (int i = n / 2 - 3; i <= n / 2 + 3; ++i)
       QVERIFY2(sameBits(after.at(i, j), before.at(i, j)),
                qPrintable(QString("sample (%1, %2) moved").arg(i).arg(j)));
+}
+
+// The LOD view on a torus, then on a plane (each alone): generated without an error, of the
+// object's topology, at most the target's triangles, drawn where the model is and not in the
+// torus's hole; after a stroke across the wrap, regenerated.
+void TopologyObjectsRenderTest::theLodViewShowsATorusAndAPlane() {
+  QVERIFY(openStart());
+  const QString added = addAlone("actionAddTorus");
+  QVERIFY2(added.isEmpty(), qPrintable(added));
+  app::ViewportWidget* view = window_->viewport();
+  QSignalSpy generated(window_->lodGenerator(), &app::LodGenerator::generated);
+  QSignalSpy failed(window_->lodGenerator(), &app::LodGenerator::failed);
+  constexpr int kTarget = 3000;
+  window_->lodPanel()->setTargetTriangles(kTarget);
+  window_->lodPanel()->setDisplay(app::LodPanel::Display::Lod);
+  const auto waitForLod = [&](int count) {
+    return QTest::qWaitFor(
+        [&] {
+          return (generated.count() > count || failed.count() > 0) &&
+                 !window_->lodGenerator()->busy() && view->lodTriangles() > 0;
+        },
+        30000);
+  };
+  QVERIFY(waitForLod(0));
+  QVERIFY2(failed.isEmpty(), qPrintable(failed.isEmpty() ? "" : failed[0][0].toString()));
+  const auto checkRing = [&] {
+    const std::shared_ptr<const core::LodMesh> lod = window_->lodGenerator()->lod();
+    QVERIFY(lod);
+    QVERIFY2(lod->mesh.triangles.size() <= std::size_t(kTarget) + 2,
+             qPrintable(QString::number(lod->mesh.triangles.size())));
+    const core::MeshTopology topology = core::analyzeTopology(lod->mesh);
+    QVERIFY(topology.closed());
+    QCOMPARE(topology.euler, 0LL);
+    QCOMPARE(view->lodTriangles(), static_cast<long long>(lod->mesh.triangles.size()));
+  };
+  checkRing();
+  const QImage shown = frame(*view);
+  if (qEnvironmentVariableIsSet("TOPOLOGY_TEST_SAVE")) shown.save("/tmp/torus_lod.png");
+  const QPoint top = pixelOf(0.7, 0, 0.3, shown.width(), shown.height());
+  const QPoint hole = pixelOf(0, 0, 0, shown.width(), shown.height());
+  QVERIFY(shown.pixel(top) != shown.pixel(0, 0));
+  QCOMPARE(shown.pixel(hole), shown.pixel(0, 0));
+  // A stroke across the wrap: the LOD follows and is made again.
+  const int before = int(generated.count());
+  strokeWithTheMouse(pixelOf(0.7, -0.15, 0.3, shown.width(), shown.height()),
+                     pixelOf(0.7, 0.15, 0.3, shown.width(), shown.height()));
+  QVERIFY(waitForLod(before));
+  QVERIFY(failed.isEmpty());
+  checkRing();
+
+  const QString plane = addAlone("actionAddPlane");
+  QVERIFY2(plane.isEmpty(), qPrintable(plane));
+  const int planeBefore = int(generated.count());
+  QVERIFY(waitForLod(planeBefore));
+  QVERIFY(failed.isEmpty());
+  const std::shared_ptr<const core::LodMesh> sheet = window_->lodGenerator()->lod();
+  const core::MeshTopology topology = core::analyzeTopology(sheet->mesh);
+  QCOMPARE(topology.euler, 1LL);
+  QVERIFY(topology.boundaryEdges > 0);
+  QVERIFY(sheet->mesh.triangles.size() <= std::size_t(kTarget) + 2);
+  const QImage sheetShown = frame(*view);
+  QVERIFY(sheetShown.pixel(pixelOf(0.5, 0.5, 0, sheetShown.width(), sheetShown.height())) !=
+          sheetShown.pixel(0, 0));
 }
 
 QTEST_MAIN(TopologyObjectsRenderTest)

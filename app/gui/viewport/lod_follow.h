@@ -24,15 +24,15 @@ public:
   /// Each vertex's source sample (from its corners' image coordinates).
   const std::vector<core::Sample>& sources() const { return sources_; }
 
-  /// The LOD with every vertex moved by now(source) − then(source); `now` must have the size of
-  /// the source image (else the LOD is returned as made).
+  /// The LOD with every vertex moved by now(source) − then(source); `now` must have the grid
+  /// of the source image (else the LOD is returned as made).
   core::LodMesh follow(const core::GeometryImage& now) const;
 
 private:
   core::LodMesh lod_;
   std::vector<core::Sample> sources_;
   std::vector<core::Vec3f> sourcePositions_; // then(source), per vertex
-  int n_ = 0;
+  core::SampleGrid grid_;                    // the source's: a torus's or plane's W × H
 };
 
 } // namespace octaclay::app
