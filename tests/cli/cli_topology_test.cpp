@@ -1,7 +1,7 @@
 // octaclay-cli on torus and plane documents (issue 33): `new --shape torus|plane|disc` writes
 // them, `info` describes them (Euler 0 closed, Euler 1 open), `export` writes PLY and OFF and
 // refuses the ball-only textured OBJ and GLB of the full image, `lod` makes their LODs (and the
-// textured files through them), `stroke` sculpts a square torus
+// textured files through them), `resize` resamples them, `stroke` sculpts a square torus
 // across its wrap and a plane to its edge; bad arguments exit 2 and write nothing.
 
 #include "cli_support.h"
@@ -63,10 +63,8 @@ private slots:
     EXPECT_FAILURE(kUsage, file("t.obj"), "export", file("t.exr"), "-o", file("t.obj"));
     EXPECT_FAILURE(kUsage, file("t.glb"), "export", file("t.exr"), "-o", file("t.glb"));
     // Commands still written for the ball alone say so by name (exit 2), and write nothing.
-    for (const QStringList& args :
-         {QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
-          QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")},
-          QStringList{"resize", file("t.exr"), "--size", "16", "-o", file("t4.exr")}}) {
+    for (const QStringList& args : {QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
+                                    QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")}}) {
       const Result r = runCli(args);
       QVERIFY2(r.exitCode == kUsage && r.err.contains("works on octahedral documents only"),
                qPrintable(describe(args, r)));
@@ -110,6 +108,26 @@ private slots:
     QCOMPARE(discLod["method_used"].toString(), QString("collapse"));
     QVERIFY(discLod["triangles"].toInt() <= 1502);
     QVERIFY(discLod["hausdorff"].toDouble() < 0.001); // a flat sheet, its circle kept
+  }
+
+  // resize: a 64 × 32 torus to width 256 is 256 × 128, closed, its wrap exact; down to 4 would
+  // leave 2 cells around the tube: refused by name, nothing written.
+  void resizeATorus() {
+    RUN_JSON(made, "new", "--shape", "torus", "--size", "64", "-o", file("r.exr"), "--json");
+    RUN_JSON(up, "resize", file("r.exr"), "--size", "256", "-o", file("r128.exr"), "--json");
+    QVERIFY2(up["changed"].toBool(), qPrintable(up["reason"].toString()));
+    QCOMPARE(up["size"].toInt(), 256);
+    QCOMPARE(up["height"].toInt(), 128);
+    QCOMPARE(up["topology"].toString(), QString("torus"));
+    QVERIFY(up["before"].isNull());
+    QVERIFY(up["hausdorff"].toDouble() < 0.01);
+    RUN_JSON(info, "info", file("r128.exr"), "--json");
+    QCOMPARE(info["width"].toInt(), 256);
+    QCOMPARE(info["seam_gap"].toDouble(), 0.0);
+    QCOMPARE(info["euler"].toInt(), 0);
+    const Result small = runCli({"resize", file("r.exr"), "--size", "4", "-o", file("r4.exr")});
+    QVERIFY2(small.exitCode == kUsage && small.err.contains("at least 4"), qPrintable(small.err));
+    QVERIFY(!QFileInfo::exists(file("r4.exr")));
   }
 
   void strokesAcrossTheWrapAndToTheEdge() {

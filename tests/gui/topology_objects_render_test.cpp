@@ -3,7 +3,8 @@
 // with the mouse sculpts it: across the torus's wrap its seams stay exact (column W is column 0,
 // row H is row 0) and both sides of the wrap move; on a plane the samples up to its edge move.
 // The pixels change where the stroke went and nowhere far from it. The LOD view shows a torus's
-// and a plane's level of detail (a closed ring; a sheet with one boundary) at its target. Drawn
+// and a plane's level of detail (a closed ring; a sheet with one boundary) at its target; Mesh ▸
+// Resolution resamples a ring. Drawn
 // through the real VTK viewport (xcb under Xvfb, llvmpipe).
 #include "camera_control.h"
 #include "lod_generator.h"
@@ -407,6 +408,23 @@ void TopologyObjectsRenderTest::theLodViewShowsATorusAndAPlane() {
   QVERIFY(waitForLod(before));
   QVERIFY(failed.isEmpty());
   checkRing();
+
+  // Mesh ▸ Resolution on the ring: twice the cells both ways, its wrap exact, drawn; one undo
+  // brings the old image back bit for bit.
+  const core::GeometryImage ring = window_->viewport()->modeller().document().positions;
+  QVERIFY(window_->changeResolution(2 * ring.width()));
+  const core::GeometryImage& finer = window_->viewport()->modeller().document().positions;
+  QCOMPARE(finer.width(), 2 * ring.width());
+  QCOMPARE(finer.height(), 2 * ring.height());
+  for (int j = 0; j <= finer.height(); ++j)
+    QVERIFY(sameBits(finer.at(finer.width(), j), finer.at(0, j)));
+  const QImage resized = frame(*view);
+  QVERIFY(resized.pixel(top) != resized.pixel(0, 0));
+  QCOMPARE(resized.pixel(hole), resized.pixel(0, 0));
+  window_->undoStack()->undo();
+  const core::GeometryImage& undone = window_->viewport()->modeller().document().positions;
+  QCOMPARE(undone.width(), ring.width());
+  QVERIFY(std::memcmp(undone.texels().data(), ring.texels().data(), ring.byteSize()) == 0);
 
   const QString plane = addAlone("actionAddPlane");
   QVERIFY2(plane.isEmpty(), qPrintable(plane));

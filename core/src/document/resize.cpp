@@ -50,24 +50,56 @@ Taps tapsFor(int k, int n, int m) {
   return t;
 }
 
-// Resamples a field of `channels` floats per sample of an n grid, read by value(sample, out),
-// into (m+1)² × channels floats; clamp: each channel kept within the values of the taps that
-// carry weight (no overshoot).
+// The sample that grid sample s is the same vertex as and takes its bits from: the ball's
+// canonical one, a torus's (i mod W, j mod H); a plane's samples are all their own.
+Sample canonicalIn(const SampleGrid& grid, Sample s) {
+  switch (grid.topology) {
+  case Topology::Octahedral:
+    return canonical(grid.width, s);
+  case Topology::Torus:
+    return {s.i % grid.width, s.j % grid.height};
+  case Topology::Plane:
+    break;
+  }
+  return s;
+}
+
+// Gives every identified sample of a (W+1) × (H+1) field of `ch` floats its canonical one's.
+void copyIdentified(const SampleGrid& grid, std::size_t ch, float* field) {
+  if (grid.topology == Topology::Plane) return;
+  const std::size_t side = static_cast<std::size_t>(grid.width + 1);
+  for (int j = 0; j <= grid.height; ++j)
+    for (int i = 0; i <= grid.width; ++i) {
+      const Sample c = canonicalIn(grid, {i, j});
+      if (c == Sample{i, j}) continue;
+      std::copy_n(
+          &field[(static_cast<std::size_t>(c.j) * side + static_cast<std::size_t>(c.i)) * ch], ch,
+          &field[(static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)) * ch]);
+    }
+}
+
+// Resamples a field of `channels` floats per sample of the `from` grid, read by value(sample,
+// out), onto the finer `to` grid ((W'+1) × (H'+1) × channels floats); clamp: each channel kept
+// within the values of the taps that carry weight (no overshoot).
 template <class Value>
-std::vector<float> resampleField(int n, int m, int channels, bool clamp, const Value& value) {
-  const std::size_t side = static_cast<std::size_t>(m + 1), ch = static_cast<std::size_t>(channels);
-  std::vector<Taps> taps;
-  for (int k = 0; k <= m; ++k)
-    taps.push_back(tapsFor(k, n, m));
-  std::vector<float> out(side * side * ch);
-  detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+std::vector<float> resampleField(const SampleGrid& from, const SampleGrid& to, int channels,
+                                 bool clamp, const Value& value) {
+  const std::size_t side = static_cast<std::size_t>(to.width + 1),
+                    ch = static_cast<std::size_t>(channels);
+  std::vector<Taps> across, down;
+  for (int k = 0; k <= to.width; ++k)
+    across.push_back(tapsFor(k, from.width, to.width));
+  for (int k = 0; k <= to.height; ++k)
+    down.push_back(tapsFor(k, from.height, to.height));
+  std::vector<float> out(side * static_cast<std::size_t>(to.height + 1) * ch);
+  detail::parallelRows(to.height + 1, [&](int rowBegin, int rowEnd) {
     std::array<float, 4> v{};
     std::array<double, 4> sum{}, lo{}, hi{};
     for (int j = rowBegin; j < rowEnd; ++j) {
-      const Taps& ty = taps[static_cast<std::size_t>(j)];
+      const Taps& ty = down[static_cast<std::size_t>(j)];
       // Only the samples on the grid's canonical positions matter; the rest are copied below.
-      for (int i = 0; i <= m; ++i) {
-        const Taps& tx = taps[static_cast<std::size_t>(i)];
+      for (int i = 0; i <= to.width; ++i) {
+        const Taps& tx = across[static_cast<std::size_t>(i)];
         sum.fill(0);
         lo.fill(1e300);
         hi.fill(-1e300);
@@ -76,7 +108,7 @@ std::vector<float> resampleField(int n, int m, int channels, bool clamp, const V
           for (std::size_t a = 0; a < tx.weights.size(); ++a) {
             const double w = tx.weights[a] * ty.weights[b];
             if (w == 0) continue;
-            value(wrap(n, {tx.base + int(a), ty.base + int(b)}), v.data());
+            value(wrap(from, {tx.base + int(a), ty.base + int(b)}), v.data());
             for (std::size_t c = 0; c < ch; ++c) {
               sum[c] += w * double(v[c]);
               lo[c] = std::min(lo[c], double(v[c]));
@@ -90,16 +122,24 @@ std::vector<float> resampleField(int n, int m, int channels, bool clamp, const V
       }
     }
   });
-  // Identified samples: the canonical one's bits.
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i) {
-      const Sample c = canonical(m, {i, j});
-      if (c == Sample{i, j}) continue;
-      std::copy_n(&out[(static_cast<std::size_t>(c.j) * side + static_cast<std::size_t>(c.i)) * ch],
-                  ch,
-                  &out[(static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i)) * ch]);
-    }
+  copyIdentified(to, ch, out.data());
   return out;
+}
+
+// The median length of the grid's edges along i and j (a torus's or plane's stretch summary has
+// no other use here), over at most about a million of them.
+double medianGridEdge(const GeometryImage& image) {
+  std::vector<float> edges;
+  const int stride = std::max(1, int(std::sqrt(double(image.width()) * image.height() / 5e5)));
+  for (int j = 0; j < image.height(); j += stride)
+    for (int i = 0; i < image.width(); i += stride) {
+      const Vec3f p = image.at(i, j).xyz();
+      edges.push_back(length(image.at(i + 1, j).xyz() - p));
+      edges.push_back(length(image.at(i, j + 1).xyz() - p));
+    }
+  if (edges.empty()) return 0;
+  std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
+  return edges[edges.size() / 2];
 }
 
 // Catmull-Rom swings out beside long edges (a stretched limb's 64× the median: 2.5 % of the
@@ -108,23 +148,25 @@ std::vector<float> resampleField(int n, int m, int channels, bool clamp, const V
 // median edge, far above the sagitta of a smooth surface's cell (h/8R of h) and far below an
 // overshoot beside a long edge. Identified samples get their canonical sample's bits again.
 void limitOvershoot(const GeometryImage& from, GeometryImage& to) {
-  const int n = from.size(), m = to.size(), r = m / n, half = n / 2;
-  const double cap = 0.1 * summarizeStretch(from).medianEdge;
+  const bool ball = from.topology() == Topology::Octahedral;
+  const int w = from.width(), h = from.height(), r = to.width() / w, half = w / 2;
+  const double cap = 0.1 * (ball ? summarizeStretch(from).medianEdge : medianGridEdge(from));
   if (!(cap > 0)) return;
-  detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+  detail::parallelRows(to.height() + 1, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
-      for (int i = 0; i <= m; ++i) {
-        const int ci = std::min(i / r, n - 1), cj = std::min(j / r, n - 1);
-        const double u = double(i - ci * r) / r, w = double(j - cj * r) / r;
+      for (int i = 0; i <= to.width(); ++i) {
+        const int ci = std::min(i / r, w - 1), cj = std::min(j / r, h - 1);
+        const double u = double(i - ci * r) / r, v = double(j - cj * r) / r;
         const Vec3f a = from.at(ci, cj).xyz(), b = from.at(ci + 1, cj).xyz(),
                     c = from.at(ci + 1, cj + 1).xyz(), d = from.at(ci, cj + 1).xyz();
         Vec3f p;
-        if ((ci < half) == (cj < half)) // triangles abd and bcd
-          p = u + w <= 1 ? a + (b - a) * float(u) + (d - a) * float(w)
-                         : c + (d - c) * float(1 - u) + (b - c) * float(1 - w);
+        // A torus's or plane's cells all split along the anti-diagonal.
+        if (!ball || (ci < half) == (cj < half)) // triangles abd and bcd
+          p = u + v <= 1 ? a + (b - a) * float(u) + (d - a) * float(v)
+                         : c + (d - c) * float(1 - u) + (b - c) * float(1 - v);
         else // triangles abc and acd
-          p = u >= w ? a + (b - a) * float(u) + (c - b) * float(w)
-                     : a + (c - d) * float(u) + (d - a) * float(w);
+          p = u >= v ? a + (b - a) * float(u) + (c - b) * float(v)
+                     : a + (c - d) * float(u) + (d - a) * float(v);
         Vec4f& q = to.at(i, j);
         const Vec3f offset = q.xyz() - p;
         const double distance = length(offset);
@@ -134,21 +176,26 @@ void limitOvershoot(const GeometryImage& from, GeometryImage& to) {
         }
       }
   });
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i)
-      if (const Sample c = canonical(m, {i, j}); !(c == Sample{i, j})) to.at(i, j) = to.at(c);
+  copyIdentified(to.grid(), 4, reinterpret_cast<float*>(to.texels().data()));
 }
 
-void resizeLayer(const Layer& from, Layer& to, int n, int m) {
+void resizeLayer(const Layer& from, Layer& to, const SampleGrid& fromGrid,
+                 const SampleGrid& toGrid) {
   to = from;
   if (from.uniform()) return;
-  const std::size_t side = static_cast<std::size_t>(n + 1),
+  const std::size_t side = static_cast<std::size_t>(fromGrid.width + 1),
                     ch = static_cast<std::size_t>(from.channels);
-  to.texels = resampleField(n, m, from.channels, true, [&](Sample s, float* v) {
+  to.texels = resampleField(fromGrid, toGrid, from.channels, true, [&](Sample s, float* v) {
     const float* t =
         &from.texels[(static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i)) * ch];
     std::copy_n(t, ch, v);
   });
+}
+
+// The grid `factor` times finer (or coarser, factor < 1 as a halving: 1 / 2) than `grid`.
+SampleGrid scaledGrid(const SampleGrid& grid, int numerator, int denominator) {
+  return {grid.topology, grid.width * numerator / denominator,
+          grid.height * numerator / denominator};
 }
 
 } // namespace
@@ -158,10 +205,11 @@ namespace {
 // One resampling step, n → m with m ≥ n or m = n/2.
 // Up, n → m > n: Catmull-Rom, positions limited (limitOvershoot), painted layers clamped.
 Document resizeUp(const Document& document, int m) {
-  const int n = document.size();
+  const SampleGrid& from = document.positions.grid();
+  const SampleGrid to = scaledGrid(from, m, from.width);
   Document out = document;
-  out.positions = GeometryImage(m);
-  const std::vector<float> positions = resampleField(n, m, 4, false, [&](Sample s, float* v) {
+  out.positions = GeometryImage(to.topology, to.width, to.height);
+  const std::vector<float> positions = resampleField(from, to, 4, false, [&](Sample s, float* v) {
     const Vec4f& p = document.positions.at(s);
     v[0] = p.x, v[1] = p.y, v[2] = p.z, v[3] = p.w;
   });
@@ -170,9 +218,9 @@ Document resizeUp(const Document& document, int m) {
     texels[t] = {positions[4 * t], positions[4 * t + 1], positions[4 * t + 2],
                  positions[4 * t + 3]};
   limitOvershoot(document.positions, out.positions);
-  resizeLayer(document.diffuse, out.diffuse, n, m);
-  resizeLayer(document.feature, out.feature, n, m);
-  resizeLayer(document.mask, out.mask, n, m);
+  resizeLayer(document.diffuse, out.diffuse, from, to);
+  resizeLayer(document.feature, out.feature, from, to);
+  resizeLayer(document.mask, out.mask, from, to);
   return out;
 }
 
@@ -184,12 +232,15 @@ Document resizeUp(const Document& document, int m) {
 // bit for bit, where the up's limit acted too. Painted layers are clamped to the 3 × 3 samples
 // around (no ringing at a paint edge).
 Document resizeDown(const Document& document) {
-  const int n = document.size(), m = n / 2;
+  const SampleGrid& finer = document.positions.grid();
+  const SampleGrid coarse = scaledGrid(finer, 1, 2);
+  const int n = finer.width, m = coarse.width, mh = coarse.height;
+  const bool sheet = coarse.topology == Topology::Plane;
   const std::size_t oldSide = static_cast<std::size_t>(n + 1),
                     side = static_cast<std::size_t>(m + 1);
   Document even = document;
-  even.positions = GeometryImage(m);
-  for (int j = 0; j <= m; ++j)
+  even.positions = GeometryImage(coarse.topology, m, mh);
+  for (int j = 0; j <= mh; ++j)
     for (int i = 0; i <= m; ++i)
       even.positions.at(i, j) = document.positions.at(2 * i, 2 * j);
   for (const auto& [from, to] : {std::pair{&document.diffuse, &even.diffuse},
@@ -197,8 +248,8 @@ Document resizeDown(const Document& document) {
                                  {&document.mask, &even.mask}}) {
     if (from->uniform()) continue;
     const std::size_t ch = static_cast<std::size_t>(from->channels);
-    to->texels.assign(side * side * ch, 0.0f);
-    for (int j = 0; j <= m; ++j)
+    to->texels.assign(side * static_cast<std::size_t>(mh + 1) * ch, 0.0f);
+    for (int j = 0; j <= mh; ++j)
       for (int i = 0; i <= m; ++i)
         std::copy_n(&from->texels[(std::size_t(2 * j) * oldSide + std::size_t(2 * i)) * ch], ch,
                     &to->texels[(std::size_t(j) * side + std::size_t(i)) * ch]);
@@ -208,7 +259,7 @@ Document resizeDown(const Document& document) {
   // new(i, j) = e(i, j) + Σ w · (y − predicted) around (2i, 2j), each channel of `count`.
   const auto update = [&](int count, const auto& fine, const auto& guess, const auto& write,
                           bool clamp) {
-    detail::parallelRows(m + 1, [&](int rowBegin, int rowEnd) {
+    detail::parallelRows(mh + 1, [&](int rowBegin, int rowEnd) {
       std::array<float, 4> y{}, p{};
       std::array<double, 4> sum{}, lo{}, hi{};
       for (int j = rowBegin; j < rowEnd; ++j)
@@ -216,12 +267,19 @@ Document resizeDown(const Document& document) {
           sum.fill(0);
           lo.fill(1e300);
           hi.fill(-1e300);
+          // A sheet's outline is lifted along itself alone (weights 1/4 beside, the 1D
+          // update), so it stays on its curve; its corners stay.
+          const bool edgeI = sheet && (i == 0 || i == m), edgeJ = sheet && (j == 0 || j == mh);
           for (int b = -1; b <= 1; ++b)
             for (int a = -1; a <= 1; ++a) {
-              const Sample s = wrap(n, {2 * i + a, 2 * j + b});
+              if ((edgeI && a != 0) || (edgeJ && b != 0)) continue;
+              const Sample s = wrap(finer, {2 * i + a, 2 * j + b});
               fine(s, y.data());
               guess(s, p.data());
-              const double w = a == 0 && b == 0 ? 0.0 : a == 0 || b == 0 ? 0.125 : 0.0625;
+              const double w = a == 0 && b == 0   ? 0.0
+                               : edgeI || edgeJ   ? 0.25
+                               : a == 0 || b == 0 ? 0.125
+                                                  : 0.0625;
               for (int c = 0; c < count; ++c) {
                 sum[std::size_t(c)] += w * (double(y[std::size_t(c)]) - double(p[std::size_t(c)]));
                 lo[std::size_t(c)] = std::min(lo[std::size_t(c)], double(y[std::size_t(c)]));
@@ -274,18 +332,10 @@ Document resizeDown(const Document& document) {
         true);
   }
   // Identified samples: the canonical one's bits.
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i) {
-      const Sample c = canonical(m, {i, j});
-      if (c == Sample{i, j}) continue;
-      out.positions.at(i, j) = out.positions.at(c);
-      for (Layer* l : {&out.diffuse, &out.feature, &out.mask}) {
-        if (l->uniform()) continue;
-        const std::size_t ch = static_cast<std::size_t>(l->channels);
-        std::copy_n(&l->texels[(std::size_t(c.j) * side + std::size_t(c.i)) * ch], ch,
-                    &l->texels[(std::size_t(j) * side + std::size_t(i)) * ch]);
-      }
-    }
+  copyIdentified(coarse, 4, reinterpret_cast<float*>(out.positions.texels().data()));
+  for (Layer* l : {&out.diffuse, &out.feature, &out.mask})
+    if (!l->uniform())
+      copyIdentified(coarse, static_cast<std::size_t>(l->channels), l->texels.data());
   return out;
 }
 
@@ -293,6 +343,21 @@ Document resizeDown(const Document& document) {
 
 Document resizeDocument(const Document& document, int m) {
   requireValidSize(m);
+  // A torus or plane: W becomes m, H in proportion (a valid grid of its topology).
+  const SampleGrid& grid = document.positions.grid();
+  if (grid.topology != Topology::Octahedral) {
+    const SampleGrid to{grid.topology, m,
+                        m >= grid.width ? grid.height * (m / grid.width)
+                                        : grid.height / (grid.width / m)};
+    if (!isValidGrid(to))
+      throw Error(ErrorKind::InvalidArgument,
+                  "size " + std::to_string(m) + " would make this " + std::to_string(grid.width) +
+                      " × " + std::to_string(grid.height) + " " +
+                      std::string(topologyName(grid.topology)) + " " + std::to_string(to.width) +
+                      " × " + std::to_string(to.height) +
+                      ": its sides must be powers of two up to 8192, at least " +
+                      std::to_string(grid.topology == Topology::Torus ? kMinTorusSize : kMinSize));
+  }
   if (const auto problem = positionsProblem(document.positions))
     throw Error(ErrorKind::InvalidInput,
                 *problem + "; the document is damaged and cannot be resized");
@@ -307,8 +372,10 @@ ResizeResult resizeAndCheck(const Document& document, const ResizeOptions& optio
   ResizeResult out;
   Document resized = resizeDocument(document, options.size);
   const int n = document.size(), m = options.size;
-  out.before = summarizeStretch(document.positions);
-  out.after = summarizeStretch(resized.positions);
+  if (document.positions.topology() == Topology::Octahedral) { // the stretch summary's grid
+    out.before = summarizeStretch(document.positions);
+    out.after = summarizeStretch(resized.positions);
+  }
   const TriangleMesh before = extractMesh(document.positions);
   if (boundingBox(before).diagonal() > 0)
     out.moved = compareSurfaces(before, extractMesh(resized.positions),

@@ -1,11 +1,14 @@
 // core::resizeDocument (issue 30): a document up and down in resolution with the same
-// parameterization; every layer follows, seams stay exact, up then down comes back close.
+// parameterization; every layer follows, seams stay exact, up then down comes back close. A
+// torus and a plane too (issue 33): their own wrap, a torus's periods exact, a sheet's outline
+// kept, W ≠ H in proportion.
 #include "octaclay/core/document/document_info.h"
 #include "octaclay/core/document/resize.h"
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/torus.h"
 #include "octaclay/core/measure/surface_distance.h"
 
 #include <QTest>
@@ -79,6 +82,8 @@ private slots:
   void layersFollowAndStayInRange();
   void checksItsOwnResult();
   void refusesBadInput();
+  void torusAndPlaneBothWays_data();
+  void torusAndPlaneBothWays();
 };
 
 void ResizeTest::roundTripComesBack_data() {
@@ -246,6 +251,122 @@ void ResizeTest::refusesBadInput() {
     refused = e.kind() == ErrorKind::InvalidInput;
   }
   QVERIFY(refused);
+}
+
+namespace {
+
+// A W × H torus (0.7, 0.3) with a bump across its corner (both wraps), or a W × H sheet over
+// [-2, 2] × [-1, 1] with a bump on its edge; diffuse painted in stripes across the image.
+Document gridDocument(Topology topology, int w, int h) {
+  GeometryImage image(topology, w, h);
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i) {
+      const float u = float(i % w) / float(w), v = float(j % h) / float(h);
+      if (topology == Topology::Torus) {
+        const float du = std::min(u, 1 - u), dv = std::min(v, 1 - v);
+        const float r = 0.3f * (1 + 0.4f * std::exp(-(du * du + dv * dv) / 0.01f));
+        const float a = 2 * float(M_PI) * u, b = 2 * float(M_PI) * v;
+        image.at(i, j) = {(0.7f + r * std::cos(b)) * std::cos(a),
+                          (0.7f + r * std::cos(b)) * std::sin(a), r * std::sin(b), 0};
+      } else {
+        const float x = 4 * float(i) / float(w) - 2, y = 2 * float(j) / float(h) - 1;
+        image.at(i, j) = {
+            x, y, 0.5f * std::exp(-((x - 0.5f) * (x - 0.5f) + (y + 1) * (y + 1)) / 0.1f), 0};
+      }
+    }
+  Document doc = makeDocument(std::move(image));
+  doc.diffuse.texels.resize(doc.positions.texelCount() * 4);
+  for (int j = 0; j <= h; ++j)
+    for (int i = 0; i <= w; ++i) {
+      const float red = ((i % w) / 4 + (j % h) / 4) % 2 == 0 ? 0.9f : 0.1f; // one period
+      const std::size_t t = static_cast<std::size_t>(j) * static_cast<std::size_t>(w + 1) + i;
+      const std::array<float, 4> c{red, 0.2f, 0.3f, 1};
+      std::copy(c.begin(), c.end(), &doc.diffuse.texels[t * 4]);
+    }
+  return doc;
+}
+
+bool sameBits(const Vec4f& a, const Vec4f& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+} // namespace
+
+void ResizeTest::torusAndPlaneBothWays_data() {
+  QTest::addColumn<int>("topology");
+  QTest::addColumn<int>("width");
+  QTest::addColumn<int>("height");
+  QTest::newRow("torus 64 x 32") << int(Topology::Torus) << 64 << 32;
+  QTest::newRow("torus 32 x 128") << int(Topology::Torus) << 32 << 128;
+  QTest::newRow("plane 64 x 16") << int(Topology::Plane) << 64 << 16;
+}
+
+// Up ×4 keeps every old sample, up ×2 comes back bit for bit; down ×2 then up stays close; a
+// torus's column W and row H are its column and row 0 bit for bit, a sheet's outline stays on
+// its rectangle; a size that leaves too few cells is refused.
+void ResizeTest::torusAndPlaneBothWays() {
+  QFETCH(int, topology);
+  QFETCH(int, width);
+  QFETCH(int, height);
+  const Topology kind = Topology(topology);
+  const Document original = gridDocument(kind, width, height);
+  const Document up = resizeDocument(original, 4 * width);
+  QCOMPARE(up.positions.topology(), kind);
+  QCOMPARE(up.positions.width(), 4 * width);
+  QCOMPARE(up.positions.height(), 4 * height);
+  for (int j = 0; j <= height; ++j)
+    for (int i = 0; i <= width; ++i)
+      QVERIFY(sameBits(up.positions.at(4 * i, 4 * j), original.positions.at(i, j)));
+  // Down predicts with up itself: a document up made (one doubling) comes back bit for bit.
+  const Document back = resizeDocument(resizeDocument(original, 2 * width), width);
+  QVERIFY(std::memcmp(back.positions.texels().data(), original.positions.texels().data(),
+                      original.positions.byteSize()) == 0);
+  QVERIFY(back.diffuse.texels == original.diffuse.texels);
+  const Document down = resizeDocument(original, width / 2);
+  QCOMPARE(down.positions.height(), height / 2);
+  const Document downUp = resizeDocument(down, width);
+  const SurfaceDistance d =
+      compareSurfaces(extractMesh(original.positions), extractMesh(downUp.positions),
+                      {.samplesPerSurface = 100'000});
+  const SurfaceDistance u = compareSurfaces(
+      extractMesh(original.positions), extractMesh(up.positions), {.samplesPerSurface = 100'000});
+  qInfo("%s: up RMS %.5f %%, Hausdorff %.4f %%; down and up RMS %.4f %%, Hausdorff %.3f %%",
+        QTest::currentDataTag(), 100 * u.rms, 100 * u.hausdorff, 100 * d.rms, 100 * d.hausdorff);
+  QVERIFY(u.hausdorff < 0.005);
+  QVERIFY(d.hausdorff < 0.03);
+  for (const Document* doc : {&up, &down, &downUp}) {
+    const GeometryImage& p = doc->positions;
+    const int w = p.width(), h = p.height();
+    if (kind == Topology::Torus) {
+      for (int j = 0; j <= h; ++j)
+        QVERIFY(sameBits(p.at(w, j), p.at(0, j)));
+      for (int i = 0; i <= w; ++i)
+        QVERIFY(sameBits(p.at(i, h), p.at(i, 0)));
+      const MeshTopology t = analyzeTopology(extractMesh(p));
+      QVERIFY(t.closed());
+      QCOMPARE(t.euler, 0LL);
+    } else {
+      for (int j = 0; j <= h; ++j)
+        QVERIFY(std::abs(p.at(0, j).x + 2) < 1e-5f && std::abs(p.at(w, j).x - 2) < 1e-5f);
+      for (int i = 0; i <= w; ++i)
+        QVERIFY(std::abs(p.at(i, 0).y + 1) < 1e-5f && std::abs(p.at(i, h).y - 1) < 1e-5f);
+      QCOMPARE(analyzeTopology(extractMesh(p)).euler, 1LL);
+    }
+    // Painted layers stay within the paint's range.
+    for (const float c : doc->diffuse.texels)
+      QVERIFY(c >= 0.1f && c <= 1.0f);
+  }
+  // A torus keeps 4 cells around its tube, a plane 2 along its short side.
+  const int least = kind == Topology::Torus ? 4 : 2;
+  const int tooSmall = width * least / height / 2;
+  if (tooSmall >= 2) {
+    try {
+      resizeDocument(original, tooSmall);
+      QFAIL("a size leaving too few cells was accepted");
+    } catch (const Error& e) {
+      QCOMPARE(e.kind(), ErrorKind::InvalidArgument);
+    }
+  }
 }
 
 QTEST_GUILESS_MAIN(ResizeTest)

@@ -22,6 +22,9 @@ namespace octaclay::core {
 /// Identified samples get the bits of their canonical sample (seams exact). M = N returns a
 /// copy. Throws Error(InvalidArgument) unless m is a power of two in 2 … 8192, and
 /// Error(InvalidInput) for a document with non-finite positions. O(M² + N²) time.
+/// A torus or plane (W × H) gets width m and height H·m/W, read through its own wrap (a
+/// torus's periods, a plane's clamped boundary), column W and row H of a torus its column and
+/// row 0 bit for bit; Error(InvalidArgument) when that grid is not valid for the topology.
 Document resizeDocument(const Document& document, int m);
 
 struct ResizeOptions {
@@ -39,9 +42,11 @@ struct ResizeOptions {
 struct ResizeResult {
   Document document; ///< the resized document, or the input unchanged
   bool changed = false;
-  std::string reason;           ///< why the document was left unchanged (empty when changed)
-  StretchSummary before, after; ///< after: of the resized surface (also when refused)
-  SurfaceDistance moved;        ///< old surface against the resized one
+  std::string reason; ///< why the document was left unchanged (empty when changed)
+  /// after: of the resized surface (also when refused); empty for a torus or plane (the stretch
+  /// summary is the ball's).
+  StretchSummary before, after;
+  SurfaceDistance moved; ///< old surface against the resized one
 };
 
 /// Mesh ▸ Resolution and `octaclay-cli resize`: resizeDocument, then the result checked: when the
