@@ -63,7 +63,6 @@ Command addRelaxCommand(CLI::App& app) {
             requireUnlocked(chosen, "relax");
             const core::Document document = std::move(chosen.object().document);
             core::requireUsableSize(document.positions, opt->input);
-            core::requireOctahedral(document.positions, "relax", opt->input);
             // A sweep at N = 256 takes about 54 ms here; say so before a run of minutes.
             const double estimate =
                 0.054 * opt->iterations * (document.size() / 256.0) * (document.size() / 256.0);

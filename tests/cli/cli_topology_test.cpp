@@ -1,7 +1,8 @@
 // octaclay-cli on torus and plane documents (issue 33): `new --shape torus|plane|disc` writes
 // them, `info` describes them (Euler 0 closed, Euler 1 open), `export` writes PLY and OFF and
 // refuses the ball-only textured OBJ and GLB of the full image, `lod` makes their LODs (and the
-// textured files through them), `resize` resamples them, `stroke` sculpts a square torus
+// textured files through them), `resize` resamples them, `relax` evens them out, `stroke` sculpts
+// a square torus
 // across its wrap and a plane to its edge; bad arguments exit 2 and write nothing.
 
 #include "cli_support.h"
@@ -63,13 +64,18 @@ private slots:
     EXPECT_FAILURE(kUsage, file("t.obj"), "export", file("t.exr"), "-o", file("t.obj"));
     EXPECT_FAILURE(kUsage, file("t.glb"), "export", file("t.exr"), "-o", file("t.glb"));
     // Commands still written for the ball alone say so by name (exit 2), and write nothing.
-    for (const QStringList& args : {QStringList{"relax", file("t.exr"), "-o", file("t2.exr")},
-                                    QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")}}) {
+    for (const QStringList& args : {QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")}}) {
       const Result r = runCli(args);
       QVERIFY2(r.exitCode == kUsage && r.err.contains("works on octahedral documents only"),
                qPrintable(describe(args, r)));
       QVERIFY(!QFileInfo::exists(args.last()));
     }
+    // relax evens a torus's samples out; an evenly made one is written unchanged with the reason.
+    RUN_JSON(relaxed, "relax", file("t.exr"), "-o", file("t2.exr"), "--json");
+    QVERIFY(!relaxed["changed"].toBool());
+    QVERIFY2(relaxed["reason"].toString().contains("already as even"),
+             qPrintable(relaxed["reason"].toString()));
+    QVERIFY(QFileInfo::exists(file("t2.exr")));
     // compress codes a torus with an exact codec (its W × H image padded to the square) and
     // names a lossy codec that cannot (exit 2, nothing written).
     RUN_JSON(exact, "compress", file("t.exr"), "--codec", "lossless", "-o", file("t.ocz"),

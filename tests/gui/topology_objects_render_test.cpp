@@ -409,6 +409,20 @@ void TopologyObjectsRenderTest::theLodViewShowsATorusAndAPlane() {
   QVERIFY(failed.isEmpty());
   checkRing();
 
+  // Mesh ▸ Even Out Samples on the stroked ring: one undo step with the wrap exact, or (its own
+  // check finding nothing to gain) the model unchanged and no step.
+  const int steps = window_->undoStack()->count();
+  const core::GeometryImage stroked = window_->viewport()->modeller().document().positions;
+  const bool evened = window_->evenOutSamples();
+  const core::GeometryImage& out = window_->viewport()->modeller().document().positions;
+  QCOMPARE(window_->undoStack()->count(), steps + (evened ? 1 : 0));
+  if (evened) {
+    for (int j = 0; j <= out.height(); ++j)
+      QVERIFY(sameBits(out.at(out.width(), j), out.at(0, j)));
+    window_->undoStack()->undo();
+  }
+  QVERIFY(std::memcmp(window_->viewport()->modeller().document().positions.texels().data(),
+                      stroked.texels().data(), stroked.byteSize()) == 0);
   // Mesh ▸ Resolution on the ring: twice the cells both ways, its wrap exact, drawn; one undo
   // brings the old image back bit for bit.
   const core::GeometryImage ring = window_->viewport()->modeller().document().positions;

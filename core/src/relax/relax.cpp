@@ -4,6 +4,7 @@
 #include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
 #include "measure/move_tolerance.h"
+#include "relax/grid_even_out.h"
 #include "relax/offset_field.h"
 #include "relax/sample_masks.h"
 
@@ -556,6 +557,8 @@ double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& b
 
 Document evenOutSamples(const Document& document, const RelaxOptions& options,
                         const RelaxProgress& progress) {
+  if (document.positions.topology() != Topology::Octahedral)
+    return detail::gridEvenOutSamples(document, options, progress);
   const detail::OffsetField field = solveEvenOut(document, options, progress);
   Document result = document; // samples that do not move keep their texels
   detail::resampleDocument(document, field, result);
@@ -566,6 +569,8 @@ Document evenOutSamples(const Document& document, const RelaxOptions& options,
 
 EvenOutResult evenOut(const Document& document, const RelaxOptions& options,
                       const EvenOutCheckOptions& check, const RelaxProgress& progress) {
+  if (document.positions.topology() != Topology::Octahedral)
+    return detail::gridEvenOut(document, options, check, progress);
   const auto cancelled = [] {
     return Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
   };
@@ -646,6 +651,8 @@ int keepDetailMargin(const GeometryImage& image, double radius) {
 EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
                           int margin, std::string label, const RelaxOptions& options) {
   checkOptions(options);
+  // Keep detail's local flow is the ball's (a torus or plane stroke keeps its samples).
+  requireOctahedral(document.positions, "keep detail's relaxation", "this document");
   if (margin < 0)
     throw Error(ErrorKind::InvalidArgument,
                 "a relaxation margin must be 0 or more samples, not " + std::to_string(margin));
@@ -748,6 +755,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
 
 EditStep relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
                           int margin, std::string label, const RelaxOptions& options) {
+  requireOctahedral(document.positions, "keep detail's relaxation", "this document");
   const int n = document.size();
   std::vector<std::uint8_t> changed(
       static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1), 0);

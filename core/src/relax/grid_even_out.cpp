@@ -1,0 +1,392 @@
+// Even Out for a torus or plane (grid_even_out.h): parameter points relaxed by length-squared
+// weights, every layer resampled on the old surface, the result checked as the ball's is.
+#include "relax/grid_even_out.h"
+
+#include "detail/parallel_rows.h"
+#include "measure/move_tolerance.h"
+
+#include "octaclay/core/document/document_checks.h"
+#include "octaclay/core/error.h"
+#include "octaclay/core/geometry/grid_point.h"
+#include "octaclay/core/geometry/mesh_extraction.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace octaclay::core::detail {
+namespace {
+
+// A stretched edge is over twice the median (the ball's kStretchedEdge).
+constexpr double kStretchedEdge = 2.0;
+// Sweeps without an iteration count: enough for a pulled part's samples to travel tens of
+// samples at these weights (bench: a 256 × 128 torus with a pulled bump settles by 150).
+constexpr int kDefaultSweeps = 300;
+// Each sweep moves a sample this fraction of the way to its neighbours' weighted centre. With
+// length-squared weights the step to the centre is three times a sample's displacement for the
+// grid's alternating mode (neighbours displaced the other way): a fraction over 1/3 makes that
+// mode grow; 0.15 damps it by 0.1 a sweep.
+constexpr double kSweepStep = 0.15;
+
+struct Offset {
+  double x = 0, y = 0;
+};
+
+// The grid's canonical samples (a torus's i < W, j < H; all of a plane's) and their offsets.
+struct ParameterField {
+  SampleGrid grid;
+  int columns = 0, rows = 0; // of canonical samples
+  std::vector<Offset> offset;
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) +
+           static_cast<std::size_t>(i);
+  }
+  // Sample (i, j)'s parameter point, for any (i, j) within one period of the grid.
+  Offset point(int i, int j) const {
+    int ci = i, cj = j;
+    if (grid.topology == Topology::Torus) {
+      ci = ((i % grid.width) + grid.width) % grid.width;
+      cj = ((j % grid.height) + grid.height) % grid.height;
+    } else {
+      ci = std::clamp(i, 0, grid.width);
+      cj = std::clamp(j, 0, grid.height);
+    }
+    const Offset& d = offset[index(ci, cj)];
+    return {double(i) + d.x, double(j) + d.y};
+  }
+};
+
+ParameterField emptyField(const SampleGrid& grid) {
+  ParameterField f;
+  f.grid = grid;
+  const bool torus = grid.topology == Topology::Torus;
+  f.columns = torus ? grid.width : grid.width + 1;
+  f.rows = torus ? grid.height : grid.height + 1;
+  f.offset.assign(static_cast<std::size_t>(f.columns) * static_cast<std::size_t>(f.rows), {});
+  return f;
+}
+
+Vec3f surfaceAt(const GeometryImage& image, Offset u) {
+  return interpolatePosition(image, locateGridPoint(image.grid(), u.x, u.y));
+}
+
+double cross(Offset a, Offset b, Offset c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Whether any of cell (i, j)'s two parameter triangles (split along its anti-diagonal, as the
+// grid's) is folded or flat.
+bool cellFolds(const ParameterField& f, int i, int j) {
+  const Offset a = f.point(i, j), b = f.point(i + 1, j), c = f.point(i + 1, j + 1),
+               d = f.point(i, j + 1);
+  return !(cross(a, b, d) > 0) || !(cross(b, c, d) > 0);
+}
+
+// The relaxation: `sweeps` Jacobi sweeps of the length-squared-weighted neighbour centre.
+ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress& progress) {
+  const SampleGrid& grid = image.grid();
+  ParameterField field = emptyField(grid);
+  const bool sheet = grid.topology == Topology::Plane;
+  std::vector<Vec3f> at(field.offset.size());
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    parallelRows(field.rows, [&](int j0, int j1) {
+      for (int j = j0; j < j1; ++j)
+        for (int i = 0; i < field.columns; ++i) {
+          const Offset u = field.point(i, j);
+          at[field.index(i, j)] = surfaceAt(image, u);
+        }
+    });
+    const auto positionOf = [&](int i, int j) {
+      if (grid.topology == Topology::Torus) {
+        i = ((i % grid.width) + grid.width) % grid.width;
+        j = ((j % grid.height) + grid.height) % grid.height;
+      }
+      return at[field.index(i, j)];
+    };
+    ParameterField next = field;
+    parallelRows(field.rows, [&](int j0, int j1) {
+      for (int j = j0; j < j1; ++j)
+        for (int i = 0; i < field.columns; ++i) {
+          const bool edgeI = sheet && (i == 0 || i == grid.width);
+          const bool edgeJ = sheet && (j == 0 || j == grid.height);
+          if (edgeI && edgeJ) continue; // a sheet's corner stays
+          const Offset u = field.point(i, j);
+          const Vec3f p = at[field.index(i, j)];
+          // Along i from the row's neighbours, along j from the column's: a direction's spacing
+          // is evened by its own edges (a torus's ring edges, longer outside than inside, cannot
+          // be shortened by moving samples around its tube).
+          double s[2] = {0, 0}, total[2] = {0, 0};
+          for (const auto& [di, dj] : {std::array{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+            const int ni = i + di, nj = j + dj;
+            if (sheet && (ni < 0 || nj < 0 || ni > grid.width || nj > grid.height)) continue;
+            const Offset v = field.point(ni, nj);
+            const Vec3f q = positionOf(ni, nj);
+            const double w = double(dot(q - p, q - p));
+            const int axis = di != 0 ? 0 : 1;
+            s[axis] += w * (axis == 0 ? v.x - u.x : v.y - u.y);
+            total[axis] += w;
+          }
+          Offset& d = next.offset[field.index(i, j)];
+          // A boundary sample slides along it.
+          if (!edgeI && total[0] > 0) d.x += kSweepStep * s[0] / total[0];
+          if (!edgeJ && total[1] > 0) d.y += kSweepStep * s[1] / total[1];
+        }
+    });
+    // Where a cell would fold, its corners keep their points (twice: an undone corner may fold
+    // a cell beside it).
+    for (int pass = 0; pass < 3; ++pass) {
+      bool undone = false;
+      for (int j = 0; j < grid.height; ++j)
+        for (int i = 0; i < grid.width; ++i)
+          if (cellFolds(next, i, j))
+            for (const auto& [ci, cj] :
+                 {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
+              const int wi = grid.topology == Topology::Torus ? ci % grid.width : ci;
+              const int wj = grid.topology == Topology::Torus ? cj % grid.height : cj;
+              Offset& d = next.offset[field.index(wi, wj)];
+              const Offset& was = field.offset[field.index(wi, wj)];
+              undone = undone || d.x != was.x || d.y != was.y;
+              d = was;
+            }
+      if (!undone) break;
+    }
+    field = std::move(next);
+    if (progress && !progress(float(sweep + 1) / float(sweeps)))
+      throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+  }
+  return field;
+}
+
+// Every layer of `document` at the field's points, offsets scaled by `step`.
+Document resampled(const Document& document, const ParameterField& field, double step) {
+  const GeometryImage& image = document.positions;
+  const SampleGrid& grid = image.grid();
+  Document out = document;
+  const std::size_t side = static_cast<std::size_t>(grid.width + 1);
+  const auto layerAt = [&](const Layer& layer, const GridPoint& p, float* value) {
+    const std::size_t ch = static_cast<std::size_t>(layer.channels);
+    for (std::size_t c = 0; c < ch; ++c) {
+      double sum = 0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const Sample s = p.corners[k];
+        sum += double(p.weights[k]) *
+               layer.texels[(static_cast<std::size_t>(s.j) * side + static_cast<std::size_t>(s.i)) *
+                                ch +
+                            c];
+      }
+      value[c] = float(sum);
+    }
+  };
+  parallelRows(grid.height + 1, [&](int j0, int j1) {
+    for (int j = j0; j < j1; ++j)
+      for (int i = 0; i <= grid.width; ++i) {
+        if (grid.topology == Topology::Torus && (i == grid.width || j == grid.height)) continue;
+        const Offset& d = field.offset[field.index(i, j)];
+        const GridPoint p = locateGridPoint(grid, double(i) + step * d.x, double(j) + step * d.y);
+        const Vec3f q = interpolatePosition(image, p);
+        float saliency = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+          saliency += p.weights[k] * image.at(p.corners[k]).w;
+        out.positions.at(i, j) = {q.x, q.y, q.z, saliency};
+        const std::size_t t = static_cast<std::size_t>(j) * side + static_cast<std::size_t>(i);
+        for (const auto& [from, to] : {std::pair{&document.diffuse, &out.diffuse},
+                                       {&document.feature, &out.feature},
+                                       {&document.mask, &out.mask}})
+          if (!from->uniform())
+            layerAt(*from, p, &to->texels[t * static_cast<std::size_t>(from->channels)]);
+      }
+  });
+  if (grid.topology == Topology::Torus) { // column W and row H: column and row 0 again
+    for (int j = 0; j <= grid.height; ++j)
+      for (int i = 0; i <= grid.width; ++i) {
+        if (i < grid.width && j < grid.height) continue;
+        const int ci = i % grid.width, cj = j % grid.height;
+        out.positions.at(i, j) = out.positions.at(ci, cj);
+        for (Layer* l : {&out.diffuse, &out.feature, &out.mask})
+          if (!l->uniform()) {
+            const std::size_t ch = static_cast<std::size_t>(l->channels);
+            std::copy_n(&l->texels[(static_cast<std::size_t>(cj) * side + ci) * ch], ch,
+                        &l->texels[(static_cast<std::size_t>(j) * side + i) * ch]);
+          }
+      }
+  }
+  return out;
+}
+
+// The canonical samples with a grid edge over `limit` long.
+std::vector<std::uint8_t> stretchedSamples(const GeometryImage& image, double limit,
+                                           const ParameterField& shape) {
+  std::vector<std::uint8_t> out(shape.offset.size(), 0);
+  const SampleGrid& grid = image.grid();
+  for (int j = 0; j < grid.height; ++j)
+    for (int i = 0; i < grid.width; ++i) {
+      const Vec3f p = image.at(i, j).xyz();
+      for (const auto& [di, dj] : {std::array{1, 0}, {0, 1}}) {
+        if (length(image.at(i + di, j + dj).xyz() - p) <= limit) continue;
+        for (const auto& [a, b] : {std::array{i, j}, {i + di, j + dj}}) {
+          const int wi = grid.topology == Topology::Torus ? a % grid.width : a;
+          const int wj = grid.topology == Topology::Torus ? b % grid.height : b;
+          out[shape.index(wi, wj)] = 1;
+        }
+      }
+    }
+  return out;
+}
+
+// Samples whose point (offsets times step) is nearest a stretched sample of the old grid.
+std::size_t stretchedShown(const ParameterField& field, double step,
+                           const std::vector<std::uint8_t>& stretched) {
+  std::size_t shown = 0;
+  for (int j = 0; j < field.rows; ++j)
+    for (int i = 0; i < field.columns; ++i) {
+      const Offset& d = field.offset[field.index(i, j)];
+      int ni = int(std::lround(double(i) + step * d.x)),
+          nj = int(std::lround(double(j) + step * d.y));
+      if (field.grid.topology == Topology::Torus) {
+        ni = ((ni % field.grid.width) + field.grid.width) % field.grid.width;
+        nj = ((nj % field.grid.height) + field.grid.height) % field.grid.height;
+      } else {
+        ni = std::clamp(ni, 0, field.grid.width);
+        nj = std::clamp(nj, 0, field.grid.height);
+      }
+      shown += stretched[field.index(ni, nj)];
+    }
+  return shown;
+}
+
+std::string times(double ratio) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f×", ratio);
+  return text;
+}
+
+void checkInput(const Document& document, const RelaxOptions& options) {
+  if (options.iterations < 0 || options.iterations > kMaxRelaxIterations)
+    throw Error(ErrorKind::InvalidArgument,
+                "iterations " + std::to_string(options.iterations) + " is outside 0 to " +
+                    std::to_string(kMaxRelaxIterations) + "; leave it at 0 to choose from N");
+  if (const auto problem = positionsProblem(document.positions))
+    throw Error(ErrorKind::InvalidInput,
+                *problem + "; the document is damaged and cannot be relaxed");
+}
+
+// The ball's iterations count its finest level's sweeps (its coarser levels get up to 64 times
+// as many); one grid has one level: kDefaultSweeps per iteration, at most 25 times that.
+int sweepsFor(const RelaxOptions& options) {
+  return kDefaultSweeps * std::clamp(options.iterations, 1, 25);
+}
+
+} // namespace
+
+StretchSummary gridEdgeSummary(const GeometryImage& image) {
+  StretchSummary summary;
+  std::vector<float> edges;
+  edges.reserve(2 * static_cast<std::size_t>(image.width()) *
+                static_cast<std::size_t>(image.height()));
+  double area = 0;
+  for (int j = 0; j < image.height(); ++j)
+    for (int i = 0; i < image.width(); ++i) {
+      const Vec3f a = image.at(i, j).xyz(), b = image.at(i + 1, j).xyz(),
+                  c = image.at(i + 1, j + 1).xyz(), d = image.at(i, j + 1).xyz();
+      edges.push_back(length(b - a));
+      edges.push_back(length(d - a));
+      area += 0.5 * (double(length(core::cross(b - a, d - a))) +
+                     double(length(core::cross(d - c, b - c))));
+    }
+  if (edges.empty()) return summary;
+  const auto rank = [&](double q) {
+    const auto k = static_cast<std::ptrdiff_t>(q * double(edges.size() - 1));
+    std::nth_element(edges.begin(), edges.begin() + k, edges.end());
+    return double(edges[static_cast<std::size_t>(k)]);
+  };
+  summary.medianEdge = rank(0.5);
+  const double p99 = rank(0.99);
+  summary.longestEdge = *std::max_element(edges.begin(), edges.end());
+  if (summary.medianEdge > 0) {
+    summary.longestOverMedian = summary.longestEdge / summary.medianEdge;
+    summary.p99OverMedian = p99 / summary.medianEdge;
+    summary.shareOver4x =
+        double(std::count_if(edges.begin(), edges.end(),
+                             [&](float e) { return double(e) > 4 * summary.medianEdge; })) /
+        double(edges.size());
+  }
+  const double vertices = double(vertexCount(image.topology(), image.width(), image.height()));
+  summary.meanSpacing = std::sqrt(area / vertices);
+  return summary;
+}
+
+Document gridEvenOutSamples(const Document& document, const RelaxOptions& options,
+                            const RelaxProgress& progress) {
+  checkInput(document, options);
+  return resampled(document, solve(document.positions, sweepsFor(options), progress), 1.0);
+}
+
+EvenOutResult gridEvenOut(const Document& document, const RelaxOptions& options,
+                          const EvenOutCheckOptions& check, const RelaxProgress& progress) {
+  checkInput(document, options);
+  const auto cancelled = [] {
+    return Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+  };
+  const float solveShare = 0.5f;
+  const ParameterField field = solve(document.positions, sweepsFor(options), [&](float f) {
+    return !progress || progress(solveShare * f);
+  });
+  EvenOutResult out;
+  out.before = gridEdgeSummary(document.positions);
+  out.after = out.before;
+  out.vertices = static_cast<std::size_t>(vertexCount(
+      document.positions.topology(), document.positions.width(), document.positions.height()));
+  const std::vector<std::uint8_t> stretched =
+      stretchedSamples(document.positions, kStretchedEdge * out.before.medianEdge, field);
+  out.stretchedBefore = stretchedShown(field, 0.0, stretched);
+  out.stretchedAfter = out.stretchedBefore;
+  const TriangleMesh surface = extractMesh(document.positions);
+  const bool hasScale = boundingBox(surface).diagonal() > 0;
+  std::string firstReason;
+  for (std::size_t t = 0; t < check.steps.size(); ++t) {
+    const double step = check.steps[t];
+    if (!(step > 0 && step <= 1))
+      throw Error(ErrorKind::InvalidArgument, "an even-out step must be in (0, 1]");
+    Document result = resampled(document, field, step);
+    ++out.tries;
+    const StretchSummary after = gridEdgeSummary(result.positions);
+    const std::size_t shown = stretchedShown(field, step, stretched);
+    std::string reason;
+    if (after.longestOverMedian > out.before.longestOverMedian * (1 + 1e-6))
+      reason = "the longest edge would grow from " + times(out.before.longestOverMedian) + " to " +
+               times(after.longestOverMedian) + " the median";
+    else if (shown < out.stretchedBefore)
+      reason = "the stretched part would lose samples (" + std::to_string(out.stretchedBefore) +
+               " -> " + std::to_string(shown) + ")";
+    else if (after.longestOverMedian > 0.99 * out.before.longestOverMedian &&
+             double(shown) < 1.01 * double(out.stretchedBefore) + 0.5)
+      reason = "the samples are already as even as it can make them (longest edge " +
+               times(out.before.longestOverMedian) + " the median)";
+    if (reason.empty() && hasScale) {
+      out.moved = compareSurfaces(surface, extractMesh(result.positions),
+                                  {.samplesPerSurface = check.samplesPerSurface});
+      reason = surfaceMovedTooFar(out.moved, check.rmsTolerance, check.hausdorffTolerance);
+    }
+    if (progress &&
+        !progress(solveShare + (1 - solveShare) * float(t + 1) / float(check.steps.size())))
+      throw cancelled();
+    if (reason.empty()) {
+      out.document = std::move(result);
+      out.changed = true;
+      out.step = step;
+      out.after = after;
+      out.stretchedAfter = shown;
+      return out;
+    }
+    if (firstReason.empty()) firstReason = reason;
+  }
+  out.document = document;
+  out.reason = firstReason;
+  if (check.steps.size() > 1) out.reason += ", and no smaller step did better";
+  return out;
+}
+
+} // namespace octaclay::core::detail
