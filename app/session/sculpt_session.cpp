@@ -50,14 +50,16 @@ void SculptSession::brushesReloaded(const std::vector<std::string>& ids) {
   variants_.forget(ids);
 }
 
-void SculptSession::setDocument(core::Document document,
-                                const std::function<void(float)>& progress) {
-  show(std::move(document), progress);
+void SculptSession::setDocument(core::Document document, const std::function<void(float)>& progress,
+                                gpu::GpuDocument::Storage storage) {
+  show(std::move(document), progress, std::move(storage));
   history_.clear();
 }
 
-void SculptSession::show(core::Document document, const std::function<void(float)>& progress) {
-  auto uploaded = std::make_unique<gpu::GpuDocument>(std::move(document), progress);
+void SculptSession::show(core::Document document, const std::function<void(float)>& progress,
+                         gpu::GpuDocument::Storage storage) {
+  auto uploaded =
+      std::make_unique<gpu::GpuDocument>(std::move(document), progress, std::move(storage));
   stroke_.reset();
   document_ = std::move(uploaded);
   document_->setChangeFollower(follower_);

@@ -141,8 +141,10 @@ public:
   void brushesReloaded(const std::vector<std::string>& ids);
 
   /// Uploads document, replacing the current one, dropping the stroke being made and clearing
-  /// the history; progress as gpu::GpuDocument's. If the upload throws, nothing changed.
-  void setDocument(core::Document document, const std::function<void(float)>& progress = {});
+  /// the history; progress as gpu::GpuDocument's, into `storage` when it was made ahead
+  /// (GpuDocument::makeStorage). If the upload throws, nothing changed.
+  void setDocument(core::Document document, const std::function<void(float)>& progress = {},
+                   gpu::GpuDocument::Storage storage = {});
   bool hasDocument() const { return document_ != nullptr; }
   /// The document on the GPU. Only valid if hasDocument().
   gpu::GpuDocument& gpuDocument() { return *document_; }
@@ -262,7 +264,8 @@ private:
 
   /// Uploads document in place of the current one (published as NewDocument), the history
   /// kept: setDocument then clears it, a replacing step does not.
-  void show(core::Document document, const std::function<void(float)>& progress = {});
+  void show(core::Document document, const std::function<void(float)>& progress = {},
+            gpu::GpuDocument::Storage storage = {});
   /// moveTo without reporting the change (runQueuedMoves reports once for its run).
   int move(const StrokeMove& move);
   void publish(gpu::ChangeKind kind);

@@ -196,14 +196,24 @@ bool Modeller::uploadDocument(core::Document document, bool keepView) {
     // (timers, repaints, the progress dialog) but no user input: nothing may edit meanwhile.
     QElapsedTimer sinceEvents;
     sinceEvents.start();
-    session_.setDocument(std::move(document), [&](float) {
-      if (sinceEvents.elapsed() < 30) return;
+    const auto events = [&] {
       uploading_ = true;
       QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
       uploading_ = false;
-      host_->makeCurrent(); // a repaint in between may have left another context current
-      sinceEvents.restart();
-    });
+    };
+    // The textures first, on a worker with a shared context, the event loop running meanwhile.
+    gpu::GpuDocument::Storage storage =
+        storageAhead_.make(host_->context(), document.positions.grid(), events);
+    host_->makeCurrent();
+    session_.setDocument(
+        std::move(document),
+        [&](float) {
+          if (sinceEvents.elapsed() < 30) return;
+          events();
+          host_->makeCurrent(); // a repaint in between may have left another context current
+          sinceEvents.restart();
+        },
+        std::move(storage));
   } catch (const std::exception& e) {
     uploading_ = false;
     fail(QStringLiteral("Could not load the model onto the GPU: %1").arg(e.what()));

@@ -6,6 +6,7 @@
 #include "scene_history.h"
 #include "scene_step.h"
 #include "sculpt_session.h"
+#include "storage_ahead.h"
 #include "stroke_driver.h"
 
 #include "octaclay/core/document/document.h"
@@ -273,6 +274,7 @@ private:
   int active_ = 0;
   std::vector<std::function<void(const gpu::DocumentChange&)>> followers_;
   bool uploading_ = false;
+  StorageAhead storageAhead_; // a new document's textures made beside the GUI thread
   QString error_;
 };
 

@@ -69,18 +69,37 @@ int GpuDocument::channels(core::EditLayer layer) {
   return 4;
 }
 
+GpuDocument::Storage GpuDocument::makeStorage(const core::SampleGrid& grid) {
+  // Textures are (W+1) × (H+1): a torus or plane may be W ≠ H (a thin ring sampled evenly).
+  Storage storage;
+  for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
+                                core::EditLayer::Feature, core::EditLayer::Mask})
+    storage[index(layer)] = Texture(grid.width + 1, grid.height + 1, formatOf(layer));
+  return storage;
+}
+
 GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress)
+    : GpuDocument(std::move(document), progress, Storage{}) {}
+
+GpuDocument::GpuDocument(core::Document document, const std::function<void(float)>& progress,
+                         Storage storage)
     : document_(std::move(document)), bounds_(document_.positions),
       deferPositions_(positionsDeferredByDefault()), software_(driverIsSoftware()) {
-  // Textures are (W+1) × (H+1): a torus or plane may be W ≠ H (a thin ring sampled evenly).
   const int side = document_.positions.side(), rows = document_.positions.rows();
+  const Texture& ahead = storage[index(core::EditLayer::Positions)];
+  const bool made = ahead.id() != 0;
+  if (made && (ahead.width() != side || ahead.height() != rows))
+    throw GlError("the textures made ahead are " + std::to_string(ahead.width()) + " × " +
+                  std::to_string(ahead.height()) + ", the document needs " + std::to_string(side) +
+                  " × " + std::to_string(rows));
   // Row bands: a caller on a GUI thread gets control back (progress) between them.
   const int band = std::max(1, (1 << 20) / side);
   const int steps = 4 * ((rows + band - 1) / band);
   int step = 0;
   for (core::EditLayer layer : {core::EditLayer::Positions, core::EditLayer::Diffuse,
                                 core::EditLayer::Feature, core::EditLayer::Mask}) {
-    textures_[index(layer)] = Texture(side, rows, formatOf(layer));
+    textures_[index(layer)] =
+        made ? std::move(storage[index(layer)]) : Texture(side, rows, formatOf(layer));
     core::Layer* l = mirrorLayer(layer);
     // An unpainted layer on a real GPU: cleared there, nothing converted and sent. A software
     // rasterizer writes the texels on the CPU either way, and its band uploads are what give

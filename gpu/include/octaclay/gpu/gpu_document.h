@@ -65,6 +65,15 @@ public:
   /// Uploads every layer, in row bands; progress (optional) is called after each with the
   /// fraction done, on this thread (a GUI thread may process events there). Throws GlError.
   explicit GpuDocument(core::Document document, const std::function<void(float)>& progress = {});
+  /// The layers' textures, made ahead: on another thread with a context that shares this one's
+  /// objects (a software rasterizer zeroes each new texture's memory as it makes it: 0.6 GB at
+  /// N = 4096, kept off a GUI thread that way). Positions, diffuse, feature, mask.
+  using Storage = std::array<Texture, 4>;
+  /// The textures a document of this grid needs (any context current; no framebuffer made).
+  static Storage makeStorage(const core::SampleGrid& grid);
+  /// The same upload into `storage` (from makeStorage for this document's grid, finished on its
+  /// context before this call); an empty storage is made here as the constructor above does.
+  GpuDocument(core::Document document, const std::function<void(float)>& progress, Storage storage);
   ~GpuDocument();
   GpuDocument(GpuDocument&&) noexcept;
   GpuDocument& operator=(GpuDocument&&) noexcept;
