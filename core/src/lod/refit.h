@@ -11,8 +11,8 @@ namespace octaclay::core::detail {
 /// Moves each vertex of `lod` along its normal so that the LOD surface fits the full-resolution
 /// image in the least-squares sense. Each LOD triangle covers the full-resolution samples that
 /// its corner image coordinates (cornerUv, one per triangle, (x / W, y / H), counter-clockwise,
-/// tiling the image square) enclose; every `stride`-th sample (x, y) in each direction is compared with
-/// the LOD surface at the same image coordinates (barycentric in its triangle), and
+/// tiling the image square) enclose; every `stride`-th sample (x, y) in each direction is compared
+/// with the LOD surface at the same image coordinates (barycentric in its triangle), and
 /// `iterations` Jacobi steps with the lumped hat-function mass move each vertex by
 /// n·(Σ φ r)/(Σ φ), r the residual, φ the vertex's barycentric weight. Vertices sampled from
 /// the surface leave their chords inside convex parts and outside concave ones; this centres

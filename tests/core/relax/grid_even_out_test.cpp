@@ -89,7 +89,8 @@ void GridEvenOutTest::hornOnATorus_data() {
   QTest::addColumn<float>("spread");
   QTest::newRow("256 x 128, off centre") << 256 << 128 << 0.37f << 0.2f << 0.5f << 0.05f;
   QTest::newRow("256 x 128, across both wraps") << 256 << 128 << 0.0f << 0.0f << 0.5f << 0.05f;
-  QTest::newRow("256 x 128, across the ring's wrap") << 256 << 128 << 0.02f << 0.6f << 0.5f << 0.05f;
+  QTest::newRow("256 x 128, across the ring's wrap")
+      << 256 << 128 << 0.02f << 0.6f << 0.5f << 0.05f;
 }
 
 void GridEvenOutTest::hornOnATorus() {
