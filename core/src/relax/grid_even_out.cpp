@@ -14,7 +14,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace octaclay::core::detail {
@@ -22,9 +24,10 @@ namespace {
 
 // A stretched edge is over twice the median (the ball's kStretchedEdge).
 constexpr double kStretchedEdge = 2.0;
-// Sweeps without an iteration count: enough for a pulled part's samples to travel tens of
-// samples at these weights (bench: a 256 × 128 torus with a pulled bump settles by 150).
-constexpr int kDefaultSweeps = 300;
+// Sweeps per level without an iteration count (solve: coarse to fine).
+constexpr int kDefaultSweeps = 100;
+// The coarsest level's cells across the image's shorter side.
+constexpr int kCoarsestCells = 8;
 // Each sweep moves a sample this fraction of the way to its neighbours' weighted centre. With
 // length-squared weights the step to the centre is three times a sample's displacement for the
 // grid's alternating mode (neighbours displaced the other way): a fraction over 1/3 makes that
@@ -35,38 +38,64 @@ struct Offset {
   double x = 0, y = 0;
 };
 
-// The grid's canonical samples (a torus's i < W, j < H; all of a plane's) and their offsets.
+// The canonical samples of a lattice over the grid, every `stride`-th sample (a torus's i < W,
+// j < H; all of a plane's), and their offsets in full-resolution samples.
 struct ParameterField {
   SampleGrid grid;
-  int columns = 0, rows = 0; // of canonical samples
+  int stride = 1;
+  int columns = 0, rows = 0;        // canonical lattice samples
+  int cellsWide = 0, cellsHigh = 0; // lattice cells: W / stride, H / stride
   std::vector<Offset> offset;
   std::size_t index(int i, int j) const {
     return static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) +
            static_cast<std::size_t>(i);
   }
-  // Sample (i, j)'s parameter point, for any (i, j) within one period of the grid.
+  bool torus() const { return grid.topology == Topology::Torus; }
+  // Lattice sample (i, j), for any (i, j) within one period: its canonical one.
+  std::pair<int, int> canonicalOf(int i, int j) const {
+    if (torus())
+      return {((i % cellsWide) + cellsWide) % cellsWide, ((j % cellsHigh) + cellsHigh) % cellsHigh};
+    return {std::clamp(i, 0, cellsWide), std::clamp(j, 0, cellsHigh)};
+  }
+  // Lattice sample (i, j)'s parameter point in full-resolution samples, unwrapped.
   Offset point(int i, int j) const {
-    int ci = i, cj = j;
-    if (grid.topology == Topology::Torus) {
-      ci = ((i % grid.width) + grid.width) % grid.width;
-      cj = ((j % grid.height) + grid.height) % grid.height;
-    } else {
-      ci = std::clamp(i, 0, grid.width);
-      cj = std::clamp(j, 0, grid.height);
-    }
+    const auto [ci, cj] = canonicalOf(i, j);
     const Offset& d = offset[index(ci, cj)];
-    return {double(i) + d.x, double(j) + d.y};
+    return {double(i * stride) + d.x, double(j * stride) + d.y};
   }
 };
 
-ParameterField emptyField(const SampleGrid& grid) {
+ParameterField emptyField(const SampleGrid& grid, int stride) {
   ParameterField f;
   f.grid = grid;
-  const bool torus = grid.topology == Topology::Torus;
-  f.columns = torus ? grid.width : grid.width + 1;
-  f.rows = torus ? grid.height : grid.height + 1;
+  f.stride = stride;
+  f.cellsWide = grid.width / stride;
+  f.cellsHigh = grid.height / stride;
+  f.columns = f.torus() ? f.cellsWide : f.cellsWide + 1;
+  f.rows = f.torus() ? f.cellsHigh : f.cellsHigh + 1;
   f.offset.assign(static_cast<std::size_t>(f.columns) * static_cast<std::size_t>(f.rows), {});
   return f;
+}
+
+// The field on the lattice twice as fine: each offset interpolated bilinearly from the coarse
+// lattice's (through the torus's periods; a sheet's boundary samples from its boundary's, so
+// they stay on it).
+ParameterField finer(const ParameterField& coarse) {
+  ParameterField fine = emptyField(coarse.grid, coarse.stride / 2);
+  for (int j = 0; j < fine.rows; ++j)
+    for (int i = 0; i < fine.columns; ++i) {
+      const int ci = i / 2, cj = j / 2;
+      const double fx = (i % 2) * 0.5, fy = (j % 2) * 0.5;
+      const auto at = [&](int a, int b) {
+        const auto [wa, wb] = coarse.canonicalOf(a, b);
+        return coarse.offset[coarse.index(wa, wb)];
+      };
+      const Offset p = at(ci, cj), q = at(ci + 1, cj), r = at(ci, cj + 1), t = at(ci + 1, cj + 1);
+      Offset& d = fine.offset[fine.index(i, j)];
+      d.x = (1 - fy) * ((1 - fx) * p.x + fx * q.x) + fy * ((1 - fx) * r.x + fx * t.x);
+      d.y = (1 - fy) * ((1 - fx) * p.y + fx * q.y) + fy * ((1 - fx) * r.y + fx * t.y);
+    }
+  return fine;
 }
 
 Vec3f surfaceAt(const GeometryImage& image, Offset u) {
@@ -77,41 +106,32 @@ double cross(Offset a, Offset b, Offset c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
-// Whether any of cell (i, j)'s two parameter triangles (split along its anti-diagonal, as the
-// grid's) is folded or flat.
+// Whether any of lattice cell (i, j)'s two parameter triangles (split along its anti-diagonal,
+// as the grid's) is folded or flat.
 bool cellFolds(const ParameterField& f, int i, int j) {
   const Offset a = f.point(i, j), b = f.point(i + 1, j), c = f.point(i + 1, j + 1),
                d = f.point(i, j + 1);
   return !(cross(a, b, d) > 0) || !(cross(b, c, d) > 0);
 }
 
-// The relaxation: `sweeps` Jacobi sweeps of the length-squared-weighted neighbour centre.
-ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress& progress) {
-  const SampleGrid& grid = image.grid();
-  ParameterField field = emptyField(grid);
-  const bool sheet = grid.topology == Topology::Plane;
+// `sweeps` Jacobi sweeps of the length-squared-weighted neighbour centre on field's lattice;
+// progress(k) after each sweep k.
+void sweepLevel(const GeometryImage& image, ParameterField& field, int sweeps,
+                const std::function<void(int)>& swept) {
+  const bool sheet = !field.torus();
   std::vector<Vec3f> at(field.offset.size());
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     parallelRows(field.rows, [&](int j0, int j1) {
       for (int j = j0; j < j1; ++j)
-        for (int i = 0; i < field.columns; ++i) {
-          const Offset u = field.point(i, j);
-          at[field.index(i, j)] = surfaceAt(image, u);
-        }
+        for (int i = 0; i < field.columns; ++i)
+          at[field.index(i, j)] = surfaceAt(image, field.point(i, j));
     });
-    const auto positionOf = [&](int i, int j) {
-      if (grid.topology == Topology::Torus) {
-        i = ((i % grid.width) + grid.width) % grid.width;
-        j = ((j % grid.height) + grid.height) % grid.height;
-      }
-      return at[field.index(i, j)];
-    };
     ParameterField next = field;
     parallelRows(field.rows, [&](int j0, int j1) {
       for (int j = j0; j < j1; ++j)
         for (int i = 0; i < field.columns; ++i) {
-          const bool edgeI = sheet && (i == 0 || i == grid.width);
-          const bool edgeJ = sheet && (j == 0 || j == grid.height);
+          const bool edgeI = sheet && (i == 0 || i == field.cellsWide);
+          const bool edgeJ = sheet && (j == 0 || j == field.cellsHigh);
           if (edgeI && edgeJ) continue; // a sheet's corner stays
           const Offset u = field.point(i, j);
           const Vec3f p = at[field.index(i, j)];
@@ -121,9 +141,11 @@ ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress
           double s[2] = {0, 0}, total[2] = {0, 0};
           for (const auto& [di, dj] : {std::array{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
             const int ni = i + di, nj = j + dj;
-            if (sheet && (ni < 0 || nj < 0 || ni > grid.width || nj > grid.height)) continue;
+            if (sheet && (ni < 0 || nj < 0 || ni > field.cellsWide || nj > field.cellsHigh))
+              continue;
             const Offset v = field.point(ni, nj);
-            const Vec3f q = positionOf(ni, nj);
+            const auto [ci, cj] = field.canonicalOf(ni, nj);
+            const Vec3f q = at[field.index(ci, cj)];
             const double w = double(dot(q - p, q - p));
             const int axis = di != 0 ? 0 : 1;
             s[axis] += w * (axis == 0 ? v.x - u.x : v.y - u.y);
@@ -135,29 +157,48 @@ ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress
           if (!edgeJ && total[1] > 0) d.y += kSweepStep * s[1] / total[1];
         }
     });
-    // Where a cell would fold, its corners keep their points (twice: an undone corner may fold
-    // a cell beside it).
+    // Where a cell would fold, its corners keep their points (again while undoing one folds a
+    // cell beside it).
     for (int pass = 0; pass < 3; ++pass) {
       bool undone = false;
-      for (int j = 0; j < grid.height; ++j)
-        for (int i = 0; i < grid.width; ++i)
+      for (int j = 0; j < field.cellsHigh; ++j)
+        for (int i = 0; i < field.cellsWide; ++i)
           if (cellFolds(next, i, j))
-            for (const auto& [ci, cj] :
-                 {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
-              const int wi = grid.topology == Topology::Torus ? ci % grid.width : ci;
-              const int wj = grid.topology == Topology::Torus ? cj % grid.height : cj;
-              Offset& d = next.offset[field.index(wi, wj)];
-              const Offset& was = field.offset[field.index(wi, wj)];
+            for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
+              const auto [ci, cj] = field.canonicalOf(a, b);
+              Offset& d = next.offset[field.index(ci, cj)];
+              const Offset& was = field.offset[field.index(ci, cj)];
               undone = undone || d.x != was.x || d.y != was.y;
               d = was;
             }
       if (!undone) break;
     }
     field = std::move(next);
-    if (progress && !progress(float(sweep + 1) / float(sweeps)))
-      throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+    if (swept) swept(sweep + 1);
   }
-  return field;
+}
+
+// The relaxation, coarse to fine: from a lattice of at least kCoarsestCells cells across the
+// shorter side (every 64th sample at most), `sweeps` sweeps on each level, each level starting
+// from the one before it interpolated: a pulled part's samples travel across the image in a few
+// hundred sweeps at any N (300 on the full grid alone moved them ~17 samples at 1024 × 512).
+ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress& progress) {
+  const SampleGrid& grid = image.grid();
+  int stride = 1;
+  while (stride < 64 && std::min(grid.width, grid.height) / (2 * stride) >= kCoarsestCells)
+    stride *= 2;
+  int levels = 0;
+  for (int s = stride; s >= 1; s /= 2)
+    ++levels;
+  ParameterField field = emptyField(grid, stride);
+  for (int level = 0;; ++level) {
+    sweepLevel(image, field, sweeps, [&](int swept) {
+      if (progress && !progress(float(level * sweeps + swept) / float(levels * sweeps)))
+        throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
+    });
+    if (field.stride == 1) return field;
+    field = finer(field);
+  }
 }
 
 // Every layer of `document` at the field's points, offsets scaled by `step`.

@@ -108,8 +108,8 @@ void GridEvenOutTest::hornOnATorus() {
         r.before.p99OverMedian, r.after.p99OverMedian, r.stretchedBefore, r.stretchedAfter, r.step,
         100 * r.moved.rms, 100 * r.moved.hausdorff);
   QVERIFY2(r.changed, r.reason.c_str());
-  QVERIFY(r.after.longestOverMedian < 0.95 * r.before.longestOverMedian);
-  QVERIFY(r.stretchedAfter >= r.stretchedBefore);
+  QVERIFY(r.after.longestOverMedian < 0.85 * r.before.longestOverMedian);
+  QVERIFY(r.stretchedAfter > r.stretchedBefore);
   QVERIFY(r.moved.rms <= 1e-4 && r.moved.hausdorff <= 1e-3);
   const GeometryImage& p = r.document.positions;
   QCOMPARE(p.width(), width);
