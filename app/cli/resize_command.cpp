@@ -48,8 +48,6 @@ Command addResizeCommand(CLI::App& app) {
             ChosenObject chosen = readChosenObject(opt->input, opt->object);
             requireUnlocked(chosen, "resize");
             const core::Document document = std::move(chosen.object().document);
-            // A torus's or plane's stretch summary is not made (null): the ball's alone.
-            const bool ball = document.topology == core::Topology::Octahedral;
             const auto start = std::chrono::steady_clock::now();
             const core::ResizeResult r = core::resizeAndCheck(document, {.size = opt->size});
             const double ms =
@@ -68,8 +66,8 @@ Command addResizeCommand(CLI::App& app) {
                                   {"height_before", document.positions.height()},
                                   {"height", r.document.positions.height()},
                                   {"topology", core::topologyName(document.topology)},
-                                  {"before", ball ? toJson(r.before) : nlohmann::json(nullptr)},
-                                  {"after", ball ? toJson(r.after) : nlohmann::json(nullptr)},
+                                  {"before", toJson(r.before)},
+                                  {"after", toJson(r.after)},
                                   {"ms", ms}}
                             .dump()
                      << "\n";

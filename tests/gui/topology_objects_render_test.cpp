@@ -423,6 +423,14 @@ void TopologyObjectsRenderTest::theLodViewShowsATorusAndAPlane() {
   }
   QVERIFY(std::memcmp(window_->viewport()->modeller().document().positions.texels().data(),
                       stroked.texels().data(), stroked.byteSize()) == 0);
+  // The stretch preview on the ring (W ≠ H): drawn, its mean spacing the ring's own.
+  window_->lodPanel()->setDisplay(app::LodPanel::Display::FullResolution);
+  view->setPreview(gpu::ModelView::Preview::Stretch);
+  const QImage stretched = frame(*view);
+  QVERIFY(stretched.pixel(top) != stretched.pixel(0, 0));
+  QCOMPARE(stretched.pixel(hole), stretched.pixel(0, 0));
+  view->setPreview(gpu::ModelView::Preview::Shaded);
+  window_->lodPanel()->setDisplay(app::LodPanel::Display::Lod);
   // Mesh ▸ Resolution on the ring: twice the cells both ways, its wrap exact, drawn; one undo
   // brings the old image back bit for bit.
   const core::GeometryImage ring = window_->viewport()->modeller().document().positions;

@@ -126,22 +126,6 @@ std::vector<float> resampleField(const SampleGrid& from, const SampleGrid& to, i
   return out;
 }
 
-// The median length of the grid's edges along i and j (a torus's or plane's stretch summary has
-// no other use here), over at most about a million of them.
-double medianGridEdge(const GeometryImage& image) {
-  std::vector<float> edges;
-  const int stride = std::max(1, int(std::sqrt(double(image.width()) * image.height() / 5e5)));
-  for (int j = 0; j < image.height(); j += stride)
-    for (int i = 0; i < image.width(); i += stride) {
-      const Vec3f p = image.at(i, j).xyz();
-      edges.push_back(length(image.at(i + 1, j).xyz() - p));
-      edges.push_back(length(image.at(i, j + 1).xyz() - p));
-    }
-  if (edges.empty()) return 0;
-  std::nth_element(edges.begin(), edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end());
-  return edges[edges.size() / 2];
-}
-
 // Catmull-Rom swings out beside long edges (a stretched limb's 64× the median: 2.5 % of the
 // diagonal at its tip). Each new sample's offset from the old surface at its point (linear on
 // the old grid's triangles, as extractMesh splits the cells) is cut to a tenth of the old
@@ -150,7 +134,7 @@ double medianGridEdge(const GeometryImage& image) {
 void limitOvershoot(const GeometryImage& from, GeometryImage& to) {
   const bool ball = from.topology() == Topology::Octahedral;
   const int w = from.width(), h = from.height(), r = to.width() / w, half = w / 2;
-  const double cap = 0.1 * (ball ? summarizeStretch(from).medianEdge : medianGridEdge(from));
+  const double cap = 0.1 * summarizeStretch(from).medianEdge;
   if (!(cap > 0)) return;
   detail::parallelRows(to.height() + 1, [&](int rowBegin, int rowEnd) {
     for (int j = rowBegin; j < rowEnd; ++j)
@@ -372,10 +356,8 @@ ResizeResult resizeAndCheck(const Document& document, const ResizeOptions& optio
   ResizeResult out;
   Document resized = resizeDocument(document, options.size);
   const int n = document.size(), m = options.size;
-  if (document.positions.topology() == Topology::Octahedral) { // the stretch summary's grid
-    out.before = summarizeStretch(document.positions);
-    out.after = summarizeStretch(resized.positions);
-  }
+  out.before = summarizeStretch(document.positions);
+  out.after = summarizeStretch(resized.positions);
   const TriangleMesh before = extractMesh(document.positions);
   if (boundingBox(before).diagonal() > 0)
     out.moved = compareSurfaces(before, extractMesh(resized.positions),

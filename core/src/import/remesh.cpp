@@ -428,6 +428,8 @@ SurfaceDistance measureMoved(const TriangleMesh& surface, const GeometryImage& o
 
 RemeshResult remeshDocument(const Document& document, const RemeshOptions& options,
                             const std::function<bool(float)>& progress) {
+  // It makes an octahedral ball (a torus or plane would first need its own parameterization).
+  requireOctahedral(document.positions, "remesh", "this object");
   const int n = document.size();
   const int m = options.size == 0 ? n : options.size;
   requireValidSize(m);

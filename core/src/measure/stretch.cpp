@@ -6,6 +6,9 @@
 
 #include "detail/float_ranks.h"
 #include "detail/parallel_rows.h"
+#include "measure/grid_stretch.h"
+
+#include "octaclay/core/document/document_checks.h"
 
 #include <algorithm>
 #include <array>
@@ -273,6 +276,8 @@ template <class PerCell> double surfaceArea(const GeometryImage& image, PerCell&
 }
 
 VertexFigures measureVertices(const GeometryImage& image) {
+  // Per-sample figures on the ball's square grid (a torus's or plane's: summarizeStretch).
+  requireOctahedral(image, "the per-sample stretch map", "this image");
   const int n = image.size();
   VertexFigures out;
   out.n = n;
@@ -338,6 +343,7 @@ std::size_t nearestRank(std::size_t count, double q) {
 } // namespace
 
 double meanSpacing(const GeometryImage& image) {
+  if (image.topology() != Topology::Octahedral) return detail::gridMeanSpacing(image);
   const int n = image.size();
   if (n < 2) return 0.0;
   // measureVertices' first pass alone, keeping no per-cell figures (a renderer calls this
@@ -363,6 +369,7 @@ StretchMap measureStretch(const GeometryImage& image) {
 }
 
 StretchSummary summarizeStretch(const GeometryImage& image) {
+  if (image.topology() != Topology::Octahedral) return detail::summarizeGridStretch(image);
   StretchSummary summary;
   const int n = image.size();
   if (n < 2) return summary;

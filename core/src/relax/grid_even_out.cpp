@@ -322,43 +322,6 @@ int sweepsFor(const RelaxOptions& options) {
 
 } // namespace
 
-StretchSummary gridEdgeSummary(const GeometryImage& image) {
-  StretchSummary summary;
-  std::vector<float> edges;
-  edges.reserve(2 * static_cast<std::size_t>(image.width()) *
-                static_cast<std::size_t>(image.height()));
-  double area = 0;
-  for (int j = 0; j < image.height(); ++j)
-    for (int i = 0; i < image.width(); ++i) {
-      const Vec3f a = image.at(i, j).xyz(), b = image.at(i + 1, j).xyz(),
-                  c = image.at(i + 1, j + 1).xyz(), d = image.at(i, j + 1).xyz();
-      edges.push_back(length(b - a));
-      edges.push_back(length(d - a));
-      area += 0.5 * (double(length(core::cross(b - a, d - a))) +
-                     double(length(core::cross(d - c, b - c))));
-    }
-  if (edges.empty()) return summary;
-  const auto rank = [&](double q) {
-    const auto k = static_cast<std::ptrdiff_t>(q * double(edges.size() - 1));
-    std::nth_element(edges.begin(), edges.begin() + k, edges.end());
-    return double(edges[static_cast<std::size_t>(k)]);
-  };
-  summary.medianEdge = rank(0.5);
-  const double p99 = rank(0.99);
-  summary.longestEdge = *std::max_element(edges.begin(), edges.end());
-  if (summary.medianEdge > 0) {
-    summary.longestOverMedian = summary.longestEdge / summary.medianEdge;
-    summary.p99OverMedian = p99 / summary.medianEdge;
-    summary.shareOver4x =
-        double(std::count_if(edges.begin(), edges.end(),
-                             [&](float e) { return double(e) > 4 * summary.medianEdge; })) /
-        double(edges.size());
-  }
-  const double vertices = double(vertexCount(image.topology(), image.width(), image.height()));
-  summary.meanSpacing = std::sqrt(area / vertices);
-  return summary;
-}
-
 Document gridEvenOutSamples(const Document& document, const RelaxOptions& options,
                             const RelaxProgress& progress) {
   checkInput(document, options);
@@ -376,7 +339,7 @@ EvenOutResult gridEvenOut(const Document& document, const RelaxOptions& options,
     return !progress || progress(solveShare * f);
   });
   EvenOutResult out;
-  out.before = gridEdgeSummary(document.positions);
+  out.before = summarizeStretch(document.positions);
   out.after = out.before;
   out.vertices = static_cast<std::size_t>(vertexCount(
       document.positions.topology(), document.positions.width(), document.positions.height()));
@@ -393,7 +356,7 @@ EvenOutResult gridEvenOut(const Document& document, const RelaxOptions& options,
       throw Error(ErrorKind::InvalidArgument, "an even-out step must be in (0, 1]");
     Document result = resampled(document, field, step);
     ++out.tries;
-    const StretchSummary after = gridEdgeSummary(result.positions);
+    const StretchSummary after = summarizeStretch(result.positions);
     const std::size_t shown = stretchedShown(field, step, stretched);
     std::string reason;
     if (after.longestOverMedian > out.before.longestOverMedian * (1 + 1e-6))

@@ -16,19 +16,15 @@ namespace octaclay::core::detail {
 /// new points on the old piecewise-linear surface (locateGridPoint), a torus's column W and row
 /// H copied from column and row 0. The result is checked as evenOut checks the ball's (steps 1,
 /// ½, ¼, ⅛; the longest edge may not grow, the stretched part may not lose samples, one must
-/// improve, the surface may not move beyond the tolerances) with gridEdgeSummary for the
-/// stretch. Each of options.iterations (0 and 1 alike, at most 25 counted) is 100 sweeps a
-/// level; options.pinned is not read (the scripted strokes that pin samples are the ball's keep
-/// detail).
+/// improve, the surface may not move beyond the tolerances) with summarizeStretch (its grid
+/// figures) for the stretch. Each of options.iterations (0 and 1 alike, at most 25 counted) is 100
+/// sweeps a level; options.pinned is not read (the scripted strokes that pin samples are the ball's
+/// keep detail).
 EvenOutResult gridEvenOut(const Document& document, const RelaxOptions& options,
                           const EvenOutCheckOptions& check, const RelaxProgress& progress);
 
 /// The unchecked even-out of a torus or plane (evenOutSamples): the full step.
 Document gridEvenOutSamples(const Document& document, const RelaxOptions& options,
                             const RelaxProgress& progress);
-
-/// The median, longest and 99th-percentile grid edge (along i and j) of a torus or plane image
-/// and its mean spacing: StretchSummary's edge figures (its share over 4× the median: of edges).
-StretchSummary gridEdgeSummary(const GeometryImage& image);
 
 } // namespace octaclay::core::detail

@@ -1,9 +1,12 @@
 // Stretch measure: spacing and stretch per sample, the summary, region sampling; checked against
 // a brute-force one-ring computation and the analytic area factor of a scaled sphere.
 
+#include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/geometry_image.h"
 #include "octaclay/core/geometry/octahedral.h"
+#include "octaclay/core/geometry/sheet.h"
+#include "octaclay/core/geometry/torus.h"
 #include "octaclay/core/measure/stretch.h"
 
 #include <QElapsedTimer>
@@ -124,6 +127,35 @@ class StretchTest : public QObject {
   Q_OBJECT
 
 private slots:
+  // A torus's or plane's own W × H grid, wide or tall (a wide ring once read rows past its last
+  // one): the mean spacing is √(area / vertices) of the true surface within the grid's chord
+  // error, the edge figures are the ring's (its outer ring edges over its inner ones), and the
+  // per-sample map, the ball's, refuses them by name.
+  void torusAndPlaneFigures() {
+    const Torus ring{0.7f, 0.3f};
+    for (const auto& [w, h] : {std::pair{512, 128}, {64, 256}, {128, 64}}) {
+      const GeometryImage torus = makeTorus(ring, w, h);
+      const double exact = std::sqrt(4 * M_PI * M_PI * 0.7 * 0.3 / (double(w) * h));
+      const double spacing = meanSpacing(torus);
+      QVERIFY2(std::abs(spacing / exact - 1) < 0.01,
+               qPrintable(QString("%1x%2: %3 against %4").arg(w).arg(h).arg(spacing).arg(exact)));
+      const StretchSummary s = summarizeStretch(torus);
+      QCOMPARE(s.meanSpacing, spacing);
+      // The longest edge: the ring's outermost chord or the tube's.
+      const double outer = 2 * 1.0 * std::sin(M_PI / w), tube = 2 * 0.3 * std::sin(M_PI / h);
+      QVERIFY2(std::abs(s.longestEdge - std::max(outer, tube)) < 1e-5,
+               qPrintable(QString::number(s.longestEdge)));
+      QVERIFY(s.medianEdge > 0 && s.longestOverMedian >= 1 &&
+              s.p99OverMedian <= s.longestOverMedian);
+      QVERIFY_THROWS_EXCEPTION(Error, measureStretch(torus));
+    }
+    const GeometryImage sheet = makeSheet(Sheet::Square, 64); // [-1, 1]², cells 2/64 square
+    const StretchSummary s = summarizeStretch(sheet);
+    QCOMPARE(s.longestOverMedian, 1.0);
+    QVERIFY(std::abs(s.medianEdge - 2.0 / 64) < 1e-6);
+    QVERIFY(std::abs(meanSpacing(sheet) - std::sqrt(4.0 / (65.0 * 65.0))) < 1e-6);
+  }
+
   void poleIsTheSquareCentre() {
     const Vec3f d = octahedralDirection(256, 128, 128);
     QCOMPARE(d.z, 1.0f);

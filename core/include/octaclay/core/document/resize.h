@@ -42,11 +42,9 @@ struct ResizeOptions {
 struct ResizeResult {
   Document document; ///< the resized document, or the input unchanged
   bool changed = false;
-  std::string reason; ///< why the document was left unchanged (empty when changed)
-  /// after: of the resized surface (also when refused); empty for a torus or plane (the stretch
-  /// summary is the ball's).
-  StretchSummary before, after;
-  SurfaceDistance moved; ///< old surface against the resized one
+  std::string reason;           ///< why the document was left unchanged (empty when changed)
+  StretchSummary before, after; ///< after: of the resized surface (also when refused)
+  SurfaceDistance moved;        ///< old surface against the resized one
 };
 
 /// Mesh ▸ Resolution and `octaclay-cli resize`: resizeDocument, then the result checked: when the

@@ -41,8 +41,11 @@ struct StretchSummary {
 /// Spacing and stretch of every texel. An empty image gives an empty map.
 StretchMap measureStretch(const GeometryImage& image);
 /// The summary of image's edges and spacings; all zero for an empty image.
+/// A torus's or plane's: its W × H grid's edges along i and j and its mean spacing (measureStretch
+/// and the per-sample figures are the ball's).
 StretchSummary summarizeStretch(const GeometryImage& image);
-/// √(surface area / (N² + 2)): StretchSummary::meanSpacing alone, what a stretch heat map
+/// √(surface area / (N² + 2)) (a torus's or plane's: over its own vertices):
+/// StretchSummary::meanSpacing alone, what a stretch heat map
 /// divides by.
 double meanSpacing(const GeometryImage& image);
 
