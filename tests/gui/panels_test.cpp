@@ -721,6 +721,16 @@ private slots:
     QCOMPARE(panel.divisor(), 1);
     QCOMPARE(combo->count(), 1);
 
+    // A 64 × 16 torus: levels keep 4 cells around its tube, labelled W/d × H/d; a chosen level
+    // it lacks falls back to the default.
+    panel.setDocumentSize(64, 16, 4);
+    QCOMPARE(combo->count(), 3);
+    QCOMPARE(combo->itemText(0), QStringLiteral("Full (64 × 16)"));
+    QCOMPARE(combo->itemText(2), QStringLiteral("Medium (16 × 4)"));
+    QVERIFY(!panel.setDivisor(8)); // 8 × 2: too thin a ring
+    QVERIFY(panel.setDivisor(4));
+    QCOMPARE(panel.displayedSize(), 16);
+
     panel.setDocumentSize(4096);
     QVERIFY(!panel.setDivisor(3));
     QVERIFY(!panel.setDivisor(64));

@@ -20,6 +20,7 @@
 #include "octaclay/core/geometry/triangle_mesh.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -369,6 +370,11 @@ void TopologyObjectsRenderTest::theLodViewShowsATorusAndAPlane() {
   const QString added = addAlone("actionAddTorus");
   QVERIFY2(added.isEmpty(), qPrintable(added));
   app::ViewportWidget* view = window_->viewport();
+  // The Level list counts the ring's own W × H cells.
+  const core::GeometryImage& made = window_->viewport()->modeller().document().positions;
+  auto* levels = window_->lodPanel()->findChild<QComboBox*>(QStringLiteral("level"));
+  QVERIFY(levels);
+  QCOMPARE(levels->itemText(0), QString("Full (%1 × %2)").arg(made.width()).arg(made.height()));
   QSignalSpy generated(window_->lodGenerator(), &app::LodGenerator::generated);
   QSignalSpy failed(window_->lodGenerator(), &app::LodGenerator::failed);
   constexpr int kTarget = 3000;

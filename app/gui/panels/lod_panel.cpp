@@ -229,8 +229,10 @@ QString LodPanel::errorText() const {
   return errorLabel_->text();
 }
 
-void LodPanel::setDocumentSize(int n) {
+void LodPanel::setDocumentSize(int n, int height, int leastCells) {
   documentSize_ = std::max(n, 0);
+  documentHeight_ = std::max(height, 0);
+  leastCells_ = std::max(leastCells, 1);
   // The figures were the previous document's.
   setLodError(std::nullopt);
   lodLabel_->setText(tr("LOD: —"));
@@ -240,7 +242,7 @@ void LodPanel::setDocumentSize(int n) {
     // no longer fits is forgotten, so the next document gets the default again.
     userChose_ = false;
     divisor = 1;
-    for (int d = 1; d <= kMaxDivisor && documentSize_ / d >= kMinLevelSize; d *= 2) {
+    for (int d = 1; isLevel(d) && documentSize_ > 0; d *= 2) {
       divisor = d;
       if (documentSize_ / d <= kDefaultDisplaySize) break;
     }
@@ -276,7 +278,9 @@ QString LodPanel::fullText() const {
 
 bool LodPanel::isLevel(int divisor) const {
   if (!isPowerOfTwo(divisor) || divisor > kMaxDivisor) return false;
-  return documentSize_ == 0 || documentSize_ / divisor >= kMinLevelSize;
+  if (documentSize_ == 0) return true;
+  return documentSize_ / divisor >= kMinLevelSize &&
+         (documentHeight_ == 0 || documentHeight_ / divisor >= leastCells_);
 }
 
 void LodPanel::fillLevels() {
@@ -285,7 +289,19 @@ void LodPanel::fillLevels() {
   const QString words[] = {tr("Full"), tr("High"),     tr("Medium"),
                            tr("Low"),  tr("Very low"), tr("Lowest")};
   int k = 0;
-  for (int d = 1; d <= kMaxDivisor && documentSize_ / d >= kMinLevelSize; d *= 2, ++k) {
+  for (int d = 1; documentSize_ > 0 && isLevel(d); d *= 2, ++k) {
+    if (documentHeight_ > 0) { // a torus or plane: W × H cells
+      const QString level = tr("%1 × %2").arg(documentSize_ / d).arg(documentHeight_ / d);
+      levelCombo_->addItem(tr("%1 (%2)").arg(words[k], level), d);
+      levelCombo_->setItemData(k,
+                               tr("1/%1: one sample in %1 each way, %2 of the %3 × %4 model")
+                                   .arg(d)
+                                   .arg(level)
+                                   .arg(documentSize_)
+                                   .arg(documentHeight_),
+                               Qt::ToolTipRole);
+      continue;
+    }
     levelCombo_->addItem(tr("%1 (%2)").arg(words[k]).arg(documentSize_ / d), d);
     const QString tip = d == 1 ? tr("N/1: every sample of the %1 × %1 model").arg(documentSize_)
                                : tr("N/%1: one sample in %1 each way, %2 × %2 of the %3 × %3 model")

@@ -50,7 +50,9 @@ public:
   /// divisor the user chose (combo box or setDivisor) while it is still a level of n, else
   /// picks the largest level ≤ kDefaultDisplaySize (or the smallest level when none is).
   /// Emits levelChanged when the divisor changes.
-  void setDocumentSize(int n);
+  /// A torus or plane of n × height cells (height 0: square) lists the levels whose height/d
+  /// keeps at least `leastCells` cells (a torus's 4), labelled W/d × H/d.
+  void setDocumentSize(int n, int height = 0, int leastCells = 2);
   /// The document size given to setDocumentSize; 0 before.
   int documentSize() const { return documentSize_; }
 
@@ -121,6 +123,8 @@ private:
   void applyDivisor(int divisor);
 
   int documentSize_ = 0;
+  int documentHeight_ = 0; // a torus's or plane's H; 0 for a square image
+  int leastCells_ = 2;     // cells a level keeps across H
   int divisor_ = 1;
   bool userChose_ = false;
 

@@ -50,10 +50,20 @@ DocumentActions::DocumentActions(Parts parts, const QString& recoveryFolder, qin
           &DocumentActions::activeObjectChanged);
 }
 
+// The LOD panel's levels of the edited object: N/d of a ball, W/d × H/d of a torus or plane
+// (a torus keeping its 4 cells around the tube), and the viewport drawn at the level chosen.
+void DocumentActions::listLevels() {
+  const core::GeometryImage& p = parts_.modeller->document().positions;
+  const bool ball = p.topology() == core::Topology::Octahedral;
+  parts_.lodPanel->setDocumentSize(p.width(), ball ? 0 : p.height(),
+                                   p.topology() == core::Topology::Torus ? core::kMinTorusSize
+                                                                         : core::kMinSize);
+  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+}
+
 void DocumentActions::activeObjectChanged(int k) {
   // Not a step: the one history, its saved state and the autosave's position stay.
-  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
-  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  listLevels();
   emit titleChanged();
   emit adopted();
   parts_.statusBar->showMessage(
@@ -123,8 +133,7 @@ bool DocumentActions::adoptScene(core::Scene scene, const QString& path) {
   forceModified_ = false;
   autosaved_.reset();
   autosaving_.reset(); // an autosave in flight was of the document before
-  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
-  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  listLevels();
   emit titleChanged();
   emit adopted();
   return true;
@@ -171,8 +180,7 @@ void DocumentActions::stepped(std::uint64_t serial, bool replacedDocument, bool 
 void DocumentActions::shownReplaced() {
   autosaved_.reset();
   autosaving_.reset(); // an autosave in flight was of the document before
-  parts_.lodPanel->setDocumentSize(parts_.modeller->document().size());
-  parts_.viewport->setLevelDivisor(parts_.lodPanel->divisor());
+  listLevels();
   emit titleChanged();
   emit adopted();
 }

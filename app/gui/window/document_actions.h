@@ -140,6 +140,9 @@ private:
   bool adoptScene(core::Scene scene, const QString& path);
   /// The modeller switched its active object (not a step: the history and its saved state stay).
   void activeObjectChanged(int k);
+  /// The LOD panel's levels of the edited object (a torus's or plane's W/d × H/d) and the
+  /// viewport at the chosen one.
+  void listLevels();
   /// The file state (path, import, forced modified) a replacing step leaves, and the one before.
   struct FileState {
     QString path, importedFrom;
