@@ -53,15 +53,8 @@ Taps tapsFor(int k, int n, int m) {
 // The sample that grid sample s is the same vertex as and takes its bits from: the ball's
 // canonical one, a torus's (i mod W, j mod H); a plane's samples are all their own.
 Sample canonicalIn(const SampleGrid& grid, Sample s) {
-  switch (grid.topology) {
-  case Topology::Octahedral:
-    return canonical(grid.width, s);
-  case Topology::Torus:
-    return {s.i % grid.width, s.j % grid.height};
-  case Topology::Plane:
-    break;
-  }
-  return s;
+  // wrap() takes a torus's column W and row H to 0 and leaves a plane's samples as they are.
+  return grid.topology == Topology::Octahedral ? canonical(grid.width, s) : wrap(grid, s);
 }
 
 // Gives every identified sample of a (W+1) × (H+1) field of `ch` floats its canonical one's.

@@ -20,9 +20,6 @@
 namespace octaclay::core::detail {
 namespace {
 
-// Salient-average's weight floor, as on the ball: flat footprints fall back to the mean.
-constexpr float kSaliencyFloor = 1.0f / 64.0f;
-
 int minCells(Topology topology) {
   return topology == Topology::Torus ? kMinTorusSize : kMinSize;
 }
@@ -73,23 +70,9 @@ struct Choice {
 // a line only where `along` says (a plane's boundary keeps its outline).
 Choice averageFootprint(const GeometryImage& image, Sample centre, int half, OnLine along,
                         bool salient) {
-  double sx = 0, sy = 0, sz = 0, sw = 0, total = 0;
-  const int hi = along.i ? 0 : half, hj = along.j ? 0 : half;
-  for (int dj = -hj; dj <= hj; ++dj) {
-    const double wj = hj > 0 && (dj == -hj || dj == hj) ? 0.5 : 1.0;
-    for (int di = -hi; di <= hi; ++di) {
-      const double wi = hi > 0 && (di == -hi || di == hi) ? 0.5 : 1.0;
-      const Vec4f& t = image.at(wrap(image.grid(), Sample{centre.i + di, centre.j + dj}));
-      const double w = wi * wj * (salient ? t.w + kSaliencyFloor : 1.0);
-      sx += w * t.x;
-      sy += w * t.y;
-      sz += w * t.z;
-      sw += w * t.w;
-      total += w;
-    }
-  }
-  const double inv = 1.0 / total;
-  return {Vec4f{float(sx * inv), float(sy * inv), float(sz * inv), float(sw * inv)}, centre};
+  return {footprintMean(centre, along.i ? 0 : half, along.j ? 0 : half, salient,
+                        [&](Sample s) -> const Vec4f& { return image.at(wrap(image.grid(), s)); }),
+          centre};
 }
 
 // The most salient sample within d/4 of the centre (ties: nearest, then first in row order),

@@ -16,10 +16,6 @@
 namespace octaclay::core::detail {
 namespace {
 
-// Weight of the salient-average method: the saliency plus a floor, so that flat footprints
-// (saliency 0 everywhere) fall back to the plain average.
-constexpr float kSaliencyFloor = 1.0f / 64.0f;
-
 bool isCone(int m, Sample s) {
   return s == Sample{0, 0} || s == Sample{m / 2, 0} || s == Sample{0, m / 2} ||
          s == Sample{m, m / 2} || s == Sample{m / 2, m};
@@ -36,23 +32,11 @@ Choice averageFootprint(const GeometryImage& image, Sample centre, int half, boo
   const int n = image.size();
   const bool inside =
       centre.i - half >= 0 && centre.i + half <= n && centre.j - half >= 0 && centre.j + half <= n;
-  double sx = 0, sy = 0, sz = 0, sw = 0, total = 0;
-  for (int dj = -half; dj <= half; ++dj) {
-    const double wj = (dj == -half || dj == half) ? 0.5 : 1.0;
-    for (int di = -half; di <= half; ++di) {
-      const double wi = (di == -half || di == half) ? 0.5 : 1.0;
-      const Sample s{centre.i + di, centre.j + dj};
-      const Vec4f& t = inside ? image.at(s) : image.at(wrap(n, s));
-      const double w = wi * wj * (salient ? t.w + kSaliencyFloor : 1.0);
-      sx += w * t.x;
-      sy += w * t.y;
-      sz += w * t.z;
-      sw += w * t.w;
-      total += w;
-    }
-  }
-  const double inv = 1.0 / total;
-  return {Vec4f{float(sx * inv), float(sy * inv), float(sz * inv), float(sw * inv)}, centre};
+  return {footprintMean(centre, half, half, salient,
+                        [&](Sample s) -> const Vec4f& {
+                          return inside ? image.at(s) : image.at(wrap(n, s));
+                        }),
+          centre};
 }
 
 // The most salient sample within s/4 of the centre (ties keep the one nearest the

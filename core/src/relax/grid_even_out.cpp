@@ -3,7 +3,7 @@
 #include "relax/grid_even_out.h"
 
 #include "detail/parallel_rows.h"
-#include "measure/move_tolerance.h"
+#include "relax/even_out_steps.h"
 
 #include "octaclay/core/document/document_checks.h"
 #include "octaclay/core/error.h"
@@ -298,12 +298,6 @@ std::size_t stretchedShown(const ParameterField& field, double step,
   return shown;
 }
 
-std::string times(double ratio) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f×", ratio);
-  return text;
-}
-
 void checkInput(const Document& document, const RelaxOptions& options) {
   if (options.iterations < 0 || options.iterations > kMaxRelaxIterations)
     throw Error(ErrorKind::InvalidArgument,
@@ -331,66 +325,19 @@ Document gridEvenOutSamples(const Document& document, const RelaxOptions& option
 EvenOutResult gridEvenOut(const Document& document, const RelaxOptions& options,
                           const EvenOutCheckOptions& check, const RelaxProgress& progress) {
   checkInput(document, options);
-  const auto cancelled = [] {
-    return Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
-  };
   const float solveShare = 0.5f;
   const ParameterField field = solve(document.positions, sweepsFor(options), [&](float f) {
     return !progress || progress(solveShare * f);
   });
-  EvenOutResult out;
-  out.before = summarizeStretch(document.positions);
-  out.after = out.before;
-  out.vertices = static_cast<std::size_t>(vertexCount(
+  SolvedEvenOut solved;
+  solved.before = summarizeStretch(document.positions);
+  solved.vertices = static_cast<std::size_t>(vertexCount(
       document.positions.topology(), document.positions.width(), document.positions.height()));
   const std::vector<std::uint8_t> stretched =
-      stretchedSamples(document.positions, kStretchedEdge * out.before.medianEdge, field);
-  out.stretchedBefore = stretchedShown(field, 0.0, stretched);
-  out.stretchedAfter = out.stretchedBefore;
-  const TriangleMesh surface = extractMesh(document.positions);
-  const bool hasScale = boundingBox(surface).diagonal() > 0;
-  std::string firstReason;
-  for (std::size_t t = 0; t < check.steps.size(); ++t) {
-    const double step = check.steps[t];
-    if (!(step > 0 && step <= 1))
-      throw Error(ErrorKind::InvalidArgument, "an even-out step must be in (0, 1]");
-    Document result = resampled(document, field, step);
-    ++out.tries;
-    const StretchSummary after = summarizeStretch(result.positions);
-    const std::size_t shown = stretchedShown(field, step, stretched);
-    std::string reason;
-    if (after.longestOverMedian > out.before.longestOverMedian * (1 + 1e-6))
-      reason = "the longest edge would grow from " + times(out.before.longestOverMedian) + " to " +
-               times(after.longestOverMedian) + " the median";
-    else if (shown < out.stretchedBefore)
-      reason = "the stretched part would lose samples (" + std::to_string(out.stretchedBefore) +
-               " -> " + std::to_string(shown) + ")";
-    else if (after.longestOverMedian > 0.99 * out.before.longestOverMedian &&
-             double(shown) < 1.01 * double(out.stretchedBefore) + 0.5)
-      reason = "the samples are already as even as it can make them (longest edge " +
-               times(out.before.longestOverMedian) + " the median)";
-    if (reason.empty() && hasScale) {
-      out.moved = compareSurfaces(surface, extractMesh(result.positions),
-                                  {.samplesPerSurface = check.samplesPerSurface});
-      reason = surfaceMovedTooFar(out.moved, check.rmsTolerance, check.hausdorffTolerance);
-    }
-    if (progress &&
-        !progress(solveShare + (1 - solveShare) * float(t + 1) / float(check.steps.size())))
-      throw cancelled();
-    if (reason.empty()) {
-      out.document = std::move(result);
-      out.changed = true;
-      out.step = step;
-      out.after = after;
-      out.stretchedAfter = shown;
-      return out;
-    }
-    if (firstReason.empty()) firstReason = reason;
-  }
-  out.document = document;
-  out.reason = firstReason;
-  if (check.steps.size() > 1) out.reason += ", and no smaller step did better";
-  return out;
+      stretchedSamples(document.positions, kStretchedEdge * solved.before.medianEdge, field);
+  solved.resample = [&](double step) { return resampled(document, field, step); };
+  solved.stretchedShown = [&](double step) { return stretchedShown(field, step, stretched); };
+  return tryEvenOutSteps(document, solved, check, progress, solveShare);
 }
 
 } // namespace octaclay::core::detail

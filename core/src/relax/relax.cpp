@@ -3,7 +3,7 @@
 #include "detail/aabb_tree.h"
 #include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
-#include "measure/move_tolerance.h"
+#include "relax/even_out_steps.h"
 #include "relax/grid_even_out.h"
 #include "relax/offset_field.h"
 #include "relax/sample_masks.h"
@@ -181,12 +181,6 @@ std::size_t stretchedShown(const detail::OffsetField& field, double step,
     }
   });
   return count;
-}
-
-std::string times(double ratio) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3gx", ratio);
-  return text;
 }
 
 // The area of the grid's triangles over the cells with a moved corner (offsets[k] != 0), their
@@ -571,74 +565,26 @@ EvenOutResult evenOut(const Document& document, const RelaxOptions& options,
                       const EvenOutCheckOptions& check, const RelaxProgress& progress) {
   if (document.positions.topology() != Topology::Octahedral)
     return detail::gridEvenOut(document, options, check, progress);
-  const auto cancelled = [] {
-    return Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
-  };
   // The solve is most of the work at one try; each try's measure is about as much again.
   const float solveShare = 0.5f;
   const detail::OffsetField field = solveEvenOut(
       document, options, [&](float f) { return !progress || progress(solveShare * f); });
-  EvenOutResult out;
-  out.before = summarizeStretch(document.positions);
-  out.after = out.before;
+  detail::SolvedEvenOut solved;
+  solved.before = summarizeStretch(document.positions);
   const int n = document.size();
-  out.vertices = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) + 2;
+  solved.vertices = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) + 2;
   const std::vector<std::uint8_t> stretched =
-      stretchedSamples(document.positions, kStretchedEdge * out.before.medianEdge);
-  out.stretchedBefore = stretchedShown(field, 0.0, stretched);
-  out.stretchedAfter = out.stretchedBefore;
-  const TriangleMesh surface = extractMesh(document.positions);
-  const bool hasScale = boundingBox(surface).diagonal() > 0;
-  std::string firstReason;
-  for (std::size_t t = 0; t < check.steps.size(); ++t) {
-    const double step = check.steps[t];
-    if (!(step > 0 && step <= 1))
-      throw Error(ErrorKind::InvalidArgument, "an even-out step must be in (0, 1]");
+      stretchedSamples(document.positions, kStretchedEdge * solved.before.medianEdge);
+  solved.resample = [&](double step) {
     detail::OffsetField scaled = field;
     for (auto& d : scaled.offset)
       d = {static_cast<float>(step * double(d[0])), static_cast<float>(step * double(d[1]))};
     Document result = document;
     detail::resampleDocument(document, scaled, result);
-    ++out.tries;
-    const StretchSummary after = summarizeStretch(result.positions);
-    const std::size_t shown = stretchedShown(field, step, stretched);
-    std::string reason;
-    if (after.longestOverMedian > out.before.longestOverMedian * (1 + 1e-6))
-      reason = "the longest edge would grow from " + times(out.before.longestOverMedian) + " to " +
-               times(after.longestOverMedian) + " the median";
-    else if (shown < out.stretchedBefore)
-      reason = "the stretched part would lose samples (" + std::to_string(out.stretchedBefore) +
-               " -> " + std::to_string(shown) + ")";
-    else if (after.longestOverMedian > 0.99 * out.before.longestOverMedian &&
-             double(shown) < 1.01 * double(out.stretchedBefore) + 0.5)
-      reason = "the samples are already as even as it can make them (longest edge " +
-               times(out.before.longestOverMedian) + " the median)";
-    SurfaceDistance moved;
-    if (reason.empty() && hasScale) {
-      moved = compareSurfaces(surface, extractMesh(result.positions),
-                              {.samplesPerSurface = check.samplesPerSurface});
-      out.moved = moved;
-      reason = detail::surfaceMovedTooFar(moved, check.rmsTolerance, check.hausdorffTolerance);
-    }
-    if (progress &&
-        !progress(solveShare + (1 - solveShare) * float(t + 1) / float(check.steps.size())))
-      throw cancelled();
-    if (reason.empty()) {
-      out.document = std::move(result);
-      out.changed = true;
-      out.step = step;
-      out.after = after;
-      out.stretchedAfter = shown;
-      if (progress && !progress(1.0f)) throw cancelled();
-      return out;
-    }
-    if (firstReason.empty()) firstReason = reason;
-  }
-  out.document = document;
-  out.reason = firstReason;
-  if (check.steps.size() > 1) out.reason += ", and no smaller step did better";
-  if (progress && !progress(1.0f)) throw cancelled();
-  return out;
+    return result;
+  };
+  solved.stretchedShown = [&](double step) { return stretchedShown(field, step, stretched); };
+  return detail::tryEvenOutSteps(document, solved, check, progress, solveShare);
 }
 
 int keepDetailMargin(const GeometryImage& image, double radius) {

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 using namespace octaclay::core;
 using testing::boundaryLoops;
@@ -102,6 +103,18 @@ constexpr std::array kAllMethods = {
     ResampleMethod::SalientPoint, ResampleMethod::Adaptive, ResampleMethod::Collapse,
     ResampleMethod::Auto};
 
+// Every method at each (W, H, triangle target; 0: none).
+void addMethodRows(std::initializer_list<std::tuple<int, int, int>> sizes) {
+  QTest::addColumn<ResampleMethod>("method");
+  QTest::addColumn<int>("width");
+  QTest::addColumn<int>("height");
+  QTest::addColumn<int>("target");
+  for (const ResampleMethod m : kAllMethods)
+    for (const auto& [w, h, target] : sizes)
+      QTest::addRow("%s %dx%d target %d", std::string(methodName(m)).c_str(), w, h, target)
+          << m << w << h << target;
+}
+
 } // namespace
 
 class GridLodTest : public QObject {
@@ -118,15 +131,7 @@ private slots:
 };
 
 void GridLodTest::torusEveryMethod_data() {
-  QTest::addColumn<ResampleMethod>("method");
-  QTest::addColumn<int>("width");
-  QTest::addColumn<int>("height");
-  QTest::addColumn<int>("target");
-  for (const ResampleMethod m : kAllMethods)
-    for (const auto& [w, h, target] :
-         {std::tuple{128, 64, 0}, std::tuple{256, 32, 2000}, std::tuple{64, 256, 1500}})
-      QTest::addRow("%s %dx%d target %d", std::string(methodName(m)).c_str(), w, h, target)
-          << m << w << h << target;
+  addMethodRows({{128, 64, 0}, {256, 32, 2000}, {64, 256, 1500}});
 }
 
 // A thin and a tall ring with a bump off centre: the mesh is a closed torus whatever the method,
@@ -162,15 +167,7 @@ void GridLodTest::torusEveryMethod() {
 }
 
 void GridLodTest::sheetEveryMethod_data() {
-  QTest::addColumn<ResampleMethod>("method");
-  QTest::addColumn<int>("width");
-  QTest::addColumn<int>("height");
-  QTest::addColumn<int>("target");
-  for (const ResampleMethod m : kAllMethods)
-    for (const auto& [w, h, target] :
-         {std::tuple{128, 64, 0}, std::tuple{64, 64, 600}, std::tuple{256, 16, 900}})
-      QTest::addRow("%s %dx%d target %d", std::string(methodName(m)).c_str(), w, h, target)
-          << m << w << h << target;
+  addMethodRows({{128, 64, 0}, {64, 64, 600}, {256, 16, 900}});
 }
 
 // A sheet with a bump inside: one boundary loop whose vertices stay on the rectangle's outline.
