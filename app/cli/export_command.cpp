@@ -211,12 +211,6 @@ Command addExportCommand(CLI::App& app) {
                           .object()
                           .document);
         const int n = longerSide(document.positions);
-        // A torus or plane exports its full image as PLY, STL or OFF; textured OBJ and GLB
-        // through its LOD (--triangles: the LOD's own corner coordinates and normal map).
-        if (document.positions.topology() != core::Topology::Octahedral && !collapse &&
-            kind != ExportKind::Plain)
-          core::requireOctahedral(document.positions, "textured .obj and .glb export",
-                                  opt->input + " (export .ply, .stl or .off, or add --triangles)");
         if (collapse && document.positions.topology() == core::Topology::Octahedral && n < 4)
           throw core::Error(core::ErrorKind::InvalidArgument,
                             "--triangles needs a document of N = 4 or more: this one is N = " +
@@ -239,25 +233,39 @@ Command addExportCommand(CLI::App& app) {
                                  opt->normalMap, opt->json);
         }
         // vertices and triangles describe the surface (welded, as info counts them); the OBJ
-        // writes each once (its seams split only `vt`), the GLB stores (M+1)^2 samples, seam
-        // samples twice with their own texture coordinates.
-        const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
-        std::size_t vertices = mm + 2, triangles = 2 * mm, fileVertices = vertices;
+        // writes each once (its seams split only `vt`), the GLB stores (Mw+1)(Mh+1) samples,
+        // seam samples twice with their own texture coordinates.
+        const int step = n / m;
+        const core::SampleGrid& grid = document.positions.grid();
+        const auto mw = static_cast<std::size_t>(grid.width / step);
+        const auto mh = static_cast<std::size_t>(grid.height / step);
+        const std::size_t least = grid.topology == core::Topology::Torus ? core::kMinTorusSize : 1;
+        if (std::min(mw, mh) < least)
+          throw core::Error(core::ErrorKind::InvalidArgument,
+                            "--lod " + std::to_string(m) + " leaves this " +
+                                std::string(core::topologyName(grid.topology)) + " of " +
+                                std::to_string(grid.width) + " x " + std::to_string(grid.height) +
+                                " cells " + std::to_string(mw) + " x " + std::to_string(mh) +
+                                "; it needs at least " + std::to_string(least) +
+                                " cells each way: use a larger --lod");
+        std::size_t vertices = static_cast<std::size_t>(core::vertexCount(
+                        grid.topology, static_cast<int>(mw), static_cast<int>(mh))),
+                    triangles = 2 * mw * mh, fileVertices = vertices;
         core::OutputSet set;
         std::vector<std::string> files;
         switch (kind) {
         case ExportKind::TexturedObj:
-          core::stageTexturedObj(document, n / m, opt->output, set);
+          core::stageTexturedObj(document, step, opt->output, set);
           for (const std::filesystem::path& path : core::texturedObjFiles(opt->output))
             files.push_back(path.string());
           break;
         case ExportKind::Glb:
-          core::stageGlb(document, n / m, opt->output, set);
+          core::stageGlb(document, step, opt->output, set);
           files.push_back(opt->output);
-          fileVertices = static_cast<std::size_t>(m + 1) * static_cast<std::size_t>(m + 1);
+          fileVertices = (mw + 1) * (mh + 1);
           break;
         case ExportKind::Plain: {
-          const core::TriangleMesh mesh = core::extractMesh(document.positions, n / m);
+          const core::TriangleMesh mesh = core::extractMesh(document.positions, step);
           core::stageMesh(mesh, opt->output, set);
           files.push_back(opt->output);
           vertices = fileVertices = mesh.positions.size();

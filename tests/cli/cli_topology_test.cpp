@@ -55,7 +55,7 @@ private slots:
     }
   }
 
-  void exportWritesPlainMeshesAndRefusesTheRest() {
+  void exportWritesEveryFormatAndRefusesTheRest() {
     RUN_JSON(made, "new", "--shape", "torus", "--size", "32", "-o", file("t.exr"), "--json");
     RUN_JSON(ply, "export", file("t.exr"), "-o", file("t.ply"), "--json");
     QCOMPARE(ply["vertices"].toInt(), 32 * 16);
@@ -63,8 +63,25 @@ private slots:
     RUN_JSON(plane, "new", "--shape", "plane", "--size", "16", "-o", file("p.exr"), "--json");
     RUN_JSON(off, "export", file("p.exr"), "-o", file("p.off"), "--json");
     QCOMPARE(off["vertices"].toInt(), 17 * 17);
-    EXPECT_FAILURE(kUsage, file("t.obj"), "export", file("t.exr"), "-o", file("t.obj"));
-    EXPECT_FAILURE(kUsage, file("t.glb"), "export", file("t.exr"), "-o", file("t.glb"));
+    // Textured OBJ and GLB of the full image and of a level: the torus's own vertex count.
+    RUN_JSON(obj, "export", file("t.exr"), "-o", file("t.obj"), "--json");
+    QCOMPARE(obj["vertices"].toInt(), 32 * 16);
+    QCOMPARE(obj["files"].toArray().size(), 6);
+    RUN_JSON(glb, "export", file("t.exr"), "--lod", "16", "-o", file("t.glb"), "--json");
+    QCOMPARE(glb["vertices"].toInt(), 16 * 8);
+    QCOMPARE(glb["file_vertices"].toInt(), 17 * 9);
+    RUN_JSON(planeObj, "export", file("p.exr"), "-o", file("p.obj"), "--json");
+    QCOMPARE(planeObj["vertices"].toInt(), 17 * 17);
+    // A level leaving fewer than 4 cells around the tube is refused by name, nothing written.
+    const Result coarse = runCli({"export", file("t.exr"), "--lod", "4", "-o", file("t4.obj")});
+    QVERIFY2(coarse.exitCode == kUsage && coarse.err.contains("--lod 4"), qPrintable(coarse.err));
+    QVERIFY(!QFileInfo::exists(file("t4.obj")));
+    // A scene of a ball and the torus exports as two GLB nodes (this crashed before).
+    RUN_JSON(scene, "add", file("t.exr"), "--shape", "sphere", "--size", "16", "--translate",
+             "2,0,0", "-o", file("scene.exr"), "--json");
+    RUN_JSON(sceneGlb, "export", file("scene.exr"), "-o", file("scene.glb"), "--json");
+    QCOMPARE(sceneGlb["objects"].toInt(), 2);
+    QVERIFY(QFileInfo(file("scene.glb")).size() > 1000);
     // Commands still written for the ball alone say so by name (exit 2), and write nothing.
     for (const QStringList& args : {QStringList{"remesh", file("t.exr"), "-o", file("t3.exr")}}) {
       const Result r = runCli(args);

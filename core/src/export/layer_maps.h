@@ -1,8 +1,8 @@
 #pragma once
 
-// The painted layers as the exports' maps: (N+1)² pixels each for the full-resolution export
-// (texel (x, y) = layer sample (x, y), top row first), or resampled over image coordinates for
-// the LOD export, whose texture coordinates are those of its normal map.
+// The painted layers as the exports' maps: (W+1)×(H+1) pixels each for the full-resolution
+// export (texel (x, y) = layer sample (x, y), top row first), or resampled over image coordinates
+// for the LOD export, whose texture coordinates are those of its normal map.
 
 #include "octaclay/core/document/document.h"
 #include "octaclay/core/document/image_io.h"
@@ -23,8 +23,9 @@ RasterImage metallicRoughnessMap(const Document& doc);
 
 /// The same maps at resolution² texels over image coordinates, as a baked NormalMap's: texel
 /// (x, y) holds the layer at image position ((x + 0.5) / resolution, (y + 0.5) / resolution),
-/// that is at sample ((x + 0.5)·N / resolution, …), bilinear between the four samples around it.
-/// Throws Error(InvalidArgument) when a layer's texel count disagrees with N.
+/// that is at sample ((x + 0.5)·W / resolution, (y + 0.5)·H / resolution), bilinear between the
+/// four samples around it. Throws Error(InvalidArgument) when a layer's texel count disagrees
+/// with the image.
 RasterImage diffuseMap(const Document& doc, int resolution);
 RasterImage featureMap(const Document& doc, int channel, int resolution);
 RasterImage metallicRoughnessMap(const Document& doc, int resolution);

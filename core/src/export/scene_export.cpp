@@ -1,9 +1,9 @@
 #include "octaclay/core/export/scene_export.h"
 
+#include "export/export_grid.h"
 #include "export/glb_writer.h"
 #include "export/layer_maps.h"
 #include "export/obj_writer.h"
-#include "export/sample_grid.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/image_io.h"
@@ -47,7 +47,7 @@ double determinant(const std::array<double, 9>& m) {
 // Per object: the grid and maps as writeGlb makes them for one document, kept alive until the
 // file is staged (the GLB mesh holds spans into them).
 struct GlbObject {
-  detail::SampleGrid grid;
+  detail::ExportGrid grid;
   std::vector<Vec2f> texcoords;
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
@@ -61,9 +61,9 @@ void stageSceneGlb(const std::vector<const SceneObject*>& objects, const fs::pat
   double estimate = 0;
   for (const SceneObject* object : objects) {
     GlbObject& part = parts.emplace_back();
-    part.grid = detail::makeGrid(object->document, 1);
+    part.grid = detail::makeExportGrid(object->document, 1);
     part.texcoords = detail::gridTexcoords(part.grid, false);
-    part.triangles = detail::gridTriangles(part.grid.m);
+    part.triangles = detail::gridTriangles(part.grid);
     estimate += static_cast<double>(part.grid.vertexCount()) * (12 + 12 + 8) +
                 static_cast<double>(part.triangles.size()) * 3 * 4;
     if (estimate > static_cast<double>(std::numeric_limits<std::uint32_t>::max()) - (1 << 26))

@@ -5,16 +5,16 @@
 
 #include "octaclay/core/export/textured_export.h"
 
+#include "export/export_grid.h"
 #include "export/glb_writer.h"
 #include "export/layer_maps.h"
 #include "export/obj_writer.h"
-#include "export/sample_grid.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/document/image_io.h"
 #include "octaclay/core/error.h"
-#include "octaclay/core/geometry/vertex_index.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -28,31 +28,28 @@ using detail::metallicRoughnessMap;
 
 namespace {
 
-// The grid welded as extractMesh welds it: its vertices in VertexIndex's order, its triangles
-// through VertexIndex (the grid's own triangles then index the texture coordinates).
+// The grid welded as extractMesh welds it: its vertices in extractMesh's order, its triangles
+// through that numbering (the grid's own triangles then index the texture coordinates).
 struct WeldedGrid {
   std::vector<Vec3f> positions, normals;
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
-WeldedGrid weld(const detail::SampleGrid& grid,
+WeldedGrid weld(const detail::ExportGrid& grid,
                 const std::vector<std::array<std::uint32_t, 3>>& gridTriangles) {
-  const VertexIndex index(grid.n, grid.step);
-  const std::uint32_t side = static_cast<std::uint32_t>(grid.m + 1);
-  const auto welded = [&](std::uint32_t k) {
-    return index.at(static_cast<int>(k % side), static_cast<int>(k / side));
-  };
+  std::uint32_t count = 0;
+  const std::vector<std::uint32_t> welded = detail::weldedVertices(grid, count);
   WeldedGrid out;
-  out.positions.resize(index.vertexCount());
-  out.normals.resize(index.vertexCount());
+  out.positions.resize(count);
+  out.normals.resize(count);
   // Identified samples carry their canonical sample's position and normal, so any copy serves.
   for (std::uint32_t k = 0; k < grid.vertexCount(); ++k) {
-    out.positions[welded(k)] = grid.positions[k];
-    out.normals[welded(k)] = grid.normals[k];
+    out.positions[welded[k]] = grid.positions[k];
+    out.normals[welded[k]] = grid.normals[k];
   }
   out.triangles.reserve(gridTriangles.size());
   for (const auto& t : gridTriangles)
-    out.triangles.push_back({welded(t[0]), welded(t[1]), welded(t[2])});
+    out.triangles.push_back({welded[t[0]], welded[t[1]], welded[t[2]]});
   return out;
 }
 
@@ -85,21 +82,23 @@ std::vector<fs::path> texturedObjFiles(const fs::path& objPath) {
 }
 
 void stageTexturedObj(const Document& doc, int step, const fs::path& objPath, OutputSet& set) {
-  const detail::SampleGrid grid = detail::makeGrid(doc, step);
+  const detail::ExportGrid grid = detail::makeExportGrid(doc, step);
   const std::vector<fs::path> files = texturedObjFiles(objPath);
   if (objPath.filename() == files[1].filename())
     throw Error(ErrorKind::InvalidArgument,
                 "cannot export to " + objPath.string() + ": its material file has that name");
 
   const std::vector<Vec2f> texcoords = detail::gridTexcoords(grid, true);
-  const std::vector<std::array<std::uint32_t, 3>> uvTriangles = detail::gridTriangles(grid.m);
+  const std::vector<std::array<std::uint32_t, 3>> uvTriangles = detail::gridTriangles(grid);
   const WeldedGrid welded = weld(grid, uvTriangles);
   const detail::ObjMesh mesh{welded.positions, welded.normals, texcoords,
                              welded.triangles, uvTriangles,    {}};
   const detail::ObjHeader header{
-      "Octaclay textured export: M^2 + 2 vertices, (M+1)^2 texture coordinates, M = " +
-          std::to_string(static_cast<unsigned>(grid.m)) +
-          ", maps at (N+1)^2, N = " + std::to_string(static_cast<unsigned>(grid.n)),
+      "Octaclay textured export: " + std::to_string(welded.positions.size()) + " vertices, " +
+          std::to_string(texcoords.size()) + " texture coordinates, " +
+          std::string(topologyName(grid.image.topology)) + " of " + std::to_string(grid.mw) +
+          " x " + std::to_string(grid.mh) + " cells, maps at " +
+          std::to_string(grid.image.width + 1) + " x " + std::to_string(grid.image.height + 1),
       files[1].filename().string(), "octaclay"};
   const detail::ObjMap maps[] = {{files[2], encodePng(diffuseMap(doc))},
                                  {files[3], encodePng(featureMap(doc, 1))},
@@ -115,16 +114,16 @@ void writeTexturedObj(const Document& doc, int step, const fs::path& objPath) {
 }
 
 void stageGlb(const Document& doc, int step, const fs::path& glbPath, OutputSet& set) {
-  const detail::SampleGrid grid = detail::makeGrid(doc, step);
+  const detail::ExportGrid grid = detail::makeExportGrid(doc, step);
   const std::vector<Vec2f> texcoords = detail::gridTexcoords(grid, false);
-  const std::vector<std::array<std::uint32_t, 3>> triangles = detail::gridTriangles(grid.m);
+  const std::vector<std::array<std::uint32_t, 3>> triangles = detail::gridTriangles(grid);
 
   // Over glTF's limit the binary chunk's 32-bit length would wrap: refuse before building it.
   const double estimate = static_cast<double>(grid.vertexCount()) * (12 + 12 + 8) +
                           static_cast<double>(triangles.size()) * 3 * 4;
   if (estimate > static_cast<double>(std::numeric_limits<std::uint32_t>::max()) - (1 << 26))
     throw Error(ErrorKind::InvalidArgument,
-                "the glTF export at level " + std::to_string(grid.m) +
+                "the glTF export at level " + std::to_string(std::max(grid.mw, grid.mh)) +
                     " exceeds the 4 GiB a .glb can hold; export a coarser level");
 
   const detail::GlbMesh mesh{grid.positions, grid.normals, {}, texcoords, triangles};
