@@ -9,7 +9,8 @@
 namespace octaclay::app {
 namespace {
 
-// Calls visit(index) with the texel index ((N+1)², row-major) of every position the step changed.
+// Calls visit(index) with the texel index ((W+1)×(H+1), row-major) of every position the step
+// changed.
 template <typename Visit>
 void forEachChangedPosition(const core::EditStep& step, std::size_t side, Visit&& visit) {
   for (const core::TileChange& t : step.tiles) {
@@ -26,10 +27,10 @@ void forEachChangedPosition(const core::EditStep& step, std::size_t side, Visit&
   }
 }
 
-// The samples a stroke changed in the positions, to the texel ((N+1)², row-major): the
+// The samples a stroke changed in the positions, to the texel ((W+1)×(H+1), row-major): the
 // relaxation after it reaches keepDetailMargin samples beyond them and no farther.
-std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side) {
-  std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
+std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side, int rows) {
+  std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(rows),
                                     0);
   bool any = false;
   forEachChangedPosition(record, static_cast<std::size_t>(side), [&](std::size_t index) {
@@ -43,22 +44,24 @@ std::vector<std::uint8_t> changedSamples(const core::EditStep& record, int side)
 // Keep-detail's first relaxation during a dragging stroke (snake hook), after this many dabs.
 constexpr int kFirstRelaxationDab = 4;
 
-core::RelaxOptions pinOptions(const std::vector<std::array<float, 2>>& pinnedPath, int n) {
+core::RelaxOptions pinOptions(const std::vector<std::array<float, 2>>& pinnedPath,
+                              const core::GeometryImage& image) {
   core::RelaxOptions options;
   for (const auto& uv : pinnedPath)
-    options.pinned.push_back({static_cast<int>(std::lround(uv[0] * static_cast<float>(n))),
-                              static_cast<int>(std::lround(uv[1] * static_cast<float>(n)))});
+    options.pinned.push_back(
+        {static_cast<int>(std::lround(uv[0] * static_cast<float>(image.width()))),
+         static_cast<int>(std::lround(uv[1] * static_cast<float>(image.height())))});
   return options;
 }
 
-// Adds to dabChanged ((N+1)², allocated on first use) the samples the dabs changed: those
+// Adds to dabChanged ((W+1)×(H+1), allocated on first use) the samples the dabs changed: those
 // `soFar` (the stroke's record so far) changed, except where a relaxation left them (`relaxed`)
 // and no dab moved them since. Returns whether any is marked.
 bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
                    const std::unordered_map<std::size_t, core::Vec4f>& relaxed,
                    const core::EditStep& soFar, const core::GeometryImage& positions) {
-  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
-  if (dabChanged.empty()) dabChanged.assign(side * side, 0);
+  const std::size_t side = static_cast<std::size_t>(positions.side());
+  if (dabChanged.empty()) dabChanged.assign(side * static_cast<std::size_t>(positions.rows()), 0);
   forEachChangedPosition(soFar, side, [&](std::size_t index) {
     if (dabChanged[index]) return;
     const auto left = relaxed.find(index);
@@ -71,8 +74,7 @@ bool addDabChanges(std::vector<std::uint8_t>& dabChanged,
 // Notes where `step` (a relaxation, applied) left the positions it changed.
 void noteRelaxed(std::unordered_map<std::size_t, core::Vec4f>& relaxed, const core::EditStep& step,
                  const core::GeometryImage& positions) {
-  const std::size_t side = static_cast<std::size_t>(positions.size()) + 1;
-  const std::vector<std::uint8_t> moved = changedSamples(step, static_cast<int>(side));
+  const std::vector<std::uint8_t> moved = changedSamples(step, positions.side(), positions.rows());
   for (std::size_t k = 0; k < moved.size(); ++k)
     if (moved[k]) relaxed[k] = positions.texels()[k];
 }
@@ -97,7 +99,7 @@ core::EditStep relaxDabsSoFar(KeepDetailRun& run, const core::Document& mirror,
   if (!addDabChanges(run.dabChanged, run.relaxed, soFar, mirror.positions)) return {};
   return core::relaxChangedStep(mirror, run.dabChanged,
                                 core::keepDetailMargin(mirror.positions, radius), label,
-                                pinOptions(run.pinnedPath, mirror.size()));
+                                pinOptions(run.pinnedPath, mirror.positions));
 }
 
 } // namespace octaclay::app

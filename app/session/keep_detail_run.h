@@ -18,7 +18,7 @@ namespace octaclay::app {
 struct KeepDetailRun {
   std::vector<std::array<float, 2>> pinnedPath; ///< image points held: the stroke's first, last
   int relaxedAt = 0; ///< the dab count at the last relaxation between dabs
-  /// The samples the dabs changed so far ((N+1)²; empty: none known yet): what each relaxation
+  /// The samples the dabs changed so far ((W+1)×(H+1); empty: none known yet): what each relaxation
   /// grows its region from. What relaxations moved is not in it (the region would creep outward
   /// by a margin each time) unless a dab changed it again.
   std::vector<std::uint8_t> dabChanged;

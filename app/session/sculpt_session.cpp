@@ -121,9 +121,7 @@ void SculptSession::beginStroke(const StrokeStart& start) {
   if (start.brushId == settings.brushId) s.parameters = settings.parameters;
   s.viewEye = start.eye; // splats project from here, drags move across its view
   stroke->stroke = std::make_unique<gpu::StrokeSession>(*engine_, *document_, stroke->manifest, s);
-  // Keep detail's relaxation (core/relax) works in the ball's octahedral domain: a torus or
-  // plane keeps the samples where the brush put them.
-  keepDetail_ = settings.keepDetail && document_->topology() == core::Topology::Octahedral;
+  keepDetail_ = settings.keepDetail; // every topology (core/relax: the ball's and the grids')
   // After each dab: keep detail's relaxation as a dragging stroke goes, then the caller's
   // progress. The viewport's and the CLI's strokes both come through here.
   stroke->stroke->observeDabs([this, active = stroke.get()](int dabs) {

@@ -240,9 +240,10 @@ void TopologyObjectsRenderTest::aTorusIsAddedDrawnAndSculptedAcrossItsWrap() {
     for (int i = w / 4; i < 3 * w / 4; ++i)
       QVERIFY2(sameBits(after.at(i, j), before.at(i, j)),
                qPrintable(QString("sample (%1, %2) moved").arg(i).arg(j)));
-  // The pixels changed (more than 24 steps) around the stroke's path and nowhere else.
+  // The pixels changed (more than 24 steps) around the stroke's path and nowhere else: within
+  // the brush and keep detail's reach beyond it (its relaxation resamples the facets there).
   const QImage sculpted = frame(*view);
-  const QRect around = QRect(from, to).normalized().adjusted(-40, -40, 40, 40);
+  const QRect around = QRect(from, to).normalized().adjusted(-80, -80, 80, 80);
   const auto [inside, outside] = changedPixels(shown, sculpted, around, 24);
   QVERIFY2(
       inside > 20 && outside == 0,

@@ -28,16 +28,18 @@ bool meets(TexelRect a, const std::vector<TexelRect>& rects) {
 
 EditStep recordDifference(const Document& before, const Document& after, std::string label,
                           const std::vector<TexelRect>& within) {
-  if (before.size() != after.size())
+  if (!(before.positions.grid() == after.positions.grid()))
     throw Error(ErrorKind::InvalidArgument, "recordDifference: the documents differ in size");
-  const int side = before.size() + 1;
-  EditStepRecorder recorder(side);
-  const int tiles = EditStepRecorder::tilesPerSide(side);
+  // A torus's or plane's W × H image: (W+1) texels a row, (H+1) rows.
+  const int side = before.positions.side(), rows = before.positions.rows();
+  EditStepRecorder recorder(side, rows);
+  const int tilesX = EditStepRecorder::tilesPerSide(side),
+            tilesY = EditStepRecorder::tilesPerSide(rows);
   for (EditLayer layer : kLayers) {
     if (layer == EditLayer::Mask && !before.hasMask && !after.hasMask) continue;
-    for (int ty = 0; ty < tiles; ++ty)
-      for (int tx = 0; tx < tiles; ++tx) {
-        const TexelRect r = EditStepRecorder::tileRegion(side, tx, ty);
+    for (int ty = 0; ty < tilesY; ++ty)
+      for (int tx = 0; tx < tilesX; ++tx) {
+        const TexelRect r = EditStepRecorder::tileRegion(side, rows, tx, ty);
         if (!meets(r, within)) continue;
         const std::vector<float> b = detail::tileTexels(before, layer, r),
                                  a = detail::tileTexels(after, layer, r);
@@ -50,17 +52,17 @@ EditStep recordDifference(const Document& before, const Document& after, std::st
 
 EditStep combineSteps(const EditStep& first, const EditStep& second, const Document& current,
                       std::string label) {
-  const int side = current.size() + 1;
+  const int side = current.positions.side(), rows = current.positions.rows();
   // Per (layer, tile): the change in each step, if any.
   std::map<std::array<int, 3>, std::pair<const TileChange*, const TileChange*>> tiles;
   for (const TileChange& t : first.tiles)
     tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].first = &t;
   for (const TileChange& t : second.tiles)
     tiles[{static_cast<int>(t.layer), t.tileY, t.tileX}].second = &t;
-  EditStepRecorder recorder(side);
+  EditStepRecorder recorder(side, rows);
   for (const auto& [key, changes] : tiles) {
     const EditLayer layer = static_cast<EditLayer>(key[0]);
-    const TexelRect r = EditStepRecorder::tileRegion(side, key[2], key[1]);
+    const TexelRect r = EditStepRecorder::tileRegion(side, rows, key[2], key[1]);
     const std::vector<float> after = detail::tileTexels(current, layer, r);
     std::vector<float> before = after;
     if (changes.second) changes.second->patch(TileState::Before, before);

@@ -17,15 +17,15 @@ using detail::texelArea;
 
 namespace {
 
-// Checks that region lies inside a side × side image and texels holds it with `channels` floats
-// per texel.
-void checkRegion(TexelRect region, int side, int channels, std::size_t floats) {
+// Checks that region lies inside an image of side texels a row and `rows` rows (a torus's or
+// plane's W+1 × H+1) and texels holds it with `channels` floats per texel.
+void checkRegion(TexelRect region, int side, int rows, int channels, std::size_t floats) {
   if (region.width <= 0 || region.height <= 0 || region.x < 0 || region.y < 0 ||
-      region.x > side - region.width || region.y > side - region.height)
+      region.x > side - region.width || region.y > rows - region.height)
     invalidEdit("edit history: region (" + std::to_string(region.x) + ", " +
                 std::to_string(region.y) + ") " + std::to_string(region.width) + "x" +
                 std::to_string(region.height) + " is outside the " + std::to_string(side) + "x" +
-                std::to_string(side) +
+                std::to_string(rows) +
                 " image; apply strokes only to the image they were recorded on");
   if (floats != texelArea(region) * static_cast<std::size_t>(channels))
     invalidEdit("edit history: " + std::to_string(floats) + " floats given for a region of " +
@@ -33,7 +33,7 @@ void checkRegion(TexelRect region, int side, int channels, std::size_t floats) {
                 " channels");
 }
 
-// Copies a row-major region of texels into a row-major side × side image of `channels` floats
+// Copies a row-major region of texels into a row-major image side texels wide of `channels` floats
 // per texel, bits as they are.
 void writeRegion(float* image, int side, int channels, TexelRect region,
                  std::span<const float> texels) {
@@ -56,7 +56,7 @@ TileApplier applierFor(GeometryImage& image) {
     if (layer != EditLayer::Positions)
       invalidEdit(std::string("applierFor(GeometryImage&): cannot write the ") +
                   editLayerName(layer) + " layer into a position image; use applierFor(Document&)");
-    checkRegion(region, image.side(), 4, texels.size());
+    checkRegion(region, image.side(), image.rows(), 4, texels.size());
     static_assert(sizeof(Vec4f) == 4 * sizeof(float));
     writeRegion(reinterpret_cast<float*>(image.texels().data()), image.side(), 4, region, texels);
   };
@@ -71,13 +71,13 @@ TileApplier applierFor(Document& doc) {
     Layer& target = layer == EditLayer::Diffuse   ? doc.diffuse
                     : layer == EditLayer::Feature ? doc.feature
                                                   : doc.mask;
-    const int side = doc.positions.side();
+    const int side = doc.positions.side(), rows = doc.positions.rows();
     const int c = editLayerChannels(layer);
     if (target.channels != c)
       invalidEdit("applierFor(Document&): the document's " + target.name + " layer has " +
                   std::to_string(target.channels) + " channels, the edit " + std::to_string(c));
-    checkRegion(region, side, c, texels.size());
-    const std::size_t texelCount = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+    checkRegion(region, side, rows, c, texels.size());
+    const std::size_t texelCount = static_cast<std::size_t>(side) * static_cast<std::size_t>(rows);
     if (target.uniform()) {
       target.texels.resize(texelCount * static_cast<std::size_t>(c));
       for (std::size_t t = 0; t < texelCount; ++t)

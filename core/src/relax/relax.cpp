@@ -5,6 +5,7 @@
 #include "document/tile_texels.h"
 #include "relax/even_out_steps.h"
 #include "relax/grid_even_out.h"
+#include "relax/grid_keep_detail.h"
 #include "relax/offset_field.h"
 #include "relax/sample_masks.h"
 
@@ -45,12 +46,6 @@ int fineIterations(const RelaxOptions& options) {
   return options.iterations > 0 ? options.iterations : 1;
 }
 
-TexelRect clipped(TexelRect r, int n) {
-  const int x0 = std::max(r.x, 0), y0 = std::max(r.y, 0);
-  const int x1 = std::min(r.x + r.width, n + 1), y1 = std::min(r.y + r.height, n + 1);
-  return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
-}
-
 // An edge longer than kStretchedEdge times the surface's median edge is stretched. Samples are
 // taken from the surface around it only while its edges stay within a multiple of the median
 // (the even-out's, and keep-detail's, whose reservoir is bounded and pinned at its rim): the
@@ -74,13 +69,13 @@ float edgeLength(const GeometryImage& image, int i, int j, int di, int dj) {
 // The median grid edge, from every 8th row and column (a fraction of the work, the same figure
 // within a few percent).
 float medianEdge(const GeometryImage& image) {
-  const int n = image.size();
+  const int w = image.width(), h = image.height();
   std::vector<float> edges;
-  for (int j = 0; j <= n; j += 8)
-    for (int i = 0; i < n; ++i)
+  for (int j = 0; j <= h; j += 8)
+    for (int i = 0; i < w; ++i)
       edges.push_back(edgeLength(image, i, j, 1, 0));
-  for (int i = 0; i <= n; i += 8)
-    for (int j = 0; j < n; ++j)
+  for (int i = 0; i <= w; i += 8)
+    for (int j = 0; j < h; ++j)
       edges.push_back(edgeLength(image, i, j, 0, 1));
   std::nth_element(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2),
                    edges.end());
@@ -89,10 +84,9 @@ float medianEdge(const GeometryImage& image) {
 
 // The bounding box's diagonal, from every 4th sample.
 float diagonal(const GeometryImage& image) {
-  const int n = image.size();
   Vec3f lo = image.at(0, 0).xyz(), hi = lo;
-  for (int j = 0; j <= n; j += 4)
-    for (int i = 0; i <= n; i += 4) {
+  for (int j = 0; j <= image.height(); j += 4)
+    for (int i = 0; i <= image.width(); i += 4) {
       const Vec3f p = image.at(i, j).xyz();
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
@@ -591,18 +585,23 @@ int keepDetailMargin(const GeometryImage& image, double radius) {
   const double median = medianEdge(image);
   const double margin = median > 0 ? std::ceil(kKeepDetailMarginRadii * radius / median) : 0.0;
   // At most the image's whole side: past it the region holds every sample anyway.
-  return static_cast<int>(std::clamp(margin, double(kKeepDetailMinMargin), double(image.size())));
+  return static_cast<int>(std::clamp(margin, double(kKeepDetailMinMargin),
+                                     double(std::max(image.width(), image.height()))));
 }
 
 EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
                           int margin, std::string label, const RelaxOptions& options) {
   checkOptions(options);
-  // Keep detail's local flow is the ball's (a torus or plane stroke keeps its samples).
-  requireOctahedral(document.positions, "keep detail's relaxation", "this document");
   if (margin < 0)
     throw Error(ErrorKind::InvalidArgument,
                 "a relaxation margin must be 0 or more samples, not " + std::to_string(margin));
   checkPositions(document.positions);
+  if (document.positions.topology() != Topology::Octahedral) {
+    const float median = medianEdge(document.positions);
+    return detail::gridRelaxChangedStep(
+        document, changed, margin, std::move(label), options,
+        {stretchedEdgeLimit(document.positions, median), diagonal(document.positions), median});
+  }
   const int n = document.size(), side = n + 1;
   if (changed.size() != static_cast<std::size_t>(side) * static_cast<std::size_t>(side))
     throw Error(ErrorKind::InvalidArgument, "the changed samples must cover the (N+1)² image");
@@ -701,15 +700,16 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
 
 EditStep relaxRegionsStep(const Document& document, const std::vector<TexelRect>& regions,
                           int margin, std::string label, const RelaxOptions& options) {
-  requireOctahedral(document.positions, "keep detail's relaxation", "this document");
-  const int n = document.size();
-  std::vector<std::uint8_t> changed(
-      static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1), 0);
+  const int side = document.positions.side(), rows = document.positions.rows();
+  std::vector<std::uint8_t> changed(static_cast<std::size_t>(side) * static_cast<std::size_t>(rows),
+                                    0);
   for (const TexelRect& region : regions) {
-    const TexelRect r = clipped(region, n);
-    for (int j = r.y; j < r.y + r.height; ++j)
-      for (int i = r.x; i < r.x + r.width; ++i)
-        changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
+    const int x0 = std::max(region.x, 0), y0 = std::max(region.y, 0);
+    const int x1 = std::min(region.x + region.width, side),
+              y1 = std::min(region.y + region.height, rows);
+    for (int j = y0; j < y1; ++j)
+      for (int i = x0; i < x1; ++i)
+        changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
                 static_cast<std::size_t>(i)] = 1;
   }
   return relaxChangedStep(document, changed, margin, std::move(label), options);

@@ -91,6 +91,8 @@ int keepDetailMargin(const GeometryImage& image, double radius);
 
 /// The local relaxation behind "keep detail": the same flow around what a stroke changed.
 /// `changed` marks the changed samples, (N+1)² row-major (a border sample and its copies alike).
+/// A torus or plane ((W+1)×(H+1) samples) goes to its own flow and check
+/// (core/src/relax/grid_keep_detail.h); what follows is the ball's.
 /// Nothing happens unless one of their grid edges is stretched (over twice the surface's median
 /// edge; from 1.5 times at coarse N). Then the samples within `margin` samples of a changed one
 /// (Chebyshev distance on the tiled plane, so across the seams) move (pins and the four side

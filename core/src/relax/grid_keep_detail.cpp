@@ -1,0 +1,430 @@
+// Keep detail on a torus or plane (grid_keep_detail.h): Even Out's sweeps over the samples
+// around what a stroke changed, checked against the old surface at the same parameter points.
+#include "relax/grid_keep_detail.h"
+
+#include "detail/aabb_tree.h"
+#include "document/tile_texels.h"
+#include "relax/parameter_field.h"
+
+#include "octaclay/core/error.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace octaclay::core::detail {
+namespace {
+
+// Sweeps per lattice level and iteration (Even Out's).
+constexpr int kSweepsPerLevel = 100;
+// The coarsest lattice's stride: at most this, and a quarter of the margin (the freed region
+// then spans eight lattice cells or more across).
+constexpr int kMaxStride = 16;
+// How far the relaxation may move the surface, as fractions of the diagonal (the ball's).
+constexpr double kRmsTolerance = 1e-4;
+constexpr double kHausdorffTolerance = 1e-3;
+// The check's points: a triangle's at 1/k of its barycentric coordinates, k = 3 for a triangle
+// of the surface's usual size and twice its longest edge in median edges for a stretched one (at
+// most kMostDivisions): the distances vary along a long facet.
+constexpr int kMostDivisions = 16;
+// The share of each tolerance the check's points may use: between them a denser measure finds a
+// little more (a 1.3 × bound with four points a triangle once).
+constexpr double kCheckedShare = 0.8;
+// How many times the flow is solved again with the samples where its move cut too deep held.
+constexpr int kHoldAttempts = 2;
+
+Sample canonicalSample(const ParameterField& f, int i, int j) {
+  const auto [ci, cj] = f.canonicalOf(i, j);
+  return {ci, cj};
+}
+
+// Marks each lattice sample within `margin` of a marked one along its row (axis 0) or column
+// (axis 1): through a torus's period, clamped on a sheet.
+void dilate(const ParameterField& f, std::vector<std::uint8_t>& mask, int margin, int axis) {
+  const int length = axis == 0 ? f.columns : f.rows, lines = axis == 0 ? f.rows : f.columns;
+  const auto at = [&](int line, int k) -> std::uint8_t& {
+    return axis == 0 ? mask[f.index(k, line)] : mask[f.index(line, k)];
+  };
+  std::vector<int> prefix(static_cast<std::size_t>(length) + 1);
+  for (int line = 0; line < lines; ++line) {
+    for (int k = 0; k < length; ++k)
+      prefix[static_cast<std::size_t>(k) + 1] = prefix[static_cast<std::size_t>(k)] + at(line, k);
+    const auto count = [&](int a, int b) { // marked in [a, b], 0 <= a, b < length
+      return a > b ? 0
+                   : prefix[static_cast<std::size_t>(b) + 1] - prefix[static_cast<std::size_t>(a)];
+    };
+    const int total = count(0, length - 1);
+    for (int k = 0; k < length; ++k) {
+      int marked = 0;
+      if (!f.torus())
+        marked = count(std::max(0, k - margin), std::min(length - 1, k + margin));
+      else if (2 * margin + 1 >= length)
+        marked = total;
+      else if (k - margin < 0)
+        marked = count(0, k + margin) + count(length + k - margin, length - 1);
+      else if (k + margin >= length)
+        marked = count(k - margin, length - 1) + count(0, k + margin - length);
+      else
+        marked = count(k - margin, k + margin);
+      at(line, k) = marked > 0 ? 1 : 0;
+    }
+  }
+}
+
+// The full-resolution lattice's samples that may move: within margin of a changed one, pins
+// excepted.
+std::vector<std::uint8_t> freedSamples(const ParameterField& f,
+                                       const std::vector<std::uint8_t>& changed, int margin,
+                                       const std::vector<Sample>& pinned) {
+  std::vector<std::uint8_t> free(f.offset.size(), 0);
+  const int side = f.grid.width + 1;
+  for (int j = 0; j <= f.grid.height; ++j)
+    for (int i = 0; i <= f.grid.width; ++i)
+      if (changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                  static_cast<std::size_t>(i)]) {
+        const Sample c = canonicalSample(f, i, j);
+        free[f.index(c.i, c.j)] = 1;
+      }
+  dilate(f, free, margin, 0);
+  dilate(f, free, margin, 1);
+  for (const Sample s : pinned) {
+    const Sample c = canonicalSample(f, s.i, s.j);
+    free[f.index(c.i, c.j)] = 0;
+  }
+  return free;
+}
+
+// The lattice of every stride-th sample: free where its full-resolution sample is.
+std::vector<std::uint8_t> freeAtStride(const ParameterField& fine, const ParameterField& lattice,
+                                       const std::vector<std::uint8_t>& free) {
+  std::vector<std::uint8_t> out(lattice.offset.size(), 0);
+  for (int j = 0; j < lattice.rows; ++j)
+    for (int i = 0; i < lattice.columns; ++i)
+      out[lattice.index(i, j)] = free[fine.index(i * lattice.stride, j * lattice.stride)];
+  return out;
+}
+
+// The freed samples' offsets, coarse to fine from a lattice of every stride-th sample: each
+// level gets (stride)² times the finest level's sweeps (up to 64 times; a level then costs about
+// what the finest does), so samples travel across the freed region.
+ParameterField solveFreed(const GeometryImage& image, const std::vector<std::uint8_t>& free,
+                          int margin, int sweeps) {
+  const SampleGrid& grid = image.grid();
+  const int least = grid.topology == Topology::Torus ? kMinTorusSize : 2;
+  int stride = 1;
+  while (2 * stride <= kMaxStride && 4 * (2 * stride) <= margin &&
+         std::min(grid.width, grid.height) / (2 * stride) >= least)
+    stride *= 2;
+  const ParameterField full = emptyField(grid, 1);
+  ParameterField field = emptyField(grid, stride);
+  field.free = freeAtStride(full, field, free);
+  for (;;) {
+    sweepLevel(image, field, sweeps * field.stride, {});
+    if (field.stride == 1) return field;
+    ParameterField next = emptyField(grid, field.stride / 2);
+    field = finer(field, freeAtStride(full, next, free));
+  }
+}
+
+struct Moved {
+  double rms = 0, hausdorff = 0;        // fractions of the diagonal
+  float longestOld = 0, longestNew = 0; // the moved cells' longest edge before and after
+};
+
+float longestEdge(const TriangleMesh& mesh, std::size_t triangles) {
+  float longest = 0;
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, length(mesh.positions[tri[std::size_t(k)]] -
+                                         mesh.positions[tri[std::size_t((k + 1) % 3)]]));
+  }
+  return longest;
+}
+
+using Cells = std::vector<std::array<int, 2>>;
+
+// The two triangles of each cell, split along its anti-diagonal as the grid's, with the corner
+// positions corner(i, j) gives.
+template <class Corner> TriangleMesh cellTriangles(const Cells& cells, Corner&& corner) {
+  TriangleMesh mesh;
+  mesh.positions.reserve(cells.size() * 4);
+  mesh.triangles.reserve(cells.size() * 2);
+  for (const auto& [i, j] : cells) {
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}})
+      mesh.positions.push_back(corner(a, b));
+    mesh.triangles.push_back({base, base + 1, base + 3});
+    mesh.triangles.push_back({base + 1, base + 2, base + 3});
+  }
+  return mesh;
+}
+
+void append(TriangleMesh& to, const TriangleMesh& from) {
+  const auto base = static_cast<std::uint32_t>(to.positions.size());
+  to.positions.insert(to.positions.end(), from.positions.begin(), from.positions.end());
+  for (const auto& t : from.triangles)
+    to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+// The cells within two cells of a moved one, the moved ones excepted: where the old surface's
+// closest points to the moved cells lie, and what the new surface shares with the old there.
+Cells ringAround(const ParameterField& f, const Cells& moved) {
+  std::vector<std::uint8_t> mark(
+      static_cast<std::size_t>(f.cellsWide) * static_cast<std::size_t>(f.cellsHigh), 0);
+  const auto at = [&](int i, int j) -> std::uint8_t& {
+    return mark[static_cast<std::size_t>(j) * static_cast<std::size_t>(f.cellsWide) +
+                static_cast<std::size_t>(i)];
+  };
+  for (const auto& [i, j] : moved)
+    at(i, j) = 2;
+  for (const auto& [i, j] : moved)
+    for (int dj = -2; dj <= 2; ++dj)
+      for (int di = -2; di <= 2; ++di) {
+        int a = i + di, b = j + dj;
+        if (f.torus()) {
+          a = (a + f.cellsWide) % f.cellsWide;
+          b = (b + f.cellsHigh) % f.cellsHigh;
+        } else if (a < 0 || b < 0 || a >= f.cellsWide || b >= f.cellsHigh) {
+          continue;
+        }
+        if (at(a, b) == 0) at(a, b) = 1;
+      }
+  Cells ring;
+  for (int j = 0; j < f.cellsHigh; ++j)
+    for (int i = 0; i < f.cellsWide; ++i)
+      if (at(i, j) == 1) ring.push_back({i, j});
+  return ring;
+}
+
+// The farthest and the area-weighted RMS distance from the check points of `from`'s first
+// `triangles` triangles (with or without their corners) to the surface `to`; each triangle's
+// farthest squared distance into far[t] when far is given.
+void farthestFrom(const TriangleMesh& from, std::size_t triangles, const AabbTree& to,
+                  float medianEdge, bool corners, double& squares, double& weight, double& worst,
+                  std::vector<double>* far, double giveUpAt) {
+  std::uint32_t hint = AabbTree::noTriangle;
+  if (far) far->assign(triangles, 0.0);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const auto& tri = from.triangles[t];
+    const Vec3d a(from.positions[tri[0]]), b(from.positions[tri[1]]), c(from.positions[tri[2]]);
+    const double area = 0.5 * std::sqrt(dot(cross(b - a, c - a), cross(b - a, c - a)));
+    // The triangle's points at thirds of its barycentric coordinates: the corners (the new
+    // surface's lie on the old one; skipped from that side), two along each edge and the centre.
+    int counted = 0;
+    double triangleSquares = 0;
+    const double longest =
+        std::sqrt(std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)}));
+    const int k = std::clamp(int(std::ceil(2 * longest / double(medianEdge))), 3, kMostDivisions);
+    for (int u = 0; u <= k; ++u)
+      for (int v = 0; u + v <= k; ++v) {
+        const int w = k - u - v;
+        if (!corners && (u == k || v == k || w == k)) continue;
+        const Vec3d p = (double(u) * a + double(v) * b + double(w) * c) * (1.0 / k);
+        const AabbTree::Hit hit = to.closest(p, hint);
+        hint = hit.triangle;
+        worst = std::max(worst, hit.distanceSquared);
+        triangleSquares += hit.distanceSquared;
+        ++counted;
+        if (far) (*far)[t] = std::max((*far)[t], hit.distanceSquared);
+      }
+    squares += area * triangleSquares / counted;
+    weight += area;
+    // Past the tolerance already: the step fails whatever the rest measures.
+    if (!far && worst > giveUpAt) return;
+  }
+}
+
+// How far the surface with the field's points (offsets times step) lies from the old one over
+// the moved cells, both ways: the new triangles' points against the old surface (the moved cells
+// and the ring around them) and the old triangles' points against the new surface (the moved
+// cells resampled, the ring as it was). Exact closest points, so each figure is an upper bound.
+// farCells, when given, gets the moved cells (their indices) with a point farther than `far`.
+Moved measureMove(const GeometryImage& image, const ParameterField& f, double step,
+                  const Cells& moved, const AabbTree& oldSurface, const KeepDetailFigures& figures,
+                  std::vector<std::size_t>* farCells = nullptr, double far = 0) {
+  const float medianEdge = figures.medianEdge;
+  const double diagonal = figures.diagonal;
+  const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
+  const auto newCorner = [&](int i, int j) {
+    const Offset p = f.point(i, j);
+    if (p.x == double(i) && p.y == double(j)) return image.at(i, j).xyz();
+    return surfaceAt(image,
+                     {double(i) + step * (p.x - double(i)), double(j) + step * (p.y - double(j))});
+  };
+  TriangleMesh newSurface = cellTriangles(moved, newCorner);
+  append(newSurface, cellTriangles(ringAround(f, moved), oldCorner));
+  const TriangleMesh oldMoved = cellTriangles(moved, oldCorner);
+  const AabbTree newTree(newSurface);
+  double worst[2] = {0, 0}, squares[2] = {0, 0}, weight[2] = {0, 0};
+  std::vector<double> farthest[2];
+  const bool noting = farCells != nullptr;
+  const double giveUp = kCheckedShare * kHausdorffTolerance * diagonal, giveUpAt = giveUp * giveUp;
+  farthestFrom(newSurface, 2 * moved.size(), oldSurface, medianEdge, false, squares[0], weight[0],
+               worst[0], noting ? &farthest[0] : nullptr, giveUpAt);
+  farthestFrom(oldMoved, oldMoved.triangles.size(), newTree, medianEdge, true, squares[1],
+               weight[1], worst[1], noting ? &farthest[1] : nullptr, giveUpAt);
+  if (noting) {
+    farCells->clear();
+    for (std::size_t c = 0; c < moved.size(); ++c)
+      if (std::max({farthest[0][2 * c], farthest[0][2 * c + 1], farthest[1][2 * c],
+                    farthest[1][2 * c + 1]}) > far * far)
+        farCells->push_back(c);
+  }
+  const auto rms = [&](int k) { return weight[k] > 0 ? std::sqrt(squares[k] / weight[k]) : 0.0; };
+  return {std::max(rms(0), rms(1)) / diagonal, std::sqrt(std::max(worst[0], worst[1])) / diagonal,
+          longestEdge(oldMoved, oldMoved.triangles.size()),
+          longestEdge(newSurface, 2 * moved.size())};
+}
+
+// The cells with a corner whose offset is not zero.
+Cells movedCells(const ParameterField& f) {
+  Cells cells;
+  for (int j = 0; j < f.cellsHigh; ++j)
+    for (int i = 0; i < f.cellsWide; ++i)
+      for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
+        const auto [ca, cb] = f.canonicalOf(a, b);
+        const Offset& d = f.offset[f.index(ca, cb)];
+        if (d.x != 0 || d.y != 0) {
+          cells.push_back({i, j});
+          break;
+        }
+      }
+  return cells;
+}
+
+// Whether a changed sample has a grid edge (through the topology's wrap) over `limit` long.
+bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed,
+                 float limit) {
+  const int side = image.side();
+  for (int j = 0; j < image.rows(); ++j)
+    for (int i = 0; i < side; ++i) {
+      if (!changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                   static_cast<std::size_t>(i)])
+        continue;
+      const Vec3f p = image.at(i, j).xyz();
+      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
+        if (length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit) return true;
+    }
+  return false;
+}
+
+// The tiles holding a moved sample or one of its copies (a torus's column W and row H).
+std::vector<std::uint8_t> movedTiles(const ParameterField& f, int tilesX, int tilesY) {
+  std::vector<std::uint8_t> tiles(
+      static_cast<std::size_t>(tilesX) * static_cast<std::size_t>(tilesY), 0);
+  const auto mark = [&](int i, int j) {
+    tiles[static_cast<std::size_t>(j / EditStepRecorder::kTileSize) *
+              static_cast<std::size_t>(tilesX) +
+          static_cast<std::size_t>(i / EditStepRecorder::kTileSize)] = 1;
+  };
+  for (int j = 0; j < f.rows; ++j)
+    for (int i = 0; i < f.columns; ++i) {
+      const Offset& d = f.offset[f.index(i, j)];
+      if (d.x == 0 && d.y == 0) continue;
+      mark(i, j);
+      if (!f.torus()) continue;
+      if (i == 0) mark(f.grid.width, j);
+      if (j == 0) mark(i, f.grid.height);
+      if (i == 0 && j == 0) mark(f.grid.width, f.grid.height);
+    }
+  return tiles;
+}
+
+} // namespace
+
+EditStep gridRelaxChangedStep(const Document& document, const std::vector<std::uint8_t>& changed,
+                              int margin, std::string label, const RelaxOptions& options,
+                              const KeepDetailFigures& figures) {
+  const GeometryImage& image = document.positions;
+  const int side = image.side(), rows = image.rows();
+  if (changed.size() != static_cast<std::size_t>(side) * static_cast<std::size_t>(rows))
+    throw Error(ErrorKind::InvalidArgument,
+                "the changed samples must cover the (W+1) × (H+1) image");
+  EditStepRecorder recorder(side, rows);
+  // Nothing stretched: no sample is freed (what most strokes end with).
+  if (!stretchedAt(image, changed, figures.stretchedEdge)) return recorder.finish(std::move(label));
+  const ParameterField full = emptyField(image.grid(), 1);
+  const std::vector<std::uint8_t> free = freedSamples(full, changed, margin, options.pinned);
+  if (std::find(free.begin(), free.end(), 1) == free.end())
+    return recorder.finish(std::move(label));
+  // Where the full move cuts too deep (the tip of a part pulled far), the corners of the cells
+  // it cut are held and the flow solved again, kHoldAttempts times at most; the try that moves
+  // the samples farthest (its kept step times its offsets) wins.
+  const int sweeps = kSweepsPerLevel * std::clamp(options.iterations, 1, 25);
+  std::vector<std::uint8_t> tried = free;
+  std::optional<AabbTree> oldSurface;
+  ParameterField field;
+  double kept = 0, keptTravel = 0;
+  for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
+    ParameterField solved = solveFreed(image, tried, margin, sweeps);
+    const Cells cells = movedCells(solved);
+    if (cells.empty()) break;
+    // The old surface around the first solve's moved cells (every later one moves fewer).
+    if (!oldSurface) {
+      const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
+      TriangleMesh around = cellTriangles(cells, oldCorner);
+      append(around, cellTriangles(ringAround(solved, cells), oldCorner));
+      oldSurface.emplace(around);
+    }
+    std::vector<std::size_t> far;
+    double step = 0;
+    for (const double s : {1.0, 0.5, 0.25, 0.125}) {
+      const Moved moved =
+          measureMove(image, solved, s, cells, *oldSurface, figures, s == 1.0 ? &far : nullptr,
+                      0.5 * kHausdorffTolerance * figures.diagonal);
+      // Within the tolerance, and no edge longer than the longest it replaces.
+      if (moved.rms <= kCheckedShare * kRmsTolerance &&
+          moved.hausdorff <= kCheckedShare * kHausdorffTolerance &&
+          moved.longestNew <= moved.longestOld) {
+        step = s;
+        break;
+      }
+    }
+    // The try that moves the samples farthest in all wins (a try whose holds stopped the flow
+    // may keep its whole step and move next to nothing).
+    double travel = 0;
+    for (const Offset& d : solved.offset)
+      travel += step * std::hypot(d.x, d.y);
+    if (travel > keptTravel) {
+      kept = step;
+      keptTravel = travel;
+      field = std::move(solved);
+    }
+    if (step == 1.0 || far.empty()) break;
+    for (const std::size_t c : far)
+      for (int dj = 0; dj <= 1; ++dj)
+        for (int di = 0; di <= 1; ++di) {
+          const Sample q = canonicalSample(full, cells[c][0] + di, cells[c][1] + dj);
+          tried[full.index(q.i, q.j)] = 0;
+        }
+  }
+  if (kept == 0) return recorder.finish(std::move(label));
+  const Document after = resampled(document, field, kept);
+  const int tilesX = EditStepRecorder::tilesPerSide(side),
+            tilesY = EditStepRecorder::tilesPerSide(rows);
+  const std::vector<std::uint8_t> tiles = movedTiles(field, tilesX, tilesY);
+  for (EditLayer layer :
+       {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
+    // A uniform layer resamples to its own fill: nothing changes.
+    if ((layer == EditLayer::Diffuse && document.diffuse.uniform()) ||
+        (layer == EditLayer::Feature && document.feature.uniform()) ||
+        (layer == EditLayer::Mask && (!document.hasMask || document.mask.uniform())))
+      continue;
+    for (int ty = 0; ty < tilesY; ++ty)
+      for (int tx = 0; tx < tilesX; ++tx) {
+        if (!tiles[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX) +
+                   static_cast<std::size_t>(tx)])
+          continue;
+        const TexelRect r = EditStepRecorder::tileRegion(side, rows, tx, ty);
+        recorder.addTile(layer, tx, ty, editLayerChannels(layer), tileTexels(document, layer, r),
+                         tileTexels(after, layer, r));
+      }
+  }
+  return recorder.finish(std::move(label));
+}
+
+} // namespace octaclay::core::detail
