@@ -3,6 +3,7 @@
 #include "relax/grid_keep_detail.h"
 
 #include "detail/aabb_tree.h"
+#include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
 #include "relax/parameter_field.h"
 
@@ -10,7 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,7 +32,7 @@ constexpr double kHausdorffTolerance = 1e-3;
 // The check's points: a triangle's at 1/k of its barycentric coordinates, k = 3 for a triangle
 // of the surface's usual size and twice its longest edge in median edges for a stretched one (at
 // most kMostDivisions): the distances vary along a long facet.
-constexpr int kMostDivisions = 16;
+constexpr int kMostDivisions = 10;
 // The share of each tolerance the check's points may use: between them a denser measure finds a
 // little more (a 1.3 × bound with four points a triangle once).
 constexpr double kCheckedShare = 0.8;
@@ -200,42 +203,70 @@ Cells ringAround(const ParameterField& f, const Cells& moved) {
   return ring;
 }
 
-// The farthest and the area-weighted RMS distance from the check points of `from`'s first
-// `triangles` triangles (with or without their corners) to the surface `to`; each triangle's
-// farthest squared distance into far[t] when far is given.
-void farthestFrom(const TriangleMesh& from, std::size_t triangles, const AabbTree& to,
-                  float medianEdge, bool corners, double& squares, double& weight, double& worst,
-                  std::vector<double>* far, double giveUpAt) {
-  std::uint32_t hint = AabbTree::noTriangle;
-  if (far) far->assign(triangles, 0.0);
-  for (std::size_t t = 0; t < triangles; ++t) {
-    const auto& tri = from.triangles[t];
-    const Vec3d a(from.positions[tri[0]]), b(from.positions[tri[1]]), c(from.positions[tri[2]]);
-    const double area = 0.5 * std::sqrt(dot(cross(b - a, c - a), cross(b - a, c - a)));
-    // The triangle's points at thirds of its barycentric coordinates: the corners (the new
-    // surface's lie on the old one; skipped from that side), two along each edge and the centre.
-    int counted = 0;
-    double triangleSquares = 0;
-    const double longest =
-        std::sqrt(std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)}));
-    const int k = std::clamp(int(std::ceil(2 * longest / double(medianEdge))), 3, kMostDivisions);
-    for (int u = 0; u <= k; ++u)
-      for (int v = 0; u + v <= k; ++v) {
-        const int w = k - u - v;
-        if (!corners && (u == k || v == k || w == k)) continue;
-        const Vec3d p = (double(u) * a + double(v) * b + double(w) * c) * (1.0 / k);
-        const AabbTree::Hit hit = to.closest(p, hint);
-        hint = hit.triangle;
-        worst = std::max(worst, hit.distanceSquared);
-        triangleSquares += hit.distanceSquared;
-        ++counted;
-        if (far) (*far)[t] = std::max((*far)[t], hit.distanceSquared);
-      }
-    squares += area * triangleSquares / counted;
-    weight += area;
-    // Past the tolerance already: the step fails whatever the rest measures.
-    if (!far && worst > giveUpAt) return;
-  }
+// What the check measured on one side: the area-weighted sum of squared distances, the area and
+// the farthest squared distance; per cell, its farthest squared distance when noted.
+struct SideFigures {
+  double squares = 0, weight = 0, worst = 0;
+  std::vector<double> far;
+};
+
+// Adds to `side` the distances from the check points of the `checked` cells' two triangles of
+// `from` (triangles 2c and 2c + 1; with or without their corners) to the surface `to`. Stops
+// early once a point lies farther than giveUpAt (squared) unless per-cell figures are noted.
+void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& checked,
+                  const AabbTree& to, float medianEdge, bool corners, SideFigures& side,
+                  bool noting, double giveUpAt) {
+  std::mutex merge;
+  std::atomic<bool> failed = false;
+  detail::parallelRows(
+      static_cast<int>(checked.size()),
+      [&](int c0, int c1) {
+        SideFigures local;
+        std::vector<std::pair<std::size_t, double>> farCells;
+        std::uint32_t hint = AabbTree::noTriangle;
+        for (int k = c0; k < c1 && !(failed && !noting); ++k) {
+          const std::size_t c = checked[static_cast<std::size_t>(k)];
+          double cellWorst = 0;
+          for (const std::size_t t : {2 * c, 2 * c + 1}) {
+            const auto& tri = from.triangles[t];
+            const Vec3d a(from.positions[tri[0]]), b(from.positions[tri[1]]),
+                c3(from.positions[tri[2]]);
+            const double area = 0.5 * std::sqrt(dot(cross(b - a, c3 - a), cross(b - a, c3 - a)));
+            // The triangle's points at 1/d of its barycentric coordinates: the corners (the new
+            // surface's lie on the old one; skipped from that side), the edges' and inside.
+            const double longest =
+                std::sqrt(std::max({dot(b - a, b - a), dot(c3 - b, c3 - b), dot(a - c3, a - c3)}));
+            const int d =
+                std::clamp(int(std::ceil(longest / double(medianEdge))) + 2, 3, kMostDivisions);
+            int counted = 0;
+            double triangleSquares = 0;
+            for (int u = 0; u <= d; ++u)
+              for (int v = 0; u + v <= d; ++v) {
+                const int w = d - u - v;
+                if (!corners && (u == d || v == d || w == d)) continue;
+                const Vec3d p = (double(u) * a + double(v) * b + double(w) * c3) * (1.0 / d);
+                const AabbTree::Hit hit = to.closest(p, hint);
+                hint = hit.triangle;
+                cellWorst = std::max(cellWorst, hit.distanceSquared);
+                triangleSquares += hit.distanceSquared;
+                ++counted;
+              }
+            local.squares += area * triangleSquares / counted;
+            local.weight += area;
+          }
+          local.worst = std::max(local.worst, cellWorst);
+          if (noting) farCells.emplace_back(c, cellWorst);
+          // Past the tolerance already: the step fails whatever the rest measures.
+          if (local.worst > giveUpAt) failed = true;
+        }
+        const std::lock_guard lock(merge);
+        side.squares += local.squares;
+        side.weight += local.weight;
+        side.worst = std::max(side.worst, local.worst);
+        for (const auto& [c, worst] : farCells)
+          side.far[c] = std::max(side.far[c], worst);
+      },
+      256);
 }
 
 // How far the surface with the field's points (offsets times step) lies from the old one over
@@ -258,22 +289,55 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
   TriangleMesh newSurface = cellTriangles(moved, newCorner);
   append(newSurface, cellTriangles(ringAround(f, moved), oldCorner));
   const TriangleMesh oldMoved = cellTriangles(moved, oldCorner);
-  const AabbTree newTree(newSurface);
-  double worst[2] = {0, 0}, squares[2] = {0, 0}, weight[2] = {0, 0};
-  std::vector<double> farthest[2];
-  const bool noting = farCells != nullptr;
   const double giveUp = kCheckedShare * kHausdorffTolerance * diagonal, giveUpAt = giveUp * giveUp;
-  farthestFrom(newSurface, 2 * moved.size(), oldSurface, medianEdge, false, squares[0], weight[0],
-               worst[0], noting ? &farthest[0] : nullptr, giveUpAt);
-  farthestFrom(oldMoved, oldMoved.triangles.size(), newTree, medianEdge, true, squares[1],
-               weight[1], worst[1], noting ? &farthest[1] : nullptr, giveUpAt);
+  // A cell whose corners all moved by at most half the tolerance lies within its corners'
+  // farthest move of the old cell (each point of it is its corners' mix, as the old cell's is),
+  // both ways: that bound is its Hausdorff share, its centroids' distances its RMS share. The
+  // others are checked by closest points throughout.
+  SideFigures sides[2];
+  const bool noting = farCells != nullptr;
+  for (SideFigures& side : sides)
+    side.far.assign(noting ? moved.size() : 0, 0.0);
+  std::vector<std::size_t> checked, bounded;
+  for (std::size_t c = 0; c < moved.size(); ++c) {
+    double cornerMove = 0;
+    for (std::size_t k = 4 * c; k < 4 * c + 4; ++k) {
+      const Vec3f d = newSurface.positions[k] - oldMoved.positions[k];
+      cornerMove = std::max(cornerMove, double(dot(d, d)));
+    }
+    if (cornerMove > 0.25 * giveUpAt) {
+      checked.push_back(c);
+      continue;
+    }
+    bounded.push_back(c);
+    for (SideFigures& side : sides)
+      side.worst = std::max(side.worst, cornerMove);
+  }
+  const AabbTree newTree(newSurface);
+  // The bounded cells' RMS share: their triangles' centroids, both ways.
+  for (const std::size_t c : bounded)
+    for (const std::size_t t : {2 * c, 2 * c + 1})
+      for (int way = 0; way < 2; ++way) {
+        const TriangleMesh& from = way == 0 ? newSurface : oldMoved;
+        const auto& tri = from.triangles[t];
+        const Vec3d a(from.positions[tri[0]]), b(from.positions[tri[1]]),
+            c3(from.positions[tri[2]]);
+        const double area = 0.5 * std::sqrt(dot(cross(b - a, c3 - a), cross(b - a, c3 - a)));
+        const AabbTree& to = way == 0 ? oldSurface : newTree;
+        sides[way].squares += area * to.closest((a + b + c3) * (1.0 / 3)).distanceSquared;
+        sides[way].weight += area;
+      }
+  farthestFrom(newSurface, checked, oldSurface, medianEdge, false, sides[0], noting, giveUpAt);
+  if (noting || sides[0].worst <= giveUpAt)
+    farthestFrom(oldMoved, checked, newTree, medianEdge, true, sides[1], noting, giveUpAt);
   if (noting) {
     farCells->clear();
     for (std::size_t c = 0; c < moved.size(); ++c)
-      if (std::max({farthest[0][2 * c], farthest[0][2 * c + 1], farthest[1][2 * c],
-                    farthest[1][2 * c + 1]}) > far * far)
-        farCells->push_back(c);
+      if (std::max(sides[0].far[c], sides[1].far[c]) > far * far) farCells->push_back(c);
   }
+  double worst[2] = {sides[0].worst, sides[1].worst},
+         squares[2] = {sides[0].squares, sides[1].squares},
+         weight[2] = {sides[0].weight, sides[1].weight};
   const auto rms = [&](int k) { return weight[k] > 0 ? std::sqrt(squares[k] / weight[k]) : 0.0; };
   return {std::max(rms(0), rms(1)) / diagonal, std::sqrt(std::max(worst[0], worst[1])) / diagonal,
           longestEdge(oldMoved, oldMoved.triangles.size()),
