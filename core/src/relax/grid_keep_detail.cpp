@@ -6,6 +6,7 @@
 #include "detail/parallel_rows.h"
 #include "document/tile_texels.h"
 #include "relax/parameter_field.h"
+#include "relax/sample_masks.h"
 
 #include "octaclay/core/error.h"
 
@@ -358,22 +359,6 @@ Cells movedCells(const ParameterField& f) {
         }
       }
   return cells;
-}
-
-// Whether a changed sample has a grid edge (through the topology's wrap) over `limit` long.
-bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed,
-                 float limit) {
-  const int side = image.side();
-  for (int j = 0; j < image.rows(); ++j)
-    for (int i = 0; i < side; ++i) {
-      if (!changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
-                   static_cast<std::size_t>(i)])
-        continue;
-      const Vec3f p = image.at(i, j).xyz();
-      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
-        if (length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit) return true;
-    }
-  return false;
 }
 
 // The tiles holding a moved sample or one of its copies (a torus's column W and row H).

@@ -108,22 +108,6 @@ bool isSideMidpoint(int n, Sample s) {
   return (s.i == h && (s.j == 0 || s.j == n)) || (s.j == h && (s.i == 0 || s.i == n));
 }
 
-// Whether a changed sample has a grid edge (through the wrap) over `limit` long.
-bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed,
-                 float limit) {
-  const int n = image.size();
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      if (!changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(n + 1) +
-                   static_cast<std::size_t>(i)])
-        continue;
-      const Vec3f p = image.at(i, j).xyz();
-      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
-        if (length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit) return true;
-    }
-  return false;
-}
-
 // The even-out's offsets (the whole model free), solved on document's positions.
 detail::OffsetField solveEvenOut(const Document& document, const RelaxOptions& options,
                                  const RelaxProgress& progress) {
@@ -609,7 +593,8 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   const float limit = stretchedEdgeLimit(document.positions, median);
   EditStepRecorder recorder(side);
   // Nothing stretched: no sample is freed, and no field is made (what most strokes end with).
-  if (!stretchedAt(document.positions, changed, limit)) return recorder.finish(std::move(label));
+  if (!detail::stretchedAt(document.positions, changed, limit))
+    return recorder.finish(std::move(label));
   detail::OffsetField field(n);
   const std::vector<std::uint8_t> grown = detail::grownMask(n, changed, margin);
   for (int j = 0; j <= n; ++j)

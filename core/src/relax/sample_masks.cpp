@@ -119,4 +119,19 @@ std::vector<std::uint8_t> cellsNearFree(int n, const std::vector<std::uint8_t>& 
   return cells;
 }
 
+bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed,
+                 float limit) {
+  const int side = image.side();
+  for (int j = 0; j < image.rows(); ++j)
+    for (int i = 0; i < side; ++i) {
+      if (!changed[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) +
+                   static_cast<std::size_t>(i)])
+        continue;
+      const Vec3f p = image.at(i, j).xyz();
+      for (const Sample d : {Sample{1, 0}, Sample{-1, 0}, Sample{0, 1}, Sample{0, -1}})
+        if (length(image.positionWrapped({i + d.i, j + d.j}) - p) > limit) return true;
+    }
+  return false;
+}
+
 } // namespace octaclay::core::detail

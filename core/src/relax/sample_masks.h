@@ -1,5 +1,7 @@
 #pragma once
 
+#include "octaclay/core/geometry/geometry_image.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -20,5 +22,9 @@ std::vector<std::uint8_t> grownMaskBySearch(int n, const std::vector<std::uint8_
 /// (N+1)², non-zero where free; a corner at i - 1 … i + 2, j - 1 … j + 2 of cell (i, j)): every
 /// cell that may move and the ring around them.
 std::vector<std::uint8_t> cellsNearFree(int n, const std::vector<std::uint8_t>& free);
+
+/// Whether a changed sample (changed: the image's (W+1)×(H+1), non-zero where changed) has a
+/// grid edge, through the topology's wrap, over `limit` long: keep detail relaxes nothing else.
+bool stretchedAt(const GeometryImage& image, const std::vector<std::uint8_t>& changed, float limit);
 
 } // namespace octaclay::core::detail

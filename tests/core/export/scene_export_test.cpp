@@ -3,6 +3,8 @@
 // are welded; the OBJ has three `o` groups, each closed in world space and facing outward; PLY
 // holds every visible object in world space; a hidden object is left out.
 
+#include "export_readback.h"
+
 #include "octaclay/core/document/document_mirror.h"
 #include "octaclay/core/export/mesh_io.h"
 #include "octaclay/core/export/scene_export.h"
@@ -25,6 +27,7 @@
 
 using namespace octaclay::core;
 namespace fs = std::filesystem;
+using namespace export_readback;
 
 namespace {
 
@@ -43,42 +46,6 @@ Scene threeObjects() {
   scene.objects.push_back({"Leg.001", mirrorDocument(scene.objects[1].document, 0),
                            mirroredTransform(scene.objects[1].transform, 0), true, false});
   return scene;
-}
-
-std::vector<float> floats(const tinygltf::Model& model, int index, std::size_t components) {
-  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(a.bufferView)];
-  std::vector<float> values(a.count * components);
-  std::memcpy(values.data(),
-              model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + a.byteOffset,
-              values.size() * sizeof(float));
-  return values;
-}
-
-std::vector<std::uint32_t> indices(const tinygltf::Model& model, int index) {
-  const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(a.bufferView)];
-  std::vector<std::uint32_t> values(a.count);
-  std::memcpy(values.data(),
-              model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + a.byteOffset,
-              values.size() * sizeof(std::uint32_t));
-  return values;
-}
-
-// Vertices at the same position become one (the GLB keeps seam samples as separate vertices).
-TriangleMesh welded(const std::vector<float>& xyz, const std::vector<std::uint32_t>& corners) {
-  TriangleMesh mesh;
-  std::map<std::tuple<float, float, float>, std::uint32_t> seen;
-  std::vector<std::uint32_t> remap(xyz.size() / 3);
-  for (std::size_t k = 0; k < remap.size(); ++k) {
-    const auto key = std::make_tuple(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
-    auto [it, inserted] = seen.emplace(key, std::uint32_t(mesh.positions.size()));
-    if (inserted) mesh.positions.push_back({xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
-    remap[k] = it->second;
-  }
-  for (std::size_t t = 0; t + 2 < corners.size(); t += 3)
-    mesh.triangles.push_back({remap[corners[t]], remap[corners[t + 1]], remap[corners[t + 2]]});
-  return mesh;
 }
 
 } // namespace
@@ -125,9 +92,9 @@ void SceneExportTest::glbHasANamedPlacedNodePerObject() {
     for (int c = 0; c < 4; ++c)
       QVERIFY(std::abs(node.rotation.at(std::size_t(c)) - q[std::size_t(c)]) < 1e-12);
     // Its mesh is the object's, in object space, and closed: Euler 2 once seams are welded.
-    const tinygltf::Primitive& p = model.meshes[std::size_t(node.mesh)].primitives.at(0);
-    const TriangleMesh mesh =
-        welded(floats(model, p.attributes.at("POSITION"), 3), indices(model, p.indices));
+    tinygltf::Model one = model;
+    one.meshes = {model.meshes[std::size_t(node.mesh)]};
+    const TriangleMesh mesh = weldByPosition(glbPositions(one));
     const MeshTopology topology = analyzeTopology(mesh);
     QVERIFY2(topology.closed() && topology.manifold(), object.name.c_str());
     QCOMPARE(topology.euler, 2LL);
