@@ -231,9 +231,16 @@ int runCompress(const CompressOptionsCli& opt) {
         scene.objects.front().document.topology != core::Topology::Octahedral)
       return runCompressScene(opt, scene, progress);
   }
-  const core::Document doc = std::move(readChosenObject(opt.input, opt.object).object().document);
+  ChosenObject chosen = readChosenObject(opt.input, opt.object);
+  // A torus or plane named with --object goes alone into a scene .ocz (with its name, place and
+  // topology): the one-document container holds only the ball.
+  if (chosen.object().document.topology != core::Topology::Octahedral) {
+    core::Scene one;
+    one.objects.push_back(chosen.object());
+    return runCompressScene(opt, one, progress);
+  }
+  const core::Document doc = std::move(chosen.scene.objects[chosen.index].document);
   core::requireUsableSize(doc.positions, opt.input);
-  core::requireOctahedral(doc.positions, "compress (the codecs)", opt.input);
   progress.stage("encoding");
   core::CompressOptions options;
   options.codec = opt.codec;

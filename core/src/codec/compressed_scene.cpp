@@ -1,9 +1,11 @@
 // The .ocz container of a scene (compressed_scene.h). Layout of version 2, little-endian:
 //   "OCZ1", u16 format version 2, u32 object count,
-//   per object: u8 name length, the name (UTF-8), u8 topology (0 octahedral, 1 torus, 2 plane),
+//   per object: u8 name length, the name (UTF-8), u8 topology (0 octahedral, 1 torus, 2 plane;
+//     + 0x80 for a torus or plane coded lossily),
 //     u32 width, u32 height (cells), 9 × f32 transform (translation, rotation in degrees about
 //     X then Y then Z, scale), u8 visible, u8 locked, u64 length of its document;
-//   the objects' documents in order, each a version-1 container of side max(width, height);
+//   the objects' documents in order, each a version-1 container of N = max(width, height), or
+//   for a torus or plane coded lossily N = 2·max(width, height) with the image one sample in;
 //   u32 CRC-32 (zlib's) of everything before it.
 
 #include "octaclay/core/codec/compressed_scene.h"
@@ -12,6 +14,7 @@
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
+#include "octaclay/core/geometry/octahedral.h"
 #include "octaclay/core/geometry/sample_grid.h"
 
 #include <algorithm>
@@ -28,6 +31,9 @@ constexpr std::array<std::uint8_t, 4> kMagic{'O', 'C', 'Z', '1'};
 constexpr std::uint16_t kDocumentVersion = 1;
 // The fewest bytes an object's entry takes (an empty name is refused, so one more in truth).
 constexpr std::size_t kEntryBytes = 1 + 1 + 4 + 4 + 9 * 4 + 1 + 1 + 8;
+// Set in the topology byte of a torus or plane coded lossily (one sample in on a square twice its
+// longer side).
+constexpr std::uint8_t kInsetFlag = 0x80;
 constexpr std::array<Topology, 3> kTopologies{Topology::Octahedral, Topology::Torus,
                                               Topology::Plane};
 
@@ -47,63 +53,74 @@ bool codesExactly(const CompressOptions& options) {
   return exact(options.codec, options.params.mode) && exact(options.layerCodec, "");
 }
 
-// A layer's texels of a (columns × rows) image on the square of side `side`, the last column and
-// row repeated; or cut back from it.
-std::vector<float> padded(const std::vector<float>& texels, int channels, int columns, int rows,
-                          int side) {
-  std::vector<float> out(static_cast<std::size_t>(side) * side * channels);
-  for (int j = 0; j < side; ++j)
-    for (int i = 0; i < side; ++i) {
-      const std::size_t from =
-          (static_cast<std::size_t>(std::min(j, rows - 1)) * columns + std::min(i, columns - 1)) *
-          channels;
-      std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>(from), channels,
-                  out.begin() + (static_cast<std::ptrdiff_t>(j) * side + i) * channels);
-    }
-  return out;
-}
-
-std::vector<float> cut(const std::vector<float>& texels, int channels, int columns, int rows,
-                       int side) {
-  std::vector<float> out(static_cast<std::size_t>(columns) * rows * channels);
-  for (int j = 0; j < rows; ++j)
-    std::copy_n(texels.begin() + static_cast<std::ptrdiff_t>(j) * side * channels,
-                columns * channels,
-                out.begin() + static_cast<std::ptrdiff_t>(j) * columns * channels);
-  return out;
-}
-
-// The document the codecs see: the object's own when octahedral, else its image on the square.
-Document squareDocument(const Document& document) {
+// The document the codecs see: the object's own when octahedral, else its image on a square,
+// the last column and row repeated beyond it. An exact codec gets the square of its longer side,
+// the image at its corner; a lossy one, which seams its output as the ball's along the square's
+// border, gets the square twice that side with the image one sample in from the border
+// (`inset`), so no sample of the image is on a seam.
+Document squareDocument(const Document& document, bool inset) {
   const GeometryImage& image = document.positions;
-  const int columns = image.side(), rows = image.rows(), side = std::max(columns, rows);
+  const int columns = image.side(), rows = image.rows();
+  const int cells = std::max(image.width(), image.height()) * (inset ? 2 : 1);
+  const int side = cells + 1, offset = inset ? 1 : 0;
   Document square = document;
   square.topology = Topology::Octahedral;
-  square.positions = GeometryImage(side - 1);
+  square.positions = GeometryImage(cells);
+  const auto from = [&](int i, int j) {
+    return static_cast<std::size_t>(std::clamp(j - offset, 0, rows - 1)) * columns +
+           static_cast<std::size_t>(std::clamp(i - offset, 0, columns - 1));
+  };
   for (int j = 0; j < side; ++j)
     for (int i = 0; i < side; ++i)
       square.positions.texels()[static_cast<std::size_t>(j) * side + i] =
-          image.texels()[static_cast<std::size_t>(std::min(j, rows - 1)) * columns +
-                         std::min(i, columns - 1)];
+          image.texels()[from(i, j)];
   for (Layer* layer : {&square.diffuse, &square.feature, &square.mask})
-    if (!layer->uniform())
-      layer->texels = padded(layer->texels, layer->channels, columns, rows, side);
+    if (!layer->uniform()) {
+      const auto ch = static_cast<std::size_t>(layer->channels);
+      std::vector<float> out(static_cast<std::size_t>(side) * side * ch);
+      for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+          std::copy_n(layer->texels.begin() + static_cast<std::ptrdiff_t>(from(i, j) * ch), ch,
+                      out.begin() + static_cast<std::ptrdiff_t>(
+                                        (static_cast<std::size_t>(j) * side + i) * ch));
+      layer->texels = std::move(out);
+    }
   return square;
 }
 
-Document objectDocument(Document square, Topology topology, int width, int height) {
+// The object's W × H image cut from the square at (offset, offset); when inset (lossily coded),
+// a torus's column W and row H made its column and row 0 again (the codec decodes them apart).
+Document objectDocument(Document square, Topology topology, int width, int height, int offset) {
   if (topology == Topology::Octahedral) return square;
-  const int side = square.positions.side();
+  const auto side = static_cast<std::size_t>(square.positions.side());
+  const auto columns = static_cast<std::size_t>(width + 1);
   Document document = std::move(square);
   GeometryImage image(topology, width, height);
+  const auto at = [&](int i, int j) {
+    return static_cast<std::size_t>(j + offset) * side + static_cast<std::size_t>(i + offset);
+  };
+  // The sample of the square that (i, j) takes: a torus's last column and row its first.
+  const auto source = [&](int i, int j) {
+    if (topology == Topology::Torus && offset > 0) return at(i % width, j % height);
+    return at(i, j);
+  };
   for (int j = 0; j <= height; ++j)
-    std::copy_n(document.positions.texels().begin() + static_cast<std::ptrdiff_t>(j) * side,
-                width + 1, image.texels().begin() + static_cast<std::ptrdiff_t>(j) * (width + 1));
+    for (int i = 0; i <= width; ++i)
+      image.texels()[static_cast<std::size_t>(j) * columns + i] =
+          document.positions.texels()[source(i, j)];
   document.positions = std::move(image);
   document.topology = topology;
   for (Layer* layer : {&document.diffuse, &document.feature, &document.mask})
-    if (!layer->uniform())
-      layer->texels = cut(layer->texels, layer->channels, width + 1, height + 1, side);
+    if (!layer->uniform()) {
+      const auto ch = static_cast<std::size_t>(layer->channels);
+      std::vector<float> out(columns * static_cast<std::size_t>(height + 1) * ch);
+      for (int j = 0; j <= height; ++j)
+        for (int i = 0; i <= width; ++i)
+          std::copy_n(layer->texels.begin() + static_cast<std::ptrdiff_t>(source(i, j) * ch), ch,
+                      out.begin() + static_cast<std::ptrdiff_t>(
+                                        (static_cast<std::size_t>(j) * columns + i) * ch));
+      layer->texels = std::move(out);
+    }
   return document;
 }
 
@@ -117,14 +134,15 @@ Scene oneObject(Document document, std::string_view name) {
 
 std::optional<std::string> compressProblem(const SceneObject& object,
                                            const CompressOptions& options) {
-  const Topology topology = object.document.positions.topology();
-  if (topology == Topology::Octahedral || codesExactly(options)) return std::nullopt;
-  const bool positionsLossy = !codesExactly({options.codec, options.params, "lossless"});
-  const std::string codec = positionsLossy ? options.codec : options.layerCodec;
-  return "codec '" + codec + "'" + (positionsLossy ? "" : " (for the painted layers)") +
-         " cannot code object '" + object.name + "', a " + std::string(topologyName(topology)) +
-         ": it is lossy and seams its output as the octahedral ball's; a torus or plane needs an "
-         "exact codec (lossless, or exr with --mode zip or piz)";
+  const GeometryImage& image = object.document.positions;
+  if (image.topology() == Topology::Octahedral || codesExactly(options)) return std::nullopt;
+  if (2 * std::max(image.width(), image.height()) <= kMaxSize) return std::nullopt;
+  return "object '" + object.name + "', a " + std::string(topologyName(image.topology())) + " of " +
+         std::to_string(image.width()) + " x " + std::to_string(image.height()) +
+         " cells, is coded lossily on a square twice its longer side, over the largest N (" +
+         std::to_string(kMaxSize) +
+         "): use an exact codec (lossless, or exr with --mode zip or "
+         "piz) or a smaller image";
 }
 
 bool isOneDocument(const Scene& scene) {
@@ -143,9 +161,10 @@ std::vector<std::uint8_t> compressScene(const Scene& scene, const CompressOption
   std::vector<std::vector<std::uint8_t>> bodies;
   bodies.reserve(scene.objects.size());
   for (const SceneObject& object : scene.objects)
-    bodies.push_back(object.document.positions.topology() == Topology::Octahedral
-                         ? compressDocument(object.document, options)
-                         : compressDocument(squareDocument(object.document), options));
+    bodies.push_back(
+        object.document.positions.topology() == Topology::Octahedral
+            ? compressDocument(object.document, options)
+            : compressDocument(squareDocument(object.document, !codesExactly(options)), options));
 
   ByteWriter out;
   for (std::uint8_t m : kMagic)
@@ -157,7 +176,9 @@ std::vector<std::uint8_t> compressScene(const Scene& scene, const CompressOption
     out.u8(static_cast<std::uint8_t>(object.name.size()));
     for (char c : object.name)
       out.u8(static_cast<std::uint8_t>(c));
-    out.u8(topologyCode(object.document.positions.topology()));
+    const bool grid = object.document.positions.topology() != Topology::Octahedral;
+    out.u8(static_cast<std::uint8_t>(topologyCode(object.document.positions.topology()) |
+                                     (grid && !codesExactly(options) ? kInsetFlag : 0)));
     out.u32(static_cast<std::uint32_t>(object.document.positions.width()));
     out.u32(static_cast<std::uint32_t>(object.document.positions.height()));
     for (const Vec3f& v :
@@ -211,6 +232,7 @@ Scene decompressScene(std::span<const std::uint8_t> bytes, std::string_view fall
     ObjectTransform transform;
     bool visible = true, locked = false;
     std::uint64_t length = 0;
+    bool inset = false; // coded one sample in on a square twice its longer side
   };
   std::vector<Entry> entries(count);
   std::set<std::string> names;
@@ -223,8 +245,10 @@ Scene decompressScene(std::span<const std::uint8_t> bytes, std::string_view fall
     if (!names.insert(e.name).second)
       in.fail(what + ": another object is named '" + e.name + "' too (names are unique)");
     const std::string part = what + " ('" + e.name + "')";
-    const std::uint8_t topology = in.u8();
-    if (topology >= kTopologies.size())
+    const std::uint8_t code = in.u8();
+    const std::uint8_t topology = code & static_cast<std::uint8_t>(~kInsetFlag);
+    e.inset = (code & kInsetFlag) != 0;
+    if (topology >= kTopologies.size() || (e.inset && topology == 0))
       in.fail(part + ": unknown topology code " + std::to_string(topology) +
               " (0 octahedral, 1 torus, 2 plane)");
     e.topology = kTopologies[topology];
@@ -263,12 +287,13 @@ Scene decompressScene(std::span<const std::uint8_t> bytes, std::string_view fall
     const std::string part = "object '" + e.name + "'";
     // Its side, read before it is decoded: a document larger than its header says is refused
     // before its memory is taken.
+    // A torus or plane coded lossily sits one sample in on a square of twice its longer side.
     const int side = std::max(e.width, e.height);
     ByteReader peek(document, "compressed document");
     if (document.size() < 10) in.fail(part + ": its document is truncated");
     peek.take(6);
     const std::uint32_t n = peek.u32();
-    if (n != static_cast<std::uint32_t>(side))
+    if (n != static_cast<std::uint32_t>(e.inset ? 2 * side : side))
       in.fail(part + ": its document is N = " + std::to_string(n) + " but its header says " +
               std::to_string(e.width) + " x " + std::to_string(e.height) + " cells");
     Document square;
@@ -278,9 +303,9 @@ Scene decompressScene(std::span<const std::uint8_t> bytes, std::string_view fall
       if (error.kind() != ErrorKind::InvalidInput) throw;
       in.fail(part + ": " + error.what());
     }
-    scene.objects.push_back({e.name,
-                             objectDocument(std::move(square), e.topology, e.width, e.height),
-                             e.transform, e.visible, e.locked});
+    scene.objects.push_back(
+        {e.name, objectDocument(std::move(square), e.topology, e.width, e.height, e.inset ? 1 : 0),
+         e.transform, e.visible, e.locked});
   }
   in.expectEnd();
   return scene;

@@ -26,8 +26,10 @@ namespace octaclay::core {
 /// The container's format version for scenes; version 1 holds one document.
 inline constexpr std::uint16_t kCompressedSceneVersion = 2;
 
-/// Why options cannot code object (a torus or plane with a lossy setting: the codec and the
-/// object named), or nothing when they can.
+/// Why options cannot code object, or nothing when they can: every codec codes every topology (a
+/// torus or plane on a square, coded lossily one sample in from its seamed border on a square
+/// twice its longer side, its wrap made exact again when decoded), but that square may not pass
+/// the largest N.
 std::optional<std::string> compressProblem(const SceneObject& object,
                                            const CompressOptions& options);
 
