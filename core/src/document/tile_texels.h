@@ -32,4 +32,20 @@ inline std::vector<float> tileTexels(const Document& doc, EditLayer layer, Texel
   return out;
 }
 
+// Whether resampling doc's layer at other points can change it: not when the layer is uniform
+// (it resamples to its own fill) or an absent mask.
+inline bool resamplingChanges(const Document& doc, EditLayer layer) {
+  switch (layer) {
+  case EditLayer::Positions:
+    return true;
+  case EditLayer::Diffuse:
+    return !doc.diffuse.uniform();
+  case EditLayer::Feature:
+    return !doc.feature.uniform();
+  case EditLayer::Mask:
+    return doc.hasMask && !doc.mask.uniform();
+  }
+  return true;
+}
+
 } // namespace octaclay::core::detail

@@ -458,11 +458,7 @@ EditStep gridRelaxChangedStep(const Document& document, const std::vector<std::u
   const std::vector<std::uint8_t> tiles = movedTiles(field, tilesX, tilesY);
   for (EditLayer layer :
        {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
-    // A uniform layer resamples to its own fill: nothing changes.
-    if ((layer == EditLayer::Diffuse && document.diffuse.uniform()) ||
-        (layer == EditLayer::Feature && document.feature.uniform()) ||
-        (layer == EditLayer::Mask && (!document.hasMask || document.mask.uniform())))
-      continue;
+    if (!resamplingChanges(document, layer)) continue;
     for (int ty = 0; ty < tilesY; ++ty)
       for (int tx = 0; tx < tilesX; ++tx) {
         if (!tiles[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX) +

@@ -661,11 +661,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
     }
   for (EditLayer layer :
        {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
-    // A uniform layer resamples to its own fill: nothing changes.
-    if ((layer == EditLayer::Diffuse && document.diffuse.uniform()) ||
-        (layer == EditLayer::Feature && document.feature.uniform()) ||
-        (layer == EditLayer::Mask && (!document.hasMask || document.mask.uniform())))
-      continue;
+    if (!detail::resamplingChanges(document, layer)) continue;
     const std::size_t ch = static_cast<std::size_t>(editLayerChannels(layer));
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
