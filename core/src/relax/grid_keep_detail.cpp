@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -290,6 +291,13 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
   TriangleMesh newSurface = cellTriangles(moved, newCorner);
   append(newSurface, cellTriangles(ringAround(f, moved), oldCorner));
   const TriangleMesh oldMoved = cellTriangles(moved, oldCorner);
+  const float longestOld = longestEdge(oldMoved, oldMoved.triangles.size()),
+              longestNew = longestEdge(newSurface, 2 * moved.size());
+  // A step that lengthens an edge fails whatever the distances: unless its far cells are asked
+  // for, they are not measured.
+  if (!farCells && longestNew > longestOld)
+    return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            longestOld, longestNew};
   const double giveUp = kCheckedShare * kHausdorffTolerance * diagonal, giveUpAt = giveUp * giveUp;
   // A cell whose corners all moved by at most half the tolerance lies within its corners'
   // farthest move of the old cell (each point of it is its corners' mix, as the old cell's is),
@@ -341,8 +349,7 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
          weight[2] = {sides[0].weight, sides[1].weight};
   const auto rms = [&](int k) { return weight[k] > 0 ? std::sqrt(squares[k] / weight[k]) : 0.0; };
   return {std::max(rms(0), rms(1)) / diagonal, std::sqrt(std::max(worst[0], worst[1])) / diagonal,
-          longestEdge(oldMoved, oldMoved.triangles.size()),
-          longestEdge(newSurface, 2 * moved.size())};
+          longestOld, longestNew};
 }
 
 // The cells with a corner whose offset is not zero.
