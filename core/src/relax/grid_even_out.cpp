@@ -49,7 +49,7 @@ ParameterField solve(const GeometryImage& image, int sweeps, const RelaxProgress
         throw Error(ErrorKind::Cancelled, "evening out the samples was cancelled");
     });
     if (field.stride == 1) return field;
-    field = finer(field, {});
+    field = finer(field);
   }
 }
 

@@ -129,8 +129,10 @@ ParameterField solveFreed(const GeometryImage& image, const std::vector<std::uin
   for (;;) {
     sweepLevel(image, field, sweeps * field.stride, {});
     if (field.stride == 1) return field;
-    ParameterField next = emptyField(grid, field.stride / 2);
-    field = finer(field, freeAtStride(full, next, free));
+    field = finer(field);
+    field.free = freeAtStride(full, field, free);
+    for (std::size_t k = 0; k < field.offset.size(); ++k)
+      if (!field.free[k]) field.offset[k] = {};
   }
 }
 
@@ -271,17 +273,37 @@ void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& chec
       256);
 }
 
+// One solve's moved cells with what every step's measure shares: the ring of unmoved cells
+// around them and the old surface over both, and the moved cells' longest old edge.
+struct MovedRegion {
+  Cells cells;
+  TriangleMesh oldCells, oldRing;
+  float longestOld = 0;
+};
+
+MovedRegion movedRegion(const GeometryImage& image, const ParameterField& f, Cells cells) {
+  const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
+  MovedRegion region;
+  region.oldCells = cellTriangles(cells, oldCorner);
+  region.oldRing = cellTriangles(ringAround(f, cells), oldCorner);
+  region.longestOld = longestEdge(region.oldCells, region.oldCells.triangles.size());
+  region.cells = std::move(cells);
+  return region;
+}
+
 // How far the surface with the field's points (offsets times step) lies from the old one over
 // the moved cells, both ways: the new triangles' points against the old surface (the moved cells
 // and the ring around them) and the old triangles' points against the new surface (the moved
 // cells resampled, the ring as it was). Exact closest points, so each figure is an upper bound.
 // farCells, when given, gets the moved cells (their indices) with a point farther than `far`.
 Moved measureMove(const GeometryImage& image, const ParameterField& f, double step,
-                  const Cells& moved, const AabbTree& oldSurface, const KeepDetailFigures& figures,
-                  std::vector<std::size_t>* farCells = nullptr, double far = 0) {
+                  const MovedRegion& region, const AabbTree& oldSurface,
+                  const KeepDetailFigures& figures, std::vector<std::size_t>* farCells = nullptr,
+                  double far = 0) {
   const float medianEdge = figures.medianEdge;
   const double diagonal = figures.diagonal;
-  const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
+  const Cells& moved = region.cells;
+  const TriangleMesh& oldMoved = region.oldCells;
   const auto newCorner = [&](int i, int j) {
     const Offset p = f.point(i, j);
     if (p.x == double(i) && p.y == double(j)) return image.at(i, j).xyz();
@@ -289,9 +311,8 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
                      {double(i) + step * (p.x - double(i)), double(j) + step * (p.y - double(j))});
   };
   TriangleMesh newSurface = cellTriangles(moved, newCorner);
-  append(newSurface, cellTriangles(ringAround(f, moved), oldCorner));
-  const TriangleMesh oldMoved = cellTriangles(moved, oldCorner);
-  const float longestOld = longestEdge(oldMoved, oldMoved.triangles.size()),
+  append(newSurface, region.oldRing);
+  const float longestOld = region.longestOld,
               longestNew = longestEdge(newSurface, 2 * moved.size());
   // A step that lengthens an edge fails whatever the distances: unless its far cells are asked
   // for, they are not measured.
@@ -417,20 +438,20 @@ EditStep gridRelaxChangedStep(const Document& document, const std::vector<std::u
   double kept = 0, keptTravel = 0;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
     ParameterField solved = solveFreed(image, tried, margin, sweeps);
-    const Cells cells = movedCells(solved);
-    if (cells.empty()) break;
+    const MovedRegion region = movedRegion(image, solved, movedCells(solved));
+    if (region.cells.empty()) break;
+    const Cells& cells = region.cells;
     // The old surface around the first solve's moved cells (every later one moves fewer).
     if (!oldSurface) {
-      const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
-      TriangleMesh around = cellTriangles(cells, oldCorner);
-      append(around, cellTriangles(ringAround(solved, cells), oldCorner));
+      TriangleMesh around = region.oldCells;
+      append(around, region.oldRing);
       oldSurface.emplace(around);
     }
     std::vector<std::size_t> far;
     double step = 0;
     for (const double s : {1.0, 0.5, 0.25, 0.125}) {
       const Moved moved =
-          measureMove(image, solved, s, cells, *oldSurface, figures, s == 1.0 ? &far : nullptr,
+          measureMove(image, solved, s, region, *oldSurface, figures, s == 1.0 ? &far : nullptr,
                       0.5 * kHausdorffTolerance * figures.diagonal);
       // Within the tolerance, and no edge longer than the longest it replaces.
       if (moved.rms <= kCheckedShare * kRmsTolerance &&

@@ -100,12 +100,10 @@ ParameterField emptyField(const SampleGrid& grid, int stride) {
   return f;
 }
 
-ParameterField finer(const ParameterField& coarse, const std::vector<std::uint8_t>& free) {
+ParameterField finer(const ParameterField& coarse) {
   ParameterField fine = emptyField(coarse.grid, coarse.stride / 2);
-  fine.free = free;
   for (int j = 0; j < fine.rows; ++j)
     for (int i = 0; i < fine.columns; ++i) {
-      if (!free.empty() && !free[fine.index(i, j)]) continue;
       const int ci = i / 2, cj = j / 2;
       const double fx = (i % 2) * 0.5, fy = (j % 2) * 0.5;
       const auto at = [&](int a, int b) {

@@ -49,9 +49,8 @@ ParameterField emptyField(const SampleGrid& grid, int stride);
 
 /// The field on the lattice twice as fine: each offset interpolated bilinearly from the coarse
 /// lattice's (through the torus's periods; a sheet's boundary samples from its boundary's, so
-/// they stay on it). `free` (empty: all) marks the fine samples that may move; the others get
-/// zero offsets.
-ParameterField finer(const ParameterField& coarse, const std::vector<std::uint8_t>& free);
+/// they stay on it). Every fine sample may move.
+ParameterField finer(const ParameterField& coarse);
 
 /// `sweeps` Jacobi sweeps of the length-squared-weighted neighbour centre over the field's free
 /// samples: each moves a step toward its row's neighbours' weighted centre along i and its
