@@ -67,7 +67,7 @@ layout(location = 2) out vec4 o_feature;
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 positions = texelFetch(u_positions, t, 0);
-  BrushInput b = brushInputAt(t, positions);
+  BrushInput b = brushInputAt(identifiedTexel(t), positions);
 #if defined(BRUSH_IN_PLACE)
   if (b.weight == 0.0) discard; // the targets are the layers: nothing to write, nothing to sample
 #endif
@@ -93,7 +93,7 @@ out vec4 o_value;
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 value = texelFetch(u_layer, t, 0);
-  BrushInput b = brushInputAt(t, value);
+  BrushInput b = brushInputAt(identifiedTexel(t), value);
 #if defined(BRUSH_IN_PLACE)
   if (b.weight == 0.0) discard;
 #endif

@@ -100,6 +100,15 @@ ivec3 wrapTexelTurn(ivec2 p) {
 
 ivec2 wrapTexel(ivec2 p) { return wrapTexelTurn(p).xy; }
 
+// The texel that t is identified with and that the brush computes as: a torus's column W and
+// row H are its column and row 0, so a pass over both lines writes them equal (bit for bit: the
+// same inputs, the same arithmetic) and needs no seaming pass after it.
+ivec2 identifiedTexel(ivec2 t) {
+  if (u_topology != 1) return t;
+  ivec2 c = gridCells();
+  return ivec2(t.x == c.x ? 0 : t.x, t.y == c.y ? 0 : t.y);
+}
+
 #if defined(BRUSH_REPARAMETERIZE)
 // A reparameterize pass (manifest "pass": "reparameterize"): each sample's offset so far in this
 // dab, in samples, in its own frame of the image. The sample now stands where the layers from

@@ -97,6 +97,18 @@ void BM_DabOverBall(benchmark::State& state) {
   const auto radiusOf = [&](const Shape& s) {
     return static_cast<float>(samples * std::sqrt(s.area / (double(n) * n)));
   };
+  // Samples within the dab's sphere, the work that is the same per sample on every topology (a
+  // rect's samples outside it cost little): a thin tube inside the sphere has more of its rects'
+  // samples within it than the ball's curved cap.
+  const auto within = [&](const Shape& s) {
+    const core::Vec3f c = s.image.at(s.centre).xyz();
+    const float r = radiusOf(s);
+    std::size_t count = 0;
+    for (const core::Vec4f& p : s.image.texels())
+      count += core::dot(p.xyz() - c, p.xyz() - c) <= r * r;
+    return double(count);
+  };
+  state.counters["within_ratio"] = within(other) / within(ball);
   double ballSeconds = 0, otherSeconds = 0;
   std::size_t ballTexels = 0, otherTexels = 0;
   int k = 0;

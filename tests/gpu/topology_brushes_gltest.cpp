@@ -308,6 +308,46 @@ private slots:
     QVERIFY((top[1] == core::TexelRect{32, 64, 16, 1}));
   }
 
+  // A torus's pass writes column W and row H itself (no seaming pass after it): given tiles on
+  // row 0 and column 0 only, as a caller may pass them, the dab still writes their twins on row H
+  // and column W, bit for bit, for a brush written in place (push), one that reads neighbours
+  // (smooth), one measured in the image (paint-uv) and a reparameterize one (relax: seamed by
+  // the pass of its own).
+  void aTorusPassWritesTheTwinsItsTilesMiss_data() {
+    QTest::addColumn<QString>("brush");
+    for (const char* brush : {"push", "smooth", "paint-uv", "relax", "inflate"})
+      QTest::addRow("%s", brush) << QString(brush);
+  }
+  void aTorusPassWritesTheTwinsItsTilesMiss() {
+    QFETCH(QString, brush);
+    const int w = 128, h = 64;
+    GpuDocument document(core::makeDocument(core::makeTorus(core::Torus{0.7f, 0.3f}, w, h)));
+    const auto before = snapshot(document);
+    Dab dab;
+    dab.centreTexel = {0, 0};
+    const core::GeometryImage& image = document.document().positions;
+    dab.centre = image.at(dab.centreTexel).xyz();
+    dab.centreNormal = core::normalize(dab.centre - core::Vec3f{0.7f, 0.0f, 0.0f});
+    dab.radius = 0.15f;
+    dab.strength = 0.5f;
+    // The first 16 × 16 tile alone, and a strip along row 0: none holds row 64 or column 128.
+    const std::vector<core::TexelRect> tiles{{0, 0, 16, 16}, {16, 0, 16, 16}, {112, 0, 16, 16}};
+    try {
+      engine_->dab(document, brush.toStdString(), dab, tiles);
+    } catch (const std::exception& e) {
+      QFAIL(e.what());
+    }
+    const auto now = snapshot(document);
+    QVERIFY(!sameBits(before, now));
+    QVERIFY(torusSeamsExact(now, w, h));
+    QCOMPARE(core::maxSeamGap(document.document().positions), 0.0f);
+    // The twins changed with their samples: row 64 over the tiles' columns, column 128's rows.
+    QVERIFY(changedAt(before, now, w + 1, 8, h, h + 1) ==
+            changedAt(before, now, w + 1, 8, 0, h + 1));
+    QVERIFY(changedAt(before, now, w + 1, w, 4, h + 1) ==
+            changedAt(before, now, w + 1, 0, 4, h + 1));
+  }
+
   // A dab centred on column 0 (= column W) of a 128 × 64 torus changes the samples on both sides
   // of the wrap exactly as the same dab half way round the ring (column W/2, away from the wrap)
   // changes the samples there: the torus of revolution is the same surface turned by π about z,

@@ -186,7 +186,16 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     result.texels += static_cast<std::size_t>(t.width) * t.height;
   result.seams = seamRuns(result.tiles, side, rows, document.topology());
 
-  const std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  // A torus's pass computes column W and row H as columns and rows 0 (identifiedTexel), so it
+  // writes identified samples equal itself when it runs over both: its rects take the partners
+  // the tiles miss, and no seaming pass follows (on a CPU rasterizer that pass, its target
+  // switch and copies cost 13 % of a dab across the wrap). A ball's partners are mirrored, not
+  // translated: its seams stay a pass of their own, as do a reparameterize brush's.
+  const bool seamsInPass = document.topology() == core::Topology::Torus && !brush.reparameterize();
+  std::vector<core::TexelRect> rects = core::mergeRects(result.tiles);
+  if (seamsInPass)
+    for (const core::TexelRect& part : detail::uncoveredParts(result.seams, result.tiles))
+      rects.push_back(part);
   std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
   changedRects.insert(changedRects.end(), result.seams.begin(), result.seams.end());
   if (brush.manifest.needsStrokeStart()) {
@@ -229,7 +238,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       for (const core::TexelRect& r : rects)
         detail::copyRect(document.scratch(layer), document.texture(layer), r);
     }
-    if (!result.seams.empty())
+    if (!result.seams.empty() && !seamsInPass)
       detail::seamLayer(seamProgram_, rectPass_, document, layer, result.seams);
     checkGlError("brush " + brushId + " pass");
 

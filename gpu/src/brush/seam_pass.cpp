@@ -35,6 +35,37 @@ void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
     copyRect(document.scratch(layer), document.texture(layer), run);
 }
 
+std::vector<core::TexelRect> uncoveredParts(const std::vector<core::TexelRect>& runs,
+                                            const std::vector<core::TexelRect>& tiles) {
+  std::vector<core::TexelRect> parts;
+  for (const core::TexelRect& run : runs) {
+    const bool row = run.height == 1;
+    const int length = row ? run.width : run.height;
+    std::vector<std::uint8_t> covered(static_cast<std::size_t>(length), 0);
+    for (const core::TexelRect& t : tiles) {
+      if (row ? (run.y < t.y || run.y >= t.y + t.height) : (run.x < t.x || run.x >= t.x + t.width))
+        continue;
+      const int from = row ? t.x - run.x : t.y - run.y;
+      const int to = from + (row ? t.width : t.height);
+      for (int k = std::max(0, from); k < std::min(length, to); ++k)
+        covered[static_cast<std::size_t>(k)] = 1;
+    }
+    for (int k = 0; k < length;) {
+      if (covered[static_cast<std::size_t>(k)]) {
+        ++k;
+        continue;
+      }
+      int stop = k;
+      while (stop < length && !covered[static_cast<std::size_t>(stop)])
+        ++stop;
+      parts.push_back(row ? core::TexelRect{run.x + k, run.y, stop - k, 1}
+                          : core::TexelRect{run.x, run.y + k, 1, stop - k});
+      k = stop;
+    }
+  }
+  return parts;
+}
+
 } // namespace detail
 
 // Runs along the border lines (the rows whole, the columns without their corners). Elsewhere

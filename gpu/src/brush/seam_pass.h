@@ -18,4 +18,9 @@ Program seamProgram();
 void seamLayer(const Program& seam, RectPass& rectPass, GpuDocument& document,
                core::EditLayer layer, const std::vector<core::TexelRect>& runs);
 
+/// The parts of runs (seamRuns: one sample thick) that no rectangle of tiles holds, in
+/// rectangles disjoint from tiles and from each other.
+std::vector<core::TexelRect> uncoveredParts(const std::vector<core::TexelRect>& runs,
+                                            const std::vector<core::TexelRect>& tiles);
+
 } // namespace octaclay::gpu::detail
