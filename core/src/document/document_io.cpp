@@ -460,7 +460,7 @@ void writeDocumentWithAttributes(const Document& document, const fs::path& path,
   Imf::Header header = documentPartHeader(document, options);
   if (addAttributes) addAttributes(header);
 
-  if (detail::rawLinesApply(header, true)) {
+  if (detail::rawLinesApply(header)) {
     // OpenEXR writes the header (and a zero offset table) into memory; the lines are made and
     // written on every core, each at its place (raw_exr_lines).
     detail::ExrMemoryStream head;

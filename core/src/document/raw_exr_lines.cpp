@@ -236,6 +236,41 @@ std::size_t codeRle(const char* in, std::size_t size, std::vector<char>& scratch
   return static_cast<std::size_t>(write - out);
 }
 
+// OpenEXR's RLE decoding of one line (ImfRleCompressor's uncompress, codeRle undone): the runs
+// expanded into exactly size bytes at out, the differences summed back, the even and odd halves
+// interleaved. False, out partly written, when the code does not expand to exactly size bytes.
+bool decodeRle(const char* in, std::size_t inSize, std::size_t size, std::vector<char>& scratch,
+               char* out) {
+  scratch.resize(size);
+  auto* t = reinterpret_cast<unsigned char*>(scratch.data());
+  std::size_t at = 0, written = 0;
+  while (at < inSize) {
+    const auto code = static_cast<signed char>(in[at++]);
+    if (code < 0) { // a stretch of -code bytes as they are
+      const auto count = static_cast<std::size_t>(-static_cast<int>(code));
+      if (count > inSize - at || count > size - written) return false;
+      std::memcpy(t + written, in + at, count);
+      at += count;
+      written += count;
+    } else { // code + 1 copies of the next byte
+      const auto count = static_cast<std::size_t>(code) + 1;
+      if (at == inSize || count > size - written) return false;
+      std::memset(t + written, static_cast<unsigned char>(in[at++]), count);
+      written += count;
+    }
+  }
+  if (written != size) return false;
+  for (std::size_t k = 1; k < size; ++k)
+    t[k] = static_cast<unsigned char>(int(t[k - 1]) + int(t[k]) - 128);
+  const char* t1 = scratch.data();
+  const char* t2 = scratch.data() + (size + 1) / 2;
+  for (std::size_t k = 0; k < size; k += 2)
+    out[k] = *t1++;
+  for (std::size_t k = 1; k < size; k += 2)
+    out[k] = *t2++;
+  return true;
+}
+
 void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t stride) {
   if (!isHalf) {
     for (int i = 0; i < width; ++i)
@@ -254,10 +289,10 @@ void convertRow(bool isHalf, const char* from, int width, float* to, std::size_t
 
 } // namespace
 
-bool rawLinesApply(const Imf::Header& header, bool writing) {
+bool rawLinesApply(const Imf::Header& header) {
   // A multi-part file's parts name their type: scan lines only.
-  const bool coded = writing && header.compression() == Imf::RLE_COMPRESSION;
-  if ((header.compression() != Imf::NO_COMPRESSION && !coded) ||
+  const Imf::Compression compression = header.compression();
+  if ((compression != Imf::NO_COMPRESSION && compression != Imf::RLE_COMPRESSION) ||
       std::endian::native != std::endian::little ||
       (header.hasType() && header.type() != Imf::SCANLINEIMAGE) || header.hasTileDescription())
     return false;
@@ -290,38 +325,80 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
   std::vector<std::uint64_t> offsets(static_cast<std::size_t>(rows));
   if (!file.readAt(tableStart, {reinterpret_cast<char*>(offsets.data()), offsets.size() * 8}))
     refuse(path, "truncated: the file ends inside its line offset table");
+  // An RLE line's chunk is as long as its code: at most the line itself (a code no shorter is
+  // stored as the line), and it ends where the next chunk starts or the file does.
+  const bool rle = header.compression() == Imf::RLE_COMPRESSION;
   for (int j = 0; j < rows; ++j)
     if (offsets[static_cast<std::size_t>(j)] < tableStart + offsets.size() * 8 ||
         offsets[static_cast<std::size_t>(j)] > file.size() ||
-        file.size() - offsets[static_cast<std::size_t>(j)] < prefix + layout.bytes)
+        file.size() - offsets[static_cast<std::size_t>(j)] < prefix + (rle ? 1 : layout.bytes))
       refuse(path, "corrupt: line " + std::to_string(j) + "'s offset is outside the file");
+  std::vector<std::uint64_t> ends(offsets.size(), file.size());
+  if (rle) {
+    std::vector<std::uint64_t> sorted = offsets;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t j = 0; j < offsets.size(); ++j) {
+      const auto next = std::upper_bound(sorted.begin(), sorted.end(), offsets[j]);
+      if (next != sorted.end()) ends[j] = *next;
+    }
+  }
 
   // The bytes of a line that hold the rows wanted: [0, upTo) of its pixel data.
   std::size_t positionsEnd = 0;
   for (const ChannelRow& row : layout.rows)
     if (row.position >= 0)
       positionsEnd = std::max(positionsEnd, row.offset + side * std::size_t(4));
-  const auto readLine = [&](int j, std::size_t upTo, std::vector<char>& line) {
-    line.resize(prefix + upTo);
-    if (!file.readAt(offsets[static_cast<std::size_t>(j)], line))
+  // A band's buffers: the chunk as read, and an RLE line decoded.
+  struct LineBuffers {
+    std::vector<char> chunk, decoded, scratch;
+  };
+  const auto readLine = [&](int j, std::size_t upTo, LineBuffers& buffers) -> const char* {
+    const std::uint64_t offset = offsets[static_cast<std::size_t>(j)];
+    std::vector<char>& line = buffers.chunk;
+    line.resize(
+        rle ? static_cast<std::size_t>(std::min<std::uint64_t>(
+                  prefix + layout.bytes,
+                  std::max<std::uint64_t>(ends[static_cast<std::size_t>(j)] - offset, prefix)))
+            : prefix + upTo);
+    if (!file.readAt(offset, line))
       refuse(path, "truncated: line " + std::to_string(j) + " ends early");
     std::int32_t number = part, y, bytes;
     if (part >= 0) std::memcpy(&number, line.data(), 4);
     std::memcpy(&y, line.data() + prefix - kChunkHeader, 4);
     std::memcpy(&bytes, line.data() + prefix - kChunkHeader + 4, 4);
-    if (number != part || y != firstY + j || static_cast<std::size_t>(bytes) != layout.bytes)
+    const bool sized = rle ? bytes > 0 && static_cast<std::size_t>(bytes) <= layout.bytes
+                           : static_cast<std::size_t>(bytes) == layout.bytes;
+    if (number != part || y != firstY + j || !sized)
       refuse(path, "corrupt: line " + std::to_string(j) +
                        (part >= 0 ? " of part " + std::to_string(part) : std::string()) +
                        " holds line " + std::to_string(y) +
                        (part >= 0 ? " of part " + std::to_string(number) : std::string()) + " of " +
-                       std::to_string(bytes) + " bytes where " + std::to_string(layout.bytes) +
-                       " were expected");
-    return line.data() + prefix;
+                       std::to_string(bytes) + " bytes where " + (rle ? "at most " : "") +
+                       std::to_string(layout.bytes) + " were expected");
+    if (!rle) return line.data() + prefix;
+    const auto coded = static_cast<std::size_t>(bytes);
+    if (coded > line.size() - prefix) {
+      // The next chunk starts inside this one's code (chunks out of order or overlapping).
+      if (offset + prefix + coded > file.size())
+        refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+      line.resize(prefix + coded);
+      if (!file.readAt(offset, line))
+        refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+    }
+    if (coded == layout.bytes) return line.data() + prefix; // stored as it is
+    buffers.decoded.resize(layout.bytes);
+    if (!decodeRle(line.data() + prefix, coded, layout.bytes, buffers.scratch,
+                   buffers.decoded.data()))
+      refuse(path, "corrupt: line " + std::to_string(j) +
+                       (part >= 0 ? " of part " + std::to_string(part) : std::string()) +
+                       "'s RLE code does not expand to its " + std::to_string(layout.bytes) +
+                       " bytes");
+    return buffers.decoded.data();
   };
 
   // Positions, and whether each layer's rows repeat line 0's first sample (a uniform layer).
   const std::size_t wanted = layers.empty() ? positionsEnd : layout.bytes;
-  std::vector<char> first;
+  LineBuffers first;
   const char* line0 = readLine(0, layout.bytes, first);
   std::vector<char> uniformLine(layout.bytes);
   for (const ChannelRow& row : layout.rows) {
@@ -331,13 +408,23 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
   }
   float* positionFloats = reinterpret_cast<float*>(positions.texels().data()); // xyzw per texel
   std::vector<std::atomic<bool>> painted(layers.size());
+  // RLE lines decoded once: a painted layer's second pass reads them kept (up to 512 MiB; a
+  // larger RLE document decodes its lines again).
+  constexpr std::size_t kKeptBytes = std::size_t{512} << 20;
+  const std::unique_ptr<char[]> kept(
+      rle && !layers.empty() && layout.bytes * static_cast<std::size_t>(rows) <= kKeptBytes
+          ? new char[layout.bytes * static_cast<std::size_t>(rows)]
+          : nullptr);
   parallelRowsOrThrow(
       rows,
       [&](int rowBegin, int rowEnd) {
-        std::vector<char> buffer;
+        LineBuffers buffer;
         std::vector<bool> differs(layers.size(), false);
         for (int j = rowBegin; j < rowEnd; ++j) {
           const char* line = readLine(j, wanted, buffer);
+          if (kept)
+            std::memcpy(kept.get() + layout.bytes * static_cast<std::size_t>(j), line,
+                        layout.bytes);
           for (const ChannelRow& row : layout.rows)
             if (row.position >= 0)
               convertRow(row.half, line + row.offset, side,
@@ -370,9 +457,10 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
     parallelRowsOrThrow(
         rows,
         [&](int rowBegin, int rowEnd) {
-          std::vector<char> buffer;
+          LineBuffers buffer;
           for (int j = rowBegin; j < rowEnd; ++j) {
-            const char* line = readLine(j, layout.bytes, buffer);
+            const char* line = kept ? kept.get() + layout.bytes * static_cast<std::size_t>(j)
+                                    : readLine(j, layout.bytes, buffer);
             for (const ChannelRow& row : layout.rows)
               if (row.layer == static_cast<int>(k))
                 convertRow(row.half, line + row.offset, side,

@@ -1,10 +1,10 @@
 #pragma once
 
-// An uncompressed single-part scanline OpenEXR document read and written line by line on every
+// An uncompressed or RLE scanline OpenEXR document read and written line by line on every
 // core, straight between the file and the document (pread / pwrite at each line's offset),
 // instead of through OpenEXR's frame buffers, which copy and convert byte by byte on the calling
-// thread. An uncompressed line is a chunk: int32 y, int32 byte count, then each channel's row in
-// the header's (alphabetical) channel order, little-endian, float or half.
+// thread. A line is a chunk: int32 y, int32 byte count, then each channel's row in the header's
+// (alphabetical) channel order, little-endian, float or half (RLE: those bytes coded).
 //
 // OpenEXR still reads and checks the header and the offset table (InputFile, isComplete()) and
 // writes the header: these files are the ones it reads and writes itself.
@@ -21,11 +21,11 @@
 
 namespace octaclay::core::detail {
 
-/// Whether header's pixels can go this way: no compression, scanlines (a single-part file or a
-/// part of a multi-part one), every channel sampled 1×1, float or half, and this machine
-/// little-endian. Any W × H. writing: RLE too (writeRawParts codes it as OpenEXR does; reading
-/// RLE stays OpenEXR's).
-bool rawLinesApply(const Imf::Header& header, bool writing = false);
+/// Whether header's pixels can go this way: no compression or RLE (coded and decoded as
+/// OpenEXR's RleCompressor does, a line whose code is no smaller stored as it is), scanlines (a
+/// single-part file or a part of a multi-part one), every channel sampled 1×1, float or half,
+/// and this machine little-endian. Any W × H.
+bool rawLinesApply(const Imf::Header& header);
 
 /// Reads the positions (xyz; w stays 0) and, when layers is not empty, the layers the file holds
 /// among them (each kept uniform, a fill value, while every texel equals the first; else full
@@ -33,8 +33,9 @@ bool rawLinesApply(const Imf::Header& header, bool writing = false);
 /// a single-part file; a multi-part file's part 0 then). positions is (W+1)×(H+1) already.
 /// Returns false, having read nothing, when the headers are too long to find the offset table
 /// (1 MiB: OpenEXR's frame buffers then read it). Every chunk's part number, line and byte
-/// count are checked. Throws Error(InvalidInput) naming the line for a short
-/// read or a chunk that is not the expected line, Error(Io) when the file cannot be opened.
+/// count are checked, and an RLE line's code must expand to exactly the line. Throws
+/// Error(InvalidInput) naming the line for a short read, a chunk that is not the expected line or
+/// a code that does not decode, Error(Io) when the file cannot be opened.
 bool readRawLines(const std::filesystem::path& path, const Imf::Header& header,
                   GeometryImage& positions, const std::vector<Layer*>& layers, int part = -1);
 

@@ -291,7 +291,7 @@ void writeScene(const Scene& scene, const fs::path& path, const DocumentWriteOpt
     headers.back().setType(Imf::SCANLINEIMAGE);
   }
   if (std::all_of(headers.begin(), headers.end(),
-                  [](const Imf::Header& header) { return detail::rawLinesApply(header, true); })) {
+                  [](const Imf::Header& header) { return detail::rawLinesApply(header); })) {
     // OpenEXR writes the headers and the offset tables' places into memory; every part's lines
     // are made on every core and written at their places (raw_exr_lines), as for one object.
     detail::ExrMemoryStream head;

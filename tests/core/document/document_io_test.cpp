@@ -367,6 +367,54 @@ void DocumentIoTest::rawLinesAreOpenExrsOwn() {
     QCOMPARE(a.size(), b.size());
     QVERIFY2(a == b, "the RLE document differs from OpenEXR's own file");
     QVERIFY(positionsBitExact(doc.positions, readDocument(rle).positions));
+    // Decoded by raw_exr_lines too: OpenEXR's own file reads back, painted feature and all.
+    Document back;
+    NO_THROW(back = readDocument(rleTheirs));
+    QVERIFY(positionsBitExact(doc.positions, back.positions));
+    QVERIFY(!back.feature.uniform() && back.diffuse.uniform() && back.hasMask);
+    const QString kept = compareLayer(doc.feature, back.feature, n);
+    QVERIFY2(kept.isEmpty(), qPrintable(kept));
+
+    // Line 100's code made to lie: its byte count one short (the code then ends inside a run or
+    // expands short), its first code byte a run that overruns the line, and a count past the
+    // line's size: each refused with the line named, nothing read past the chunk.
+    std::size_t at = std::string::npos;
+    std::int32_t coded = 0;
+    for (std::size_t k = 0; k + 8 < a.size() && at == std::string::npos; ++k) {
+      std::int32_t y, size, nextY;
+      std::memcpy(&y, a.data() + k, 4);
+      std::memcpy(&size, a.data() + k + 4, 4);
+      if (y != 100 || size <= 0 || k + 8 + std::size_t(size) + 4 > a.size()) continue;
+      std::memcpy(&nextY, a.data() + k + 8 + std::size_t(size), 4);
+      if (nextY == 101) at = k, coded = size;
+    }
+    QVERIFY(at != std::string::npos);
+    std::int32_t lineBytes = 0;
+    for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it)
+      lineBytes += side * (it.channel().type == Imf::HALF ? 2 : 4);
+    QVERIFY(coded < lineBytes); // coded, not stored
+    const auto refused = [&](const char* what, const std::function<void(std::string&)>& lie) {
+      std::string bytes = a;
+      lie(bytes);
+      const fs::path bad = path("rle-lying.exr");
+      writeBytes(bad, bytes);
+      const QString why =
+          expectError([&] { readDocument(bad); }, ErrorKind::InvalidInput, "line 100");
+      QVERIFY2(why.isEmpty(), qPrintable(QString(what) + ": " + why));
+    };
+    refused("a byte short", [&](std::string& bytes) {
+      const std::int32_t shorter = coded - 1;
+      std::memcpy(bytes.data() + at + 4, &shorter, 4);
+    });
+    refused("a run past the line", [&](std::string& bytes) {
+      for (std::size_t k = 0; k + 1 < std::size_t(coded); k += 2) { // every code a 128-byte run
+        bytes[at + 8 + k] = char(127);
+      }
+    });
+    refused("a count past the line", [&](std::string& bytes) {
+      const std::int32_t longer = lineBytes + 1;
+      std::memcpy(bytes.data() + at + 4, &longer, 4);
+    });
   }
 
   const fs::path ours = path("raw-ours.exr");
