@@ -1,7 +1,9 @@
 // Writes decode_fuzzer's seed corpus into the folder given: for every codec and setting a
 // valid stream of a small sphere-like image (N = 8, 16; 1, 3 and 4 channels), and valid .ocz
-// documents and scenes, each prefixed as fuzz_input.h reads them.
+// documents and scenes, each prefixed as fuzz_input.h reads them. A second folder, when given,
+// gets document_lines_fuzzer's: the lines of its documents, each variant's byte first.
 
+#include "document_lines_input.h"
 #include "fuzz_input.h"
 
 #include "octaclay/core/codec/compressed_document.h"
@@ -43,9 +45,20 @@ core::FloatImage imageOf(const core::GeometryImage& g, int channels) {
 } // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: make_fuzz_corpus <folder>\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: make_fuzz_corpus <folder> [<lines folder>]\n");
     return 2;
+  }
+  if (argc == 3) {
+    const std::filesystem::path lines = argv[2];
+    std::filesystem::create_directories(lines);
+    for (std::uint8_t variant = 0; variant < 4; ++variant) {
+      const document_lines_input::Template t =
+          document_lines_input::makeTemplate((variant & 1) != 0, lines / "template.exr");
+      const std::uint8_t prefix[1] = {variant};
+      writeSeed(lines, "lines_" + std::to_string(variant), prefix, t.body);
+    }
+    std::filesystem::remove(lines / "template.exr");
   }
   const std::filesystem::path dir = argv[1];
   std::filesystem::create_directories(dir);
