@@ -123,6 +123,38 @@ AabbTree::AabbTree(const TriangleMesh& mesh, unsigned threads) {
   }
 }
 
+void AabbTree::refit(const TriangleMesh& mesh) {
+  for (std::size_t i = 0; i < triangles_.size(); ++i) {
+    const auto& tri = mesh.triangles[ids_[i]];
+    triangles_[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
+  }
+  // Children come after their parent in the array: from the last node back, each box is its
+  // triangles' (a leaf) or its two children's.
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    Node& node = nodes_[k];
+    if (node.count > 0) {
+      const Vec3f& first = triangles_[node.index].a;
+      node.min[0] = node.max[0] = first.x;
+      node.min[1] = node.max[1] = first.y;
+      node.min[2] = node.max[2] = first.z;
+      for (std::uint32_t t = node.index; t < node.index + node.count; ++t)
+        for (const Vec3f& v : {triangles_[t].a, triangles_[t].b, triangles_[t].c}) {
+          const std::array<float, 3> p{v.x, v.y, v.z};
+          for (int c = 0; c < 3; ++c) {
+            node.min[c] = std::min(node.min[c], p[static_cast<std::size_t>(c)]);
+            node.max[c] = std::max(node.max[c], p[static_cast<std::size_t>(c)]);
+          }
+        }
+      continue;
+    }
+    const Node &left = nodes_[k + 1], &right = nodes_[node.index];
+    for (int c = 0; c < 3; ++c) {
+      node.min[c] = std::min(left.min[c], right.min[c]);
+      node.max[c] = std::max(left.max[c], right.max[c]);
+    }
+  }
+}
+
 void AabbTree::build(std::span<BuildItem> items, std::uint32_t first,
                      std::span<const Bounds> bounds, std::vector<Node>& nodes, unsigned threads) {
   const std::size_t node = nodes.size();
