@@ -1,16 +1,18 @@
 #include "octaclay/core/document/image_io.h"
 
+#include "../../module/raster_decoder.h"
 #include "detail/png_codec.h"
 
 #include "octaclay/core/document/atomic_output.h"
 #include "octaclay/core/error.h"
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include <dlfcn.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -67,34 +69,61 @@ RasterImage convertChannels(int width, int height, int have, const Sample& sampl
   return image;
 }
 
+// OpenCV's codecs, loaded on first use (module/raster_decoder.h says why): the module built
+// beside core (OCTACLAY_RASTER_DECODER), else one next to the program or on the library path.
+struct RasterDecoder {
+  decltype(&octaclay_decode_raster) decode = nullptr;
+  decltype(&octaclay_free_raster) free = nullptr;
+  std::string problem; ///< why it could not be loaded
+};
+
+const RasterDecoder& rasterDecoder() {
+  static const RasterDecoder decoder = [] {
+    RasterDecoder d;
+    std::vector<std::string> candidates{OCTACLAY_RASTER_DECODER};
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::string name = std::filesystem::path(OCTACLAY_RASTER_DECODER).filename().string();
+    if (!ec) candidates.push_back((self.parent_path() / name).string());
+    candidates.push_back(name);
+    for (const std::string& candidate : candidates) {
+      void* handle = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!handle) {
+        if (const char* why = ::dlerror(); why && d.problem.empty()) d.problem = why;
+        continue;
+      }
+      d.decode =
+          reinterpret_cast<decltype(d.decode)>(::dlsym(handle, OCTACLAY_DECODE_RASTER_SYMBOL));
+      d.free = reinterpret_cast<decltype(d.free)>(::dlsym(handle, OCTACLAY_FREE_RASTER_SYMBOL));
+      if (d.decode && d.free) return d;
+      d.problem = candidate + " lacks " OCTACLAY_DECODE_RASTER_SYMBOL;
+      d.decode = nullptr;
+      d.free = nullptr;
+    }
+    return d;
+  }();
+  return decoder;
+}
+
 // Formats other than PNG (a mesh's JPEG or TIFF texture) through OpenCV's codecs.
 RasterImage decodeWithOpenCv(const std::vector<std::uint8_t>& bytes,
                              const std::filesystem::path& path, int channels) {
-  cv::Mat raw;
-  try {
-    raw = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    throw Error(ErrorKind::InvalidInput,
-                path.string() + ": not a readable image (" + e.what() + ")");
-  }
-  if (raw.empty())
-    throw Error(ErrorKind::InvalidInput,
-                path.string() + ": not an image (PNG, JPEG, TIFF …) this build can decode");
-  const double scale = raw.depth() == CV_8U ? 1.0 / 255 : raw.depth() == CV_16U ? 1.0 / 65535 : 1.0;
-  cv::Mat converted;
-  raw.convertTo(converted, CV_32F, scale);
-  const int have = converted.channels();
-  if (have != 1 && have != 3 && have != 4)
-    throw Error(ErrorKind::InvalidInput, path.string() + ": an image of " + std::to_string(have) +
-                                             " channels (1, 3 or 4 are read)");
-  if (!converted.isContinuous()) converted = converted.clone();
-  const float* data = converted.ptr<float>(0);
-  // OpenCV keeps colour as BGR(A): swap red and blue while converting.
-  const auto sample = [data, have](std::size_t k) {
-    const std::size_t c = k % have;
-    return have >= 3 && c != 1 && c != 3 ? data[k - c + (2 - c)] : data[k];
-  };
-  return convertChannels(converted.cols, converted.rows, have, sample, channels);
+  const RasterDecoder& decoder = rasterDecoder();
+  if (!decoder.decode)
+    throw Error(ErrorKind::Io, path.string() +
+                                   ": an image other than PNG needs OpenCV's decoders, which "
+                                   "could not be loaded (" +
+                                   decoder.problem + ")");
+  int width = 0, height = 0, have = 0;
+  float* pixels = nullptr;
+  std::array<char, 512> message{};
+  if (decoder.decode(bytes.data(), bytes.size(), &width, &height, &have, &pixels, message.data(),
+                     message.size()) != 0)
+    throw Error(ErrorKind::InvalidInput, path.string() + ": " + message.data());
+  const std::unique_ptr<float, decltype(decoder.free)> owned(pixels, decoder.free);
+  const float* data = owned.get();
+  const auto sample = [data](std::size_t k) { return data[k]; };
+  return convertChannels(width, height, have, sample, channels);
 }
 
 } // namespace
