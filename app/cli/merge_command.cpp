@@ -98,7 +98,7 @@ Command addMergeCommand(CLI::App& app) {
               if (object.locked)
                 badArgument("cannot merge object '" + name +
                             "': it is locked (unlock it in the modeller's Objects list)");
-              parts.push_back({&object.document, placement(object.transform)});
+              parts.push_back({&object.document, placement(object.transform), name});
               if (opt->size == 0) n = std::max(n, object.document.size());
             }
             const std::string mergedName = opt->name.empty() ? names.front() : opt->name;

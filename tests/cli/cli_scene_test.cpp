@@ -294,6 +294,11 @@ void CliSceneTest::mergeMakesOneClosedObject() {
                  path("apart.exr"));
   EXPECT_FAILURE(kUsage, path("apart.exr"), "merge", scene_, "--objects", "Leg,Tail", "-o",
                  path("apart.exr"));
+  // A ground plane through the body: a sheet encloses nothing, refused by name (exit 3).
+  RUN_JSON(ground, "add", scene_, "--shape", "plane", "--name", "Ground", "--size", "16", "--scale",
+           "3", "-o", path("grounded.exr"), "--json");
+  EXPECT_FAILURE(kInvalidInput, path("apart.exr"), "merge", path("grounded.exr"), "--objects",
+                 "body,Ground", "-o", path("apart.exr"));
 }
 
 void CliSceneTest::importOfSeveralPartsMakesObjects() {

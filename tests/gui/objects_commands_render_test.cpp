@@ -17,6 +17,7 @@
 #include "octaclay/core/document/document_mirror.h"
 #include "octaclay/core/document/scene_io.h"
 #include "octaclay/core/geometry/base_shapes.h"
+#include "octaclay/core/geometry/sheet.h"
 
 #include <QAction>
 #include <QApplication>
@@ -575,6 +576,20 @@ void ObjectsCommandsRenderTest::cancelledMergeChangesNothing() {
   QVERIFY(modeller.setObjectVisible(2, true));
   QCOMPARE(merger->chosenObjects({1}), std::vector<int>({0, 1, 2}));
   QCOMPARE(merger->chosenObjects({0, 2}), std::vector<int>({0, 2}));
+  // A ground plane shown under them is not taken (a sheet encloses nothing); chosen by name
+  // with another, the merge refuses it, naming it, and nothing changes.
+  QVERIFY(modeller.addObject({"Ground",
+                              core::makeDocument(core::makeSheet(core::Sheet::Square, 16)),
+                              {{0, -1, 0}, {}, {3, 3, 3}},
+                              true,
+                              false}));
+  QCOMPARE(modeller.objectCount(), 4);
+  QCOMPARE(merger->chosenObjects({1}), std::vector<int>({0, 1, 2}));
+  const auto objectsBefore = modeller.objectCount();
+  QVERIFY(!merger->merge({0, 3}));
+  QVERIFY2(merger->lastRefusal().contains("'Ground' is a plane"),
+           qPrintable(merger->lastRefusal()));
+  QCOMPARE(modeller.objectCount(), objectsBefore);
 }
 
 void ObjectsCommandsRenderTest::draggingARowReordersTheScene() {

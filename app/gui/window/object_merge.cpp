@@ -33,9 +33,18 @@ ObjectMerge::ObjectMerge(Parts parts, QObject* parent)
 
 std::vector<int> ObjectMerge::chosenObjects(const std::vector<int>& selected) const {
   if (selected.size() >= 2) return selected;
+  // Every shown object but the planes and discs (a sheet encloses nothing: a ground plate under
+  // the figure stays as it is).
   std::vector<int> visible;
-  for (int k = 0; k < parts_.modeller->objectCount(); ++k)
-    if (parts_.modeller->objectAt(k).visible) visible.push_back(k);
+  const Modeller& modeller = *parts_.modeller;
+  for (int k = 0; k < modeller.objectCount(); ++k) {
+    const core::SceneObject& object = modeller.objectAt(k);
+    // The edited object's image is the session's (its scene copy may lag behind).
+    const core::Document& document =
+        k == modeller.activeObject() ? modeller.document() : object.document;
+    if (object.visible && document.positions.topology() != core::Topology::Plane)
+      visible.push_back(k);
+  }
   return visible;
 }
 
@@ -70,6 +79,7 @@ bool ObjectMerge::merge(const std::vector<int>& chosen, std::shared_ptr<TaskCont
   // never touches the modeller.
   auto documents = std::make_shared<std::vector<core::Document>>();
   std::vector<core::PartTransform> placements;
+  std::vector<std::string> names;
   int n = 0;
   for (const int k : objects) {
     const core::SceneObject& object = modeller.objectAt(k);
@@ -80,6 +90,7 @@ bool ObjectMerge::merge(const std::vector<int>& chosen, std::shared_ptr<TaskCont
     }
     documents->push_back(k == modeller.activeObject() ? modeller.document() : object.document);
     placements.push_back(placement(object.transform));
+    names.push_back(object.name);
     n = std::max(n, documents->back().size());
   }
   const std::string name = modeller.objectAt(objects.front()).name;
@@ -95,10 +106,10 @@ bool ObjectMerge::merge(const std::vector<int>& chosen, std::shared_ptr<TaskCont
   const auto before = mark();
   const QString error = runner_.run(
       tr("Merging %1 objects at N = %2…").arg(objects.size()).arg(n),
-      [documents, placements, n, result, control] {
+      [documents, placements, names, n, result, control] {
         std::vector<core::MergePart> parts;
         for (std::size_t k = 0; k < documents->size(); ++k)
-          parts.push_back({&(*documents)[k], placements[k]});
+          parts.push_back({&(*documents)[k], placements[k], names[k]});
         core::MergeOptions options;
         options.size = n;
         *result = core::mergeParts(parts, options, [&control](float done) {

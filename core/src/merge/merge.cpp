@@ -111,8 +111,16 @@ MergeResult mergeParts(std::span<const MergePart> parts, const MergeOptions& opt
     if (!parts[k].document)
       throw Error(ErrorKind::InvalidArgument, "part " + std::to_string(k + 1) + " has no document");
     requireUsableTransform(parts[k].transform, k);
+    const std::string which =
+        parts[k].name.empty() ? "part " + std::to_string(k + 1) : "'" + parts[k].name + "'";
     if (const auto problem = positionsProblem(parts[k].document->positions))
-      throw Error(ErrorKind::InvalidInput, "part " + std::to_string(k + 1) + ": " + *problem);
+      throw Error(ErrorKind::InvalidInput, which + ": " + *problem);
+    // A sheet has no inside: OpenVDB's level set of it is a shell a voxel or two thick, a plate
+    // whose thickness would follow N, not the user.
+    if (parts[k].document->positions.topology() == Topology::Plane)
+      throw Error(ErrorKind::InvalidInput,
+                  which + " is a plane, an open sheet with no inside: merge joins closed objects "
+                          "(balls, capsules and the like; a torus when the union closes no ring)");
   }
   if (!(std::isfinite(options.voxelSize) && options.voxelSize >= 0))
     throw Error(ErrorKind::InvalidArgument, "the voxel size must be a finite number above 0");

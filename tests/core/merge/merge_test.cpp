@@ -9,6 +9,7 @@
 #include "octaclay/core/geometry/capsule.h"
 #include "octaclay/core/geometry/mesh_extraction.h"
 #include "octaclay/core/geometry/seaming.h"
+#include "octaclay/core/geometry/sheet.h"
 #include "octaclay/core/geometry/triangle_mesh.h"
 #include "octaclay/core/measure/stretch.h"
 #include "octaclay/core/merge/merge.h"
@@ -375,6 +376,20 @@ void MergeTest::badArgumentsAreRefused() {
       },
       &kind);
   QVERIFY2(kind == ErrorKind::InvalidInput && contains(message, "part 2"), message.c_str());
+  // A plane or disc encloses nothing: refused by the object's name, whatever it touches (a sheet
+  // through the ball's middle would come out a plate a voxel thick).
+  const Document sheet = makeDocument(makeSheet(Sheet::Square, 32));
+  for (const MergePart& plane : {MergePart{&sheet, {}, "Ground"}, MergePart{&sheet, {}, ""}}) {
+    ErrorKind planeKind{};
+    const std::string why = errorOf(
+        [&] {
+          mergeParts({{{&ball, {}, "Body"}, plane}}, ok);
+        },
+        &planeKind);
+    QVERIFY2(planeKind == ErrorKind::InvalidInput &&
+                 contains(why, plane.name.empty() ? "part 2 is a plane" : "'Ground' is a plane"),
+             why.c_str());
+  }
   // A mirrored part is fine: a mirror duplicate of a leg.
   QCOMPARE(
       mergeParts({{{&ball, PartTransform::fromTrs({0, 0, 0}, {0, 0, 0}, {-1, 1, 1})}}}, ok).euler,

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace octaclay::core {
@@ -30,6 +31,7 @@ struct PartTransform {
 struct MergePart {
   const Document* document = nullptr;
   PartTransform transform;
+  std::string name = {}; ///< the object's, for messages ("part k" when empty)
 };
 
 struct MergeOptions {
@@ -86,7 +88,9 @@ struct MergeResult {
 ///   non-finite entry, a last row other than (0, 0, 0, 1) or a singular 3×3 part, a voxel size
 ///   that is not finite, or one so small that the level set would exceed 2²⁴ voxels across or
 ///   the parts' surface 8192² voxels (the largest document's samples);
-/// - Error(InvalidInput) for a part with non-finite positions; "these objects do not touch"
+/// - Error(InvalidInput) for a part with non-finite positions; a plane or disc (an open sheet
+///   encloses nothing: its voxel shell would be a plate as thick as a voxel, whatever N); "these
+///   objects do not touch"
 ///   when the union has more than one piece (the count named); "the merged surface has genus G
 ///   (Euler characteristic χ) …" when it is not genus 0; when the union's mesh cannot be mapped
 ///   onto the sphere without folds;
