@@ -502,7 +502,7 @@ public:
   std::size_t chunkBytes() const { return chunk_; }
   bool rle() const { return rle_; }
 
-  /// The most bytes appendChunk writes for one line: RLE's worst case, a count byte every 127.
+  /// The most bytes writeChunk writes for one line: RLE's worst case, a count byte every 127.
   std::size_t mostChunkBytes() const { return chunk_ + layout_.bytes / 127 + 2; }
 
   /// Writes line j's chunk at out (room for mostChunkBytes) as OpenEXR writes it: RLE-coded
