@@ -74,8 +74,13 @@ void requireExrMagic(const fs::path& path) {
                                    (fs::exists(path) ? ": permission denied" : ": no such file"));
   unsigned char magic[4] = {};
   in.read(reinterpret_cast<char*>(magic), 4);
-  if (in.gcount() != 4 || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 ||
-      magic[3] != 0x01)
+  const bool read = in.gcount() == 4;
+  // A compressed model (.ocz: "OCZ1") is a common mix-up: say how to open it.
+  if (read && magic[0] == 'O' && magic[1] == 'C' && magic[2] == 'Z' && magic[3] == '1')
+    refuse(path, "a compressed Octaclay model (.ocz), not a document: decompress it first "
+                 "(octaclay-cli decompress " +
+                     path.string() + " -o model.exr), or open it in the modeller");
+  if (!read || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01)
     refuse(path, "not an OpenEXR file (wrong magic number); an Octaclay document is an .exr "
                  "written by octaclay-cli or the modeller");
 }

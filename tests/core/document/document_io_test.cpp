@@ -517,6 +517,11 @@ void DocumentIoTest::notExr() {
   EXPECT_ERROR(readDocumentHeader(p), ErrorKind::InvalidInput, "OpenEXR");
   writeBytes(p, "");
   EXPECT_ERROR(readDocument(p), ErrorKind::InvalidInput, "OpenEXR");
+  // A compressed model given where a document goes: told how to open it.
+  const fs::path ocz = path("model.ocz");
+  writeBytes(ocz, std::string("OCZ1") + std::string(60, '\0'));
+  EXPECT_ERROR(readDocument(ocz), ErrorKind::InvalidInput, "decompress it first");
+  EXPECT_ERROR(readDocumentHeader(ocz), ErrorKind::InvalidInput, ".ocz");
 }
 
 void DocumentIoTest::foreignExr() {
