@@ -6,6 +6,7 @@
 // un-relaxed limb (keep-detail: the largest of its relaxations against the surface its stroke
 // left) and times; beside it push's per-dab cost with keep-detail off and on.
 // Arguments other than --sizes=a,b are ignored (scripts/bench passes benchmark filters to all).
+#include "../keep_detail_clicks.h"
 #include "sculpt_session.h"
 #include "stroke_script.h"
 
@@ -87,26 +88,14 @@ Limb pullLimb(Brushes& b, int n, bool keepDetail) {
   double ms = 0;
   core::SurfaceDistance worst;
   for (int i = 0; i < 15; ++i) {
-    app::StrokeScript s;
-    s.start.brushId = s.start.settings.brushId = "push";
-    s.start.settings.radius = 0.06f;
-    s.start.settings.strength = 1.0f;
-    s.start.settings.keepDetail = keepDetail;
-    s.start.spacing = 1.0f;
-    s.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
+    const app::StrokeScript s = testing::pushClick(0.5f, 0.5f, keepDetail);
     const auto start = Clock::now();
     app::playStroke(session, s);
     glFinish();
     ms += msSince(start);
     if (session.lastRelaxation().tiles.empty()) continue;
     // How far the relaxation moved the surface the stroke left.
-    core::Document stroked = session.document();
-    const core::TileApplier apply = core::applierFor(stroked);
-    for (const core::TileChange& t : session.lastRelaxation().tiles)
-      t.apply(core::TileState::Before, apply);
-    const core::SurfaceDistance d = core::compareSurfaces(
-        core::extractMesh(stroked.positions), core::extractMesh(session.document().positions),
-        {.samplesPerSurface = 200'000});
+    const core::SurfaceDistance d = testing::lastRelaxationMove(session).moved;
     worst.rms = std::max(worst.rms, d.rms);
     worst.hausdorff = std::max(worst.hausdorff, d.hausdorff);
   }

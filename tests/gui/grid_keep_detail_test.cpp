@@ -5,6 +5,7 @@
 // left (0.01 % RMS, 0.1 % Hausdorff of the diagonal); the far half of the ring keeps its bits;
 // each click and its relaxation are one undo step, undone and redone bit for bit.
 #include "../gpu/brush_test_support.h"
+#include "../keep_detail_clicks.h"
 #include "sculpt_session.h"
 #include "stroke_script.h"
 
@@ -112,35 +113,16 @@ private:
     Pull result;
     for (int click = 0; click < 10; ++click) {
       const Snapshot before = snapshot(session.gpuDocument());
-      app::StrokeScript s;
-      s.start.brushId = s.start.settings.brushId = "push";
-      s.start.settings.radius = 0.06f;
-      s.start.settings.strength = 1.0f;
-      s.start.settings.keepDetail = keepDetail;
-      s.start.spacing = 1.0f;
-      s.path = {{u, v}, {u, v}};
-      app::playStroke(session, s);
+      app::playStroke(session, testing::pushClick(u, v, keepDetail));
       if (session.lastRelaxation().tiles.empty()) continue;
       ++result.relaxed;
       // What the click alone left, against what its relaxation made of it.
-      core::Document clicked = session.document();
-      const core::TileApplier apply = core::applierFor(clicked);
-      for (const core::TileChange& t : session.lastRelaxation().tiles)
-        t.apply(core::TileState::Before, apply);
-      const core::SurfaceDistance d = core::compareSurfaces(
-          core::extractMesh(clicked.positions), core::extractMesh(session.document().positions),
-          {.samplesPerSurface = 200'000});
-      result.worstRms = std::max(result.worstRms, d.rms);
-      result.worstHausdorff = std::max(result.worstHausdorff, d.hausdorff);
-      if (torus && !farHalfEqual(clicked.positions, session.document().positions, u))
+      const testing::RelaxationMove move = testing::lastRelaxationMove(session);
+      result.worstRms = std::max(result.worstRms, move.moved.rms);
+      result.worstHausdorff = std::max(result.worstHausdorff, move.moved.hausdorff);
+      if (torus && !farHalfEqual(move.stroked.positions, session.document().positions, u))
         result.farHalfKept = false;
-      const Snapshot after = snapshot(session.gpuDocument());
-      const std::size_t steps = session.history().undoCount();
-      if (!session.undo()) qFatal("nothing to undo");
-      if (!sameBits(snapshot(session.gpuDocument()), before)) qFatal("undo was not bit-exact");
-      if (!session.redo()) qFatal("nothing to redo");
-      if (!sameBits(snapshot(session.gpuDocument()), after)) qFatal("redo was not bit-exact");
-      if (session.history().undoCount() != steps) qFatal("the click was more than one step");
+      if (const char* failed = testing::oneBitExactStep(session, before)) qFatal("%s", failed);
     }
     const core::GeometryImage& image = session.document().positions;
     const int columns = torus ? image.width() : image.side(),

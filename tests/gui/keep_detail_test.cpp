@@ -3,6 +3,7 @@
 // step, and undo / redo give back every layer bit for bit.
 #include "../creature_layout.h"
 #include "../gpu/brush_test_support.h"
+#include "../keep_detail_clicks.h"
 #include "sculpt_session.h"
 
 #include "octaclay/core/geometry/base_shapes.h"
@@ -89,13 +90,7 @@ double KeepDetailTest::pull(bool keepDetail, int clicks, int* relaxedClicks) {
     session.finishStroke();
     if (session.lastRelaxation().tiles.empty()) continue;
     ++*relaxedClicks;
-    const Snapshot after = snapshot(session.gpuDocument());
-    const std::size_t steps = session.history().undoCount();
-    if (!session.undo()) qFatal("nothing to undo");
-    if (!sameBits(snapshot(session.gpuDocument()), before)) qFatal("undo was not bit-exact");
-    if (!session.redo()) qFatal("nothing to redo");
-    if (!sameBits(snapshot(session.gpuDocument()), after)) qFatal("redo was not bit-exact");
-    if (session.history().undoCount() != steps) qFatal("the click was more than one step");
+    if (const char* failed = testing::oneBitExactStep(session, before)) qFatal("%s", failed);
   }
   return core::summarizeStretch(session.document().positions).longestOverMedian;
 }
@@ -129,22 +124,10 @@ void KeepDetailTest::theIssuesLimbStaysWithinTolerance() {
   double worstRms = 0, worstHausdorff = 0;
   int relaxed = 0;
   for (int i = 0; i < 15; ++i) {
-    app::StrokeScript s;
-    s.start.brushId = s.start.settings.brushId = "push";
-    s.start.settings.radius = 0.06f;
-    s.start.settings.strength = 1.0f;
-    s.start.spacing = 1.0f;
-    s.path = {{0.5f, 0.5f}, {0.5f, 0.5f}};
-    app::playStroke(session, s);
+    app::playStroke(session, testing::pushClick(0.5f, 0.5f));
     if (session.lastRelaxation().tiles.empty()) continue;
     ++relaxed;
-    core::Document stroked = session.document();
-    const core::TileApplier apply = core::applierFor(stroked);
-    for (const core::TileChange& t : session.lastRelaxation().tiles)
-      t.apply(core::TileState::Before, apply);
-    const core::SurfaceDistance d = core::compareSurfaces(
-        core::extractMesh(stroked.positions), core::extractMesh(session.document().positions),
-        {.samplesPerSurface = 200'000});
+    const core::SurfaceDistance d = testing::lastRelaxationMove(session).moved;
     worstRms = std::max(worstRms, d.rms);
     worstHausdorff = std::max(worstHausdorff, d.hausdorff);
   }

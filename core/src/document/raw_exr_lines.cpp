@@ -333,8 +333,9 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
         offsets[static_cast<std::size_t>(j)] > file.size() ||
         file.size() - offsets[static_cast<std::size_t>(j)] < prefix + (rle ? 1 : layout.bytes))
       refuse(path, "corrupt: line " + std::to_string(j) + "'s offset is outside the file");
-  std::vector<std::uint64_t> ends(offsets.size(), file.size());
+  std::vector<std::uint64_t> ends; // RLE: where each line's chunk ends at the latest
   if (rle) {
+    ends.assign(offsets.size(), file.size());
     std::vector<std::uint64_t> sorted = offsets;
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t j = 0; j < offsets.size(); ++j) {
