@@ -214,14 +214,16 @@ std::vector<Vec3f> resampledPositions(const Document& document, const std::vecto
                                       const detail::OffsetField& field) {
   const int n = document.size();
   std::vector<Vec3f> out = before;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const auto& d = field.offset[field.index(i, j)];
-      if (d[0] == 0.0f && d[1] == 0.0f) continue;
-      float p[4];
-      detail::resampleTexel(document, field, EditLayer::Positions, i, j, p);
-      out[field.index(i, j)] = {p[0], p[1], p[2]};
-    }
+  detail::parallelRows(n + 1, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin; j < rowEnd; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const auto& d = field.offset[field.index(i, j)];
+        if (d[0] == 0.0f && d[1] == 0.0f) continue;
+        float p[4];
+        detail::resampleTexel(document, field, EditLayer::Positions, i, j, p);
+        out[field.index(i, j)] = {p[0], p[1], p[2]};
+      }
+  });
   return out;
 }
 
@@ -288,15 +290,17 @@ CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
           std::move(cellOf), std::move(tree),    std::move(leafOf)};
 }
 
-// The old surface's triangles with the samples where `after` puts them: the same mesh, cells
-// and leaves, its tree refitted rather than built again (a tenth of the time; the moved side of
-// keep detail's check, over the old side's cells: every cell that may move and its ring).
-CheckSurface movedSurface(const CheckSurface& old, const std::vector<Vec3f>& after) {
-  CheckSurface moved = old;
-  for (std::size_t v = 0; v < moved.mesh.positions.size(); ++v)
-    moved.mesh.positions[v] = after[moved.samples[v]];
-  moved.tree.refit(moved.mesh);
-  return moved;
+// Makes `moved` the old surface's triangles with the samples where `after` puts them: the same
+// mesh, cells and leaves, its tree refitted rather than built again (a tenth of the time; the
+// moved side of keep detail's check, over the old side's cells: every cell that may move and its
+// ring). `moved` is copied from `old` once per relaxation and then only moved again: the copy
+// (some 70 MB for a ridge at N = 1024, most of it fresh pages) cost as much as the refit.
+void moveSurface(const CheckSurface& old, const std::vector<Vec3f>& after,
+                 std::optional<CheckSurface>& moved) {
+  if (!moved) moved.emplace(old);
+  for (std::size_t v = 0; v < moved->mesh.positions.size(); ++v)
+    moved->mesh.positions[v] = after[moved->samples[v]];
+  moved->tree.refit(moved->mesh);
 }
 
 // The points measured on one side: the vertices (every k-th, at most kCheckVertices) and
@@ -448,12 +452,14 @@ CheckSums measureSide(const CheckPoints& from, const CheckSurface& toSide, doubl
 // taken over the whole surface's area). Like evenOut, the move is kept, or scaled back (1/2,
 // 1/4, 1/8: a move that cuts across a sharp feature, a crease's valley or the coarse facets of
 // a limb pulled far in one stroke), or dropped (every offset zero). `old` is the old surface over
-// every cell that may move and the ring around them, its tree built once per relaxation. `far`,
+// every cell that may move and the ring around them, its tree built once per relaxation; `moved`
+// the moved side's surface, kept from try to try (moveSurface). `far`,
 // when given, gets the samples whose points the full move takes farther than half the Hausdorff
 // tolerance (where it cuts: a pulled limb's tip). Returns the step kept (0: none).
 double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& before,
                            const SurfaceFigures& figures, const CheckSurface& old,
-                           detail::OffsetField& field, std::vector<std::size_t>* far = nullptr) {
+                           std::optional<CheckSurface>& moved, detail::OffsetField& field,
+                           std::vector<std::size_t>* far = nullptr) {
   // Collecting where the full move cuts: only the full move is tried (the caller holds those
   // samples and solves again rather than scale the move down).
   const std::vector<double> steps =
@@ -513,11 +519,14 @@ double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& b
     double hausdorff = skip,
            rms = std::sqrt(skippedSquares / std::max(movedArea, 1e-30)) * std::sqrt(share);
     if (any) {
-      const CheckSurface moved = movedSurface(old, after);
-      const CheckPoints oldPoints = checkPoints(old, cells, 1);
-      const CheckPoints newPoints = checkPoints(moved, cells, 2);
+      // The old side's points are drawn on a thread of their own while the moved side is made.
+      std::future<CheckPoints> oldDrawn =
+          std::async(std::launch::async, [&] { return checkPoints(old, cells, 1); });
+      moveSurface(old, after, moved);
+      const CheckPoints newPoints = checkPoints(*moved, cells, 2);
+      const CheckPoints oldPoints = oldDrawn.get();
       std::vector<std::size_t>* cuts = step == 1.0 ? far : nullptr;
-      const CheckSums a = measureSide(oldPoints, moved, limit, fail, moves, skip, cuts);
+      const CheckSums a = measureSide(oldPoints, *moved, limit, fail, moves, skip, cuts);
       if (!cuts && a.maxSquared > fail * fail) continue;
       const CheckSums b = measureSide(newPoints, old, limit, fail, moves, skip, cuts);
       hausdorff = std::max(skip, std::sqrt(std::max(a.maxSquared, b.maxSquared)));
@@ -630,7 +639,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   // Built on its own thread while the first solve runs (neither reads what the other writes).
   std::future<CheckSurface> oldSurface =
       std::async(std::launch::async, [&] { return checkSurface(n, was, region); });
-  std::optional<CheckSurface> old;
+  std::optional<CheckSurface> old, movedScratch;
   double bestStep = 0;
   std::vector<Sample> held;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
@@ -641,7 +650,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
                          kKeepDetailDonorEdge * median, true, {});
     if (!old) old.emplace(oldSurface.get());
     std::vector<std::size_t> far;
-    const double step = keepWithinTolerance(document, was, figures, *old, tried,
+    const double step = keepWithinTolerance(document, was, figures, *old, movedScratch, tried,
                                             attempt < kHoldAttempts ? &far : nullptr);
     if (step > bestStep) {
       best = std::move(tried);
