@@ -373,15 +373,11 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   StretchSummary summary;
   const int n = image.size();
   if (n < 2) return summary;
-  // One pass over the texel rows on every core: row j's edges (N to the right, none from the last
-  // column; then N+1 down, none from the last row; a non-finite one is -1 and left out), the
-  // areas of the cells of row j (kept for row j+1) and the vertex areas of row j from the cells
-  // above and below it: measureVertices' figures without its per-cell and stretch arrays.
-  const std::size_t perRow = 2 * static_cast<std::size_t>(n) + 1;
-  // Left uninitialized: every value is written below, on the core that first touches its pages
-  // (zero-filling them first was 0.8 GB of single-threaded page faults and memset at N = 8192).
-  const std::size_t edgeCount = perRow * static_cast<std::size_t>(n + 1);
-  auto edges = std::make_unique_for_overwrite<float[]>(edgeCount);
+  // One pass over the texel rows on every core: the areas of the cells of row j (kept for row
+  // j+1) and the vertex areas of row j from the cells above and below it: measureVertices'
+  // figures without its per-cell and stretch arrays. Left uninitialized: every value is written
+  // below, on the core that first touches its pages (zero-filling them first was 0.8 GB of
+  // single-threaded page faults and memset at N = 8192).
   const auto areaValues = std::make_unique_for_overwrite<float[]>(image.texelCount());
   const std::span<float> area(areaValues.get(), image.texelCount());
   std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
@@ -460,23 +456,29 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
                           below.data(), iBegin, std::min(iEnd, n), areaRow);
         vertexArea(n);
       }
-      float* row = edges.get() + perRow * static_cast<std::size_t>(j);
-      const Vec4f* here = &image.at(0, j);
-      edgeLengthRun(here, here + 1, n, row);
-      if (j < n) {
-        edgeLengthRun(here, &image.at(0, j + 1), n + 1, row + n);
-      } else {
-        std::fill(row + n, row + perRow, -1.0f);
-      }
       std::swap(above, below);
     }
   });
   uniteIdentified(n, area, nullptr);
 
-  const detail::FloatRanks edgeRanks =
-      detail::selectFloatRanks({edges.get(), edgeCount}, [](std::size_t count) {
+  // Row j's edges: N to the right (none from the last column), then N+1 down (none from the last
+  // row); a non-finite one is -1 and left out. Made again for each pass of the ranks rather than
+  // kept (134 million floats at N = 8192: 537 MB of fresh pages).
+  const detail::FloatRanks edgeRanks = detail::selectFloatRanksOf(
+      n + 1,
+      [&](int j, auto&& visit) {
+        std::vector<float> row(2 * static_cast<std::size_t>(n) + 1);
+        const Vec4f* here = &image.at(0, j);
+        edgeLengthRun(here, here + 1, n, row.data());
+        const int count = j < n ? 2 * n + 1 : n;
+        if (j < n) edgeLengthRun(here, &image.at(0, j + 1), n + 1, row.data() + n);
+        for (int k = 0; k < count; ++k)
+          visit(row[static_cast<std::size_t>(k)]);
+      },
+      [](std::size_t count) {
         return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
-      });
+      },
+      16);
   if (edgeRanks.count > 0) {
     summary.longestEdge = edgeRanks.largest;
     summary.medianEdge = edgeRanks.at[0];
@@ -485,7 +487,6 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
       summary.p99OverMedian = edgeRanks.at[1] / summary.medianEdge;
     }
   }
-  edges.reset();
 
   double total = 0;
   for (double a : rowArea)
