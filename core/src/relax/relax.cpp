@@ -293,8 +293,9 @@ CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
 // Makes `moved` the old surface's triangles with the samples where `after` puts them: the same
 // mesh, cells and leaves, its tree refitted rather than built again (a tenth of the time; the
 // moved side of keep detail's check, over the old side's cells: every cell that may move and its
-// ring). `moved` is copied from `old` once per relaxation and then only moved again: the copy
-// (some 70 MB for a ridge at N = 1024, most of it fresh pages) cost as much as the refit.
+// ring). `moved` is copied from `old` once per relaxation (beside the first solve) and then only
+// moved again: the copy (some 70 MB for a ridge at N = 1024, most of it fresh pages) cost as
+// much as the refit.
 void moveSurface(const CheckSurface& old, const std::vector<Vec3f>& after,
                  std::optional<CheckSurface>& moved) {
   if (!moved) moved.emplace(old);
@@ -632,14 +633,25 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
   // The old surface over every cell with a corner that may move, and the ring around them (where
   // a moved point's nearest old point may lie): built once for every try.
   const std::vector<std::uint8_t> region = detail::cellsNearFree(n, unsolved.free);
-  std::vector<Vec3f> was(document.positions.texels().size());
-  for (std::size_t k = 0; k < was.size(); ++k)
-    was[k] = document.positions.texels()[k].xyz();
-  const SurfaceFigures figures{diagonal(document.positions), surfaceArea(n, was)};
-  // Built on its own thread while the first solve runs (neither reads what the other writes).
-  std::future<CheckSurface> oldSurface =
-      std::async(std::launch::async, [&] { return checkSurface(n, was, region); });
-  std::optional<CheckSurface> old, movedScratch;
+  // The check's inputs are made on their own thread while the first solve runs (neither reads
+  // what the other writes): the positions as points, the surface's figures, the old surface and
+  // its copy that each try moves (moveSurface).
+  struct CheckInputs {
+    std::vector<Vec3f> was;
+    SurfaceFigures figures;
+    CheckSurface old;
+    std::optional<CheckSurface> moved;
+  };
+  std::future<CheckInputs> madeInputs = std::async(std::launch::async, [&] {
+    std::vector<Vec3f> was(document.positions.texels().size());
+    for (std::size_t k = 0; k < was.size(); ++k)
+      was[k] = document.positions.texels()[k].xyz();
+    const SurfaceFigures figures{diagonal(document.positions), surfaceArea(n, was)};
+    CheckSurface old = checkSurface(n, was, region);
+    std::optional<CheckSurface> moved(old);
+    return CheckInputs{std::move(was), figures, std::move(old), std::move(moved)};
+  });
+  std::optional<CheckInputs> inputs;
   double bestStep = 0;
   std::vector<Sample> held;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
@@ -648,10 +660,11 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
       tried.pin(s);
     detail::solveOffsets(document.positions, tried, fineIterations(options),
                          kKeepDetailDonorEdge * median, true, {});
-    if (!old) old.emplace(oldSurface.get());
+    if (!inputs) inputs.emplace(madeInputs.get());
     std::vector<std::size_t> far;
-    const double step = keepWithinTolerance(document, was, figures, *old, movedScratch, tried,
-                                            attempt < kHoldAttempts ? &far : nullptr);
+    const double step =
+        keepWithinTolerance(document, inputs->was, inputs->figures, inputs->old, inputs->moved,
+                            tried, attempt < kHoldAttempts ? &far : nullptr);
     if (step > bestStep) {
       best = std::move(tried);
       bestStep = step;
