@@ -244,13 +244,24 @@ private:
       for (std::size_t k = 0; k < 3; ++k)
         if (pin.movable[k]) ww += pin.weights[k] * pin.weights[k];
       if (!(ww > 0)) continue;
+      bool border = false;
       for (std::size_t k = 0; k < 3; ++k)
-        if (pin.movable[k])
+        if (pin.movable[k]) {
           for (std::size_t c = 0; c < 2; ++c)
             offsets_[pin.canonicals[k]][c] -=
                 pin.signs[k] * static_cast<float>(pin.weights[k] * r[c] / ww);
-      copyToIdentified(); // before the next pin reads a border corner
+          border = border || onBorder(pin.canonicals[k]);
+        }
+      // Before the next pin reads a border corner; a pin inside changed no copy's canonical
+      // sample (every copy already equals its own, so the pass would write the same values).
+      if (border) copyToIdentified();
     }
+  }
+
+  bool onBorder(std::size_t at) const {
+    const std::size_t side = static_cast<std::size_t>(m_) + 1;
+    const std::size_t i = at % side, j = at / side;
+    return i == 0 || j == 0 || i + 1 == side || j + 1 == side;
   }
 
   // Puts back to `before` the corners of each pin that no longer holds; true if any changed.
