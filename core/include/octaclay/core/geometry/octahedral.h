@@ -31,17 +31,26 @@ Vec3f octahedralDirection(int n, int i, int j);
 /// y = 0) have two or four such points; one of them is returned.
 std::array<double, 2> octahedralSquarePoint(Vec3f direction);
 
-/// The grid sample (0 ≤ i, j ≤ n) that integer position s stands for in the octahedral tiling of
-/// the plane. Works for any int position (many periods away too); identity inside the grid.
-Sample wrap(int n, Sample s);
-
 /// wrap() and the symmetry of the tiling that takes the grid sample back to s: a translation,
 /// or a half-turn (a 180° rotation, which negates offsets measured at the grid sample).
 struct OrientedSample {
   Sample sample;
   bool halfTurn = false;
 };
-OrientedSample wrapOriented(int n, Sample s);
+/// wrapOriented() of a sample outside the grid.
+OrientedSample wrapOrientedOutside(int n, Sample s);
+/// Inline, so the relaxation's sweeps and every located grid point pay no call for the samples
+/// inside the grid (nearly all): they are themselves.
+inline OrientedSample wrapOriented(int n, Sample s) {
+  if (s.i >= 0 && s.j >= 0 && s.i <= n && s.j <= n) return {s, false};
+  return wrapOrientedOutside(n, s);
+}
+
+/// The grid sample (0 ≤ i, j ≤ n) that integer position s stands for in the octahedral tiling of
+/// the plane. Works for any int position (many periods away too); identity inside the grid.
+inline Sample wrap(int n, Sample s) {
+  return wrapOriented(n, s).sample;
+}
 
 /// The one representative of the samples identified with grid sample s (corners → (0,0); a side
 /// sample → the one in the side's first half). Precondition: s inside the grid.
