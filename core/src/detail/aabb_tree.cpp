@@ -250,6 +250,19 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLe
     return sum;
   };
 
+  const auto cornerBoxDistanceSquared = [&](const Triangle& t) {
+    double sum = 0;
+    const float a[3] = {t.a.x, t.a.y, t.a.z}, b[3] = {t.b.x, t.b.y, t.b.z},
+                c[3] = {t.c.x, t.c.y, t.c.z};
+    for (int k = 0; k < 3; ++k) {
+      const double below = double(std::min({a[k], b[k], c[k]})) - point[k];
+      const double above = point[k] - double(std::max({a[k], b[k], c[k]}));
+      const double gap = std::max({below, above, 0.0});
+      sum += gap * gap;
+    }
+    return sum;
+  };
+
   // Median splits keep the depth below 32, and each level pushes at most one entry.
   struct Pending {
     std::uint32_t node;
@@ -268,6 +281,12 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLe
       const Node& node = nodes_[current];
       if (node.count > 0) {
         for (std::uint32_t t = node.index; t < node.index + node.count; ++t) {
+          // The hint was measured first, and a triangle whose corners' box lies no nearer than
+          // the best cannot do better: neither changes what is found (only a nearer one does).
+          // The box's distance is taken a billionth short, far beyond both figures' rounding.
+          if (t == hint ||
+              !(cornerBoxDistanceSquared(triangles_[t]) * (1 - 1e-9) < best.distanceSquared))
+            continue;
           const double d = triangleDistanceSquared(p, t);
           if (d < best.distanceSquared) best = {d, t};
         }
