@@ -239,28 +239,26 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLe
   if (hint < triangles_.size()) best = {triangleDistanceSquared(p, hint), hint};
 
   const double point[3] = {p.x, p.y, p.z};
-  const auto boxDistanceSquared = [&](const Node& node) {
+  // The squared distance from p to the box [lo, hi].
+  const auto boxDistanceSquared = [&](const float* lo, const float* hi) {
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
-      const double below = static_cast<double>(node.min[k]) - point[k];
-      const double above = point[k] - static_cast<double>(node.max[k]);
+      const double below = static_cast<double>(lo[k]) - point[k];
+      const double above = point[k] - static_cast<double>(hi[k]);
       const double gap = std::max({below, above, 0.0});
       sum += gap * gap;
     }
     return sum;
   };
-
+  const auto nodeDistanceSquared = [&](const Node& node) {
+    return boxDistanceSquared(node.min, node.max);
+  };
   const auto cornerBoxDistanceSquared = [&](const Triangle& t) {
-    double sum = 0;
-    const float a[3] = {t.a.x, t.a.y, t.a.z}, b[3] = {t.b.x, t.b.y, t.b.z},
-                c[3] = {t.c.x, t.c.y, t.c.z};
-    for (int k = 0; k < 3; ++k) {
-      const double below = double(std::min({a[k], b[k], c[k]})) - point[k];
-      const double above = point[k] - double(std::max({a[k], b[k], c[k]}));
-      const double gap = std::max({below, above, 0.0});
-      sum += gap * gap;
-    }
-    return sum;
+    const float lo[3] = {std::min({t.a.x, t.b.x, t.c.x}), std::min({t.a.y, t.b.y, t.c.y}),
+                         std::min({t.a.z, t.b.z, t.c.z})};
+    const float hi[3] = {std::max({t.a.x, t.b.x, t.c.x}), std::max({t.a.y, t.b.y, t.c.y}),
+                         std::max({t.a.z, t.b.z, t.c.z})};
+    return boxDistanceSquared(lo, hi);
   };
 
   // Median splits keep the depth below 32, and each level pushes at most one entry.
@@ -270,7 +268,7 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLe
   };
   std::array<Pending, 64> stack;
   std::size_t pending = 0;
-  if (boxDistanceSquared(nodes_[0]) < best.distanceSquared) stack[pending++] = {0, 0.0};
+  if (nodeDistanceSquared(nodes_[0]) < best.distanceSquared) stack[pending++] = {0, 0.0};
 
   std::uint32_t leaves = 0;
   while (pending > 0) {
@@ -298,8 +296,8 @@ AabbTree::Hit AabbTree::closest(Vec3d p, std::uint32_t hint, std::uint32_t maxLe
         break;
       }
       std::uint32_t nearChild = current + 1, farChild = node.index;
-      double nearDistance = boxDistanceSquared(nodes_[nearChild]);
-      double farDistance = boxDistanceSquared(nodes_[farChild]);
+      double nearDistance = nodeDistanceSquared(nodes_[nearChild]);
+      double farDistance = nodeDistanceSquared(nodes_[farChild]);
       if (farDistance < nearDistance) {
         std::swap(nearChild, farChild);
         std::swap(nearDistance, farDistance);

@@ -353,6 +353,12 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
   struct LineBuffers {
     std::vector<char> chunk, decoded, scratch;
   };
+  const auto whichLine = [&](int j) {
+    return "line " + std::to_string(j) + (part >= 0 ? " of part " + std::to_string(part) : "");
+  };
+  const auto endsEarly = [&](int j) {
+    refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+  };
   const auto readLine = [&](int j, std::size_t upTo, LineBuffers& buffers) -> const char* {
     const std::uint64_t offset = offsets[static_cast<std::size_t>(j)];
     std::vector<char>& line = buffers.chunk;
@@ -361,8 +367,7 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
                   prefix + layout.bytes,
                   std::max<std::uint64_t>(ends[static_cast<std::size_t>(j)] - offset, prefix)))
             : prefix + upTo);
-    if (!file.readAt(offset, line))
-      refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+    if (!file.readAt(offset, line)) endsEarly(j);
     std::int32_t number = part, y, bytes;
     if (part >= 0) std::memcpy(&number, line.data(), 4);
     std::memcpy(&y, line.data() + prefix - kChunkHeader, 4);
@@ -370,9 +375,7 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
     const bool sized = rle ? bytes > 0 && static_cast<std::size_t>(bytes) <= layout.bytes
                            : static_cast<std::size_t>(bytes) == layout.bytes;
     if (number != part || y != firstY + j || !sized)
-      refuse(path, "corrupt: line " + std::to_string(j) +
-                       (part >= 0 ? " of part " + std::to_string(part) : std::string()) +
-                       " holds line " + std::to_string(y) +
+      refuse(path, "corrupt: " + whichLine(j) + " holds line " + std::to_string(y) +
                        (part >= 0 ? " of part " + std::to_string(number) : std::string()) + " of " +
                        std::to_string(bytes) + " bytes where " + (rle ? "at most " : "") +
                        std::to_string(layout.bytes) + " were expected");
@@ -380,20 +383,16 @@ bool readRawLines(const fs::path& path, const Imf::Header& header, GeometryImage
     const auto coded = static_cast<std::size_t>(bytes);
     if (coded > line.size() - prefix) {
       // The next chunk starts inside this one's code (chunks out of order or overlapping).
-      if (offset + prefix + coded > file.size())
-        refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+      if (offset + prefix + coded > file.size()) endsEarly(j);
       line.resize(prefix + coded);
-      if (!file.readAt(offset, line))
-        refuse(path, "truncated: line " + std::to_string(j) + " ends early");
+      if (!file.readAt(offset, line)) endsEarly(j);
     }
     if (coded == layout.bytes) return line.data() + prefix; // stored as it is
     buffers.decoded.resize(layout.bytes);
     if (!decodeRle(line.data() + prefix, coded, layout.bytes, buffers.scratch,
                    buffers.decoded.data()))
-      refuse(path, "corrupt: line " + std::to_string(j) +
-                       (part >= 0 ? " of part " + std::to_string(part) : std::string()) +
-                       "'s RLE code does not expand to its " + std::to_string(layout.bytes) +
-                       " bytes");
+      refuse(path, "corrupt: " + whichLine(j) + "'s RLE code does not expand to its " +
+                       std::to_string(layout.bytes) + " bytes");
     return buffers.decoded.data();
   };
 

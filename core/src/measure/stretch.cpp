@@ -467,7 +467,8 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   const detail::FloatRanks edgeRanks = detail::selectFloatRanksOf(
       n + 1,
       [&](int j, auto&& visit) {
-        std::vector<float> row(2 * static_cast<std::size_t>(n) + 1);
+        thread_local std::vector<float> row; // each pass's threads make rows one at a time
+        row.resize(2 * static_cast<std::size_t>(n) + 1);
         const Vec4f* here = &image.at(0, j);
         edgeLengthRun(here, here + 1, n, row.data());
         const int count = j < n ? 2 * n + 1 : n;

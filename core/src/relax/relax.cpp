@@ -290,18 +290,15 @@ CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
           std::move(cellOf), std::move(tree),    std::move(leafOf)};
 }
 
-// Makes `moved` the old surface's triangles with the samples where `after` puts them: the same
-// mesh, cells and leaves, its tree refitted rather than built again (a tenth of the time; the
+// Puts the samples of `moved`, a copy of the old surface (its mesh, cells and leaves), where
+// `after` puts them, and refits its tree rather than building it again (a tenth of the time; the
 // moved side of keep detail's check, over the old side's cells: every cell that may move and its
-// ring). `moved` is copied from `old` once per relaxation (beside the first solve) and then only
-// moved again: the copy (some 70 MB for a ridge at N = 1024, most of it fresh pages) cost as
-// much as the refit.
-void moveSurface(const CheckSurface& old, const std::vector<Vec3f>& after,
-                 std::optional<CheckSurface>& moved) {
-  if (!moved) moved.emplace(old);
-  for (std::size_t v = 0; v < moved->mesh.positions.size(); ++v)
-    moved->mesh.positions[v] = after[moved->samples[v]];
-  moved->tree.refit(moved->mesh);
+// ring). The copy is made once per relaxation, beside the first solve: made at each try (some
+// 70 MB for a ridge at N = 1024, most of it fresh pages) it cost as much as the refit.
+void moveSurface(const std::vector<Vec3f>& after, CheckSurface& moved) {
+  for (std::size_t v = 0; v < moved.mesh.positions.size(); ++v)
+    moved.mesh.positions[v] = after[moved.samples[v]];
+  moved.tree.refit(moved.mesh);
 }
 
 // The points measured on one side: the vertices (every k-th, at most kCheckVertices) and
@@ -459,7 +456,7 @@ CheckSums measureSide(const CheckPoints& from, const CheckSurface& toSide, doubl
 // tolerance (where it cuts: a pulled limb's tip). Returns the step kept (0: none).
 double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& before,
                            const SurfaceFigures& figures, const CheckSurface& old,
-                           std::optional<CheckSurface>& moved, detail::OffsetField& field,
+                           CheckSurface& moved, detail::OffsetField& field,
                            std::vector<std::size_t>* far = nullptr) {
   // Collecting where the full move cuts: only the full move is tried (the caller holds those
   // samples and solves again rather than scale the move down).
@@ -523,11 +520,11 @@ double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& b
       // The old side's points are drawn on a thread of their own while the moved side is made.
       std::future<CheckPoints> oldDrawn =
           std::async(std::launch::async, [&] { return checkPoints(old, cells, 1); });
-      moveSurface(old, after, moved);
-      const CheckPoints newPoints = checkPoints(*moved, cells, 2);
+      moveSurface(after, moved);
+      const CheckPoints newPoints = checkPoints(moved, cells, 2);
       const CheckPoints oldPoints = oldDrawn.get();
       std::vector<std::size_t>* cuts = step == 1.0 ? far : nullptr;
-      const CheckSums a = measureSide(oldPoints, *moved, limit, fail, moves, skip, cuts);
+      const CheckSums a = measureSide(oldPoints, moved, limit, fail, moves, skip, cuts);
       if (!cuts && a.maxSquared > fail * fail) continue;
       const CheckSums b = measureSide(newPoints, old, limit, fail, moves, skip, cuts);
       hausdorff = std::max(skip, std::sqrt(std::max(a.maxSquared, b.maxSquared)));
@@ -640,7 +637,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
     std::vector<Vec3f> was;
     SurfaceFigures figures;
     CheckSurface old;
-    std::optional<CheckSurface> moved;
+    CheckSurface moved;
   };
   std::future<CheckInputs> madeInputs = std::async(std::launch::async, [&] {
     std::vector<Vec3f> was(document.positions.texels().size());
@@ -648,7 +645,7 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
       was[k] = document.positions.texels()[k].xyz();
     const SurfaceFigures figures{diagonal(document.positions), surfaceArea(n, was)};
     CheckSurface old = checkSurface(n, was, region);
-    std::optional<CheckSurface> moved(old);
+    CheckSurface moved = old;
     return CheckInputs{std::move(was), figures, std::move(old), std::move(moved)};
   });
   std::optional<CheckInputs> inputs;
