@@ -357,24 +357,35 @@ void StrokesTest::gpuTileBoundsEqualTheMirrors() {
 
 // A dab's area normal: the GPU's reduction (where the driver is a real GPU) against the CPU's loop
 // (a software rasterizer's), on a ball at two N and on a torus, each after strokes, around
-// points off-centre, on the image's corners and on its seams, at two radii: the same triangles
+// points off-centre, on the image's corners and on its seams, at two radii, and on a ball far
+// smaller and far larger than a unit and away from the origin: the same triangles
 // counted and the same sum up to float rounding (the GPU sums per quarter of a tile).
 void StrokesTest::areaSumOnTheGpuEqualsTheCpus() {
   struct Case {
     const char* name;
     core::GeometryImage image;
+    float scale = 1; ///< of the model, and so of the strokes' radius
   };
   std::vector<Case> cases;
   for (int n : {64, 256})
     cases.push_back({"ball", core::makeBaseShape(core::BaseShape::Blob, n)});
   const core::Torus torus;
   cases.push_back({"torus", core::makeTorus(torus, 128, core::torusHeight(torus, 128))});
+  // A thousandth and a thousand times the size, three sizes away from the origin: the CPU sums a
+  // tile well inside the sphere by its border, about the tile's first corner.
+  for (const float scale : {1e-3f, 1e3f}) {
+    core::GeometryImage image = core::makeBaseShape(core::BaseShape::Blob, 128);
+    for (core::Vec4f& t : image.texels())
+      t = {t.x * scale + 3 * scale, t.y * scale - 3 * scale, t.z * scale + 3 * scale, t.w};
+    cases.push_back({"ball off the origin", std::move(image), scale});
+  }
   int compared = 0;
   for (const Case& c : cases) {
     GpuDocument document(core::makeDocument(c.image));
     for (const char* brush : {"inflate", "push"})
-      strokeAlongPath(*engine_, document, manifest(brush),
-                      strokeOf(brush, {{0.1f, 0.5f}, {0.5f, 0.9f}, {0.98f, 0.02f}}, 0.3f, 0.6f));
+      strokeAlongPath(
+          *engine_, document, manifest(brush),
+          strokeOf(brush, {{0.1f, 0.5f}, {0.5f, 0.9f}, {0.98f, 0.02f}}, 0.3f * c.scale, 0.6f));
     const core::GeometryImage& positions = document.document().positions;
     const core::TileBounds& bounds = document.bounds();
     const int w = positions.width(), h = positions.height();
@@ -408,7 +419,7 @@ void StrokesTest::areaSumOnTheGpuEqualsTheCpus() {
         ++compared;
       }
   }
-  QCOMPARE(compared, 36);
+  QCOMPARE(compared, 60);
 }
 
 // Where positions are deferred (a real GPU) the dabs read only the mirror's regions they sync:
