@@ -43,6 +43,18 @@ double distanceSquared(Vec3d p, Vec3d q) {
   return dot(p - q, p - q);
 }
 
+// The squared distance from p to the nearest of mesh's triangles, each measured: what a tree's
+// query must find.
+double bruteForceDistanceSquared(const TriangleMesh& mesh, Vec3d p) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [a, b, c] : mesh.triangles) {
+    const Vec3d q = detail::closestPointOnTriangle(
+        p, Vec3d(mesh.positions[a]), Vec3d(mesh.positions[b]), Vec3d(mesh.positions[c]));
+    nearest = std::min(nearest, distanceSquared(p, q));
+  }
+  return nearest;
+}
+
 } // namespace
 
 class SurfaceDistanceTest : public QObject {
@@ -113,12 +125,7 @@ void SurfaceDistanceTest::treeMatchesBruteForce() {
   std::uint32_t hint = detail::AabbTree::noTriangle;
   for (int i = 0; i < 500; ++i) {
     const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
-    double expected = std::numeric_limits<double>::infinity();
-    for (const auto& [a, b, c] : mesh.triangles) {
-      const Vec3d q = detail::closestPointOnTriangle(
-          p, Vec3d(mesh.positions[a]), Vec3d(mesh.positions[b]), Vec3d(mesh.positions[c]));
-      expected = std::min(expected, distanceSquared(p, q));
-    }
+    const double expected = bruteForceDistanceSquared(mesh, p);
     const detail::AabbTree::Hit cold = tree.closest(p);
     const detail::AabbTree::Hit warm = tree.closest(p, hint);
     hint = warm.triangle;
@@ -147,12 +154,7 @@ void SurfaceDistanceTest::aRefittedTreeMatchesBruteForce() {
   std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
   for (int i = 0; i < 500; ++i) {
     const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
-    double expected = std::numeric_limits<double>::infinity();
-    for (const auto& [a, b, c] : after.triangles) {
-      const Vec3d q = detail::closestPointOnTriangle(
-          p, Vec3d(after.positions[a]), Vec3d(after.positions[b]), Vec3d(after.positions[c]));
-      expected = std::min(expected, distanceSquared(p, q));
-    }
+    const double expected = bruteForceDistanceSquared(after, p);
     const detail::AabbTree::Hit hit = tree.closest(p);
     QVERIFY(std::abs(hit.distanceSquared - expected) <= 1e-12 * expected);
     QVERIFY(std::abs(rebuilt.closest(p).distanceSquared - expected) <= 1e-12 * expected);
