@@ -123,6 +123,124 @@ AabbTree::AabbTree(const TriangleMesh& mesh, unsigned threads) {
   }
 }
 
+AabbTree::AabbTree(const TriangleMesh& mesh, std::span<const std::uint32_t> order,
+                   std::span<const std::uint32_t> blockStarts) {
+  const std::size_t count = order.size(), blocks = blockStarts.size();
+  assert(count == mesh.triangles.size() && count < noTriangle);
+  assert(count == 0 || (blocks > 0 && blockStarts[0] == 0));
+  if (count == 0) return;
+  const auto blockEnd = [&](std::size_t b) {
+    return b + 1 < blocks ? std::size_t(blockStarts[b + 1]) : count;
+  };
+  std::vector<BuildItem> items(blocks);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    assert(blockStarts[b] < blockEnd(b));
+    const Vec3f& first = mesh.positions[mesh.triangles[order[blockStarts[b]]][0]];
+    std::array<float, 3> low{first.x, first.y, first.z}, high = low;
+    for (std::size_t t = blockStarts[b]; t < blockEnd(b); ++t)
+      for (const std::uint32_t v : mesh.triangles[order[t]]) {
+        const Vec3f& p = mesh.positions[v];
+        const std::array<float, 3> q{p.x, p.y, p.z};
+        for (std::size_t k = 0; k < 3; ++k) {
+          low[k] = std::min(low[k], q[k]);
+          high[k] = std::max(high[k], q[k]);
+        }
+      }
+    for (std::size_t k = 0; k < 3; ++k)
+      items[b].centroid[k] = 0.5f * (low[k] + high[k]);
+    items[b].id = static_cast<std::uint32_t>(b);
+  }
+  splitAtMedians(items);
+
+  // The triangles block after block in the split order; each block's range kept in its order.
+  triangles_.resize(count);
+  ids_.resize(count);
+  std::vector<std::uint32_t> firstOf(blocks), countOf(blocks);
+  std::uint32_t at = 0;
+  for (std::size_t p = 0; p < blocks; ++p) {
+    const std::size_t b = items[p].id;
+    firstOf[p] = at;
+    countOf[p] = static_cast<std::uint32_t>(blockEnd(b) - blockStarts[b]);
+    for (std::size_t t = blockStarts[b]; t < blockEnd(b); ++t, ++at) {
+      const auto& tri = mesh.triangles[order[t]];
+      triangles_[at] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
+      ids_[at] = order[t];
+    }
+  }
+  nodes_.reserve(count / 2);
+  // The nodes over the blocks [lo, hi) of the split order, split where splitAtMedians did.
+  const auto emit = [&](auto&& self, std::size_t lo, std::size_t hi) -> std::uint32_t {
+    if (hi - lo == 1) return buildInOrder(firstOf[lo], countOf[lo]);
+    const auto node = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.push_back({});
+    const std::size_t middle = lo + (hi - lo) / 2;
+    self(self, lo, middle);
+    Node made{};
+    made.index = self(self, middle, hi);
+    const Node &left = nodes_[node + 1], &right = nodes_[made.index];
+    for (int c = 0; c < 3; ++c) {
+      made.min[c] = std::min(left.min[c], right.min[c]);
+      made.max[c] = std::max(left.max[c], right.max[c]);
+    }
+    nodes_[node] = made;
+    return node;
+  };
+  emit(emit, 0, blocks);
+}
+
+void AabbTree::splitAtMedians(std::span<BuildItem> items) {
+  if (items.size() <= 1) return;
+  std::array<float, 3> low = items[0].centroid, high = items[0].centroid;
+  for (const BuildItem& item : items)
+    for (std::size_t k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], item.centroid[k]);
+      high[k] = std::max(high[k], item.centroid[k]);
+    }
+  std::size_t axis = 0;
+  for (std::size_t k = 1; k < 3; ++k)
+    if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
+  const std::size_t middle = items.size() / 2;
+  std::nth_element(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(middle), items.end(),
+                   [axis](const BuildItem& l, const BuildItem& r) {
+                     return l.centroid[axis] < r.centroid[axis];
+                   });
+  splitAtMedians(items.first(middle));
+  splitAtMedians(items.subspan(middle));
+}
+
+std::uint32_t AabbTree::buildInOrder(std::uint32_t first, std::uint32_t count) {
+  const auto node = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.push_back({});
+  Node made{};
+  if (count <= leafSize) {
+    const Vec3f& corner = triangles_[first].a;
+    made.min[0] = made.max[0] = corner.x;
+    made.min[1] = made.max[1] = corner.y;
+    made.min[2] = made.max[2] = corner.z;
+    for (std::uint32_t t = first; t < first + count; ++t)
+      for (const Vec3f& v : {triangles_[t].a, triangles_[t].b, triangles_[t].c}) {
+        const std::array<float, 3> p{v.x, v.y, v.z};
+        for (std::size_t c = 0; c < 3; ++c) {
+          made.min[c] = std::min(made.min[c], p[c]);
+          made.max[c] = std::max(made.max[c], p[c]);
+        }
+      }
+    made.count = count;
+    made.index = first;
+  } else {
+    const std::uint32_t half = count / 2;
+    buildInOrder(first, half);
+    made.index = buildInOrder(first + half, count - half);
+    const Node &left = nodes_[node + 1], &right = nodes_[made.index];
+    for (int c = 0; c < 3; ++c) {
+      made.min[c] = std::min(left.min[c], right.min[c]);
+      made.max[c] = std::max(left.max[c], right.max[c]);
+    }
+  }
+  nodes_[node] = made;
+  return node;
+}
+
 void AabbTree::refit(const TriangleMesh& mesh) {
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     const auto& tri = mesh.triangles[ids_[i]];

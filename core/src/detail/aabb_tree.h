@@ -63,6 +63,16 @@ public:
   /// referenced positions are finite (compareSurfaces checks this and throws before building).
   explicit AabbTree(const TriangleMesh& mesh, unsigned threads = 0);
 
+  /// Builds the tree over the mesh's triangles taken in `order` (every triangle index once), cut
+  /// into blocks where `blockStarts` says (ascending, the first 0): the median splits above over
+  /// the blocks' boxes, and inside a block its range of the order split at the middle, in
+  /// O(T + B log B) on one thread. For a geometry image's cells in tiles, each tile's cells in
+  /// Z order, the blocks are quadtrees of the grid and the tree is built in a fraction of the
+  /// time with about as quick queries (as exact; a whole image's cells in Z order as one block
+  /// would make loose boxes where a sheet folds: twice the leaves per query on a ridge).
+  AabbTree(const TriangleMesh& mesh, std::span<const std::uint32_t> order,
+           std::span<const std::uint32_t> blockStarts);
+
   /// The closest point of the mesh to p, by branch and bound (nearer child first, subtrees
   /// pruned by squared box distance). `hint`, an index into triangles() or noTriangle, seeds
   /// the bound: pass the previous query's triangle when queries are spatially coherent.
@@ -99,6 +109,11 @@ private:
   /// its right subtrees built on new threads while `threads` > 1.
   static void build(std::span<BuildItem> items, std::uint32_t first, std::span<const Bounds> bounds,
                     std::vector<Node>& nodes, unsigned threads);
+  /// Appends to nodes_ the subtree over triangles()[first, first + count), split at the middle;
+  /// returns its root's index.
+  std::uint32_t buildInOrder(std::uint32_t first, std::uint32_t count);
+  /// Orders items by the median splits of build(), recursively, and nothing more.
+  static void splitAtMedians(std::span<BuildItem> items);
   double triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const;
 
   std::vector<Node> nodes_;

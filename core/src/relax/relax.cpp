@@ -281,7 +281,30 @@ CheckSurface checkSurface(int n, const std::vector<Vec3f>& positions,
         ++which;
       }
     }
-  detail::AabbTree tree(mesh);
+  // The tree over tiles of 8 × 8 cells, each a quadtree (its cells in Z order): built in a
+  // fraction of the time of median splits over every triangle (the old side's tree was 145 of
+  // a ridge's 600 ms at N = 1024).
+  constexpr int kTile = 8;
+  const auto evenBits = [](int z) { // bits 0, 2, 4 of z, packed
+    return (z & 1) | ((z >> 1) & 2) | ((z >> 2) & 4);
+  };
+  std::vector<std::uint32_t> order, blockStarts;
+  order.reserve(mesh.triangles.size());
+  for (int tj = 0; tj < n; tj += kTile)
+    for (int ti = 0; ti < n; ti += kTile) {
+      const std::size_t start = order.size();
+      for (int z = 0; z < kTile * kTile; ++z) {
+        const int i = ti + evenBits(z), j = tj + evenBits(z >> 1);
+        if (i >= n || j >= n) continue;
+        const std::size_t cell =
+            static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i);
+        for (std::size_t which = 0; which < 2; ++which)
+          if (const std::int32_t t = cellTriangle[2 * cell + which]; t >= 0)
+            order.push_back(static_cast<std::uint32_t>(t));
+      }
+      if (order.size() > start) blockStarts.push_back(static_cast<std::uint32_t>(start));
+    }
+  detail::AabbTree tree(mesh, order, blockStarts);
   std::vector<std::uint32_t> leafOf(mesh.triangles.size());
   const auto ids = tree.triangleIds();
   for (std::size_t k = 0; k < ids.size(); ++k)

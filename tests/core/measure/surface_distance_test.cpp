@@ -67,6 +67,8 @@ private slots:
   void treeMatchesBruteForce();
   void treeIsTheSameOnEveryThreadCount();
   void aRefittedTreeMatchesBruteForce();
+  void aTreeOverBlocksMatchesBruteForce_data();
+  void aTreeOverBlocksMatchesBruteForce();
   void identicalMeshesAreZero();
   void concentricSpheres();
   void translatedCube();
@@ -158,6 +160,63 @@ void SurfaceDistanceTest::aRefittedTreeMatchesBruteForce() {
     const detail::AabbTree::Hit hit = tree.closest(p);
     QVERIFY(std::abs(hit.distanceSquared - expected) <= 1e-12 * expected);
     QVERIFY(std::abs(rebuilt.closest(p).distanceSquared - expected) <= 1e-12 * expected);
+  }
+}
+
+void SurfaceDistanceTest::aTreeOverBlocksMatchesBruteForce_data() {
+  QTest::addColumn<int>("blockSize"); // 0: blocks of 1, 2, 3, … triangles in turn
+  QTest::newRow("one triangle each") << 1;
+  QTest::newRow("a leaf's worth") << 4;
+  QTest::newRow("uneven sizes") << 0;
+  QTest::newRow("128 triangles") << 128;
+  QTest::newRow("one block") << 1'000'000;
+}
+
+// The tree over blocks of an order (keep detail's check: tiles of cells, each in Z order): every
+// triangle once, every query exact against brute force, from a seed or cold, and again after a
+// refit onto the moved triangles. The order is the mesh's own, shuffled in runs, so that some
+// blocks are scattered over the sphere.
+void SurfaceDistanceTest::aTreeOverBlocksMatchesBruteForce() {
+  QFETCH(int, blockSize);
+  TriangleMesh mesh = sphere(4, 1);
+  std::mt19937 random(23);
+  std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
+  for (Vec3f& p : mesh.positions)
+    p = p * (1 + jitter(random));
+  std::vector<std::uint32_t> order(mesh.triangles.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    order[k] = static_cast<std::uint32_t>(k);
+  for (std::size_t k = 0; k + 64 <= order.size(); k += 256)
+    std::shuffle(order.begin() + static_cast<std::ptrdiff_t>(k),
+                 order.begin() + static_cast<std::ptrdiff_t>(k + 64), random);
+  std::vector<std::uint32_t> starts;
+  for (std::uint32_t at = 0, size = 1;
+       at<order.size(); at += blockSize> 0 ? static_cast<std::uint32_t>(blockSize) : size++)
+    starts.push_back(at);
+  detail::AabbTree tree(mesh, order, starts);
+  QCOMPARE(tree.triangles().size(), mesh.triangles.size());
+  std::vector<std::uint32_t> ids(tree.triangleIds().begin(), tree.triangleIds().end());
+  std::sort(ids.begin(), ids.end());
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    QCOMPARE(ids[k], std::uint32_t(k));
+
+  TriangleMesh moved = mesh;
+  for (Vec3f& p : moved.positions)
+    p = p * (1 + (p.y > 0.3f ? 0.8f * (p.y - 0.3f) : 0.0f));
+  std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
+  for (const TriangleMesh* surface : {&mesh, &moved}) {
+    if (surface == &moved) tree.refit(moved);
+    std::uint32_t hint = detail::AabbTree::noTriangle;
+    for (int i = 0; i < 400; ++i) {
+      const Vec3d p{coordinate(random), coordinate(random), coordinate(random)};
+      const double expected = bruteForceDistanceSquared(*surface, p);
+      const detail::AabbTree::Hit cold = tree.closest(p);
+      const detail::AabbTree::Hit warm = tree.closest(p, hint);
+      hint = warm.triangle;
+      QVERIFY(std::abs(cold.distanceSquared - expected) <= 1e-12 * expected);
+      QVERIFY(std::abs(warm.distanceSquared - expected) <= 1e-12 * expected);
+      QVERIFY(!cold.bounded);
+    }
   }
 }
 
