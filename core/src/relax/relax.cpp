@@ -430,7 +430,7 @@ std::vector<std::uint32_t> queryHints(int n, const CheckPoints& from, const Chec
     return std::array<double, 2>{double(d[0]), double(d[1])};
   };
   std::vector<std::uint32_t> hints(from.points.size(), detail::AabbTree::noTriangle);
-  for (std::size_t k = 0; k < hints.size(); ++k) {
+  const auto hintOf = [&](std::size_t k) {
     const std::array<double, 2> x{double(from.params[k][0]), double(from.params[k][1])};
     std::array<double, 2> q = x;
     if (toMoved)
@@ -453,7 +453,16 @@ std::vector<std::uint32_t> queryHints(int n, const CheckPoints& from, const Chec
                         (second ? 1 : 0)];
     if (t < 0) t = to.cellTriangle[from.cellTriangles[k]]; // the point's own cell there
     if (t >= 0) hints[k] = to.leafOf[static_cast<std::size_t>(t)];
-  }
+  };
+  const int chunks = static_cast<int>((hints.size() + kCheckChunk - 1) / kCheckChunk);
+  detail::parallelRows(
+      chunks,
+      [&](int first, int last) {
+        for (std::size_t k = static_cast<std::size_t>(first) * kCheckChunk;
+             k < std::min(hints.size(), static_cast<std::size_t>(last) * kCheckChunk); ++k)
+          hintOf(k);
+      },
+      4);
   return hints;
 }
 
@@ -765,22 +774,36 @@ EditStep relaxChangedStep(const Document& document, const std::vector<std::uint8
         moved[static_cast<std::size_t>(j / EditStepRecorder::kTileSize) * tiles +
               static_cast<std::size_t>(i / EditStepRecorder::kTileSize)] = 1;
     }
+  std::vector<std::array<int, 2>> movedTiles;
+  for (int ty = 0; ty < tiles; ++ty)
+    for (int tx = 0; tx < tiles; ++tx)
+      if (moved[static_cast<std::size_t>(ty) * tiles + static_cast<std::size_t>(tx)])
+        movedTiles.push_back({tx, ty});
   for (EditLayer layer :
        {EditLayer::Positions, EditLayer::Diffuse, EditLayer::Feature, EditLayer::Mask}) {
     if (!detail::resamplingChanges(document, layer)) continue;
     const std::size_t ch = static_cast<std::size_t>(editLayerChannels(layer));
-    for (int ty = 0; ty < tiles; ++ty)
-      for (int tx = 0; tx < tiles; ++tx) {
-        if (!moved[static_cast<std::size_t>(ty) * tiles + static_cast<std::size_t>(tx)]) continue;
-        const TexelRect r = EditStepRecorder::tileRegion(side, tx, ty);
-        const std::vector<float> before = detail::tileTexels(document, layer, r);
-        std::vector<float> after(before.size());
-        std::size_t o = 0;
-        for (int j = r.y; j < r.y + r.height; ++j)
-          for (int i = r.x; i < r.x + r.width; ++i, o += ch)
-            detail::resampleTexel(document, field, layer, i, j, &after[o]);
-        recorder.addTile(layer, tx, ty, static_cast<int>(ch), before, after);
-      }
+    // The tiles resampled on every core, then recorded in order.
+    std::vector<std::vector<float>> before(movedTiles.size()), after(movedTiles.size());
+    detail::parallelRows(
+        static_cast<int>(movedTiles.size()),
+        [&](int first, int last) {
+          for (int t = first; t < last; ++t) {
+            const std::size_t k = static_cast<std::size_t>(t);
+            const TexelRect r =
+                EditStepRecorder::tileRegion(side, movedTiles[k][0], movedTiles[k][1]);
+            before[k] = detail::tileTexels(document, layer, r);
+            after[k].resize(before[k].size());
+            std::size_t o = 0;
+            for (int j = r.y; j < r.y + r.height; ++j)
+              for (int i = r.x; i < r.x + r.width; ++i, o += ch)
+                detail::resampleTexel(document, field, layer, i, j, &after[k][o]);
+          }
+        },
+        1);
+    for (std::size_t k = 0; k < movedTiles.size(); ++k)
+      recorder.addTile(layer, movedTiles[k][0], movedTiles[k][1], static_cast<int>(ch), before[k],
+                       after[k]);
   }
   return recorder.finish(std::move(label));
 }
