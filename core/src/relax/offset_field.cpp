@@ -146,7 +146,9 @@ public:
 
   void sweep() {
     evaluatePositions();
-    const std::vector<std::array<float, 2>> before = offsets_;
+    // Kept from sweep to sweep: a fresh copy was fresh pages each time (8 MB at N = 1024).
+    before_.assign(offsets_.begin(), offsets_.end());
+    const std::vector<std::array<float, 2>>& before = before_;
     parallelRows(
         nearRows_[1] - nearRows_[0] + 1,
         [&](int rowBegin, int rowEnd) {
@@ -460,7 +462,7 @@ private:
   double cap_;   // longest a sweep lets an edge of this lattice grow
   std::size_t count_;
   std::vector<Vec3f> positions_;
-  std::vector<std::array<float, 2>> offsets_;
+  std::vector<std::array<float, 2>> offsets_, before_;
   std::vector<std::uint8_t> free_, near_;
   std::vector<Pin> pins_;
   std::array<int, 2> nearRows_{0, 0}; // [first, last) row of cells with a near sample
@@ -469,30 +471,35 @@ private:
 
 // Offsets of the samples between those of a lattice `step` apart, linear on the lattice's
 // triangles (the fine grid's triangles lie inside them, so nothing folds).
+// Rows in parallel: a pass writes only samples between the lattice's and reads only the
+// lattice's.
 void prolong(OffsetField& field, int step) {
   const int half = step / 2, n = field.n;
   auto at = [&](int i, int j) { return field.offset[field.index(i, j)]; };
-  for (int j = 0; j <= n; j += half)
-    for (int i = 0; i <= n; i += half) {
-      const bool oddI = i % step != 0, oddJ = j % step != 0;
-      if (!oddI && !oddJ) continue;
-      std::array<float, 2> d{};
-      if (oddI && oddJ) { // on the coarse cell's diagonal: the coarse map stays piecewise linear
-        const bool anti =
-            cellSplit(n / step, (i - half) / step, (j - half) / step) == CellSplit::AntiDiagonal;
-        const auto a = anti ? at(i - half, j + half) : at(i - half, j - half);
-        const auto b = anti ? at(i + half, j - half) : at(i + half, j + half);
-        for (int c = 0; c < 2; ++c)
-          d[c] = 0.5f * (a[c] + b[c]);
-      } else if (oddI) {
-        for (int c = 0; c < 2; ++c)
-          d[c] = 0.5f * (at(i - half, j)[c] + at(i + half, j)[c]);
-      } else {
-        for (int c = 0; c < 2; ++c)
-          d[c] = 0.5f * (at(i, j - half)[c] + at(i, j + half)[c]);
+  parallelRows(n / half + 1, [&](int rowBegin, int rowEnd) {
+    for (int j = rowBegin * half; j < rowEnd * half; j += half)
+      for (int i = 0; i <= n; i += half) {
+        const bool oddI = i % step != 0, oddJ = j % step != 0;
+        if (!oddI && !oddJ) continue;
+        std::array<float, 2> d{};
+        if (oddI && oddJ) { // on the coarse cell's diagonal: the coarse map stays piecewise linear
+          const bool anti =
+              cellSplit(n / step, (i - half) / step, (j - half) / step) == CellSplit::AntiDiagonal;
+          const auto a = anti ? at(i - half, j + half) : at(i - half, j - half);
+          const auto b = anti ? at(i + half, j - half) : at(i + half, j + half);
+          for (int c = 0; c < 2; ++c)
+            d[c] = 0.5f * (a[c] + b[c]);
+        } else if (oddI) {
+          for (int c = 0; c < 2; ++c)
+            d[c] = 0.5f * (at(i - half, j)[c] + at(i + half, j)[c]);
+        } else {
+          for (int c = 0; c < 2; ++c)
+            d[c] = 0.5f * (at(i, j - half)[c] + at(i, j + half)[c]);
+        }
+        field.offset[field.index(i, j)] =
+            field.free[field.index(i, j)] ? d : std::array<float, 2>{};
       }
-      field.offset[field.index(i, j)] = field.free[field.index(i, j)] ? d : std::array<float, 2>{};
-    }
+  });
 }
 
 } // namespace
