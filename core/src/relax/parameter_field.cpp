@@ -21,24 +21,51 @@ constexpr double kSweepStep = 0.15;
 // Fewer samples than this a thread are swept on one (a local relaxation's few hundred).
 constexpr int kSamplesPerThread = 2048;
 
+// A lattice sample as a sweep reads it: its canonical sample's index and its unwrapped grid
+// position (i × stride, j × stride); its parameter point is that plus the canonical offset, as
+// ParameterField::point gives it.
+struct LatticeRef {
+  std::size_t index = 0;
+  double x = 0, y = 0;
+};
+
+LatticeRef latticeRef(const ParameterField& f, int i, int j) {
+  const auto [ci, cj] = f.canonicalOf(i, j);
+  return {f.index(ci, cj), double(i * f.stride), double(j * f.stride)};
+}
+
+Offset pointOf(const ParameterField& f, const LatticeRef& r) {
+  const Offset& d = f.offset[r.index];
+  return {r.x + d.x, r.y + d.y};
+}
+
 double cross(Offset a, Offset b, Offset c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
-// Whether any of lattice cell (i, j)'s two parameter triangles (split along its anti-diagonal,
-// as the grid's) is folded or flat.
-bool cellFolds(const ParameterField& f, int i, int j) {
-  const Offset a = f.point(i, j), b = f.point(i + 1, j), c = f.point(i + 1, j + 1),
-               d = f.point(i, j + 1);
+// The lattice samples a sweep moves, those whose surface points it reads (the moving ones and
+// their four neighbours) and the cells it may fold (those with a moving corner), with the
+// canonical samples each looks up found once rather than at every sweep.
+struct SweepSet {
+  struct Moving {
+    LatticeRef self;
+    std::array<LatticeRef, 4> neighbours; ///< right, left, up, down: those inside
+    int count = 0;
+    std::array<int, 4> axes{};         ///< 0 along i, 1 along j
+    bool edgeI = false, edgeJ = false; ///< a sheet's boundary sample: slides along it
+  };
+  std::vector<Moving> moving;
+  std::vector<LatticeRef> read;
+  std::vector<std::array<LatticeRef, 4>> cells; ///< corners (i, j), (i+1, j), (i+1, j+1), (i, j+1)
+};
+
+// Whether any of a lattice cell's two parameter triangles (split along its anti-diagonal, as the
+// grid's) is folded or flat.
+bool cellFolds(const ParameterField& f, const std::array<LatticeRef, 4>& corners) {
+  const Offset a = pointOf(f, corners[0]), b = pointOf(f, corners[1]), c = pointOf(f, corners[2]),
+               d = pointOf(f, corners[3]);
   return !(cross(a, b, d) > 0) || !(cross(b, c, d) > 0);
 }
-
-// The lattice samples a sweep moves, those whose surface points it reads (the moving ones and
-// their four neighbours) and the cells it may fold (those with a moving corner).
-struct SweepSet {
-  std::vector<std::size_t> moving, read;
-  std::vector<std::array<int, 2>> cells;
-};
 
 SweepSet sweepSet(const ParameterField& f) {
   SweepSet set;
@@ -49,7 +76,17 @@ SweepSet sweepSet(const ParameterField& f) {
       const std::size_t k = f.index(i, j);
       const bool corner = sheet && (i == 0 || i == f.cellsWide) && (j == 0 || j == f.cellsHigh);
       if (corner || (!f.free.empty() && !f.free[k])) continue;
-      set.moving.push_back(k);
+      SweepSet::Moving m;
+      m.self = latticeRef(f, i, j);
+      m.edgeI = sheet && (i == 0 || i == f.cellsWide);
+      m.edgeJ = sheet && (j == 0 || j == f.cellsHigh);
+      for (const auto& [di, dj] : {std::array{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const int ni = i + di, nj = j + dj;
+        if (sheet && (ni < 0 || nj < 0 || ni > f.cellsWide || nj > f.cellsHigh)) continue;
+        m.neighbours[static_cast<std::size_t>(m.count)] = latticeRef(f, ni, nj);
+        m.axes[static_cast<std::size_t>(m.count++)] = di != 0 ? 0 : 1;
+      }
+      set.moving.push_back(m);
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int a = i + di, b = j + dj;
@@ -61,11 +98,13 @@ SweepSet sweepSet(const ParameterField& f) {
             cell[f.index(ca, cb)] = 1;
         }
     }
+  const auto columns = static_cast<std::size_t>(f.columns);
   for (std::size_t k = 0; k < read.size(); ++k) {
-    if (read[k]) set.read.push_back(k);
+    const int i = static_cast<int>(k % columns), j = static_cast<int>(k / columns);
+    if (read[k]) set.read.push_back(latticeRef(f, i, j));
     if (cell[k])
-      set.cells.push_back({static_cast<int>(k % static_cast<std::size_t>(f.columns)),
-                           static_cast<int>(k / static_cast<std::size_t>(f.columns))});
+      set.cells.push_back({latticeRef(f, i, j), latticeRef(f, i + 1, j),
+                           latticeRef(f, i + 1, j + 1), latticeRef(f, i, j + 1)});
   }
   return set;
 }
@@ -120,9 +159,7 @@ ParameterField finer(const ParameterField& coarse) {
 
 void sweepLevel(const GeometryImage& image, ParameterField& field, int sweeps,
                 const std::function<void(int)>& swept) {
-  const bool sheet = !field.torus();
   const SweepSet set = sweepSet(field);
-  const auto columns = static_cast<std::size_t>(field.columns);
   std::vector<Vec3f> at(field.offset.size());
   // The sweep's result; only the moving samples' offsets ever differ from field's.
   ParameterField next = field;
@@ -131,9 +168,8 @@ void sweepLevel(const GeometryImage& image, ParameterField& field, int sweeps,
         static_cast<int>(set.read.size()),
         [&](int k0, int k1) {
           for (int k = k0; k < k1; ++k) {
-            const std::size_t s = set.read[static_cast<std::size_t>(k)];
-            at[s] = surfaceAt(
-                image, field.point(static_cast<int>(s % columns), static_cast<int>(s / columns)));
+            const LatticeRef& r = set.read[static_cast<std::size_t>(k)];
+            at[r.index] = surfaceAt(image, pointOf(field, r));
           }
         },
         kSamplesPerThread);
@@ -141,32 +177,26 @@ void sweepLevel(const GeometryImage& image, ParameterField& field, int sweeps,
         static_cast<int>(set.moving.size()),
         [&](int k0, int k1) {
           for (int k = k0; k < k1; ++k) {
-            const std::size_t s = set.moving[static_cast<std::size_t>(k)];
-            const int i = static_cast<int>(s % columns), j = static_cast<int>(s / columns);
-            const bool edgeI = sheet && (i == 0 || i == field.cellsWide);
-            const bool edgeJ = sheet && (j == 0 || j == field.cellsHigh);
-            const Offset u = field.point(i, j);
-            const Vec3f p = at[s];
+            const SweepSet::Moving& m = set.moving[static_cast<std::size_t>(k)];
+            const Offset u = pointOf(field, m.self);
+            const Vec3f p = at[m.self.index];
             // Along i from the row's neighbours, along j from the column's: a direction's spacing
             // is evened by its own edges (a torus's ring edges, longer outside than inside, cannot
             // be shortened by moving samples around its tube).
             double sum[2] = {0, 0}, total[2] = {0, 0};
-            for (const auto& [di, dj] : {std::array{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
-              const int ni = i + di, nj = j + dj;
-              if (sheet && (ni < 0 || nj < 0 || ni > field.cellsWide || nj > field.cellsHigh))
-                continue;
-              const Offset v = field.point(ni, nj);
-              const auto [ci, cj] = field.canonicalOf(ni, nj);
-              const Vec3f q = at[field.index(ci, cj)];
+            for (int e = 0; e < m.count; ++e) {
+              const LatticeRef& r = m.neighbours[static_cast<std::size_t>(e)];
+              const Offset v = pointOf(field, r);
+              const Vec3f q = at[r.index];
               const double w = double(dot(q - p, q - p));
-              const int axis = di != 0 ? 0 : 1;
+              const int axis = m.axes[static_cast<std::size_t>(e)];
               sum[axis] += w * (axis == 0 ? v.x - u.x : v.y - u.y);
               total[axis] += w;
             }
-            Offset& d = next.offset[s];
+            Offset& d = next.offset[m.self.index];
             // A boundary sample slides along it.
-            if (!edgeI && total[0] > 0) d.x += kSweepStep * sum[0] / total[0];
-            if (!edgeJ && total[1] > 0) d.y += kSweepStep * sum[1] / total[1];
+            if (!m.edgeI && total[0] > 0) d.x += kSweepStep * sum[0] / total[0];
+            if (!m.edgeJ && total[1] > 0) d.y += kSweepStep * sum[1] / total[1];
           }
         },
         kSamplesPerThread);
@@ -174,19 +204,18 @@ void sweepLevel(const GeometryImage& image, ParameterField& field, int sweeps,
     // cell beside it).
     for (int pass = 0; pass < 3; ++pass) {
       bool undone = false;
-      for (const auto& [i, j] : set.cells)
-        if (cellFolds(next, i, j))
-          for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
-            const auto [ci, cj] = field.canonicalOf(a, b);
-            Offset& d = next.offset[field.index(ci, cj)];
-            const Offset& was = field.offset[field.index(ci, cj)];
+      for (const auto& corners : set.cells)
+        if (cellFolds(next, corners))
+          for (const LatticeRef& r : corners) {
+            Offset& d = next.offset[r.index];
+            const Offset& was = field.offset[r.index];
             undone = undone || d.x != was.x || d.y != was.y;
             d = was;
           }
       if (!undone) break;
     }
-    for (const std::size_t k : set.moving)
-      field.offset[k] = next.offset[k];
+    for (const SweepSet::Moving& m : set.moving)
+      field.offset[m.self.index] = next.offset[m.self.index];
     if (swept) swept(sweep + 1);
   }
 }
