@@ -673,10 +673,11 @@ double keepWithinTolerance(const Document& document, const std::vector<Vec3f>& b
             std::sqrt((measured * meanSquared + skippedSquares) / std::max(movedArea, 1e-30)) *
                 std::sqrt(share)};
       };
-      // The seeds' bounds first (a few hundred searches instead of 80 000 on a ridge at
-      // N = 1024): they only raise the figures, so a pass stands, and so does a Hausdorff
-      // distance over `fail` (a search's). A try that fails by its RMS alone is measured again
-      // by searches throughout: every step is decided as the searches decide it.
+      // The seeds' bounds first (on a ridge at N = 1024, 12 000 of the old side's 39 000 points
+      // and 15 of the moved side's are searched, then 6 500 and none): they only raise the
+      // figures, so a pass stands, and so does a Hausdorff distance over `fail` (a search's).
+      // A try that fails by its RMS alone is measured again by searches throughout: every step
+      // is decided as the searches decide it.
       std::tie(hausdorff, rms) = measure(true);
       if (hausdorff <= fail && rms > kKeepDetailRms * diag)
         std::tie(hausdorff, rms) = measure(false);
