@@ -87,6 +87,28 @@ struct AabbTree::Bounds {
   std::array<float, 3> min, max;
 };
 
+void AabbTree::fitLeaf(Node& leaf) const {
+  const Vec3f& first = triangles_[leaf.index].a;
+  leaf.min[0] = leaf.max[0] = first.x;
+  leaf.min[1] = leaf.max[1] = first.y;
+  leaf.min[2] = leaf.max[2] = first.z;
+  for (std::uint32_t t = leaf.index; t < leaf.index + leaf.count; ++t)
+    for (const Vec3f& v : {triangles_[t].a, triangles_[t].b, triangles_[t].c}) {
+      const std::array<float, 3> p{v.x, v.y, v.z};
+      for (std::size_t c = 0; c < 3; ++c) {
+        leaf.min[c] = std::min(leaf.min[c], p[c]);
+        leaf.max[c] = std::max(leaf.max[c], p[c]);
+      }
+    }
+}
+
+void AabbTree::unite(Node& parent, const Node& left, const Node& right) {
+  for (int c = 0; c < 3; ++c) {
+    parent.min[c] = std::min(left.min[c], right.min[c]);
+    parent.max[c] = std::max(left.max[c], right.max[c]);
+  }
+}
+
 // Below this many triangles a subtree is built on the thread that split it.
 constexpr std::size_t kParallelSubtree = 1 << 15;
 
@@ -177,19 +199,16 @@ AabbTree::AabbTree(const TriangleMesh& mesh, std::span<const std::uint32_t> orde
     self(self, lo, middle);
     Node made{};
     made.index = self(self, middle, hi);
-    const Node &left = nodes_[node + 1], &right = nodes_[made.index];
-    for (int c = 0; c < 3; ++c) {
-      made.min[c] = std::min(left.min[c], right.min[c]);
-      made.max[c] = std::max(left.max[c], right.max[c]);
-    }
+    unite(made, nodes_[node + 1], nodes_[made.index]);
     nodes_[node] = made;
     return node;
   };
   emit(emit, 0, blocks);
 }
 
-void AabbTree::splitAtMedians(std::span<BuildItem> items) {
-  if (items.size() <= 1) return;
+std::size_t AabbTree::splitAtMedian(std::span<BuildItem> items) {
+  // Along the axis where the centroids spread most; boxes are then the union of the children's,
+  // so each level reads only the centroids.
   std::array<float, 3> low = items[0].centroid, high = items[0].centroid;
   for (const BuildItem& item : items)
     for (std::size_t k = 0; k < 3; ++k) {
@@ -204,6 +223,12 @@ void AabbTree::splitAtMedians(std::span<BuildItem> items) {
                    [axis](const BuildItem& l, const BuildItem& r) {
                      return l.centroid[axis] < r.centroid[axis];
                    });
+  return middle;
+}
+
+void AabbTree::splitAtMedians(std::span<BuildItem> items) {
+  if (items.size() <= 1) return;
+  const std::size_t middle = splitAtMedian(items);
   splitAtMedians(items.first(middle));
   splitAtMedians(items.subspan(middle));
 }
@@ -213,29 +238,14 @@ std::uint32_t AabbTree::buildInOrder(std::uint32_t first, std::uint32_t count) {
   nodes_.push_back({});
   Node made{};
   if (count <= leafSize) {
-    const Vec3f& corner = triangles_[first].a;
-    made.min[0] = made.max[0] = corner.x;
-    made.min[1] = made.max[1] = corner.y;
-    made.min[2] = made.max[2] = corner.z;
-    for (std::uint32_t t = first; t < first + count; ++t)
-      for (const Vec3f& v : {triangles_[t].a, triangles_[t].b, triangles_[t].c}) {
-        const std::array<float, 3> p{v.x, v.y, v.z};
-        for (std::size_t c = 0; c < 3; ++c) {
-          made.min[c] = std::min(made.min[c], p[c]);
-          made.max[c] = std::max(made.max[c], p[c]);
-        }
-      }
     made.count = count;
     made.index = first;
+    fitLeaf(made);
   } else {
     const std::uint32_t half = count / 2;
     buildInOrder(first, half);
     made.index = buildInOrder(first + half, count - half);
-    const Node &left = nodes_[node + 1], &right = nodes_[made.index];
-    for (int c = 0; c < 3; ++c) {
-      made.min[c] = std::min(left.min[c], right.min[c]);
-      made.max[c] = std::max(left.max[c], right.max[c]);
-    }
+    unite(made, nodes_[node + 1], nodes_[made.index]);
   }
   nodes_[node] = made;
   return node;
@@ -250,26 +260,10 @@ void AabbTree::refit(const TriangleMesh& mesh) {
   // triangles' (a leaf) or its two children's.
   for (std::size_t k = nodes_.size(); k-- > 0;) {
     Node& node = nodes_[k];
-    if (node.count > 0) {
-      const Vec3f& first = triangles_[node.index].a;
-      node.min[0] = node.max[0] = first.x;
-      node.min[1] = node.max[1] = first.y;
-      node.min[2] = node.max[2] = first.z;
-      for (std::uint32_t t = node.index; t < node.index + node.count; ++t)
-        for (const Vec3f& v : {triangles_[t].a, triangles_[t].b, triangles_[t].c}) {
-          const std::array<float, 3> p{v.x, v.y, v.z};
-          for (int c = 0; c < 3; ++c) {
-            node.min[c] = std::min(node.min[c], p[static_cast<std::size_t>(c)]);
-            node.max[c] = std::max(node.max[c], p[static_cast<std::size_t>(c)]);
-          }
-        }
-      continue;
-    }
-    const Node &left = nodes_[k + 1], &right = nodes_[node.index];
-    for (int c = 0; c < 3; ++c) {
-      node.min[c] = std::min(left.min[c], right.min[c]);
-      node.max[c] = std::max(left.max[c], right.max[c]);
-    }
+    if (node.count > 0)
+      fitLeaf(node);
+    else
+      unite(node, nodes_[k + 1], nodes_[node.index]);
   }
 }
 
@@ -295,23 +289,7 @@ void AabbTree::build(std::span<BuildItem> items, std::uint32_t first,
     return;
   }
 
-  // Split at the median centroid along the axis where the centroids spread most; boxes are
-  // then the union of the children's, so each level reads only the centroids.
-  std::array<float, 3> low = items[0].centroid, high = items[0].centroid;
-  for (const BuildItem& item : items)
-    for (int k = 0; k < 3; ++k) {
-      low[k] = std::min(low[k], item.centroid[k]);
-      high[k] = std::max(high[k], item.centroid[k]);
-    }
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (high[k] - low[k] > high[axis] - low[axis]) axis = k;
-
-  const std::size_t middle = items.size() / 2;
-  std::nth_element(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(middle), items.end(),
-                   [axis](const BuildItem& l, const BuildItem& r) {
-                     return l.centroid[axis] < r.centroid[axis];
-                   });
+  const std::size_t middle = splitAtMedian(items);
   const std::span<BuildItem> leftItems = items.first(middle), rightItems = items.subspan(middle);
   const std::uint32_t rightFirst = first + static_cast<std::uint32_t>(middle);
   std::size_t right = 0;
@@ -335,13 +313,7 @@ void AabbTree::build(std::span<BuildItem> items, std::uint32_t first,
   }
 
   Node parent{};
-  const Node& l = nodes[node + 1];
-  const Node& r = nodes[right];
-  for (int k = 0; k < 3; ++k) {
-    parent.min[k] = std::min(l.min[k], r.min[k]);
-    parent.max[k] = std::max(l.max[k], r.max[k]);
-  }
-  parent.count = 0;
+  unite(parent, nodes[node + 1], nodes[right]);
   parent.index = static_cast<std::uint32_t>(right);
   nodes[node] = parent;
 }

@@ -112,6 +112,13 @@ private:
   /// Appends to nodes_ the subtree over triangles()[first, first + count), split at the middle;
   /// returns its root's index.
   std::uint32_t buildInOrder(std::uint32_t first, std::uint32_t count);
+  /// Makes a leaf's box its triangles' (leaf.index and leaf.count set).
+  void fitLeaf(Node& leaf) const;
+  /// Makes parent's box the union of its children's.
+  static void unite(Node& parent, const Node& left, const Node& right);
+  /// Splits items at the median centroid along the axis where the centroids spread most (the
+  /// first half below it); returns where the second half starts.
+  static std::size_t splitAtMedian(std::span<BuildItem> items);
   /// Orders items by the median splits of build(), recursively, and nothing more.
   static void splitAtMedians(std::span<BuildItem> items);
   double triangleDistanceSquared(Vec3d p, std::uint32_t triangle) const;
