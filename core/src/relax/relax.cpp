@@ -419,7 +419,8 @@ CheckPoints checkPoints(int n, const CheckSurface& surface, const std::vector<st
 }
 
 // What each point of `from` starts its query on `to` from: the nearest of `to`'s triangles over
-// the 3 × 3 cells around the point's parameter location there, as the search's first bound
+// the cell of the point's parameter location there (and the eight cells around it when that
+// one is farther than nearEnough, squared), as the search's first bound
 // (its index into to.tree's triangles, or noTriangle) and as an upper bound on the nearest
 // distance (squared, the same figure to the bit the search would find for that triangle;
 // infinity where no such triangle is in `to`). The moved surface shows the old one at
