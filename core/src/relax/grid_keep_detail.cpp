@@ -214,12 +214,53 @@ struct SideFigures {
   std::vector<double> far;
 };
 
+// An upper bound on the distance from a point of the new surface to the old one, without a
+// search: the new triangle over parameter points Pa, Pb, Pc shows the old surface at each, so
+// its point with weights (u, v, w) stands for the old surface at the same mix of them (a point
+// of the old mesh when that mix lies in one of its cells: `onOld`, cellsWide × cellsHigh). A
+// bound within `within` stands for the point's distance (no search); `params` holds the new
+// surface's positions' parameter points.
+struct ParameterBounds {
+  const GeometryImage& image;
+  const std::vector<Offset>& params;
+  const std::vector<std::uint8_t>& onOld;
+  const ParameterField& field;
+  double within = 0;
+};
+
+// The squared bound at parameter point x for surface point p, or infinity where x lies over no
+// cell of the old mesh. A millionth of the point's size more than the distance: the surface
+// point is interpolated in float.
+double boundAt(const ParameterBounds& bounds, Offset x, Vec3d p) {
+  const ParameterField& f = bounds.field;
+  int ci = static_cast<int>(std::floor(x.x)), cj = static_cast<int>(std::floor(x.y));
+  if (f.torus()) {
+    ci = ((ci % f.grid.width) + f.grid.width) % f.grid.width;
+    cj = ((cj % f.grid.height) + f.grid.height) % f.grid.height;
+  } else if (x.x < 0 || x.y < 0 || x.x > f.grid.width || x.y > f.grid.height) {
+    return std::numeric_limits<double>::infinity();
+  } else {
+    ci = std::min(ci, f.grid.width - 1), cj = std::min(cj, f.grid.height - 1);
+  }
+  if (!bounds.onOld[static_cast<std::size_t>(cj) * static_cast<std::size_t>(f.grid.width) +
+                    static_cast<std::size_t>(ci)])
+    return std::numeric_limits<double>::infinity();
+  const Vec3d q(surfaceAt(bounds.image, x));
+  const Vec3d d = p - q;
+  const double size = std::max(
+      {std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+  const double bound = std::sqrt(dot(d, d)) + 1e-6 * size;
+  return bound * bound;
+}
+
 // Adds to `side` the distances from the check points of the `checked` cells' two triangles of
 // `from` (triangles 2c and 2c + 1; with or without their corners) to the surface `to`. Stops
 // early once a point lies farther than giveUpAt (squared) unless per-cell figures are noted.
+// With `bounds` (the new surface against the old), a point whose ParameterBounds bound is
+// within bounds->within takes it and is not searched: every figure over that is a search's.
 void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& checked,
                   const AabbTree& to, float medianEdge, bool corners, SideFigures& side,
-                  bool noting, double giveUpAt) {
+                  bool noting, double giveUpAt, const ParameterBounds* bounds = nullptr) {
   std::mutex merge;
   std::atomic<bool> failed = false;
   detail::parallelRows(
@@ -249,10 +290,23 @@ void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& chec
                 const int w = d - u - v;
                 if (!corners && (u == d || v == d || w == d)) continue;
                 const Vec3d p = (double(u) * a + double(v) * b + double(w) * c3) * (1.0 / d);
-                const AabbTree::Hit hit = to.closest(p, hint);
-                hint = hit.triangle;
-                cellWorst = std::max(cellWorst, hit.distanceSquared);
-                triangleSquares += hit.distanceSquared;
+                double squared = std::numeric_limits<double>::infinity();
+                if (bounds) {
+                  const Offset &pa = bounds->params[tri[0]], &pb = bounds->params[tri[1]],
+                               &pc = bounds->params[tri[2]];
+                  squared = boundAt(
+                      *bounds,
+                      {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
+                       (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
+                      p);
+                }
+                if (!bounds || !(squared <= bounds->within * bounds->within)) {
+                  const AabbTree::Hit hit = to.closest(p, hint);
+                  hint = hit.triangle;
+                  squared = hit.distanceSquared;
+                }
+                cellWorst = std::max(cellWorst, squared);
+                triangleSquares += squared;
                 ++counted;
               }
             local.squares += area * triangleSquares / counted;
@@ -276,7 +330,7 @@ void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& chec
 // One solve's moved cells with what every step's measure shares: the ring of unmoved cells
 // around them and the old surface over both, and the moved cells' longest old edge.
 struct MovedRegion {
-  Cells cells;
+  Cells cells, ring;
   TriangleMesh oldCells, oldRing;
   float longestOld = 0;
 };
@@ -285,7 +339,8 @@ MovedRegion movedRegion(const GeometryImage& image, const ParameterField& f, Cel
   const auto oldCorner = [&](int i, int j) { return image.at(i, j).xyz(); };
   MovedRegion region;
   region.oldCells = cellTriangles(cells, oldCorner);
-  region.oldRing = cellTriangles(ringAround(f, cells), oldCorner);
+  region.ring = ringAround(f, cells);
+  region.oldRing = cellTriangles(region.ring, oldCorner);
   region.longestOld = longestEdge(region.oldCells, region.oldCells.triangles.size());
   region.cells = std::move(cells);
   return region;
@@ -296,10 +351,12 @@ MovedRegion movedRegion(const GeometryImage& image, const ParameterField& f, Cel
 // and the ring around them) and the old triangles' points against the new surface (the moved
 // cells resampled, the ring as it was). Exact closest points, so each figure is an upper bound.
 // farCells, when given, gets the moved cells (their indices) with a point farther than `far`.
-Moved measureMove(const GeometryImage& image, const ParameterField& f, double step,
-                  const MovedRegion& region, const AabbTree& oldSurface,
-                  const KeepDetailFigures& figures, std::vector<std::size_t>* farCells = nullptr,
-                  double far = 0) {
+// With useBounds, the new surface's points whose ParameterBounds bound (over `onOld`, the old
+// mesh's cells) is within half the Hausdorff tolerance take it rather than a search.
+Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, double step,
+                      const MovedRegion& region, const AabbTree& oldSurface,
+                      const std::vector<std::uint8_t>& onOld, const KeepDetailFigures& figures,
+                      bool useBounds, std::vector<std::size_t>* farCells, double far) {
   const float medianEdge = figures.medianEdge;
   const double diagonal = figures.diagonal;
   const Cells& moved = region.cells;
@@ -311,6 +368,14 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
                      {double(i) + step * (p.x - double(i)), double(j) + step * (p.y - double(j))});
   };
   TriangleMesh newSurface = cellTriangles(moved, newCorner);
+  std::vector<Offset> newParams; // where each new corner shows the old surface
+  newParams.reserve(4 * moved.size());
+  for (const auto& [i, j] : moved)
+    for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
+      const Offset p = f.point(a, b);
+      newParams.push_back(
+          {double(a) + step * (p.x - double(a)), double(b) + step * (p.y - double(b))});
+    }
   append(newSurface, region.oldRing);
   const float longestOld = region.longestOld,
               longestNew = longestEdge(newSurface, 2 * moved.size());
@@ -357,7 +422,9 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
         sides[way].squares += area * to.closest((a + b + c3) * (1.0 / 3)).distanceSquared;
         sides[way].weight += area;
       }
-  farthestFrom(newSurface, checked, oldSurface, medianEdge, false, sides[0], noting, giveUpAt);
+  const ParameterBounds bounds{image, newParams, onOld, f, 0.5 * kHausdorffTolerance * diagonal};
+  farthestFrom(newSurface, checked, oldSurface, medianEdge, false, sides[0], noting, giveUpAt,
+               useBounds ? &bounds : nullptr);
   if (noting || sides[0].worst <= giveUpAt)
     farthestFrom(oldMoved, checked, newTree, medianEdge, true, sides[1], noting, giveUpAt);
   if (noting) {
@@ -371,6 +438,23 @@ Moved measureMove(const GeometryImage& image, const ParameterField& f, double st
   const auto rms = [&](int k) { return weight[k] > 0 ? std::sqrt(squares[k] / weight[k]) : 0.0; };
   return {std::max(rms(0), rms(1)) / diagonal, std::sqrt(std::max(worst[0], worst[1])) / diagonal,
           longestOld, longestNew};
+}
+
+// measureMoveOnce with the bounds first: they only raise the figures, so a pass stands, and so
+// does a Hausdorff distance over the tolerance (a search's, past half of it); a step failed by
+// its RMS alone is measured again by searches throughout, so every step is decided as searches
+// decide it (and the far cells are the same).
+Moved measureMove(const GeometryImage& image, const ParameterField& f, double step,
+                  const MovedRegion& region, const AabbTree& oldSurface,
+                  const std::vector<std::uint8_t>& onOld, const KeepDetailFigures& figures,
+                  std::vector<std::size_t>* farCells = nullptr, double far = 0) {
+  Moved moved =
+      measureMoveOnce(image, f, step, region, oldSurface, onOld, figures, true, farCells, far);
+  if (moved.hausdorff <= kCheckedShare * kHausdorffTolerance &&
+      moved.rms > kCheckedShare * kRmsTolerance && moved.longestNew <= moved.longestOld)
+    moved =
+        measureMoveOnce(image, f, step, region, oldSurface, onOld, figures, false, farCells, far);
+  return moved;
 }
 
 // The cells with a corner whose offset is not zero.
@@ -434,6 +518,7 @@ EditStep gridRelaxChangedStep(const Document& document, const std::vector<std::u
   const int sweeps = kSweepsPerLevel * std::clamp(options.iterations, 1, 25);
   std::vector<std::uint8_t> tried = free;
   std::optional<AabbTree> oldSurface;
+  std::vector<std::uint8_t> onOld; // its cells, cellsWide × cellsHigh
   ParameterField field;
   double kept = 0, keptTravel = 0;
   for (int attempt = 0; attempt <= kHoldAttempts; ++attempt) {
@@ -446,13 +531,19 @@ EditStep gridRelaxChangedStep(const Document& document, const std::vector<std::u
       TriangleMesh around = region.oldCells;
       append(around, region.oldRing);
       oldSurface.emplace(around);
+      onOld.assign(
+          static_cast<std::size_t>(full.cellsWide) * static_cast<std::size_t>(full.cellsHigh), 0);
+      for (const Cells* part : {&region.cells, &region.ring})
+        for (const auto& [i, j] : *part)
+          onOld[static_cast<std::size_t>(j) * static_cast<std::size_t>(full.cellsWide) +
+                static_cast<std::size_t>(i)] = 1;
     }
     std::vector<std::size_t> far;
     double step = 0;
     for (const double s : {1.0, 0.5, 0.25, 0.125}) {
       const Moved moved =
-          measureMove(image, solved, s, region, *oldSurface, figures, s == 1.0 ? &far : nullptr,
-                      0.5 * kHausdorffTolerance * figures.diagonal);
+          measureMove(image, solved, s, region, *oldSurface, onOld, figures,
+                      s == 1.0 ? &far : nullptr, 0.5 * kHausdorffTolerance * figures.diagonal);
       // Within the tolerance, and no edge longer than the longest it replaces.
       if (moved.rms <= kCheckedShare * kRmsTolerance &&
           moved.hausdorff <= kCheckedShare * kHausdorffTolerance &&
