@@ -18,6 +18,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace octaclay::core::detail {
@@ -235,8 +236,7 @@ double boundAt(const ParameterBounds& bounds, Offset x, Vec3d p) {
   const ParameterField& f = bounds.field;
   int ci = static_cast<int>(std::floor(x.x)), cj = static_cast<int>(std::floor(x.y));
   if (f.torus()) {
-    ci = ((ci % f.grid.width) + f.grid.width) % f.grid.width;
-    cj = ((cj % f.grid.height) + f.grid.height) % f.grid.height;
+    std::tie(ci, cj) = f.canonicalOf(ci, cj); // the field is the full-resolution lattice's
   } else if (x.x < 0 || x.y < 0 || x.x > f.grid.width || x.y > f.grid.height) {
     return std::numeric_limits<double>::infinity();
   } else {
@@ -361,21 +361,22 @@ Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, doubl
   const double diagonal = figures.diagonal;
   const Cells& moved = region.cells;
   const TriangleMesh& oldMoved = region.oldCells;
+  // Where lattice sample (i, j) shows the old surface at this step.
+  const auto shown = [&](int i, int j) {
+    const Offset p = f.point(i, j);
+    return Offset{double(i) + step * (p.x - double(i)), double(j) + step * (p.y - double(j))};
+  };
   const auto newCorner = [&](int i, int j) {
     const Offset p = f.point(i, j);
     if (p.x == double(i) && p.y == double(j)) return image.at(i, j).xyz();
-    return surfaceAt(image,
-                     {double(i) + step * (p.x - double(i)), double(j) + step * (p.y - double(j))});
+    return surfaceAt(image, shown(i, j));
   };
   TriangleMesh newSurface = cellTriangles(moved, newCorner);
-  std::vector<Offset> newParams; // where each new corner shows the old surface
+  std::vector<Offset> newParams; // per new corner, in cellTriangles' order
   newParams.reserve(4 * moved.size());
   for (const auto& [i, j] : moved)
-    for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}) {
-      const Offset p = f.point(a, b);
-      newParams.push_back(
-          {double(a) + step * (p.x - double(a)), double(b) + step * (p.y - double(b))});
-    }
+    for (const auto& [a, b] : {std::array{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}})
+      newParams.push_back(shown(a, b));
   append(newSurface, region.oldRing);
   const float longestOld = region.longestOld,
               longestNew = longestEdge(newSurface, 2 * moved.size());
