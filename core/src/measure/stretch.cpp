@@ -152,10 +152,11 @@ struct RowD {
 };
 
 // Cells [iBegin, iEnd) between rows here and next (loaded small), all of one split, into
-// cells[i].
+// cells[i]. Also built for AVX2, chosen when the processor has it: four doubles a step, the same
+// values (AVX2 has no fused multiply-add, and the file is built without contraction).
 template <bool AntiDiagonal>
-void cellAreaRun(const RowD& here, const RowD& next, int iBegin, int iEnd,
-                 std::array<float, 2>* cells) {
+[[gnu::always_inline]] inline void cellAreaRunOf(const RowD& here, const RowD& next, int iBegin,
+                                                 int iEnd, std::array<float, 2>* cells) {
   const double *hx = here.x.data(), *hy = here.y.data(), *hz = here.z.data();
   const double *nx = next.x.data(), *ny = next.y.data(), *nz = next.z.data();
   for (int i = iBegin; i < iEnd; ++i) {
@@ -178,6 +179,15 @@ void cellAreaRun(const RowD& here, const RowD& next, int iBegin, int iEnd,
     cells[i][0] = areaFromCrossSquared(q0);
     cells[i][1] = areaFromCrossSquared(q1);
   }
+}
+
+__attribute__((target_clones("avx2", "default"))) void
+cellAreaRun(bool antiDiagonal, const RowD& here, const RowD& next, int iBegin, int iEnd,
+            std::array<float, 2>* cells) {
+  if (antiDiagonal)
+    cellAreaRunOf<true>(here, next, iBegin, iEnd, cells);
+  else
+    cellAreaRunOf<false>(here, next, iBegin, iEnd, cells);
 }
 
 // The lengths of the edges p[i] → q[i], i in [0, count), into out.
@@ -398,11 +408,11 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
         for (int i = 0; i < n; ++i)
           cells[static_cast<std::size_t>(i)] = cellAreas(here, next, n, i, j);
       else if (lower) {
-        cellAreaRun<false>(hereD, nextD, 0, half, out);
-        cellAreaRun<true>(hereD, nextD, half, n, out);
+        cellAreaRun(false, hereD, nextD, 0, half, out);
+        cellAreaRun(true, hereD, nextD, half, n, out);
       } else {
-        cellAreaRun<true>(hereD, nextD, 0, half, out);
-        cellAreaRun<false>(hereD, nextD, half, n, out);
+        cellAreaRun(true, hereD, nextD, 0, half, out);
+        cellAreaRun(false, hereD, nextD, half, n, out);
       }
       for (int i = 0; i < n; ++i)
         sum += double(cells[static_cast<std::size_t>(i)][0]) +

@@ -1,6 +1,8 @@
 // Stretch measure: spacing and stretch per sample, the summary, region sampling; checked against
 // a brute-force one-ring computation and the analytic area factor of a scaled sphere.
 
+#include "../../../core/src/detail/float_ranks.h"
+
 #include "octaclay/core/error.h"
 #include "octaclay/core/geometry/base_shapes.h"
 #include "octaclay/core/geometry/geometry_image.h"
@@ -14,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <ctime>
 #include <limits>
@@ -127,6 +130,59 @@ class StretchTest : public QObject {
   Q_OBJECT
 
 private slots:
+  // The summary's order statistics are exact, whether the sample of every 32nd block guesses the
+  // ranks' bins (each block then read once, the sampled ones twice) or misses them (sampled
+  // blocks holding values far above the rest: every block read again): against a full sort, with
+  // negative values left out and -0 counted as 0.
+  void ranksAreExactWhetherTheirGuessHitsOrMisses() {
+    constexpr int kBlocks = 256, kPerBlock = 3000;
+    std::mt19937 random(7);
+    std::lognormal_distribution<float> spread(0.0f, 0.4f);
+    for (const bool misleading : {false, true}) {
+      std::vector<float> values(std::size_t(kBlocks) * kPerBlock);
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        const int block = int(k / kPerBlock);
+        const bool sampled = block % 32 == 16;
+        values[k] = spread(random) * (misleading && sampled ? 1e6f : 1.0f);
+        if (k % 97 == 0) values[k] = -1.0f; // a missing value
+        if (k % 89 == 0) values[k] = -0.0f;
+      }
+      std::vector<float> kept;
+      for (float v : values)
+        if (!std::signbit(v))
+          kept.push_back(v);
+        else if (v == 0.0f)
+          kept.push_back(0.0f);
+      std::sort(kept.begin(), kept.end());
+      // The summary's ranks (the guess is for them), then the extremes too (a sample's largest
+      // value is seldom the largest: exact all the same).
+      for (const bool extremes : {false, true}) {
+        std::vector<std::atomic<int>> reads(kBlocks);
+        const auto ranks = [extremes](std::size_t count) {
+          std::vector<std::size_t> asked{count / 2, (count * 99) / 100};
+          if (extremes) asked.insert(asked.end(), {0, count - 1});
+          return asked;
+        };
+        const detail::FloatRanks got = detail::selectFloatRanksOf(
+            kBlocks,
+            [&](int b, auto&& visit) {
+              ++reads[std::size_t(b)];
+              for (int k = 0; k < kPerBlock; ++k)
+                visit(values[std::size_t(b) * kPerBlock + std::size_t(k)]);
+            },
+            ranks, 4);
+        QCOMPARE(got.count, kept.size());
+        QCOMPARE(got.largest, kept.back());
+        const std::vector<std::size_t> asked = ranks(kept.size());
+        for (std::size_t r = 0; r < asked.size(); ++r)
+          QCOMPARE(got.at[r], kept[asked[r]]);
+        if (!extremes)
+          for (int b = 0; b < kBlocks; ++b)
+            QCOMPARE(reads[std::size_t(b)].load(), (misleading ? 2 : 1) + (b % 32 == 16 ? 1 : 0));
+      }
+    }
+  }
+
   // A torus's or plane's own W × H grid, wide or tall (a wide ring once read rows past its last
   // one): the mean spacing is √(area / vertices) of the true surface within the grid's chord
   // error, the edge figures are the ring's (its outer ring edges over its inner ones), and the
