@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -515,6 +518,24 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   const detail::FloatRanks areaRanks = detail::selectFloatRanks(
       area, [](std::size_t count) { return std::vector<std::size_t>{nearestRank(count, 0.5)}; });
   const double medianSpacing = areaRanks.count ? double(std::sqrt(areaRanks.at[0])) : 0.0;
+  // The least area whose spacing (√area, a float) is over 4 × the median: √ is monotone, so the
+  // areas over it are those from it on (found over the floats' bits, whose order is theirs).
+  const double threshold = 4.0 * medianSpacing;
+  const auto isOver = [threshold](std::uint32_t bits) {
+    float a;
+    std::memcpy(&a, &bits, 4);
+    return double(std::sqrt(a)) > threshold;
+  };
+  constexpr std::uint32_t kInfinity = 0x7f800000u;
+  std::uint32_t below = 0, least = kInfinity; // !isOver(below) (√0 is not over 0 or more)
+  if (isOver(least))
+    while (least - below > 1) {
+      const std::uint32_t mid = below + (least - below) / 2;
+      (isOver(mid) ? least : below) = mid;
+    }
+  float leastOver; // NaN when even √∞ is not over: no area counts
+  std::memcpy(&leastOver, &least, 4);
+  if (!isOver(least)) leastOver = std::numeric_limits<float>::quiet_NaN();
   std::vector<std::size_t> overPerBand(64, 0);
   const int bands = static_cast<int>(overPerBand.size());
   detail::parallelRows(
@@ -525,7 +546,7 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
                             to = area.size() * static_cast<std::size_t>(b + 1) / bands;
           std::size_t over = 0;
           for (std::size_t k = from; k < to; ++k)
-            over += area[k] >= 0.0f && std::sqrt(area[k]) > 4.0 * medianSpacing ? 1 : 0;
+            over += area[k] >= leastOver ? 1 : 0; // -1 (a copy left out) is not
           overPerBand[static_cast<std::size_t>(b)] = over;
         }
       },
