@@ -1,9 +1,13 @@
 #include "octaclay/gpu/brush_engine.h"
 
+#include "all_layers_pass.h"
 #include "brush_inputs.h"
 #include "brush_program.h"
+#include "dab_pass.h"
+#include "layer_passes.h"
 #include "loaded_brush.h"
 #include "pass_watchdog.h"
+#include "reparameterize_pass.h"
 #include "seam_pass.h"
 #include "texture_copy.h"
 #include "texture_units.h"
@@ -48,7 +52,9 @@ std::chrono::nanoseconds defaultPassTimeLimit() {
 BrushEngine::BrushEngine()
     : passTimeLimit_(defaultPassTimeLimit()), watchdog_(std::make_unique<detail::PassWatchdog>()),
       seamProgram_(detail::seamProgram()), nearestMaps_(Sampler::repeating(false)),
-      bilinearMaps_(Sampler::repeating(true)) {}
+      bilinearMaps_(Sampler::repeating(true)),
+      allLayers_(std::make_unique<detail::AllLayersPass>()),
+      reparameterize_(std::make_unique<detail::ReparameterizePass>()) {}
 
 BrushEngine::~BrushEngine() = default;
 
@@ -245,104 +251,38 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     document.changed(layer, changedRects);
   };
 
-  if (brush.reparameterize()) {
-    // Positions always; a paint layer only when painted: an unpainted one is its fill everywhere,
-    // which resampling keeps (and the mask would stop counting as unpainted).
-    std::vector<core::EditLayer> layers{core::EditLayer::Positions};
-    const core::Document& d = document.mirror();
-    if (!d.diffuse.uniform()) layers.push_back(core::EditLayer::Diffuse);
-    if (!d.feature.uniform()) layers.push_back(core::EditLayer::Feature);
-    if (!d.mask.uniform()) layers.push_back(core::EditLayer::Mask);
-    reparameterize(document, brush, dab, rects, maskTexture, enums, layers);
+  // The brush's pass kind draws; each layer it wrote is finished through finishLayer.
+  detail::DabPass pass{document,
+                       brush,
+                       dab,
+                       rects,
+                       maskTexture,
+                       enums,
+                       rectPass_,
+                       [&](core::EditLayer layer) -> const Program& {
+                         return program(brush, layer, maskTexture, enums);
+                       },
+                       bindInputs,
+                       [&] { passIssued(brush); },
+                       finishLayer};
+  switch (brush.manifest.pass) {
+  case PassKind::Reparameterize: {
+    const std::vector<core::EditLayer> layers =
+        detail::ReparameterizePass::layersOf(document.mirror());
+    reparameterize_->run(pass, layers, strokeOpen_);
     for (core::EditLayer layer : layers)
       finishLayer(layer);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return result;
+    break;
   }
-
-  if (brush.allLayers) {
-    // One pass writes every layer: each reads all layers as they were before the dab.
-    const Program& pass = program(brush, core::EditLayer::Positions, maskTexture, enums);
-    const std::array<core::EditLayer, 3> attached{
-        core::EditLayer::Positions, core::EditLayer::Diffuse, core::EditLayer::Feature};
-    if (!layersTarget_.id())
-      layersTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));
-    layersTarget_.bind();
-    std::array<GLenum, 3> drawBuffers{};
-    for (std::size_t k = 0; k < attached.size(); ++k) {
-      const bool written = std::find(brush.manifest.writes.begin(), brush.manifest.writes.end(),
-                                     attached[k]) != brush.manifest.writes.end();
-      // A layer whose texels the pass reads elsewhere goes to its scratch.
-      const Texture& target = brush.writesInPlace(attached[k]) ? document.texture(attached[k])
-                                                               : document.scratch(attached[k]);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
-                             GL_TEXTURE_2D, written ? target.id() : 0, 0);
-      drawBuffers[k] = written ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k) : GL_NONE;
-      if (brush.mixes(attached[k])) { // rgb = mix(rgb, out.rgb, out.a); alpha kept
-        const auto buffer = static_cast<GLuint>(k);
-        glEnablei(GL_BLEND, buffer);
-        glBlendEquationi(buffer, GL_FUNC_ADD);
-        glBlendFuncSeparatei(buffer, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-      }
-    }
-    glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
-    // u_layer: the positions (brushInputAt's value is the positions texel).
-    bindInputs(pass, core::EditLayer::Positions);
-    if (brush.readsWhatItWrites()) glTextureBarrier(); // earlier writes are visible
-    rectPass_.draw(rects, side, rows);
-    for (core::EditLayer layer : brush.manifest.mix)
-      glDisablei(GL_BLEND, static_cast<GLuint>(layer)); // attachment k holds layer k
-    // Detached: the framebuffer must not keep a document's textures alive, nor render into a
-    // texture that a whole-image swap makes a layer's.
-    for (std::size_t k = 0; k < attached.size(); ++k)
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
-                             GL_TEXTURE_2D, 0, 0);
-    checkGlError("brush " + brushId + " pass");
-    passIssued(brush);
-    for (core::EditLayer layer : brush.manifest.writes)
-      finishLayer(layer);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return result;
-  }
-
-  // Positions last: every other layer's pass reads the positions from before the dab.
-  // Except for brushes that read the feature layer: their positions pass displaces by the
-  // change of it, so it runs while the feature layer still holds the old one.
-  std::vector<core::EditLayer> order = brush.manifest.writes;
-  const bool readsFeature = std::find(brush.manifest.reads.begin(), brush.manifest.reads.end(),
-                                      core::EditLayer::Feature) != brush.manifest.reads.end();
-  std::stable_partition(order.begin(), order.end(), [readsFeature](core::EditLayer l) {
-    return (l != core::EditLayer::Positions) != readsFeature;
-  });
-  for (core::EditLayer layer : order) {
-    const Program& pass = program(brush, layer, maskTexture, enums);
-    const bool inPlace = brush.writesInPlace(layer);
-    (inPlace ? document.texture(layer) : document.scratch(layer)).bindAsTarget();
-    bindInputs(pass, layer);
-    if (inPlace) glTextureBarrier();
-    rectPass_.draw(rects, side, rows);
-    passIssued(brush);
-    finishLayer(layer);
+  case PassKind::AllLayers:
+    allLayers_->run(pass);
+    break;
+  case PassKind::Layers:
+    detail::runLayerPasses(pass);
+    break;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return result;
-}
-
-void BrushEngine::resetOffsets(const std::vector<core::TexelRect>& where) {
-  baseTaken_ = {};
-  baseOf_ = nullptr;
-  if (!offsets_[0].id()) return;
-  const GLfloat zero[4] = {0, 0, 0, 0};
-  glEnable(GL_SCISSOR_TEST);
-  for (Texture& t : offsets_) {
-    t.bindAsTarget();
-    for (const core::TexelRect& r : where) {
-      glScissor(r.x, r.y, r.width, r.height);
-      glClearBufferfv(GL_COLOR, 0, zero);
-    }
-  }
-  glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void BrushEngine::captureStrokeStart(GpuDocument& document) {
@@ -359,103 +299,7 @@ void BrushEngine::captureStrokeStart(GpuDocument& document) {
 void BrushEngine::endStroke() {
   strokeOpen_ = false;
   strokeStartOf_ = nullptr;
-  if (baseOf_) resetOffsets({core::TexelRect{0, 0, offsets_[0].width(), offsets_[0].height()}});
-}
-
-void BrushEngine::reparameterize(GpuDocument& document, LoadedBrush& brush, const Dab& dab,
-                                 const std::vector<core::TexelRect>& rects, bool maskTexture,
-                                 const std::vector<int>& enums,
-                                 const std::vector<core::EditLayer>& layers) {
-  const int side = document.side(), rows = document.rows();
-  const core::TexelRect whole = document.whole();
-  if (baseOf_ && baseOf_ != &document) resetOffsets({whole});
-  if (offsets_[0].width() != side || offsets_[0].height() != rows) {
-    for (Texture& t : offsets_)
-      t = Texture(side, rows, TextureFormat::Rgba32f);
-    resetOffsets({whole});
-  }
-  // The layers at the stroke's first dab: every dab of it resamples from them.
-  baseOf_ = &document;
-  for (core::EditLayer layer : layers) {
-    const auto k = static_cast<std::size_t>(layer);
-    if (baseTaken_[k]) continue;
-    const Texture& current = document.texture(layer);
-    if (base_[k].width() != side || base_[k].height() != rows ||
-        base_[k].format() != current.format())
-      base_[k] = Texture(side, rows, current.format());
-    detail::copyRect(current, base_[k], whole);
-    baseTaken_[k] = true;
-  }
-  const auto bindBase = [&] {
-    detail::kPositionsUnit.bind(base_[0].id());
-    detail::kDiffuseUnit.bind(baseTaken_[1] ? base_[1].id() : 0);
-    detail::kFeatureUnit.bind(baseTaken_[2] ? base_[2].id() : 0);
-    detail::kMaskUnit.bind(baseTaken_[3] ? base_[3].id()
-                                         : document.texture(core::EditLayer::Mask).id());
-    detail::kOffsetsUnit.bind(offsets_[0].id());
-    glActiveTexture(GL_TEXTURE0);
-  };
-  try {
-    // Steps: each reads the field so far (u_offsets) and writes the next into the twin over
-    // rects. Elsewhere both hold the same field (zero outside the stroke's dabs).
-    const Program& step = program(brush, core::EditLayer::Positions, maskTexture, enums);
-    step.use();
-    detail::setUniforms(step, brush.manifest, document, core::EditLayer::Positions, dab);
-    detail::bindLayers(document, core::EditLayer::Positions,
-                       brush.manifest.readsLayer(core::EditLayer::Diffuse),
-                       brush.manifest.readsLayer(core::EditLayer::Feature));
-    bindMaterial(step, brush.manifest, document, dab);
-    if (brush.manifest.needsStrokeStart()) detail::kStrokeStartUnit.bind(strokeStart_.id());
-    detail::kPositionsUnit.bind(base_[0].id()); // current positions: the base at texel + offset
-    for (int k = 0; k < brush.manifest.iterations; ++k) {
-      offsets_[1].bindAsTarget();
-      detail::kOffsetsUnit.bind(offsets_[0].id());
-      glActiveTexture(GL_TEXTURE0);
-      rectPass_.draw(rects, side, rows);
-      passIssued(brush);
-      std::swap(offsets_[0], offsets_[1]);
-    }
-    for (const core::TexelRect& r : rects) // the twin catches up for the stroke's next dab
-      detail::copyRect(offsets_[0], offsets_[1], r);
-    checkGlError("brush " + brush.manifest.id + " offset steps");
-
-    // One resample of every layer from the base layers into their scratches.
-    if (!resampleProgram_.id())
-      resampleProgram_ =
-          Program("gpu/shaders/resample.glsl", rectsVertexShader(), detail::resampleSource());
-    resampleProgram_.use();
-    for (const detail::BrushUnit& unit : detail::kLayerUnits)
-      glUniform1i(resampleProgram_.uniform(unit.sampler), unit.unit);
-    glUniform1i(resampleProgram_.uniform("u_size"), document.size());
-    glUniform2i(glGetUniformLocation(resampleProgram_.id(), "u_cells"), document.grid().width,
-                document.grid().height);
-    glUniform1i(glGetUniformLocation(resampleProgram_.id(), "u_topology"),
-                static_cast<int>(document.topology()));
-    bindBase();
-    if (!resampleTarget_.id())
-      resampleTarget_ = Framebuffer(document.scratch(core::EditLayer::Positions));
-    resampleTarget_.bind();
-    std::array<GLenum, 4> drawBuffers{GL_NONE, GL_NONE, GL_NONE, GL_NONE};
-    for (core::EditLayer layer : layers) {
-      const auto k = static_cast<std::size_t>(layer); // attachment k holds layer k
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k),
-                             GL_TEXTURE_2D, document.scratch(layer).id(), 0);
-      drawBuffers[k] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(k);
-    }
-    glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
-    rectPass_.draw(rects, side, rows);
-    // Detached, as the brushLayers() target: no document texture stays attached.
-    for (GLenum k = 0; k < 4; ++k)
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, 0, 0);
-    checkGlError("brush " + brush.manifest.id + " resample");
-    passIssued(brush);
-  } catch (...) {
-    resetOffsets({whole});
-    throw;
-  }
-  detail::kOffsetsUnit.bind(0);
-  glActiveTexture(GL_TEXTURE0);
-  if (!strokeOpen_) resetOffsets(rects); // a dab of its own: the field is zero again
+  reparameterize_->endStroke();
 }
 
 } // namespace octaclay::gpu

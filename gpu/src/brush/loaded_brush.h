@@ -12,9 +12,10 @@
 #include <tuple>
 #include <vector>
 
-namespace octaclay::gpu {
+namespace octaclay::gpu::detail {
 
-struct BrushEngine::LoadedBrush {
+/// A brush the engine loaded: its manifest and body, its programs, and how its passes write.
+struct LoadedBrush {
   BrushManifest manifest;
   std::string body;
   // Set when a pass overran the watchdog's limit: the brush's dabs throw it until reloaded.
@@ -57,4 +58,4 @@ struct BrushEngine::LoadedBrush {
   std::map<std::tuple<core::EditLayer, bool, std::vector<int>>, Program> programs;
 };
 
-} // namespace octaclay::gpu
+} // namespace octaclay::gpu::detail

@@ -21,7 +21,10 @@ namespace octaclay::gpu {
 class MaterialCatalog;
 namespace detail {
 class PassWatchdog;
-}
+struct LoadedBrush;
+class AllLayersPass;
+class ReparameterizePass;
+} // namespace detail
 
 /// One application of a brush at one place.
 struct Dab {
@@ -147,7 +150,7 @@ public:
                                      const Dab& dab) const;
 
 private:
-  struct LoadedBrush;
+  using LoadedBrush = detail::LoadedBrush;
   struct GpuMaterial {
     std::string id;
     float tileSize = 0, heightScale = 0;
@@ -181,35 +184,17 @@ private:
   /// The material maps' filters, bound per texture unit for a dab.
   Sampler nearestMaps_, bilinearMaps_;
   RectPass rectPass_;
-  /// brushLayers() passes: the written layers' scratch textures as colour attachments 0 to 2
-  /// (positions, diffuse, feature), attached for each dab and detached after it.
-  Framebuffer layersTarget_;
-  /// Reparameterize brushes: the offset field (xy, samples) and its ping-pong twin, zero
-  /// everywhere between dabs; the resampling pass (compiled on first use) and its target, every
-  /// layer's scratch as attachments 0 to 3.
-  std::array<Texture, 2> offsets_;
-  /// The layers as they were at the stroke's first reparameterize dab (positions, diffuse,
-  /// feature, mask; a layer only once a dab resamples it), and whose they are.
-  std::array<Texture, 4> base_;
-  std::array<bool, 4> baseTaken_{};
-  const GpuDocument* baseOf_ = nullptr;
+  /// The pass kinds that keep GL objects between dabs (the plain one, layer_passes, keeps
+  /// none): a brushLayers() body's target, a reparameterize brush's offset field.
+  std::unique_ptr<detail::AllLayersPass> allLayers_;
+  std::unique_ptr<detail::ReparameterizePass> reparameterize_;
   bool strokeOpen_ = false;
-  /// Forgets the stroke's base layers and zeroes the offset field (where: its texels that may
-  /// be non-zero).
-  void resetOffsets(const std::vector<core::TexelRect>& where);
   /// The positions at the stroke's start, for brushes that need "stroke_start"; taken at the
   /// stroke's first such dab of strokeStartOf_ (null: not taken).
   Texture strokeStart_;
   const GpuDocument* strokeStartOf_ = nullptr;
   /// Copies the document's positions into strokeStart_ unless this stroke already did.
   void captureStrokeStart(GpuDocument& document);
-  Program resampleProgram_;
-  Framebuffer resampleTarget_;
-  /// A reparameterize dab over rects: iterations steps of the brush's offset field, then one
-  /// resample of every layer in layers into its scratch, and the field is zero again.
-  void reparameterize(GpuDocument& document, LoadedBrush& brush, const Dab& dab,
-                      const std::vector<core::TexelRect>& rects, bool maskTexture,
-                      const std::vector<int>& enums, const std::vector<core::EditLayer>& layers);
 };
 
 /// The border samples that a pass over tiles (of an image `side` samples wide) may change, and
