@@ -65,6 +65,7 @@ layout(location = 1) out vec4 o_diffuse;
 layout(location = 2) out vec4 o_feature;
 
 void main() {
+  loadDab();
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 positions = texelFetch(u_positions, t, 0);
   BrushInput b = brushInputAt(identifiedTexel(t), positions);
@@ -91,6 +92,7 @@ void main() {
 out vec4 o_value;
 
 void main() {
+  loadDab();
   ivec2 t = ivec2(gl_FragCoord.xy);
   vec4 value = texelFetch(u_layer, t, 0);
   BrushInput b = brushInputAt(identifiedTexel(t), value);

@@ -19,21 +19,52 @@ uniform int u_falloffCurveSize;
 uniform int u_size;            // N: the image has (N+1)^2 samples (a torus's or plane's W)
 uniform ivec2 u_cells;         // W, H: the image has (W+1) x (H+1) samples (N, N on the ball)
 uniform int u_topology;        // 0 octahedral (the default), 1 torus, 2 plane (core::Topology)
-uniform vec3 u_centre;
-uniform vec3 u_centreNormal;
-uniform float u_radius;        // object units
-uniform float u_strength;      // fraction of the radius
-uniform float u_pressure;
-uniform float u_normalCosine;  // volume+normal: minimum cos(angle) to the centre normal
-uniform ivec2 u_centreTexel;
+// The dab: uniforms for a pass of one dab. A batch of dabs in one pass (OCTACLAY_BATCH: dabs
+// whose passes cannot see each other's texels, e.g. a dab's mirror images) gives each rectangle
+// its dab (v_dab, from the vertex shader) and sets these as globals from it: loadDab(), first
+// in main().
+#if defined(OCTACLAY_BATCH)
+// The dab's values, flat from the vertex shader (batchedRectsVertexShader, which reads them
+// once a vertex): centre, centre normal, drag, stroke delta, stroke direction, the projection's
+// direction, right and up (xyz each), then radius, strength, pressure and normal cosine.
+flat in vec4 v_dab[9];
+flat in ivec4 v_dabTexel; // xy: the centre texel
+#define OCTACLAY_DAB_VALUE
+#else
+#define OCTACLAY_DAB_VALUE uniform
+#endif
+OCTACLAY_DAB_VALUE vec3 u_centre;
+OCTACLAY_DAB_VALUE vec3 u_centreNormal;
+OCTACLAY_DAB_VALUE float u_radius;        // object units
+OCTACLAY_DAB_VALUE float u_strength;      // fraction of the radius
+OCTACLAY_DAB_VALUE float u_pressure;
+OCTACLAY_DAB_VALUE float u_normalCosine;  // volume+normal: minimum cos(angle) to the centre normal
+OCTACLAY_DAB_VALUE ivec2 u_centreTexel;
+OCTACLAY_DAB_VALUE vec3 u_projectionDir;     // splats: projection frame, object space, unit
+OCTACLAY_DAB_VALUE vec3 u_projectionRight;
+OCTACLAY_DAB_VALUE vec3 u_projectionUp;
+OCTACLAY_DAB_VALUE vec3 u_drag;            // API 3: the drag since the stroke began, object units
+OCTACLAY_DAB_VALUE vec3 u_strokeDelta;     // its change since the stroke's previous dab
+OCTACLAY_DAB_VALUE vec3 u_strokeDirection; // that change's direction, unit (0 before it moved)
+void loadDab() {
+#if defined(OCTACLAY_BATCH)
+  u_centre = v_dab[0].xyz;
+  u_centreNormal = v_dab[1].xyz;
+  u_drag = v_dab[2].xyz;
+  u_strokeDelta = v_dab[3].xyz;
+  u_strokeDirection = v_dab[4].xyz;
+  u_projectionDir = v_dab[5].xyz;
+  u_projectionRight = v_dab[6].xyz;
+  u_projectionUp = v_dab[7].xyz;
+  u_radius = v_dab[8].x;
+  u_strength = v_dab[8].y;
+  u_pressure = v_dab[8].z;
+  u_normalCosine = v_dab[8].w;
+  u_centreTexel = v_dabTexel.xy;
+#endif
+}
 uniform sampler2D u_featureLayer; // the feature layer as it was before this dab (splats)
 uniform sampler2D u_diffuseLayer; // the diffuse layer as it was before this dab
-uniform vec3 u_projectionDir;     // splats: projection frame, object space, unit
-uniform vec3 u_projectionRight;
-uniform vec3 u_projectionUp;
-uniform vec3 u_drag;            // API 3: the drag since the stroke began, object units
-uniform vec3 u_strokeDelta;     // its change since the stroke's previous dab
-uniform vec3 u_strokeDirection; // that change's direction, unit (0 before the stroke moved)
 uniform sampler2D u_strokeStart; // "stroke_start": the positions when the stroke began
 #if defined(BRUSH_MATERIAL)
 // The chosen material's maps (repeat-wrapped; nearest texel, bilinear where magnified) and

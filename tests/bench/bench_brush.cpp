@@ -304,6 +304,66 @@ void BM_WatchdogCost(benchmark::State& state) {
   state.counters["watchdog_over_off"] = on / off;
 }
 
+// Issue 32 item 5, dabs that cannot see each other's texels in one pass per layer: a push dab
+// and its mirror image (x symmetry: two places an eighth of the image either side of its centre),
+// in blocks drawn as one batch (BrushEngine::dabs) and as two dabs one after the other, alternating
+// which block goes first. batched_over_one_by_one is the ratio of their summed times.
+void BM_MirroredPush(benchmark::State& state) {
+  Session& s = session();
+  const int n = static_cast<int>(state.range(0));
+  gpu::GpuDocument& document = s.freshDocument(n);
+  gpu::BrushEngine& engine = s.library.engine();
+  const core::GeometryImage& image = document.document().positions;
+  const float radius = static_cast<float>(state.range(1)) / 1000.0f * document.bounds().diagonal();
+  std::array<gpu::Dab, 2> pair;
+  const std::array<core::Sample, 2> at{{{n / 2 - n / 8, n / 2}, {n / 2 + n / 8, n / 2}}};
+  for (std::size_t k = 0; k < 2; ++k) {
+    pair[k].centreTexel = at[k];
+    pair[k].centre = image.at(at[k]).xyz();
+    pair[k].centreNormal = core::vertexNormal(image, at[k]);
+    pair[k].radius = radius;
+  }
+  const auto reaches = [&] {
+    return std::vector<std::vector<core::TexelRect>>{engine.reach(document, "push", pair[0]),
+                                                     engine.reach(document, "push", pair[1])};
+  };
+  if (!engine.batches(document, "push", pair, reaches())) {
+    state.SkipWithError("the two dabs do not batch");
+    return;
+  }
+  document.deferPulls(true);
+  int flip = 0;
+  const auto block = [&](bool batched) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < 6; ++k) { // an even count: each push is pulled back
+      for (gpu::Dab& d : pair)
+        d.strength = (flip % 2 == 0) ? 0.02f : -0.02f;
+      ++flip;
+      if (batched)
+        engine.dabs(document, "push", pair, reaches());
+      else
+        for (const gpu::Dab& d : pair)
+          engine.dab(document, "push", d);
+    }
+    glFinish(); // count the GPU's work, not just its queueing
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  double together = 0, apart = 0;
+  int iteration = 0;
+  for (auto _ : state) {
+    const bool batchFirst = iteration++ % 2 == 0;
+    const double a = block(batchFirst), b = block(!batchFirst);
+    state.SetIterationTime(a + b);
+    together += batchFirst ? a : b;
+    apart += batchFirst ? b : a;
+  }
+  document.deferPulls(false);
+  const double dabs = 12.0 * static_cast<double>(state.iterations());
+  state.counters["batched_ms_per_dab"] = together * 1e3 / dabs;
+  state.counters["one_by_one_ms_per_dab"] = apart * 1e3 / dabs;
+  state.counters["batched_over_one_by_one"] = together / apart;
+}
+
 void BM_PushStroke(benchmark::State& state) {
   timeStrokes(state, "push");
 }
@@ -387,6 +447,13 @@ BENCHMARK(BM_WatchdogCost)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(2.0);
+BENCHMARK(BM_MirroredPush)
+    ->Args({1024, 20})
+    ->Args({1024, 50})
+    ->Args({4096, 20})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(1.0);
 BENCHMARK(BM_PushStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 BENCHMARK(BM_SplatStroke)->Arg(1024)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(4);
 

@@ -320,7 +320,10 @@ void BrushManifestTest::readmeMatchesThePreludeAndTheSchema() {
   QVERIFY(!readme.empty());
 
   std::set<std::string> declared, documented; // "type name[size]"
-  const std::regex declaration(R"(^\s*uniform\s+(\w+)\s+(\w+(\[\d+\])?)\s*;)");
+  // A dab's own values are uniforms declared through OCTACLAY_DAB_VALUE (a batch of dabs sets
+  // them per rectangle instead).
+  const std::regex declaration(
+      R"(^\s*(?:uniform|OCTACLAY_DAB_VALUE)\s+(\w+)\s+(\w+(\[\d+\])?)\s*;)");
   for (const std::string& line : lines(source / "gpu" / "shaders" / "prelude.glsl")) {
     std::smatch m;
     if (std::regex_search(line, m, declaration)) declared.insert(m[1].str() + " " + m[2].str());

@@ -40,7 +40,7 @@ void AllLayersPass::run(DabPass& pass) {
   // u_layer: the positions (brushInputAt's value is the positions texel).
   pass.bindInputs(program, core::EditLayer::Positions);
   if (brush.readsWhatItWrites()) glTextureBarrier(); // earlier writes are visible
-  pass.rectPass.draw(pass.rects, document.side(), document.rows());
+  pass.draw();
   for (core::EditLayer layer : brush.manifest.mix)
     glDisablei(GL_BLEND, static_cast<GLuint>(layer)); // attachment k holds layer k
   for (std::size_t k = 0; k < attached.size(); ++k)

@@ -102,20 +102,20 @@ void BrushEngine::load(const BrushManifest& given, const std::string& shaderSour
 }
 
 const Program& BrushEngine::program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
-                                    const std::vector<int>& enums) {
+                                    const std::vector<int>& enums, bool batched) {
   const auto key =
       std::tuple{brush.allLayers || brush.reparameterize() ? core::EditLayer::Positions : layer,
-                 maskTexture, enums};
+                 maskTexture, enums, batched};
   const auto found = brush.programs.find(key);
   if (found != brush.programs.end()) return found->second;
   const std::string file = brush.manifest.shaderPath().string();
   try {
     return brush.programs
         .emplace(key,
-                 Program(file, rectsVertexShader(),
+                 Program(file, batched ? batchedRectsVertexShader() : rectsVertexShader(),
                          assemble(brush.manifest, layer, brush.allLayers, maskTexture,
                                   brush.allLayers ? brush.allInPlace() : brush.writesInPlace(layer),
-                                  enums, brush.body)))
+                                  enums, brush.body, batched)))
         .first->second;
   } catch (const GlError& e) {
     throw GlError("brush " + brush.manifest.id + ": " + brushLog(e.what(), file));
@@ -185,8 +185,6 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   if (result.tiles.empty()) return result;
   LoadedBrush& brush = *brushes_.at(brushId);
   if (!brush.broken.empty()) throw BrushTimeoutError(brush.broken);
-  const bool maskTexture = !document.mirror().mask.uniform();
-  const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
   const int side = document.side(), rows = document.rows();
   for (const core::TexelRect& t : result.tiles)
     result.texels += static_cast<std::size_t>(t.width) * t.height;
@@ -202,8 +200,91 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   if (seamsInPass)
     for (const core::TexelRect& part : detail::uncoveredParts(result.seams, result.tiles))
       rects.push_back(part);
+  runPasses(document, brush, {&dab, 1}, rects, {},
+            seamsInPass ? std::vector<core::TexelRect>{} : result.seams, result.seams);
+  return result;
+}
+
+std::vector<DabResult> BrushEngine::dabs(GpuDocument& document, const std::string& brushId,
+                                         std::span<const Dab> dabs,
+                                         std::vector<std::vector<core::TexelRect>> tiles) {
+  std::vector<DabResult> results;
+  if (!batches(document, brushId, dabs, tiles)) {
+    for (std::size_t k = 0; k < dabs.size(); ++k)
+      results.push_back(dab(document, brushId, dabs[k], std::move(tiles[k])));
+    return results;
+  }
+  LoadedBrush& brush = *brushes_.at(brushId);
+  // Each dab's tiles merged on their own: a rectangle holds one dab's texels.
+  std::vector<core::TexelRect> rects;
+  std::vector<int> rectDabs;
+  for (std::size_t k = 0; k < dabs.size(); ++k) {
+    DabResult result;
+    result.tiles = std::move(tiles[k]);
+    for (const core::TexelRect& t : result.tiles)
+      result.texels += static_cast<std::size_t>(t.width) * t.height;
+    for (const core::TexelRect& r : core::mergeRects(result.tiles)) {
+      rects.push_back(r);
+      rectDabs.push_back(static_cast<int>(k));
+    }
+    results.push_back(std::move(result));
+  }
+  runPasses(document, brush, dabs, rects, rectDabs, {}, {});
+  return results;
+}
+
+bool BrushEngine::batches(const GpuDocument& document, const std::string& brushId,
+                          std::span<const Dab> dabs,
+                          const std::vector<std::vector<core::TexelRect>>& tiles) const {
+  const auto found = brushes_.find(brushId);
+  if (dabs.size() < 2 || dabs.size() > kMaxBatch || tiles.size() != dabs.size() ||
+      found == brushes_.end() || !found->second->broken.empty())
+    return false;
+  const BrushManifest& manifest = found->second->manifest;
+  // A reparameterize step keeps its field between dabs; a material is bound per dab.
+  if (manifest.pass == PassKind::Reparameterize) return false;
+  for (const BrushParameter& p : manifest.parameters)
+    if (p.type == ParameterType::Material) return false;
+  // Each dab's tiles, grown by what its pass may read around them, clear of the border (no
+  // seaming pass) and of every other dab's. A brush that reads no layer ("reads") reads its own
+  // texel and, for its normals, the eight around it; one that reads some may read as far again
+  // as its tiles reach (smooth reads the eight around, relax and the mask brushes their texel).
+  const bool readsAround = !manifest.reads.empty();
+  std::vector<core::TexelRect> reads;
+  for (const std::vector<core::TexelRect>& dabTiles : tiles) {
+    if (dabTiles.empty() ||
+        !seamRuns(dabTiles, document.side(), document.rows(), document.topology()).empty())
+      return false;
+    int x0 = dabTiles[0].x, y0 = dabTiles[0].y, x1 = x0, y1 = y0;
+    for (const core::TexelRect& t : dabTiles) {
+      x0 = std::min(x0, t.x), y0 = std::min(y0, t.y);
+      x1 = std::max(x1, t.x + t.width), y1 = std::max(y1, t.y + t.height);
+    }
+    const int w = readsAround ? x1 - x0 : 1, h = readsAround ? y1 - y0 : 1;
+    reads.push_back({x0 - w, y0 - h, x1 - x0 + 2 * w, y1 - y0 + 2 * h});
+  }
+  for (std::size_t a = 0; a < reads.size(); ++a)
+    for (std::size_t b = a + 1; b < reads.size(); ++b) {
+      const core::TexelRect &p = reads[a], &q = reads[b];
+      if (p.x < q.x + q.width && q.x < p.x + p.width && p.y < q.y + q.height &&
+          q.y < p.y + p.height)
+        return false;
+    }
+  return true;
+}
+
+void BrushEngine::runPasses(GpuDocument& document, LoadedBrush& brush, std::span<const Dab> dabs,
+                            const std::vector<core::TexelRect>& rects,
+                            const std::vector<int>& rectDabs,
+                            const std::vector<core::TexelRect>& seamed,
+                            const std::vector<core::TexelRect>& seams) {
+  const Dab& dab = dabs[0];
+  const bool batched = !rectDabs.empty();
+  const bool maskTexture = !document.mirror().mask.uniform();
+  const std::vector<int> enums = enumValues(brush.manifest, dab.parameters);
+  const int side = document.side(), rows = document.rows();
   std::vector<core::TexelRect> changedRects = rects; // what a pass changes: rects and seams
-  changedRects.insert(changedRects.end(), result.seams.begin(), result.seams.end());
+  changedRects.insert(changedRects.end(), seams.begin(), seams.end());
   if (brush.manifest.needsStrokeStart()) {
     if (!strokeOpen_) strokeStartOf_ = nullptr; // a dab of its own is a stroke of its own
     captureStrokeStart(document);
@@ -222,6 +303,7 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
   const auto bindInputs = [&](const Program& pass, core::EditLayer layer) {
     pass.use();
     detail::setUniforms(pass, brush.manifest, document, layer, dab);
+    if (batched) detail::uploadBatch(batchDabs_, brush.manifest, document, dabs);
     detail::bindLayers(document, layer, brush.samples(core::EditLayer::Diffuse),
                        brush.samples(core::EditLayer::Feature));
     bindMaterial(pass, brush.manifest, document, dab);
@@ -244,9 +326,8 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
       for (const core::TexelRect& r : rects)
         detail::copyRect(document.scratch(layer), document.texture(layer), r);
     }
-    if (!result.seams.empty() && !seamsInPass)
-      detail::seamLayer(seamProgram_, rectPass_, document, layer, result.seams);
-    checkGlError("brush " + brushId + " pass");
+    if (!seamed.empty()) detail::seamLayer(seamProgram_, rectPass_, document, layer, seamed);
+    checkGlError("brush " + brush.manifest.id + " pass");
 
     document.changed(layer, changedRects);
   };
@@ -259,8 +340,14 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
                        maskTexture,
                        enums,
                        rectPass_,
+                       [&] {
+                         if (batched)
+                           rectPass_.draw(rects, rectDabs, side, rows);
+                         else
+                           rectPass_.draw(rects, side, rows);
+                       },
                        [&](core::EditLayer layer) -> const Program& {
-                         return program(brush, layer, maskTexture, enums);
+                         return program(brush, layer, maskTexture, enums, batched);
                        },
                        bindInputs,
                        [&] { passIssued(brush); },
@@ -282,7 +369,6 @@ DabResult BrushEngine::dab(GpuDocument& document, const std::string& brushId, co
     break;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return result;
 }
 
 void BrushEngine::captureStrokeStart(GpuDocument& document) {

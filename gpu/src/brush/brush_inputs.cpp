@@ -6,8 +6,12 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <span>
+#include <vector>
 
 namespace octaclay::gpu::detail {
 namespace {
@@ -30,7 +34,61 @@ const core::Layer* documentLayer(const core::Document& d, core::EditLayer layer)
   return nullptr;
 }
 
+// The dab's radius as the pass sees it: object units, or for a uv brush samples (the same
+// fraction of them as of the diagonal).
+float passRadius(const BrushManifest& manifest, const GpuDocument& doc, const Dab& dab) {
+  if (manifest.area != AreaMode::Uv) return dab.radius;
+  return dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * doc.samplesAcross();
+}
+
+float normalCosine(const Dab& dab) {
+  return std::cos(dab.normalAngleDegrees * std::numbers::pi_v<float> / 180.0f);
+}
+
+// The projection frame (direction, right, up): along the view through the centre, or the centre
+// normal headless.
+std::array<core::Vec3f, 3> projectionFrame(const Dab& dab) {
+  const core::Vec3f dir =
+      core::normalize(dab.viewDirection ? *dab.viewDirection
+                                        : core::Vec3f{-dab.centreNormal.x, -dab.centreNormal.y,
+                                                      -dab.centreNormal.z});
+  const core::Vec3f helper = std::abs(dir.y) < 0.9f ? core::Vec3f{0, 1, 0} : core::Vec3f{1, 0, 0};
+  const core::Vec3f right = core::normalize(core::cross(helper, dir));
+  return {dir, right, core::cross(dir, right)};
+}
+
 } // namespace
+
+void uploadBatch(Buffer& buffer, const BrushManifest& manifest, const GpuDocument& doc,
+                 std::span<const Dab> dabs) {
+  // batchedRectsVertexShader's BatchDab, std430: nine vec4 and an ivec4 (160 bytes a dab), in
+  // prelude.glsl's v_dab order.
+  struct Record {
+    std::array<float, 36> values;
+    std::array<std::int32_t, 4> centreTexel;
+  };
+  static_assert(sizeof(Record) == 160);
+  std::vector<Record> records(dabs.size());
+  for (std::size_t k = 0; k < dabs.size(); ++k) {
+    const Dab& dab = dabs[k];
+    const auto [dir, right, up] = projectionFrame(dab);
+    std::size_t at = 0;
+    for (const core::Vec3f& v : {dab.centre, dab.centreNormal, dab.drag, dab.strokeDelta,
+                                 dab.strokeDirection, dir, right, up}) {
+      records[k].values[at] = v.x, records[k].values[at + 1] = v.y;
+      records[k].values[at + 2] = v.z, records[k].values[at + 3] = 0.0f;
+      at += 4;
+    }
+    records[k].values[32] = passRadius(manifest, doc, dab);
+    records[k].values[33] = dab.strength;
+    records[k].values[34] = dab.pressure;
+    records[k].values[35] = normalCosine(dab);
+    records[k].centreTexel = {dab.centreTexel.i, dab.centreTexel.j, 0, 0};
+  }
+  if (!buffer.id()) buffer = Buffer::create();
+  buffer.upload(std::as_bytes(std::span(records)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffer.id());
+}
 
 void setUniforms(const Program& program, const BrushManifest& manifest, const GpuDocument& doc,
                  core::EditLayer layer, const Dab& dab) {
@@ -52,14 +110,10 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
   glUniform3f(location(program, "u_centre"), dab.centre.x, dab.centre.y, dab.centre.z);
   glUniform3f(location(program, "u_centreNormal"), dab.centreNormal.x, dab.centreNormal.y,
               dab.centreNormal.z);
-  float radius = dab.radius;
-  if (manifest.area == AreaMode::Uv) // in samples: the same fraction of them as of the diagonal
-    radius = dab.radius / std::max(1e-20f, doc.bounds().diagonal()) * doc.samplesAcross();
-  glUniform1f(location(program, "u_radius"), radius);
+  glUniform1f(location(program, "u_radius"), passRadius(manifest, doc, dab));
   glUniform1f(location(program, "u_strength"), dab.strength);
   glUniform1f(location(program, "u_pressure"), dab.pressure);
-  glUniform1f(location(program, "u_normalCosine"),
-              std::cos(dab.normalAngleDegrees * std::numbers::pi_v<float> / 180.0f));
+  glUniform1f(location(program, "u_normalCosine"), normalCosine(dab));
   glUniform2i(location(program, "u_centreTexel"), dab.centreTexel.i, dab.centreTexel.j);
   glUniform3f(location(program, "u_drag"), dab.drag.x, dab.drag.y, dab.drag.z);
   glUniform3f(location(program, "u_strokeDelta"), dab.strokeDelta.x, dab.strokeDelta.y,
@@ -72,14 +126,7 @@ void setUniforms(const Program& program, const BrushManifest& manifest, const Gp
     glUniform1fv(location(program, "u_falloffCurve"), count, manifest.falloffCurve.data());
     glUniform1i(location(program, "u_falloffCurveSize"), count);
   }
-  // The projection frame: along the view through the centre, or the centre normal headless.
-  const core::Vec3f dir =
-      core::normalize(dab.viewDirection ? *dab.viewDirection
-                                        : core::Vec3f{-dab.centreNormal.x, -dab.centreNormal.y,
-                                                      -dab.centreNormal.z});
-  const core::Vec3f helper = std::abs(dir.y) < 0.9f ? core::Vec3f{0, 1, 0} : core::Vec3f{1, 0, 0};
-  const core::Vec3f right = core::normalize(core::cross(helper, dir));
-  const core::Vec3f up = core::cross(dir, right);
+  const auto [dir, right, up] = projectionFrame(dab);
   glUniform3f(location(program, "u_projectionDir"), dir.x, dir.y, dir.z);
   glUniform3f(location(program, "u_projectionRight"), right.x, right.y, right.z);
   glUniform3f(location(program, "u_projectionUp"), up.x, up.y, up.z);

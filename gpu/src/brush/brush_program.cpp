@@ -136,9 +136,10 @@ void resolveShaderContract(BrushManifest& manifest, const std::string& body) {
 
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
-                     const std::string& body) {
+                     const std::string& body, bool batched) {
   std::string source = kLayerDefines;
   if (maskTexture) source += "#define BRUSH_MASK_TEXTURE\n";
+  if (batched) source += "#define OCTACLAY_BATCH\n";
   // A reparameterize step reads the positions and writes an offset: no layer of its own.
   const bool reparameterize = manifest.pass == PassKind::Reparameterize;
   if (reparameterize) source += kReparameterizeDefines;

@@ -42,9 +42,11 @@ inline constexpr const char* kMaxOffsetStep = "0.35";
 
 /// The fragment source of one pass. allLayers: the body defines brushLayers() and the program
 /// writes every layer at once. enumValues: the enum parameters' values, in manifest order.
+/// batched: the dab's values come from a batch of dabs, one per rectangle (OCTACLAY_BATCH; the
+/// program's vertex shader is batchedRectsVertexShader()).
 std::string assemble(const BrushManifest& manifest, core::EditLayer layer, bool allLayers,
                      bool maskTexture, bool inPlace, const std::vector<int>& enumValues,
-                     const std::string& body);
+                     const std::string& body, bool batched = false);
 
 /// The fragment source of the resampling pass after a reparameterize brush's steps
 /// (resample.glsl with the prelude).

@@ -19,12 +19,14 @@ struct LoadedBrush;
 struct DabPass {
   GpuDocument& document;
   LoadedBrush& brush;
-  const Dab& dab;
+  const Dab& dab; ///< the dab (a batch's first: its values that every dab of it shares)
   /// What every pass draws: the tiles merged into few rectangles (and a torus's seam partners).
   const std::vector<core::TexelRect>& rects;
   bool maskTexture;              ///< the mask is painted: the programs sample it
   const std::vector<int>& enums; ///< the enum parameters' values (which program variant)
   RectPass& rectPass;
+  /// Draws the bound program over rects: for a batch of dabs, each rectangle with its dab.
+  std::function<void()> draw;
   /// The brush's program for a pass writing the layer, compiled on first use. Throws GlError.
   std::function<const Program&(core::EditLayer)> program;
   /// Uses the program and binds what a pass writing the layer reads: the prelude's uniforms,

@@ -16,14 +16,13 @@ void runLayerPasses(DabPass& pass) {
   std::stable_partition(order.begin(), order.end(), [readsFeature](core::EditLayer l) {
     return (l != core::EditLayer::Positions) != readsFeature;
   });
-  const int side = pass.document.side(), rows = pass.document.rows();
   for (core::EditLayer layer : order) {
     const Program& program = pass.program(layer);
     const bool inPlace = pass.brush.writesInPlace(layer);
     (inPlace ? pass.document.texture(layer) : pass.document.scratch(layer)).bindAsTarget();
     pass.bindInputs(program, layer);
     if (inPlace) glTextureBarrier();
-    pass.rectPass.draw(pass.rects, side, rows);
+    pass.draw();
     pass.issued();
     pass.finishLayer(layer);
   }

@@ -52,10 +52,10 @@ struct LoadedBrush {
     return std::any_of(manifest.writes.begin(), manifest.writes.end(),
                        [this](core::EditLayer l) { return writesInPlace(l) && !mixes(l); });
   }
-  // One per written layer (OCTACLAY_LAYER differs), mask kind (BRUSH_MASK_TEXTURE) and the
-  // values of the enum parameters (constants in the source); all but the defaults' variants
-  // are compiled on first use.
-  std::map<std::tuple<core::EditLayer, bool, std::vector<int>>, Program> programs;
+  // One per written layer (OCTACLAY_LAYER differs), mask kind (BRUSH_MASK_TEXTURE), the
+  // values of the enum parameters (constants in the source) and batching (OCTACLAY_BATCH); all
+  // but the defaults' variants are compiled on first use.
+  std::map<std::tuple<core::EditLayer, bool, std::vector<int>, bool>, Program> programs;
 };
 
 } // namespace octaclay::gpu::detail

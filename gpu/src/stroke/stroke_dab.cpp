@@ -94,12 +94,16 @@ void StrokeSession::State::dabAt(std::array<double, 2> xy, float radius, float s
     dab.strokeDelta = detail::mirrored(delta, {}, axesOf[k]);
     dab.strokeDirection = detail::mirrored(lastDirection, {}, axesOf[k]);
     if (settings.viewEye) dab.viewDirection = dab.centre - *settings.viewEye;
-    std::vector<core::TexelRect> reach = brush.stroke == StrokeKind::Anchored && !first
-                                             ? anchorReach[k]
-                                             : engine.reach(document, brush.id, dab);
-    lap(at, phases.reachMs);
+  }
+  const auto reachOf = [&](std::size_t k) {
+    return brush.stroke == StrokeKind::Anchored && !first
+               ? anchorReach[k]
+               : engine.reach(document, brush.id, images[k]);
+  };
+  // Before a dab's passes: its anchor kept, its tiles and their seam partners captured for undo.
+  const auto prepare = [&](std::size_t k, const std::vector<core::TexelRect>& reach) {
     if (keepAnchors) {
-      anchors.push_back(dab);
+      anchors.push_back(images[k]);
       anchorReach.push_back(reach);
     }
     for (const core::TexelRect& r : reach)
@@ -107,22 +111,56 @@ void StrokeSession::State::dabAt(std::array<double, 2> xy, float radius, float s
     for (const core::TexelRect& r : seamRuns(reach, document.side(), document.rows(),
                                              document.topology())) // the seaming pass's partners
       undo.cover(r);
-    lap(at, phases.undoMs);
-    DabResult done;
-    try {
-      done = engine.dab(document, brush.id, dab, std::move(reach));
-    } catch (...) { // a pass that failed or overran (the watchdog): all or nothing
-      abandon();
-      throw;
-    }
-    lap(at, phases.passesMs);
+  };
+  const auto note = [&](std::size_t k, const DabResult& done) {
     for (const core::TexelRect& t : done.tiles)
       touchedTiles.push_back({t.x, t.y, t.width, t.height});
     for (const core::TexelRect& t : done.seams)
       touchedSeams.push_back({t.x, t.y, t.width, t.height});
     if (brush.stroke == StrokeKind::Drag) { // the tip moves as the dab's centre moved
-      if (first) tips.push_back(dab.centre);
-      tips[k] += dab.strokeDelta * (dab.strength * dab.pressure);
+      if (first) tips.push_back(images[k].centre);
+      tips[k] += images[k].strokeDelta * (images[k].strength * images[k].pressure);
+    }
+  };
+  // Mirror images whose passes cannot see each other's texels (their reaches on the surface
+  // before any of them, as their centres are) run in one pass per layer.
+  std::vector<std::vector<core::TexelRect>> reaches;
+  if (images.size() > 1) {
+    for (std::size_t k = 0; k < images.size(); ++k)
+      reaches.push_back(reachOf(k));
+    lap(at, phases.reachMs);
+    if (!engine.batches(document, brush.id, images, reaches)) reaches.clear();
+  }
+  if (!reaches.empty()) {
+    for (std::size_t k = 0; k < images.size(); ++k)
+      prepare(k, reaches[k]);
+    lap(at, phases.undoMs);
+    std::vector<DabResult> done;
+    try {
+      done = engine.dabs(document, brush.id, images, std::move(reaches));
+    } catch (...) { // a pass that failed or overran (the watchdog): all or nothing
+      abandon();
+      throw;
+    }
+    lap(at, phases.passesMs);
+    for (std::size_t k = 0; k < images.size(); ++k)
+      note(k, done[k]);
+  } else {
+    // One after another: each image's reach on the surface its predecessors left.
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      std::vector<core::TexelRect> reach = reachOf(k);
+      lap(at, phases.reachMs);
+      prepare(k, reach);
+      lap(at, phases.undoMs);
+      DabResult done;
+      try {
+        done = engine.dab(document, brush.id, images[k], std::move(reach));
+      } catch (...) { // a pass that failed or overran (the watchdog): all or nothing
+        abandon();
+        throw;
+      }
+      lap(at, phases.passesMs);
+      note(k, done);
     }
   }
   dabs += static_cast<int>(images.size());

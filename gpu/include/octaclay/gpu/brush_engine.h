@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -114,6 +115,23 @@ public:
   /// The same with the tiles reach() returned for this dab (a caller that needed them first).
   DabResult dab(GpuDocument& document, const std::string& brushId, const Dab& dab,
                 std::vector<core::TexelRect> tiles);
+  /// Several dabs of one brush (a dab's mirror images), each with its tiles from reach(), and
+  /// their results in order. When no pass of one can see another's texels (batches()), one pass
+  /// per layer draws them all, each rectangle with its dab's values; else they run one after
+  /// the other as dab() runs them. The same texels either way. Throws what dab() throws.
+  std::vector<DabResult> dabs(GpuDocument& document, const std::string& brushId,
+                              std::span<const Dab> dabs,
+                              std::vector<std::vector<core::TexelRect>> tiles);
+  /// Whether dabs() draws these dabs in one pass per layer: two to kMaxBatch of them, of a brush
+  /// that is neither reparameterize nor bound to a material per dab, none reaching the border
+  /// (no seaming pass), and each one's tiles, grown by what its pass may read around them, clear
+  /// of every other's: by one texel (its normals) for a brush that reads no layer, by their own
+  /// width and height for one that does ("reads": other texels of them, e.g. smooth's eight
+  /// neighbours). No GL work.
+  bool batches(const GpuDocument& document, const std::string& brushId, std::span<const Dab> dabs,
+               const std::vector<std::vector<core::TexelRect>>& tiles) const;
+  /// The most dabs one batch draws (a dab and its seven mirror images).
+  static constexpr std::size_t kMaxBatch = 8;
 
   /// Opens and closes a stroke. A reparameterize brush's dabs between the two share one offset
   /// field and resample from the layers as they were at the stroke's first such dab, so that a
@@ -164,10 +182,10 @@ private:
   /// whatever else binds textures there).
   static void releaseMaterialUnits();
   std::vector<GpuMaterial> materials_;
-  /// The brush's program for a layer, mask kind and enum parameters' values, compiled on first
-  /// use. Throws GlError.
+  /// The brush's program for a layer, mask kind and enum parameters' values, for one dab or a
+  /// batch of them, compiled on first use. Throws GlError.
   const Program& program(LoadedBrush& brush, core::EditLayer layer, bool maskTexture,
-                         const std::vector<int>& enums);
+                         const std::vector<int>& enums, bool batched = false);
   std::map<std::string, std::unique_ptr<LoadedBrush>> brushes_;
   std::chrono::nanoseconds passTimeLimit_ = std::chrono::seconds(2);
   /// The watchdog's fences, the passes not yet known to be finished.
@@ -189,6 +207,15 @@ private:
   std::unique_ptr<detail::AllLayersPass> allLayers_;
   std::unique_ptr<detail::ReparameterizePass> reparameterize_;
   bool strokeOpen_ = false;
+  /// A batch's per-dab values (uploadBatch), the storage its programs read.
+  Buffer batchDabs_;
+  /// One dab's passes, or a batch's (rectDabs: each rectangle's dab; empty for one dab), over
+  /// rects; then each layer written is finished: back into its texture, seamed over `seamed`,
+  /// and noted changed over rects and seams.
+  void runPasses(GpuDocument& document, LoadedBrush& brush, std::span<const Dab> dabs,
+                 const std::vector<core::TexelRect>& rects, const std::vector<int>& rectDabs,
+                 const std::vector<core::TexelRect>& seamed,
+                 const std::vector<core::TexelRect>& seams);
   /// The positions at the stroke's start, for brushes that need "stroke_start"; taken at the
   /// stroke's first such dab of strokeStartOf_ (null: not taken).
   Texture strokeStart_;

@@ -167,6 +167,10 @@ public:
 
   /// Runs the bound program over rects of a target of width × height texels (the viewport).
   void draw(std::span<const core::TexelRect> rects, int width, int height);
+  /// The same for a program made with batchedRectsVertexShader(): rectangle k's fragments get
+  /// dab dabOfRect[k]'s values.
+  void draw(std::span<const core::TexelRect> rects, std::span<const int> dabOfRect, int width,
+            int height);
 
 private:
   Buffer rects_;
@@ -176,6 +180,9 @@ private:
 /// The vertex shader of RectPass programs: gl_FragCoord.xy of every fragment is a texel centre
 /// inside one of the pass's rectangles.
 const std::string& rectsVertexShader();
+/// The same for a batch of dabs: each rectangle's dab's values (storage binding 1, nine vec4 and
+/// an ivec4 a dab) as `flat out vec4 v_dab[9]` and `flat out ivec4 v_dabTexel`.
+const std::string& batchedRectsVertexShader();
 
 /// Move-only owner of a linked vertex + fragment program.
 class Program {
