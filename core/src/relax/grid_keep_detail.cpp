@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
@@ -253,14 +254,93 @@ double boundAt(const ParameterBounds& bounds, Offset x, Vec3d p) {
   return bound * bound;
 }
 
+// An upper bound on the distance from a point of the old surface to the new one, without a
+// search: the old point at parameter point x (in a moved cell) is the old surface there, and a
+// new triangle whose corners show the old surface at parameter points around x has, at x's
+// weights among those points, a point of the new surface. The triangle is looked for among the
+// moved cells around where x is shown from (q with q + step × offset(q) = x: two fixed-point
+// steps: its cell, then the eight around it; the first triangle over x gives the bound); weights
+// a float's rounding outside the triangle are clamped into it, so the point is always on the new
+// surface. Infinity where no such triangle is found.
+struct ShownBounds {
+  const ParameterField& field;
+  /// Per lattice cell (cellsWide × cellsHigh), its index among the moved cells, or -1.
+  const std::vector<std::int32_t>& movedIndex;
+  /// Per new corner (four a moved cell, in cellTriangles' order): the parameter point it shows.
+  const std::vector<Offset>& params;
+  const TriangleMesh& newSurface; ///< the moved cells' new triangles first
+  double step;
+};
+
+double shownBoundAt(const ShownBounds& b, Offset x, Vec3d p) {
+  const ParameterField& f = b.field;
+  Offset q = x;
+  for (int k = 0; k < 2; ++k) {
+    int ri = static_cast<int>(std::lround(q.x)), rj = static_cast<int>(std::lround(q.y));
+    if (!f.torus()) ri = std::clamp(ri, 0, f.cellsWide), rj = std::clamp(rj, 0, f.cellsHigh);
+    const Offset at = f.point(ri, rj);
+    q = {x.x - b.step * (at.x - double(ri)), x.y - b.step * (at.y - double(rj))};
+  }
+  const int qi = static_cast<int>(std::floor(q.x)), qj = static_cast<int>(std::floor(q.y));
+  // q's cell first, then the eight around it; the first triangle over x gives the bound.
+  static constexpr std::array<std::array<int, 2>, 9> kAround{
+      {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}}};
+  for (const auto& [di, dj] : kAround) {
+    {
+      int ca = qi + di, cb = qj + dj;
+      if (f.torus()) {
+        std::tie(ca, cb) = f.canonicalOf(ca, cb);
+      } else if (ca < 0 || cb < 0 || ca >= f.cellsWide || cb >= f.cellsHigh) {
+        continue;
+      }
+      const std::int32_t c =
+          b.movedIndex[static_cast<std::size_t>(cb) * static_cast<std::size_t>(f.cellsWide) +
+                       static_cast<std::size_t>(ca)];
+      if (c < 0) continue;
+      // x in the canonical cell's frame (a torus's periods apart).
+      const Offset y{x.x - double(qi + di - ca), x.y - double(qj + dj - cb)};
+      const std::size_t base = 4 * static_cast<std::size_t>(c);
+      for (const std::array<std::size_t, 3>& t :
+           {std::array<std::size_t, 3>{0, 1, 3}, std::array<std::size_t, 3>{1, 2, 3}}) {
+        const Offset &pa = b.params[base + t[0]], &pb = b.params[base + t[1]],
+                     &pc = b.params[base + t[2]];
+        const double e0x = pb.x - pa.x, e0y = pb.y - pa.y, e1x = pc.x - pa.x, e1y = pc.y - pa.y;
+        const double det = e0x * e1y - e1x * e0y;
+        if (!(std::abs(det) > 0)) continue;
+        const double rx = y.x - pa.x, ry = y.y - pa.y;
+        std::array<double, 3> w{0, (rx * e1y - e1x * ry) / det, (e0x * ry - rx * e0y) / det};
+        w[0] = 1 - w[1] - w[2];
+        if (!(std::min({w[0], w[1], w[2]}) > -1e-6)) continue; // not the triangle over x
+        double sum = 0;
+        for (double& v : w)
+          sum += (v = std::max(v, 0.0));
+        Vec3d n(0, 0, 0);
+        for (std::size_t k = 0; k < 3; ++k)
+          n = n + Vec3d(b.newSurface.positions[base + t[k]]) * (w[k] / sum);
+        const Vec3d d = p - n;
+        const double size = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(n.x),
+                                      std::abs(n.y), std::abs(n.z)});
+        // A billionth of the size more: the search measures the same triangle in another order.
+        const double bound = std::sqrt(dot(d, d)) + 1e-9 * size;
+        return bound * bound;
+      }
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 // Adds to `side` the distances from the check points of the `checked` cells' two triangles of
 // `from` (triangles 2c and 2c + 1; with or without their corners) to the surface `to`. Stops
 // early once a point lies farther than giveUpAt (squared) unless per-cell figures are noted.
-// With `bounds` (the new surface against the old), a point whose ParameterBounds bound is
-// within bounds->within takes it and is not searched: every figure over that is a search's.
+// With `bound` (given the point's triangle in `from`, its weights u, v, w out of d and the
+// point: an upper bound on its squared distance to `to`, or infinity), a point whose bound is
+// within `within` takes it and is not searched: every figure over that is a search's.
+using PointBound = std::function<double(const std::array<std::uint32_t, 3>& triangle, int u, int v,
+                                        int w, int d, Vec3d p)>;
 void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& checked,
                   const AabbTree& to, float medianEdge, bool corners, SideFigures& side,
-                  bool noting, double giveUpAt, const ParameterBounds* bounds = nullptr) {
+                  bool noting, double giveUpAt, const PointBound* bound = nullptr,
+                  double within = 0) {
   std::mutex merge;
   std::atomic<bool> failed = false;
   detail::parallelRows(
@@ -290,17 +370,9 @@ void farthestFrom(const TriangleMesh& from, const std::vector<std::size_t>& chec
                 const int w = d - u - v;
                 if (!corners && (u == d || v == d || w == d)) continue;
                 const Vec3d p = (double(u) * a + double(v) * b + double(w) * c3) * (1.0 / d);
-                double squared = std::numeric_limits<double>::infinity();
-                if (bounds) {
-                  const Offset &pa = bounds->params[tri[0]], &pb = bounds->params[tri[1]],
-                               &pc = bounds->params[tri[2]];
-                  squared = boundAt(
-                      *bounds,
-                      {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
-                       (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
-                      p);
-                }
-                if (!bounds || !(squared <= bounds->within * bounds->within)) {
+                double squared =
+                    bound ? (*bound)(tri, u, v, w, d, p) : std::numeric_limits<double>::infinity();
+                if (!bound || !(squared <= within * within)) {
                   const AabbTree::Hit hit = to.closest(p, hint);
                   hint = hit.triangle;
                   squared = hit.distanceSquared;
@@ -410,7 +482,9 @@ Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, doubl
       side.worst = std::max(side.worst, cornerMove);
   }
   const AabbTree newTree(newSurface);
-  // The bounded cells' RMS share: their triangles' centroids, both ways.
+  // The bounded cells' RMS share: their triangles' centroids, both ways (each way's search from
+  // the triangle its last one found: the cells are in order, so near one another).
+  std::uint32_t hints[2] = {AabbTree::noTriangle, AabbTree::noTriangle};
   for (const std::size_t c : bounded)
     for (const std::size_t t : {2 * c, 2 * c + 1})
       for (int way = 0; way < 2; ++way) {
@@ -420,14 +494,47 @@ Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, doubl
             c3(from.positions[tri[2]]);
         const double area = 0.5 * std::sqrt(dot(cross(b - a, c3 - a), cross(b - a, c3 - a)));
         const AabbTree& to = way == 0 ? oldSurface : newTree;
-        sides[way].squares += area * to.closest((a + b + c3) * (1.0 / 3)).distanceSquared;
+        const AabbTree::Hit hit = to.closest((a + b + c3) * (1.0 / 3), hints[way]);
+        hints[way] = hit.triangle;
+        sides[way].squares += area * hit.distanceSquared;
         sides[way].weight += area;
       }
-  const ParameterBounds bounds{image, newParams, onOld, f, 0.5 * kHausdorffTolerance * diagonal};
+  const double within = 0.5 * kHausdorffTolerance * diagonal;
+  const ParameterBounds bounds{image, newParams, onOld, f, within};
+  const PointBound newToOld = [&](const std::array<std::uint32_t, 3>& tri, int u, int v, int w,
+                                  int d, Vec3d p) {
+    const Offset &pa = newParams[tri[0]], &pb = newParams[tri[1]], &pc = newParams[tri[2]];
+    return boundAt(bounds,
+                   {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
+                    (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
+                   p);
+  };
   farthestFrom(newSurface, checked, oldSurface, medianEdge, false, sides[0], noting, giveUpAt,
-               useBounds ? &bounds : nullptr);
-  if (noting || sides[0].worst <= giveUpAt)
-    farthestFrom(oldMoved, checked, newTree, medianEdge, true, sides[1], noting, giveUpAt);
+               useBounds ? &newToOld : nullptr, within);
+  if (noting || sides[0].worst <= giveUpAt) {
+    // The old side's points by where the new surface shows them (ShownBounds).
+    std::vector<std::int32_t> movedIndex(
+        static_cast<std::size_t>(f.cellsWide) * static_cast<std::size_t>(f.cellsHigh), -1);
+    for (std::size_t c = 0; c < moved.size(); ++c)
+      movedIndex[static_cast<std::size_t>(moved[c][1]) * static_cast<std::size_t>(f.cellsWide) +
+                 static_cast<std::size_t>(moved[c][0])] = static_cast<std::int32_t>(c);
+    const ShownBounds shownBounds{f, movedIndex, newParams, newSurface, step};
+    const PointBound oldToNew = [&](const std::array<std::uint32_t, 3>& tri, int u, int v, int w,
+                                    int d, Vec3d p) {
+      // The old corners' parameter points: their lattice samples (four a moved cell).
+      const auto param = [&](std::uint32_t k) {
+        const auto& [i, j] = moved[k / 4];
+        return Offset{double(i + (k % 4 == 1 || k % 4 == 2)), double(j + (k % 4 >= 2))};
+      };
+      const Offset pa = param(tri[0]), pb = param(tri[1]), pc = param(tri[2]);
+      return shownBoundAt(shownBounds,
+                          {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
+                           (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
+                          p);
+    };
+    farthestFrom(oldMoved, checked, newTree, medianEdge, true, sides[1], noting, giveUpAt,
+                 useBounds ? &oldToNew : nullptr, within);
+  }
   if (noting) {
     farCells->clear();
     for (std::size_t c = 0; c < moved.size(); ++c)
