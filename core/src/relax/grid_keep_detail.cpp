@@ -329,6 +329,13 @@ double shownBoundAt(const ShownBounds& b, Offset x, Vec3d p) {
   return std::numeric_limits<double>::infinity();
 }
 
+// The parameter point of a triangle's point with weights u, v, w out of d over corners at
+// parameter points pa, pb, pc (farthestFrom's check points).
+Offset mixOf(const Offset& pa, const Offset& pb, const Offset& pc, int u, int v, int w, int d) {
+  return {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
+          (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)};
+}
+
 // Adds to `side` the distances from the check points of the `checked` cells' two triangles of
 // `from` (triangles 2c and 2c + 1; with or without their corners) to the surface `to`. Stops
 // early once a point lies farther than giveUpAt (squared) unless per-cell figures are noted.
@@ -503,11 +510,8 @@ Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, doubl
   const ParameterBounds bounds{image, newParams, onOld, f, within};
   const PointBound newToOld = [&](const std::array<std::uint32_t, 3>& tri, int u, int v, int w,
                                   int d, Vec3d p) {
-    const Offset &pa = newParams[tri[0]], &pb = newParams[tri[1]], &pc = newParams[tri[2]];
     return boundAt(bounds,
-                   {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
-                    (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
-                   p);
+                   mixOf(newParams[tri[0]], newParams[tri[1]], newParams[tri[2]], u, v, w, d), p);
   };
   farthestFrom(newSurface, checked, oldSurface, medianEdge, false, sides[0], noting, giveUpAt,
                useBounds ? &newToOld : nullptr, within);
@@ -526,11 +530,8 @@ Moved measureMoveOnce(const GeometryImage& image, const ParameterField& f, doubl
         const auto& [i, j] = moved[k / 4];
         return Offset{double(i + (k % 4 == 1 || k % 4 == 2)), double(j + (k % 4 >= 2))};
       };
-      const Offset pa = param(tri[0]), pb = param(tri[1]), pc = param(tri[2]);
       return shownBoundAt(shownBounds,
-                          {(double(u) * pa.x + double(v) * pb.x + double(w) * pc.x) * (1.0 / d),
-                           (double(u) * pa.y + double(v) * pb.y + double(w) * pc.y) * (1.0 / d)},
-                          p);
+                          mixOf(param(tri[0]), param(tri[1]), param(tri[2]), u, v, w, d), p);
     };
     farthestFrom(oldMoved, checked, newTree, medianEdge, true, sides[1], noting, giveUpAt,
                  useBounds ? &oldToNew : nullptr, within);
