@@ -148,7 +148,13 @@ private slots:
     QVERIFY(!batches("push", dabsAt({{128, 128}}, 0.03f)));             // one dab: nothing to gain
     QVERIFY(!batches("push", dabsAt({{120, 128}, {136, 128}}, 0.03f))); // overlapping
     QVERIFY(!batches("push", dabsAt({{2, 128}, {192, 128}}, 0.03f)));   // at the border: seams
-    QVERIFY(!batches("relax", far)); // reparameterize: its field is kept from dab to dab
+    QVERIFY(!batches("relax", far));   // reparameterize: its field is kept from dab to dab
+    std::vector<Dab> twoColours = far; // parameters are one program's: the same for every dab
+    twoColours[0].parameters["color"] = {1, 0, 0, 1};
+    twoColours[1].parameters["color"] = {0, 0, 1, 1};
+    QVERIFY(!batches("paint", twoColours));
+    twoColours[1].parameters["color"] = {1, 0, 0, 1};
+    QVERIFY(batches("paint", twoColours));
     // Apart by less than their reach: clear for a brush that reads its texel alone, not for one
     // that reads the layer around it (smooth).
     const std::vector<Dab> near = dabsAt({{96, 128}, {160, 128}}, 0.03f);

@@ -241,10 +241,13 @@ bool BrushEngine::batches(const GpuDocument& document, const std::string& brushI
       found == brushes_.end() || !found->second->broken.empty())
     return false;
   const BrushManifest& manifest = found->second->manifest;
-  // A reparameterize step keeps its field between dabs; a material is bound per dab.
+  // A reparameterize step keeps its field between dabs; a material is bound per dab; the
+  // parameters are one program's uniforms and enum constants.
   if (manifest.pass == PassKind::Reparameterize) return false;
   for (const BrushParameter& p : manifest.parameters)
     if (p.type == ParameterType::Material) return false;
+  for (const Dab& d : dabs)
+    if (d.parameters != dabs[0].parameters) return false;
   // Each dab's tiles, grown by what its pass may read around them, clear of the border (no
   // seaming pass) and of every other dab's. A brush that reads no layer ("reads") reads its own
   // texel and, for its normals, the eight around it; one that reads some may read as far again

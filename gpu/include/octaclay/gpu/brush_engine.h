@@ -122,8 +122,9 @@ public:
   std::vector<DabResult> dabs(GpuDocument& document, const std::string& brushId,
                               std::span<const Dab> dabs,
                               std::vector<std::vector<core::TexelRect>> tiles);
-  /// Whether dabs() draws these dabs in one pass per layer: two to kMaxBatch of them, of a brush
-  /// that is neither reparameterize nor bound to a material per dab, none reaching the border
+  /// Whether dabs() draws these dabs in one pass per layer: two to kMaxBatch of them with the
+  /// same parameters, of a brush that is neither reparameterize nor bound to a material per dab,
+  /// none reaching the border
   /// (no seaming pass), and each one's tiles, grown by what its pass may read around them, clear
   /// of every other's: by one texel (its normals) for a brush that reads no layer, by their own
   /// width and height for one that does ("reads": other texels of them, e.g. smooth's eight
