@@ -113,6 +113,9 @@ void runDabs(benchmark::State& state, const char* brush, float radiusFraction) {
   state.counters["ms_per_dab"] = perDab * 1e3;
   state.counters["dabs_per_s"] = 1.0 / perDab;
   state.counters["texels"] = static_cast<double>(texels);
+  // Issue 32: a dab's time must not grow with its texels at CPU speed.
+  state.counters["ms_per_mtexel"] =
+      texels > 0 ? perDab * 1e3 / (static_cast<double>(texels) * 1e-6) : 0.0;
   state.counters["inside"] = static_cast<double>(inside);
   state.counters["bytes_per_s"] = static_cast<double>(bytes) / perDab;
   state.counters["x_memcpy"] = perDab / memcpySeconds(bytes);
