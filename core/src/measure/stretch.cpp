@@ -203,6 +203,23 @@ void edgeLengthRun(const Vec4f* p, const Vec4f* q, int count, float* out) {
   }
 }
 
+// Row j's edges as edgeLengthRun makes them, from the rows loaded small (here: row j, next: row
+// j + 1): N to the right, then N + 1 down. The same subtractions and sums, so the same floats; four
+// doubles a step where the processor has AVX2.
+__attribute__((target_clones("avx2", "default"))) void
+edgeRowFromDoubles(const RowD& here, const RowD& next, int n, float* out) {
+  const double *hx = here.x.data(), *hy = here.y.data(), *hz = here.z.data();
+  const double *nx = next.x.data(), *ny = next.y.data(), *nz = next.z.data();
+  for (int i = 0; i < n; ++i) {
+    const double dx = hx[i + 1] - hx[i], dy = hy[i + 1] - hy[i], dz = hz[i + 1] - hz[i];
+    out[i] = float(std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+  for (int i = 0; i <= n; ++i) {
+    const double dx = nx[i] - hx[i], dy = ny[i] - hy[i], dz = nz[i] - hz[i];
+    out[n + i] = float(std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+}
+
 // summarizeStretch's vertex areas of an inner row over [iBegin, iEnd) (0 < i < N), where the
 // four cells around each vertex keep one split each: ac, ad, ab, aa for the cells up-left,
 // up-right, down-left and down-right (whether each is split along the anti-diagonal). The same
@@ -391,6 +408,26 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
   // figures without its per-cell and stretch arrays. Left uninitialized: every value is written
   // below, on the core that first touches its pages (zero-filling them first was 0.8 GB of
   // single-threaded page faults and memset at N = 8192).
+  // The edges' ranks are counted in the same pass, row by row (edgesOf), after a sample of the
+  // rows guessed their bins; only a bin the guess missed reads the rows again.
+  const auto edgesOf = [&](int j, float* row) {
+    const Vec4f* here = &image.at(0, j);
+    edgeLengthRun(here, here + 1, n, row);
+    if (j < n) edgeLengthRun(here, &image.at(0, j + 1), n + 1, row + n);
+    return j < n ? 2 * n + 1 : n;
+  };
+  const auto edgeBlock = [&](int j, auto&& visit) {
+    thread_local std::vector<float> row; // each pass's threads make rows one at a time
+    row.resize(2 * static_cast<std::size_t>(n) + 1);
+    const int count = edgesOf(j, row.data());
+    for (int k = 0; k < count; ++k)
+      visit(row[static_cast<std::size_t>(k)]);
+  };
+  const auto edgeRanksAsked = [](std::size_t count) {
+    return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
+  };
+  detail::FloatRankSelection edgeSelection(edgeRanksAsked);
+  edgeSelection.guess(n + 1, edgeBlock);
   const auto areaValues = std::make_unique_for_overwrite<float[]>(image.texelCount());
   const std::span<float> area(areaValues.get(), image.texelCount());
   std::vector<double> rowArea(static_cast<std::size_t>(n), 0.0);
@@ -398,12 +435,16 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
     std::vector<std::array<float, 2>> above(static_cast<std::size_t>(n)),
         below(static_cast<std::size_t>(n));
     RowD hereD, nextD;
+    auto edgeCounts = edgeSelection.counter();
+    std::vector<float> edgeRow(2 * static_cast<std::size_t>(n) + 1);
+    bool loadedSmall = false; // cellRow's rows were loaded small (hereD, nextD)
     const auto cellRow = [&](int j, std::vector<std::array<float, 2>>& cells) {
       double sum = 0;
       const Vec4f* here = &image.at(0, j);
       const Vec4f* next = &image.at(0, j + 1);
       // Two runs, each of one split (cellSplit: 2i >= n from half on).
       const bool small = hereD.load(here, n + 1) & nextD.load(next, n + 1);
+      loadedSmall = small;
       const int half = (n + 1) / 2;
       const bool lower = 2 * j >= n;
       std::array<float, 2>* out = cells.data();
@@ -425,6 +466,15 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
     if (rowBegin > 0) cellRow(rowBegin - 1, above);
     for (int j = rowBegin; j < rowEnd; ++j) {
       if (j < n) rowArea[static_cast<std::size_t>(j)] = cellRow(j, below);
+      // Row j's edges from the rows just loaded where they are small (below 1e37: every edge
+      // is then finite and below 3e38), else as edgesOf makes them.
+      int edges = 2 * n + 1;
+      if (j < n && loadedSmall)
+        edgeRowFromDoubles(hereD, nextD, n, edgeRow.data());
+      else
+        edges = edgesOf(j, edgeRow.data());
+      for (int k = 0; k < edges; ++k)
+        edgeCounts.add(edgeRow[static_cast<std::size_t>(k)]);
       // The take() order of measureVertices, so every vertex area is the same float.
       const auto vertexArea = [&](int i) {
         float a = 0;
@@ -471,28 +521,14 @@ StretchSummary summarizeStretch(const GeometryImage& image) {
       }
       std::swap(above, below);
     }
+    edgeSelection.merge(edgeCounts);
   });
   uniteIdentified(n, area, nullptr);
 
   // Row j's edges: N to the right (none from the last column), then N+1 down (none from the last
-  // row); a non-finite one is -1 and left out. Made again for each pass of the ranks rather than
-  // kept (134 million floats at N = 8192: 537 MB of fresh pages).
-  const detail::FloatRanks edgeRanks = detail::selectFloatRanksOf(
-      n + 1,
-      [&](int j, auto&& visit) {
-        thread_local std::vector<float> row; // each pass's threads make rows one at a time
-        row.resize(2 * static_cast<std::size_t>(n) + 1);
-        const Vec4f* here = &image.at(0, j);
-        edgeLengthRun(here, here + 1, n, row.data());
-        const int count = j < n ? 2 * n + 1 : n;
-        if (j < n) edgeLengthRun(here, &image.at(0, j + 1), n + 1, row.data() + n);
-        for (int k = 0; k < count; ++k)
-          visit(row[static_cast<std::size_t>(k)]);
-      },
-      [](std::size_t count) {
-        return std::vector<std::size_t>{nearestRank(count, 0.5), nearestRank(count, 0.99)};
-      },
-      16);
+  // row); a non-finite one is -1 and left out. Counted in the pass above and made again where a
+  // pass needs them rather than kept (134 million floats at N = 8192: 537 MB of fresh pages).
+  const detail::FloatRanks edgeRanks = edgeSelection.finish(n + 1, edgeBlock, 16);
   if (edgeRanks.count > 0) {
     summary.longestEdge = edgeRanks.largest;
     summary.medianEdge = edgeRanks.at[0];
