@@ -9,9 +9,9 @@
 #include <functional>
 #include <vector>
 
-// What one dab's passes share, whatever their kind: BrushEngine::dab sets it up (the tiles
-// merged into rectangles, the GL state) and hands it to the brush's pass kind (layer_passes,
-// all_layers_pass, reparameterize_pass).
+// What one dab's passes share (or one batch's: BrushEngine::dabs), whatever their kind:
+// BrushEngine::runPasses sets it up (the tiles merged into rectangles, the GL state) and hands it
+// to the brush's pass kind (layer_passes, all_layers_pass, reparameterize_pass).
 namespace octaclay::gpu::detail {
 
 struct LoadedBrush;
