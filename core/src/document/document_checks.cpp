@@ -1,5 +1,6 @@
 #include "octaclay/core/document/document_checks.h"
 
+#include "detail/finite_rows.h"
 #include "detail/parallel_rows.h"
 
 #include "octaclay/core/error.h"
@@ -23,10 +24,7 @@ struct RowCheck {
 __attribute__((target_clones("avx2", "default"))) RowCheck checkRow(const Vec4f* row, int count) {
   const float* v = &row[0].x;
   RowCheck check;
-  for (int i = 0; i < count; ++i)
-    check.notFinite += int(!(std::fabs(v[4 * i]) <= 3.4028235e38f)) |
-                       int(!(std::fabs(v[4 * i + 1]) <= 3.4028235e38f)) |
-                       int(!(std::fabs(v[4 * i + 2]) <= 3.4028235e38f));
+  check.notFinite = detail::nonFiniteSamples(row, count);
   if (check.notFinite > 0) return check;
   float lanes[4][4] = {};
   int i = 0;

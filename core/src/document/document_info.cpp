@@ -1,5 +1,6 @@
 #include "octaclay/core/document/document_info.h"
 
+#include "detail/finite_rows.h"
 #include "detail/parallel_rows.h"
 
 #include "octaclay/core/geometry/mesh_extraction.h"
@@ -68,12 +69,7 @@ RowBox rowBoxInOrder(const Vec4f* row, int count) {
 
 __attribute__((target_clones("avx2", "default"))) RowBox rowBox(const Vec4f* row, int count) {
   const float* v = &row[0].x;
-  int bad = 0; // a count, not a flag, so this loop is vector code too
-  for (int i = 0; i < count; ++i)
-    bad += int(!(std::fabs(v[4 * i]) <= 3.4028235e38f)) |
-           int(!(std::fabs(v[4 * i + 1]) <= 3.4028235e38f)) |
-           int(!(std::fabs(v[4 * i + 2]) <= 3.4028235e38f));
-  if (bad > 0 || count == 0) return rowBoxInOrder(row, count);
+  if (count == 0 || detail::nonFiniteSamples(row, count) > 0) return rowBoxInOrder(row, count);
   std::array<std::array<float, 4>, 4> lo, hi;
   for (auto& l : lo)
     std::copy(v, v + 4, l.begin());

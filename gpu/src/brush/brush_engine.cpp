@@ -306,7 +306,7 @@ void BrushEngine::runPasses(GpuDocument& document, LoadedBrush& brush, std::span
   const auto bindInputs = [&](const Program& pass, core::EditLayer layer) {
     pass.use();
     detail::setUniforms(pass, brush.manifest, document, layer, dab);
-    if (batched) detail::uploadBatch(batchDabs_, brush.manifest, document, dabs);
+    if (batched) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, batchDabs_.id());
     detail::bindLayers(document, layer, brush.samples(core::EditLayer::Diffuse),
                        brush.samples(core::EditLayer::Feature));
     bindMaterial(pass, brush.manifest, document, dab);
@@ -335,6 +335,8 @@ void BrushEngine::runPasses(GpuDocument& document, LoadedBrush& brush, std::span
     document.changed(layer, changedRects);
   };
 
+  // A batch's values, once for every layer's pass (bindInputs binds them).
+  if (batched) detail::uploadBatch(batchDabs_, brush.manifest, document, dabs);
   // The brush's pass kind draws; each layer it wrote is finished through finishLayer.
   detail::DabPass pass{document,
                        brush,
